@@ -1,0 +1,86 @@
+#include "Cli/CommonOptions.h"
+
+#include <spdlog/fmt/fmt.h>
+
+#include "Error.h"
+
+namespace rt
+{
+namespace
+{
+bool parseOnOff(const std::string& flag, const std::string& value)
+{
+    if (value == "on")
+        return true;
+    if (value == "off")
+        return false;
+    throw UsageError(fmt::format("{} must be 'on' or 'off' (got '{}')", flag, value));
+}
+} // namespace
+
+SceneOptions CommonOptions::sceneOptions() const
+{
+    SceneOptions o;
+    o.count = count;
+    if (!mesh.empty())
+        o.meshPath = mesh;
+    return o;
+}
+
+void addCommonOptions(CLI::App& app, CommonOptions& o)
+{
+    app.add_flag("--headless", o.headless, "Render without a window, write the files asked for and exit");
+    app.add_flag("--list-scenes", o.listScenes, "Print the scene ids with their titles and exit");
+    app.add_option("--scene", o.scene, "Scene id (see --list-scenes)")->capture_default_str();
+    app.add_option("--spp", o.spp, "Samples per pixel (default: the scene's)");
+    app.add_option("--depth", o.depth, "Maximum scattering events per path (default: the scene's, usually 50)");
+    app.add_option("--width", o.width, "Image width in pixels (default: the scene's)");
+    app.add_option("--aspect", o.aspect, "Aspect ratio width/height, e.g. 1 or 1.7778 (default: the scene's)");
+    app.add_option("--sampling", o.sampling,
+                   "Pixel sampling: random (independent jitter), stratified (floor(sqrt(spp))^2 jittered strata), "
+                   "accumulate (progressive 1-spp passes)")
+        ->capture_default_str();
+    app.add_option("--pdf", o.pdf,
+                   "on: book-3 mixture of BSDF and light sampling over the scene's light list; "
+                   "off: BSDF sampling only (books 1-2)")
+        ->capture_default_str();
+    app.add_option("--unidirectional-light", o.unidirectionalLight,
+                   "on: emitters emit from their front face only; off: from both faces (default: the scene's)");
+    app.add_option("--seed", o.seed, "Seed of the per-pixel, per-sample random streams (0..4294967295)")
+        ->capture_default_str();
+    app.add_option("--output", o.output, "Write the tone-mapped sRGB image here (.png)");
+    app.add_option("--hdr", o.hdr, "Write the linear radiance image here (.pfm)");
+    app.add_option("--stats", o.stats, "Write render statistics as JSON here");
+    app.add_option("--count", o.count, "Object count for scenes that scale (white-spheres: number of spheres)");
+    app.add_option("--mesh", o.mesh, "OBJ file for the mesh scenes (default: the Stanford bunny in Assets)");
+    app.add_flag("--quiet", o.quiet, "No progress line");
+}
+
+RenderSettings resolveSettings(const CommonOptions& o, const Scene& scene)
+{
+    RenderSettings s;
+    s.spp = o.spp.value_or(scene.defaults.spp);
+    s.depth = o.depth.value_or(scene.defaults.depth);
+    s.width = o.width.value_or(scene.defaults.width);
+    s.aspect = o.aspect.value_or(scene.defaults.aspect);
+    const auto sampling = parsePixelSampling(o.sampling);
+    if (!sampling)
+        throw UsageError(
+            fmt::format("--sampling must be random, stratified or accumulate (got '{}')", o.sampling));
+    s.sampling = *sampling;
+    s.estimator = parseOnOff("--pdf", o.pdf) ? Estimator::Mixture : Estimator::BsdfOnly;
+    s.unidirectionalLight = o.unidirectionalLight ? parseOnOff("--unidirectional-light", *o.unidirectionalLight)
+                                                  : scene.defaults.unidirectionalLight;
+    s.seed = o.seed;
+    s.validate();
+    return s;
+}
+
+std::string sceneListing()
+{
+    std::string out;
+    for (const SceneInfo& s : sceneCatalogue())
+        out += fmt::format("{:<24} {:<52} {}\n", s.id, s.title, s.source);
+    return out;
+}
+} // namespace rt

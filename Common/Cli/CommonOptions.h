@@ -1,0 +1,48 @@
+// The headless flags both apps share (ray-tracing-cpu and ray-tracing-gpu take the same ones), parsed by
+// CLI11, and their resolution against a scene's defaults.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "Render/RenderSettings.h"
+#include "Scene/Scene.h"
+#include "Scenes/Catalogue.h"
+
+namespace rt
+{
+struct CommonOptions
+{
+    bool headless = false;
+    bool listScenes = false;
+    std::string scene = "cornell-box-lights";
+    std::optional<int> spp;
+    std::optional<int> depth;
+    std::optional<int> width;
+    std::optional<float> aspect;
+    std::string sampling = "random";
+    std::string pdf = "on";
+    std::optional<std::string> unidirectionalLight;
+    std::uint32_t seed = 0;
+    std::string output;
+    std::string hdr;
+    std::string stats;
+    int count = -1;
+    std::string mesh;
+    bool quiet = false;
+
+    SceneOptions sceneOptions() const;
+};
+
+/// Registers the shared flags on `app` with help text for each.
+void addCommonOptions(CLI::App& app, CommonOptions& options);
+
+/// The settings of a render: the scene's defaults, overridden by every flag the user gave. Throws UsageError.
+RenderSettings resolveSettings(const CommonOptions& options, const Scene& scene);
+
+/// One line per catalogue scene: id, title, source.
+std::string sceneListing();
+} // namespace rt

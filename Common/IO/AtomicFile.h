@@ -1,0 +1,16 @@
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string_view>
+
+namespace rt
+{
+/// Runs `write` on a sibling temporary file and renames it over `path` only if `write` returned true, so a
+/// failed, cancelled or crashed write never leaves a half-written file behind. Throws OutputError naming
+/// the path (missing folder, write failure, rename failure).
+void writeAtomically(const std::filesystem::path& path, const std::function<bool(const std::filesystem::path&)>& write);
+
+/// writeAtomically for a text or binary blob.
+void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
+} // namespace rt

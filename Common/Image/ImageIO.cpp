@@ -1,0 +1,117 @@
+#include "Image/ImageIO.h"
+
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <vector>
+
+#include <spdlog/fmt/fmt.h>
+#include <stb_image_write.h>
+
+#include "Error.h"
+#include "IO/AtomicFile.h"
+
+namespace rt
+{
+namespace
+{
+float srgbEncode(float linear)
+{
+    return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
+} // namespace
+
+unsigned char linearToSrgb8(float linear)
+{
+    if (!(linear > 0.0f))
+        return 0; // also NaN
+    if (linear >= 1.0f)
+        return 255;
+    return static_cast<unsigned char>(std::lround(srgbEncode(linear) * 255.0f));
+}
+
+float srgb8ToLinear(unsigned char encoded)
+{
+    static const std::array<float, 256> table = [] {
+        std::array<float, 256> t{};
+        for (int i = 0; i < 256; ++i)
+        {
+            const float c = static_cast<float>(i) / 255.0f;
+            t[i] = c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+        }
+        return t;
+    }();
+    return table[encoded];
+}
+
+void writePng(const std::filesystem::path& path, const Image& image)
+{
+    std::vector<unsigned char> bytes(image.pixelCount() * 3);
+    for (std::size_t i = 0; i < image.pixelCount(); ++i)
+        for (int c = 0; c < 3; ++c)
+            bytes[3 * i + c] = linearToSrgb8(image.data()[i][c]);
+    writeAtomically(path, [&](const std::filesystem::path& tmp) {
+        return stbi_write_png(tmp.string().c_str(), image.width(), image.height(), 3, bytes.data(),
+                              image.width() * 3) != 0;
+    });
+}
+
+void writePfm(const std::filesystem::path& path, const Image& image)
+{
+    writeAtomically(path, [&](const std::filesystem::path& tmp) {
+        std::ofstream out(tmp, std::ios::binary);
+        // A negative scale declares little-endian data.
+        out << "PF\n" << image.width() << ' ' << image.height() << "\n-1.0\n";
+        for (int y = image.height() - 1; y >= 0; --y)
+            out.write(reinterpret_cast<const char*>(&image.at(0, y)), std::streamsize(sizeof(vec3)) * image.width());
+        out.close();
+        return static_cast<bool>(out);
+    });
+}
+
+Image readPfm(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw AssetError(fmt::format("cannot open '{}'", path.string()));
+    std::string magic;
+    int width = 0, height = 0;
+    float scale = 0.0f;
+    in >> magic >> width >> height >> scale;
+    in.get(); // the single whitespace character before the data
+    if (magic != "PF" || width <= 0 || height <= 0 || scale == 0.0f)
+        throw AssetError(fmt::format("'{}' is not an RGB PFM file", path.string()));
+    Image image(width, height);
+    const bool bigEndian = scale > 0.0f;
+    for (int y = height - 1; y >= 0; --y)
+    {
+        in.read(reinterpret_cast<char*>(&image.at(0, y)), std::streamsize(sizeof(vec3)) * width);
+        if (bigEndian)
+            for (int x = 0; x < width; ++x)
+                for (int c = 0; c < 3; ++c)
+                {
+                    std::uint32_t bits;
+                    std::memcpy(&bits, &image.at(x, y)[c], 4);
+                    bits = __builtin_bswap32(bits);
+                    std::memcpy(&image.at(x, y)[c], &bits, 4);
+                }
+    }
+    if (!in)
+        throw AssetError(fmt::format("'{}' is truncated", path.string()));
+    return image;
+}
+
+void writeImage(const std::filesystem::path& path, const Image& image)
+{
+    const std::string ext = path.extension().string();
+    if (ext == ".png" || ext == ".PNG")
+        writePng(path, image);
+    else if (ext == ".pfm" || ext == ".PFM")
+        writePfm(path, image);
+    else
+        throw UsageError(fmt::format("cannot write '{}': the image format must be .png or .pfm", path.string()));
+}
+} // namespace rt

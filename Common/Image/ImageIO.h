@@ -1,0 +1,28 @@
+// Image files. Every writer goes through a temporary file renamed into place, so a failed or cancelled
+// write never leaves a half-written image behind; failures throw OutputError naming the path.
+#pragma once
+
+#include <filesystem>
+
+#include "Image/Image.h"
+
+namespace rt
+{
+/// 8-bit sRGB PNG of the linear image: clamp to [0, 1], then the sRGB transfer curve (IEC 61966-2-1).
+/// NaN pixels are written black. This is the books' "gamma 2" look made exact.
+void writePng(const std::filesystem::path& path, const Image& image);
+
+/// Portable Float Map ("PF", little-endian, bottom row first per the format): lossless linear radiance.
+void writePfm(const std::filesystem::path& path, const Image& image);
+
+/// Reads a PFM written by writePfm (or any RGB little- or big-endian PFM). Throws AssetError.
+Image readPfm(const std::filesystem::path& path);
+
+/// Writes by extension: .png or .pfm. Throws UsageError for anything else.
+void writeImage(const std::filesystem::path& path, const Image& image);
+
+/// The sRGB-encoded 8-bit value of a linear value in [0, 1].
+unsigned char linearToSrgb8(float linear);
+/// The linear value of an sRGB-encoded 8-bit value (exact table of the transfer curve).
+float srgb8ToLinear(unsigned char encoded);
+} // namespace rt

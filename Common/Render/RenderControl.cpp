@@ -1,0 +1,40 @@
+#include "Render/RenderControl.h"
+
+namespace rt
+{
+namespace
+{
+std::int64_t nowNs()
+{
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+} // namespace
+
+void RenderControl::begin(std::uint64_t totalUnits)
+{
+    m_done.store(0);
+    m_total.store(totalUnits);
+    m_startNs.store(nowNs());
+}
+
+double RenderControl::fraction() const
+{
+    const std::uint64_t t = total();
+    return t == 0 ? 0.0 : static_cast<double>(done()) / static_cast<double>(t);
+}
+
+double RenderControl::elapsedSeconds() const
+{
+    const std::int64_t start = m_startNs.load();
+    return start == 0 ? 0.0 : static_cast<double>(nowNs() - start) * 1e-9;
+}
+
+double RenderControl::etaSeconds() const
+{
+    const double f = fraction();
+    if (f <= 0.0)
+        return -1.0;
+    return elapsedSeconds() * (1.0 - f) / f;
+}
+} // namespace rt

@@ -1,0 +1,93 @@
+#include "Render/RenderSettings.h"
+
+#include <cmath>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "Error.h"
+
+namespace rt
+{
+int RenderSettings::height() const
+{
+    return std::max(1, static_cast<int>(std::lround(static_cast<double>(width) / aspect)));
+}
+
+int RenderSettings::trueSpp() const
+{
+    if (sampling != PixelSampling::Stratified)
+        return spp;
+    const int n = static_cast<int>(std::sqrt(static_cast<double>(spp)));
+    return n * n;
+}
+
+void RenderSettings::validate() const
+{
+    constexpr int kMaxDimension = 1 << 16;
+    if (spp < 1)
+        throw UsageError(fmt::format("samples per pixel must be at least 1 (got {})", spp));
+    if (depth < 1)
+        throw UsageError(fmt::format("depth must be at least 1 (got {})", depth));
+    if (width < 1 || width > kMaxDimension)
+        throw UsageError(fmt::format("width must be in [1, {}] (got {})", kMaxDimension, width));
+    if (!(aspect > 0.0f) || !std::isfinite(aspect))
+        throw UsageError(fmt::format("aspect ratio must be positive (got {})", aspect));
+    const double h = static_cast<double>(width) / aspect;
+    if (h > kMaxDimension)
+        throw UsageError(fmt::format("height {} (width / aspect) exceeds {}", h, kMaxDimension));
+}
+
+const char* toString(EngineKind engine)
+{
+    switch (engine)
+    {
+    case EngineKind::Single: return "single";
+    case EngineKind::Multi: return "multi";
+    case EngineKind::Gpu: return "gpu";
+    }
+    return "?";
+}
+
+const char* toString(PixelSampling sampling)
+{
+    switch (sampling)
+    {
+    case PixelSampling::Random: return "random";
+    case PixelSampling::Stratified: return "stratified";
+    case PixelSampling::Accumulate: return "accumulate";
+    }
+    return "?";
+}
+
+const char* toString(Estimator estimator)
+{
+    switch (estimator)
+    {
+    case Estimator::BsdfOnly: return "bsdf";
+    case Estimator::Mixture: return "mixture";
+    }
+    return "?";
+}
+
+std::optional<EngineKind> parseEngine(const std::string& text)
+{
+    if (text == "single")
+        return EngineKind::Single;
+    if (text == "multi")
+        return EngineKind::Multi;
+    if (text == "gpu")
+        return EngineKind::Gpu;
+    return std::nullopt;
+}
+
+std::optional<PixelSampling> parsePixelSampling(const std::string& text)
+{
+    if (text == "random")
+        return PixelSampling::Random;
+    if (text == "stratified")
+        return PixelSampling::Stratified;
+    if (text == "accumulate")
+        return PixelSampling::Accumulate;
+    return std::nullopt;
+}
+} // namespace rt

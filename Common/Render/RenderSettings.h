@@ -1,0 +1,45 @@
+// What a render is asked to do, identical for every engine; scene defaults fill what the user leaves out.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "Shared/HostDevice.h"
+
+namespace rt
+{
+using shader::Estimator;
+using shader::PixelSampling;
+
+enum class EngineKind
+{
+    Single, // CPU, std::execution::seq
+    Multi, // CPU, std::execution::par (TBB)
+    Gpu // Vulkan ray tracing
+};
+
+struct RenderSettings
+{
+    int spp = 100; // samples per pixel asked for (stratified rounds down to a square: see trueSpp())
+    int depth = 50; // maximum number of scattering events along a path (RTIOW's max_depth)
+    int width = 600; // pixels
+    float aspect = 1.0f; // width / height
+    PixelSampling sampling = PixelSampling::Random;
+    Estimator estimator = Estimator::Mixture;
+    bool unidirectionalLight = true; // emitters emit from their front side only
+    std::uint32_t seed = 0;
+
+    int height() const;
+    /// Samples each pixel really gets: spp, or floor(sqrt(spp))^2 for stratified sampling.
+    int trueSpp() const;
+    /// Throws UsageError naming the first bad value (spp < 1, width < 1, depth < 1, aspect <= 0, ...).
+    void validate() const;
+};
+
+const char* toString(EngineKind engine);
+const char* toString(PixelSampling sampling);
+const char* toString(Estimator estimator);
+std::optional<EngineKind> parseEngine(const std::string& text);
+std::optional<PixelSampling> parsePixelSampling(const std::string& text);
+} // namespace rt

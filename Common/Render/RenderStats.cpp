@@ -1,0 +1,48 @@
+#include "Render/RenderStats.h"
+
+#include "IO/AtomicFile.h"
+
+namespace rt
+{
+nlohmann::json RenderStats::toJson() const
+{
+    nlohmann::json j;
+    j["scene"] = scene;
+    j["engine"] = toString(engine);
+    j["device"] = device;
+    j["settings"] = {{"spp", settings.spp},
+                     {"depth", settings.depth},
+                     {"width", settings.width},
+                     {"aspect", settings.aspect},
+                     {"sampling", toString(settings.sampling)},
+                     {"estimator", toString(settings.estimator)},
+                     {"pdf", settings.estimator != Estimator::BsdfOnly},
+                     {"unidirectional_light", settings.unidirectionalLight},
+                     {"seed", settings.seed}};
+    j["width"] = width;
+    j["height"] = height;
+    j["true_spp"] = trueSpp;
+    j["wall_seconds"] = wallSeconds;
+    j["build_seconds"] = buildSeconds;
+    j["render_seconds"] = renderSeconds;
+    if (gpuSeconds >= 0.0)
+        j["gpu_seconds"] = gpuSeconds;
+    j["paths"] = paths;
+    j["mpaths_per_second"] = mpathsPerSecond();
+    if (segments > 0)
+    {
+        j["segments"] = segments;
+        j["segments_per_path"] = paths ? double(segments) / double(paths) : 0.0;
+    }
+    j["nan_samples"] = nanSamples;
+    j["inf_samples"] = infSamples;
+    j["threads_used"] = threadsUsed;
+    j["cancelled"] = cancelled;
+    return j;
+}
+
+void writeStatsJson(const std::filesystem::path& path, const RenderStats& stats)
+{
+    writeFileAtomically(path, stats.toJson().dump(2) + "\n");
+}
+} // namespace rt

@@ -1,0 +1,40 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "Render/RenderSettings.h"
+
+namespace rt
+{
+/// What a finished (or cancelled) render reports; written as stats.json by the apps.
+struct RenderStats
+{
+    std::string scene;
+    EngineKind engine = EngineKind::Single;
+    std::string device; // CPU model or Vulkan device name
+    RenderSettings settings;
+    int width = 0;
+    int height = 0;
+    int trueSpp = 0; // samples each pixel really received
+    double wallSeconds = 0.0; // whole render call: setup + build + render + readback
+    double buildSeconds = 0.0; // acceleration structures (BVH, BLAS/TLAS)
+    double renderSeconds = 0.0; // tracing only, host clock
+    double gpuSeconds = -1.0; // tracing only, GPU timestamp queries; < 0 when not measured
+    std::uint64_t paths = 0; // camera paths traced (pixels x true spp)
+    std::uint64_t segments = 0; // ray segments traced (0 when the engine does not count them)
+    std::uint64_t nanSamples = 0; // camera samples whose radiance had a NaN (dropped from the image)
+    std::uint64_t infSamples = 0; // ... or an infinity
+    int threadsUsed = 1;
+    bool cancelled = false;
+
+    double mpathsPerSecond() const { return renderSeconds > 0.0 ? double(paths) / renderSeconds * 1e-6 : 0.0; }
+    nlohmann::json toJson() const;
+};
+
+/// Writes stats.toJson() to `path` atomically. Throws OutputError.
+void writeStatsJson(const std::filesystem::path& path, const RenderStats& stats);
+} // namespace rt

@@ -1,0 +1,149 @@
+// Sampling directions towards one light of the scene's world-space light list, and the solid-angle pdf of
+// any direction under that strategy. Both are needed by the book-3 mixture (RTTROYL §9-12): the pdf of a
+// direction must be evaluated for every light, whichever strategy produced the direction.
+// The GLSL twin is Shaders/Sampling/LightSampling.glsl.
+//
+// Conventions: `p` is the shading point (world space), `wi` a unit direction leaving p, pdfs are per unit
+// solid angle at p. A pdf is 0 for a direction that cannot be produced (misses the light), never a guess.
+#pragma once
+
+#include "Math/Math.h"
+#include "Math/Onb.h"
+#include "Sampling/Warps.h"
+#include "Shared/HostDevice.h"
+
+namespace rt
+{
+using shader::LightData;
+using shader::LightShape;
+
+struct LightSample
+{
+    vec3 wi{0.0f}; // unit direction from p towards the sampled point
+    float pdf = 0.0f; // per unit solid angle
+    float distance = 0.0f; // from p to the sampled point on the light
+};
+
+namespace detail
+{
+/// Area-measure pdf 1/area turned into solid angle at distance `dist` with |cos| at the light.
+inline float areaToSolidAngle(float dist2, float cosLight, float area)
+{
+    return cosLight > 0.0f ? dist2 / (cosLight * area) : 0.0f;
+}
+
+/// Sphere seen from p: true if p is outside (cone sampling applies), with 1 - cos(theta_max) and cos(theta_max).
+inline bool sphereCone(const LightData& s, const vec3& p, float& oneMinusCos, float& cosThetaMax, vec3& axis)
+{
+    const vec3 toCenter = s.p0 - p;
+    const float d2 = lengthSquared(toCenter);
+    const float r2 = s.radius * s.radius;
+    if (d2 <= r2 * 1.00001f)
+        return false;
+    const float sin2 = r2 / d2;
+    cosThetaMax = safeSqrt(1.0f - sin2);
+    oneMinusCos = sin2 / (1.0f + cosThetaMax); // = 1 - cos without cancellation (research notes §1.2)
+    axis = toCenter / std::sqrt(d2);
+    return true;
+}
+
+/// Far root of the ray p + t wi against a sphere that contains p (t > 0 always exists).
+inline float sphereExitDistance(const LightData& s, const vec3& p, const vec3& wi)
+{
+    const vec3 f = p - s.p0;
+    const float b = glm::dot(f, wi);
+    const vec3 l = f - b * wi; // closest approach (Hearn & Baker discriminant, RTG ch. 7)
+    const float disc = s.radius * s.radius - lengthSquared(l);
+    return -b + safeSqrt(disc);
+}
+
+/// Parametric hit of the ray p + t wi with the parallelogram / triangle of `light`; returns t or -1.
+inline float planarHit(const LightData& light, const vec3& p, const vec3& wi)
+{
+    const float denom = glm::dot(light.normal, wi);
+    if (std::fabs(denom) < 1e-9f)
+        return -1.0f;
+    const float t = glm::dot(light.normal, light.p0 - p) / denom;
+    if (!(t > 0.0f))
+        return -1.0f;
+    const vec3 planar = p + t * wi - light.p0;
+    // (alpha, beta) coordinates along the two edges: w = n / |e1 x e2|^2 with n = normal |e1 x e2|.
+    const bool quad = light.shape == LightShape::Quad;
+    const vec3 w = light.normal / (quad ? light.area : 2.0f * light.area);
+    const float alpha = glm::dot(planar, glm::cross(light.p2, w));
+    const float beta = glm::dot(planar, glm::cross(w, light.p1));
+    if (quad)
+        return (alpha >= 0.0f && alpha <= 1.0f && beta >= 0.0f && beta <= 1.0f) ? t : -1.0f;
+    return (alpha >= 0.0f && beta >= 0.0f && alpha + beta <= 1.0f) ? t : -1.0f;
+}
+} // namespace detail
+
+/// Samples a direction from p towards `light` with uniform-area (quad, triangle, sphere seen from inside) or
+/// uniform-cone (sphere seen from outside) density. Returns false when no direction can be produced
+/// (p in the light's plane, degenerate light).
+inline bool sampleLight(const LightData& light, const vec3& p, const vec2& u, LightSample& out)
+{
+    if (light.shape == LightShape::Sphere)
+    {
+        float oneMinusCos, cosThetaMax;
+        vec3 axis;
+        if (detail::sphereCone(light, p, oneMinusCos, cosThetaMax, axis))
+        {
+            out.wi = Onb(axis).toWorld(sampleUniformCone(u, oneMinusCos));
+            out.pdf = uniformConePdf(oneMinusCos);
+            out.distance = glm::length(light.p0 - p) - light.radius; // lower bound; the mixture needs no more
+            return true;
+        }
+        const vec3 n = sampleUniformSphere(u);
+        const vec3 y = light.p0 + light.radius * n;
+        const vec3 w = y - p;
+        const float dist2 = lengthSquared(w);
+        if (!(dist2 > 0.0f))
+            return false;
+        out.distance = std::sqrt(dist2);
+        out.wi = w / out.distance;
+        const float area = 4.0f * kPi * light.radius * light.radius;
+        out.pdf = detail::areaToSolidAngle(dist2, std::fabs(glm::dot(n, out.wi)), area);
+        return out.pdf > 0.0f;
+    }
+
+    vec3 y;
+    if (light.shape == LightShape::Quad)
+        y = light.p0 + u.x * light.p1 + u.y * light.p2;
+    else
+    {
+        const vec2 b = sampleUniformTriangle(u);
+        y = light.p0 + b.x * light.p1 + b.y * light.p2; // p1, p2 are edges from p0
+    }
+    const vec3 w = y - p;
+    const float dist2 = lengthSquared(w);
+    if (!(dist2 > 0.0f))
+        return false;
+    out.distance = std::sqrt(dist2);
+    out.wi = w / out.distance;
+    out.pdf = detail::areaToSolidAngle(dist2, std::fabs(glm::dot(light.normal, out.wi)), light.area);
+    return out.pdf > 0.0f;
+}
+
+/// Solid-angle pdf with which sampleLight(light, p, .) produces the unit direction `wi`; 0 if it cannot.
+inline float lightPdf(const LightData& light, const vec3& p, const vec3& wi)
+{
+    if (light.shape == LightShape::Sphere)
+    {
+        float oneMinusCos, cosThetaMax;
+        vec3 axis;
+        if (detail::sphereCone(light, p, oneMinusCos, cosThetaMax, axis))
+            return glm::dot(wi, axis) >= cosThetaMax ? uniformConePdf(oneMinusCos) : 0.0f;
+        const float t = detail::sphereExitDistance(light, p, wi);
+        if (!(t > 0.0f))
+            return 0.0f;
+        const vec3 n = (p + t * wi - light.p0) / light.radius;
+        const float area = 4.0f * kPi * light.radius * light.radius;
+        return detail::areaToSolidAngle(t * t, std::fabs(glm::dot(n, wi)), area);
+    }
+    const float t = detail::planarHit(light, p, wi);
+    if (t < 0.0f)
+        return 0.0f;
+    return detail::areaToSolidAngle(t * t, std::fabs(glm::dot(light.normal, wi)), light.area);
+}
+} // namespace rt

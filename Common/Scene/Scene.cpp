@@ -1,0 +1,174 @@
+#include "Scene/Scene.h"
+
+#include <cmath>
+#include <string>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "Error.h"
+
+namespace rt
+{
+Aabb SphereDesc::bounds() const
+{
+    const vec3 r(radius);
+    Aabb box(center0 - r, center0 + r);
+    box.expand(Aabb(center1 - r, center1 + r)); // the whole sweep of a moving sphere
+    return box;
+}
+
+Aabb MeshData::bounds() const
+{
+    Aabb box;
+    for (const vec3& p : positions)
+        box.expand(p);
+    return box;
+}
+
+Aabb MediumDesc::bounds() const
+{
+    if (boundary == Boundary::Sphere)
+        return Aabb(center - vec3(radius), center + vec3(radius));
+    return Aabb(boxMin, boxMax);
+}
+
+bool Scene::hasMedia() const
+{
+    for (const InstanceDesc& inst : instances)
+        if (!groups[inst.group].media.empty())
+            return true;
+    return false;
+}
+
+bool Scene::hasMotion() const
+{
+    for (const InstanceDesc& inst : instances)
+        for (const SphereDesc& s : groups[inst.group].spheres)
+            if (s.moving())
+                return true;
+    return false;
+}
+
+bool Scene::isEmissive(std::uint32_t material) const
+{
+    return material < materials.size() && materials[material].emissionTexture != kNoIndex;
+}
+
+std::size_t Scene::primitiveCount() const
+{
+    std::size_t count = 0;
+    for (const InstanceDesc& inst : instances)
+    {
+        const GroupDesc& g = groups[inst.group];
+        count += g.spheres.size() + g.quads.size() + g.media.size();
+        for (const MeshRef& m : g.meshes)
+            count += meshes[m.mesh].triangleCount();
+    }
+    return count;
+}
+
+Aabb Scene::bounds() const
+{
+    Aabb world;
+    for (const InstanceDesc& inst : instances)
+    {
+        const GroupDesc& g = groups[inst.group];
+        Aabb local;
+        for (const SphereDesc& s : g.spheres)
+            local.expand(s.bounds());
+        for (const QuadDesc& q : g.quads)
+        {
+            local.expand(q.q);
+            local.expand(q.q + q.u);
+            local.expand(q.q + q.v);
+            local.expand(q.q + q.u + q.v);
+        }
+        for (const MeshRef& m : g.meshes)
+            local.expand(meshes[m.mesh].bounds());
+        for (const MediumDesc& m : g.media)
+            local.expand(m.bounds());
+        if (!local.empty())
+            world.expand(inst.worldFromObject.bounds(local));
+    }
+    return world;
+}
+
+namespace
+{
+bool finite(const vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+void require(bool ok, const std::string& sceneId, const std::string& what)
+{
+    if (!ok)
+        throw SceneError(fmt::format("scene '{}': {}", sceneId, what));
+}
+} // namespace
+
+void Scene::validate() const
+{
+    const auto textureOk = [&](std::uint32_t t) { return t == kNoIndex || t < textures.size(); };
+    for (std::size_t i = 0; i < textures.size(); ++i)
+    {
+        const TextureData& t = textures[i];
+        require(t.type != TextureType::Image || t.image < images.size(), id,
+                fmt::format("texture {} refers to image {} of {}", i, t.image, images.size()));
+    }
+    for (std::size_t i = 0; i < images.size(); ++i)
+        require(images[i].width > 0 && images[i].height > 0 &&
+                    images[i].rgba.size() == std::size_t(images[i].width) * images[i].height * 4,
+                id, fmt::format("image '{}' has no texels", images[i].path));
+    for (std::size_t i = 0; i < materials.size(); ++i)
+    {
+        const MaterialData& m = materials[i];
+        require(textureOk(m.albedoTexture) && textureOk(m.emissionTexture), id,
+                fmt::format("material {} refers to a missing texture", i));
+        require(m.type != MaterialType::Dielectric || m.ior > 0.0f, id,
+                fmt::format("material {} has index of refraction {}", i, m.ior));
+        require(m.type != MaterialType::DiffuseLight || m.emissionTexture != kNoIndex, id,
+                fmt::format("diffuse light material {} has no emission", i));
+        require(m.type == MaterialType::DiffuseLight || m.albedoTexture != kNoIndex ||
+                    m.type == MaterialType::Dielectric,
+                id, fmt::format("material {} has no albedo texture", i));
+    }
+    const auto materialOk = [&](std::uint32_t m) { return m < materials.size(); };
+    for (std::size_t gi = 0; gi < groups.size(); ++gi)
+    {
+        const GroupDesc& g = groups[gi];
+        for (const SphereDesc& s : g.spheres)
+            require(materialOk(s.material) && s.radius > 0.0f && finite(s.center0) && finite(s.center1), id,
+                    fmt::format("group '{}' has a bad sphere (radius {}, material {})", g.name, s.radius,
+                                s.material));
+        for (const QuadDesc& q : g.quads)
+            require(materialOk(q.material) && lengthSquared(glm::cross(q.u, q.v)) > 0.0f, id,
+                    fmt::format("group '{}' has a degenerate quad or a bad material", g.name));
+        for (const MeshRef& r : g.meshes)
+        {
+            require(r.mesh < meshes.size() && materialOk(r.material), id,
+                    fmt::format("group '{}' refers to a missing mesh or material", g.name));
+            const MeshData& mesh = meshes[r.mesh];
+            require(mesh.indices.size() % 3 == 0 && !mesh.indices.empty(), id,
+                    fmt::format("mesh '{}' has no triangles", mesh.name));
+            for (std::uint32_t index : mesh.indices)
+                require(index < mesh.positions.size(), id,
+                        fmt::format("mesh '{}' has vertex index {} of {}", mesh.name, index, mesh.positions.size()));
+            require(mesh.triangleMaterials.empty() || mesh.triangleMaterials.size() == mesh.triangleCount(), id,
+                    fmt::format("mesh '{}' has {} per-triangle materials for {} triangles", mesh.name,
+                                mesh.triangleMaterials.size(), mesh.triangleCount()));
+            for (std::uint32_t m : mesh.triangleMaterials)
+                require(materialOk(m), id, fmt::format("mesh '{}' refers to material {}", mesh.name, m));
+        }
+        for (const MediumDesc& m : g.media)
+            require(materialOk(m.phaseMaterial) && materials[m.phaseMaterial].type == MaterialType::Isotropic &&
+                        m.density > 0.0f,
+                    id, fmt::format("group '{}' has a medium without an isotropic phase or density", g.name));
+    }
+    for (const InstanceDesc& inst : instances)
+    {
+        require(inst.group < groups.size(), id, fmt::format("instance of missing group {}", inst.group));
+        require(glm::determinant(mat3(inst.worldFromObject.m)) != 0.0f, id, "an instance transform is singular");
+    }
+    for (const LightData& l : lights)
+        require(l.material == kNoIndex || materialOk(l.material), id, "a light refers to a missing material");
+    require(!instances.empty(), id, "the scene has no instances");
+}
+} // namespace rt

@@ -1,0 +1,60 @@
+#include "Scenes/Catalogue.h"
+
+#include <spdlog/fmt/fmt.h>
+
+#include "Error.h"
+#include "Scenes/SceneFactories.h"
+
+namespace rt
+{
+const std::vector<SceneInfo>& sceneCatalogue()
+{
+    using namespace scenes;
+    static const std::vector<SceneInfo> catalogue = {
+        {"rtow-default", "Book 1 default: three spheres on a ground", "RTIOW §14", rtowDefault},
+        {"rtow-camera-test", "Book 1 camera test: red and blue spheres", "RTIOW §12", rtowCameraTest},
+        {"rtow-final", "Book 1 cover: random spheres", "RTIOW §14", rtowFinal},
+        {"rtnw-motion-blur", "Book 2 bouncing spheres (motion blur)", "RTTNW §2", rtnwMotionBlur},
+        {"rtnw-checker-spheres", "Book 2 checker spheres", "RTTNW §4", rtnwCheckerSpheres},
+        {"rtnw-earth", "Book 2 earth texture", "RTTNW §4", rtnwEarth},
+        {"rtnw-perlin-spheres", "Book 2 Perlin marble spheres", "RTTNW §5", rtnwPerlinSpheres},
+        {"rtnw-quads", "Book 2 quads", "RTTNW §6", rtnwQuads},
+        {"rtnw-simple-light", "Book 2 simple light", "RTTNW §7", rtnwSimpleLight},
+        {"rtnw-cornell-box", "Book 2 Cornell box", "RTTNW §7-8", rtnwCornellBox},
+        {"rtnw-cornell-smoke", "Book 2 Cornell box with smoke", "RTTNW §9", rtnwCornellSmoke},
+        {"rtnw-final", "Book 2 final scene", "RTTNW §10", rtnwFinal},
+        {"rtrol-cornell-box", "Book 3 Cornell box", "RTTROYL §12", rtrolCornellBox},
+        {"rtrol-cornell-mirror", "Book 3 Cornell box, aluminium box", "RTTROYL §12", rtrolCornellMirror},
+        {"rtrol-cornell-glass", "Book 3 final: Cornell box with glass sphere", "RTTROYL §12.5", rtrolCornellGlass},
+        {"white-spheres", "Thesis: white spheres for BVH scaling", "thesis §4.3", whiteSpheres},
+        {"cornell-box-lights", "Thesis benchmark: Cornell box with 12 lights", "thesis §5.2", cornellBoxLights},
+        {"cube-and-spheres", "Thesis GPU app: cube and spheres", "thesis B.2", cubeAndSpheres},
+        {"planets-in-one-weekend", "Thesis GPU app: planets in one weekend", "thesis B.2", planetsInOneWeekend},
+        {"mesh-in-one-weekend", "Thesis GPU app: meshes in one weekend", "thesis B.2", meshInOneWeekend},
+        {"cornell-box-and-mesh", "Thesis GPU app: Cornell box and mesh", "thesis B.2", cornellBoxAndMesh},
+        {"furnace", "White furnace: Le / (1 - a) everywhere", "research notes §4.5", furnace},
+    };
+    return catalogue;
+}
+
+const SceneInfo* findScene(const std::string& id)
+{
+    for (const SceneInfo& info : sceneCatalogue())
+        if (info.id == id)
+            return &info;
+    return nullptr;
+}
+
+Scene makeScene(const std::string& id, const SceneOptions& options)
+{
+    const SceneInfo* info = findScene(id);
+    if (!info)
+    {
+        std::string known;
+        for (const SceneInfo& s : sceneCatalogue())
+            known += (known.empty() ? "" : ", ") + s.id;
+        throw SceneError(fmt::format("unknown scene '{}' (known: {})", id, known));
+    }
+    return info->build(options);
+}
+} // namespace rt

@@ -1,0 +1,39 @@
+// The scene registry: every scene of shared/spec/scenes.md by id, each built from one description that
+// both engines render. Scenes with a size parameter (white-spheres) or a mesh (mesh-in-one-weekend,
+// cornell-box-and-mesh) take it from SceneOptions.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "Scene/Scene.h"
+
+namespace rt
+{
+struct SceneOptions
+{
+    int count = -1; // number of objects for scenes that scale (white-spheres); < 0 = the scene's default
+    std::string meshPath = "meshes/bunny.obj"; // OBJ for the mesh scenes (asset-relative or a real path)
+};
+
+struct SceneInfo
+{
+    std::string id;
+    std::string title;
+    std::string source; // book chapter or thesis section the scene comes from
+    Scene (*build)(const SceneOptions&);
+};
+
+const std::vector<SceneInfo>& sceneCatalogue();
+
+/// nullptr if unknown.
+const SceneInfo* findScene(const std::string& id);
+
+/// Builds scene `id`. Throws SceneError naming the id and listing the known ones if unknown, AssetError if a
+/// texture or mesh it needs is missing.
+Scene makeScene(const std::string& id, const SceneOptions& options = {});
+
+/// The white furnace: the camera inside a closed sphere of Lambertian albedo `albedo` that emits `radiance`
+/// everywhere; every pixel converges to radiance / (1 - albedo) (research notes §4.5).
+Scene makeFurnace(float albedo, float radiance);
+} // namespace rt

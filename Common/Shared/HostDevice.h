@@ -1,0 +1,143 @@
+// The host/device contract: every type tag, struct layout, binding number and push constant shared by the
+// C++ engines and the GLSL shaders lives here, once. C++ includes it as a header; the shaders include it
+// with glslang's #include (GL_GOOGLE_include_directive).
+//
+// Layout rule: every buffer uses the `scalar` block layout (GL_EXT_scalar_block_layout), so a GLSL vec3 is
+// 12 bytes aligned to 4 exactly like glm::vec3 and no padding is hidden. The C++ side checks each size
+// and the offsets that matter with static_assert (at the end of this file).
+#ifndef RT_HOST_DEVICE_H
+#define RT_HOST_DEVICE_H
+
+#ifdef __cplusplus
+#include <cstddef>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+namespace rt::shader
+{
+using vec2 = glm::vec2;
+using vec3 = glm::vec3;
+using vec4 = glm::vec4;
+using uvec2 = glm::uvec2;
+using uvec4 = glm::uvec4;
+using uint = std::uint32_t;
+
+// A closed set of tags: a C++ `enum class`, a set of `const uint NAME_VALUE` in GLSL.
+#define RT_ENUM_BEGIN(Name) enum class Name : std::uint32_t {
+#define RT_ENUM_VALUE(Name, Value, Index) Value = Index,
+#define RT_ENUM_END(Name) };
+#define RT_CONST(Type, Name, Value) inline constexpr Type Name = Value;
+#define RT_TAG(Enum) Enum // a tag field: the enum in C++, a uint in GLSL (both 4 bytes)
+#else
+#define RT_ENUM_BEGIN(Name)
+#define RT_ENUM_VALUE(Name, Value, Index) const uint Name##_##Value = Index;
+#define RT_ENUM_END(Name)
+#define RT_CONST(Type, Name, Value) const Type Name = Value;
+#define RT_TAG(Enum) uint
+#endif
+
+// ---- Type tags --------------------------------------------------------------------------------------------
+
+RT_ENUM_BEGIN(MaterialType)
+RT_ENUM_VALUE(MaterialType, Lambertian, 0)   // albedo texture; cosine-weighted scattering
+RT_ENUM_VALUE(MaterialType, Metal, 1)        // albedo texture; mirror reflection with `fuzz` sphere around it
+RT_ENUM_VALUE(MaterialType, Dielectric, 2)   // index of refraction `ior`; Fresnel by Schlick's approximation
+RT_ENUM_VALUE(MaterialType, DiffuseLight, 3) // emission texture only; does not scatter
+RT_ENUM_VALUE(MaterialType, Isotropic, 4)    // phase function of constant media; albedo texture
+RT_ENUM_END(MaterialType)
+
+RT_ENUM_BEGIN(TextureType)
+RT_ENUM_VALUE(TextureType, Solid, 0)      // color0
+RT_ENUM_VALUE(TextureType, Checker, 1)    // 3-D checker: color0 / color1, cell size `scale`
+RT_ENUM_VALUE(TextureType, Image, 2)      // image `image`, sampled at the surface (u, v), nearest texel
+RT_ENUM_VALUE(TextureType, Noise, 3)      // Perlin: 0.5 (1 + noise(scale p))
+RT_ENUM_VALUE(TextureType, Turbulence, 4) // Perlin: turb(scale p), 7 octaves
+RT_ENUM_VALUE(TextureType, Marble, 5)     // Perlin: 0.5 (1 + sin(scale p.z + 10 turb(scale p)))
+RT_ENUM_END(TextureType)
+
+RT_ENUM_BEGIN(BackgroundType)
+RT_ENUM_VALUE(BackgroundType, Constant, 0) // color0 in every direction
+RT_ENUM_VALUE(BackgroundType, Gradient, 1) // lerp(color0, color1, 0.5 (dir.y + 1)), dir normalised
+RT_ENUM_END(BackgroundType)
+
+// Shapes a light sampler can sample (the scene's light list is in world space).
+RT_ENUM_BEGIN(LightShape)
+RT_ENUM_VALUE(LightShape, Quad, 0)     // p0 = corner Q, p1 = edge u, p2 = edge v
+RT_ENUM_VALUE(LightShape, Sphere, 1)   // p0 = centre, radius
+RT_ENUM_VALUE(LightShape, Triangle, 2) // p0 = vertex, p1 and p2 = edges from p0
+RT_ENUM_END(LightShape)
+
+// Estimators (--pdf off = BsdfOnly, --pdf on = Mixture).
+RT_ENUM_BEGIN(Estimator)
+RT_ENUM_VALUE(Estimator, BsdfOnly, 0) // books 1-2: follow the sampled BSDF direction only
+RT_ENUM_VALUE(Estimator, Mixture, 1)  // book 3: 1/2 BSDF pdf + 1/2 uniform pick over the light list, no shadow ray
+RT_ENUM_END(Estimator)
+
+RT_ENUM_BEGIN(PixelSampling)
+RT_ENUM_VALUE(PixelSampling, Random, 0)     // uniform jitter in the pixel, every sample independent
+RT_ENUM_VALUE(PixelSampling, Stratified, 1) // floor(sqrt(spp))^2 jittered strata; true spp is that square
+RT_ENUM_VALUE(PixelSampling, Accumulate, 2) // random jitter, rendered as progressive 1-spp passes
+RT_ENUM_END(PixelSampling)
+
+RT_CONST(uint, kNoIndex, 0xFFFFFFFFu)
+
+// ---- Plain data of the scene description, read as is by both engines (scalar layout on the GPU) ----
+
+struct TextureData
+{
+    RT_TAG(TextureType) type;
+    uint image; // index into the sampler array for TextureType::Image
+    float scale;
+    uint pad;
+    vec3 color0;
+    vec3 color1;
+};
+
+struct MaterialData
+{
+    RT_TAG(MaterialType) type;
+    uint albedoTexture; // index into the texture buffer, kNoIndex if none
+    uint emissionTexture; // kNoIndex if the material does not emit
+    float fuzz; // Metal: radius of the fuzz sphere around the mirror direction
+    float ior; // Dielectric: index of refraction (inside / outside)
+    float pad0;
+    float pad1;
+    float pad2;
+};
+
+struct LightData
+{
+    RT_TAG(LightShape) shape;
+    uint material; // emitting material, or kNoIndex for a pure sampling target (book 3's glass sphere)
+    float radius; // Sphere
+    float area; // Quad / Triangle: area in world units^2
+    vec3 p0;
+    vec3 p1;
+    vec3 p2;
+    vec3 normal; // Quad / Triangle: unit geometric normal (u x v direction)
+};
+
+// Perlin noise tables (RTTNW §5): 256 random unit gradients and three permutations of 0..255, generated
+// once in Common (Scene/Perlin.cpp) from a fixed seed and uploaded unchanged, so both engines see one noise.
+RT_CONST(uint, kPerlinPointCount, 256u)
+
+struct PerlinData
+{
+    vec3 gradients[kPerlinPointCount];
+    uint permX[kPerlinPointCount];
+    uint permY[kPerlinPointCount];
+    uint permZ[kPerlinPointCount];
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(PerlinData) == 256 * 12 + 3 * 256 * 4);
+static_assert(sizeof(TextureData) == 40);
+static_assert(sizeof(MaterialData) == 32);
+static_assert(sizeof(LightData) == 64);
+static_assert(offsetof(LightData, p0) == 16);
+static_assert(offsetof(TextureData, color0) == 16);
+} // namespace rt::shader
+#endif
+
+#endif // RT_HOST_DEVICE_H
