@@ -166,6 +166,10 @@ void Scene::validate() const
     {
         require(inst.group < groups.size(), id, fmt::format("instance of missing group {}", inst.group));
         require(glm::determinant(mat3(inst.worldFromObject.m)) != 0.0f, id, "an instance transform is singular");
+        // A sphere under a non-uniform scale is an ellipsoid: neither engine's sphere test covers it.
+        require(groups[inst.group].spheres.empty() || inst.worldFromObject.uniformScale().has_value(), id,
+                fmt::format("group '{}' holds spheres and is instanced with a non-uniform scale or a mirror",
+                            groups[inst.group].name));
     }
     for (const LightData& l : lights)
         require(l.material == kNoIndex || materialOk(l.material), id, "a light refers to a missing material");

@@ -130,6 +130,137 @@ struct PerlinData
     uint permZ[kPerlinPointCount];
 };
 
+// ==== GPU engine only (RayTracingGPU, Shaders): bindings, uniforms and geometry records ====================
+// Nothing above depends on this section; the CPU engine ignores it. Layout rule as above (scalar).
+
+// Descriptor set 0 of the ray-tracing pipeline. kBindingImages is last: it is the variable-count sampler array.
+RT_CONST(uint, kBindingTlas, 0u)              // accelerationStructureEXT
+RT_CONST(uint, kBindingAccumulation, 1u)      // rgba32f storage image: sum of sample radiances per pixel
+RT_CONST(uint, kBindingUniforms, 2u)          // uniform RenderUniforms
+RT_CONST(uint, kBindingMaterials, 3u)         // MaterialData[]
+RT_CONST(uint, kBindingTextures, 4u)          // TextureData[]
+RT_CONST(uint, kBindingLights, 5u)            // LightData[] (world space)
+RT_CONST(uint, kBindingPerlin, 6u)            // PerlinData
+RT_CONST(uint, kBindingInstances, 7u)         // InstanceRecord[], indexed by the TLAS instanceCustomIndex
+RT_CONST(uint, kBindingPositions, 8u)         // vec3[]: object-space vertices of every triangle BLAS
+RT_CONST(uint, kBindingUvs, 9u)               // vec2[]: vertex uvs, where a mesh has them
+RT_CONST(uint, kBindingTriangles, 10u)        // uvec3[]: vertex indices, relative to InstanceRecord::firstVertex
+RT_CONST(uint, kBindingTriangleMaterials, 11u) // uint[]: per-triangle materials, where a mesh has them
+RT_CONST(uint, kBindingSpheres, 12u)          // SphereRecord[] (object space)
+RT_CONST(uint, kBindingMedia, 13u)            // MediumRecord[] (object space)
+RT_CONST(uint, kBindingCounters, 14u)         // SampleCounters
+RT_CONST(uint, kBindingImages, 15u)           // sampler2D[]: the scene's images, 8-bit sRGB
+RT_CONST(uint, kBindingCount, 16u)
+
+// Shader binding table: one miss record, and per TLAS instance a hit-group record offset. A procedural BLAS
+// holds its spheres as geometry 0 and its media as geometry 1 (traceRayEXT uses sbtRecordStride 1), so an
+// instance of spheres and media starts at kHitGroupSpheres and reaches kHitGroupMedia through geometry 1.
+RT_CONST(uint, kHitGroupTriangles, 0u)
+RT_CONST(uint, kHitGroupSpheres, 1u)
+RT_CONST(uint, kHitGroupMedia, 2u)
+RT_CONST(uint, kHitGroupCount, 3u)
+
+RT_ENUM_BEGIN(MediumBoundary)
+RT_ENUM_VALUE(MediumBoundary, Sphere, 0) // center, radius
+RT_ENUM_VALUE(MediumBoundary, Box, 1)    // boxMin, boxMax (axis-aligned in object space)
+RT_ENUM_END(MediumBoundary)
+
+/// Everything a render's shaders read that is not scene geometry: the camera frame of rt::Camera for this
+/// image size (world space), the settings and the background. One uniform buffer, written before a render.
+struct RenderUniforms
+{
+    vec3 cameraCenter;
+    float shutterOpen;
+    vec3 pixel00; // centre of pixel (0, 0)
+    float shutterClose;
+    vec3 pixelDeltaU;
+    uint thinLens; // 1: sample the defocus disk (defocus angle > 0)
+    vec3 pixelDeltaV;
+    uint width;
+    vec3 defocusDiskU;
+    uint height;
+    vec3 defocusDiskV;
+    uint depth; // path segments traced at most
+    vec3 background0;
+    RT_TAG(BackgroundType) backgroundType;
+    vec3 background1;
+    RT_TAG(Estimator) estimator;
+    RT_TAG(PixelSampling) sampling;
+    uint strata; // stratified sampling: n, with n * n strata per pixel
+    uint seed;
+    uint unidirectionalLight; // 1: emitters emit from their front face only
+    uint lightCount;
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+
+/// Per vkCmdTraceRaysKHR: each launch traces one camera sample per pixel.
+struct TracePushConstants
+{
+    uint sampleIndex; // index of this sample within the whole render (not the dispatch)
+};
+
+/// What the shaders need to find one TLAS instance's geometry, at instanceCustomIndex in InstanceRecord[].
+/// Indices are into the global arrays of the bindings above; kNoIndex where the instance has none.
+struct InstanceRecord
+{
+    uint firstVertex; // triangles: first vertex (positions, and uvs when firstUv != kNoIndex)
+    uint firstUv; // triangles: first vertex uv, or kNoIndex: the uv is the barycentrics (b1, b2)
+    uint firstTriangle; // triangles: gl_PrimitiveID 0 is this triangle
+    uint firstTriangleMaterial; // triangles: per-triangle materials start here, or kNoIndex: use `material`
+    uint material; // triangles: material of every triangle without a per-triangle one
+    uint firstSphere; // procedural: sphere geometry primitive 0
+    uint firstMedium; // procedural: medium geometry primitive 0
+    uint pad;
+};
+
+/// A sphere moving linearly from center0 (time 0) to center1 (time 1), object space.
+struct SphereRecord
+{
+    vec3 center0;
+    float radius;
+    vec3 center1;
+    uint material;
+};
+
+/// A constant-density medium bounded by a sphere or a box, object space (RTTNW §9).
+struct MediumRecord
+{
+    vec3 center;
+    float radius;
+    vec3 boxMin;
+    float density; // extinction coefficient per world unit
+    vec3 boxMax;
+    RT_TAG(MediumBoundary) boundary;
+    uint phaseMaterial; // Isotropic
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+
+/// Camera samples the raygen shader dropped because their radiance was not finite.
+struct SampleCounters
+{
+    uint nanSamples;
+    uint infSamples;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(RenderUniforms) == 160);
+static_assert(offsetof(RenderUniforms, background0) == 96);
+static_assert(offsetof(RenderUniforms, sampling) == 128);
+static_assert(sizeof(TracePushConstants) == 4);
+static_assert(sizeof(InstanceRecord) == 32);
+static_assert(sizeof(SphereRecord) == 32);
+static_assert(offsetof(SphereRecord, center1) == 16);
+static_assert(sizeof(MediumRecord) == 64);
+static_assert(offsetof(MediumRecord, boxMax) == 32);
+static_assert(offsetof(MediumRecord, phaseMaterial) == 48);
+static_assert(sizeof(SampleCounters) == 8);
+#endif
+// ==== end of the GPU engine section ==========================================================================
+
 #ifdef __cplusplus
 static_assert(sizeof(PerlinData) == 256 * 12 + 3 * 256 * 4);
 static_assert(sizeof(TextureData) == 40);

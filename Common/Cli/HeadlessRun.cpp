@@ -1,0 +1,194 @@
+#include "Cli/HeadlessRun.h"
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <condition_variable>
+#include <cstdio>
+#include <filesystem>
+#include <mutex>
+#include <thread>
+
+#include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
+
+#include "Error.h"
+#include "Image/ImageIO.h"
+#include "Render/RenderStats.h"
+
+#ifndef _WIN32
+#include <unistd.h>
+#endif
+
+namespace rt
+{
+namespace
+{
+std::atomic<RenderControl*> g_activeControl{nullptr};
+
+extern "C" void onInterrupt(int)
+{
+    if (RenderControl* c = g_activeControl.load())
+        c->requestCancel();
+}
+
+bool stderrIsTerminal()
+{
+#ifdef _WIN32
+    return false;
+#else
+    return isatty(fileno(stderr)) != 0;
+#endif
+}
+
+void checkPath(const std::string& path, const char* flag, std::initializer_list<const char*> extensions)
+{
+    if (path.empty())
+        return;
+    const std::filesystem::path p(path);
+    bool known = false;
+    for (const char* e : extensions)
+        known |= p.extension() == e;
+    if (!known)
+    {
+        std::string list;
+        for (const char* e : extensions)
+            list += (list.empty() ? "" : " or ") + std::string(e);
+        throw UsageError(fmt::format("{} '{}' must end in {}", flag, path, list));
+    }
+    const std::filesystem::path parent = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
+    if (!std::filesystem::is_directory(parent))
+        throw OutputError(fmt::format("{} '{}': folder '{}' does not exist", flag, path, parent.string()));
+}
+
+/// Prints "[####      ]  42%  12.1 s, ETA 16.4 s" on stderr: in place on a terminal, every 10 % otherwise.
+class ProgressPrinter
+{
+public:
+    ProgressPrinter(const RenderControl& control, bool enabled) : m_control(control)
+    {
+        if (enabled)
+            m_thread = std::thread([this] { loop(); });
+    }
+    ~ProgressPrinter()
+    {
+        if (!m_thread.joinable())
+            return;
+        {
+            std::lock_guard lock(m_mutex);
+            m_stop = true;
+        }
+        m_wake.notify_all();
+        m_thread.join();
+    }
+
+private:
+    void loop()
+    {
+        const bool tty = stderrIsTerminal();
+        int lastDecile = -1;
+        std::unique_lock lock(m_mutex);
+        while (!m_wake.wait_for(lock, std::chrono::milliseconds(tty ? 250 : 1000), [this] { return m_stop; }))
+        {
+            const double f = m_control.fraction();
+            const int decile = static_cast<int>(f * 10.0);
+            if (!tty && decile == lastDecile)
+                continue;
+            lastDecile = decile;
+            const int filled = static_cast<int>(f * 30.0);
+            const double eta = m_control.etaSeconds();
+            std::fprintf(stderr, "%s[%s%s] %3d%%  %.1f s elapsed, ETA %s%s", tty ? "\r" : "",
+                         std::string(filled, '#').c_str(), std::string(30 - filled, ' ').c_str(),
+                         static_cast<int>(f * 100.0), m_control.elapsedSeconds(),
+                         eta < 0 ? "?" : fmt::format("{:.1f} s", eta).c_str(), tty ? "   " : "\n");
+            std::fflush(stderr);
+        }
+        if (tty)
+            std::fprintf(stderr, "\r%70s\r", "");
+    }
+
+    const RenderControl& m_control;
+    std::thread m_thread;
+    std::mutex m_mutex;
+    std::condition_variable m_wake;
+    bool m_stop = false;
+};
+} // namespace
+
+void checkOutputPaths(const CommonOptions& o)
+{
+    checkPath(o.output, "--output", {".png"});
+    checkPath(o.hdr, "--hdr", {".pfm"});
+    checkPath(o.stats, "--stats", {".json"});
+}
+
+int runHeadless(RenderEngine& engine, const Scene& scene, const RenderSettings& settings, const CommonOptions& o)
+{
+    checkOutputPaths(o);
+    spdlog::info("scene {}: {} primitives, {} lights; {} engine on {}", scene.id, scene.primitiveCount(),
+                 scene.lights.size(), toString(engine.kind()), engine.deviceName());
+    const double build = engine.setScene(scene);
+    spdlog::info("acceleration structures built in {:.3f} s", build);
+
+    RenderControl control;
+    g_activeControl = &control;
+    const auto previous = std::signal(SIGINT, onInterrupt);
+    RenderResult result;
+    {
+        ProgressPrinter progress(control, !o.quiet);
+        result = engine.render(settings, control);
+    }
+    std::signal(SIGINT, previous);
+    g_activeControl = nullptr;
+    if (result.stats.cancelled)
+    {
+        spdlog::warn("render cancelled after {:.1f} s: no file written", result.stats.renderSeconds);
+        return 130;
+    }
+    if (!o.output.empty())
+        writePng(o.output, result.image);
+    if (!o.hdr.empty())
+        writePfm(o.hdr, result.image);
+    if (!o.stats.empty())
+        writeStatsJson(o.stats, result.stats);
+    const RenderStats& s = result.stats;
+    std::printf("%s: %dx%d, %d spp (%s, %s), depth %d, %s engine: render %.3f s, build %.3f s, %.2f Mpaths/s, "
+                "NaN %llu, Inf %llu%s%s\n",
+                s.scene.c_str(), s.width, s.height, s.trueSpp, toString(settings.sampling), toString(settings.estimator),
+                settings.depth, toString(s.engine), s.renderSeconds, s.buildSeconds, s.mpathsPerSecond(),
+                static_cast<unsigned long long>(s.nanSamples), static_cast<unsigned long long>(s.infSamples),
+                o.output.empty() ? "" : ", wrote ", o.output.c_str());
+    return 0;
+}
+
+int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>& body)
+{
+    try
+    {
+        app.parse(argc, argv);
+    }
+    catch (const CLI::CallForHelp& e)
+    {
+        return app.exit(e);
+    }
+    catch (const CLI::ParseError& e)
+    {
+        std::fprintf(stderr, "error: %s (see --help)\n", e.what());
+        return 2;
+    }
+    try
+    {
+        return body();
+    }
+    catch (const Error& e)
+    {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return e.exitCode();
+    }
+    catch (const std::exception& e)
+    {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 1;
+    }
+}
+} // namespace rt

@@ -1,0 +1,21 @@
+// The headless flow both apps share: render a scene with an engine, show progress and ETA on stderr, stop
+// cleanly on Ctrl-C, write the image, HDR and stats files asked for, print a one-line summary.
+#pragma once
+
+#include "Cli/CommonOptions.h"
+#include "Render/RenderEngine.h"
+
+namespace rt
+{
+/// Checks, before any work, that every output path can be written (folder exists, known extension).
+/// Throws UsageError or OutputError.
+void checkOutputPaths(const CommonOptions& options);
+
+/// Renders and writes the outputs. Returns the process exit status: 0, or 130 when cancelled by SIGINT
+/// (nothing is written then). Throws rt::Error for failures.
+int runHeadless(RenderEngine& engine, const Scene& scene, const RenderSettings& settings, const CommonOptions& options);
+
+/// Runs `body`, turning every rt::Error and CLI11 parse error into one "error: ..." line on stderr and the
+/// error's exit status. `--help` prints the help and returns 0.
+int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>& body);
+} // namespace rt

@@ -1,0 +1,174 @@
+#include "Scene/CpuScene.h"
+
+#include <cmath>
+
+namespace rt::cpu
+{
+namespace
+{
+QuadRec makeQuad(const vec3& q, const vec3& u, const vec3& v, std::uint32_t material)
+{
+    const vec3 n = glm::cross(u, v);
+    const vec3 w = n / glm::dot(n, n);
+    QuadRec rec;
+    rec.q = q;
+    rec.normal = glm::normalize(n);
+    rec.d = glm::dot(rec.normal, q);
+    rec.material = material;
+    rec.ua = glm::cross(v, w);
+    rec.vb = glm::cross(w, u);
+    return rec;
+}
+
+Aabb quadBounds(const QuadRec& q, const vec3& u, const vec3& v)
+{
+    Aabb box(q.q, q.q + u + v);
+    box.expand(q.q + u);
+    box.expand(q.q + v);
+    // A flat box has no volume; pad it so the slab test does not depend on 0 * inf.
+    const vec3 pad = glm::max(vec3(1e-4f), 1e-6f * glm::abs(box.max));
+    return Aabb(box.min - pad, box.max + pad);
+}
+
+vec2 sphereUv(const vec3& q)
+{
+    // RTTNW §4.3: theta from -y, phi around y from -x.
+    const float theta = std::acos(std::clamp(-q.y, -1.0f, 1.0f));
+    const float phi = std::atan2(-q.z, q.x) + kPi;
+    return {phi * kInv2Pi, theta * kInvPi};
+}
+} // namespace
+
+CpuScene::CpuScene(const Scene& scene) : m_scene(&scene)
+{
+    m_uvFrames.push_back(mat3(1.0f));
+    std::vector<Aabb> bounds;
+    std::vector<PrimRef> refs;
+    const auto add = [&](PrimType type, std::size_t index, const Aabb& box) {
+        refs.push_back(PrimRef::make(type, static_cast<std::uint32_t>(index)));
+        bounds.push_back(box);
+    };
+
+    for (const InstanceDesc& inst : scene.instances)
+    {
+        const GroupDesc& group = scene.groups[inst.group];
+        const Transform& m = inst.worldFromObject;
+        const bool identity = m.isIdentity();
+
+        std::uint32_t uvFrame = 0;
+        float scale = 1.0f;
+        if (!group.spheres.empty() && !identity)
+        {
+            scale = *m.uniformScale(); // Scene::validate guarantees it
+            m_uvFrames.push_back(glm::transpose(mat3(m.m)) / scale); // M = s R: the object<-world rotation is R^T
+            uvFrame = static_cast<std::uint32_t>(m_uvFrames.size() - 1);
+        }
+        for (const SphereDesc& s : group.spheres)
+        {
+            SphereRec rec{m.point(s.center0), s.radius * scale, m.vector(s.center1 - s.center0), s.material, uvFrame};
+            const vec3 r(rec.radius);
+            Aabb box(rec.center0 - r, rec.center0 + r);
+            box.expand(Aabb(rec.center0 + rec.velocity - r, rec.center0 + rec.velocity + r));
+            add(PrimType::Sphere, m_spheres.size(), box);
+            m_spheres.push_back(rec);
+        }
+        for (const QuadDesc& q : group.quads)
+        {
+            const vec3 u = m.vector(q.u), v = m.vector(q.v);
+            const QuadRec rec = makeQuad(m.point(q.q), u, v, q.material);
+            add(PrimType::Quad, m_quads.size(), quadBounds(rec, u, v));
+            m_quads.push_back(rec);
+        }
+        for (const MeshRef& ref : group.meshes)
+        {
+            const MeshData& mesh = scene.meshes[ref.mesh];
+            for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
+            {
+                TriangleRec rec;
+                rec.p0 = m.point(mesh.positions[mesh.indices[3 * t]]);
+                rec.p1 = m.point(mesh.positions[mesh.indices[3 * t + 1]]);
+                rec.p2 = m.point(mesh.positions[mesh.indices[3 * t + 2]]);
+                rec.material = mesh.triangleMaterials.empty() ? ref.material : mesh.triangleMaterials[t];
+                rec.mesh = ref.mesh;
+                rec.triangle = static_cast<std::uint32_t>(t);
+                Aabb box(rec.p0, rec.p1);
+                box.expand(rec.p2);
+                add(PrimType::Triangle, m_triangles.size(), box);
+                m_triangles.push_back(rec);
+            }
+        }
+        for (const MediumDesc& md : group.media)
+        {
+            MediumRec rec;
+            rec.objectFromWorld = m.inverse().m;
+            rec.sphere = md.boundary == MediumDesc::Boundary::Sphere;
+            rec.center = md.center;
+            rec.radius = md.radius;
+            rec.boxMin = md.boxMin;
+            rec.boxMax = md.boxMax;
+            rec.negInvDensity = -1.0f / md.density;
+            rec.material = md.phaseMaterial;
+            add(PrimType::Medium, m_media.size(), m.bounds(md.bounds()));
+            m_media.push_back(rec);
+        }
+    }
+
+    m_bvh = Bvh::build(bounds);
+    m_prims.resize(refs.size());
+    for (std::size_t k = 0; k < refs.size(); ++k)
+        m_prims[k] = refs[m_bvh.order[k]];
+}
+
+SurfaceInteraction CpuScene::interaction(const TraceRay& r, const HitRecord& hit) const
+{
+    SurfaceInteraction si{};
+    const PrimRef ref{hit.prim};
+    switch (ref.type())
+    {
+    case PrimType::Sphere:
+    {
+        const SphereRec& s = m_spheres[ref.index()];
+        const vec3 center = s.center0 + r.time * s.velocity;
+        const vec3 n = glm::normalize(r.origin + hit.t * r.direction - center);
+        si.n = n;
+        si.p = center + s.radius * n; // re-projected onto the surface: o + t d carries error ~ t |d|
+        si.uv = sphereUv(s.uvFrame ? m_uvFrames[s.uvFrame] * n : n);
+        si.material = s.material;
+        break;
+    }
+    case PrimType::Quad:
+    {
+        const QuadRec& q = m_quads[ref.index()];
+        si.p = r.origin + hit.t * r.direction;
+        si.n = q.normal;
+        si.uv = {hit.b1, hit.b2};
+        si.material = q.material;
+        break;
+    }
+    case PrimType::Triangle:
+    {
+        const TriangleRec& tri = m_triangles[ref.index()];
+        const float b0 = 1.0f - hit.b1 - hit.b2;
+        si.p = b0 * tri.p0 + hit.b1 * tri.p1 + hit.b2 * tri.p2; // from barycentrics: accurate (RTG ch. 6)
+        si.n = glm::normalize(glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0));
+        const MeshData& mesh = m_scene->meshes[tri.mesh];
+        if (mesh.uvs.empty())
+            si.uv = {hit.b1, hit.b2};
+        else
+        {
+            const std::uint32_t* idx = &mesh.indices[3 * tri.triangle];
+            si.uv = b0 * mesh.uvs[idx[0]] + hit.b1 * mesh.uvs[idx[1]] + hit.b2 * mesh.uvs[idx[2]];
+        }
+        si.material = tri.material;
+        break;
+    }
+    case PrimType::Medium:
+        si.p = r.origin + hit.t * r.direction;
+        si.n = vec3(1.0f, 0.0f, 0.0f);
+        si.material = m_media[ref.index()].material;
+        si.medium = true;
+        break;
+    }
+    return si;
+}
+} // namespace rt::cpu
