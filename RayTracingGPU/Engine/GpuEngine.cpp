@@ -1,0 +1,247 @@
+#include "Engine/GpuEngine.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "Assets/AssetPaths.h"
+#include "Engine/DispatchPlan.h"
+#include "Engine/GpuContext.h"
+#include "Engine/GpuScene.h"
+#include "Engine/PathTracingPipeline.h"
+#include "Engine/RenderLimits.h"
+#include "Engine/RenderTarget.h"
+#include "Error.h"
+#include "Scene/Camera.h"
+#include "Vulkan/CommandBuffer.h"
+#include "Vulkan/DescriptorPool.h"
+#include "Vulkan/QueryPool.h"
+
+namespace rt::gpu
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+shader::RenderUniforms makeUniforms(const Scene& scene, const RenderSettings& settings, std::uint32_t lightCount)
+{
+    const int width = settings.width;
+    const int height = settings.height();
+    const Camera camera(scene.camera, width, height);
+    shader::RenderUniforms u{};
+    u.cameraCenter = camera.center;
+    u.shutterOpen = camera.shutterOpen;
+    u.pixel00 = camera.pixel00;
+    u.shutterClose = camera.shutterClose;
+    u.pixelDeltaU = camera.pixelDeltaU;
+    u.thinLens = camera.thinLens ? 1u : 0u;
+    u.pixelDeltaV = camera.pixelDeltaV;
+    u.width = static_cast<std::uint32_t>(width);
+    u.defocusDiskU = camera.defocusDiskU;
+    u.height = static_cast<std::uint32_t>(height);
+    u.defocusDiskV = camera.defocusDiskV;
+    u.depth = static_cast<std::uint32_t>(settings.depth);
+    u.background0 = scene.background.color0;
+    u.backgroundType = scene.background.type;
+    u.background1 = scene.background.color1;
+    u.estimator = settings.estimator;
+    u.sampling = settings.sampling;
+    u.strata = static_cast<std::uint32_t>(std::sqrt(static_cast<double>(settings.trueSpp())));
+    u.seed = settings.seed;
+    u.unidirectionalLight = settings.unidirectionalLight ? 1u : 0u;
+    u.lightCount = lightCount;
+    return u;
+}
+
+TargetLimits targetLimits(const vk::Device& device)
+{
+    const vk::DeviceProperties& p = device.properties();
+    return {p.name, p.limits.maxImageDimension2D, p.deviceLocalHeapSize, p.maxMemoryAllocationSize};
+}
+} // namespace
+
+struct GpuEngine::Impl
+{
+    GpuContext context;
+    PathTracingPipeline pipeline;
+    vk::QueryPool timestamps;
+    std::uint64_t pathsPerDispatch;
+    const Scene* sceneDesc = nullptr;
+    std::unique_ptr<GpuScene> scene;
+    double buildSeconds = 0.0;
+    std::unique_ptr<RenderTarget> target;
+    vk::DescriptorPool descriptorPool;
+    VkDescriptorSet descriptorSet = VK_NULL_HANDLE;
+
+    explicit Impl(const GpuEngineOptions& options)
+        : context({options.deviceIndex, options.validation}),
+          pipeline(context.device(), options.shaderDir.empty() ? executableDir() / "shaders" : options.shaderDir),
+          timestamps(context.device(), 2),
+          pathsPerDispatch(options.pathsPerDispatch > 0 ? options.pathsPerDispatch
+                           : context.device().properties().type == vk::DeviceType::Cpu ? kPathsPerDispatchCpu
+                                                                                       : kPathsPerDispatchGpu)
+    {
+    }
+
+    const vk::Device& device() const { return context.device(); }
+
+    /// A target of the settings' size (reused when the size is unchanged) and a descriptor set for it.
+    void prepareTarget(std::uint32_t width, std::uint32_t height)
+    {
+        if (target && target->width() == width && target->height() == height && descriptorSet != VK_NULL_HANDLE)
+            return;
+        descriptorPool = vk::DescriptorPool();
+        target.reset();
+        target = std::make_unique<RenderTarget>(device(), width, height);
+        const auto imageCount = static_cast<std::uint32_t>(scene->imageViews().size());
+        descriptorPool = vk::DescriptorPool(device(), pipeline.bindings(), imageCount);
+        descriptorSet = descriptorPool.allocate(pipeline.setLayout(), imageCount);
+        pipeline.writeDescriptors(device(), descriptorSet, *scene, *target);
+    }
+
+    /// Records and runs one dispatch: `samples` launches of one sample per pixel from `firstSample` on.
+    /// Returns the GPU seconds of the launches (negative when the queue has no timestamps).
+    double dispatch(std::uint32_t firstSample, std::uint32_t samples, bool readback)
+    {
+        const bool timed = device().properties().timestampValidBits > 0;
+        vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) {
+            if (timed)
+            {
+                vkCmdResetQueryPool(cmd, timestamps.Handle(), 0, 2);
+                vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps.Handle(), 0);
+            }
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline.Handle());
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline.layout().Handle(), 0, 1,
+                                    &descriptorSet, 0, nullptr);
+            const ShaderBindingTable& sbt = pipeline.sbt();
+            for (std::uint32_t s = 0; s < samples; ++s)
+            {
+                const shader::TracePushConstants push{firstSample + s};
+                vkCmdPushConstants(cmd, pipeline.layout().Handle(), VK_SHADER_STAGE_RAYGEN_BIT_KHR |
+                                       VK_SHADER_STAGE_MISS_BIT_KHR | VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR |
+                                       VK_SHADER_STAGE_INTERSECTION_BIT_KHR,
+                                   0, sizeof(push), &push);
+                vkCmdTraceRaysKHR(cmd, &sbt.raygen(), &sbt.miss(), &sbt.hit(), &sbt.callable(), target->width(),
+                                  target->height(), 1);
+                // Each launch reads and writes its pixel of the accumulation image: order the samples.
+                VkMemoryBarrier accumulated{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+                accumulated.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+                accumulated.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+                vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                                     VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0, 1, &accumulated, 0, nullptr, 0,
+                                     nullptr);
+            }
+            if (timed)
+                vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 1);
+            if (readback)
+                target->recordReadback(cmd);
+            VkMemoryBarrier counted{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+            counted.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+            counted.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+            vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                                 &counted, 0, nullptr, 0, nullptr);
+        });
+        return timed ? timestamps.secondsBetween(0, device().properties().limits.timestampPeriod) : -1.0;
+    }
+
+    void clear()
+    {
+        vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) { target->recordClear(cmd); });
+    }
+
+    void readback()
+    {
+        vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) { target->recordReadback(cmd); });
+    }
+};
+
+GpuEngine::GpuEngine(const GpuEngineOptions& options) : m_impl(std::make_unique<Impl>(options)) {}
+
+GpuEngine::~GpuEngine() = default;
+
+std::string GpuEngine::deviceName() const { return m_impl->device().properties().name; }
+
+bool GpuEngine::validationEnabled() const { return m_impl->context.validationEnabled(); }
+
+std::uint64_t GpuEngine::validationMessages() const { return m_impl->context.validationMessages(); }
+
+double GpuEngine::setScene(const Scene& scene)
+{
+    Impl& e = *m_impl;
+    scene.validate();
+    e.descriptorPool = vk::DescriptorPool();
+    e.descriptorSet = VK_NULL_HANDLE;
+    e.scene.reset();
+    e.sceneDesc = nullptr;
+    e.scene = std::make_unique<GpuScene>(e.device(), e.context.commandPool(), scene, e.pipeline.maxImages());
+    e.sceneDesc = &scene;
+    e.buildSeconds = e.scene->buildSeconds();
+    return e.buildSeconds;
+}
+
+RenderResult GpuEngine::render(const RenderSettings& settings, RenderControl& control, const PreviewCallback& preview)
+{
+    const Clock::time_point wallStart = Clock::now();
+    Impl& e = *m_impl;
+    settings.validate();
+    if (!e.scene)
+        throw UsageError("GpuEngine::render called before setScene");
+    const auto width = static_cast<std::uint32_t>(settings.width);
+    const auto height = static_cast<std::uint32_t>(settings.height());
+    if (const auto problem = checkTargetLimits(width, height, targetLimits(e.device())))
+        throw DeviceError(*problem);
+
+    e.prepareTarget(width, height);
+    e.target->reset(makeUniforms(*e.sceneDesc, settings, e.scene->lightCount()));
+    const auto totalSamples = static_cast<std::uint32_t>(settings.trueSpp());
+    const DispatchPlan plan = planDispatches(totalSamples, std::uint64_t(width) * height, e.pathsPerDispatch,
+                                             settings.sampling == PixelSampling::Accumulate);
+
+    RenderResult result;
+    RenderStats& stats = result.stats;
+    e.clear();
+    control.begin(plan.dispatchCount);
+    std::uint32_t samplesDone = 0;
+    double gpuSeconds = 0.0;
+    bool timed = true;
+    const Clock::time_point renderStart = Clock::now();
+    for (std::uint32_t d = 0; d < plan.dispatchCount; ++d)
+    {
+        if (control.cancelRequested())
+        {
+            stats.cancelled = true;
+            break;
+        }
+        const std::uint32_t samples = plan.samplesIn(d, totalSamples);
+        const double seconds = e.dispatch(samplesDone, samples, static_cast<bool>(preview));
+        timed = timed && seconds >= 0.0;
+        gpuSeconds += seconds;
+        samplesDone += samples;
+        control.advance();
+        if (preview)
+            preview(e.target->readEstimate(samplesDone), static_cast<int>(samplesDone));
+    }
+    stats.renderSeconds = secondsSince(renderStart);
+    if (!preview || samplesDone == 0)
+        e.readback();
+    result.image = e.target->readEstimate(samplesDone);
+
+    const shader::SampleCounters counters = e.target->readCounters();
+    stats.scene = e.sceneDesc->id;
+    stats.engine = EngineKind::Gpu;
+    stats.device = deviceName();
+    stats.settings = settings;
+    stats.width = static_cast<int>(width);
+    stats.height = static_cast<int>(height);
+    stats.trueSpp = static_cast<int>(samplesDone);
+    stats.buildSeconds = e.buildSeconds;
+    stats.gpuSeconds = timed ? gpuSeconds : -1.0;
+    stats.paths = std::uint64_t(width) * height * samplesDone;
+    stats.nanSamples = counters.nanSamples;
+    stats.infSamples = counters.infSamples;
+    stats.threadsUsed = 1;
+    stats.wallSeconds = secondsSince(wallStart);
+    return result;
+}
+} // namespace rt::gpu

@@ -1,0 +1,74 @@
+#include "Engine/GpuScene.h"
+
+#include <chrono>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "Error.h"
+#include "Scene/Perlin.h"
+#include "Vulkan/UploadBatch.h"
+
+namespace rt::gpu
+{
+namespace
+{
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+// Arrays that acceleration-structure builds read as well as shaders.
+constexpr VkBufferUsageFlags kBuildInput = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                           VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+                                           VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
+
+void checkImageLimits(const vk::Device& device, const Scene& scene, std::uint32_t maxImages)
+{
+    const auto& p = device.properties();
+    if (scene.images.size() > maxImages)
+        throw DeviceError(fmt::format("scene '{}' has {} images; the GPU engine binds at most {} on device '{}'",
+                                      scene.id, scene.images.size(), maxImages, p.name));
+    for (const ImageData& image : scene.images)
+        if (std::uint32_t(image.width) > p.limits.maxImageDimension2D ||
+            std::uint32_t(image.height) > p.limits.maxImageDimension2D)
+            throw DeviceError(fmt::format("texture '{}' is {}x{}, beyond maxImageDimension2D {} of device '{}'",
+                                          image.path, image.width, image.height, p.limits.maxImageDimension2D,
+                                          p.name));
+}
+} // namespace
+
+GpuScene::GpuScene(const vk::Device& device, const vk::CommandPool& pool, const Scene& scene, std::uint32_t maxImages)
+    : m_sampler(device), m_lightCount(static_cast<std::uint32_t>(scene.lights.size()))
+{
+    checkImageLimits(device, scene, maxImages);
+    const SceneLayout layout = layoutScene(scene);
+
+    vk::UploadBatch upload(device);
+    m_buffers.materials = upload.buffer(scene.materials, kStorage);
+    m_buffers.textures = upload.buffer(scene.textures, kStorage);
+    m_buffers.lights = upload.buffer(scene.lights, kStorage);
+    m_buffers.perlin = upload.buffer(&perlinTables(), sizeof(shader::PerlinData), kStorage);
+    m_buffers.records = upload.buffer(layout.records, kStorage);
+    m_buffers.positions = upload.buffer(layout.positions, kBuildInput);
+    m_buffers.uvs = upload.buffer(layout.uvs, kStorage);
+    m_buffers.triangles = upload.buffer(layout.triangles, kBuildInput);
+    m_buffers.triangleMaterials = upload.buffer(layout.triangleMaterials, kStorage);
+    m_buffers.spheres = upload.buffer(layout.spheres, kStorage);
+    m_buffers.media = upload.buffer(layout.media, kStorage);
+    m_buffers.aabbs = upload.buffer(layout.aabbs, kBuildInput);
+
+    static const ImageData kWhite{"(no image)", 1, 1, {255, 255, 255, 255}};
+    const std::vector<ImageData> fallback{kWhite};
+    for (const ImageData& image : scene.images.empty() ? fallback : scene.images)
+    {
+        const VkExtent2D extent{std::uint32_t(image.width), std::uint32_t(image.height)};
+        m_images.emplace_back(device, extent, VK_FORMAT_R8G8B8A8_SRGB,
+                              VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+        upload.image(m_images.back(), image.rgba.data(), image.rgba.size());
+        m_views.emplace_back(device, m_images.back());
+    }
+    upload.submit(pool);
+
+    const auto start = std::chrono::steady_clock::now();
+    m_accelerationStructures = buildAccelerationStructures(
+        device, pool, layout,
+        {m_buffers.positions.address(), m_buffers.triangles.address(), m_buffers.aabbs.address()});
+    m_buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+} // namespace rt::gpu

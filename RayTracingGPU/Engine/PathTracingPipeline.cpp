@@ -1,0 +1,111 @@
+#include "Engine/PathTracingPipeline.h"
+
+#include <algorithm>
+
+#include "Engine/GpuScene.h"
+#include "Engine/RenderTarget.h"
+#include "RayTracing/RayTracingPipeline.h"
+#include "Shared/HostDevice.h"
+
+namespace rt::gpu
+{
+namespace
+{
+using namespace shader;
+
+constexpr VkShaderStageFlags kRayTracingStages = VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR |
+                                                 VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR |
+                                                 VK_SHADER_STAGE_INTERSECTION_BIT_KHR;
+
+// A scene with more images than this is refused; real scenes have a handful.
+constexpr std::uint32_t kImageArrayCap = 1024;
+
+std::uint32_t maxImagesOf(const vk::Device& device)
+{
+    const VkPhysicalDeviceLimits& limits = device.properties().limits;
+    return std::min({limits.maxPerStageDescriptorSampledImages, limits.maxDescriptorSetSampledImages, kImageArrayCap});
+}
+
+std::vector<vk::DescriptorBinding> bindingsOf(std::uint32_t maxImages)
+{
+    std::vector<vk::DescriptorBinding> b;
+    const auto add = [&](std::uint32_t binding, VkDescriptorType type, std::uint32_t count = 1,
+                         VkDescriptorBindingFlags flags = 0) {
+        b.push_back({binding, type, count, kRayTracingStages, flags});
+    };
+    add(kBindingTlas, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR);
+    add(kBindingAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
+    add(kBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
+    for (std::uint32_t binding : {kBindingMaterials, kBindingTextures, kBindingLights, kBindingPerlin,
+                                  kBindingInstances, kBindingPositions, kBindingUvs, kBindingTriangles,
+                                  kBindingTriangleMaterials, kBindingSpheres, kBindingMedia, kBindingCounters})
+        add(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    add(kBindingImages, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, maxImages,
+        VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT | VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT);
+    return b;
+}
+} // namespace
+
+PathTracingPipeline::PathTracingPipeline(const vk::Device& device, const std::filesystem::path& shaderDir)
+    : m_maxImages(maxImagesOf(device)), m_bindings(bindingsOf(m_maxImages)), m_setLayout(device, m_bindings),
+      m_layout(device, m_setLayout, sizeof(TracePushConstants), kRayTracingStages),
+      m_pipeline(createPathTracingPipeline(device, m_layout, shaderDir)),
+      m_sbt(device, m_pipeline.Handle(), kMissGroupCount, kHitGroupCount)
+{
+}
+
+void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescriptorSet set, const GpuScene& scene,
+                                           const RenderTarget& target) const
+{
+    const VkAccelerationStructureKHR tlas = scene.tlas();
+    VkWriteDescriptorSetAccelerationStructureKHR tlasInfo{
+        VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
+    tlasInfo.accelerationStructureCount = 1;
+    tlasInfo.pAccelerationStructures = &tlas;
+    const VkDescriptorImageInfo accumulation{VK_NULL_HANDLE, target.view(), VK_IMAGE_LAYOUT_GENERAL};
+
+    const GpuScene::Buffers& buffers = scene.buffers();
+    const std::pair<std::uint32_t, const vk::Buffer*> storage[] = {
+        {kBindingMaterials, &buffers.materials},
+        {kBindingTextures, &buffers.textures},
+        {kBindingLights, &buffers.lights},
+        {kBindingPerlin, &buffers.perlin},
+        {kBindingInstances, &buffers.records},
+        {kBindingPositions, &buffers.positions},
+        {kBindingUvs, &buffers.uvs},
+        {kBindingTriangles, &buffers.triangles},
+        {kBindingTriangleMaterials, &buffers.triangleMaterials},
+        {kBindingSpheres, &buffers.spheres},
+        {kBindingMedia, &buffers.media},
+        {kBindingCounters, &target.counters()},
+    };
+    std::vector<VkDescriptorBufferInfo> bufferInfos;
+    bufferInfos.reserve(std::size(storage) + 1);
+    bufferInfos.push_back({target.uniforms().Handle(), 0, VK_WHOLE_SIZE});
+    for (const auto& [binding, buffer] : storage)
+        bufferInfos.push_back({buffer->Handle(), 0, VK_WHOLE_SIZE});
+    std::vector<VkDescriptorImageInfo> imageInfos;
+    for (const vk::ImageView& view : scene.imageViews())
+        imageInfos.push_back({scene.sampler(), view.Handle(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+
+    std::vector<VkWriteDescriptorSet> writes;
+    writes.reserve(std::size(storage) + 4); // write() hands out references into it
+    const auto write = [&](std::uint32_t binding, VkDescriptorType type, std::uint32_t count) -> VkWriteDescriptorSet& {
+        VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        w.dstSet = set;
+        w.dstBinding = binding;
+        w.descriptorCount = count;
+        w.descriptorType = type;
+        writes.push_back(w);
+        return writes.back();
+    };
+    write(kBindingTlas, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1).pNext = &tlasInfo;
+    write(kBindingAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1).pImageInfo = &accumulation;
+    write(kBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1).pBufferInfo = &bufferInfos[0];
+    for (std::size_t i = 0; i < std::size(storage); ++i)
+        write(storage[i].first, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[i + 1];
+    write(kBindingImages, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, static_cast<std::uint32_t>(imageInfos.size()))
+        .pImageInfo = imageInfos.data();
+    vkUpdateDescriptorSets(device.Handle(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
+}
+} // namespace rt::gpu

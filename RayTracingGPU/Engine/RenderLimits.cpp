@@ -1,0 +1,38 @@
+#include "Engine/RenderLimits.h"
+
+#include <spdlog/fmt/fmt.h>
+
+namespace rt::gpu
+{
+namespace
+{
+std::string gigabytes(std::uint64_t bytes) { return fmt::format("{:.1f} GB", double(bytes) * 1e-9); }
+} // namespace
+
+std::uint64_t renderTargetBytes(std::uint32_t width, std::uint32_t height)
+{
+    return 2 * kAccumulationBytesPerPixel * std::uint64_t(width) * height;
+}
+
+std::optional<std::string> checkTargetLimits(std::uint32_t width, std::uint32_t height, const TargetLimits& limits)
+{
+    std::string problems;
+    const auto add = [&problems](const std::string& text) { problems += (problems.empty() ? "" : "; ") + text; };
+    const std::string image = fmt::format("image {}x{}", width, height);
+    if (width > limits.maxImageDimension2D || height > limits.maxImageDimension2D)
+        add(fmt::format("{} exceeds maxImageDimension2D {} of device '{}'", image, limits.maxImageDimension2D,
+                        limits.deviceName));
+    const std::uint64_t needed = renderTargetBytes(width, height);
+    if (needed > limits.deviceLocalBytes)
+        add(fmt::format("{} needs {} of device memory; device '{}' has {}", image, gigabytes(needed),
+                        limits.deviceName, gigabytes(limits.deviceLocalBytes)));
+    const std::uint64_t oneAllocation = kAccumulationBytesPerPixel * std::uint64_t(width) * height;
+    if (oneAllocation > limits.maxAllocationBytes)
+        add(fmt::format("its accumulation image needs one allocation of {}; maxMemoryAllocationSize of device "
+                        "'{}' is {}",
+                        gigabytes(oneAllocation), limits.deviceName, gigabytes(limits.maxAllocationBytes)));
+    if (problems.empty())
+        return std::nullopt;
+    return problems;
+}
+} // namespace rt::gpu

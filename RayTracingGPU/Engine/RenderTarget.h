@@ -1,0 +1,48 @@
+// What a render of one size writes: the RGBA32F accumulation image (rgb: sum of sample radiances, a: sample
+// count), a host-visible copy of it for readback, the per-render uniforms and the NaN/Inf counters.
+#pragma once
+
+#include <cstdint>
+
+#include "Image/Image.h"
+#include "Shared/HostDevice.h"
+#include "Vulkan/Buffer.h"
+#include "Vulkan/Image.h"
+
+namespace rt::gpu
+{
+class RenderTarget final
+{
+public:
+    /// Allocates for width x height (checkTargetLimits passed). The image is left in GENERAL layout by the
+    /// first clear() recorded.
+    RenderTarget(const vk::Device& device, std::uint32_t width, std::uint32_t height);
+    RenderTarget(const RenderTarget&) = delete;
+    RenderTarget& operator=(const RenderTarget&) = delete;
+    ~RenderTarget() = default;
+
+    std::uint32_t width() const { return m_image.extent().width; }
+    std::uint32_t height() const { return m_image.extent().height; }
+    VkImageView view() const { return m_view.Handle(); }
+    const vk::Buffer& uniforms() const { return m_uniforms; }
+    const vk::Buffer& counters() const { return m_counters; }
+
+    /// Writes the uniforms and zeroes the counters (host-visible memory; call while the device is idle).
+    void reset(const shader::RenderUniforms& uniforms);
+    shader::SampleCounters readCounters() const;
+
+    /// Records: UNDEFINED -> GENERAL and clear to zero.
+    void recordClear(VkCommandBuffer cmd) const;
+    /// Records the copy of the accumulation image into the readback buffer, after the ray-tracing writes.
+    void recordReadback(VkCommandBuffer cmd) const;
+    /// The estimate from the readback buffer: sum / `samples`, RGB (call after recordReadback completed).
+    Image readEstimate(std::uint32_t samples) const;
+
+private:
+    vk::Image m_image;
+    vk::ImageView m_view;
+    vk::Buffer m_readback;
+    vk::Buffer m_uniforms;
+    vk::Buffer m_counters;
+};
+} // namespace rt::gpu

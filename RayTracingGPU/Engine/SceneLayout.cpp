@@ -1,0 +1,210 @@
+#include "Engine/SceneLayout.h"
+
+#include <map>
+#include <optional>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "Error.h"
+
+namespace rt::gpu
+{
+namespace
+{
+using shader::InstanceRecord;
+using shader::kHitGroupMedia;
+using shader::kHitGroupSpheres;
+using shader::kHitGroupTriangles;
+
+// A procedural BLAS's media (geometry 1) reach their hit group through sbtRecordStride 1.
+static_assert(kHitGroupMedia == kHitGroupSpheres + 1);
+
+constexpr std::size_t kMaxCustomIndex = 1u << 24; // VkAccelerationStructureInstanceKHR::instanceCustomIndex
+
+std::uint32_t u32(std::size_t n) { return static_cast<std::uint32_t>(n); }
+
+InstanceRecord emptyRecord()
+{
+    return {.firstVertex = kNoIndex,
+            .firstUv = kNoIndex,
+            .firstTriangle = kNoIndex,
+            .firstTriangleMaterial = kNoIndex,
+            .material = kNoIndex,
+            .firstSphere = kNoIndex,
+            .firstMedium = kNoIndex,
+            .pad = 0};
+}
+
+/// A BLAS and the record its TLAS instances point at.
+struct Part
+{
+    std::uint32_t blas;
+    std::uint32_t record;
+    std::uint32_t hitGroup;
+};
+
+class Builder
+{
+public:
+    explicit Builder(const Scene& scene) : m_scene(scene) {}
+
+    SceneLayout build()
+    {
+        std::map<std::uint32_t, std::vector<Part>> groupParts;
+        for (const InstanceDesc& instance : m_scene.instances)
+        {
+            auto [it, added] = groupParts.try_emplace(instance.group);
+            if (added)
+                it->second = partsOf(instance.group);
+            for (const Part& part : it->second)
+                m_out.instances.push_back({part.blas, instance.worldFromObject.m, part.record, part.hitGroup});
+        }
+        if (m_out.instances.size() >= kMaxCustomIndex || m_out.records.size() >= kMaxCustomIndex)
+            throw SceneError(fmt::format("scene '{}' needs {} TLAS instances; the GPU engine addresses at most {}",
+                                         m_scene.id, m_out.instances.size(), kMaxCustomIndex - 1));
+        return std::move(m_out);
+    }
+
+private:
+    std::vector<Part> partsOf(std::uint32_t groupIndex)
+    {
+        const GroupDesc& group = m_scene.groups[groupIndex];
+        std::vector<Part> parts;
+        if (!group.quads.empty())
+            parts.push_back(quadPart(group));
+        for (const MeshRef& ref : group.meshes)
+            parts.push_back(meshPart(ref));
+        if (!group.spheres.empty() || !group.media.empty())
+            parts.push_back(proceduralPart(group));
+        return parts;
+    }
+
+    std::uint32_t addRecord(const InstanceRecord& record)
+    {
+        m_out.records.push_back(record);
+        return u32(m_out.records.size() - 1);
+    }
+
+    /// Quad Q + a u + b v as triangles (Q, Q+u, Q+u+v) and (Q, Q+u+v, Q+v): both face along u x v, and the
+    /// vertex uvs (a, b) interpolate to the quad's edge coordinates.
+    Part quadPart(const GroupDesc& group)
+    {
+        BlasDesc blas{.kind = BlasDesc::Kind::Triangles,
+                      .firstVertex = u32(m_out.positions.size()),
+                      .firstTriangle = u32(m_out.triangles.size())};
+        InstanceRecord record = emptyRecord();
+        record.firstVertex = blas.firstVertex;
+        record.firstUv = u32(m_out.uvs.size());
+        record.firstTriangle = blas.firstTriangle;
+        record.firstTriangleMaterial = u32(m_out.triangleMaterials.size());
+        for (const QuadDesc& q : group.quads)
+        {
+            const std::uint32_t base = u32(m_out.positions.size()) - blas.firstVertex;
+            m_out.positions.insert(m_out.positions.end(), {q.q, q.q + q.u, q.q + q.u + q.v, q.q + q.v});
+            m_out.uvs.insert(m_out.uvs.end(), {vec2(0, 0), vec2(1, 0), vec2(1, 1), vec2(0, 1)});
+            m_out.triangles.push_back({base, base + 1, base + 2});
+            m_out.triangles.push_back({base, base + 2, base + 3});
+            m_out.triangleMaterials.insert(m_out.triangleMaterials.end(), {q.material, q.material});
+        }
+        blas.vertexCount = u32(m_out.positions.size()) - blas.firstVertex;
+        blas.triangleCount = u32(m_out.triangles.size()) - blas.firstTriangle;
+        m_out.blases.push_back(blas);
+        return {u32(m_out.blases.size() - 1), addRecord(record), kHitGroupTriangles};
+    }
+
+    Part meshPart(const MeshRef& ref)
+    {
+        auto [it, added] = m_meshes.try_emplace(ref.mesh);
+        if (added)
+            it->second = addMesh(m_scene.meshes[ref.mesh]);
+        const MeshEntry& mesh = it->second;
+        InstanceRecord record = mesh.record;
+        record.material = ref.material;
+        // Records of one mesh differ only in the MeshRef's material: share them.
+        auto [recordIt, newRecord] = m_meshRecords.try_emplace({ref.mesh, ref.material});
+        if (newRecord)
+            recordIt->second = addRecord(record);
+        return {mesh.blas, recordIt->second, kHitGroupTriangles};
+    }
+
+    struct MeshEntry
+    {
+        std::uint32_t blas;
+        InstanceRecord record;
+    };
+
+    MeshEntry addMesh(const MeshData& mesh)
+    {
+        BlasDesc blas{.kind = BlasDesc::Kind::Triangles,
+                      .firstVertex = u32(m_out.positions.size()),
+                      .vertexCount = u32(mesh.positions.size()),
+                      .firstTriangle = u32(m_out.triangles.size()),
+                      .triangleCount = u32(mesh.triangleCount())};
+        InstanceRecord record = emptyRecord();
+        record.firstVertex = blas.firstVertex;
+        record.firstTriangle = blas.firstTriangle;
+        m_out.positions.insert(m_out.positions.end(), mesh.positions.begin(), mesh.positions.end());
+        if (!mesh.uvs.empty())
+        {
+            record.firstUv = u32(m_out.uvs.size());
+            m_out.uvs.insert(m_out.uvs.end(), mesh.uvs.begin(), mesh.uvs.end());
+        }
+        for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
+            m_out.triangles.push_back({mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2]});
+        if (!mesh.triangleMaterials.empty())
+        {
+            record.firstTriangleMaterial = u32(m_out.triangleMaterials.size());
+            m_out.triangleMaterials.insert(m_out.triangleMaterials.end(), mesh.triangleMaterials.begin(),
+                                           mesh.triangleMaterials.end());
+        }
+        m_out.blases.push_back(blas);
+        return {u32(m_out.blases.size() - 1), record};
+    }
+
+    Part proceduralPart(const GroupDesc& group)
+    {
+        BlasDesc blas{.kind = BlasDesc::Kind::Procedural};
+        InstanceRecord record = emptyRecord();
+        blas.firstSphereAabb = u32(m_out.aabbs.size());
+        blas.sphereCount = u32(group.spheres.size());
+        record.firstSphere = u32(m_out.spheres.size());
+        for (const SphereDesc& s : group.spheres)
+        {
+            m_out.spheres.push_back({s.center0, s.radius, s.center1, s.material});
+            const Aabb box = s.bounds(); // the whole sweep of a moving sphere
+            m_out.aabbs.push_back({box.min, box.max});
+        }
+        blas.firstMediumAabb = u32(m_out.aabbs.size());
+        blas.mediumCount = u32(group.media.size());
+        record.firstMedium = u32(m_out.media.size());
+        for (const MediumDesc& m : group.media)
+        {
+            const bool sphere = m.boundary == MediumDesc::Boundary::Sphere;
+            m_out.media.push_back({.center = m.center,
+                                   .radius = m.radius,
+                                   .boxMin = m.boxMin,
+                                   .density = m.density,
+                                   .boxMax = m.boxMax,
+                                   .boundary = sphere ? shader::MediumBoundary::Sphere : shader::MediumBoundary::Box,
+                                   .phaseMaterial = m.phaseMaterial,
+                                   .pad0 = 0,
+                                   .pad1 = 0,
+                                   .pad2 = 0});
+            const Aabb box = m.bounds();
+            m_out.aabbs.push_back({box.min, box.max});
+        }
+        m_out.blases.push_back(blas);
+        // Geometry 0 takes the instance's first record: spheres if any, else the media.
+        const std::uint32_t hitGroup = blas.sphereCount > 0 ? kHitGroupSpheres : kHitGroupMedia;
+        return {u32(m_out.blases.size() - 1), addRecord(record), hitGroup};
+    }
+
+    const Scene& m_scene;
+    SceneLayout m_out;
+    std::map<std::uint32_t, MeshEntry> m_meshes;
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> m_meshRecords;
+};
+} // namespace
+
+SceneLayout layoutScene(const Scene& scene) { return Builder(scene).build(); }
+} // namespace rt::gpu

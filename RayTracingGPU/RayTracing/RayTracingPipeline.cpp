@@ -1,0 +1,94 @@
+#include "RayTracing/RayTracingPipeline.h"
+
+#include <vector>
+
+#include "Shared/HostDevice.h"
+#include "Vulkan/Check.h"
+#include "Vulkan/ShaderModule.h"
+
+namespace rt::gpu
+{
+namespace
+{
+VkRayTracingShaderGroupCreateInfoKHR group(VkRayTracingShaderGroupTypeKHR type)
+{
+    VkRayTracingShaderGroupCreateInfoKHR g{VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR};
+    g.type = type;
+    g.generalShader = VK_SHADER_UNUSED_KHR;
+    g.closestHitShader = VK_SHADER_UNUSED_KHR;
+    g.anyHitShader = VK_SHADER_UNUSED_KHR;
+    g.intersectionShader = VK_SHADER_UNUSED_KHR;
+    return g;
+}
+} // namespace
+
+vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::PipelineLayout& layout,
+                                       const std::filesystem::path& shaderDir)
+{
+    struct Stage
+    {
+        const char* file;
+        VkShaderStageFlagBits stage;
+    };
+    enum StageIndex : std::uint32_t
+    {
+        RayGen,
+        Miss,
+        TriangleHit,
+        SphereIntersection,
+        SphereHit,
+        MediumIntersection,
+        MediumHit,
+        StageCount
+    };
+    const Stage stages[StageCount] = {
+        {"RayGen.rgen.spv", VK_SHADER_STAGE_RAYGEN_BIT_KHR},
+        {"Background.rmiss.spv", VK_SHADER_STAGE_MISS_BIT_KHR},
+        {"Triangle.rchit.spv", VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR},
+        {"Sphere.rint.spv", VK_SHADER_STAGE_INTERSECTION_BIT_KHR},
+        {"Sphere.rchit.spv", VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR},
+        {"Medium.rint.spv", VK_SHADER_STAGE_INTERSECTION_BIT_KHR},
+        {"Medium.rchit.spv", VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR},
+    };
+    std::vector<vk::ShaderModule> modules;
+    std::vector<VkPipelineShaderStageCreateInfo> stageInfos;
+    for (const Stage& s : stages)
+    {
+        modules.emplace_back(device, shaderDir / s.file);
+        VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+        info.stage = s.stage;
+        info.module = modules.back().Handle();
+        info.pName = "main";
+        stageInfos.push_back(info);
+    }
+
+    std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
+    groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR));
+    groups.back().generalShader = RayGen;
+    groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR));
+    groups.back().generalShader = Miss;
+    // Hit groups in the order of the kHitGroup* constants.
+    static_assert(shader::kHitGroupTriangles == 0 && shader::kHitGroupSpheres == 1 && shader::kHitGroupMedia == 2);
+    groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR));
+    groups.back().closestHitShader = TriangleHit;
+    groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR));
+    groups.back().intersectionShader = SphereIntersection;
+    groups.back().closestHitShader = SphereHit;
+    groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR));
+    groups.back().intersectionShader = MediumIntersection;
+    groups.back().closestHitShader = MediumHit;
+
+    VkRayTracingPipelineCreateInfoKHR info{VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR};
+    info.stageCount = static_cast<std::uint32_t>(stageInfos.size());
+    info.pStages = stageInfos.data();
+    info.groupCount = static_cast<std::uint32_t>(groups.size());
+    info.pGroups = groups.data();
+    info.maxPipelineRayRecursionDepth = 1;
+    info.layout = layout.Handle();
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    vk::check(vkCreateRayTracingPipelinesKHR(device.Handle(), VK_NULL_HANDLE, VK_NULL_HANDLE, 1, &info, nullptr,
+                                             &pipeline),
+              "vkCreateRayTracingPipelinesKHR");
+    return vk::Pipeline(device, pipeline);
+}
+} // namespace rt::gpu

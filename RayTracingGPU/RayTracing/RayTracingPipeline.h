@@ -1,0 +1,23 @@
+// The path tracer's ray-tracing pipeline. Shader groups, in SBT order:
+//   0  raygen   RayGen.rgen         camera samples and the iterative bounce loop
+//   1  miss     Background.rmiss    constant or gradient background
+//   2  hit      Triangle.rchit      triangle BLASes (meshes, quads)        = kHitGroupTriangles
+//   3  hit      Sphere.rint/.rchit  procedural geometry 0 (spheres)        = kHitGroupSpheres
+//   4  hit      Medium.rint/.rchit  procedural geometry 1 (constant media) = kHitGroupMedia
+// Maximum recursion depth 1: hit shaders never trace, raygen loops over bounces.
+#pragma once
+
+#include <filesystem>
+
+#include "Vulkan/Pipeline.h"
+#include "Vulkan/PipelineLayout.h"
+
+namespace rt::gpu
+{
+inline constexpr std::uint32_t kMissGroupCount = 1;
+
+/// Creates the pipeline from the SPIR-V files in `shaderDir`. Throws rt::AssetError for a missing shader,
+/// rt::DeviceError when the driver rejects the pipeline.
+vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::PipelineLayout& layout,
+                                       const std::filesystem::path& shaderDir);
+} // namespace rt::gpu

@@ -1,0 +1,28 @@
+// A pool of timestamp queries, read back as GPU seconds.
+#pragma once
+
+#include <cstdint>
+
+#include "Vulkan/Device.h"
+#include "Vulkan/DeviceHandle.h"
+
+namespace rt::vk
+{
+class QueryPool final
+{
+public:
+    QueryPool() = default;
+    QueryPool(const Device& device, std::uint32_t timestampCount);
+    RT_VK_MOVE_ONLY(QueryPool)
+    ~QueryPool() = default;
+
+    VkQueryPool Handle() const { return m_pool.get(); }
+
+    /// Seconds between timestamps `first` and `first + 1`, both written and finished.
+    /// `nanosecondsPerTick` is VkPhysicalDeviceLimits::timestampPeriod.
+    double secondsBetween(std::uint32_t first, float nanosecondsPerTick) const;
+
+private:
+    DeviceHandle<VkQueryPool, &vkDestroyQueryPool> m_pool;
+};
+} // namespace rt::vk

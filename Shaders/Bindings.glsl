@@ -1,0 +1,28 @@
+// Descriptor set 0 of the ray-tracing pipeline, as HostDevice.h numbers it. Every stage includes this one
+// declaration; the engine makes every binding visible to every ray-tracing stage.
+// Needs GL_EXT_ray_tracing, GL_EXT_scalar_block_layout and GL_EXT_nonuniform_qualifier.
+#ifndef RT_BINDINGS_GLSL
+#define RT_BINDINGS_GLSL
+
+#include "Shared/HostDevice.h"
+
+layout(binding = kBindingTlas) uniform accelerationStructureEXT tlas;
+layout(binding = kBindingAccumulation, rgba32f) uniform image2D accumulation; // rgb: radiance sum, a: samples
+layout(binding = kBindingUniforms, scalar) uniform UniformBlock { RenderUniforms uniforms; };
+layout(binding = kBindingMaterials, scalar) readonly buffer MaterialBlock { MaterialData materials[]; };
+layout(binding = kBindingTextures, scalar) readonly buffer TextureBlock { TextureData textures[]; };
+layout(binding = kBindingLights, scalar) readonly buffer LightBlock { LightData lights[]; };
+layout(binding = kBindingPerlin, scalar) readonly buffer PerlinBlock { PerlinData perlinTables; };
+layout(binding = kBindingInstances, scalar) readonly buffer InstanceBlock { InstanceRecord instances[]; };
+layout(binding = kBindingPositions, scalar) readonly buffer PositionBlock { vec3 positions[]; };
+layout(binding = kBindingUvs, scalar) readonly buffer UvBlock { vec2 uvs[]; };
+layout(binding = kBindingTriangles, scalar) readonly buffer TriangleBlock { uvec3 triangles[]; };
+layout(binding = kBindingTriangleMaterials, scalar) readonly buffer TriangleMaterialBlock { uint triangleMaterials[]; };
+layout(binding = kBindingSpheres, scalar) readonly buffer SphereBlock { SphereRecord spheres[]; };
+layout(binding = kBindingMedia, scalar) readonly buffer MediumBlock { MediumRecord media[]; };
+layout(binding = kBindingCounters, scalar) buffer CounterBlock { SampleCounters counters; };
+layout(binding = kBindingImages) uniform sampler2D images[];
+
+layout(push_constant, scalar) uniform PushBlock { TracePushConstants push; };
+
+#endif

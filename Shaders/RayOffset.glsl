@@ -1,0 +1,24 @@
+// Moves a surface point off the surface along the geometric normal n (pointing to the side the new ray
+// leaves from), so the new ray, started with tmin = 0, does not hit the surface it leaves.
+// Wächter & Binder, "A Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing Gems ch. 6, 2019.
+// The twin of Common/Math/RayOffset.h, bit for bit (the float path is `precise`: no fused multiply-add).
+#ifndef RT_RAY_OFFSET_GLSL
+#define RT_RAY_OFFSET_GLSL
+
+vec3 offsetRayOrigin(vec3 p, vec3 n)
+{
+    const float kOrigin = 1.0 / 32.0;
+    const float kFloatScale = 1.0 / 65536.0;
+    const float kIntScale = 256.0;
+    ivec3 offset = ivec3(kIntScale * n);
+    ivec3 bits = floatBitsToInt(p);
+    vec3 moved = intBitsToFloat(ivec3(bits.x + (p.x < 0.0 ? -offset.x : offset.x),
+                                      bits.y + (p.y < 0.0 ? -offset.y : offset.y),
+                                      bits.z + (p.z < 0.0 ? -offset.z : offset.z)));
+    precise vec3 near = p + kFloatScale * n;
+    return vec3(abs(p.x) < kOrigin ? near.x : moved.x,
+                abs(p.y) < kOrigin ? near.y : moved.y,
+                abs(p.z) < kOrigin ? near.z : moved.z);
+}
+
+#endif

@@ -1,0 +1,28 @@
+// Closest hit on a sphere: the point re-projected onto the sphere (object space), the outward normal, the
+// sphere uv of RTTNW §4.3 and the material.
+#version 460
+#extension GL_EXT_ray_tracing : require
+#extension GL_EXT_scalar_block_layout : require
+#extension GL_EXT_nonuniform_qualifier : require
+#extension GL_GOOGLE_include_directive : require
+
+#include "Bindings.glsl"
+#include "Geometry/Sphere.glsl"
+#include "Payload.glsl"
+
+layout(location = 0) rayPayloadInEXT HitPayload payload;
+hitAttributeEXT vec3 hitCenter;
+
+void main()
+{
+    SphereRecord sphere = spheres[instances[gl_InstanceCustomIndexEXT].firstSphere + gl_PrimitiveID];
+    vec3 objectPoint = gl_ObjectRayOriginEXT + gl_HitTEXT * gl_ObjectRayDirectionEXT;
+    vec3 q = normalize(objectPoint - hitCenter); // outward unit normal, object space
+    objectPoint = hitCenter + sphere.radius * q;
+
+    payload.position = gl_ObjectToWorldEXT * vec4(objectPoint, 1.0);
+    payload.normal = normalize(q * mat3(gl_WorldToObjectEXT));
+    payload.uv = sphereUv(q);
+    payload.material = sphere.material;
+    payload.flags = 0u;
+}

@@ -1,0 +1,33 @@
+// Texture evaluation by type tag, the twin of the CPU engine's textures (HostDevice.h TextureType).
+// p is the world-space point (checker and Perlin textures are solid textures), uv the surface coordinates.
+// Reads the global `textures` (Bindings.glsl).
+#ifndef RT_TEXTURE_GLSL
+#define RT_TEXTURE_GLSL
+
+#include "Shared/HostDevice.h"
+#include "Textures/ImageTexture.glsl"
+#include "Textures/Perlin.glsl"
+
+/// 3-D checker (RTTNW §4): cells of size `scale`, color0 where the sum of the cell indices is even.
+vec3 checkerTexture(TextureData t, vec3 p)
+{
+    int s = int(floor(p.x / t.scale)) + int(floor(p.y / t.scale)) + int(floor(p.z / t.scale));
+    return (s & 1) == 0 ? t.color0 : t.color1; // & 1: the parity of negative sums too
+}
+
+vec3 evaluateTexture(uint index, vec2 uv, vec3 p)
+{
+    TextureData t = textures[index];
+    switch (t.type)
+    {
+    case TextureType_Solid: return t.color0;
+    case TextureType_Checker: return checkerTexture(t, p);
+    case TextureType_Image: return imageTexel(t.image, uv);
+    case TextureType_Noise: return vec3(0.5 * (1.0 + perlinNoise(t.scale * p)));
+    case TextureType_Turbulence: return vec3(perlinTurbulence(t.scale * p, 7));
+    case TextureType_Marble: return vec3(0.5 * (1.0 + sin(t.scale * p.z + 10.0 * perlinTurbulence(t.scale * p, 7))));
+    }
+    return vec3(0.0);
+}
+
+#endif
