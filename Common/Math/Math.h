@@ -26,14 +26,19 @@ inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 inline float radians(float degrees) { return degrees * (kPi / 180.0f); }
 
+/// min / max that compile to one minss / maxss: std::fmin / fmax are library calls without -ffast-math
+/// (their NaN rules differ from the instruction's). A NaN in `a` yields `b`.
+inline float minf(float a, float b) { return a < b ? a : b; }
+inline float maxf(float a, float b) { return a > b ? a : b; }
+
 /// sqrt clamped at 0: rounding can push a quantity that is >= 0 in exact arithmetic slightly below it.
-inline float safeSqrt(float x) { return std::sqrt(std::fmax(0.0f, x)); }
+inline float safeSqrt(float x) { return std::sqrt(maxf(x, 0.0f)); }
 
 inline float lengthSquared(const vec3& v) { return glm::dot(v, v); }
 
 inline bool isFinite(const vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-inline float maxComponent(const vec3& v) { return std::fmax(v.x, std::fmax(v.y, v.z)); }
+inline float maxComponent(const vec3& v) { return maxf(v.x, maxf(v.y, v.z)); }
 
 /// Rec. 709 luminance of linear RGB.
 inline float luminance(const vec3& c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }

@@ -42,8 +42,9 @@ inline bool hitsBox(const BvhNode& n, const TraceRay& r, float tMax)
     const vec3 t1 = (n.boundsMax - r.origin) * r.invDirection;
     const vec3 tNear = glm::min(t0, t1);
     const vec3 tFar = glm::max(t0, t1);
-    const float enter = std::fmax(std::fmax(tNear.x, tNear.y), std::fmax(tNear.z, 0.0f));
-    const float exit = std::fmin(std::fmin(tFar.x, tFar.y), std::fmin(tFar.z, tMax)) * 1.0000004f;
+    // A NaN slab (0 * inf: origin on a slab plane of a flat box) is ignored: minf/maxf return the 2nd operand.
+    const float enter = maxf(tNear.x, maxf(tNear.y, maxf(tNear.z, 0.0f)));
+    const float exit = minf(tFar.x, minf(tFar.y, minf(tFar.z, tMax))) * 1.0000004f;
     return enter <= exit;
 }
 

@@ -9,7 +9,6 @@ namespace rt::cpu
 namespace
 {
 constexpr int kBins = 16;
-constexpr float kTraversalCost = 1.0f; // relative to one primitive test
 constexpr int kMaxSahDepth = 64; // below it, median splits: depth stays < 64 + 32 (traversal stack: 128)
 
 struct Builder
@@ -38,7 +37,9 @@ struct Builder
 
         int axis = -1;
         std::uint32_t mid = begin;
-        if (count > 1)
+        // Up to maxLeafSize primitives always make a leaf: the leaves are tested four at a time (Packets.h),
+        // so splitting them further only adds box tests.
+        if (count > std::uint32_t(maxLeafSize))
             findSplit(begin, end, box, centroidBox, depth, axis, mid);
         if (axis < 0)
         {
@@ -118,9 +119,6 @@ struct Builder
                 splitMiddle(begin, end, box, axis, mid);
             return;
         }
-        const float splitCost = kTraversalCost + bestCost / box.surfaceArea();
-        if (count <= std::uint32_t(maxLeafSize) && splitCost >= float(count))
-            return;
         const float scale = kBins / extent[bestAxis];
         const float lo = centroidBox.min[bestAxis];
         auto* first = indices.data() + begin;

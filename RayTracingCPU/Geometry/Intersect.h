@@ -25,7 +25,7 @@ inline bool intersectSphere(const SphereRec& s, const TraceRay& r, float tMin, H
     if (disc < 0.0f)
         return false;
     const float c = glm::dot(f, f) - r2;
-    const float a = 1.0f / r.invDirectionLength2;
+    const float a = r.directionLength2;
     const float q = -(b + std::copysign(std::sqrt(a * disc), b));
     float t0 = c / q;
     float t1 = q * r.invDirectionLength2;
@@ -129,11 +129,11 @@ inline bool intersectMedium(const MediumRec& m, const TraceRay& r, float tMin, H
         const vec3 hi = (m.boxMax - o) * inv;
         const vec3 tn = glm::min(lo, hi);
         const vec3 tf = glm::max(lo, hi);
-        t1 = std::fmax(tn.x, std::fmax(tn.y, tn.z));
-        t2 = std::fmin(tf.x, std::fmin(tf.y, tf.z));
+        t1 = maxf(tn.x, maxf(tn.y, tn.z));
+        t2 = minf(tf.x, minf(tf.y, tf.z));
     }
-    t1 = std::fmax(t1, tMin);
-    t2 = std::fmin(t2, hit.t);
+    t1 = maxf(t1, tMin);
+    t2 = minf(t2, hit.t);
     if (!(t1 < t2))
         return false;
     const float inside = (t2 - t1) * r.directionLength;

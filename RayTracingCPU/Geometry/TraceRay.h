@@ -16,20 +16,31 @@ struct TraceRay
     float time;
     vec3 invDirection; // 1 / d per component (+-inf for 0 components: the slab test handles them)
     int directionNegative[3];
+    float directionLength2; // d . d
     float invDirectionLength2; // 1 / (d . d)
-    float directionLength; // |d|
-    // Watertight triangle test (Woop, Benthin & Wald, JCGT 2(1), 2013): permutation and shear.
+    float directionLength; // |d|; only computed when the scene has media
+    // Watertight triangle test (Woop, Benthin & Wald, JCGT 2(1), 2013): permutation and shear; only computed
+    // when the scene has triangles.
     int kx, ky, kz;
     float sx, sy, sz;
 
-    explicit TraceRay(const Ray& r) : origin(r.origin), direction(r.direction), time(r.time)
+    /// What the scene's primitives need from a ray beyond the box and sphere tests.
+    struct Needs
+    {
+        bool triangles = true;
+        bool media = true;
+    };
+
+    TraceRay(const Ray& r, Needs needs) : origin(r.origin), direction(r.direction), time(r.time)
     {
         invDirection = 1.0f / direction;
         for (int i = 0; i < 3; ++i)
             directionNegative[i] = invDirection[i] < 0.0f;
-        const float len2 = lengthSquared(direction);
-        invDirectionLength2 = 1.0f / len2;
-        directionLength = std::sqrt(len2);
+        directionLength2 = lengthSquared(direction);
+        invDirectionLength2 = 1.0f / directionLength2;
+        directionLength = needs.media ? std::sqrt(directionLength2) : 0.0f;
+        if (!needs.triangles)
+            return;
         const vec3 a = glm::abs(direction);
         kz = (a.x > a.y) ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
         kx = kz == 2 ? 0 : kz + 1;

@@ -46,9 +46,10 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
     const bool mixture = options.estimator == Estimator::Mixture && !scene.lights.empty();
     vec3 radiance(0.0f);
     vec3 throughput(1.0f);
+    const TraceRay::Needs needs = cs.rayNeeds();
     for (int segment = 0; segment < options.depth; ++segment)
     {
-        const TraceRay r(ray);
+        const TraceRay r(ray, needs);
         HitRecord hit;
         ++segments;
         if (!cs.intersect(r, 0.0f, kInfinity, hit, rng))
@@ -100,7 +101,7 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
             else
             {
                 const auto n = static_cast<float>(scene.lights.size());
-                const float pick = std::fmin((2.0f * choice - 1.0f) * n, n - 1.0f); // reuse the choice's bits
+                const float pick = minf((2.0f * choice - 1.0f) * n, n - 1.0f); // reuse the choice's bits
                 LightSample ls;
                 if (!sampleLight(scene.lights[static_cast<std::size_t>(pick)], si.p, u, ls))
                     return radiance;

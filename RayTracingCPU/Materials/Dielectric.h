@@ -21,7 +21,7 @@ inline float schlickReflectance(float cosine, float etaRatio)
 inline vec3 scatterDielectric(const vec3& d, const vec3& ns, float etaRatio, float u)
 {
     const vec3 ud = glm::normalize(d);
-    const float cosTheta = std::fmin(glm::dot(-ud, ns), 1.0f);
+    const float cosTheta = minf(glm::dot(-ud, ns), 1.0f);
     const float sin2Theta = 1.0f - cosTheta * cosTheta;
     if (etaRatio * etaRatio * sin2Theta > 1.0f || schlickReflectance(cosTheta, etaRatio) > u)
         return reflect(ud, ns);

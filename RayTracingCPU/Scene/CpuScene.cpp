@@ -1,5 +1,6 @@
 #include "Scene/CpuScene.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rt::cpu
@@ -41,6 +42,10 @@ vec2 sphereUv(const vec3& q)
 
 CpuScene::CpuScene(const Scene& scene) : m_scene(&scene)
 {
+    const auto isImage = [&](std::uint32_t t) { return t != kNoIndex && scene.textures[t].type == TextureType::Image; };
+    for (const MaterialData& m : scene.materials)
+        m_materialNeedsUv.push_back(isImage(m.albedoTexture) || isImage(m.emissionTexture));
+
     m_uvFrames.push_back(mat3(1.0f));
     std::vector<Aabb> bounds;
     std::vector<PrimRef> refs;
@@ -113,10 +118,47 @@ CpuScene::CpuScene(const Scene& scene) : m_scene(&scene)
         }
     }
 
+    m_primitiveCount = refs.size();
     m_bvh = Bvh::build(bounds);
-    m_prims.resize(refs.size());
-    for (std::size_t k = 0; k < refs.size(); ++k)
-        m_prims[k] = refs[m_bvh.order[k]];
+    buildLeafPackets(refs);
+    m_bvh4 = Bvh4::collapse(m_bvh);
+}
+
+void CpuScene::buildLeafPackets(const std::vector<PrimRef>& refs)
+{
+    // Each binary leaf's primitives, grouped by type into packets of four; the leaf is then re-pointed from
+    // its primitive slots to its run of packets.
+    for (BvhNode& node : m_bvh.nodes)
+    {
+        if (node.count == 0)
+            continue;
+        const auto firstPacket = static_cast<std::uint32_t>(m_leafPackets.size());
+        std::vector<std::uint32_t> byType[4];
+        for (std::uint32_t slot = node.offset; slot < node.offset + node.count; ++slot)
+        {
+            const PrimRef ref = refs[m_bvh.order[slot]];
+            byType[static_cast<int>(ref.type())].push_back(ref.bits);
+        }
+        const auto emit = [&](PrimType type, auto& packets, const auto& records) {
+            const std::vector<std::uint32_t>& prims = byType[static_cast<int>(type)];
+            for (std::size_t i = 0; i < prims.size(); i += 4)
+            {
+                auto& packet = packets.emplace_back();
+                const int used = static_cast<int>(std::min<std::size_t>(4, prims.size() - i));
+                for (int lane = 0; lane < used; ++lane)
+                    setLane(packet, lane, records[PrimRef{prims[i + lane]}.index()], prims[i + lane]);
+                padPacket(packet, used);
+                m_leafPackets.push_back(PrimRef::make(type, static_cast<std::uint32_t>(packets.size() - 1)));
+            }
+        };
+        emit(PrimType::Quad, m_quadPackets, m_quads);
+        emit(PrimType::Sphere, m_spherePackets, m_spheres);
+        emit(PrimType::Triangle, m_trianglePackets, m_triangles);
+        for (std::uint32_t bits : byType[static_cast<int>(PrimType::Medium)])
+            m_leafPackets.push_back(PrimRef{bits});
+        node.offset = firstPacket;
+        node.count = static_cast<std::uint16_t>(m_leafPackets.size() - firstPacket);
+    }
 }
 
 SurfaceInteraction CpuScene::interaction(const TraceRay& r, const HitRecord& hit) const
@@ -132,8 +174,9 @@ SurfaceInteraction CpuScene::interaction(const TraceRay& r, const HitRecord& hit
         const vec3 n = glm::normalize(r.origin + hit.t * r.direction - center);
         si.n = n;
         si.p = center + s.radius * n; // re-projected onto the surface: o + t d carries error ~ t |d|
-        si.uv = sphereUv(s.uvFrame ? m_uvFrames[s.uvFrame] * n : n);
         si.material = s.material;
+        if (m_materialNeedsUv[s.material]) // acos + atan2 only where an image texture reads them
+            si.uv = sphereUv(s.uvFrame ? m_uvFrames[s.uvFrame] * n : n);
         break;
     }
     case PrimType::Quad:

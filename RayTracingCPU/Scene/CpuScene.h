@@ -5,8 +5,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "Accel/Bvh.h"
+#include "Accel/Bvh4.h"
 #include "Geometry/Intersect.h"
+#include "Geometry/Packets.h"
 #include "Geometry/Primitives.h"
 #include "Scene/Scene.h"
 
@@ -30,24 +31,40 @@ public:
 
     const Scene& source() const { return *m_scene; }
     const Bvh& bvh() const { return m_bvh; }
-    std::size_t primitiveCount() const { return m_prims.size(); }
+    const Bvh4& bvh4() const { return m_bvh4; }
+    std::size_t primitiveCount() const { return m_primitiveCount; }
     bool hasMedia() const { return !m_media.empty(); }
+    TraceRay::Needs rayNeeds() const { return {!m_triangles.empty(), !m_media.empty()}; }
 
     /// Closest hit along r in (tMin, tMax). Consumes random numbers only when the ray crosses a medium.
     bool intersect(const TraceRay& r, float tMin, float tMax, HitRecord& hit, Rng& rng) const
     {
         hit.t = tMax;
         hit.prim = kNoIndex;
-        traverse(m_bvh, r, hit.t, [&](std::uint32_t first, std::uint32_t count) {
+        traverse(m_bvh4, r, hit.t, [&](std::uint32_t first, std::uint32_t count) {
             for (std::uint32_t k = first; k < first + count; ++k)
             {
-                const PrimRef ref = m_prims[k];
+                const PrimRef ref = m_leafPackets[k];
                 switch (ref.type())
                 {
-                case PrimType::Sphere: intersectSphere(m_spheres[ref.index()], r, tMin, hit, ref.bits); break;
-                case PrimType::Quad: intersectQuad(m_quads[ref.index()], r, tMin, hit, ref.bits); break;
-                case PrimType::Triangle: intersectTriangle(m_triangles[ref.index()], r, tMin, hit, ref.bits); break;
-                case PrimType::Medium: intersectMedium(m_media[ref.index()], r, tMin, hit, ref.bits, rng); break;
+                case PrimType::Sphere: intersectPacket(m_spherePackets[ref.index()], r, tMin, hit); break;
+                case PrimType::Quad: intersectPacket(m_quadPackets[ref.index()], r, tMin, hit); break;
+                case PrimType::Triangle:
+                {
+                    const TrianglePacket& packet = m_trianglePackets[ref.index()];
+                    int undecided = 0;
+                    intersectPacket(packet, r, tMin, hit, undecided);
+                    for (; undecided; undecided &= undecided - 1)
+                    {
+                        const std::uint32_t prim = packet.prim[std::countr_zero(static_cast<unsigned>(undecided))];
+                        intersectTriangle(m_triangles[PrimRef{prim}.index()], r, tMin, hit, prim);
+                    }
+                    break;
+                }
+                case PrimType::Medium:
+                    intersectMedium(m_media[ref.index()], r, tMin, hit, PrimRef::make(PrimType::Medium, ref.index()).bits,
+                                    rng);
+                    break;
                 }
             }
         });
@@ -58,13 +75,23 @@ public:
     SurfaceInteraction interaction(const TraceRay& r, const HitRecord& hit) const;
 
 private:
+    void buildLeafPackets(const std::vector<PrimRef>& refs);
+
     const Scene* m_scene;
     std::vector<SphereRec> m_spheres;
     std::vector<QuadRec> m_quads;
     std::vector<TriangleRec> m_triangles;
     std::vector<MediumRec> m_media;
+    std::vector<bool> m_materialNeedsUv; // an image texture reads (u, v): spheres compute them only then
     std::vector<mat3> m_uvFrames; // object-from-world rotations of instanced spheres; [0] = identity
-    std::vector<PrimRef> m_prims; // in BVH leaf order
-    Bvh m_bvh;
+    // What traversal reads: per leaf, a run of packet references (type + index into the packet arrays; for
+    // media the index of the medium itself).
+    std::vector<PrimRef> m_leafPackets;
+    std::vector<SpherePacket> m_spherePackets;
+    std::vector<QuadPacket> m_quadPackets;
+    std::vector<TrianglePacket> m_trianglePackets;
+    std::size_t m_primitiveCount = 0;
+    Bvh m_bvh; // binary SAH tree; its leaves point at runs of m_leafPackets
+    Bvh4 m_bvh4; // what traversal uses
 };
 } // namespace rt::cpu
