@@ -162,6 +162,8 @@ GpuEngine::~GpuEngine() = default;
 
 std::string GpuEngine::deviceName() const { return m_impl->device().properties().name; }
 
+const GpuContext& GpuEngine::context() const { return m_impl->context; }
+
 bool GpuEngine::validationEnabled() const { return m_impl->context.validationEnabled(); }
 
 std::uint64_t GpuEngine::validationMessages() const { return m_impl->context.validationMessages(); }
@@ -241,7 +243,7 @@ RenderResult GpuEngine::render(const RenderSettings& settings, RenderControl& co
     stats.nanSamples = counters.nanSamples;
     stats.infSamples = counters.infSamples;
     stats.threadsUsed = 1;
-    stats.wallSeconds = secondsSince(wallStart);
+    stats.wallSeconds = secondsSince(wallStart) + e.buildSeconds; // as the CPU engine: build included
     return result;
 }
 } // namespace rt::gpu

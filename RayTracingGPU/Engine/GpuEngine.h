@@ -14,6 +14,8 @@
 
 namespace rt::gpu
 {
+class GpuContext;
+
 struct GpuEngineOptions
 {
     std::optional<int> deviceIndex; // --device N (vkEnumeratePhysicalDevices order); empty: best suitable
@@ -40,6 +42,9 @@ public:
     /// when the image does not fit the device (dimension, memory).
     RenderResult render(const RenderSettings& settings, RenderControl& control,
                         const PreviewCallback& preview = {}) override;
+
+    /// The instance, device and command pool, for work beside rendering (the tests' compute kernels).
+    const GpuContext& context() const;
 
     bool validationEnabled() const;
     /// Validation warnings and errors reported since the engine was created (0 without validation).

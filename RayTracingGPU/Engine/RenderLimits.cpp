@@ -11,7 +11,7 @@ std::string gigabytes(std::uint64_t bytes) { return fmt::format("{:.1f} GB", dou
 
 std::uint64_t renderTargetBytes(std::uint32_t width, std::uint32_t height)
 {
-    return 2 * kAccumulationBytesPerPixel * std::uint64_t(width) * height;
+    return kAccumulationBytesPerPixel * std::uint64_t(width) * height;
 }
 
 std::optional<std::string> checkTargetLimits(std::uint32_t width, std::uint32_t height, const TargetLimits& limits)
@@ -26,11 +26,9 @@ std::optional<std::string> checkTargetLimits(std::uint32_t width, std::uint32_t 
     if (needed > limits.deviceLocalBytes)
         add(fmt::format("{} needs {} of device memory; device '{}' has {}", image, gigabytes(needed),
                         limits.deviceName, gigabytes(limits.deviceLocalBytes)));
-    const std::uint64_t oneAllocation = kAccumulationBytesPerPixel * std::uint64_t(width) * height;
-    if (oneAllocation > limits.maxAllocationBytes)
-        add(fmt::format("its accumulation image needs one allocation of {}; maxMemoryAllocationSize of device "
-                        "'{}' is {}",
-                        gigabytes(oneAllocation), limits.deviceName, gigabytes(limits.maxAllocationBytes)));
+    else if (needed > limits.maxAllocationBytes) // fits the heap, but not in one allocation
+        add(fmt::format("{} needs one allocation of {}; maxMemoryAllocationSize of device '{}' is {}", image,
+                        gigabytes(needed), limits.deviceName, gigabytes(limits.maxAllocationBytes)));
     if (problems.empty())
         return std::nullopt;
     return problems;

@@ -20,8 +20,8 @@ struct TargetLimits
 /// Bytes per pixel of the RGBA32F accumulation image, and of its readback buffer.
 inline constexpr std::uint64_t kAccumulationBytesPerPixel = 16;
 
-/// The memory a width x height render needs on the device: the accumulation image and its readback copy
-/// (host-visible, but on the device heap of integrated GPUs and CPU devices), rounded up generously.
+/// The device-local memory a width x height render needs: its accumulation image. (The readback copy is
+/// host-visible memory, which discrete GPUs take from system RAM.)
 std::uint64_t renderTargetBytes(std::uint32_t width, std::uint32_t height);
 
 /// Empty if a width x height render fits, else one line naming every exceeded limit, e.g.

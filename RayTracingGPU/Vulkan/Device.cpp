@@ -1,5 +1,6 @@
 #include "Vulkan/Device.h"
 
+#include <atomic>
 #include <utility>
 
 #include <spdlog/fmt/fmt.h>
@@ -9,9 +10,18 @@
 
 namespace rt::vk
 {
+namespace
+{
+// The device-level function pointers (Loader.h) belong to one device: a second live device would call
+// through the first one's pointers, which breaks as soon as the two come from different drivers.
+std::atomic<int> g_liveDevices{0};
+} // namespace
+
 Device::Device(const PhysicalDevice& physical)
     : m_physical(physical.handle), m_queueFamily(physical.queueFamily), m_properties(queryProperties(physical))
 {
+    if (g_liveDevices.load() > 0)
+        throw DeviceError("a Vulkan device already exists in this process; the engine drives one device at a time");
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
     queueInfo.queueFamilyIndex = m_queueFamily;
@@ -42,6 +52,7 @@ Device::Device(const PhysicalDevice& physical)
     info.enabledExtensionCount = static_cast<std::uint32_t>(std::size(kRequiredExtensions));
     info.ppEnabledExtensionNames = kRequiredExtensions;
     check(vkCreateDevice(m_physical, &info, nullptr, &m_device), "vkCreateDevice");
+    ++g_liveDevices;
     loadDeviceFunctions(m_device);
     vkGetDeviceQueue(m_device, m_queueFamily, 0, &m_queue);
 }
@@ -75,6 +86,7 @@ void Device::destroy()
     {
         vkDeviceWaitIdle(m_device);
         vkDestroyDevice(m_device, nullptr);
+        --g_liveDevices;
     }
     m_device = VK_NULL_HANDLE;
 }

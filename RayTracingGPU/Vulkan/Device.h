@@ -13,7 +13,8 @@ namespace rt::vk
 class Device final
 {
 public:
-    /// Creates the device on `physical`, which selectDevice() accepted. Loads the device-level functions.
+    /// Creates the device on `physical`, which selectDevice() accepted. Loads the device-level functions, so
+    /// only one Device may be alive at a time (rt::DeviceError otherwise).
     explicit Device(const PhysicalDevice& physical);
     ~Device();
     Device(const Device&) = delete;

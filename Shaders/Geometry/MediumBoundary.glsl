@@ -32,7 +32,13 @@ bool boxInterval(vec3 o, vec3 d, vec3 lo, vec3 hi, out float t1, out float t2)
 bool mediumInterval(MediumRecord m, vec3 o, vec3 d, out float t1, out float t2)
 {
     if (m.boundary == MediumBoundary_Sphere)
-        return sphereRoots(o, d, m.center, m.radius, t1, t2) && t1 < t2;
+    {
+        SphereRoots roots;
+        bool crosses = sphereRoots(o, d, m.center, m.radius, roots);
+        t1 = roots.t0;
+        t2 = roots.t1;
+        return crosses && t1 < t2;
+    }
     return boxInterval(o, d, m.boxMin, m.boxMax, t1, t2);
 }
 

@@ -6,43 +6,57 @@
 
 #include "Math/Constants.glsl"
 
-/// Both parameters t0 <= t1 where o + t d meets the sphere (center, radius); false if the line misses it.
-/// d need not be unit length.
-bool sphereRoots(vec3 o, vec3 d, vec3 center, float radius, out float t0, out float t1)
+// Rounding error of c = f.f - r^2 (with f = o - center rounded too), relative to f.f + r^2:
+// gamma(8) = 8u / (1 - 8u), u = 2^-24 (the error analysis of Pharr, Jakob & Humphreys, PBR 4th ed. §6.8).
+const float kSphereRootError = 4.7684e-7;
+
+struct SphereRoots
 {
-    t0 = 0.0;
-    t1 = 0.0;
+    float t0; // t0 <= t1
+    float t1;
+    float error; // absolute rounding error of a root near 0 (c / q): roots below it cannot be told from 0
+};
+
+/// Where the line o + t d meets the sphere (center, radius); false if it misses. d need not be unit length.
+bool sphereRoots(vec3 o, vec3 d, vec3 center, float radius, out SphereRoots roots)
+{
+    roots = SphereRoots(0.0, 0.0, 0.0);
     vec3 f = o - center;
     float a = dot(d, d);
     float halfB = dot(f, d);
-    float c = dot(f, f) - radius * radius;
-    vec3 unitD = d / sqrt(a);
-    vec3 l = f - dot(f, unitD) * unitD; // closest approach of the line to the centre, before squaring
-    float discriminant = a * (radius * radius - dot(l, l));
-    if (discriminant < 0.0)
+    float r2 = radius * radius;
+    float c = dot(f, f) - r2;
+    vec3 l = f - (halfB / a) * d; // closest approach of the line to the centre, formed before squaring
+    float discriminantOverA = r2 - dot(l, l);
+    if (discriminantOverA < 0.0)
         return false;
-    float q = -halfB - (halfB >= 0.0 ? 1.0 : -1.0) * sqrt(discriminant);
+    float q = -(halfB + (halfB >= 0.0 ? 1.0 : -1.0) * sqrt(a * discriminantOverA));
     if (q == 0.0)
         return false; // the origin is on the sphere and the line only grazes it
     float r0 = c / q;
     float r1 = q / a;
-    t0 = min(r0, r1);
-    t1 = max(r0, r1);
+    roots.t0 = min(r0, r1);
+    roots.t1 = max(r0, r1);
+    roots.error = kSphereRootError * (dot(f, f) + r2) / abs(q);
     return true;
 }
 
-/// The nearest root in (tMin, tMax): the far root for rays that start inside the sphere (glass).
+/// The nearest root in (tMin, tMax) that is farther from 0 than its rounding error: the far root for rays
+/// that start inside the sphere (glass), and no hit on the surface a ray leaves. The hit point of a big
+/// sphere (re-projected from a far centre) and f = o - center carry errors of ulp(|center| + radius), more
+/// than offsetRayOrigin moves a point near the world origin: without the bound, rays leaving rtow-final's
+/// radius-1000 ground hit it again at t ~ 1e-5 about half of the time (research notes §3.1, §3.3).
 bool intersectSphere(vec3 o, vec3 d, vec3 center, float radius, float tMin, float tMax, out float t)
 {
-    float t0;
-    float t1;
     t = 0.0;
-    if (!sphereRoots(o, d, center, radius, t0, t1))
+    SphereRoots roots;
+    if (!sphereRoots(o, d, center, radius, roots))
         return false;
-    if (t0 > tMin && t0 < tMax)
-        t = t0;
-    else if (t1 > tMin && t1 < tMax)
-        t = t1;
+    float lo = max(tMin, roots.error);
+    if (roots.t0 > lo && roots.t0 < tMax)
+        t = roots.t0;
+    else if (roots.t1 > lo && roots.t1 < tMax)
+        t = roots.t1;
     else
         return false;
     return true;

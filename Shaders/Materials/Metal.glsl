@@ -12,7 +12,7 @@
 bool scatterMetal(MaterialData m, SurfaceHit hit, inout Rng rng, out ScatterSample s)
 {
     vec3 albedo = evaluateTexture(m.albedoTexture, hit.uv, hit.position);
-    vec3 reflected = normalize(reflect(normalize(hit.incoming), hit.shadingNormal));
+    vec3 reflected = normalize(reflect(hit.incoming, hit.shadingNormal));
     s.direction = reflected + m.fuzz * sampleUniformSphere(nextFloat2(rng));
     s.weight = albedo;
     return dot(s.direction, hit.shadingNormal) > 0.0;

@@ -1,6 +1,7 @@
 // The book-3 estimator (RTTROYL §9-12): with probability 1/2 sample the BSDF, else pick one light of the
 // scene's list uniformly and sample a direction towards it; weight by the BSDF pdf over the mixture pdf
-// 1/2 bsdfPdf + 1/2 (1/N) sum_j lightPdf_j. No shadow ray: the next segment finds what the direction hits.
+// 1/2 bsdfPdf + 1/2 mean_j lightPdf_j (one-sample MIS, balance heuristic). No shadow ray: the next segment
+// finds what the direction hits. The twin of RayTracingCPU/Integrator/PathIntegrator.h.
 // Reads the globals `uniforms` and `lights` (Bindings.glsl).
 #ifndef RT_MIXTURE_GLSL
 #define RT_MIXTURE_GLSL
@@ -16,32 +17,31 @@ bool scatterMixture(bool uniformSphere, vec3 p, vec3 ns, vec3 albedo, inout Rng 
 {
     s.direction = vec3(0.0);
     s.weight = vec3(0.0);
-    uint n = uniforms.lightCount;
+    // Three numbers per vertex whichever strategy runs: the choice (whose upper half also picks the light)
+    // and the two of the warp. The CPU engine draws the same.
+    float choice = nextFloat(rng);
+    vec2 u = nextFloat2(rng);
     vec3 wi;
-    if (nextFloat(rng) < 0.5)
-    {
-        vec2 u2 = nextFloat2(rng);
-        wi = uniformSphere ? sampleUniformSphere(u2) : onbToWorld(onbFromNormal(ns), sampleCosineHemisphere(u2));
-    }
+    if (choice < 0.5)
+        wi = uniformSphere ? sampleUniformSphere(u) : onbToWorld(onbFromNormal(ns), sampleCosineHemisphere(u));
     else
     {
-        float pick = nextFloat(rng);
-        uint i = min(uint(pick * float(n)), n - 1u);
-        vec2 u2 = nextFloat2(rng);
+        float n = float(uniforms.lightCount);
+        float pick = min((2.0 * choice - 1.0) * n, n - 1.0);
         LightSample ls;
-        if (!sampleLight(lights[i], p, u2, ls))
+        if (!sampleLight(lights[uint(pick)], p, u, ls))
             return false;
         wi = ls.wi;
     }
+    float scatteringPdf = uniformSphere ? uniformSpherePdf() : cosineHemispherePdf(dot(ns, wi));
     float lightPdfSum = 0.0;
-    for (uint j = 0u; j < n; ++j)
+    for (uint j = 0u; j < uniforms.lightCount; ++j)
         lightPdfSum += lightPdf(lights[j], p, wi);
-    float scatteringPdf = uniformSphere ? uniformSpherePdf() : max(0.0, dot(ns, wi)) / kPi;
-    float pdf = 0.5 * scatteringPdf + 0.5 * (1.0 / float(n)) * lightPdfSum;
-    if (pdf <= 0.0 || scatteringPdf <= 0.0)
+    float pdf = 0.5 * scatteringPdf + 0.5 * lightPdfSum / float(uniforms.lightCount);
+    if (!(scatteringPdf > 0.0) || !(pdf > 0.0))
         return false;
     s.direction = wi;
-    s.weight = albedo * scatteringPdf / pdf;
+    s.weight = albedo * (scatteringPdf / pdf);
     return true;
 }
 

@@ -25,7 +25,7 @@ vec3 evaluateTexture(uint index, vec2 uv, vec3 p)
     case TextureType_Image: return imageTexel(t.image, uv);
     case TextureType_Noise: return vec3(0.5 * (1.0 + perlinNoise(t.scale * p)));
     case TextureType_Turbulence: return vec3(perlinTurbulence(t.scale * p, 7));
-    case TextureType_Marble: return vec3(0.5 * (1.0 + sin(t.scale * p.z + 10.0 * perlinTurbulence(t.scale * p, 7))));
+    case TextureType_Marble: return vec3(0.5 * (1.0 + sin(t.scale * p.z + 10.0 * perlinTurbulence(p, 7))));
     }
     return vec3(0.0);
 }

@@ -1,0 +1,86 @@
+// Test kernel (tests/Gpu/ShaderParityTest.cpp): evaluates the shaders' building blocks on inputs from the
+// host, so that the test can compare them with their C++ twins in Common. One invocation per case; `mode`
+// selects the function family and the layout of a case (kParity* in the test).
+#version 460
+#extension GL_EXT_scalar_block_layout : require
+#extension GL_GOOGLE_include_directive : require
+
+#include "Shared/HostDevice.h"
+
+layout(local_size_x = 64) in;
+layout(binding = 0, scalar) readonly buffer Inputs { uint inputs[]; };
+layout(binding = 1, scalar) writeonly buffer Outputs { uint outputs[]; };
+layout(binding = 2, scalar) readonly buffer PerlinBlock { PerlinData perlinTables; };
+layout(binding = 3, scalar) readonly buffer LightBlock { LightData lights[]; };
+layout(push_constant, scalar) uniform Push { uint mode; uint caseCount; uint inputStride; uint outputStride; };
+
+#include "Geometry/Sphere.glsl"
+#include "Random.glsl"
+#include "RayOffset.glsl"
+#include "Sampling/LightSampling.glsl"
+#include "Sampling/Warps.glsl"
+#include "Textures/Perlin.glsl"
+
+uint inBase;
+uint outBase;
+
+float inFloat(uint i) { return uintBitsToFloat(inputs[inBase + i]); }
+vec2 inVec2(uint i) { return vec2(inFloat(i), inFloat(i + 1u)); }
+vec3 inVec3(uint i) { return vec3(inFloat(i), inFloat(i + 1u), inFloat(i + 2u)); }
+void outUint(uint i, uint v) { outputs[outBase + i] = v; }
+void outFloat(uint i, float v) { outUint(i, floatBitsToUint(v)); }
+void outVec2(uint i, vec2 v) { outFloat(i, v.x); outFloat(i + 1u, v.y); }
+void outVec3(uint i, vec3 v) { outFloat(i, v.x); outFloat(i + 1u, v.y); outFloat(i + 2u, v.z); }
+
+void main()
+{
+    uint c = gl_GlobalInvocationID.x;
+    if (c >= caseCount)
+        return;
+    inBase = c * inputStride;
+    outBase = c * outputStride;
+    if (mode == 0u) // Random: (seed, pixel, sample) -> 4 nextUint, then 4 nextFloat
+    {
+        Rng rng = rngForSample(inputs[inBase], inputs[inBase + 1u], inputs[inBase + 2u]);
+        for (uint k = 0u; k < 4u; ++k)
+            outUint(k, nextUint(rng));
+        for (uint k = 4u; k < 8u; ++k)
+            outFloat(k, nextFloat(rng));
+    }
+    else if (mode == 1u) // RayOffset: (p, n) -> offsetRayOrigin(p, n)
+        outVec3(0u, offsetRayOrigin(inVec3(0u), inVec3(3u)));
+    else if (mode == 2u) // Warps: (u, oneMinusCosThetaMax) -> cosine, sphere, cone, disk, triangle
+    {
+        vec2 u = inVec2(0u);
+        outVec3(0u, sampleCosineHemisphere(u));
+        outVec3(3u, sampleUniformSphere(u));
+        outVec3(6u, sampleUniformCone(u, inFloat(2u)));
+        outVec2(9u, sampleUniformDiskConcentric(u));
+        outVec2(11u, sampleUniformTriangle(u));
+    }
+    else if (mode == 3u) // LightSampling: (light, p, u) -> ok, wi, pdf, lightPdf(wi)
+    {
+        LightData light = lights[inputs[inBase]];
+        vec3 p = inVec3(1u);
+        LightSample ls;
+        bool ok = sampleLight(light, p, inVec2(4u), ls);
+        outUint(0u, ok ? 1u : 0u);
+        outVec3(1u, ls.wi);
+        outFloat(4u, ls.pdf);
+        outFloat(5u, ok ? lightPdf(light, p, ls.wi) : 0.0);
+    }
+    else if (mode == 4u) // Perlin: p -> noise, turbulence (7 octaves)
+    {
+        vec3 p = inVec3(0u);
+        outFloat(0u, perlinNoise(p));
+        outFloat(1u, perlinTurbulence(p, 7));
+    }
+    else if (mode == 5u) // Sphere: (o, d, center, radius) -> hit, t0, t1
+    {
+        SphereRoots roots;
+        bool hit = sphereRoots(inVec3(0u), inVec3(3u), inVec3(6u), inFloat(9u), roots);
+        outUint(0u, hit ? 1u : 0u);
+        outFloat(1u, roots.t0);
+        outFloat(2u, roots.t1);
+    }
+}

@@ -1,0 +1,124 @@
+// ray-tracing-gpu end to end, as a user runs it: flags, exit codes, one-line errors and the files it writes.
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include "GpuTestEnvironment.h"
+
+namespace rt::gpu::test
+{
+namespace
+{
+struct AppRun
+{
+    int status;
+    std::string output; // stdout and stderr
+};
+
+AppRun runApp(const std::string& arguments, const std::string& environment = "")
+{
+    const std::string command = environment + " '" RT_GPU_APP "' " + arguments + " 2>&1";
+    AppRun run{-1, {}};
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe)
+        return run;
+    char buffer[4096];
+    while (std::size_t n = std::fread(buffer, 1, sizeof(buffer), pipe))
+        run.output.append(buffer, n);
+    const int status = pclose(pipe);
+    run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return run;
+}
+
+std::filesystem::path scratchDir()
+{
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("rt_gpu_app_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+TEST(GpuApp, HelpExplainsEveryFlag)
+{
+    const AppRun r = runApp("--help");
+    EXPECT_EQ(r.status, 0) << r.output;
+    for (const char* flag : {"--headless", "--list-scenes", "--scene", "--spp", "--depth", "--width", "--aspect",
+                             "--sampling", "--pdf", "--unidirectional-light", "--seed", "--output", "--hdr", "--stats",
+                             "--count", "--mesh", "--quiet", "--device", "--validation"})
+        EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
+}
+
+TEST(GpuApp, ListsScenes)
+{
+    const AppRun r = runApp("--list-scenes");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_NE(r.output.find("rtrol-cornell-glass"), std::string::npos);
+}
+
+TEST(GpuApp, UnknownSceneIsSceneError)
+{
+    const AppRun r = runApp("--headless --scene no-such-scene");
+    EXPECT_EQ(r.status, 3) << r.output;
+    EXPECT_NE(r.output.find("unknown scene 'no-such-scene'"), std::string::npos) << r.output;
+}
+
+TEST(GpuApp, WithoutHeadlessSaysTheWindowComesLater)
+{
+    const AppRun r = runApp("--scene rtnw-quads");
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("--headless"), std::string::npos) << r.output;
+}
+
+TEST(GpuApp, NoVulkanDriverIsOneLineDeviceError)
+{
+    // The loader finds no ICD: a clear line and exit code 5, not a crash.
+    const AppRun r = runApp("--headless --scene rtnw-quads --width 8 --spp 1 --quiet",
+                         "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json");
+    EXPECT_EQ(r.status, 5) << r.output;
+    EXPECT_NE(r.output.find("error: "), std::string::npos) << r.output;
+}
+
+TEST(GpuApp, AbsurdSizeNamesTheLimitAndWritesNothing)
+{
+    RT_REQUIRE_GPU();
+    const auto dir = scratchDir();
+    const AppRun r = runApp("--headless --scene rtnw-quads --width 60000 --aspect 1 --spp 1 --quiet --output '" +
+                         (dir / "huge.png").string() + "'");
+    EXPECT_EQ(r.status, 5) << r.output;
+    EXPECT_NE(r.output.find("image 60000x60000"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("GB of device memory"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "huge.png"));
+}
+
+TEST(GpuApp, HeadlessRenderWritesImageHdrAndStats)
+{
+    RT_REQUIRE_GPU();
+    const auto dir = scratchDir();
+    const AppRun r = runApp("--headless --scene rtnw-cornell-box --width 24 --spp 2 --depth 6 --validation --quiet "
+                         "--output '" + (dir / "out.png").string() + "' --hdr '" + (dir / "out.pfm").string() +
+                         "' --stats '" + (dir / "stats.json").string() + "'");
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_GT(std::filesystem::file_size(dir / "out.png"), 0u);
+    EXPECT_GT(std::filesystem::file_size(dir / "out.pfm"), 24u * 24u * 12u);
+    std::ifstream stats(dir / "stats.json");
+    const std::string json((std::istreambuf_iterator<char>(stats)), std::istreambuf_iterator<char>());
+    for (const char* key : {"\"gpu_seconds\"", "\"build_seconds\"", "\"wall_seconds\"", "\"mpaths_per_second\"",
+                            "\"engine\": \"gpu\""})
+        EXPECT_NE(json.find(key), std::string::npos) << key << " in " << json;
+}
+
+TEST(GpuApp, BadDeviceIndexIsUsageError)
+{
+    RT_REQUIRE_GPU();
+    const AppRun r = runApp("--headless --scene rtnw-quads --device 99 --quiet");
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("--device 99 does not exist"), std::string::npos) << r.output;
+}
+} // namespace
+} // namespace rt::gpu::test

@@ -1,0 +1,143 @@
+// The two engines render the same scene description to the same expectation (research notes §2;
+// Mitsuba's per-pixel Z-tests, on blocks here): same estimator, same settings, block means of luminance
+// compared with a Z-test whose variance comes from independent renders (seeds) of each engine.
+#include <cmath>
+#include <ostream>
+
+#include <gtest/gtest.h>
+
+#include "Engine/CpuEngine.h"
+#include "GpuTestEnvironment.h"
+#include "Scenes/Catalogue.h"
+
+namespace rt::gpu::test
+{
+namespace
+{
+constexpr int kSeeds = 4; // independent renders per engine
+constexpr int kBlock = 8; // pixels per block side
+// |Z| bound: ~1e-4 two-sided per block, so a few hundred blocks over the catalogue rarely raise a false alarm;
+// a wrong pdf or a missing cosine moves whole regions by far more.
+constexpr double kMaxZ = 4.0;
+
+struct BlockEstimate
+{
+    std::vector<double> mean; // per block, over seeds and pixels
+    std::vector<double> variance; // of `mean`, pooled from the per-pixel spread over seeds
+    int blocksX = 0;
+    int blocksY = 0;
+};
+
+BlockEstimate estimate(RenderEngine& engine, const Scene& scene, RenderSettings settings)
+{
+    engine.setScene(scene);
+    std::vector<Image> images;
+    for (int k = 0; k < kSeeds; ++k)
+    {
+        settings.seed = 1000u + static_cast<std::uint32_t>(k);
+        RenderControl control;
+        images.push_back(engine.render(settings, control).image);
+    }
+    const int w = images[0].width();
+    const int h = images[0].height();
+    BlockEstimate b;
+    b.blocksX = w / kBlock;
+    b.blocksY = h / kBlock;
+    for (int by = 0; by < b.blocksY; ++by)
+        for (int bx = 0; bx < b.blocksX; ++bx)
+        {
+            double sum = 0.0;
+            double pixelVarianceSum = 0.0;
+            for (int y = by * kBlock; y < (by + 1) * kBlock; ++y)
+                for (int x = bx * kBlock; x < (bx + 1) * kBlock; ++x)
+                {
+                    double s = 0.0;
+                    double s2 = 0.0;
+                    for (const Image& image : images)
+                    {
+                        const double l = luminance(image.at(x, y));
+                        s += l;
+                        s2 += l * l;
+                    }
+                    const double mean = s / kSeeds;
+                    sum += mean;
+                    pixelVarianceSum += std::max(0.0, (s2 - kSeeds * mean * mean) / (kSeeds - 1)) / kSeeds;
+                }
+            constexpr double kPixels = kBlock * kBlock;
+            b.mean.push_back(sum / kPixels);
+            b.variance.push_back(pixelVarianceSum / (kPixels * kPixels));
+        }
+    return b;
+}
+
+struct AgreementCase
+{
+    std::string scene;
+    Estimator estimator;
+};
+
+void PrintTo(const AgreementCase& c, std::ostream* os)
+{
+    *os << c.scene << (c.estimator == Estimator::Mixture ? " (mixture)" : " (BSDF only)");
+}
+
+class GpuCpuAgreement : public ::testing::TestWithParam<AgreementCase>
+{
+};
+
+TEST_P(GpuCpuAgreement, BlockMeansAgree)
+{
+    RT_REQUIRE_GPU();
+    const AgreementCase& c = GetParam();
+    const Scene scene = makeScene(c.scene);
+    RenderSettings s;
+    s.width = 32;
+    s.aspect = scene.defaults.aspect;
+    s.spp = 16;
+    s.depth = 16;
+    s.estimator = c.estimator;
+    s.unidirectionalLight = scene.defaults.unidirectionalLight;
+
+    cpu::CpuEngine cpuEngine(EngineKind::Multi);
+    const BlockEstimate cpu = estimate(cpuEngine, scene, s);
+    const BlockEstimate gpu = estimate(*sharedEngine(), scene, s);
+    ASSERT_EQ(cpu.mean.size(), gpu.mean.size());
+    int failures = 0;
+    for (std::size_t i = 0; i < cpu.mean.size(); ++i)
+    {
+        const double difference = gpu.mean[i] - cpu.mean[i];
+        const double sigma = std::sqrt(cpu.variance[i] + gpu.variance[i]);
+        // Blocks without noise (background only, exact furnace paths) must agree to rounding.
+        const double z = sigma > 0.0 ? difference / sigma : (std::fabs(difference) < 1e-4 ? 0.0 : 1e30);
+        if (std::fabs(z) > kMaxZ)
+        {
+            ++failures;
+            ADD_FAILURE() << c.scene << ": block (" << i % cpu.blocksX << ", " << i / cpu.blocksX
+                          << ") luminance CPU " << cpu.mean[i] << ", GPU " << gpu.mean[i] << ", sigma " << sigma
+                          << ", z " << z;
+        }
+    }
+    EXPECT_EQ(failures, 0);
+}
+
+std::vector<AgreementCase> cases()
+{
+    std::vector<AgreementCase> out;
+    for (const SceneInfo& info : sceneCatalogue())
+        out.push_back({info.id, Estimator::Mixture});
+    for (const char* id : {"rtnw-cornell-smoke", "rtrol-cornell-glass", "rtnw-final"})
+        out.push_back({id, Estimator::BsdfOnly});
+    return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Catalogue, GpuCpuAgreement, ::testing::ValuesIn(cases()),
+                         [](const ::testing::TestParamInfo<AgreementCase>& param) {
+                             std::string name = param.param.scene +
+                                                (param.param.estimator == Estimator::Mixture ? "_mixture" : "_bsdf");
+                             for (char& ch : name)
+                                 if (ch == '-')
+                                     ch = '_';
+                             return name;
+                         });
+} // namespace
+} // namespace rt::gpu::test

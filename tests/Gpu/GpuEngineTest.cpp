@@ -1,0 +1,231 @@
+// The GPU engine on lavapipe (or any ray-tracing device): known answers, determinism, limits, progress and
+// cancellation, and no validation message along the way.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "Error.h"
+#include "Scene/SceneBuilder.h"
+#include "GpuTestEnvironment.h"
+#include "Scenes/Catalogue.h"
+
+namespace rt::gpu::test
+{
+namespace
+{
+class GpuEngineTest : public ::testing::Test
+{
+protected:
+    void SetUp() override
+    {
+        RT_REQUIRE_GPU();
+        ASSERT_TRUE(sharedEngine()->validationEnabled()) << "the tests need VK_LAYER_KHRONOS_validation";
+        m_messagesBefore = sharedEngine()->validationMessages();
+    }
+    void TearDown() override
+    {
+        if (sharedEngine())
+        {
+            EXPECT_EQ(sharedEngine()->validationMessages(), m_messagesBefore) << "Vulkan validation messages";
+        }
+    }
+
+    static RenderSettings small(const Scene& scene, int width, int spp, int depth)
+    {
+        RenderSettings s;
+        s.width = width;
+        s.aspect = scene.defaults.aspect;
+        s.spp = spp;
+        s.depth = depth;
+        s.unidirectionalLight = scene.defaults.unidirectionalLight;
+        return s;
+    }
+
+private:
+    std::uint64_t m_messagesBefore = 0;
+};
+
+using GpuFurnace = GpuEngineTest;
+
+/// Every pixel of the furnace converges to Le / (1 - a) (minus the a^depth tail, negligible at depth 50).
+void expectFurnace(float albedo, float radiance, Estimator estimator, int spp)
+{
+    const Scene scene = makeFurnace(albedo, radiance);
+    RenderSettings s;
+    s.width = 32;
+    s.aspect = 1.0f;
+    s.spp = spp;
+    s.depth = 50;
+    s.estimator = estimator;
+    s.unidirectionalLight = false;
+    const RenderResult r = renderOnGpu(scene, s);
+    const double expected = radiance * (1.0 - std::pow(double(albedo), s.depth)) / (1.0 - albedo);
+    EXPECT_EQ(r.stats.nanSamples + r.stats.infSamples, 0u);
+    for (int channel = 0; channel < 3; ++channel)
+    {
+        const MeanAndError m = pixelStatistics(r.image, channel);
+        // BSDF-only sampling has zero variance here: only rounding separates it from the expectation.
+        const double tolerance = std::max(3.0 * m.standardError, 1e-5 * expected);
+        EXPECT_NEAR(m.mean, expected, tolerance) << "channel " << channel << ", standard error " << m.standardError;
+    }
+}
+
+TEST_F(GpuFurnace, HalfAlbedoMixtureGivesLeOverOneMinusAlbedo) { expectFurnace(0.5f, 0.5f, Estimator::Mixture, 16); }
+
+TEST_F(GpuFurnace, HighAlbedoMixtureGivesLeOverOneMinusAlbedo) { expectFurnace(0.8f, 0.25f, Estimator::Mixture, 16); }
+
+TEST_F(GpuFurnace, BsdfOnlyIsExact) { expectFurnace(0.7f, 1.0f, Estimator::BsdfOnly, 4); }
+
+using GpuKnownAnswer = GpuEngineTest;
+
+/// A ground sphere of radius R under a uniform sky of radiance 1 with albedo 1/2: a convex surface sees only
+/// sky above its tangent plane, so every ground pixel is exactly 1/2 (one bounce, zero variance). Any
+/// self-intersection of rays leaving the surface darkens it: the book scenes' radius-100 and -1000 grounds.
+TEST_F(GpuKnownAnswer, GroundSphereUnderUniformSkyHasNoAcne)
+{
+    for (const float radius : {10.0f, 100.0f, 1000.0f, 10000.0f})
+    {
+        SceneBuilder b("ground");
+        b.sphere(b.world(), vec3(0.0f, -radius, 0.0f), radius, b.lambertian(vec3(0.5f)));
+        Scene& desc = b.scene();
+        desc.background = {BackgroundType::Constant, vec3(1.0f), vec3(1.0f)};
+        desc.camera.lookFrom = {0.0f, 2.0f, 6.0f};
+        desc.camera.lookAt = vec3(0.0f);
+        desc.camera.vfovDegrees = 40.0f;
+        const Scene scene = b.finish();
+        RenderSettings s = small(scene, 48, 8, 8);
+        s.aspect = 1.0f;
+        s.estimator = Estimator::BsdfOnly;
+        const RenderResult r = renderOnGpu(scene, s);
+        float lowest = 1.0f;
+        for (int y = s.height() / 2 + 6; y < s.height(); ++y) // rows that see only ground
+            for (int x = 0; x < s.width; ++x)
+                lowest = std::min(lowest, r.image.at(x, y).x);
+        EXPECT_NEAR(lowest, 0.5f, 1e-5f) << "radius " << radius;
+    }
+}
+
+using GpuDeterminism = GpuEngineTest;
+
+TEST_F(GpuDeterminism, SameSeedTwiceGivesTheSameImage)
+{
+    const Scene scene = makeScene("rtnw-cornell-smoke");
+    RenderSettings s = small(scene, 24, 4, 8);
+    const RenderResult a = renderOnGpu(scene, s);
+    const RenderResult b = renderOnGpu(scene, s);
+    EXPECT_EQ(a.image.pixels(), b.image.pixels());
+    s.seed = 1;
+    const RenderResult c = renderOnGpu(scene, s);
+    EXPECT_NE(a.image.pixels(), c.image.pixels());
+}
+
+TEST_F(GpuDeterminism, DispatchSplitDoesNotChangeTheImage)
+{
+    // One sample per dispatch (accumulate) and all samples in one dispatch draw the same numbers.
+    const Scene scene = makeScene("rtow-default");
+    RenderSettings s = small(scene, 24, 4, 8);
+    const RenderResult together = renderOnGpu(scene, s);
+    s.sampling = PixelSampling::Accumulate;
+    const RenderResult passes = renderOnGpu(scene, s);
+    EXPECT_EQ(together.image.pixels(), passes.image.pixels());
+}
+
+using GpuSettings = GpuEngineTest;
+
+TEST_F(GpuSettings, StratifiedReportsTheSquareItTook)
+{
+    const Scene scene = makeScene("rtnw-quads");
+    RenderSettings s = small(scene, 16, 10, 4);
+    s.sampling = PixelSampling::Stratified;
+    const RenderResult r = renderOnGpu(scene, s);
+    EXPECT_EQ(r.stats.trueSpp, 9);
+    EXPECT_EQ(r.stats.paths, 16u * 16u * 9u);
+}
+
+TEST_F(GpuSettings, StatsDescribeTheRender)
+{
+    const Scene scene = makeScene("rtnw-earth");
+    const RenderSettings s = small(scene, 32, 2, 4);
+    const RenderResult r = renderOnGpu(scene, s);
+    EXPECT_EQ(r.stats.engine, EngineKind::Gpu);
+    EXPECT_EQ(r.stats.scene, "rtnw-earth");
+    EXPECT_EQ(r.stats.width, 32);
+    EXPECT_EQ(r.stats.height, s.height());
+    EXPECT_EQ(r.image.width(), 32);
+    EXPECT_GE(r.stats.gpuSeconds, 0.0);
+    EXPECT_GT(r.stats.renderSeconds, 0.0);
+    EXPECT_GE(r.stats.wallSeconds, r.stats.renderSeconds);
+    EXPECT_FALSE(r.stats.device.empty());
+}
+
+TEST_F(GpuSettings, AbsurdSizeIsRefusedNamingTheLimit)
+{
+    const Scene scene = makeScene("rtnw-quads");
+    sharedEngine()->setScene(scene);
+    RenderSettings s = small(scene, 60000, 1, 1);
+    s.aspect = 1.0f;
+    RenderControl control;
+    try
+    {
+        sharedEngine()->render(s, control);
+        FAIL() << "expected DeviceError";
+    }
+    catch (const DeviceError& e)
+    {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("image 60000x60000"), std::string::npos) << message;
+        EXPECT_NE(message.find("maxImageDimension2D"), std::string::npos) << message;
+        EXPECT_NE(message.find("57.6 GB"), std::string::npos) << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+    // The engine is still usable afterwards.
+    const RenderResult r = renderOnGpu(scene, small(scene, 8, 1, 2));
+    EXPECT_EQ(r.image.width(), 8);
+}
+
+TEST_F(GpuSettings, InvalidSettingsAreUsageErrors)
+{
+    const Scene scene = makeScene("rtnw-quads");
+    sharedEngine()->setScene(scene);
+    RenderSettings s = small(scene, 8, 0, 2);
+    RenderControl control;
+    EXPECT_THROW(sharedEngine()->render(s, control), UsageError);
+}
+
+using GpuProgress = GpuEngineTest;
+
+TEST_F(GpuProgress, PreviewAfterEveryDispatchAndProgressInDispatches)
+{
+    const Scene scene = makeScene("rtnw-quads");
+    sharedEngine()->setScene(scene);
+    RenderSettings s = small(scene, 16, 5, 4);
+    s.sampling = PixelSampling::Accumulate;
+    RenderControl control;
+    std::vector<int> previews;
+    const RenderResult r = sharedEngine()->render(s, control, [&](const Image& estimate, int samples) {
+        EXPECT_EQ(estimate.width(), 16);
+        previews.push_back(samples);
+    });
+    EXPECT_EQ(previews, (std::vector<int>{1, 2, 3, 4, 5}));
+    EXPECT_EQ(control.total(), 5u);
+    EXPECT_EQ(control.done(), 5u);
+    EXPECT_EQ(r.stats.trueSpp, 5);
+}
+
+TEST_F(GpuProgress, CancelStopsBetweenDispatchesWithTheEstimateSoFar)
+{
+    const Scene scene = makeScene("rtnw-quads");
+    sharedEngine()->setScene(scene);
+    RenderSettings s = small(scene, 16, 50, 4);
+    s.sampling = PixelSampling::Accumulate;
+    RenderControl control;
+    const RenderResult r = sharedEngine()->render(s, control, [&](const Image&, int samples) {
+        if (samples == 3)
+            control.requestCancel();
+    });
+    EXPECT_TRUE(r.stats.cancelled);
+    EXPECT_EQ(r.stats.trueSpp, 3);
+    EXPECT_GT(r.image.mean().x, 0.0f);
+}
+} // namespace
+} // namespace rt::gpu::test

@@ -1,0 +1,39 @@
+// One GPU engine per test process, with validation on: creating a device and compiling the ray-tracing
+// pipeline costs seconds on lavapipe, so every device test shares it (one device per process anyway:
+// Vulkan/Device.h). Tests call RT_REQUIRE_GPU() first: it skips, with the reason, when no device fits.
+#pragma once
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "Engine/GpuEngine.h"
+#include "Image/Image.h"
+
+namespace rt::gpu::test
+{
+/// The shared engine, or nullptr when none could be created (see engineError()).
+GpuEngine* sharedEngine();
+const std::string& engineError();
+
+/// Renders `scene` with `settings` on the shared engine (setScene first).
+RenderResult renderOnGpu(const Scene& scene, const RenderSettings& settings);
+
+/// Mean and standard error of the mean of one channel of `image` over its pixels, treating pixels as
+/// independent samples (valid when every pixel has the same expectation, as in the furnace).
+struct MeanAndError
+{
+    double mean = 0.0;
+    double standardError = 0.0;
+};
+MeanAndError pixelStatistics(const Image& image, int channel);
+} // namespace rt::gpu::test
+
+#define RT_REQUIRE_GPU()                                                                                       \
+    do                                                                                                         \
+    {                                                                                                          \
+        if (!::rt::gpu::test::sharedEngine())                                                                  \
+        {                                                                                                      \
+            GTEST_SKIP() << "no usable Vulkan ray-tracing device: " << ::rt::gpu::test::engineError();         \
+        }                                                                                                      \
+    } while (false)

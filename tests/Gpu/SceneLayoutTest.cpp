@@ -1,0 +1,193 @@
+// How Common scenes map onto BLASes, TLAS instances and the shaders' records (host only, no device).
+#include <gtest/gtest.h>
+
+#include "Engine/SceneLayout.h"
+#include "Scene/SceneBuilder.h"
+#include "Scenes/Catalogue.h"
+
+namespace rt::gpu
+{
+namespace
+{
+using shader::kHitGroupMedia;
+using shader::kHitGroupSpheres;
+using shader::kHitGroupTriangles;
+
+std::size_t countKind(const SceneLayout& l, BlasDesc::Kind kind)
+{
+    std::size_t n = 0;
+    for (const BlasDesc& b : l.blases)
+        n += b.kind == kind;
+    return n;
+}
+
+TEST(SceneLayout, AllSpheresOfAGroupShareOneProceduralBlas)
+{
+    SceneBuilder b("spheres");
+    const std::uint32_t w = b.world();
+    const std::uint32_t mat = b.lambertian(vec3(0.5f));
+    for (int i = 0; i < 50; ++i)
+        b.sphere(w, vec3(float(i), 0.0f, 0.0f), 0.4f, mat);
+    const SceneLayout l = layoutScene(b.finish());
+    ASSERT_EQ(l.blases.size(), 1u);
+    EXPECT_EQ(l.blases[0].kind, BlasDesc::Kind::Procedural);
+    EXPECT_EQ(l.blases[0].sphereCount, 50u);
+    EXPECT_EQ(l.blases[0].mediumCount, 0u);
+    ASSERT_EQ(l.instances.size(), 1u);
+    EXPECT_EQ(l.instances[0].hitGroup, kHitGroupSpheres);
+    EXPECT_EQ(l.spheres.size(), 50u);
+    EXPECT_EQ(l.aabbs.size(), 50u);
+}
+
+TEST(SceneLayout, MovingSphereBoxCoversItsSweep)
+{
+    SceneBuilder b("moving");
+    b.movingSphere(b.world(), vec3(0.0f), vec3(0.0f, 2.0f, 0.0f), 0.5f, b.lambertian(vec3(0.5f)));
+    const SceneLayout l = layoutScene(b.finish());
+    ASSERT_EQ(l.aabbs.size(), 1u);
+    EXPECT_EQ(l.aabbs[0].min, vec3(-0.5f));
+    EXPECT_EQ(l.aabbs[0].max, vec3(0.5f, 2.5f, 0.5f));
+    EXPECT_EQ(l.spheres[0].center1, vec3(0.0f, 2.0f, 0.0f));
+}
+
+TEST(SceneLayout, QuadsBecomeTwoTrianglesWithEdgeUvsAndTheirNormal)
+{
+    SceneBuilder b("quads");
+    const std::uint32_t red = b.lambertian(vec3(1, 0, 0));
+    const std::uint32_t blue = b.lambertian(vec3(0, 0, 1));
+    b.quad(b.world(), vec3(1, 2, 3), vec3(2, 0, 0), vec3(0, 0, -3), red);
+    b.quad(b.world(), vec3(0, 0, 0), vec3(0, 1, 0), vec3(0, 0, 1), blue);
+    const SceneLayout l = layoutScene(b.finish());
+    ASSERT_EQ(l.blases.size(), 1u);
+    EXPECT_EQ(l.blases[0].kind, BlasDesc::Kind::Triangles);
+    EXPECT_EQ(l.blases[0].triangleCount, 4u);
+    EXPECT_EQ(l.blases[0].vertexCount, 8u);
+    EXPECT_EQ(l.triangleMaterials, (std::vector<std::uint32_t>{red, red, blue, blue}));
+    const shader::InstanceRecord& r = l.records[l.instances[0].record];
+    ASSERT_NE(r.firstUv, kNoIndex);
+    // Every triangle faces along u x v, and its vertex uvs are the edge coordinates of its corners.
+    const vec3 quadNormal = glm::normalize(glm::cross(vec3(2, 0, 0), vec3(0, 0, -3)));
+    for (int t = 0; t < 2; ++t)
+    {
+        const glm::uvec3 tri = l.triangles[r.firstTriangle + t];
+        const vec3 p0 = l.positions[r.firstVertex + tri.x];
+        const vec3 p1 = l.positions[r.firstVertex + tri.y];
+        const vec3 p2 = l.positions[r.firstVertex + tri.z];
+        EXPECT_GT(glm::dot(glm::normalize(glm::cross(p1 - p0, p2 - p0)), quadNormal), 0.999f);
+        for (std::uint32_t v : {tri.x, tri.y, tri.z})
+        {
+            const vec2 uv = l.uvs[r.firstUv + v];
+            const vec3 expected = vec3(1, 2, 3) + uv.x * vec3(2, 0, 0) + uv.y * vec3(0, 0, -3);
+            EXPECT_EQ(l.positions[r.firstVertex + v], expected);
+        }
+    }
+    EXPECT_EQ(l.instances[0].hitGroup, kHitGroupTriangles);
+}
+
+TEST(SceneLayout, SpheresAndMediaOfAGroupAreTwoGeometriesOfOneBlas)
+{
+    SceneBuilder b("fog");
+    const std::uint32_t w = b.world();
+    b.sphere(w, vec3(0.0f), 1.0f, b.dielectric(1.5f));
+    b.sphereMedium(w, vec3(0.0f), 1.0f, 0.2f, vec3(0.5f));
+    b.boxMedium(w, vec3(2.0f), vec3(3.0f), 0.1f, vec3(1.0f));
+    const SceneLayout l = layoutScene(b.finish());
+    ASSERT_EQ(l.blases.size(), 1u);
+    EXPECT_EQ(l.blases[0].sphereCount, 1u);
+    EXPECT_EQ(l.blases[0].mediumCount, 2u);
+    EXPECT_EQ(l.instances[0].hitGroup, kHitGroupSpheres); // geometry 1 (media) lands on kHitGroupMedia
+    EXPECT_EQ(l.media[1].boundary, shader::MediumBoundary::Box);
+    EXPECT_EQ(l.aabbs[l.blases[0].firstMediumAabb + 1].min, vec3(2.0f));
+}
+
+TEST(SceneLayout, MediaOnlyGroupStartsAtTheMediumHitGroup)
+{
+    SceneBuilder b("smoke");
+    const std::uint32_t g = b.group("smoke");
+    b.boxMedium(g, vec3(0.0f), vec3(1.0f), 0.01f, vec3(0.0f));
+    b.instance(g, Transform::translate(vec3(5.0f)));
+    const SceneLayout l = layoutScene(b.finish());
+    ASSERT_EQ(l.instances.size(), 1u);
+    EXPECT_EQ(l.instances[0].hitGroup, kHitGroupMedia);
+    EXPECT_EQ(l.instances[0].worldFromObject, Transform::translate(vec3(5.0f)).m);
+}
+
+TEST(SceneLayout, InstancedGroupReusesItsBlasesAndRecords)
+{
+    SceneBuilder b("boxes");
+    const std::uint32_t box = b.group("box");
+    b.box(box, vec3(0.0f), vec3(1.0f), b.lambertian(vec3(0.7f)));
+    b.sphere(box, vec3(0.5f), 0.25f, b.metal(vec3(0.8f), 0.0f));
+    for (int i = 0; i < 3; ++i)
+        b.instance(box, Transform::translate(vec3(float(i) * 2.0f, 0.0f, 0.0f)));
+    const SceneLayout l = layoutScene(b.finish());
+    EXPECT_EQ(l.blases.size(), 2u); // the box's quads, its sphere
+    EXPECT_EQ(l.records.size(), 2u);
+    EXPECT_EQ(l.instances.size(), 6u); // 3 instances x 2 BLASes
+    EXPECT_EQ(l.blases[0].triangleCount, 12u);
+}
+
+TEST(SceneLayout, MeshBlasIsSharedAcrossMaterials)
+{
+    // mesh-in-one-weekend places one mesh three times with three materials.
+    const SceneLayout l = layoutScene(makeScene("mesh-in-one-weekend"));
+    EXPECT_EQ(countKind(l, BlasDesc::Kind::Triangles), 1u);
+    std::vector<std::uint32_t> materials;
+    std::vector<std::uint32_t> blases;
+    for (const TlasInstanceDesc& i : l.instances)
+        if (i.hitGroup == kHitGroupTriangles)
+        {
+            blases.push_back(i.blas);
+            materials.push_back(l.records[i.record].material);
+        }
+    ASSERT_EQ(materials.size(), 3u);
+    EXPECT_EQ(blases[0], blases[1]);
+    EXPECT_EQ(blases[1], blases[2]);
+    EXPECT_NE(materials[0], materials[1]);
+    EXPECT_NE(materials[1], materials[2]);
+}
+
+TEST(SceneLayout, PerTriangleMaterialsOfAMesh)
+{
+    const SceneLayout l = layoutScene(makeScene("cube-and-spheres"));
+    bool found = false;
+    for (const shader::InstanceRecord& r : l.records)
+        if (r.firstTriangleMaterial != kNoIndex && r.firstUv == kNoIndex)
+        {
+            found = true;
+            EXPECT_LE(r.firstTriangleMaterial + 12u, l.triangleMaterials.size());
+        }
+    EXPECT_TRUE(found) << "the cube's six coloured faces";
+}
+
+TEST(SceneLayout, EveryCatalogueSceneIsConsistent)
+{
+    for (const SceneInfo& info : sceneCatalogue())
+    {
+        SCOPED_TRACE(info.id);
+        SceneOptions options;
+        if (info.id == "white-spheres")
+            options.count = 200;
+        const Scene scene = makeScene(info.id, options);
+        const SceneLayout l = layoutScene(scene);
+        EXPECT_FALSE(l.instances.empty());
+        for (const TlasInstanceDesc& i : l.instances)
+        {
+            ASSERT_LT(i.blas, l.blases.size());
+            ASSERT_LT(i.record, l.records.size());
+            EXPECT_LT(i.hitGroup, shader::kHitGroupCount);
+        }
+        for (const BlasDesc& b : l.blases)
+        {
+            EXPECT_LE(b.firstTriangle + b.triangleCount, l.triangles.size());
+            EXPECT_LE(b.firstVertex + b.vertexCount, l.positions.size());
+            EXPECT_LE(b.firstMediumAabb + b.mediumCount, l.aabbs.size());
+        }
+        for (const shader::SphereRecord& s : l.spheres)
+            EXPECT_LT(s.material, scene.materials.size());
+        for (std::uint32_t m : l.triangleMaterials)
+            EXPECT_LT(m, scene.materials.size());
+    }
+}
+} // namespace
+} // namespace rt::gpu

@@ -1,0 +1,256 @@
+// The GLSL twins of Common's building blocks give the C++ answers: the random streams and the ray offset bit
+// for bit (integer arithmetic, no fused multiply-add), the warps, light samplers, Perlin noise and sphere
+// roots to a tolerance that allows the GPU's transcendental functions (Vulkan guarantees sin/cos only to
+// an absolute 2^-11; real devices do far better).
+#include <bit>
+#include <cstring>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "Assets/AssetPaths.h"
+#include "ComputeKernel.h"
+#include "GpuTestEnvironment.h"
+#include "Math/RayOffset.h"
+#include "Random/Pcg.h"
+#include "Sampling/LightSampling.h"
+#include "Sampling/Warps.h"
+#include "Scene/Perlin.h"
+
+namespace rt::gpu::test
+{
+namespace
+{
+// Case layouts of Shaders/Tests/Parity.comp, in 32-bit words.
+enum Mode : std::uint32_t
+{
+    kRandom = 0,
+    kRayOffset = 1,
+    kWarps = 2,
+    kLightSampling = 3,
+    kPerlin = 4,
+    kSphere = 5
+};
+struct Layout
+{
+    std::uint32_t inputWords;
+    std::uint32_t outputWords;
+};
+constexpr Layout kLayouts[] = {{3, 8}, {6, 3}, {3, 13}, {6, 6}, {3, 2}, {10, 3}};
+
+std::uint32_t bits(float f) { return std::bit_cast<std::uint32_t>(f); }
+float asFloat(std::uint32_t u) { return std::bit_cast<float>(u); }
+
+/// Runs `mode` over `inputs` (inputWords per case); returns outputWords per case.
+std::vector<std::uint32_t> runParity(Mode mode, const std::vector<std::uint32_t>& inputs,
+                                     const std::vector<LightData>& lights = {})
+{
+    const Layout layout = kLayouts[mode];
+    const auto cases = static_cast<std::uint32_t>(inputs.size() / layout.inputWords);
+    const std::uint32_t push[4] = {mode, cases, layout.inputWords, layout.outputWords};
+    const std::vector<LightData> lightBuffer = lights.empty() ? std::vector<LightData>(1) : lights;
+    const std::vector<std::byte> out = runKernel(
+        sharedEngine()->context(), executableDir() / "shaders" / "Tests" / "Parity.comp.spv",
+        {{inputs.data(), inputs.size() * 4},
+         {nullptr, std::size_t(cases) * layout.outputWords * 4},
+         {&perlinTables(), sizeof(shader::PerlinData)},
+         {lightBuffer.data(), lightBuffer.size() * sizeof(LightData)}},
+        1, push, sizeof(push), (cases + 63) / 64);
+    std::vector<std::uint32_t> words(out.size() / 4);
+    std::memcpy(words.data(), out.data(), out.size());
+    return words;
+}
+
+/// Deterministic test inputs in [lo, hi).
+std::vector<float> uniforms(std::size_t n, float lo, float hi, std::uint32_t seed)
+{
+    SceneRandom rnd(seed);
+    std::vector<float> v(n);
+    for (float& x : v)
+        x = rnd.uniform(lo, hi);
+    return v;
+}
+
+void expectNear(const vec3& gpu, const vec3& cpu, float tolerance, const char* what, std::size_t c)
+{
+    for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(gpu[k], cpu[k], tolerance) << what << ", case " << c << ", component " << k;
+}
+
+vec3 vec3At(const std::vector<std::uint32_t>& w, std::size_t i)
+{
+    return {asFloat(w[i]), asFloat(w[i + 1]), asFloat(w[i + 2])};
+}
+
+TEST(GpuShaderParity, RandomStreamsAreBitIdentical)
+{
+    RT_REQUIRE_GPU();
+    std::vector<std::uint32_t> in;
+    for (std::uint32_t seed : {0u, 1u, 0xDEADBEEFu})
+        for (std::uint32_t pixel : {0u, 1u, 12345u, 0xFFFFFFFFu})
+            for (std::uint32_t sample : {0u, 7u, 100000u})
+                in.insert(in.end(), {seed, pixel, sample});
+    const std::vector<std::uint32_t> out = runParity(kRandom, in);
+    for (std::size_t c = 0; c < in.size() / 3; ++c)
+    {
+        Rng rng = Rng::forSample(in[3 * c], in[3 * c + 1], in[3 * c + 2]);
+        for (int k = 0; k < 4; ++k)
+            EXPECT_EQ(out[8 * c + k], rng.nextUint()) << "case " << c << ", nextUint " << k;
+        for (int k = 4; k < 8; ++k)
+            EXPECT_EQ(out[8 * c + k], bits(rng.nextFloat())) << "case " << c << ", nextFloat " << k;
+    }
+}
+
+TEST(GpuShaderParity, RayOffsetIsBitIdentical)
+{
+    RT_REQUIRE_GPU();
+    std::vector<std::uint32_t> in;
+    const std::vector<float> scales = {1e-6f, 1e-3f, 0.02f, 1.0f, 555.0f, 1e4f, 1e6f};
+    const std::vector<float> r = uniforms(6 * 64, -1.0f, 1.0f, 7u);
+    for (std::size_t c = 0; c < 64; ++c)
+    {
+        const float scale = scales[c % scales.size()];
+        const vec3 p = scale * vec3(r[6 * c], r[6 * c + 1], r[6 * c + 2]);
+        const vec3 n = glm::normalize(vec3(r[6 * c + 3], r[6 * c + 4], r[6 * c + 5]) + vec3(1e-3f));
+        in.insert(in.end(), {bits(p.x), bits(p.y), bits(p.z), bits(n.x), bits(n.y), bits(n.z)});
+    }
+    const std::vector<std::uint32_t> out = runParity(kRayOffset, in);
+    for (std::size_t c = 0; c < 64; ++c)
+    {
+        const vec3 expected = offsetRayOrigin(vec3At(in, 6 * c), vec3At(in, 6 * c + 3));
+        for (int k = 0; k < 3; ++k)
+            EXPECT_EQ(out[3 * c + k], bits(expected[k])) << "case " << c << ", component " << k;
+    }
+}
+
+TEST(GpuShaderParity, WarpsMatchCommon)
+{
+    RT_REQUIRE_GPU();
+    const std::vector<float> r = uniforms(3 * 256, 0.0f, 1.0f, 11u);
+    std::vector<std::uint32_t> in;
+    for (std::size_t c = 0; c < 256; ++c)
+        in.insert(in.end(), {bits(r[3 * c]), bits(r[3 * c + 1]), bits(1e-4f + r[3 * c + 2])});
+    const std::vector<std::uint32_t> out = runParity(kWarps, in);
+    constexpr float kTolerance = 2e-5f;
+    for (std::size_t c = 0; c < 256; ++c)
+    {
+        const vec2 u(asFloat(in[3 * c]), asFloat(in[3 * c + 1]));
+        const std::uint32_t* o = &out[13 * c];
+        expectNear(vec3At(out, 13 * c), sampleCosineHemisphere(u), kTolerance, "cosine hemisphere", c);
+        expectNear(vec3At(out, 13 * c + 3), sampleUniformSphere(u), kTolerance, "uniform sphere", c);
+        expectNear(vec3At(out, 13 * c + 6), sampleUniformCone(u, asFloat(in[3 * c + 2])), kTolerance, "cone", c);
+        const vec2 disk = sampleUniformDiskConcentric(u);
+        EXPECT_NEAR(asFloat(o[9]), disk.x, kTolerance) << "disk, case " << c;
+        EXPECT_NEAR(asFloat(o[10]), disk.y, kTolerance) << "disk, case " << c;
+        const vec2 triangle = sampleUniformTriangle(u);
+        EXPECT_NEAR(asFloat(o[11]), triangle.x, kTolerance) << "triangle, case " << c;
+        EXPECT_NEAR(asFloat(o[12]), triangle.y, kTolerance) << "triangle, case " << c;
+    }
+}
+
+LightData quadLight(const vec3& q, const vec3& u, const vec3& v)
+{
+    LightData l{};
+    l.shape = shader::LightShape::Quad;
+    l.p0 = q;
+    l.p1 = u;
+    l.p2 = v;
+    const vec3 n = glm::cross(u, v);
+    l.area = glm::length(n);
+    l.normal = n / l.area;
+    return l;
+}
+
+TEST(GpuShaderParity, LightSamplersMatchCommon)
+{
+    RT_REQUIRE_GPU();
+    std::vector<LightData> lights;
+    lights.push_back(quadLight({213, 554, 227}, {130, 0, 0}, {0, 0, 105}));
+    LightData triangle = quadLight({0, 500, 0}, {100, 0, 0}, {0, 0, 50});
+    triangle.shape = shader::LightShape::Triangle;
+    triangle.area *= 0.5f;
+    lights.push_back(triangle);
+    LightData sphere{};
+    sphere.shape = shader::LightShape::Sphere;
+    sphere.p0 = {277, 530, 277};
+    sphere.radius = 50.0f;
+    sphere.area = 4.0f * kPi * 50.0f * 50.0f;
+    lights.push_back(sphere);
+
+    const std::vector<float> r = uniforms(5 * 192, 0.0f, 1.0f, 5u);
+    std::vector<std::uint32_t> in;
+    for (std::size_t c = 0; c < 192; ++c)
+    {
+        // Points in the Cornell box, some inside the sphere light (its uniform-area branch).
+        vec3 p = vec3(555.0f * r[5 * c], 555.0f * r[5 * c + 1], 555.0f * r[5 * c + 2]);
+        if (c % 8 == 0)
+            p = sphere.p0 + vec3(10.0f * r[5 * c], -20.0f * r[5 * c + 1], 5.0f);
+        in.insert(in.end(), {std::uint32_t(c % 3), bits(p.x), bits(p.y), bits(p.z), bits(r[5 * c + 3]),
+                             bits(r[5 * c + 4])});
+    }
+    const std::vector<std::uint32_t> out = runParity(kLightSampling, in, lights);
+    for (std::size_t c = 0; c < 192; ++c)
+    {
+        const LightData& light = lights[in[6 * c]];
+        const vec3 p = vec3At(in, 6 * c + 1);
+        LightSample ls;
+        const bool ok = sampleLight(light, p, {asFloat(in[6 * c + 4]), asFloat(in[6 * c + 5])}, ls);
+        ASSERT_EQ(out[6 * c] != 0, ok) << "case " << c;
+        if (!ok)
+            continue;
+        expectNear(vec3At(out, 6 * c + 1), ls.wi, 1e-4f, "wi", c);
+        EXPECT_NEAR(asFloat(out[6 * c + 4]), ls.pdf, 1e-3f * ls.pdf) << "pdf, case " << c;
+        const float pdfOfWi = lightPdf(light, p, ls.wi);
+        EXPECT_NEAR(asFloat(out[6 * c + 5]), pdfOfWi, 1e-3f * pdfOfWi + 1e-6f) << "lightPdf, case " << c;
+    }
+}
+
+TEST(GpuShaderParity, PerlinNoiseMatchesCommon)
+{
+    RT_REQUIRE_GPU();
+    const std::vector<float> r = uniforms(3 * 256, -300.0f, 300.0f, 3u);
+    std::vector<std::uint32_t> in;
+    for (float x : r)
+        in.push_back(bits(x));
+    const std::vector<std::uint32_t> out = runParity(kPerlin, in);
+    for (std::size_t c = 0; c < 256; ++c)
+    {
+        const vec3 p = vec3At(in, 3 * c);
+        EXPECT_NEAR(asFloat(out[2 * c]), perlinNoise(perlinTables(), p), 1e-5f) << "case " << c;
+        EXPECT_NEAR(asFloat(out[2 * c + 1]), perlinTurbulence(perlinTables(), p, 7), 1e-5f) << "case " << c;
+    }
+}
+
+TEST(GpuShaderParity, SphereRootsFindTheFarRootFromInside)
+{
+    RT_REQUIRE_GPU();
+    struct Case
+    {
+        vec3 o, d, center;
+        float radius;
+        bool hit;
+        float t0, t1;
+    };
+    const std::vector<Case> cases = {
+        {{0, 0, 0}, {0, 0, -1}, {0, 0, -5}, 1.0f, true, 4.0f, 6.0f},
+        {{0, 0, -5}, {0, 0, -2}, {0, 0, -5}, 1.0f, true, -0.5f, 0.5f}, // inside: far root 0.5
+        {{0, 2, 0}, {0, 0, -1}, {0, 0, -5}, 1.0f, false, 0.0f, 0.0f},
+        {{278, 278, -800}, {0, 0, 1}, {278, 278, 400}, 1e-2f, true, 1200.0f - 1e-2f, 1200.0f + 1e-2f},
+        {{0, 1.5f, 0}, {0, -1, 0}, {0, -1000, 0}, 1000.0f, true, 1.5f, 2001.5f},
+    };
+    std::vector<std::uint32_t> in;
+    for (const Case& c : cases)
+        in.insert(in.end(), {bits(c.o.x), bits(c.o.y), bits(c.o.z), bits(c.d.x), bits(c.d.y), bits(c.d.z),
+                             bits(c.center.x), bits(c.center.y), bits(c.center.z), bits(c.radius)});
+    const std::vector<std::uint32_t> out = runParity(kSphere, in);
+    for (std::size_t i = 0; i < cases.size(); ++i)
+    {
+        ASSERT_EQ(out[3 * i] != 0, cases[i].hit) << "case " << i;
+        if (!cases[i].hit)
+            continue;
+        EXPECT_NEAR(asFloat(out[3 * i + 1]), cases[i].t0, 1e-3f) << "case " << i;
+        EXPECT_NEAR(asFloat(out[3 * i + 2]), cases[i].t1, 1e-3f) << "case " << i;
+    }
+}
+} // namespace
+} // namespace rt::gpu::test
