@@ -78,53 +78,6 @@ inline float planarHit(const LightData& light, const vec3& p, const vec3& wi)
 }
 } // namespace detail
 
-/// Samples a direction from p towards `light` with uniform-area (quad, triangle, sphere seen from inside) or
-/// uniform-cone (sphere seen from outside) density. Returns false when no direction can be produced
-/// (p in the light's plane, degenerate light).
-inline bool sampleLight(const LightData& light, const vec3& p, const vec2& u, LightSample& out)
-{
-    if (light.shape == LightShape::Sphere)
-    {
-        float oneMinusCos, cosThetaMax;
-        vec3 axis;
-        if (detail::sphereCone(light, p, oneMinusCos, cosThetaMax, axis))
-        {
-            out.wi = Onb(axis).toWorld(sampleUniformCone(u, oneMinusCos));
-            out.pdf = uniformConePdf(oneMinusCos);
-            out.distance = glm::length(light.p0 - p) - light.radius; // lower bound; the mixture needs no more
-            return true;
-        }
-        const vec3 n = sampleUniformSphere(u);
-        const vec3 y = light.p0 + light.radius * n;
-        const vec3 w = y - p;
-        const float dist2 = lengthSquared(w);
-        if (!(dist2 > 0.0f))
-            return false;
-        out.distance = std::sqrt(dist2);
-        out.wi = w / out.distance;
-        const float area = 4.0f * kPi * light.radius * light.radius;
-        out.pdf = detail::areaToSolidAngle(dist2, std::fabs(glm::dot(n, out.wi)), area);
-        return out.pdf > 0.0f;
-    }
-
-    vec3 y;
-    if (light.shape == LightShape::Quad)
-        y = light.p0 + u.x * light.p1 + u.y * light.p2;
-    else
-    {
-        const vec2 b = sampleUniformTriangle(u);
-        y = light.p0 + b.x * light.p1 + b.y * light.p2; // p1, p2 are edges from p0
-    }
-    const vec3 w = y - p;
-    const float dist2 = lengthSquared(w);
-    if (!(dist2 > 0.0f))
-        return false;
-    out.distance = std::sqrt(dist2);
-    out.wi = w / out.distance;
-    out.pdf = detail::areaToSolidAngle(dist2, std::fabs(glm::dot(light.normal, out.wi)), light.area);
-    return out.pdf > 0.0f;
-}
-
 /// Solid-angle pdf with which sampleLight(light, p, .) produces the unit direction `wi`; 0 if it cannot.
 inline float lightPdf(const LightData& light, const vec3& p, const vec3& wi)
 {
@@ -146,4 +99,43 @@ inline float lightPdf(const LightData& light, const vec3& p, const vec3& wi)
         return 0.0f;
     return detail::areaToSolidAngle(t * t, std::fabs(glm::dot(light.normal, wi)), light.area);
 }
+/// Samples a direction from p towards `light` with uniform-area (quad, triangle, sphere seen from inside) or
+/// uniform-cone (sphere seen from outside) density. The pdf it returns is lightPdf(light, p, wi) itself, so
+/// a sample and the pdf of its direction can never disagree: a direction that rounding puts outside the light
+/// (p in the light's own plane, a cone sample on the silhouette) is dropped instead of being weighted by a pdf
+/// the mixture's other terms cannot see (that mismatch biased a closed-box furnace by +0.7 %).
+/// Returns false when no direction can be produced.
+inline bool sampleLight(const LightData& light, const vec3& p, const vec2& u, LightSample& out)
+{
+    vec3 y;
+    if (light.shape == LightShape::Sphere)
+    {
+        float oneMinusCos, cosThetaMax;
+        vec3 axis;
+        if (detail::sphereCone(light, p, oneMinusCos, cosThetaMax, axis))
+        {
+            out.wi = Onb(axis).toWorld(sampleUniformCone(u, oneMinusCos));
+            out.distance = glm::length(light.p0 - p) - light.radius; // lower bound; the mixture needs no more
+            out.pdf = lightPdf(light, p, out.wi);
+            return out.pdf > 0.0f;
+        }
+        y = light.p0 + light.radius * sampleUniformSphere(u);
+    }
+    else if (light.shape == LightShape::Quad)
+        y = light.p0 + u.x * light.p1 + u.y * light.p2;
+    else
+    {
+        const vec2 b = sampleUniformTriangle(u);
+        y = light.p0 + b.x * light.p1 + b.y * light.p2; // p1, p2 are edges from p0
+    }
+    const vec3 w = y - p;
+    const float dist2 = lengthSquared(w);
+    if (!(dist2 > 0.0f))
+        return false;
+    out.distance = std::sqrt(dist2);
+    out.wi = w / out.distance;
+    out.pdf = lightPdf(light, p, out.wi);
+    return out.pdf > 0.0f;
+}
+
 } // namespace rt

@@ -53,7 +53,7 @@ RT_ENUM_VALUE(TextureType, Checker, 1)    // 3-D checker: color0 / color1, cell 
 RT_ENUM_VALUE(TextureType, Image, 2)      // image `image`, sampled at the surface (u, v), nearest texel
 RT_ENUM_VALUE(TextureType, Noise, 3)      // Perlin: 0.5 (1 + noise(scale p))
 RT_ENUM_VALUE(TextureType, Turbulence, 4) // Perlin: turb(scale p), 7 octaves
-RT_ENUM_VALUE(TextureType, Marble, 5)     // Perlin: 0.5 (1 + sin(scale p.z + 10 turb(scale p)))
+RT_ENUM_VALUE(TextureType, Marble, 5)     // Perlin: 0.5 (1 + sin(scale p.z + 10 turb(p))): RTTNW §5.8 as coded
 RT_ENUM_END(TextureType)
 
 RT_ENUM_BEGIN(BackgroundType)

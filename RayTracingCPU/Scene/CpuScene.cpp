@@ -93,6 +93,8 @@ CpuScene::CpuScene(const Scene& scene) : m_scene(&scene)
                 rec.p0 = m.point(mesh.positions[mesh.indices[3 * t]]);
                 rec.p1 = m.point(mesh.positions[mesh.indices[3 * t + 1]]);
                 rec.p2 = m.point(mesh.positions[mesh.indices[3 * t + 2]]);
+                if (lengthSquared(glm::cross(rec.p1 - rec.p0, rec.p2 - rec.p0)) == 0.0f)
+                    continue; // zero area: rounding in the sheared edge functions could still report hits
                 rec.material = mesh.triangleMaterials.empty() ? ref.material : mesh.triangleMaterials[t];
                 rec.mesh = ref.mesh;
                 rec.triangle = static_cast<std::uint32_t>(t);

@@ -33,6 +33,9 @@ public:
     const Bvh& bvh() const { return m_bvh; }
     const Bvh4& bvh4() const { return m_bvh4; }
     std::size_t primitiveCount() const { return m_primitiveCount; }
+    const std::vector<SphereRec>& spheres() const { return m_spheres; }
+    const std::vector<QuadRec>& quads() const { return m_quads; }
+    const std::vector<TriangleRec>& triangles() const { return m_triangles; }
     bool hasMedia() const { return !m_media.empty(); }
     TraceRay::Needs rayNeeds() const { return {!m_triangles.empty(), !m_media.empty()}; }
 

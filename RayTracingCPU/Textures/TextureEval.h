@@ -41,7 +41,9 @@ inline vec3 evalTexture(const Scene& scene, std::uint32_t index, const vec2& uv,
     case TextureType::Noise: return vec3(0.5f * (1.0f + perlinNoise(perlinTables(), t.scale * p)));
     case TextureType::Turbulence: return vec3(perlinTurbulence(perlinTables(), t.scale * p, 7));
     case TextureType::Marble:
-        return vec3(0.5f * (1.0f + std::sin(t.scale * p.z + 10.0f * perlinTurbulence(perlinTables(), t.scale * p, 7))));
+        // The books' code turbulates the unscaled point (RTTNW §5.8, v3 and v4 alike); scaling it as well
+        // gives fine-grained noise instead of the books' broad veins.
+        return vec3(0.5f * (1.0f + std::sin(t.scale * p.z + 10.0f * perlinTurbulence(perlinTables(), p, 7))));
     }
     return vec3(0.0f);
 }

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Usage: bad_input.sh APP
+# Every case must exit non-zero, print exactly one line on stderr that names the problem, not crash
+# (no status above 128), and leave no output file behind.
+set -u
+app=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+
+expect_error() { # name, pattern the error line must contain, args...
+    local name=$1 pattern=$2
+    shift 2
+    local out="$work/out.png"
+    rm -f "$out" "$out.partial"
+    # Small defaults for the flags a case does not set itself (a repeated flag is an error of its own).
+    local defaults=()
+    [[ " $* " == *" --width "* ]] || defaults+=(--width 8)
+    [[ " $* " == *" --spp "* ]] || defaults+=(--spp 1)
+    [[ " $* " == *" --output "* ]] || defaults+=(--output "$out")
+    "$app" --headless --quiet "${defaults[@]}" "$@" >"$work/stdout" 2>"$work/stderr"
+    local status=$?
+    local lines
+    lines=$(grep -c . "$work/stderr")
+    if [ "$status" -eq 0 ] || [ "$status" -gt 128 ]; then
+        echo "FAIL $name: exit status $status"; failures=$((failures + 1))
+    elif [ "$lines" -ne 1 ]; then
+        echo "FAIL $name: $lines lines on stderr:"; cat "$work/stderr"; failures=$((failures + 1))
+    elif ! grep -qi -- "$pattern" "$work/stderr"; then
+        echo "FAIL $name: '$(cat "$work/stderr")' does not mention '$pattern'"; failures=$((failures + 1))
+    elif find "$work" -name 'out.*' | grep -q .; then
+        echo "FAIL $name: an output file was written"; failures=$((failures + 1))
+    else
+        echo "ok   $name (status $status): $(cat "$work/stderr")"
+    fi
+}
+
+expect_error "unknown scene" "no-such-scene" --scene no-such-scene
+expect_error "zero spp" "samples per pixel" --spp 0
+expect_error "negative width" "width" --width -5
+expect_error "unknown flag" "--frobnicate" --frobnicate
+expect_error "bad sampling" "sampling" --sampling sobol
+expect_error "bad pdf value" "--pdf" --pdf maybe
+mkdir -p "$work/empty-assets"
+RT_ASSET_DIR="$work/empty-assets" expect_error "missing texture" "earth.jpg" --scene rtnw-earth
+expect_error "malformed OBJ" "malformed.obj" --scene mesh-in-one-weekend --mesh /usr/share/assimp/models/invalid/malformed.obj
+expect_error "empty OBJ" "empty.obj" --scene mesh-in-one-weekend --mesh /usr/share/assimp/models/invalid/empty.obj
+expect_error "missing OBJ" "nothere.obj" --scene mesh-in-one-weekend --mesh "$work/nothere.obj"
+expect_error "output folder missing" "does not exist" --output "$work/no/such/folder/out.png"
+expect_error "repeated flag" "--spp" --spp 2 --spp 3
+expect_error "output extension" ".png" --output "$work/out.jpg"
+
+exit $failures

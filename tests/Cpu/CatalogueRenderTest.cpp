@@ -1,0 +1,48 @@
+// Every scene of the catalogue renders on the single- and the multi-core engine, without a NaN or an
+// infinite sample, and both engines agree bit for bit.
+#include <gtest/gtest.h>
+
+#include "RenderTestSupport.h"
+#include "Scenes/Catalogue.h"
+
+namespace rt::test
+{
+namespace
+{
+class CpuCatalogue : public ::testing::TestWithParam<std::string>
+{
+};
+
+TEST_P(CpuCatalogue, RendersWithoutNanOnBothEngines)
+{
+    const Scene scene = makeScene(GetParam());
+    for (const Estimator estimator : {Estimator::BsdfOnly, Estimator::Mixture})
+    {
+        RenderSettings s = smallSettings(32, 4, 16, estimator, scene.defaults.aspect);
+        s.unidirectionalLight = scene.defaults.unidirectionalLight;
+        const RenderResult single = renderCpu(scene, s, EngineKind::Single);
+        const RenderResult multi = renderCpu(scene, s, EngineKind::Multi);
+        EXPECT_EQ(single.stats.nanSamples + single.stats.infSamples, 0u) << toString(estimator);
+        EXPECT_EQ(multi.stats.nanSamples + multi.stats.infSamples, 0u) << toString(estimator);
+        EXPECT_TRUE(bitIdentical(single.image, multi.image)) << toString(estimator);
+        EXPECT_GT(single.image.mean().x + single.image.mean().y + single.image.mean().z, 0.0f) << "black image";
+    }
+}
+
+std::vector<std::string> catalogueIds()
+{
+    std::vector<std::string> ids;
+    for (const SceneInfo& s : sceneCatalogue())
+        ids.push_back(s.id);
+    return ids;
+}
+
+INSTANTIATE_TEST_SUITE_P(AllScenes, CpuCatalogue, ::testing::ValuesIn(catalogueIds()), [](const auto& param) {
+    std::string name = param.param;
+    for (char& c : name)
+        if (c == '-')
+            c = '_';
+    return name;
+});
+} // namespace
+} // namespace rt::test

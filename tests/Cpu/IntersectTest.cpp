@@ -1,0 +1,146 @@
+// Ray-primitive tests: the cases the books' code and the thesis got wrong, and watertightness.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "Random/Pcg.h"
+#include "Sampling/Warps.h"
+#include "Scene/CpuScene.h"
+#include "Scene/SceneBuilder.h"
+
+namespace rt::test
+{
+namespace
+{
+using namespace rt::cpu;
+
+HitRecord closest(const CpuScene& cs, const Ray& ray)
+{
+    Rng rng(1);
+    HitRecord hit;
+    cs.intersect(TraceRay(ray, cs.rayNeeds()), 0.0f, kInfinity, hit, rng);
+    return hit;
+}
+
+Scene oneSphere(const vec3& c0, const vec3& c1, float r)
+{
+    SceneBuilder b("sphere");
+    b.movingSphere(b.world(), c0, c1, r, b.lambertian(vec3(0.5f)));
+    return b.finish();
+}
+
+TEST(Intersect, RayStartingInsideASphereHitsTheFarWall)
+{
+    const Scene scene = oneSphere(vec3(0.0f), vec3(0.0f), 2.0f);
+    const CpuScene cs(scene);
+    const HitRecord hit = closest(cs, Ray{vec3(0.5f, 0.0f, 0.0f), vec3(1.0f, 0.0f, 0.0f), 0.0f});
+    ASSERT_NE(hit.prim, kNoIndex);
+    EXPECT_NEAR(hit.t, 1.5f, 1e-5f);
+    const SurfaceInteraction si = cs.interaction(TraceRay(Ray{vec3(0.5f, 0.0f, 0.0f), vec3(1.0f, 0.0f, 0.0f), 0.0f}, cs.rayNeeds()), hit);
+    EXPECT_GT(si.n.x, 0.99f); // outward normal: the integrator flips it towards the ray
+}
+
+TEST(Intersect, MovingSphereIsWhereItIsAtTheRaysTime)
+{
+    // The thesis' CPU app moved spheres the wrong way: centre(t) must go from center0 (t=0) to center1 (t=1).
+    const vec3 c0(0.0f, 0.0f, 0.0f), c1(0.0f, 10.0f, 0.0f);
+    const Scene scene = oneSphere(c0, c1, 1.0f);
+    const CpuScene cs(scene);
+    const auto hitsAt = [&](float y, float time) {
+        return closest(cs, Ray{vec3(-5.0f, y, 0.0f), vec3(1.0f, 0.0f, 0.0f), time}).prim != kNoIndex;
+    };
+    EXPECT_TRUE(hitsAt(0.0f, 0.0f));
+    EXPECT_FALSE(hitsAt(0.0f, 0.5f));
+    EXPECT_TRUE(hitsAt(5.0f, 0.5f));
+    EXPECT_TRUE(hitsAt(9.5f, 0.95f));
+    EXPECT_FALSE(hitsAt(-5.0f, 0.5f));
+    // Its normal comes from the centre at that time, not the static one.
+    const Ray ray{vec3(-5.0f, 5.0f, 0.0f), vec3(1.0f, 0.0f, 0.0f), 0.5f};
+    const SurfaceInteraction si = cs.interaction(TraceRay(ray, cs.rayNeeds()), closest(cs, ray));
+    EXPECT_NEAR(si.n.x, -1.0f, 1e-4f);
+}
+
+TEST(Intersect, HugeGroundSphereIsHitWhereItIs)
+{
+    // RTIOW's ground: radius 1000, camera a few units above. t must be accurate to a small fraction of
+    // the height (research notes §3.1: the textbook discriminant loses it for small or distant spheres).
+    const Scene scene = oneSphere(vec3(0.0f, -1000.0f, 0.0f), vec3(0.0f, -1000.0f, 0.0f), 1000.0f);
+    const CpuScene cs(scene);
+    const HitRecord hit = closest(cs, Ray{vec3(0.0f, 2.0f, 0.0f), vec3(0.0f, -1.0f, 0.0f), 0.0f});
+    EXPECT_NEAR(hit.t, 2.0f, 2e-4f);
+}
+
+TEST(Intersect, DegenerateTriangleIsNeverHit)
+{
+    // Three collinear vertices (pbrt's Triangle.BadCases): zero area, so no ray may report a hit.
+    SceneBuilder b("degenerate");
+    MeshData m;
+    m.name = "line";
+    m.positions = {{-1113.45f, -0.5f, -56.24f}, {-1113.45f, 0.0f, -56.24f}, {-1113.45f, 0.5f, -56.24f}};
+    m.indices = {0, 1, 2};
+    b.mesh(b.world(), b.addMesh(std::move(m)), b.lambertian(vec3(0.5f)));
+    const Scene scene = b.finish();
+    const CpuScene cs(scene);
+    Rng rng(3);
+    for (int i = 0; i < 10000; ++i)
+    {
+        const vec3 target(-1113.45f, rng.nextFloat() - 0.5f, -56.24f);
+        const vec3 from = target + 10.0f * sampleUniformSphere({rng.nextFloat(), rng.nextFloat()});
+        ASSERT_EQ(closest(cs, Ray{from, target - from, 0.0f}).prim, kNoIndex);
+    }
+}
+
+/// A closed UV sphere as an indexed mesh, vertices perturbed so no two triangles are coplanar.
+MeshData closedMesh(int stacks, int slices, std::uint32_t seed)
+{
+    SceneRandom rnd(seed);
+    MeshData m;
+    m.name = "closed";
+    m.positions.push_back({0.0f, 1.0f, 0.0f});
+    for (int i = 1; i < stacks; ++i)
+        for (int j = 0; j < slices; ++j)
+        {
+            const float theta = kPi * float(i) / float(stacks), phi = 2.0f * kPi * float(j) / float(slices);
+            const float r = 1.0f + 0.05f * rnd.uniform(-1.0f, 1.0f);
+            m.positions.push_back(r * vec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)));
+        }
+    m.positions.push_back({0.0f, -1.0f, 0.0f});
+    const auto ring = [&](int i, int j) { return std::uint32_t(1 + (i - 1) * slices + (j % slices)); };
+    const std::uint32_t bottom = std::uint32_t(m.positions.size() - 1);
+    for (int j = 0; j < slices; ++j)
+    {
+        m.indices.insert(m.indices.end(), {0u, ring(1, j + 1), ring(1, j)});
+        for (int i = 1; i < stacks - 1; ++i)
+            m.indices.insert(m.indices.end(),
+                             {ring(i, j), ring(i, j + 1), ring(i + 1, j + 1), ring(i, j), ring(i + 1, j + 1), ring(i + 1, j)});
+        m.indices.insert(m.indices.end(), {bottom, ring(stacks - 1, j), ring(stacks - 1, j + 1)});
+    }
+    return m;
+}
+
+TEST(Watertight, RaysAtVerticesAndEdgesOfAClosedMeshNeverLeak)
+{
+    // Research notes §3.2: from points inside a closed mesh, rays aimed exactly at vertices and at points
+    // on shared edges must hit something (Möller-Trumbore with an epsilon leaked 10 % of them).
+    SceneBuilder b("closed-mesh");
+    const std::uint32_t meshIndex = b.addMesh(closedMesh(24, 48, 5));
+    b.mesh(b.world(), meshIndex, b.lambertian(vec3(0.5f)));
+    const Scene scene = b.finish();
+    const CpuScene cs(scene);
+    const MeshData& m = scene.meshes[meshIndex];
+    Rng rng(77);
+    int leaks = 0, rays = 0;
+    for (int i = 0; i < 200000; ++i)
+    {
+        const vec3 origin = 0.5f * vec3(rng.nextFloat() - 0.5f, rng.nextFloat() - 0.5f, rng.nextFloat() - 0.5f);
+        const std::size_t tri = std::size_t(rng.nextFloat() * float(m.triangleCount()));
+        const vec3 a = m.positions[m.indices[3 * tri]], c = m.positions[m.indices[3 * tri + 1]];
+        const vec3 target = (i % 2 == 0) ? a : a + rng.nextFloat() * (c - a); // a vertex, or a point on an edge
+        ++rays;
+        if (closest(cs, Ray{origin, target - origin, 0.0f}).prim == kNoIndex)
+            ++leaks;
+    }
+    EXPECT_EQ(leaks, 0) << "of " << rays << " rays";
+}
+} // namespace
+} // namespace rt::test

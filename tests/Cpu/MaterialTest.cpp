@@ -1,0 +1,109 @@
+// Scattering functions of the CPU engine against the physics they implement.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "Materials/Dielectric.h"
+#include "Materials/Lambertian.h"
+#include "Materials/Metal.h"
+#include "Random/Pcg.h"
+
+namespace rt::test
+{
+namespace
+{
+using namespace rt::cpu;
+
+TEST(Dielectric, RefractionObeysSnellsLaw)
+{
+    const vec3 n(0.0f, 1.0f, 0.0f);
+    const float eta = 1.0f / 1.5f; // air into glass
+    const vec3 d = glm::normalize(vec3(0.6f, -1.0f, 0.2f));
+    // u = 1: Schlick's reflectance is below 1, so the refracted branch is taken.
+    const vec3 t = scatterDielectric(d, n, eta, 0.999999f);
+    ASSERT_LT(t.y, 0.0f);
+    const float sinIn = std::sqrt(1.0f - d.y * d.y);
+    const float sinOut = std::sqrt(1.0f - t.y * t.y) / glm::length(t);
+    EXPECT_NEAR(sinOut, eta * sinIn, 1e-5f);
+    EXPECT_NEAR(glm::length(t), 1.0f, 1e-5f);
+    // The refracted ray stays in the plane of incidence.
+    EXPECT_NEAR(glm::dot(glm::cross(d, n), t), 0.0f, 1e-5f);
+}
+
+TEST(Dielectric, TotalInternalReflectionBeyondTheCriticalAngle)
+{
+    const vec3 n(0.0f, 1.0f, 0.0f); // facing the ray, which travels inside glass towards air
+    const vec3 d = glm::normalize(vec3(1.0f, -0.5f, 0.0f)); // 63 degrees from the normal > 41.8
+    const vec3 r = scatterDielectric(d, n, 1.5f, 0.0f);
+    EXPECT_NEAR(r.x, d.x, 1e-6f);
+    EXPECT_NEAR(r.y, -d.y, 1e-6f);
+}
+
+TEST(Dielectric, SchlickAtNormalIncidenceIsR0AndGrazingIsOne)
+{
+    EXPECT_NEAR(schlickReflectance(1.0f, 1.0f / 1.5f), 0.04f, 1e-6f);
+    EXPECT_NEAR(schlickReflectance(0.0f, 1.0f / 1.5f), 1.0f, 1e-6f);
+}
+
+TEST(Metal, FuzzIsASphereAroundTheMirrorDirection)
+{
+    // The thesis' GPU app fuzzed in a fixed world frame: the fuzz must follow the reflected direction.
+    // Near-normal incidence: the whole fuzz sphere stays above the surface, so none is absorbed and the
+    // mean direction is the mirror direction.
+    const vec3 n = glm::normalize(vec3(0.3f, 1.0f, -0.2f));
+    const vec3 d = glm::normalize(vec3(-0.1f, -1.0f, 0.3f));
+    const vec3 mirror = glm::normalize(reflect(d, n));
+    const float fuzz = 0.3f;
+    Rng rng(5);
+    vec3 mean(0.0f);
+    int kept = 0;
+    for (int i = 0; i < 200000; ++i)
+    {
+        vec3 wi;
+        ASSERT_TRUE(scatterMetal(d, n, fuzz, {rng.nextFloat(), rng.nextFloat()}, wi));
+        ASSERT_LE(glm::length(wi - mirror), fuzz * 1.0001f);
+        mean += wi;
+        ++kept;
+    }
+    mean /= float(kept);
+    EXPECT_GT(glm::dot(glm::normalize(mean), mirror), 0.999f);
+    vec3 exact;
+    ASSERT_TRUE(scatterMetal(d, n, 0.0f, {0.3f, 0.7f}, exact));
+    EXPECT_LT(glm::length(exact - mirror), 1e-6f);
+}
+
+TEST(Metal, DirectionsBelowTheSurfaceAreAbsorbed)
+{
+    const vec3 n(0.0f, 1.0f, 0.0f);
+    const vec3 grazing = glm::normalize(vec3(1.0f, -0.02f, 0.0f)); // mirror barely above the surface
+    Rng rng(6);
+    int absorbed = 0;
+    for (int i = 0; i < 10000; ++i)
+    {
+        vec3 wi;
+        if (!scatterMetal(grazing, n, 1.0f, {rng.nextFloat(), rng.nextFloat()}, wi))
+            ++absorbed;
+        else
+            ASSERT_GT(wi.y, 0.0f);
+    }
+    EXPECT_GT(absorbed, 1000);
+}
+
+TEST(Material, LambertianStaysInTheShadingHemisphere)
+{
+    const vec3 n = glm::normalize(vec3(-0.4f, 0.2f, 0.9f));
+    Rng rng(8);
+    double meanCos = 0.0;
+    constexpr int kSamples = 200000;
+    for (int i = 0; i < kSamples; ++i)
+    {
+        const vec3 wi = sampleLambertian(n, {rng.nextFloat(), rng.nextFloat()});
+        ASSERT_GE(glm::dot(wi, n), -1e-6f);
+        meanCos += glm::dot(wi, n);
+        EXPECT_NEAR(lambertianPdf(n, wi), std::fmax(0.0f, glm::dot(wi, n)) / kPi, 1e-6f);
+    }
+    // E[cos] under cos/pi is 2/3.
+    EXPECT_NEAR(meanCos / kSamples, 2.0 / 3.0, 3e-3);
+}
+} // namespace
+} // namespace rt::test
