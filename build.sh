@@ -1,0 +1,103 @@
+#!/usr/bin/env bash
+# Set up, build, and run the main job or the tests, on Debian 12 (bookworm).
+#
+#   ./build.sh          install what is missing, configure and build (Release) into build/
+#   ./build.sh run      ... then the main job: render cornell-box-lights at 600x600 to out/, print the time,
+#                       and the CPU/GPU timing table
+#   ./build.sh test     ... then the test suite (everything but the label "heavy")
+#   ./build.sh heavy    ... then the heavy suites only
+#
+# Environment: BUILD_DIR (default build), BUILD_TYPE (default Release), JOBS (default: number of cores),
+# RT_SKIP_APT=1 to never call apt-get.
+set -euo pipefail
+cd "$(dirname "$0")"
+
+mode=${1:-build}
+BUILD_DIR=${BUILD_DIR:-build}
+BUILD_TYPE=${BUILD_TYPE:-Release}
+JOBS=${JOBS:-$(nproc)}
+
+# Every dependency comes from Debian's packages. mesa-vulkan-drivers (lavapipe, the CPU Vulkan device with
+# ray tracing) must be 25.x, from bookworm-backports: bookworm's own 22.x has no ray tracing.
+packages=(
+    cmake g++ make pkg-config file python3 python3-matplotlib
+    libglm-dev libspdlog-dev libstb-dev libtinyobjloader-dev libtbb-dev libcli11-dev nlohmann-json3-dev
+    libgtest-dev libbenchmark-dev
+    libvulkan-dev vulkan-tools vulkan-validationlayers glslang-tools spirv-tools
+    libglfw3-dev libimgui-dev xvfb xauth x11-utils imagemagick
+    xplanet-images assimp-testmodels
+)
+backports_packages=(mesa-vulkan-drivers)
+
+as_root() {
+    if [ "$(id -u)" -eq 0 ]; then "$@"; elif command -v sudo >/dev/null; then sudo "$@"; else
+        echo "build.sh: need root (or sudo) to run: $*" >&2; exit 1
+    fi
+}
+
+missing_packages() {
+    local p
+    for p in "${packages[@]}"; do
+        dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || echo "$p"
+    done
+}
+
+lavapipe_is_new_enough() {
+    local v
+    v=$(dpkg-query -W -f='${Version}' mesa-vulkan-drivers 2>/dev/null || true)
+    [ -n "$v" ] && dpkg --compare-versions "$v" ge 25
+}
+
+install_dependencies() {
+    [ "${RT_SKIP_APT:-0}" = 1 ] && return
+    local missing
+    missing=$(missing_packages)
+    if [ -z "$missing" ] && lavapipe_is_new_enough; then
+        return
+    fi
+    echo "== installing Debian packages: ${missing//$'\n'/ } ${backports_packages[*]}"
+    if ! grep -rqs "bookworm-backports" /etc/apt/sources.list /etc/apt/sources.list.d/; then
+        echo "deb http://deb.debian.org/debian bookworm-backports main" |
+            as_root tee /etc/apt/sources.list.d/bookworm-backports.list >/dev/null
+    fi
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+    # shellcheck disable=SC2086
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $missing >/dev/null
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
+        -t bookworm-backports "${backports_packages[@]}" >/dev/null
+}
+
+build() {
+    echo "== configuring ($BUILD_TYPE) and building in $BUILD_DIR with $JOBS jobs"
+    cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" >/dev/null
+    cmake --build "$BUILD_DIR" -j "$JOBS"
+}
+
+main_job() {
+    mkdir -p out
+    # 256 spp at 600x600 takes about a minute on a 2-core machine of the CI kind (docs/PERFORMANCE.md).
+    echo "== main job: cornell-box-lights, 600x600, 256 spp, depth 50, multi-core CPU"
+    "$BUILD_DIR/bin/ray-tracing-cpu" --headless --scene cornell-box-lights --width 600 --spp 256 --depth 50 \
+        --engine multi --output out/cornell-box-lights.png --hdr out/cornell-box-lights.pfm \
+        --stats out/cornell-box-lights.json
+    if [ -x "$BUILD_DIR/bin/ray-tracing-gpu" ]; then
+        echo "== CPU vs GPU (Vulkan ray tracing; lavapipe where there is no GPU): cornell-box-lights, 200x200"
+        "$BUILD_DIR/bin/ray-tracing-gpu" --compare --scene cornell-box-lights --width 200 --spp 4,16 --depth 50 \
+            --output out/compare.json || echo "(no Vulkan ray-tracing device: GPU column skipped)"
+    fi
+}
+
+run_tests() {
+    local labels=("$@")
+    ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS" "${labels[@]}"
+}
+
+install_dependencies
+build
+case "$mode" in
+build) ;;
+run) main_job ;;
+test) run_tests -LE heavy ;;
+heavy) run_tests -L heavy ;;
+*) echo "usage: $0 [build|run|test|heavy]" >&2; exit 2 ;;
+esac
