@@ -18,7 +18,7 @@ std::atomic<int> g_liveDevices{0};
 } // namespace
 
 Device::Device(const PhysicalDevice& physical)
-    : m_physical(physical.handle), m_queueFamily(physical.queueFamily), m_properties(queryProperties(physical))
+    : m_queueFamily(physical.queueFamily), m_properties(queryProperties(physical))
 {
     if (g_liveDevices.load() > 0)
         throw DeviceError("a Vulkan device already exists in this process; the engine drives one device at a time");
@@ -51,7 +51,7 @@ Device::Device(const PhysicalDevice& physical)
     info.pQueueCreateInfos = &queueInfo;
     info.enabledExtensionCount = static_cast<std::uint32_t>(std::size(kRequiredExtensions));
     info.ppEnabledExtensionNames = kRequiredExtensions;
-    check(vkCreateDevice(m_physical, &info, nullptr, &m_device), "vkCreateDevice");
+    check(vkCreateDevice(physical.handle, &info, nullptr, &m_device), "vkCreateDevice");
     ++g_liveDevices;
     loadDeviceFunctions(m_device);
     vkGetDeviceQueue(m_device, m_queueFamily, 0, &m_queue);
@@ -60,8 +60,7 @@ Device::Device(const PhysicalDevice& physical)
 Device::~Device() { destroy(); }
 
 Device::Device(Device&& other) noexcept
-    : m_device(std::exchange(other.m_device, VK_NULL_HANDLE)), m_physical(other.m_physical),
-      m_queue(std::exchange(other.m_queue, VK_NULL_HANDLE)), m_queueFamily(other.m_queueFamily),
+    : m_device(std::exchange(other.m_device, VK_NULL_HANDLE)), m_queue(std::exchange(other.m_queue, VK_NULL_HANDLE)), m_queueFamily(other.m_queueFamily),
       m_properties(other.m_properties)
 {
 }
@@ -72,7 +71,6 @@ Device& Device::operator=(Device&& other) noexcept
     {
         destroy();
         m_device = std::exchange(other.m_device, VK_NULL_HANDLE);
-        m_physical = other.m_physical;
         m_queue = std::exchange(other.m_queue, VK_NULL_HANDLE);
         m_queueFamily = other.m_queueFamily;
         m_properties = other.m_properties;

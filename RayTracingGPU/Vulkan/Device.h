@@ -23,7 +23,6 @@ public:
     Device& operator=(Device&& other) noexcept;
 
     VkDevice Handle() const { return m_device; }
-    VkPhysicalDevice physical() const { return m_physical; }
     VkQueue queue() const { return m_queue; }
     std::uint32_t queueFamily() const { return m_queueFamily; }
     const DeviceProperties& properties() const { return m_properties; }
@@ -37,7 +36,6 @@ private:
     void destroy();
 
     VkDevice m_device = VK_NULL_HANDLE;
-    VkPhysicalDevice m_physical = VK_NULL_HANDLE;
     VkQueue m_queue = VK_NULL_HANDLE;
     std::uint32_t m_queueFamily = 0;
     DeviceProperties m_properties;

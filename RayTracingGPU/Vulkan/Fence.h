@@ -18,7 +18,6 @@ public:
     VkFence Handle() const { return m_fence.get(); }
     /// Blocks until the fence is signalled. Throws rt::DeviceError (device lost, ...).
     void wait() const;
-    void reset() const;
 
 private:
     DeviceHandle<VkFence, &vkDestroyFence> m_fence;

@@ -17,7 +17,6 @@
     X(vkGetPhysicalDeviceFeatures2)                                                                            \
     X(vkGetPhysicalDeviceMemoryProperties)                                                                     \
     X(vkGetPhysicalDeviceQueueFamilyProperties)                                                                \
-    X(vkGetPhysicalDeviceFormatProperties)                                                                     \
     X(vkEnumerateDeviceExtensionProperties)                                                                    \
     X(vkCreateDevice)                                                                                          \
     X(vkGetDeviceProcAddr)                                                                                     \
@@ -30,11 +29,9 @@
     X(vkGetDeviceQueue)                                                                                        \
     X(vkDeviceWaitIdle)                                                                                        \
     X(vkQueueSubmit)                                                                                           \
-    X(vkQueueWaitIdle)                                                                                         \
     X(vkAllocateMemory)                                                                                        \
     X(vkFreeMemory)                                                                                            \
     X(vkMapMemory)                                                                                             \
-    X(vkUnmapMemory)                                                                                           \
     X(vkCreateBuffer)                                                                                          \
     X(vkDestroyBuffer)                                                                                         \
     X(vkGetBufferMemoryRequirements)                                                                           \
@@ -51,20 +48,17 @@
     X(vkCreateFence)                                                                                           \
     X(vkDestroyFence)                                                                                          \
     X(vkWaitForFences)                                                                                         \
-    X(vkResetFences)                                                                                           \
     X(vkCreateCommandPool)                                                                                     \
     X(vkDestroyCommandPool)                                                                                    \
     X(vkAllocateCommandBuffers)                                                                                \
     X(vkFreeCommandBuffers)                                                                                    \
     X(vkBeginCommandBuffer)                                                                                    \
     X(vkEndCommandBuffer)                                                                                      \
-    X(vkResetCommandBuffer)                                                                                    \
     X(vkCmdPipelineBarrier)                                                                                    \
     X(vkCmdCopyBuffer)                                                                                         \
     X(vkCmdCopyBufferToImage)                                                                                  \
     X(vkCmdCopyImageToBuffer)                                                                                  \
     X(vkCmdClearColorImage)                                                                                    \
-    X(vkCmdFillBuffer)                                                                                         \
     X(vkCmdBindPipeline)                                                                                       \
     X(vkCmdBindDescriptorSets)                                                                                 \
     X(vkCmdPushConstants)                                                                                      \

@@ -56,8 +56,8 @@ void loadGlobalFunctions()
     static std::once_flag once;
     std::call_once(once, [] { g_getInstanceProcAddr = openLoader(); });
     if (!g_getInstanceProcAddr)
-        throw DeviceError(fmt::format("no Vulkan loader: could not open {} (install the Vulkan runtime, e.g. "
-                                      "libvulkan1, and a driver)",
+        throw DeviceError(fmt::format("no Vulkan loader: {} is missing or has no vkGetInstanceProcAddr (install "
+                                      "the Vulkan runtime, e.g. libvulkan1, and a driver)",
                                       kLoaderNames[0]));
 #define RT_VK_LOAD(name) name = reinterpret_cast<PFN_##name>(g_getInstanceProcAddr(nullptr, #name));
     RT_VK_GLOBAL_FUNCTIONS(RT_VK_LOAD)

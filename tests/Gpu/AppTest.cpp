@@ -84,6 +84,18 @@ TEST(GpuApp, NoVulkanDriverIsOneLineDeviceError)
     EXPECT_NE(r.output.find("error: "), std::string::npos) << r.output;
 }
 
+#ifdef RT_NO_VULKAN_DIR
+TEST(GpuApp, NoVulkanLoaderIsOneLineDeviceError)
+{
+    // dlopen("libvulkan.so.1") finds a library without the loader's symbols first: as good as no Vulkan.
+    const AppRun r = runApp("--headless --scene rtnw-quads --width 8 --spp 1 --quiet",
+                            "LD_LIBRARY_PATH='" RT_NO_VULKAN_DIR "'");
+    EXPECT_EQ(r.status, 5) << r.output;
+    EXPECT_NE(r.output.find("error: no Vulkan loader"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << "one line: " << r.output;
+}
+#endif
+
 TEST(GpuApp, AbsurdSizeNamesTheLimitAndWritesNothing)
 {
     RT_REQUIRE_GPU();
