@@ -1,7 +1,10 @@
 #include "Assets/ObjLoader.h"
 
 #include <cmath>
+#include <fstream>
+#include <optional>
 #include <sstream>
+#include <utility>
 
 #include <spdlog/fmt/fmt.h>
 #include <tiny_obj_loader.h>
@@ -20,6 +23,27 @@ std::string firstLine(const std::string& text)
     std::getline(in, line);
     return line;
 }
+
+/// The first face statement with fewer than three vertices, as (line number, vertex count). tinyobjloader
+/// drops such a face (an empty `f` line) without a word, which would load a malformed file with a hole.
+std::optional<std::pair<std::size_t, int>> shortFace(const std::filesystem::path& file)
+{
+    std::ifstream in(file);
+    std::string line;
+    for (std::size_t number = 1; std::getline(in, line); ++number)
+    {
+        std::istringstream words(line.substr(0, line.find('#')));
+        std::string keyword;
+        if (!(words >> keyword) || keyword != "f")
+            continue;
+        int vertices = 0;
+        for (std::string vertex; words >> vertex;)
+            ++vertices;
+        if (vertices < 3)
+            return std::pair{number, vertices};
+    }
+    return std::nullopt;
+}
 } // namespace
 
 MeshData loadObj(const std::string& path)
@@ -33,6 +57,9 @@ MeshData loadObj(const std::string& path)
     if (!reader.ParseFromFile(file.string(), config))
         throw AssetError(fmt::format("malformed OBJ '{}': {}", file.string(),
                                      firstLine(reader.Error().empty() ? "cannot be parsed" : reader.Error())));
+    if (const auto face = shortFace(file))
+        throw AssetError(fmt::format("malformed OBJ '{}': line {}: a face with {} vertices (at least 3 needed)",
+                                     file.string(), face->first, face->second));
 
     const tinyobj::attrib_t& attrib = reader.GetAttrib();
     const std::size_t vertexCount = attrib.vertices.size() / 3;

@@ -86,7 +86,13 @@ inline float lightPdf(const LightData& light, const vec3& p, const vec3& wi)
         float oneMinusCos, cosThetaMax;
         vec3 axis;
         if (detail::sphereCone(light, p, oneMinusCos, cosThetaMax, axis))
-            return glm::dot(wi, axis) >= cosThetaMax ? uniformConePdf(oneMinusCos) : 0.0f;
+        {
+            // In the cone iff the chord |wi - axis| = sqrt(2 (1 - cos)) is at most the cone's: unlike a float
+            // cosine, which moves in steps of 6e-8 near 1 (coarser than a small cone's 1 - cos), the chord keeps
+            // its precision at every size. The slack is the rounding of a float unit direction (4 ulps of 1).
+            const bool inside = glm::length(wi - axis) <= std::sqrt(2.0f * oneMinusCos) + 4.0f * 0x1p-24f;
+            return inside ? uniformConePdf(oneMinusCos) : 0.0f;
+        }
         const float t = detail::sphereExitDistance(light, p, wi);
         if (!(t > 0.0f))
             return 0.0f;

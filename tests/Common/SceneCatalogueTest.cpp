@@ -1,0 +1,219 @@
+// The scene catalogue (Scenes/Catalogue.h): every id builds a valid scene from the assets beside the test
+// binary, unknown ids are reported with the list of known ones, and the light lists the samplers draw from
+// hold what shared/spec/scenes.md describes.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "Assets/AssetPaths.h"
+#include "Error.h"
+#include "Scenes/Catalogue.h"
+
+namespace rt
+{
+namespace
+{
+using shader::LightShape;
+
+/// Emitting primitives of a scene, counted from its instances (what SceneBuilder::finish must have listed).
+std::size_t countEmitters(const Scene& s)
+{
+    std::size_t count = 0;
+    for (const InstanceDesc& inst : s.instances)
+    {
+        const GroupDesc& g = s.groups.at(inst.group);
+        for (const QuadDesc& q : g.quads)
+            count += s.isEmissive(q.material) ? 1 : 0;
+        for (const SphereDesc& sp : g.spheres)
+            count += s.isEmissive(sp.material) ? 1 : 0;
+        for (const MeshRef& ref : g.meshes)
+        {
+            const MeshData& mesh = s.meshes.at(ref.mesh);
+            for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
+                count += s.isEmissive(mesh.triangleMaterials.empty() ? ref.material : mesh.triangleMaterials[t]) ? 1 : 0;
+        }
+    }
+    return count;
+}
+
+vec3 emission(const Scene& s, const LightData& l)
+{
+    return s.textures.at(s.materials.at(l.material).emissionTexture).color0;
+}
+
+TEST(SceneCatalogue, EveryIdBuildsAndValidates)
+{
+    // Textures and meshes come from the binary's own asset folder (build/bin/Assets); a missing one is an
+    // AssetError naming it, which fails here with its message.
+    ASSERT_FALSE(sceneCatalogue().empty());
+    for (const SceneInfo& info : sceneCatalogue())
+    {
+        SCOPED_TRACE(info.id + " (assets in " + assetRoot().string() + ")");
+        try
+        {
+            const Scene s = makeScene(info.id);
+            EXPECT_EQ(s.id, info.id);
+            EXPECT_NO_THROW(s.validate());
+            EXPECT_GT(s.primitiveCount(), 0u);
+            EXPECT_FALSE(s.bounds().empty());
+            EXPECT_FALSE(info.title.empty());
+            EXPECT_FALSE(info.source.empty());
+        }
+        catch (const Error& e)
+        {
+            ADD_FAILURE() << e.what();
+        }
+    }
+}
+
+TEST(SceneCatalogue, IdsAreUniqueAndFound)
+{
+    std::set<std::string> ids;
+    for (const SceneInfo& info : sceneCatalogue())
+    {
+        EXPECT_TRUE(ids.insert(info.id).second) << "duplicate id " << info.id;
+        EXPECT_EQ(findScene(info.id), &info);
+    }
+    EXPECT_EQ(findScene("no-such-scene"), nullptr);
+}
+
+TEST(SceneCatalogue, UnknownIdIsASceneErrorListingTheKnownIds)
+{
+    try
+    {
+        makeScene("cornell-box-light"); // a plausible typo
+        FAIL() << "no SceneError";
+    }
+    catch (const SceneError& e)
+    {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("'cornell-box-light'"), std::string::npos) << message;
+        for (const SceneInfo& info : sceneCatalogue())
+            EXPECT_NE(message.find(info.id), std::string::npos) << info.id << " missing from: " << message;
+        EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
+    }
+}
+
+TEST(SceneCatalogue, LightListHoldsEveryEmitter)
+{
+    // Emitters first, with their material; then sampling targets (no material). Planar lights carry the unit
+    // normal of u x v and their area; spheres their radius.
+    for (const SceneInfo& info : sceneCatalogue())
+    {
+        SCOPED_TRACE(info.id);
+        const Scene s = makeScene(info.id);
+        std::size_t emitters = 0;
+        bool targetsStarted = false;
+        for (const LightData& l : s.lights)
+        {
+            if (l.material == kNoIndex)
+                targetsStarted = true;
+            else
+            {
+                EXPECT_FALSE(targetsStarted) << "an emitter after a sampling target";
+                EXPECT_TRUE(s.isEmissive(l.material));
+                ++emitters;
+            }
+            if (l.shape == LightShape::Sphere)
+                EXPECT_GT(l.radius, 0.0f);
+            else
+            {
+                const dvec3 n = glm::cross(dvec3(l.p1), dvec3(l.p2));
+                const double area = glm::length(n) * (l.shape == LightShape::Triangle ? 0.5 : 1.0);
+                EXPECT_NEAR(l.area, area, 1e-5 * area);
+                EXPECT_NEAR(glm::distance(dvec3(l.normal), n / glm::length(n)), 0.0, 1e-5);
+            }
+        }
+        EXPECT_EQ(emitters, countEmitters(s));
+    }
+}
+
+TEST(SceneCatalogue, CornellBoxLightsHasNineStripsAndThreeSpheres)
+{
+    // scenes.md: 9 strips (15,15,15) on the back wall facing the camera (-z), then spheres r50 red, blue, green.
+    const Scene s = makeScene("cornell-box-lights");
+    ASSERT_EQ(s.lights.size(), 12u);
+    for (int i = 0; i < 9; ++i)
+    {
+        const LightData& l = s.lights[i];
+        ASSERT_EQ(l.shape, LightShape::Quad) << i;
+        EXPECT_EQ(l.normal, vec3(0, 0, -1)) << i;
+        EXPECT_FLOAT_EQ(l.area, 355.0f * 10.0f) << i;
+        EXPECT_EQ(emission(s, l), vec3(15.0f)) << i;
+    }
+    const vec3 centers[3] = {{530, 530, 277}, {277, 530, 277}, {30, 530, 277}};
+    const vec3 colours[3] = {{20.0f, 0.7f, 0.7f}, {0.7f, 0.7f, 20.0f}, {0.7f, 20.0f, 0.7f}};
+    for (int i = 0; i < 3; ++i)
+    {
+        const LightData& l = s.lights[9 + i];
+        ASSERT_EQ(l.shape, LightShape::Sphere) << i;
+        EXPECT_EQ(l.p0, centers[i]);
+        EXPECT_EQ(l.radius, 50.0f);
+        EXPECT_EQ(emission(s, l), colours[i]);
+    }
+}
+
+TEST(SceneCatalogue, CornellGlassSamplesTheLightThenTheGlass)
+{
+    // RTTROYL §12.5: the ceiling light (facing down) and the glass sphere, a sampling target that emits nothing.
+    const Scene s = makeScene("rtrol-cornell-glass");
+    ASSERT_EQ(s.lights.size(), 2u);
+    EXPECT_EQ(s.lights[0].shape, LightShape::Quad);
+    EXPECT_NE(s.lights[0].material, kNoIndex);
+    EXPECT_EQ(s.lights[0].normal, vec3(0, -1, 0));
+    EXPECT_FLOAT_EQ(s.lights[0].area, 130.0f * 105.0f);
+    EXPECT_EQ(s.lights[1].shape, LightShape::Sphere);
+    EXPECT_EQ(s.lights[1].material, kNoIndex);
+    EXPECT_EQ(s.lights[1].p0, vec3(190, 90, 190));
+    EXPECT_EQ(s.lights[1].radius, 90.0f);
+}
+
+TEST(SceneCatalogue, BookOneScenesHaveNoLights)
+{
+    int checked = 0;
+    for (const SceneInfo& info : sceneCatalogue())
+        if (info.id.rfind("rtow-", 0) == 0)
+        {
+            EXPECT_TRUE(makeScene(info.id).lights.empty()) << info.id;
+            ++checked;
+        }
+    EXPECT_EQ(checked, 3);
+}
+
+TEST(SceneCatalogue, OptionsReachTheScene)
+{
+    // white-spheres scales with --count; the mesh scenes load --mesh, and report a missing one by its path.
+    const Scene few = makeScene("white-spheres", {.count = 10});
+    std::size_t spheres = 0;
+    for (const InstanceDesc& inst : few.instances)
+        spheres += few.groups[inst.group].spheres.size();
+    EXPECT_EQ(spheres, 10u);
+    try
+    {
+        makeScene("mesh-in-one-weekend", {.meshPath = "meshes/no-such-mesh.obj"});
+        FAIL() << "no AssetError";
+    }
+    catch (const AssetError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("meshes/no-such-mesh.obj"), std::string::npos) << e.what();
+    }
+}
+
+TEST(SceneCatalogue, FurnaceIsAClosedEmissiveSphere)
+{
+    // Every surface must emit and reflect alike for Le / (1 - a) to hold (research notes §4.5).
+    const Scene s = makeFurnace(0.25f, 2.0f);
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].shape, LightShape::Sphere);
+    const vec3 eye = s.camera.lookFrom;
+    EXPECT_LT(glm::distance(eye, s.lights[0].p0), s.lights[0].radius) << "the camera must be inside";
+    for (const MaterialData& m : s.materials)
+    {
+        EXPECT_EQ(m.type, MaterialType::Lambertian);
+        EXPECT_EQ(s.textures.at(m.albedoTexture).color0, vec3(0.25f));
+        EXPECT_EQ(s.textures.at(m.emissionTexture).color0, vec3(2.0f));
+    }
+}
+} // namespace
+} // namespace rt

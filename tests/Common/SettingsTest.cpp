@@ -1,0 +1,172 @@
+// Render/RenderSettings.h, Cli/CommonOptions.h and Render/RenderStats.h: what a render is asked to do,
+// checked before anything runs, and what it reports. seed-findings CPU 1: stratified sampling takes
+// floor(sqrt(spp))^2 samples and must say so.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "Cli/CommonOptions.h"
+#include "Error.h"
+#include "Render/RenderSettings.h"
+#include "Render/RenderStats.h"
+#include "Scenes/Catalogue.h"
+
+namespace rt
+{
+namespace
+{
+/// validate() throws UsageError whose message mentions `word`.
+void expectRejected(const RenderSettings& s, const std::string& word)
+{
+    try
+    {
+        s.validate();
+        ADD_FAILURE() << "accepted; expected a complaint about " << word;
+    }
+    catch (const UsageError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find(word), std::string::npos) << e.what();
+    }
+}
+
+TEST(RenderSettings, DefaultsAreValid) { EXPECT_NO_THROW(RenderSettings{}.validate()); }
+
+TEST(RenderSettings, ValidateRejectsImpossibleValues)
+{
+    const auto with = [](auto change) {
+        RenderSettings s;
+        change(s);
+        return s;
+    };
+    expectRejected(with([](RenderSettings& s) { s.spp = 0; }), "samples");
+    expectRejected(with([](RenderSettings& s) { s.spp = -3; }), "samples");
+    expectRejected(with([](RenderSettings& s) { s.depth = 0; }), "depth");
+    expectRejected(with([](RenderSettings& s) { s.width = 0; }), "width");
+    expectRejected(with([](RenderSettings& s) { s.width = -640; }), "width");
+    expectRejected(with([](RenderSettings& s) { s.aspect = 0.0f; }), "aspect");
+    expectRejected(with([](RenderSettings& s) { s.aspect = -1.5f; }), "aspect");
+    expectRejected(with([](RenderSettings& s) { s.aspect = std::numeric_limits<float>::quiet_NaN(); }), "aspect");
+    expectRejected(with([](RenderSettings& s) { s.aspect = std::numeric_limits<float>::infinity(); }), "aspect");
+    // The smallest legal values pass.
+    EXPECT_NO_THROW(with([](RenderSettings& s) { s.spp = 1, s.depth = 1, s.width = 1; }).validate());
+}
+
+TEST(RenderSettings, TrueSppIsTheStratifiedSquare)
+{
+    RenderSettings s;
+    s.sampling = PixelSampling::Stratified;
+    for (const auto& [spp, taken] : {std::pair{10, 9}, {16, 16}, {1, 1}, {99, 81}, {100, 100}, {3, 1}})
+    {
+        s.spp = spp;
+        EXPECT_EQ(s.trueSpp(), taken) << "stratified spp " << spp;
+    }
+    for (PixelSampling sampling : {PixelSampling::Random, PixelSampling::Accumulate})
+    {
+        s.sampling = sampling;
+        s.spp = 10;
+        EXPECT_EQ(s.trueSpp(), 10) << toString(sampling);
+    }
+}
+
+TEST(RenderSettings, HeightRoundsWidthOverAspect)
+{
+    const auto height = [](int width, float aspect) {
+        RenderSettings s;
+        s.width = width;
+        s.aspect = aspect;
+        return s.height();
+    };
+    EXPECT_EQ(height(600, 1.0f), 600);
+    EXPECT_EQ(height(400, 16.0f / 9.0f), 225);
+    EXPECT_EQ(height(1000, 3.0f), 333); // 333.3
+    EXPECT_EQ(height(1000, 0.7f), 1429); // 1428.6: rounded, not truncated
+    EXPECT_EQ(height(1001, 1.5f), 667); // 667.3
+    EXPECT_EQ(height(1, 10.0f), 1); // never 0 rows
+}
+
+TEST(RenderSettings, NamesRoundTrip)
+{
+    for (PixelSampling p : {PixelSampling::Random, PixelSampling::Stratified, PixelSampling::Accumulate})
+        EXPECT_EQ(parsePixelSampling(toString(p)), p);
+    for (EngineKind e : {EngineKind::Single, EngineKind::Multi, EngineKind::Gpu})
+        EXPECT_EQ(parseEngine(toString(e)), e);
+    EXPECT_FALSE(parsePixelSampling("Stratified").has_value()); // exact names only
+    EXPECT_FALSE(parseEngine("cpu").has_value());
+}
+
+TEST(ResolveSettings, FlagsOverrideTheScenesDefaults)
+{
+    const Scene scene = makeScene("rtow-final"); // 16:9, its own defaults
+    CommonOptions options;
+    RenderSettings s = resolveSettings(options, scene);
+    EXPECT_EQ(s.spp, scene.defaults.spp);
+    EXPECT_EQ(s.depth, scene.defaults.depth);
+    EXPECT_EQ(s.width, scene.defaults.width);
+    EXPECT_EQ(s.aspect, scene.defaults.aspect);
+    EXPECT_EQ(s.unidirectionalLight, scene.defaults.unidirectionalLight);
+
+    options.spp = 7;
+    options.depth = 3;
+    options.width = 320;
+    options.aspect = 2.0f;
+    options.sampling = "stratified";
+    options.pdf = "off";
+    options.unidirectionalLight = scene.defaults.unidirectionalLight ? "off" : "on";
+    options.seed = 12;
+    s = resolveSettings(options, scene);
+    EXPECT_EQ(s.spp, 7);
+    EXPECT_EQ(s.depth, 3);
+    EXPECT_EQ(s.width, 320);
+    EXPECT_EQ(s.aspect, 2.0f);
+    EXPECT_EQ(s.height(), 160);
+    EXPECT_EQ(s.sampling, PixelSampling::Stratified);
+    EXPECT_EQ(s.trueSpp(), 4);
+    EXPECT_EQ(s.estimator, Estimator::BsdfOnly);
+    EXPECT_NE(s.unidirectionalLight, scene.defaults.unidirectionalLight);
+    EXPECT_EQ(s.seed, 12u);
+}
+
+TEST(ResolveSettings, BadFlagsAreUsageErrors)
+{
+    const Scene scene = makeScene("rtow-camera-test");
+    const auto rejects = [&](auto change) {
+        CommonOptions o;
+        change(o);
+        EXPECT_THROW(resolveSettings(o, scene), UsageError);
+    };
+    rejects([](CommonOptions& o) { o.spp = 0; });
+    rejects([](CommonOptions& o) { o.width = -1; });
+    rejects([](CommonOptions& o) { o.aspect = 0.0f; });
+    rejects([](CommonOptions& o) { o.sampling = "jittered"; });
+    rejects([](CommonOptions& o) { o.pdf = "maybe"; });
+    rejects([](CommonOptions& o) { o.unidirectionalLight = "yes please"; });
+}
+
+TEST(RenderStats, JsonReportsWhatWasRendered)
+{
+    RenderStats stats;
+    stats.scene = "cornell-box-lights";
+    stats.engine = EngineKind::Multi;
+    stats.settings.spp = 10;
+    stats.settings.sampling = PixelSampling::Stratified;
+    stats.width = 60;
+    stats.height = 40;
+    stats.trueSpp = stats.settings.trueSpp();
+    stats.paths = 60ull * 40 * 9;
+    stats.renderSeconds = 0.5;
+    const nlohmann::json j = stats.toJson();
+    EXPECT_EQ(j.at("scene"), "cornell-box-lights");
+    EXPECT_EQ(j.at("engine"), "multi");
+    EXPECT_EQ(j.at("settings").at("spp"), 10);
+    EXPECT_EQ(j.at("settings").at("sampling"), "stratified");
+    EXPECT_EQ(j.at("true_spp"), 9);
+    EXPECT_EQ(j.at("paths"), 21600);
+    EXPECT_DOUBLE_EQ(j.at("mpaths_per_second").get<double>(), 21600 / 0.5 * 1e-6);
+    EXPECT_FALSE(j.contains("gpu_seconds")) << "not measured, so not reported";
+    stats.gpuSeconds = 0.25;
+    EXPECT_EQ(stats.toJson().at("gpu_seconds"), 0.25);
+}
+} // namespace
+} // namespace rt
