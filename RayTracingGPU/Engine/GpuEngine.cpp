@@ -57,7 +57,8 @@ shader::RenderUniforms makeUniforms(const Scene& scene, const RenderSettings& se
 TargetLimits targetLimits(const vk::Device& device)
 {
     const vk::DeviceProperties& p = device.properties();
-    return {p.name, p.limits.maxImageDimension2D, p.deviceLocalHeapSize, p.maxMemoryAllocationSize};
+    return {p.name, p.limits.maxImageDimension2D, p.deviceLocalHeapSize, p.maxMemoryAllocationSize,
+            p.rayTracing.maxRayDispatchInvocationCount};
 }
 } // namespace
 

@@ -29,6 +29,10 @@ std::optional<std::string> checkTargetLimits(std::uint32_t width, std::uint32_t 
     else if (needed > limits.maxAllocationBytes) // fits the heap, but not in one allocation
         add(fmt::format("{} needs one allocation of {}; maxMemoryAllocationSize of device '{}' is {}", image,
                         gigabytes(needed), limits.deviceName, gigabytes(limits.maxAllocationBytes)));
+    if (std::uint64_t(width) * height > limits.maxRayDispatchInvocations)
+        add(fmt::format("{} needs {} ray-generation invocations per trace; maxRayDispatchInvocationCount of "
+                        "device '{}' is {}",
+                        image, std::uint64_t(width) * height, limits.deviceName, limits.maxRayDispatchInvocations));
     if (problems.empty())
         return std::nullopt;
     return problems;

@@ -15,6 +15,7 @@ struct TargetLimits
     std::uint32_t maxImageDimension2D = 0;
     std::uint64_t deviceLocalBytes = 0; // the largest DEVICE_LOCAL heap
     std::uint64_t maxAllocationBytes = 0; // maxMemoryAllocationSize
+    std::uint64_t maxRayDispatchInvocations = 0; // maxRayDispatchInvocationCount: one launch per pixel
 };
 
 /// Bytes per pixel of the RGBA32F accumulation image, and of its readback buffer.

@@ -6,6 +6,8 @@
 #include <string>
 
 #include <gtest/gtest.h>
+
+#ifndef _WIN32 // popen and the exit status macros: POSIX
 #include <sys/wait.h>
 
 #include "GpuTestEnvironment.h"
@@ -134,3 +136,4 @@ TEST(GpuApp, BadDeviceIndexIsUsageError)
 }
 } // namespace
 } // namespace rt::gpu::test
+#endif

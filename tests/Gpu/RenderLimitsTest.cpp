@@ -6,8 +6,8 @@ namespace rt::gpu
 {
 namespace
 {
-const TargetLimits kLavapipe{"llvmpipe", 16384, 23'500'000'000ull, 2'147'483'648ull};
-const TargetLimits kH100{"NVIDIA H100", 32768, 85'000'000'000ull, 85'000'000'000ull};
+const TargetLimits kLavapipe{"llvmpipe", 16384, 23'500'000'000ull, 2'147'483'648ull, 1ull << 30};
+const TargetLimits kH100{"NVIDIA H100", 32768, 85'000'000'000ull, 85'000'000'000ull, 1ull << 30};
 
 TEST(RenderLimits, OrdinarySizesFit)
 {
@@ -32,6 +32,15 @@ TEST(RenderLimits, SingleAllocationLimit)
     const auto problem = checkTargetLimits(16384, 16384, kLavapipe); // 4.3 GB in one image
     ASSERT_TRUE(problem);
     EXPECT_NE(problem->find("maxMemoryAllocationSize"), std::string::npos) << *problem;
+}
+
+TEST(RenderLimits, RayDispatchInvocationLimit)
+{
+    TargetLimits limits = kH100;
+    limits.maxRayDispatchInvocations = 1u << 20;
+    const auto problem = checkTargetLimits(2048, 1024, limits);
+    ASSERT_TRUE(problem);
+    EXPECT_NE(problem->find("maxRayDispatchInvocationCount"), std::string::npos) << *problem;
 }
 
 TEST(RenderLimits, TooWideForTheDeviceButSmallInMemory)
