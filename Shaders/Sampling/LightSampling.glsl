@@ -70,13 +70,44 @@ float planarHit(LightData light, vec3 p, vec3 wi)
     return (alpha >= 0.0 && beta >= 0.0 && alpha + beta <= 1.0) ? t : -1.0;
 }
 
+/// Solid-angle pdf with which sampleLight(light, p, .) produces the unit direction wi; 0 if it cannot.
+float lightPdf(LightData light, vec3 p, vec3 wi)
+{
+    if (light.shape == LightShape_Sphere)
+    {
+        float oneMinusCos;
+        float cosThetaMax;
+        vec3 axis;
+        if (sphereCone(light, p, oneMinusCos, cosThetaMax, axis))
+        {
+            // In the cone iff the chord |wi - axis| = sqrt(2 (1 - cos)) is at most the cone's: a float cosine
+            // moves in steps of 6e-8 near 1, coarser than a small cone's 1 - cos; the chord keeps its
+            // precision. The slack is the rounding of a float unit direction (4 ulps of 1).
+            bool inside = length(wi - axis) <= sqrt(2.0 * oneMinusCos) + 4.0 / 16777216.0;
+            return inside ? uniformConePdf(oneMinusCos) : 0.0;
+        }
+        float t = sphereExitDistance(light, p, wi);
+        if (!(t > 0.0))
+            return 0.0;
+        vec3 n = (p + t * wi - light.p0) / light.radius;
+        float area = 4.0 * kPi * light.radius * light.radius;
+        return areaToSolidAngle(t * t, abs(dot(n, wi)), area);
+    }
+    float t = planarHit(light, p, wi);
+    if (t < 0.0)
+        return 0.0;
+    return areaToSolidAngle(t * t, abs(dot(light.normal, wi)), light.area);
+}
+
 /// Samples a direction from p towards `light`: uniform cone for a sphere seen from outside, uniform area
-/// otherwise. False when no direction can be produced.
+/// otherwise. The pdf is lightPdf(light, p, wi) itself, so a sample and the pdf of its direction never
+/// disagree: a direction that rounding puts outside the light is dropped. False when no direction results.
 bool sampleLight(LightData light, vec3 p, vec2 u, out LightSample ls)
 {
     ls.wi = vec3(0.0);
     ls.pdf = 0.0;
     ls.distance = 0.0;
+    vec3 y;
     if (light.shape == LightShape_Sphere)
     {
         float oneMinusCos;
@@ -85,25 +116,13 @@ bool sampleLight(LightData light, vec3 p, vec2 u, out LightSample ls)
         if (sphereCone(light, p, oneMinusCos, cosThetaMax, axis))
         {
             ls.wi = onbToWorld(onbFromNormal(axis), sampleUniformCone(u, oneMinusCos));
-            ls.pdf = uniformConePdf(oneMinusCos);
-            ls.distance = length(light.p0 - p) - light.radius;
-            return true;
+            ls.distance = length(light.p0 - p) - light.radius; // a lower bound; the mixture needs no more
+            ls.pdf = lightPdf(light, p, ls.wi);
+            return ls.pdf > 0.0;
         }
-        vec3 n = sampleUniformSphere(u);
-        vec3 y = light.p0 + light.radius * n;
-        vec3 w = y - p;
-        float dist2 = lengthSquared(w);
-        if (!(dist2 > 0.0))
-            return false;
-        ls.distance = sqrt(dist2);
-        ls.wi = w / ls.distance;
-        float area = 4.0 * kPi * light.radius * light.radius;
-        ls.pdf = areaToSolidAngle(dist2, abs(dot(n, ls.wi)), area);
-        return ls.pdf > 0.0;
+        y = light.p0 + light.radius * sampleUniformSphere(u);
     }
-
-    vec3 y;
-    if (light.shape == LightShape_Quad)
+    else if (light.shape == LightShape_Quad)
         y = light.p0 + u.x * light.p1 + u.y * light.p2;
     else
     {
@@ -116,31 +135,8 @@ bool sampleLight(LightData light, vec3 p, vec2 u, out LightSample ls)
         return false;
     ls.distance = sqrt(dist2);
     ls.wi = w / ls.distance;
-    ls.pdf = areaToSolidAngle(dist2, abs(dot(light.normal, ls.wi)), light.area);
+    ls.pdf = lightPdf(light, p, ls.wi);
     return ls.pdf > 0.0;
-}
-
-/// Solid-angle pdf with which sampleLight(light, p, .) produces the unit direction wi; 0 if it cannot.
-float lightPdf(LightData light, vec3 p, vec3 wi)
-{
-    if (light.shape == LightShape_Sphere)
-    {
-        float oneMinusCos;
-        float cosThetaMax;
-        vec3 axis;
-        if (sphereCone(light, p, oneMinusCos, cosThetaMax, axis))
-            return dot(wi, axis) >= cosThetaMax ? uniformConePdf(oneMinusCos) : 0.0;
-        float t = sphereExitDistance(light, p, wi);
-        if (!(t > 0.0))
-            return 0.0;
-        vec3 n = (p + t * wi - light.p0) / light.radius;
-        float area = 4.0 * kPi * light.radius * light.radius;
-        return areaToSolidAngle(t * t, abs(dot(n, wi)), area);
-    }
-    float t = planarHit(light, p, wi);
-    if (t < 0.0)
-        return 0.0;
-    return areaToSolidAngle(t * t, abs(dot(light.normal, wi)), light.area);
 }
 
 #endif
