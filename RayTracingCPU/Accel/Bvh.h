@@ -29,8 +29,9 @@ struct Bvh
     std::vector<std::uint32_t> order;
     int maxDepth = 0;
 
-    /// Builds over primitive bounds (world space). An empty input gives an empty tree.
-    static Bvh build(std::span<const Aabb> primitiveBounds, int maxLeafSize = 4);
+    /// Builds over primitive bounds (world space). Leaves hold up to maxLeafSize primitives, more than four
+    /// only where the SAH finds a leaf cheaper than a split (small scenes). An empty input gives an empty tree.
+    static Bvh build(std::span<const Aabb> primitiveBounds, int maxLeafSize = 16);
 };
 
 /// Slab test against the node bounds within (0, tMax). The far distance is enlarged by 1 + 2 gamma(3) so the

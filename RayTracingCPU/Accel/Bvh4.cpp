@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "Error.h"
+
 namespace rt::cpu
 {
 namespace
@@ -52,14 +54,12 @@ struct Collapser
             node.validMask |= 1u << i;
             if (c.count > 0)
             {
-                node.child[i] = c.offset;
-                node.count[i] = c.count;
+                if (c.offset > 0x00FFFFFFu || c.count > 0x7Fu)
+                    throw SceneError("scene too large for the 4-wide BVH (over 16 million leaf packets)");
+                node.child[i] = leafRef(c.offset, c.count);
             }
             else
-            {
                 node.child[i] = emit(children[i]);
-                node.count[i] = 0;
-            }
         }
         out[index] = node;
         return index;

@@ -21,10 +21,16 @@ struct alignas(64) Bvh4Node
 {
     float minX[4], minY[4], minZ[4];
     float maxX[4], maxY[4], maxZ[4];
-    std::uint32_t child[4]; // interior child: node index; leaf child: first primitive slot
-    std::uint16_t count[4]; // leaf child: primitive count; interior child: 0
+    std::uint32_t child[4]; // an interior node index, or a leaf reference (see leafRef)
     std::uint32_t validMask; // bit i set if child i exists
 };
+
+/// A leaf packed in a child reference: the top bit marks it, then 7 bits of count and 24 of first slot.
+constexpr std::uint32_t kLeafBit = 0x80000000u;
+constexpr std::uint32_t leafRef(std::uint32_t first, std::uint32_t count) { return kLeafBit | (count << 24) | first; }
+constexpr bool isLeaf(std::uint32_t ref) { return (ref & kLeafBit) != 0; }
+constexpr std::uint32_t leafFirst(std::uint32_t ref) { return ref & 0x00FFFFFFu; }
+constexpr std::uint32_t leafCount(std::uint32_t ref) { return (ref >> 24) & 0x7Fu; }
 
 struct Bvh4
 {
@@ -51,8 +57,7 @@ inline void traverse(const Bvh4& bvh, const TraceRay& r, const float& tMax, Leaf
         return;
     struct Entry
     {
-        std::uint32_t child;
-        std::uint32_t count; // 0: interior node
+        std::uint32_t ref; // interior node index or leafRef
         float tNear; // where the ray enters the child's box: skipped on pop if a hit is already nearer
     };
     Entry stack[512]; // 4-wide depth < 96 (see the binary builder) and at most 4 pushes per level
@@ -99,34 +104,39 @@ inline void traverse(const Bvh4& bvh, const TraceRay& r, const float& tMax, Leaf
                 mask |= 1 << i;
         }
 #endif
-        if (mask != 0 && (mask & (mask - 1)) == 0)
+        if (mask != 0)
         {
-            // One child hit (the common case deep in the tree): no sorting, no stack traffic.
-            const int i = std::countr_zero(static_cast<unsigned>(mask));
-            if (node.count[i] == 0)
+            const int first = std::countr_zero(static_cast<unsigned>(mask));
+            mask &= mask - 1;
+            if (mask == 0)
             {
-                index = node.child[i];
-                continue;
+                // One child hit (the common case deep in the tree): no sorting, no stack traffic.
+                const std::uint32_t ref = node.child[first];
+                if (!isLeaf(ref))
+                {
+                    index = ref;
+                    continue;
+                }
+                leaf(leafFirst(ref), leafCount(ref));
             }
-            leaf(node.child[i], node.count[i]);
-        }
-        else if (mask != 0)
-        {
-            // Push the hit children farthest first (insertion sort of <= 4), so the nearest pops next.
-            Entry hits[4];
-            int n = 0;
-            do
+            else
             {
-                const int i = std::countr_zero(static_cast<unsigned>(mask));
-                mask &= mask - 1;
-                const Entry e{node.child[i], node.count[i], tNear[i]};
-                int k = n++;
-                for (; k > 0 && hits[k - 1].tNear < e.tNear; --k)
-                    hits[k] = hits[k - 1];
-                hits[k] = e;
-            } while (mask);
-            for (int k = 0; k < n; ++k)
-                stack[top++] = hits[k];
+                // Push the hit children farthest first (insertion sort of <= 4) so the nearest pops next.
+                Entry hits[4] = {{node.child[first], tNear[first]}};
+                int n = 1;
+                do
+                {
+                    const int i = std::countr_zero(static_cast<unsigned>(mask));
+                    mask &= mask - 1;
+                    const Entry e{node.child[i], tNear[i]};
+                    int k = n++;
+                    for (; k > 0 && hits[k - 1].tNear < e.tNear; --k)
+                        hits[k] = hits[k - 1];
+                    hits[k] = e;
+                } while (mask);
+                for (int k = 0; k < n; ++k)
+                    stack[top++] = hits[k];
+            }
         }
         // Pop: leaves are tested as they come off the stack, children behind the nearest hit are dropped.
         for (;;)
@@ -136,12 +146,12 @@ inline void traverse(const Bvh4& bvh, const TraceRay& r, const float& tMax, Leaf
             const Entry e = stack[--top];
             if (e.tNear > tMax)
                 continue;
-            if (e.count == 0)
+            if (!isLeaf(e.ref))
             {
-                index = e.child;
+                index = e.ref;
                 break;
             }
-            leaf(e.child, e.count);
+            leaf(leafFirst(e.ref), leafCount(e.ref));
         }
     }
 }

@@ -9,7 +9,10 @@ namespace rt::cpu
 namespace
 {
 constexpr int kBins = 16;
+constexpr float kNodeCost = 0.5f; // one 4-wide node test, relative to one 4-wide packet test
 constexpr int kMaxSahDepth = 64; // below it, median splits: depth stays < 64 + 32 (traversal stack: 128)
+
+float packets(std::uint32_t n) { return float((n + 3) / 4); }
 
 struct Builder
 {
@@ -37,9 +40,7 @@ struct Builder
 
         int axis = -1;
         std::uint32_t mid = begin;
-        // Up to maxLeafSize primitives always make a leaf: the leaves are tested four at a time (Packets.h),
-        // so splitting them further only adds box tests.
-        if (count > std::uint32_t(maxLeafSize))
+        if (count > 4)
             findSplit(begin, end, box, centroidBox, depth, axis, mid);
         if (axis < 0)
         {
@@ -102,7 +103,7 @@ struct Builder
                 n += binCount[b];
                 if (n == 0 || rightCount[b] == 0)
                     continue;
-                const float cost = acc.surfaceArea() * float(n) + rightArea[b] * float(rightCount[b]);
+                const float cost = acc.surfaceArea() * packets(n) + rightArea[b] * packets(rightCount[b]);
                 if (cost < bestCost)
                 {
                     bestCost = cost;
@@ -119,6 +120,11 @@ struct Builder
                 splitMiddle(begin, end, box, axis, mid);
             return;
         }
+        // Leaves are tested four primitives at a time (Packets.h): a leaf of n costs ceil(n/4) packet tests,
+        // a split one node visit plus its children's packets weighted by the chance of entering them. Small
+        // leaves are kept when that is cheaper, which for a Cornell box means no tree at all.
+        if (count <= std::uint32_t(maxLeafSize) && packets(count) <= kNodeCost + bestCost / box.surfaceArea())
+            return;
         const float scale = kBins / extent[bestAxis];
         const float lo = centroidBox.min[bestAxis];
         auto* first = indices.data() + begin;
