@@ -10,6 +10,10 @@
 
 namespace rt::cpu
 {
+/// gamma(8) = 8u / (1 - 8u), u = 2^-24: the relative rounding error bound of the sphere's c = f.f - r^2 (Pharr,
+/// Jakob & Humphreys, PBR 4th ed. §6.8). Shared with Shaders/Geometry/Sphere.glsl.
+inline constexpr float kSphereRootError = 4.7684e-7f;
+
 /// Sphere at the ray's time. Hearn & Baker's discriminant (the closest approach l is formed before squaring)
 /// with Press et al.'s stable roots: Haines, Günther & Akenine-Möller, "Precision Improvements for Ray/Sphere
 /// Intersection", Ray Tracing Gems ch. 7, 2019. The far root is taken when the near one is out of range, so
@@ -31,11 +35,15 @@ inline bool intersectSphere(const SphereRec& s, const TraceRay& r, float tMin, H
     float t1 = q * r.invDirectionLength2;
     if (t0 > t1)
         std::swap(t0, t1);
+    // A root nearer 0 than its rounding error cannot be told from the surface the ray leaves: f and the
+    // re-projected hit point carry errors of ulp(|center| + radius), which the ray offset does not cover
+    // near the origin of a huge sphere (the books' radius-1000 ground). c's error is gamma(8) (f.f + r^2).
+    const float lo = maxf(tMin, kSphereRootError * (glm::dot(f, f) + r2) / std::fabs(q));
     float t = t0;
-    if (!(t > tMin && t < hit.t))
+    if (!(t > lo && t < hit.t))
     {
         t = t1;
-        if (!(t > tMin && t < hit.t))
+        if (!(t > lo && t < hit.t))
             return false;
     }
     hit.t = t;

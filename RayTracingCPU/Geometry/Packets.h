@@ -87,7 +87,8 @@ inline bool intersectPacket(const SpherePacket& p, const TraceRay& r, float tMin
     const F4 t0 = c / q;
     const F4 t1 = q * F4(r.invDirectionLength2);
     const F4 tNear = min(t0, t1), tFar = max(t0, t1);
-    const F4 lo(tMin), hi(hit.t);
+    const F4 rootError = F4(kSphereRootError) * (fx * fx + fy * fy + fz * fz + r2) / abs(q); // see intersectSphere
+    const F4 lo = max(F4(tMin), rootError), hi(hit.t);
     const F4 t = select(tNear > lo, tNear, tFar);
     const F4 mask = valid & (t > lo) & (t < hi);
     return detail::takeNearest(mask, t, F4(0.0f), F4(0.0f), p.prim, hit);

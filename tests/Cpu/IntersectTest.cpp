@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "Engine/CpuEngine.h"
 #include "Random/Pcg.h"
 #include "Sampling/Warps.h"
 #include "Scene/CpuScene.h"
@@ -142,5 +143,44 @@ TEST(Watertight, RaysAtVerticesAndEdgesOfAClosedMeshNeverLeak)
     }
     EXPECT_EQ(leaks, 0) << "of " << rays << " rays";
 }
+} // namespace
+} // namespace rt::test
+
+namespace rt::test
+{
+namespace
+{
+/// A Lambertian ground sphere under a uniform sky of radiance 1: every path that leaves the ground escapes
+/// (a sphere is convex), so the ground shows exactly its albedo. Rays that re-hit the ground they leave
+/// (acne) darken it: with only the ray offset, radius 1000 gave 0.365 instead of 0.5.
+class GroundSphere : public ::testing::TestWithParam<float>
+{
+};
+
+TEST_P(GroundSphere, ShowsItsAlbedoUnderAUniformSky)
+{
+    const float radius = GetParam();
+    SceneBuilder b("ground");
+    b.sphere(b.world(), {0.0f, -radius, 0.0f}, radius, b.lambertian(vec3(0.5f)));
+    Scene& s = b.scene();
+    s.camera.lookFrom = {0.0f, 0.1f * radius, 0.05f * radius}; // looking 53-73 degrees down: only ground in view
+    s.camera.lookAt = {0.0f, 0.0f, 0.0f};
+    s.camera.vfovDegrees = 20.0f;
+    s.background = {BackgroundType::Constant, vec3(1.0f), vec3(1.0f)};
+    const Scene scene = b.finish();
+    cpu::CpuEngine engine(EngineKind::Multi);
+    engine.setScene(scene);
+    RenderSettings settings;
+    settings.width = 32;
+    settings.spp = 16;
+    settings.depth = 20;
+    settings.estimator = Estimator::BsdfOnly; // zero variance: every escaping path carries exactly the albedo
+    RenderControl control;
+    const Image image = engine.render(settings, control).image;
+    for (const vec3& p : image.pixels())
+        ASSERT_NEAR(p.x, 0.5f, 1e-4f);
+}
+
+INSTANTIATE_TEST_SUITE_P(Radii, GroundSphere, ::testing::Values(1.0f, 100.0f, 1000.0f, 10000.0f));
 } // namespace
 } // namespace rt::test
