@@ -9,13 +9,34 @@
 
 namespace rt
 {
+/// sin and cos of 2 pi u for u in [0, 1]: quadrant reduction, then Taylor polynomials on [-pi/4, pi/4]
+/// (degree 7 and 8: absolute error below 4e-7). Sampling needs no more, and libm's sincosf was a tenth of a
+/// diffuse bounce. The GLSL twins call the hardware sin/cos.
+inline void sinCos2Pi(float u, float& s, float& c)
+{
+    const float u4 = 4.0f * u;
+    const float quadrant = std::nearbyint(u4);
+    const float t = (u4 - quadrant) * (kPi / 2.0f); // in [-pi/4, pi/4]
+    const float t2 = t * t;
+    const float st = t * (1.0f + t2 * (-1.0f / 6.0f + t2 * (1.0f / 120.0f + t2 * (-1.0f / 5040.0f))));
+    const float ct = 1.0f + t2 * (-0.5f + t2 * (1.0f / 24.0f + t2 * (-1.0f / 720.0f + t2 * (1.0f / 40320.0f))));
+    switch (static_cast<int>(quadrant) & 3)
+    {
+    case 0: s = st, c = ct; break;
+    case 1: s = ct, c = -st; break;
+    case 2: s = -st, c = -ct; break;
+    default: s = -ct, c = st; break;
+    }
+}
+
 /// Cosine-weighted direction about +z (Malley's method: uniform disk point lifted to the hemisphere).
 /// pdf = cos(theta) / pi per steradian; 0 below the horizon.
 inline vec3 sampleCosineHemisphere(const vec2& u)
 {
-    const float phi = 2.0f * kPi * u.x;
+    float sinPhi, cosPhi;
+    sinCos2Pi(u.x, sinPhi, cosPhi);
     const float r = std::sqrt(u.y);
-    return {r * std::cos(phi), r * std::sin(phi), std::sqrt(1.0f - u.y)};
+    return {r * cosPhi, r * sinPhi, std::sqrt(1.0f - u.y)};
 }
 inline float cosineHemispherePdf(float cosTheta) { return cosTheta > 0.0f ? cosTheta * kInvPi : 0.0f; }
 
@@ -24,8 +45,9 @@ inline vec3 sampleUniformSphere(const vec2& u)
 {
     const float z = 1.0f - 2.0f * u.x;
     const float r = safeSqrt(1.0f - z * z);
-    const float phi = 2.0f * kPi * u.y;
-    return {r * std::cos(phi), r * std::sin(phi), z};
+    float sinPhi, cosPhi;
+    sinCos2Pi(u.y, sinPhi, cosPhi);
+    return {r * cosPhi, r * sinPhi, z};
 }
 inline constexpr float uniformSpherePdf() { return kInv4Pi; }
 
@@ -38,8 +60,9 @@ inline vec3 sampleUniformCone(const vec2& u, float oneMinusCosThetaMax)
     const float m = u.x * oneMinusCosThetaMax;
     const float cosTheta = 1.0f - m;
     const float sinTheta = safeSqrt(m * (2.0f - m));
-    const float phi = 2.0f * kPi * u.y;
-    return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
+    float sinPhi, cosPhi;
+    sinCos2Pi(u.y, sinPhi, cosPhi);
+    return {sinTheta * cosPhi, sinTheta * sinPhi, cosTheta};
 }
 inline float uniformConePdf(float oneMinusCosThetaMax) { return 1.0f / (2.0f * kPi * oneMinusCosThetaMax); }
 

@@ -3,6 +3,7 @@
 #include <numeric>
 
 #include "Accel/Bvh.h"
+#include "Geometry/Lanes.h"
 
 namespace rt::cpu
 {
@@ -12,7 +13,7 @@ constexpr int kBins = 16;
 constexpr float kNodeCost = 2.0f; // a 4-wide node visit (box tests, sorting, stack) measured at ~2 packet tests
 constexpr int kMaxSahDepth = 64; // below it, median splits: depth stays < 64 + 32 (traversal stack: 128)
 
-float packets(std::uint32_t n) { return float((n + 3) / 4); }
+float packets(std::uint32_t n) { return float((n + kLanes - 1) / kLanes); }
 
 struct Builder
 {
@@ -120,7 +121,7 @@ struct Builder
                 splitMiddle(begin, end, box, axis, mid);
             return;
         }
-        // Leaves are tested four primitives at a time (Packets.h): a leaf of n costs ceil(n/4) packet tests,
+        // Leaves are tested kLanes primitives at a time (Packets.h): a leaf of n costs ceil(n/kLanes) tests,
         // a split one node visit plus its children's packets weighted by the chance of entering them. Small
         // leaves are kept when that is cheaper, which for a Cornell box means no tree at all.
         if (count <= std::uint32_t(maxLeafSize) && packets(count) <= kNodeCost + bestCost / box.surfaceArea())

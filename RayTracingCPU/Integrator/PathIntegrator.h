@@ -30,12 +30,14 @@ struct PathOptions
     bool unidirectionalLight = true;
 };
 
-/// Solid-angle pdf of the book-3 mixture for direction wi leaving p, given the BSDF strategy's pdf.
-inline float mixturePdf(const Scene& scene, const vec3& p, const vec3& wi, float bsdfPdf)
+/// Solid-angle pdf of the book-3 mixture for direction wi leaving p, given the BSDF strategy's pdf. When wi
+/// was sampled from light `known`, its pdf `knownPdf` (= lightPdf of that light) is reused, not recomputed.
+inline float mixturePdf(const Scene& scene, const vec3& p, const vec3& wi, float bsdfPdf,
+                        std::size_t known = std::size_t(-1), float knownPdf = 0.0f)
 {
     float lights = 0.0f;
-    for (const LightData& light : scene.lights)
-        lights += lightPdf(light, p, wi);
+    for (std::size_t i = 0; i < scene.lights.size(); ++i)
+        lights += i == known ? knownPdf : lightPdf(scene.lights[i], p, wi);
     return 0.5f * bsdfPdf + 0.5f * lights / static_cast<float>(scene.lights.size());
 }
 
@@ -96,19 +98,22 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
             }
             const float choice = rng.nextFloat();
             const vec2 u(rng.nextFloat(), rng.nextFloat());
+            std::size_t sampled = std::size_t(-1);
+            float sampledPdf = 0.0f;
             if (choice < 0.5f)
                 wi = phase ? sampleIsotropic(u) : sampleLambertian(ns, u);
             else
             {
                 const auto n = static_cast<float>(scene.lights.size());
-                const float pick = minf((2.0f * choice - 1.0f) * n, n - 1.0f); // reuse the choice's bits
+                sampled = static_cast<std::size_t>(minf((2.0f * choice - 1.0f) * n, n - 1.0f)); // the choice's bits
                 LightSample ls;
-                if (!sampleLight(scene.lights[static_cast<std::size_t>(pick)], si.p, u, ls))
+                if (!sampleLight(scene.lights[sampled], si.p, u, ls))
                     return radiance;
                 wi = ls.wi;
+                sampledPdf = ls.pdf;
             }
             const float scatteringPdf = phase ? isotropicPdf() : lambertianPdf(ns, wi);
-            const float pdf = mixturePdf(scene, si.p, wi, scatteringPdf);
+            const float pdf = mixturePdf(scene, si.p, wi, scatteringPdf, sampled, sampledPdf);
             if (!(scatteringPdf > 0.0f) || !(pdf > 0.0f))
                 return radiance;
             throughput *= albedo * (scatteringPdf / pdf);

@@ -128,7 +128,7 @@ CpuScene::CpuScene(const Scene& scene) : m_scene(&scene)
 
 void CpuScene::buildLeafPackets(const std::vector<PrimRef>& refs)
 {
-    // Each binary leaf's primitives, grouped by type into packets of four; the leaf is then re-pointed from
+    // Each binary leaf's primitives, grouped by type into packets of kLanes; the leaf is then re-pointed from
     // its primitive slots to its run of packets.
     for (BvhNode& node : m_bvh.nodes)
     {
@@ -143,10 +143,10 @@ void CpuScene::buildLeafPackets(const std::vector<PrimRef>& refs)
         }
         const auto emit = [&](PrimType type, auto& packets, const auto& records) {
             const std::vector<std::uint32_t>& prims = byType[static_cast<int>(type)];
-            for (std::size_t i = 0; i < prims.size(); i += 4)
+            for (std::size_t i = 0; i < prims.size(); i += kLanes)
             {
                 auto& packet = packets.emplace_back();
-                const int used = static_cast<int>(std::min<std::size_t>(4, prims.size() - i));
+                const int used = static_cast<int>(std::min<std::size_t>(kLanes, prims.size() - i));
                 for (int lane = 0; lane < used; ++lane)
                     setLane(packet, lane, records[PrimRef{prims[i + lane]}.index()], prims[i + lane]);
                 padPacket(packet, used);
