@@ -27,7 +27,7 @@ cmake --build build --config Release --parallel || exit /b 1
 
 if "%MODE%"=="run" (
     if not exist out mkdir out
-    build\bin\Release\ray-tracing-cpu.exe --headless --scene cornell-box-lights --width 600 --spp 256 ^
+    build\bin\Release\ray-tracing-cpu.exe --headless --scene cornell-box-lights --width 600 --spp 512 ^
         --output out\cornell-box-lights.png --hdr out\cornell-box-lights.pfm --stats out\cornell-box-lights.json || exit /b 1
 )
 if "%MODE%"=="test" (

@@ -1,0 +1,189 @@
+#include "App/Compare.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
+
+#include "Error.h"
+#include "IO/AtomicFile.h"
+#include "Image/Metrics.h"
+
+namespace rt::app
+{
+namespace
+{
+std::vector<std::string> split(const std::string& text)
+{
+    std::vector<std::string> parts;
+    std::stringstream in(text);
+    for (std::string part; std::getline(in, part, ',');)
+        parts.push_back(part);
+    return parts;
+}
+
+struct Run
+{
+    double renderMs = 0.0; // host clock around the tracing
+    double gpuMs = -1.0; // GPU timestamps, when the engine has them
+    double mpaths = 0.0;
+    ErrorMetrics error;
+    Image image;
+};
+
+Run render(RenderEngine& engine, const RenderSettings& settings)
+{
+    RenderControl control;
+    RenderResult r = engine.render(settings, control);
+    if (r.stats.nanSamples + r.stats.infSamples > 0)
+        spdlog::warn("{} engine: {} NaN and {} Inf samples", toString(engine.kind()), r.stats.nanSamples,
+                     r.stats.infSamples);
+    return {r.stats.renderSeconds * 1e3, r.stats.gpuSeconds >= 0 ? r.stats.gpuSeconds * 1e3 : -1.0,
+            r.stats.mpathsPerSecond(), {}, std::move(r.image)};
+}
+} // namespace
+
+std::vector<int> parseSppList(const std::string& text)
+{
+    std::vector<int> spps;
+    for (const std::string& part : split(text))
+    {
+        std::size_t used = 0;
+        int value = 0;
+        try
+        {
+            value = std::stoi(part, &used);
+        }
+        catch (const std::exception&)
+        {
+            used = 0;
+        }
+        if (used != part.size() || value < 1)
+            throw UsageError(fmt::format("--spp-list must be positive integers separated by commas (got '{}')", text));
+        spps.push_back(value);
+    }
+    if (spps.empty())
+        throw UsageError("--spp-list is empty");
+    return spps;
+}
+
+std::vector<EngineKind> parseEngineList(const std::string& text)
+{
+    std::vector<EngineKind> engines;
+    for (const std::string& part : split(text))
+    {
+        const auto e = parseEngine(part);
+        if (!e)
+            throw UsageError(fmt::format("--engines takes single, multi and gpu (got '{}')", part));
+        engines.push_back(*e);
+    }
+    if (engines.empty())
+        throw UsageError("--engines is empty");
+    return engines;
+}
+
+int runComparison(const Scene& scene, const RenderSettings& base, const CompareOptions& options,
+                  const std::function<std::unique_ptr<RenderEngine>(EngineKind)>& makeEngine)
+{
+    // One engine of each kind, its acceleration structures built once.
+    std::vector<std::pair<EngineKind, std::unique_ptr<RenderEngine>>> engines;
+    for (const EngineKind kind : options.engines)
+    {
+        try
+        {
+            auto engine = makeEngine(kind);
+            const double build = engine->setScene(scene);
+            spdlog::info("{} engine on {}: acceleration structures in {:.3f} s", toString(kind), engine->deviceName(),
+                         build);
+            engines.emplace_back(kind, std::move(engine));
+        }
+        catch (const DeviceError& e)
+        {
+            spdlog::warn("{} engine left out: {}", toString(kind), e.what());
+        }
+    }
+    if (engines.empty())
+        throw DeviceError("no engine could start");
+
+    // The reference: the last engine (the GPU when there is one) at referenceSpp with an independent seed.
+    RenderEngine& refEngine = *engines.back().second;
+    RenderSettings refSettings = base;
+    refSettings.spp = options.referenceSpp;
+    refSettings.seed = base.seed + 1000;
+    spdlog::info("reference: {} spp on the {} engine", refSettings.spp, toString(refEngine.kind()));
+    const Image reference = render(refEngine, refSettings).image;
+
+    nlohmann::json json;
+    json["scene"] = scene.id;
+    json["width"] = base.width;
+    json["height"] = base.height();
+    json["depth"] = base.depth;
+    json["estimator"] = toString(base.estimator);
+    json["sampling"] = toString(base.sampling);
+    json["reference_spp"] = refSettings.spp;
+    json["relmse_epsilon"] = kRelMseEpsilon;
+    for (const auto& [kind, engine] : engines)
+        json["devices"][toString(kind)] = engine->deviceName();
+
+    std::string header = fmt::format("{:>6}", "spp");
+    for (const auto& [kind, engine] : engines)
+        header += fmt::format(" | {:>9} {:>9}", fmt::format("{} ms", toString(kind)), "relMSE");
+    const bool ratio = engines.size() > 1 && engines.back().first == EngineKind::Gpu;
+    if (ratio)
+        header += fmt::format(" | {:>10} | {:>11}", "CPU/GPU", "relMSE C-G");
+    std::printf("\n%s: %dx%d, depth %d, %s estimator, %s sampling; relMSE against %d spp (epsilon %g)\n",
+                scene.id.c_str(), base.width, base.height(), base.depth, toString(base.estimator),
+                toString(base.sampling), refSettings.spp, kRelMseEpsilon);
+    std::printf("%s\n%s\n", header.c_str(), std::string(header.size(), '-').c_str());
+
+    for (const int spp : options.spps)
+    {
+        RenderSettings s = base;
+        s.spp = spp;
+        std::map<EngineKind, Run> runs;
+        std::string row = fmt::format("{:>6}", s.trueSpp());
+        nlohmann::json jrow;
+        jrow["spp"] = s.trueSpp();
+        for (const auto& [kind, engine] : engines)
+        {
+            Run run = render(*engine, s);
+            run.error = compareImages(run.image, reference);
+            const double ms = run.gpuMs >= 0 ? run.gpuMs : run.renderMs;
+            row += fmt::format(" | {:>9.1f} {:>9.2e}", ms, run.error.relMse);
+            jrow[toString(kind)] = {{"render_ms", run.renderMs},
+                                    {"gpu_ms", run.gpuMs},
+                                    {"mpaths_per_second", run.mpaths},
+                                    {"relmse", run.error.relMse},
+                                    {"rmse", run.error.rmse}};
+            runs.emplace(kind, std::move(run));
+        }
+        if (ratio)
+        {
+            const Run& gpu = runs.at(EngineKind::Gpu);
+            // The fastest CPU engine of the row against the GPU, and the two images against each other.
+            const Run* cpu = nullptr;
+            for (const auto& [kind, run] : runs)
+                if (kind != EngineKind::Gpu && (!cpu || run.renderMs < cpu->renderMs))
+                    cpu = &run;
+            const double gpuMs = gpu.gpuMs >= 0 ? gpu.gpuMs : gpu.renderMs;
+            const double between = compareImages(cpu->image, gpu.image).relMse;
+            row += fmt::format(" | {:>9.1f}x | {:>11.2e}", cpu->renderMs / gpuMs, between);
+            jrow["cpu_over_gpu"] = cpu->renderMs / gpuMs;
+            jrow["relmse_cpu_gpu"] = between;
+        }
+        std::printf("%s\n", row.c_str());
+        std::fflush(stdout);
+        json["rows"].push_back(jrow);
+    }
+    std::printf("(GPU ms from timestamp queries around the trace dispatches; CPU ms from the host clock; "
+                "CPU/GPU uses the fastest CPU engine of the row)\n");
+    if (!options.json.empty())
+        writeFileAtomically(options.json, json.dump(2) + "\n");
+    return 0;
+}
+} // namespace rt::app
