@@ -59,6 +59,16 @@ void writePng(const std::filesystem::path& path, const Image& image)
     });
 }
 
+void writePng8(const std::filesystem::path& path, int width, int height, const std::vector<unsigned char>& rgba)
+{
+    if (width <= 0 || height <= 0 || rgba.size() != std::size_t(width) * height * 4)
+        throw UsageError(fmt::format("cannot write '{}': {} bytes for a {}x{} RGBA image", path.string(), rgba.size(),
+                                     width, height));
+    writeAtomically(path, [&](const std::filesystem::path& tmp) {
+        return stbi_write_png(tmp.string().c_str(), width, height, 4, rgba.data(), width * 4) != 0;
+    });
+}
+
 void writePfm(const std::filesystem::path& path, const Image& image)
 {
     writeAtomically(path, [&](const std::filesystem::path& tmp) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <vector>
 
 #include "Image/Image.h"
 
@@ -11,6 +12,9 @@ namespace rt
 /// 8-bit sRGB PNG of the linear image: clamp to [0, 1], then the sRGB transfer curve (IEC 61966-2-1).
 /// NaN pixels are written black. This is the books' "gamma 2" look made exact.
 void writePng(const std::filesystem::path& path, const Image& image);
+
+/// 8-bit RGBA pixels already encoded for display (a window's framebuffer), row 0 at the top, as a PNG.
+void writePng8(const std::filesystem::path& path, int width, int height, const std::vector<unsigned char>& rgba);
 
 /// Portable Float Map ("PF", little-endian, bottom row first per the format): lossless linear radiance.
 void writePfm(const std::filesystem::path& path, const Image& image);
