@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Runs on the lent NVIDIA machine (the workplace's `device` tool), from the repository root, with the build
+# carried in .devcarry/ (bin/: the binaries, shaders and assets; lib/: the shared libraries ldd lists beyond
+# glibc; layers/: the Khronos validation layer) and Debian's Vulkan loader in .gl/ (see docs/PERFORMANCE.md).
+#   tests/Bench/device_run.sh tests    the GPU test suite and the apps' smoke tests
+#   tests/Bench/device_run.sh table    thesis Table 5.4 redone: cornell-box-lights 600x600, depth 50
+set -u
+mode=${1:-tests}
+out=${OUT:-/tmp/out}
+mkdir -p "$out"
+for f in .gl/*.deb; do dpkg -x "$f" /; done
+ldconfig
+export LD_LIBRARY_PATH=$PWD/.devcarry/lib
+export VK_LAYER_PATH=$PWD/.devcarry/layers
+if ! ls /usr/share/vulkan/icd.d/nvidia_icd.json /etc/vulkan/icd.d/nvidia_icd.json >/dev/null 2>&1; then
+    export VK_DRIVER_FILES=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
+fi
+# The tests find the app at the path it had when they were built.
+mkdir -p /work/main/build && ln -sfn "$PWD/.devcarry/bin" /work/main/build/bin
+bin=/work/main/build/bin
+nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv,noheader
+echo "CPU: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
+
+case "$mode" in
+tests)
+    "$bin/ray-tracing-gpu" --headless --validation --scene rtrol-cornell-glass --width 200 --spp 16 \
+        --output "$out/glass.png" --stats "$out/glass.json"
+    "$bin/rt_gpu_tests" --gtest_brief=1 2>&1 | tail -40
+    bash tests/Cli/bad_input.sh "$bin/ray-tracing-gpu" | grep -v "^ok"
+    ;;
+table)
+    "$bin/ray-tracing-gpu" --compare --quiet --scene cornell-box-lights --width 600 --depth 50 \
+        --spp-list 10,50,100,250,500,1000,2000,5000 --engines multi,gpu --reference-spp 20000 \
+        --table "$out/table.json"
+    ;;
+esac
