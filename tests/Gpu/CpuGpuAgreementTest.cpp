@@ -106,9 +106,12 @@ TEST_P(GpuCpuAgreement, BlockMeansAgree)
     for (std::size_t i = 0; i < cpu.mean.size(); ++i)
     {
         const double difference = gpu.mean[i] - cpu.mean[i];
-        const double sigma = std::sqrt(cpu.variance[i] + gpu.variance[i]);
-        // Blocks without noise (background only, exact furnace paths) must agree to rounding.
-        const double z = sigma > 0.0 ? difference / sigma : (std::fabs(difference) < 1e-4 ? 0.0 : 1e30);
+        // Blocks with (almost) no noise — background only, the furnace's zero-variance paths — must agree to
+        // float rounding: the engines sum in different orders and the GPU's sin/cos differ from the CPU's in
+        // the last bits (seen on NVIDIA: 1e-8 apart at a sample sigma of 2e-9). 1e-5 relative covers it.
+        const double rounding = 1e-5 * std::max(std::fabs(cpu.mean[i]), std::fabs(gpu.mean[i]));
+        const double sigma = std::sqrt(cpu.variance[i] + gpu.variance[i] + rounding * rounding);
+        const double z = sigma > 0.0 ? difference / sigma : 0.0;
         if (std::fabs(z) > kMaxZ)
         {
             ++failures;
