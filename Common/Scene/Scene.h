@@ -104,6 +104,8 @@ struct GroupDesc
     bool empty() const { return spheres.empty() && quads.empty() && meshes.empty() && media.empty(); }
 };
 
+/// A group placed in the world. Any invertible affine transform for quads, meshes and media; groups with
+/// spheres need a similarity (rotation, uniform scale, translation): an ellipsoid is not a sphere.
 struct InstanceDesc
 {
     std::uint32_t group = 0;

@@ -9,6 +9,14 @@ namespace
 constexpr SceneDefaults kWide{.spp = 100, .depth = 50, .width = 600, .aspect = 16.0f / 9.0f, .unidirectionalLight = false};
 constexpr SceneDefaults kSquare{.spp = 100, .depth = 50, .width = 600, .aspect = 1.0f, .unidirectionalLight = false};
 
+/// RTTNW §5's two marble spheres: the ground (radius 1000) and one of radius 2 on it.
+void marbleGroundAndSphere(SceneBuilder& b, std::uint32_t group)
+{
+    const std::uint32_t marble = b.lambertianTextured(b.perlin(TextureType::Marble, 4.0f));
+    b.sphere(group, {0.0f, -1000.0f, 0.0f}, 1000.0f, marble);
+    b.sphere(group, {0.0f, 2.0f, 0.0f}, 2.0f, marble);
+}
+
 void lookFrom13(Scene& s)
 {
     s.camera.lookFrom = {13.0f, 2.0f, 3.0f};
@@ -66,9 +74,7 @@ Scene rtnwPerlinSpheres(const SceneOptions&)
 {
     SceneBuilder b("rtnw-perlin-spheres");
     const std::uint32_t w = b.world();
-    const std::uint32_t marble = b.lambertianTextured(b.perlin(TextureType::Marble, 4.0f));
-    b.sphere(w, {0.0f, -1000.0f, 0.0f}, 1000.0f, marble);
-    b.sphere(w, {0.0f, 2.0f, 0.0f}, 2.0f, marble);
+    marbleGroundAndSphere(b, w);
     Scene& s = b.scene();
     lookFrom13(s);
     s.defaults = kWide;
@@ -98,9 +104,7 @@ Scene rtnwSimpleLight(const SceneOptions&)
 {
     SceneBuilder b("rtnw-simple-light");
     const std::uint32_t w = b.world();
-    const std::uint32_t marble = b.lambertianTextured(b.perlin(TextureType::Marble, 4.0f));
-    b.sphere(w, {0.0f, -1000.0f, 0.0f}, 1000.0f, marble);
-    b.sphere(w, {0.0f, 2.0f, 0.0f}, 2.0f, marble);
+    marbleGroundAndSphere(b, w);
     const std::uint32_t light = b.diffuseLight(vec3(4.0f));
     b.sphere(w, {0.0f, 7.0f, 0.0f}, 2.0f, light);
     b.quad(w, {3, 1, -2}, {2, 0, 0}, {0, 2, 0}, light);
