@@ -21,6 +21,7 @@ using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 using uvec2 = glm::uvec2;
 using uvec4 = glm::uvec4;
+using mat4 = glm::mat4;
 using uint = std::uint32_t;
 
 // A closed set of tags: a C++ `enum class`, a set of `const uint NAME_VALUE` in GLSL.
@@ -246,6 +247,46 @@ struct SampleCounters
     uint infSamples;
 };
 
+// ---- The window of ray-tracing-gpu (RayTracingGPU/App/Gui): heatmap, display pass, raster preview ----------
+
+// Descriptor set 1 of the timed ray-generation shader (RayGenCost.rgen); set 0 is the path tracer's. One set
+// per frame in flight: each frame has its own CostMax, which the host reads once the frame is done.
+RT_CONST(uint, kSetCost, 1u)
+RT_CONST(uint, kBindingCost, 0u)    // r32f storage image: shader-clock ticks of the pixel's samples, summed
+RT_CONST(uint, kBindingCostMax, 1u) // CostMax
+
+/// The largest ticks per sample of any pixel after this frame's samples (the heatmap's automatic scale).
+struct CostMax
+{
+    uint ticksPerSampleBits; // floatBitsToUint of a non-negative float: atomicMax on the bits orders the floats
+};
+
+// Descriptor set 0 of the display pass (Display.vert/.frag), which fills the window with the ray tracer's image.
+RT_CONST(uint, kDisplayBindingAccumulation, 0u) // rgba32f storage image: radiance sum, sample count
+RT_CONST(uint, kDisplayBindingCost, 1u)         // r32f storage image: ticks summed (kBindingCost's image)
+
+RT_ENUM_BEGIN(DisplayMode)
+RT_ENUM_VALUE(DisplayMode, Radiance, 0) // radiance sum / samples, clamped to [0, 1], sRGB-encoded
+RT_ENUM_VALUE(DisplayMode, Cost, 1)     // ticks per sample / costScale through heatmapColor (HeatmapPalette.h)
+RT_ENUM_END(DisplayMode)
+
+struct DisplayPushConstants
+{
+    RT_TAG(DisplayMode) mode;
+    uint encodeSrgb; // 1: the swapchain stores what it is given (UNORM), so the shader encodes sRGB
+    float costScale; // Cost: ticks per sample shown as the top of the palette
+    uint pad;
+};
+
+/// The rasterised preview (Preview.vert/.frag): one pipeline draws the scene's triangles (per-vertex world
+/// positions, sphere instance = identity) and its spheres (a unit sphere mesh, per-instance centre and radius).
+struct PreviewPushConstants
+{
+    mat4 clipFromWorld; // Vulkan clip space: y down, depth in [0, 1]
+    vec3 eye; // camera centre, for the head-light shading
+    uint encodeSrgb; // as in DisplayPushConstants
+};
+
 #ifdef __cplusplus
 static_assert(sizeof(RenderUniforms) == 160);
 static_assert(offsetof(RenderUniforms, background0) == 96);
@@ -258,6 +299,9 @@ static_assert(sizeof(MediumRecord) == 64);
 static_assert(offsetof(MediumRecord, boxMax) == 32);
 static_assert(offsetof(MediumRecord, phaseMaterial) == 48);
 static_assert(sizeof(SampleCounters) == 8);
+static_assert(sizeof(CostMax) == 4);
+static_assert(sizeof(DisplayPushConstants) == 16);
+static_assert(sizeof(PreviewPushConstants) == 80 && offsetof(PreviewPushConstants, eye) == 64);
 #endif
 // ==== end of the GPU engine section ==========================================================================
 

@@ -9,15 +9,29 @@ namespace rt::gpu
 {
 namespace
 {
-vk::Device createDevice(const vk::Instance& instance, std::optional<int> deviceIndex)
+vk::Device createDevice(const vk::Instance& instance, std::optional<int> deviceIndex, VkSurfaceKHR surface)
 {
-    std::vector<vk::PhysicalDevice> devices = vk::enumeratePhysicalDevices(instance.Handle());
+    std::vector<vk::PhysicalDevice> devices = vk::enumeratePhysicalDevices(instance.Handle(), surface);
     std::vector<vk::DeviceCandidate> candidates;
     for (const vk::PhysicalDevice& d : devices)
         candidates.push_back(d.candidate);
-    const std::size_t chosen = vk::selectDevice(candidates, deviceIndex);
-    spdlog::debug("Vulkan devices:\n{}", vk::describeDevices(candidates));
-    return vk::Device(devices[chosen]);
+    const vk::DeviceRequirements requirements{.presentation = surface != VK_NULL_HANDLE};
+    const std::size_t chosen = vk::selectDevice(candidates, deviceIndex, requirements);
+    spdlog::debug("Vulkan devices:\n{}", vk::describeDevices(candidates, requirements));
+    return vk::Device(devices[chosen], requirements.presentation);
+}
+
+vk::Instance createInstance(const GpuContextOptions& options)
+{
+    return vk::Instance(options.validation, options.presentation ? options.presentation->instanceExtensions
+                                                                 : std::vector<std::string>{});
+}
+
+vk::Surface createSurface(const vk::Instance& instance, const GpuContextOptions& options)
+{
+    if (!options.presentation)
+        return {};
+    return vk::Surface(instance.Handle(), options.presentation->createSurface(instance.Handle()));
 }
 } // namespace
 
@@ -32,7 +46,8 @@ bool validationWanted()
 }
 
 GpuContext::GpuContext(const GpuContextOptions& options)
-    : m_instance(options.validation), m_device(createDevice(m_instance, options.deviceIndex)), m_pool(m_device)
+    : m_instance(createInstance(options)), m_surface(createSurface(m_instance, options)),
+      m_device(createDevice(m_instance, options.deviceIndex, m_surface.Handle())), m_pool(m_device)
 {
 }
 } // namespace rt::gpu

@@ -1,7 +1,6 @@
 #include "Engine/GpuEngine.h"
 
 #include <chrono>
-#include <cmath>
 
 #include "Assets/AssetPaths.h"
 #include "Engine/DispatchPlan.h"
@@ -10,8 +9,8 @@
 #include "Engine/PathTracingPipeline.h"
 #include "Engine/RenderLimits.h"
 #include "Engine/RenderTarget.h"
+#include "Engine/Uniforms.h"
 #include "Error.h"
-#include "Scene/Camera.h"
 #include "Vulkan/CommandBuffer.h"
 #include "Vulkan/DescriptorPool.h"
 #include "Vulkan/QueryPool.h"
@@ -24,36 +23,6 @@ using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-shader::RenderUniforms makeUniforms(const Scene& scene, const RenderSettings& settings, std::uint32_t lightCount)
-{
-    const int width = settings.width;
-    const int height = settings.height();
-    const Camera camera(scene.camera, width, height);
-    shader::RenderUniforms u{};
-    u.cameraCenter = camera.center;
-    u.shutterOpen = camera.shutterOpen;
-    u.pixel00 = camera.pixel00;
-    u.shutterClose = camera.shutterClose;
-    u.pixelDeltaU = camera.pixelDeltaU;
-    u.thinLens = camera.thinLens ? 1u : 0u;
-    u.pixelDeltaV = camera.pixelDeltaV;
-    u.width = static_cast<std::uint32_t>(width);
-    u.defocusDiskU = camera.defocusDiskU;
-    u.height = static_cast<std::uint32_t>(height);
-    u.defocusDiskV = camera.defocusDiskV;
-    u.depth = static_cast<std::uint32_t>(settings.depth);
-    u.background0 = scene.background.color0;
-    u.backgroundType = scene.background.type;
-    u.background1 = scene.background.color1;
-    u.estimator = settings.estimator;
-    u.sampling = settings.sampling;
-    u.strata = static_cast<std::uint32_t>(std::sqrt(static_cast<double>(settings.trueSpp())));
-    u.seed = settings.seed;
-    u.unidirectionalLight = settings.unidirectionalLight ? 1u : 0u;
-    u.lightCount = lightCount;
-    return u;
-}
-
 TargetLimits targetLimits(const vk::Device& device)
 {
     const vk::DeviceProperties& p = device.properties();
@@ -65,6 +34,7 @@ TargetLimits targetLimits(const vk::Device& device)
 struct GpuEngine::Impl
 {
     GpuContext context;
+    std::filesystem::path shaderDir;
     PathTracingPipeline pipeline;
     vk::QueryPool timestamps;
     std::uint64_t pathsPerDispatch;
@@ -76,8 +46,9 @@ struct GpuEngine::Impl
     VkDescriptorSet descriptorSet = VK_NULL_HANDLE;
 
     explicit Impl(const GpuEngineOptions& options)
-        : context({options.deviceIndex, options.validation}),
-          pipeline(context.device(), options.shaderDir.empty() ? executableDir() / "shaders" : options.shaderDir),
+        : context({options.deviceIndex, options.validation, options.presentation}),
+          shaderDir(options.shaderDir.empty() ? executableDir() / "shaders" : options.shaderDir),
+          pipeline(context.device(), shaderDir),
           timestamps(context.device(), 2),
           pathsPerDispatch(options.pathsPerDispatch > 0 ? options.pathsPerDispatch
                            : context.device().properties().type == vk::DeviceType::Cpu ? kPathsPerDispatchCpu
@@ -98,7 +69,7 @@ struct GpuEngine::Impl
         const auto imageCount = static_cast<std::uint32_t>(scene->imageViews().size());
         descriptorPool = vk::DescriptorPool(device(), pipeline.bindings(), imageCount);
         descriptorSet = descriptorPool.allocate(pipeline.setLayout(), imageCount);
-        pipeline.writeDescriptors(device(), descriptorSet, *scene, *target);
+        pipeline.writeDescriptors(device(), descriptorSet, *scene, target->bindings());
     }
 
     /// Records and runs one dispatch: `samples` launches of one sample per pixel from `firstSample` on.
@@ -112,27 +83,8 @@ struct GpuEngine::Impl
                 vkCmdResetQueryPool(cmd, timestamps.Handle(), 0, 2);
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps.Handle(), 0);
             }
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline.Handle());
-            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline.layout().Handle(), 0, 1,
-                                    &descriptorSet, 0, nullptr);
-            const ShaderBindingTable& sbt = pipeline.sbt();
-            for (std::uint32_t s = 0; s < samples; ++s)
-            {
-                const shader::TracePushConstants push{firstSample + s};
-                vkCmdPushConstants(cmd, pipeline.layout().Handle(), VK_SHADER_STAGE_RAYGEN_BIT_KHR |
-                                       VK_SHADER_STAGE_MISS_BIT_KHR | VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR |
-                                       VK_SHADER_STAGE_INTERSECTION_BIT_KHR,
-                                   0, sizeof(push), &push);
-                vkCmdTraceRaysKHR(cmd, &sbt.raygen(), &sbt.miss(), &sbt.hit(), &sbt.callable(), target->width(),
-                                  target->height(), 1);
-                // Each launch reads and writes its pixel of the accumulation image: order the samples.
-                VkMemoryBarrier accumulated{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-                accumulated.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-                accumulated.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-                vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
-                                     VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0, 1, &accumulated, 0, nullptr, 0,
-                                     nullptr);
-            }
+            pipeline.recordLaunches(cmd, {&descriptorSet, 1}, firstSample, samples,
+                                    {target->width(), target->height()});
             if (timed)
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 1);
             if (readback)
@@ -169,6 +121,29 @@ bool GpuEngine::validationEnabled() const { return m_impl->context.validationEna
 
 std::uint64_t GpuEngine::validationMessages() const { return m_impl->context.validationMessages(); }
 
+std::shared_ptr<const vk::ValidationLog> GpuEngine::validationLog() const
+{
+    return m_impl->context.instance().validationLog();
+}
+
+const PathTracingPipeline& GpuEngine::pipeline() const { return m_impl->pipeline; }
+
+const std::filesystem::path& GpuEngine::shaderDir() const { return m_impl->shaderDir; }
+
+const GpuScene& GpuEngine::gpuScene() const
+{
+    if (!m_impl->scene)
+        throw UsageError("GpuEngine::gpuScene called before setScene");
+    return *m_impl->scene;
+}
+
+const Scene& GpuEngine::scene() const
+{
+    if (!m_impl->sceneDesc)
+        throw UsageError("GpuEngine::scene called before setScene");
+    return *m_impl->sceneDesc;
+}
+
 double GpuEngine::setScene(const Scene& scene)
 {
     Impl& e = *m_impl;
@@ -196,7 +171,7 @@ RenderResult GpuEngine::render(const RenderSettings& settings, RenderControl& co
         throw DeviceError(*problem);
 
     e.prepareTarget(width, height);
-    e.target->reset(makeUniforms(*e.sceneDesc, settings, e.scene->lightCount()));
+    e.target->reset(makeUniforms(*e.sceneDesc, e.sceneDesc->camera, settings, width, height, e.scene->lightCount()));
     const auto totalSamples = static_cast<std::uint32_t>(settings.trueSpp());
     const DispatchPlan plan = planDispatches(totalSamples, std::uint64_t(width) * height, e.pathsPerDispatch,
                                              settings.sampling == PixelSampling::Accumulate);

@@ -10,11 +10,13 @@
 #include <optional>
 #include <string>
 
+#include "Engine/GpuContext.h"
 #include "Render/RenderEngine.h"
 
 namespace rt::gpu
 {
-class GpuContext;
+class GpuScene;
+class PathTracingPipeline;
 
 struct GpuEngineOptions
 {
@@ -22,6 +24,8 @@ struct GpuEngineOptions
     bool validation = false; // Khronos validation layer + counting messenger (see validationWanted())
     std::filesystem::path shaderDir; // empty: executableDir()/shaders, never the working directory
     std::uint64_t pathsPerDispatch = 0; // 0: by device type (DispatchPlan.h)
+    /// The window: the device must present to its surface (GpuContext.h). Headless leaves it empty.
+    std::optional<Presentation> presentation;
 };
 
 class GpuEngine final : public RenderEngine
@@ -49,6 +53,18 @@ public:
     bool validationEnabled() const;
     /// Validation warnings and errors reported since the engine was created (0 without validation).
     std::uint64_t validationMessages() const;
+    /// The same counts, readable after the engine is destroyed (leaked objects are reported while the device
+    /// is destroyed). Null without validation.
+    std::shared_ptr<const vk::ValidationLog> validationLog() const;
+
+    // Interactive rendering (ProgressiveRenderer, RasterPreview: the window) records its own command buffers
+    // with the engine's pipeline and scene, and passes its camera through makeUniforms (Uniforms.h).
+    const PathTracingPipeline& pipeline() const;
+    /// Where the SPIR-V files are (the window's pipelines load theirs from there too).
+    const std::filesystem::path& shaderDir() const;
+    /// The scene set last, on the device and as described. Throw rt::UsageError before setScene.
+    const GpuScene& gpuScene() const;
+    const Scene& scene() const;
 
 private:
     struct Impl;

@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "Engine/GpuScene.h"
-#include "Engine/RenderTarget.h"
 #include "RayTracing/RayTracingPipeline.h"
 #include "Shared/HostDevice.h"
 
@@ -44,25 +43,72 @@ std::vector<vk::DescriptorBinding> bindingsOf(std::uint32_t maxImages)
         VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT | VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT);
     return b;
 }
+
+std::vector<vk::DescriptorBinding> costBindingsOf(RayGenVariant variant)
+{
+    if (variant != RayGenVariant::Cost)
+        return {};
+    return {{kBindingCost, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_RAYGEN_BIT_KHR},
+            {kBindingCostMax, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_RAYGEN_BIT_KHR}};
+}
+
+vk::PipelineLayout layoutOf(const vk::Device& device, const vk::DescriptorSetLayout& set,
+                            const vk::DescriptorSetLayout& costSet)
+{
+    std::vector<VkDescriptorSetLayout> sets{set.Handle()};
+    if (costSet.Handle() != VK_NULL_HANDLE)
+        sets.push_back(costSet.Handle());
+    static_assert(kSetCost == 1);
+    return vk::PipelineLayout(device, sets, sizeof(TracePushConstants), kRayTracingStages);
+}
+
+vk::DescriptorSetLayout setLayoutOf(const vk::Device& device, const std::vector<vk::DescriptorBinding>& bindings)
+{
+    return bindings.empty() ? vk::DescriptorSetLayout() : vk::DescriptorSetLayout(device, bindings);
+}
 } // namespace
 
-PathTracingPipeline::PathTracingPipeline(const vk::Device& device, const std::filesystem::path& shaderDir)
+PathTracingPipeline::PathTracingPipeline(const vk::Device& device, const std::filesystem::path& shaderDir,
+                                         RayGenVariant variant)
     : m_maxImages(maxImagesOf(device)), m_bindings(bindingsOf(m_maxImages)), m_setLayout(device, m_bindings),
-      m_layout(device, m_setLayout, sizeof(TracePushConstants), kRayTracingStages),
-      m_pipeline(createPathTracingPipeline(device, m_layout, shaderDir)),
+      m_costBindings(costBindingsOf(variant)), m_costSetLayout(setLayoutOf(device, m_costBindings)),
+      m_layout(layoutOf(device, m_setLayout, m_costSetLayout)),
+      m_pipeline(createPathTracingPipeline(device, m_layout, shaderDir,
+                                           variant == RayGenVariant::Cost ? "RayGenCost.rgen.spv" : "RayGen.rgen.spv")),
       m_sbt(device, m_pipeline.Handle(), kMissGroupCount, kHitGroupCount)
 {
 }
 
+void PathTracingPipeline::recordLaunches(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
+                                         std::uint32_t firstSample, std::uint32_t count, VkExtent2D extent) const
+{
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, m_pipeline.Handle());
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, m_layout.Handle(), 0,
+                            static_cast<std::uint32_t>(sets.size()), sets.data(), 0, nullptr);
+    for (std::uint32_t s = 0; s < count; ++s)
+    {
+        const TracePushConstants push{firstSample + s};
+        vkCmdPushConstants(cmd, m_layout.Handle(), kRayTracingStages, 0, sizeof(push), &push);
+        vkCmdTraceRaysKHR(cmd, &m_sbt.raygen(), &m_sbt.miss(), &m_sbt.hit(), &m_sbt.callable(), extent.width,
+                          extent.height, 1);
+        // Each launch reads and writes its pixel of the accumulation image: order the samples.
+        VkMemoryBarrier accumulated{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+        accumulated.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+        accumulated.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                             VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0, 1, &accumulated, 0, nullptr, 0, nullptr);
+    }
+}
+
 void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescriptorSet set, const GpuScene& scene,
-                                           const RenderTarget& target) const
+                                           const TargetBindings& target) const
 {
     const VkAccelerationStructureKHR tlas = scene.tlas();
     VkWriteDescriptorSetAccelerationStructureKHR tlasInfo{
         VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
     tlasInfo.accelerationStructureCount = 1;
     tlasInfo.pAccelerationStructures = &tlas;
-    const VkDescriptorImageInfo accumulation{VK_NULL_HANDLE, target.view(), VK_IMAGE_LAYOUT_GENERAL};
+    const VkDescriptorImageInfo accumulation{VK_NULL_HANDLE, target.accumulation, VK_IMAGE_LAYOUT_GENERAL};
 
     const GpuScene::Buffers& buffers = scene.buffers();
     const std::pair<std::uint32_t, const vk::Buffer*> storage[] = {
@@ -77,11 +123,11 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
         {kBindingTriangleMaterials, &buffers.triangleMaterials},
         {kBindingSpheres, &buffers.spheres},
         {kBindingMedia, &buffers.media},
-        {kBindingCounters, &target.counters()},
     };
     std::vector<VkDescriptorBufferInfo> bufferInfos;
-    bufferInfos.reserve(std::size(storage) + 1);
-    bufferInfos.push_back({target.uniforms().Handle(), 0, VK_WHOLE_SIZE});
+    bufferInfos.reserve(std::size(storage) + 2);
+    bufferInfos.push_back({target.uniforms, 0, VK_WHOLE_SIZE});
+    bufferInfos.push_back({target.counters, 0, VK_WHOLE_SIZE});
     for (const auto& [binding, buffer] : storage)
         bufferInfos.push_back({buffer->Handle(), 0, VK_WHOLE_SIZE});
     std::vector<VkDescriptorImageInfo> imageInfos;
@@ -89,7 +135,7 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
         imageInfos.push_back({scene.sampler(), view.Handle(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
 
     std::vector<VkWriteDescriptorSet> writes;
-    writes.reserve(std::size(storage) + 4); // write() hands out references into it
+    writes.reserve(std::size(storage) + 5); // write() hands out references into it
     const auto write = [&](std::uint32_t binding, VkDescriptorType type, std::uint32_t count) -> VkWriteDescriptorSet& {
         VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         w.dstSet = set;
@@ -102,8 +148,9 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
     write(kBindingTlas, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1).pNext = &tlasInfo;
     write(kBindingAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1).pImageInfo = &accumulation;
     write(kBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1).pBufferInfo = &bufferInfos[0];
+    write(kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[1];
     for (std::size_t i = 0; i < std::size(storage); ++i)
-        write(storage[i].first, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[i + 1];
+        write(storage[i].first, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[i + 2];
     write(kBindingImages, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, static_cast<std::uint32_t>(imageInfos.size()))
         .pImageInfo = imageInfos.data();
     vkUpdateDescriptorSets(device.Handle(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);

@@ -1,9 +1,11 @@
 // Everything of the path tracer that does not depend on the scene or the image size: the descriptor set
 // layout of Bindings.glsl, the pipeline layout (push constants: TracePushConstants), the ray-tracing
 // pipeline and its shader binding table. Built once per engine (pipeline compilation is the slow part).
+// The Cost variant (the window's heatmap) swaps in the timed ray-generation shader and adds set kSetCost.
 #pragma once
 
 #include <filesystem>
+#include <span>
 #include <vector>
 
 #include "RayTracing/ShaderBindingTable.h"
@@ -14,19 +16,36 @@
 namespace rt::gpu
 {
 class GpuScene;
-class RenderTarget;
+
+/// Where a render writes: bound to kBindingAccumulation, kBindingUniforms and kBindingCounters.
+struct TargetBindings
+{
+    VkImageView accumulation = VK_NULL_HANDLE; // rgba32f storage image in GENERAL layout
+    VkBuffer uniforms = VK_NULL_HANDLE; // RenderUniforms
+    VkBuffer counters = VK_NULL_HANDLE; // SampleCounters
+};
+
+enum class RayGenVariant
+{
+    Radiance, // RayGen.rgen
+    Cost // RayGenCost.rgen: also times each sample (needs vk::Device::shaderClock())
+};
 
 class PathTracingPipeline final
 {
 public:
     /// Throws rt::AssetError for a missing shader, rt::DeviceError when the driver rejects the pipeline.
-    PathTracingPipeline(const vk::Device& device, const std::filesystem::path& shaderDir);
+    PathTracingPipeline(const vk::Device& device, const std::filesystem::path& shaderDir,
+                        RayGenVariant variant = RayGenVariant::Radiance);
     PathTracingPipeline(const PathTracingPipeline&) = delete;
     PathTracingPipeline& operator=(const PathTracingPipeline&) = delete;
     ~PathTracingPipeline() = default;
 
     const std::vector<vk::DescriptorBinding>& bindings() const { return m_bindings; }
     const vk::DescriptorSetLayout& setLayout() const { return m_setLayout; }
+    /// Set kSetCost of the Cost variant (kBindingCost, kBindingCostMax); empty for Radiance.
+    const std::vector<vk::DescriptorBinding>& costBindings() const { return m_costBindings; }
+    const vk::DescriptorSetLayout& costSetLayout() const { return m_costSetLayout; }
     const vk::PipelineLayout& layout() const { return m_layout; }
     VkPipeline Handle() const { return m_pipeline.Handle(); }
     const ShaderBindingTable& sbt() const { return m_sbt; }
@@ -35,12 +54,19 @@ public:
 
     /// Points every binding of `set` at the resources of `scene` and `target`.
     void writeDescriptors(const vk::Device& device, VkDescriptorSet set, const GpuScene& scene,
-                          const RenderTarget& target) const;
+                          const TargetBindings& target) const;
+
+    /// Records `count` launches of one camera sample per pixel over `extent`, sample indices from
+    /// `firstSample` on, with `sets` bound from set 0, each launch ordered after the previous one's writes.
+    void recordLaunches(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets, std::uint32_t firstSample,
+                        std::uint32_t count, VkExtent2D extent) const;
 
 private:
     std::uint32_t m_maxImages;
     std::vector<vk::DescriptorBinding> m_bindings;
     vk::DescriptorSetLayout m_setLayout;
+    std::vector<vk::DescriptorBinding> m_costBindings;
+    vk::DescriptorSetLayout m_costSetLayout;
     vk::PipelineLayout m_layout;
     vk::Pipeline m_pipeline;
     ShaderBindingTable m_sbt;

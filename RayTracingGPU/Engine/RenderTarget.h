@@ -4,6 +4,7 @@
 
 #include <cstdint>
 
+#include "Engine/PathTracingPipeline.h"
 #include "Image/Image.h"
 #include "Shared/HostDevice.h"
 #include "Vulkan/Buffer.h"
@@ -26,6 +27,7 @@ public:
     VkImageView view() const { return m_view.Handle(); }
     const vk::Buffer& uniforms() const { return m_uniforms; }
     const vk::Buffer& counters() const { return m_counters; }
+    TargetBindings bindings() const { return {m_view.Handle(), m_uniforms.Handle(), m_counters.Handle()}; }
 
     /// Writes the uniforms and zeroes the counters (host-visible memory; call while the device is idle).
     void reset(const shader::RenderUniforms& uniforms);

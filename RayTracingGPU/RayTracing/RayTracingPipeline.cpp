@@ -23,7 +23,7 @@ VkRayTracingShaderGroupCreateInfoKHR group(VkRayTracingShaderGroupTypeKHR type)
 } // namespace
 
 vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::PipelineLayout& layout,
-                                       const std::filesystem::path& shaderDir)
+                                       const std::filesystem::path& shaderDir, const char* rayGenFile)
 {
     struct Stage
     {
@@ -42,7 +42,7 @@ vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::Pipel
         StageCount
     };
     const Stage stages[StageCount] = {
-        {"RayGen.rgen.spv", VK_SHADER_STAGE_RAYGEN_BIT_KHR},
+        {rayGenFile, VK_SHADER_STAGE_RAYGEN_BIT_KHR},
         {"Background.rmiss.spv", VK_SHADER_STAGE_MISS_BIT_KHR},
         {"Triangle.rchit.spv", VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR},
         {"Sphere.rint.spv", VK_SHADER_STAGE_INTERSECTION_BIT_KHR},

@@ -1,5 +1,5 @@
 // The path tracer's ray-tracing pipeline. Shader groups, in SBT order:
-//   0  raygen   RayGen.rgen         camera samples and the iterative bounce loop
+//   0  raygen   RayGen.rgen         camera samples and the iterative bounce loop (or RayGenCost.rgen: timed)
 //   1  miss     Background.rmiss    constant or gradient background
 //   2  hit      Triangle.rchit      triangle BLASes (meshes, quads)        = kHitGroupTriangles
 //   3  hit      Sphere.rint/.rchit  procedural geometry 0 (spheres)        = kHitGroupSpheres
@@ -16,8 +16,9 @@ namespace rt::gpu
 {
 inline constexpr std::uint32_t kMissGroupCount = 1;
 
-/// Creates the pipeline from the SPIR-V files in `shaderDir`. Throws rt::AssetError for a missing shader,
-/// rt::DeviceError when the driver rejects the pipeline.
+/// Creates the pipeline from the SPIR-V files in `shaderDir`, with `rayGenFile` as group 0. Throws
+/// rt::AssetError for a missing shader, rt::DeviceError when the driver rejects the pipeline.
 vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::PipelineLayout& layout,
-                                       const std::filesystem::path& shaderDir);
+                                       const std::filesystem::path& shaderDir,
+                                       const char* rayGenFile = "RayGen.rgen.spv");
 } // namespace rt::gpu

@@ -17,8 +17,9 @@ namespace
 std::atomic<int> g_liveDevices{0};
 } // namespace
 
-Device::Device(const PhysicalDevice& physical)
-    : m_queueFamily(physical.queueFamily), m_properties(queryProperties(physical))
+Device::Device(const PhysicalDevice& physical, bool presentation)
+    : m_physical(physical.handle), m_queueFamily(physical.queueFamily), m_properties(queryProperties(physical)),
+      m_presentation(presentation), m_shaderClock(physical.candidate.features.shaderSubgroupClock)
 {
     if (g_liveDevices.load() > 0)
         throw DeviceError("a Vulkan device already exists in this process; the engine drives one device at a time");
@@ -42,15 +43,26 @@ Device::Device(const PhysicalDevice& physical)
     VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
     rt.rayTracingPipeline = VK_TRUE;
     rt.pNext = &as;
+    VkPhysicalDeviceShaderClockFeaturesKHR clock{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_CLOCK_FEATURES_KHR};
+    clock.shaderSubgroupClock = VK_TRUE;
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     features.pNext = &rt;
+    std::vector<const char*> extensions(std::begin(kRequiredExtensions), std::end(kRequiredExtensions));
+    if (m_presentation)
+        extensions.push_back(kPresentationExtension);
+    if (m_shaderClock)
+    {
+        extensions.push_back(kShaderClockExtension);
+        clock.pNext = features.pNext;
+        features.pNext = &clock;
+    }
 
     VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
     info.pNext = &features;
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queueInfo;
-    info.enabledExtensionCount = static_cast<std::uint32_t>(std::size(kRequiredExtensions));
-    info.ppEnabledExtensionNames = kRequiredExtensions;
+    info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
     check(vkCreateDevice(physical.handle, &info, nullptr, &m_device), "vkCreateDevice");
     ++g_liveDevices;
     loadDeviceFunctions(m_device);
@@ -60,8 +72,9 @@ Device::Device(const PhysicalDevice& physical)
 Device::~Device() { destroy(); }
 
 Device::Device(Device&& other) noexcept
-    : m_device(std::exchange(other.m_device, VK_NULL_HANDLE)), m_queue(std::exchange(other.m_queue, VK_NULL_HANDLE)), m_queueFamily(other.m_queueFamily),
-      m_properties(other.m_properties)
+    : m_device(std::exchange(other.m_device, VK_NULL_HANDLE)), m_physical(other.m_physical),
+      m_queue(std::exchange(other.m_queue, VK_NULL_HANDLE)), m_queueFamily(other.m_queueFamily),
+      m_properties(other.m_properties), m_presentation(other.m_presentation), m_shaderClock(other.m_shaderClock)
 {
 }
 
@@ -71,9 +84,12 @@ Device& Device::operator=(Device&& other) noexcept
     {
         destroy();
         m_device = std::exchange(other.m_device, VK_NULL_HANDLE);
+        m_physical = other.m_physical;
         m_queue = std::exchange(other.m_queue, VK_NULL_HANDLE);
         m_queueFamily = other.m_queueFamily;
         m_properties = other.m_properties;
+        m_presentation = other.m_presentation;
+        m_shaderClock = other.m_shaderClock;
     }
     return *this;
 }

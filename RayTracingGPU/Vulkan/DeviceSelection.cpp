@@ -49,7 +49,7 @@ const char* toString(DeviceType type)
     return "?";
 }
 
-DeviceVerdict judge(const DeviceCandidate& candidate)
+DeviceVerdict judge(const DeviceCandidate& candidate, const DeviceRequirements& requirements)
 {
     DeviceVerdict verdict{candidate, {}};
     if (candidate.apiVersion < kRequiredApi)
@@ -64,10 +64,19 @@ DeviceVerdict judge(const DeviceCandidate& candidate)
             verdict.missing.push_back(fmt::format("feature {}::{}", f.featureStruct, f.field));
     if (!candidate.computeQueue)
         verdict.missing.push_back("a queue family with VK_QUEUE_COMPUTE_BIT");
+    if (requirements.presentation)
+    {
+        if (std::find(candidate.extensions.begin(), candidate.extensions.end(), kPresentationExtension) ==
+            candidate.extensions.end())
+            verdict.missing.push_back(fmt::format("extension {}", kPresentationExtension));
+        if (!candidate.presentQueue)
+            verdict.missing.push_back("a queue family with graphics, compute and presentation to the window's surface");
+    }
     return verdict;
 }
 
-std::size_t selectDevice(const std::vector<DeviceCandidate>& candidates, std::optional<int> requested)
+std::size_t selectDevice(const std::vector<DeviceCandidate>& candidates, std::optional<int> requested,
+                         const DeviceRequirements& requirements)
 {
     if (candidates.empty())
         throw DeviceError("Vulkan reports no physical device: no driver (ICD) is installed or none loads");
@@ -75,28 +84,29 @@ std::size_t selectDevice(const std::vector<DeviceCandidate>& candidates, std::op
     {
         if (*requested < 0 || static_cast<std::size_t>(*requested) >= candidates.size())
             throw UsageError(fmt::format("--device {} does not exist; the devices are:\n{}", *requested,
-                                         describeDevices(candidates)));
-        const DeviceVerdict verdict = judge(candidates[static_cast<std::size_t>(*requested)]);
+                                         describeDevices(candidates, requirements)));
+        const DeviceVerdict verdict = judge(candidates[static_cast<std::size_t>(*requested)], requirements);
         if (!verdict.suitable())
             throw DeviceError(fmt::format("device {} cannot run the ray tracer:\n{}", *requested, describe(verdict)));
         return static_cast<std::size_t>(*requested);
     }
     std::optional<std::size_t> best;
     for (std::size_t i = 0; i < candidates.size(); ++i)
-        if (judge(candidates[i]).suitable() &&
+        if (judge(candidates[i], requirements).suitable() &&
             (!best || preferenceRank(candidates[i].type) < preferenceRank(candidates[*best].type)))
             best = i;
     if (!best)
         throw DeviceError(
-            fmt::format("no Vulkan device can run the ray tracer:\n{}", describeDevices(candidates)));
+            fmt::format("no Vulkan device can run the ray tracer{}:\n{}",
+                        requirements.presentation ? " in a window" : "", describeDevices(candidates, requirements)));
     return *best;
 }
 
-std::string describeDevices(const std::vector<DeviceCandidate>& candidates)
+std::string describeDevices(const std::vector<DeviceCandidate>& candidates, const DeviceRequirements& requirements)
 {
     std::string out;
     for (const DeviceCandidate& c : candidates)
-        out += (out.empty() ? "" : "\n") + describe(judge(c));
+        out += (out.empty() ? "" : "\n") + describe(judge(c, requirements));
     return out;
 }
 } // namespace rt::vk

@@ -21,6 +21,8 @@ struct DeviceFeatures
     bool descriptorBindingPartiallyBound = false;
     bool descriptorBindingVariableDescriptorCount = false;
     bool scalarBlockLayout = false;
+    // Optional: the window's heatmap of per-pixel cost (clockARB), hidden without it.
+    bool shaderSubgroupClock = false; // VkPhysicalDeviceShaderClockFeaturesKHR, needs kShaderClockExtension
 };
 
 /// One feature the engine needs: where Vulkan reports it and where DeviceFeatures keeps it.
@@ -54,6 +56,19 @@ inline constexpr const char* kRequiredExtensions[] = {
     "VK_KHR_deferred_host_operations",
 };
 
+/// Window mode only: presenting to a surface.
+inline constexpr const char* kPresentationExtension = "VK_KHR_swapchain";
+/// Optional, enabled when present with DeviceFeatures::shaderSubgroupClock.
+inline constexpr const char* kShaderClockExtension = "VK_KHR_shader_clock";
+
+/// What the caller needs beyond the ray tracer itself.
+struct DeviceRequirements
+{
+    /// The window: kPresentationExtension and one queue family with graphics, compute and presentation to the
+    /// window's surface (one queue traces, rasterises the preview and the panel, and presents).
+    bool presentation = false;
+};
+
 enum class DeviceType
 {
     Other,
@@ -75,6 +90,7 @@ struct DeviceCandidate
     std::vector<std::string> extensions;
     DeviceFeatures features;
     bool computeQueue = false; // a queue family with VK_QUEUE_COMPUTE_BIT
+    bool presentQueue = false; // a queue family with graphics, compute and presentation to the surface asked about
 };
 
 /// A device and everything it lacks (empty: it can run the engine).
@@ -88,14 +104,16 @@ struct DeviceVerdict
 
 /// Every reason `candidate` cannot run the engine, e.g. "extension VK_KHR_ray_tracing_pipeline" or
 /// "feature VkPhysicalDeviceVulkan12Features::scalarBlockLayout".
-DeviceVerdict judge(const DeviceCandidate& candidate);
+DeviceVerdict judge(const DeviceCandidate& candidate, const DeviceRequirements& requirements = {});
 
 /// Picks `requested` if given (it must exist and be suitable), else the first suitable device of the most
 /// preferred type (discrete, integrated, virtual, other, CPU). Returns the index into `candidates`.
 /// Throws rt::UsageError for a requested index that does not exist, rt::DeviceError listing every device
 /// and what it lacks when nothing fits.
-std::size_t selectDevice(const std::vector<DeviceCandidate>& candidates, std::optional<int> requested);
+std::size_t selectDevice(const std::vector<DeviceCandidate>& candidates, std::optional<int> requested,
+                         const DeviceRequirements& requirements = {});
 
 /// One line per device: index, name, type, and "ok" or what it lacks.
-std::string describeDevices(const std::vector<DeviceCandidate>& candidates);
+std::string describeDevices(const std::vector<DeviceCandidate>& candidates,
+                            const DeviceRequirements& requirements = {});
 } // namespace rt::vk

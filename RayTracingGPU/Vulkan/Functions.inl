@@ -21,7 +21,13 @@
     X(vkCreateDevice)                                                                                          \
     X(vkGetDeviceProcAddr)                                                                                     \
     X(vkCreateDebugUtilsMessengerEXT)                                                                          \
-    X(vkDestroyDebugUtilsMessengerEXT)
+    X(vkDestroyDebugUtilsMessengerEXT)                                                                         \
+    X(vkGetPhysicalDeviceFormatProperties)                                                                     \
+    X(vkDestroySurfaceKHR)                                                                                     \
+    X(vkGetPhysicalDeviceSurfaceSupportKHR)                                                                    \
+    X(vkGetPhysicalDeviceSurfaceCapabilitiesKHR)                                                               \
+    X(vkGetPhysicalDeviceSurfaceFormatsKHR)                                                                    \
+    X(vkGetPhysicalDeviceSurfacePresentModesKHR)
 
 // Loaded from vkGetDeviceProcAddr(device, ...) once the device exists (extension functions included).
 #define RT_VK_DEVICE_FUNCTIONS(X)                                                                              \
@@ -87,4 +93,24 @@
     X(vkCmdBuildAccelerationStructuresKHR)                                                                     \
     X(vkCreateRayTracingPipelinesKHR)                                                                          \
     X(vkGetRayTracingShaderGroupHandlesKHR)                                                                    \
-    X(vkCmdTraceRaysKHR)
+    X(vkCmdTraceRaysKHR)                                                                                       \
+    X(vkResetFences)                                                                                           \
+    X(vkResetCommandBuffer)                                                                                    \
+    X(vkCreateSemaphore)                                                                                       \
+    X(vkDestroySemaphore)                                                                                      \
+    X(vkCreateRenderPass)                                                                                      \
+    X(vkDestroyRenderPass)                                                                                     \
+    X(vkCreateFramebuffer)                                                                                     \
+    X(vkDestroyFramebuffer)                                                                                    \
+    X(vkCreateGraphicsPipelines)                                                                               \
+    X(vkCmdBeginRenderPass)                                                                                    \
+    X(vkCmdEndRenderPass)                                                                                      \
+    X(vkCmdBindVertexBuffers)                                                                                  \
+    X(vkCmdSetViewport)                                                                                        \
+    X(vkCmdSetScissor)                                                                                         \
+    X(vkCmdDraw)                                                                                               \
+    X(vkCreateSwapchainKHR)                                                                                    \
+    X(vkDestroySwapchainKHR)                                                                                   \
+    X(vkGetSwapchainImagesKHR)                                                                                 \
+    X(vkAcquireNextImageKHR)                                                                                   \
+    X(vkQueuePresentKHR)

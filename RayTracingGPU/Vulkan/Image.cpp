@@ -28,13 +28,18 @@ Image::Image(const Device& device, VkExtent2D extent, VkFormat format, VkImageUs
     check(vkBindImageMemory(device.Handle(), image, m_memory.Handle(), 0), "vkBindImageMemory");
 }
 
-ImageView::ImageView(const Device& device, const Image& image)
+ImageView::ImageView(const Device& device, const Image& image, VkImageAspectFlags aspect)
+    : ImageView(device, image.Handle(), image.format(), aspect)
+{
+}
+
+ImageView::ImageView(const Device& device, VkImage image, VkFormat format, VkImageAspectFlags aspect)
 {
     VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    info.image = image.Handle();
+    info.image = image;
     info.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    info.format = image.format();
-    info.subresourceRange = kColorRange;
+    info.format = format;
+    info.subresourceRange = {aspect, 0, 1, 0, 1};
     VkImageView view = VK_NULL_HANDLE;
     check(vkCreateImageView(device.Handle(), &info, nullptr, &view), "vkCreateImageView");
     m_view = DeviceHandle<VkImageView, &vkDestroyImageView>(device.Handle(), view);

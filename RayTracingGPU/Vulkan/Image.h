@@ -24,12 +24,14 @@ private:
     VkFormat m_format = VK_FORMAT_UNDEFINED;
 };
 
-/// A colour view of a whole Image.
+/// A view of a whole single-mip, single-layer image: colour by default, depth for depth attachments.
 class ImageView final
 {
 public:
     ImageView() = default;
-    ImageView(const Device& device, const Image& image);
+    ImageView(const Device& device, const Image& image, VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT);
+    /// A view of an image owned elsewhere (a swapchain's).
+    ImageView(const Device& device, VkImage image, VkFormat format, VkImageAspectFlags aspect);
     RT_VK_MOVE_ONLY(ImageView)
     ~ImageView() = default;
 

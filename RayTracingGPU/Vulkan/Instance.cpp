@@ -14,6 +14,19 @@ namespace rt::vk
 {
 namespace
 {
+bool instanceExtensionAvailable(const std::string& name)
+{
+    std::uint32_t count = 0;
+    if (vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr) != VK_SUCCESS)
+        return false;
+    std::vector<VkExtensionProperties> extensions(count);
+    vkEnumerateInstanceExtensionProperties(nullptr, &count, extensions.data());
+    for (const VkExtensionProperties& extension : extensions)
+        if (name == extension.extensionName)
+            return true;
+    return false;
+}
+
 bool layerAvailable(const char* name)
 {
     std::uint32_t count = 0;
@@ -36,7 +49,7 @@ std::uint32_t loaderApiVersion()
 }
 } // namespace
 
-Instance::Instance(bool validation)
+Instance::Instance(bool validation, const std::vector<std::string>& wantedExtensions)
 {
     loadGlobalFunctions();
     const std::uint32_t loaderVersion = loaderApiVersion();
@@ -46,13 +59,19 @@ Instance::Instance(bool validation)
 
     std::vector<const char*> layers;
     std::vector<const char*> extensions;
+    for (const std::string& name : wantedExtensions)
+    {
+        if (!instanceExtensionAvailable(name))
+            throw DeviceError(fmt::format("the Vulkan instance lacks {}, which the window needs to present", name));
+        extensions.push_back(name.c_str());
+    }
     if (validation)
     {
         if (layerAvailable(kValidationLayer))
         {
             layers.push_back(kValidationLayer);
             extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-            m_log = std::make_unique<ValidationLog>();
+            m_log = std::make_shared<ValidationLog>();
         }
         else
             spdlog::warn("Vulkan validation was asked for but {} is not installed; running without it",

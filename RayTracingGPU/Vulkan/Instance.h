@@ -4,6 +4,8 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "Vulkan/DebugMessenger.h"
 #include "Vulkan/Loader.h"
@@ -16,9 +18,10 @@ class Instance final
 {
 public:
     /// Opens the loader and creates the instance. With `validation`, enables kValidationLayer when it is
-    /// installed (a warning is logged when it is not: see validationEnabled()). Throws rt::DeviceError with a
-    /// one-line reason when there is no loader, no driver or no Vulkan 1.2.
-    explicit Instance(bool validation);
+    /// installed (a warning is logged when it is not: see validationEnabled()). `extensions` are added (the
+    /// window's surface extensions). Throws rt::DeviceError with a one-line reason when there is no loader, no
+    /// driver, no Vulkan 1.2 or one of `extensions` is missing.
+    explicit Instance(bool validation, const std::vector<std::string>& extensions = {});
     ~Instance();
     Instance(const Instance&) = delete;
     Instance& operator=(const Instance&) = delete;
@@ -29,12 +32,15 @@ public:
     bool validationEnabled() const { return m_log != nullptr; }
     /// Validation warnings and errors so far (0 without validation).
     std::uint64_t validationMessages() const { return m_log ? m_log->total() : 0; }
+    /// The counts, shared: they stay readable after the instance is gone, so that what the layer reports while
+    /// the device and the instance are destroyed (leaked objects) is counted too. Null without validation.
+    std::shared_ptr<const ValidationLog> validationLog() const { return m_log; }
 
 private:
     void destroy();
 
     VkInstance m_instance = VK_NULL_HANDLE;
-    std::unique_ptr<ValidationLog> m_log; // outlives the instance's create/destroy messages
+    std::shared_ptr<ValidationLog> m_log; // outlives the instance's create/destroy messages
     DebugMessenger m_messenger;
 };
 } // namespace rt::vk

@@ -73,6 +73,11 @@ void loadInstanceFunctions(VkInstance instance)
 #undef RT_VK_LOAD
 }
 
+PFN_vkVoidFunction instanceProcAddr(VkInstance instance, const char* name)
+{
+    return g_getInstanceProcAddr ? g_getInstanceProcAddr(instance, name) : nullptr;
+}
+
 void loadDeviceFunctions(VkDevice device)
 {
 #define RT_VK_LOAD(name) name = reinterpret_cast<PFN_##name>(vkGetDeviceProcAddr(device, #name));

@@ -33,4 +33,8 @@ void loadInstanceFunctions(VkInstance instance);
 
 /// Loads every device-level entry point for `device` through vkGetDeviceProcAddr.
 void loadDeviceFunctions(VkDevice device);
+
+/// The loader's vkGetInstanceProcAddr, for libraries that load their own entry points (Dear ImGui's Vulkan
+/// backend). Null before loadGlobalFunctions().
+PFN_vkVoidFunction instanceProcAddr(VkInstance instance, const char* name);
 } // namespace rt::vk

@@ -43,6 +43,7 @@ DeviceFeatures queryFeatures(VkPhysicalDevice device, std::uint32_t apiVersion)
     VkPhysicalDeviceAccelerationStructureFeaturesKHR as{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
     VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
     VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceShaderClockFeaturesKHR clock{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_CLOCK_FEATURES_KHR};
     const std::vector<std::string> extensions = extensionNames(device);
     const auto has = [&](const char* name) {
         return std::find(extensions.begin(), extensions.end(), name) != extensions.end();
@@ -59,6 +60,11 @@ DeviceFeatures queryFeatures(VkPhysicalDevice device, std::uint32_t apiVersion)
         rt.pNext = chain;
         chain = &rt;
     }
+    if (has(kShaderClockExtension))
+    {
+        clock.pNext = chain;
+        chain = &clock;
+    }
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     features.pNext = chain;
     vkGetPhysicalDeviceFeatures2(device, &features);
@@ -70,31 +76,46 @@ DeviceFeatures queryFeatures(VkPhysicalDevice device, std::uint32_t apiVersion)
     f.descriptorBindingPartiallyBound = v12.descriptorBindingPartiallyBound;
     f.descriptorBindingVariableDescriptorCount = v12.descriptorBindingVariableDescriptorCount;
     f.scalarBlockLayout = v12.scalarBlockLayout;
+    f.shaderSubgroupClock = clock.shaderSubgroupClock;
     return f;
 }
 
-/// A compute-capable family, preferring graphics + compute (the "universal" queue every driver optimises).
-std::optional<std::uint32_t> pickQueueFamily(VkPhysicalDevice device)
+struct QueueChoice
+{
+    std::optional<std::uint32_t> family;
+    bool presents = false; // the family does graphics, compute and presentation to the surface
+};
+
+/// A compute-capable family, preferring graphics + compute (the "universal" queue every driver optimises) and,
+/// with a surface, one of those that can also present to it.
+QueueChoice pickQueueFamily(VkPhysicalDevice device, VkSurfaceKHR surface)
 {
     std::uint32_t count = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
     std::vector<VkQueueFamilyProperties> families(count);
     vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+    std::optional<std::uint32_t> universal;
     std::optional<std::uint32_t> computeOnly;
     for (std::uint32_t i = 0; i < count; ++i)
     {
         if (!(families[i].queueFlags & VK_QUEUE_COMPUTE_BIT))
             continue;
-        if (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT)
-            return i;
-        if (!computeOnly)
-            computeOnly = i;
+        if (!(families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT))
+        {
+            computeOnly = computeOnly.value_or(i);
+            continue;
+        }
+        VkBool32 presents = VK_FALSE;
+        if (surface != VK_NULL_HANDLE &&
+            vkGetPhysicalDeviceSurfaceSupportKHR(device, i, surface, &presents) == VK_SUCCESS && presents)
+            return {i, true};
+        universal = universal.value_or(i);
     }
-    return computeOnly;
+    return {universal ? universal : computeOnly, false};
 }
 } // namespace
 
-std::vector<PhysicalDevice> enumeratePhysicalDevices(VkInstance instance)
+std::vector<PhysicalDevice> enumeratePhysicalDevices(VkInstance instance, VkSurfaceKHR surface)
 {
     std::uint32_t count = 0;
     check(vkEnumeratePhysicalDevices(instance, &count, nullptr), "vkEnumeratePhysicalDevices");
@@ -114,9 +135,10 @@ std::vector<PhysicalDevice> enumeratePhysicalDevices(VkInstance instance)
         d.candidate.apiVersion = properties.apiVersion;
         d.candidate.extensions = extensionNames(handles[i]);
         d.candidate.features = queryFeatures(handles[i], properties.apiVersion);
-        const std::optional<std::uint32_t> family = pickQueueFamily(handles[i]);
-        d.candidate.computeQueue = family.has_value();
-        d.queueFamily = family.value_or(0);
+        const QueueChoice queue = pickQueueFamily(handles[i], surface);
+        d.candidate.computeQueue = queue.family.has_value();
+        d.candidate.presentQueue = queue.presents;
+        d.queueFamily = queue.family.value_or(0);
         devices.push_back(std::move(d));
     }
     return devices;

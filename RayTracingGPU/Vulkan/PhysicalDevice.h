@@ -15,10 +15,12 @@ struct PhysicalDevice
 {
     VkPhysicalDevice handle = VK_NULL_HANDLE;
     DeviceCandidate candidate;
-    std::uint32_t queueFamily = 0; // compute-capable, preferring one that also does graphics
+    std::uint32_t queueFamily = 0; // compute-capable, preferring one that also does graphics (and presents)
 };
 
-std::vector<PhysicalDevice> enumeratePhysicalDevices(VkInstance instance);
+/// Every physical device as a candidate. With a `surface` (window mode), each candidate says whether one of
+/// its queue families does graphics, compute and presentation to it, and prefers that family.
+std::vector<PhysicalDevice> enumeratePhysicalDevices(VkInstance instance, VkSurfaceKHR surface = VK_NULL_HANDLE);
 
 struct DeviceProperties
 {

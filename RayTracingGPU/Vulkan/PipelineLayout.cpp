@@ -6,12 +6,17 @@ namespace rt::vk
 {
 PipelineLayout::PipelineLayout(const Device& device, const DescriptorSetLayout& setLayout,
                                std::uint32_t pushConstantBytes, VkShaderStageFlags stages)
+    : PipelineLayout(device, std::vector<VkDescriptorSetLayout>{setLayout.Handle()}, pushConstantBytes, stages)
 {
-    const VkDescriptorSetLayout set = setLayout.Handle();
+}
+
+PipelineLayout::PipelineLayout(const Device& device, const std::vector<VkDescriptorSetLayout>& setLayouts,
+                               std::uint32_t pushConstantBytes, VkShaderStageFlags stages)
+{
     const VkPushConstantRange range{stages, 0, pushConstantBytes};
     VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-    info.setLayoutCount = 1;
-    info.pSetLayouts = &set;
+    info.setLayoutCount = static_cast<std::uint32_t>(setLayouts.size());
+    info.pSetLayouts = setLayouts.data();
     info.pushConstantRangeCount = pushConstantBytes > 0 ? 1 : 0;
     info.pPushConstantRanges = &range;
     VkPipelineLayout layout = VK_NULL_HANDLE;

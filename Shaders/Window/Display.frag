@@ -1,0 +1,27 @@
+// The window's ray-traced image: the accumulation image's radiance sum over its sample count, clamped and
+// sRGB-encoded like a PNG written by the headless mode, or the heatmap of the cost image (ticks per sample).
+// The images are the window's size, so the fragment's pixel is the image's texel.
+#version 460
+#extension GL_EXT_scalar_block_layout : require
+#extension GL_GOOGLE_include_directive : require
+
+#include "Shared/HeatmapPalette.h"
+#include "Shared/HostDevice.h"
+#include "Window/Srgb.glsl"
+
+layout(binding = kDisplayBindingAccumulation, rgba32f) uniform readonly image2D accumulation;
+layout(binding = kDisplayBindingCost, r32f) uniform readonly image2D cost;
+layout(push_constant, scalar) uniform PushBlock { DisplayPushConstants push; };
+
+layout(location = 0) out vec4 color;
+
+void main()
+{
+    ivec2 texel = ivec2(gl_FragCoord.xy);
+    vec4 sum = imageLoad(accumulation, texel);
+    float samples = max(sum.a, 1.0); // a pixel with no sample yet is black
+    vec3 linear = push.mode == DisplayMode_Cost
+                      ? heatmapColor(imageLoad(cost, texel).r / samples / push.costScale)
+                      : sum.rgb / samples;
+    color = displayColor(linear, push.encodeSrgb);
+}
