@@ -20,6 +20,9 @@ struct CameraDesc
 
     /// The thesis' GPU framework gave a lens *aperture* (diameter) instead of a defocus angle.
     static float defocusAngleFromAperture(float aperture, float focusDistance);
+
+    /// Field by field: the windows restart accumulation when any of them changes.
+    bool operator==(const CameraDesc&) const = default;
 };
 
 /// The camera frame for one image size. Raster coordinates: x right in [0, width), y down in [0, height).
