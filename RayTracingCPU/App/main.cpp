@@ -1,4 +1,5 @@
-// ray-tracing-cpu: the CPU path tracer's command line (and, with no --headless, its desktop app).
+// ray-tracing-cpu: the CPU path tracer's command line and, without --headless, its desktop window
+// (App/Gui: the thesis' settings panel, renders off the UI thread, timings of every engine side by side).
 #include <cstdio>
 
 #include <spdlog/spdlog.h>
@@ -8,15 +9,25 @@
 #include "Error.h"
 #include "Scenes/Catalogue.h"
 
+#ifdef RT_WITH_GUI
+#include "App/Gui/GuiApp.h"
+#endif
+
 int main(int argc, char** argv)
 {
     CLI::App app{"ray-tracing-cpu: path tracer of Shirley's three books on the CPU (seq or TBB-parallel), for "
-                 "measuring light-sampling strategies"};
+                 "measuring light-sampling strategies. Without --headless it opens a window."};
     rt::CommonOptions options;
     rt::addCommonOptions(app, options);
     std::string engineName = "multi";
-    app.add_option("--engine", engineName, "single (std::execution::seq) or multi (std::execution::par on TBB)")
+    app.add_option("--engine", engineName,
+                   "single (std::execution::seq) or multi (std::execution::par on TBB); in the window also gpu "
+                   "(the Vulkan engine, when a ray-tracing device exists)")
         ->capture_default_str();
+#ifdef RT_WITH_GUI
+    rt::gui::GuiOptions gui;
+    rt::gui::addGuiOptions(app, gui);
+#endif
 
     return rt::guardedMain(app, argc, argv, [&] {
         spdlog::set_pattern("%^%l%$: %v");
@@ -27,7 +38,18 @@ int main(int argc, char** argv)
             return 0;
         }
         if (!options.headless)
-            throw rt::UsageError("the interactive window is not built yet: run with --headless");
+        {
+#ifdef RT_WITH_GUI
+            return rt::gui::runGui(options, engineName, gui);
+#else
+            throw rt::UsageError("this build has no window (RT_BUILD_GUI=OFF): run with --headless");
+#endif
+        }
+#ifdef RT_WITH_GUI
+        if (gui.anyGiven(app))
+            throw rt::UsageError("--frames, --screenshot, --actions, --state-json, --window-size, --no-gpu and "
+                                 "--validation are for the window: leave out --headless");
+#endif
         const auto engine = rt::parseEngine(engineName);
         if (!engine || *engine == rt::EngineKind::Gpu)
             throw rt::UsageError("--engine must be single or multi (got '" + engineName + "')");

@@ -1,0 +1,61 @@
+// The CPU app's GPU engine, created off the UI thread: creating it opens the Vulkan device and compiles the
+// ray-tracing pipeline, about 10 s on lavapipe. A process may hold one Vulkan device at a time (the loader's
+// device-level function pointers are process-wide), so this is the only one, kept for the app's lifetime;
+// that is also why the window itself draws with OpenGL, not Vulkan.
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "Render/RenderEngine.h"
+
+namespace rt::gui
+{
+class GpuStartup
+{
+public:
+    enum class State
+    {
+        Starting,
+        Ready,
+        Unavailable
+    };
+    struct Status
+    {
+        State state = State::Starting;
+        std::string detail; // Ready: the device's name; Unavailable: why (the DeviceError's text)
+    };
+    struct Options
+    {
+        bool enabled = true; // false: Unavailable at once ("--no-gpu")
+        bool validation = false; // Khronos validation layer on the engine's device
+    };
+
+    explicit GpuStartup(const Options& options);
+    /// Waits for a start in progress, then destroys the engine (and its device) on this thread.
+    ~GpuStartup();
+    GpuStartup(const GpuStartup&) = delete;
+    GpuStartup& operator=(const GpuStartup&) = delete;
+
+    Status status() const;
+    /// Blocks until the engine is ready (returns it) or unavailable (nullptr), or until `giveUp()` is true
+    /// (nullptr; polled every 50 ms).
+    RenderEngine* wait(const std::function<bool()>& giveUp);
+    /// Validation warnings and errors so far (0 without validation or without an engine).
+    std::uint64_t validationMessages() const;
+
+private:
+    void start(const Options& options);
+
+    mutable std::mutex m_mutex;
+    std::condition_variable m_resolved;
+    Status m_status;
+    std::unique_ptr<RenderEngine> m_engine;
+    std::thread m_thread;
+};
+} // namespace rt::gui

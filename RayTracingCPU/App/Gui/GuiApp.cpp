@@ -1,0 +1,219 @@
+#include "App/Gui/GuiApp.h"
+
+#include <algorithm>
+#include <memory>
+#include <optional>
+
+#include <imgui.h>
+#include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
+
+#include "App/Gui/ActionScript.h"
+#include "App/Gui/ImageView.h"
+#include "App/Gui/RenderJob.h"
+#include "App/Gui/Screenshot.h"
+#include "App/Gui/Session.h"
+#include "App/Gui/SettingsPanel.h"
+#include "App/Gui/Theme.h"
+#include "App/Gui/TimingsWindow.h"
+#include "App/Gui/Window.h"
+#include "Error.h"
+#include "IO/AtomicFile.h"
+
+namespace rt::gui
+{
+namespace
+{
+constexpr ImGuiWindowFlags kPaneFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                        ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                        ImGuiWindowFlags_NoBringToFrontOnFocus;
+
+std::string describe(const Preview& p)
+{
+    const ImageSettings& s = p.request.image;
+    const RenderSettings r = s.renderSettings();
+    return fmt::format("{}  |  {}x{}  |  {} spp{}  |  depth {}  |  PDF {}  |  {}  |  {}", s.scene, r.width, r.height(),
+                       p.samples, p.request.loop || p.samples == r.trueSpp() ? "" : fmt::format(" of {}", r.trueSpp()),
+                       s.depth, s.pdf ? "on" : "off", samplingLabel(s.sampling), engineLabel(p.request.engine));
+}
+
+class GuiApp
+{
+public:
+    GuiApp(const GuiOptions& options, const ImageSettings& initial, std::shared_ptr<const Scene> scene,
+           EngineKind engine)
+        : m_options(options),
+          m_window(parseWindowSize(options.windowSize).width, parseWindowSize(options.windowSize).height,
+                   "ray-tracing-cpu: light-sampling lab"),
+          m_job({.enabled = !options.noGpu, .validation = options.validation}, initial, std::move(scene)),
+          m_session(m_job, initial, engine, false)
+    {
+        m_session.setFont(availableFonts().front().name);
+        if (!options.actions.empty())
+            m_script.emplace(options.actions);
+    }
+
+    int run()
+    {
+        int framesLeft = -1; // counts down once the automation has settled
+        bool screenshotFailed = false;
+        while (!m_window.closeRequested())
+        {
+            m_window.waitEvents(automating() ? 1.0 / 60.0 : m_session.progress().busy ? 1.0 / 30.0 : 0.25);
+            m_theme.apply(m_session.display());
+            const bool scriptDone = !m_script || m_script->step(m_session, m_window);
+            m_session.update();
+            m_imageView.update(m_session.preview());
+
+            const FramebufferSize size = m_window.framebufferSize();
+            if (!size.empty()) // minimised or 0x0: nothing to draw into
+            {
+                m_window.beginFrame();
+                drawPanes();
+                m_window.endFrame(m_session.display().dark ? 0.08f : 0.85f);
+            }
+            if (m_options.frames > 0)
+            {
+                if (framesLeft < 0 && scriptDone && settled())
+                    framesLeft = m_options.frames;
+                if (framesLeft > 0 && --framesLeft == 0)
+                {
+                    screenshotFailed = !saveScreenshotIfAsked(size);
+                    break;
+                }
+            }
+            if (!size.empty())
+                m_window.present();
+        }
+        return finish(screenshotFailed);
+    }
+
+private:
+    bool automating() const { return m_options.frames > 0 || (m_script && !m_script->done()); }
+
+    /// The renders started so far have finished (with loop rendering: one has).
+    bool settled() const
+    {
+        return !m_session.progress().busy || (m_session.loop() && m_session.finishedRenders() > 0);
+    }
+
+    bool saveScreenshotIfAsked(FramebufferSize size)
+    {
+        if (m_options.screenshot.empty())
+            return true;
+        if (size.empty())
+        {
+            spdlog::error("no screenshot: the window is {}x{} at the last frame", size.width, size.height);
+            return false;
+        }
+        saveScreenshot(m_options.screenshot, size);
+        spdlog::info("screenshot {} ({}x{})", m_options.screenshot, size.width, size.height);
+        return true;
+    }
+
+    int finish(bool screenshotFailed)
+    {
+        if (!m_options.stateJson.empty())
+        {
+            nlohmann::json state = m_session.stateJson();
+            state["validation_messages"] = m_job.gpuValidationMessages();
+            state["layout"] = m_layout;
+            writeFileAtomically(m_options.stateJson, state.dump(2) + "\n");
+        }
+        int status = 0;
+        if (const std::uint64_t n = m_job.gpuValidationMessages(); n > 0)
+        {
+            spdlog::error("Vulkan validation reported {} warnings or errors (see above)", n);
+            status = 1;
+        }
+        // A person sees failures in the window; a test reads the status.
+        const bool automated = m_options.frames > 0 || m_script.has_value();
+        const int scriptFailures = m_script ? m_script->failures() : 0;
+        if (automated && (scriptFailures > 0 || m_session.failedRenders() > 0 || screenshotFailed))
+            status = 1;
+        return status;
+    }
+
+    void drawPanes()
+    {
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        const float font = ImGui::GetFontSize();
+        // Sized by the font first, the window second; a window too small for that squeezes every pane.
+        const float panelWidth = std::min(std::max(font * 25.0f, display.x * 0.28f), display.x * 0.5f);
+        const float timingsHeight = std::min(std::clamp(display.y * 0.26f, font * 9.0f, font * 18.0f), display.y * 0.4f);
+
+        ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
+        ImGui::SetNextWindowSize(ImVec2(panelWidth, display.y));
+        if (ImGui::Begin("Light-sampling lab: CPU path tracer", nullptr, kPaneFlags))
+            m_panel.draw(m_session);
+        ImGui::End();
+
+        const std::shared_ptr<const Preview>& preview = m_session.preview();
+        const bool stale = m_session.imageIsStale();
+        const JobProgress& progress = m_session.progress();
+        std::string overlay;
+        if (!preview)
+            overlay = progress.busy ? "rendering the first image..." : "no image yet: press Render";
+        else if (stale)
+            overlay = progress.busy ? fmt::format("rendered with other settings; rendering the panel's: {:.0f}%",
+                                                  progress.fraction * 100.0)
+                                    : "rendered with other settings: press Render";
+        std::string title = preview ? "Image: " + describe(*preview) : std::string("Image");
+        if (preview && !preview->complete && !(progress.busy && !stale))
+            title += "  |  cancelled";
+        title += "###image";
+        ImGui::SetNextWindowPos(ImVec2(panelWidth, 0.0f));
+        ImGui::SetNextWindowSize(ImVec2(display.x - panelWidth, display.y - timingsHeight));
+        if (ImGui::Begin(title.c_str(), nullptr, kPaneFlags))
+            m_imageView.draw(stale, overlay);
+        ImGui::End();
+
+        ImGui::SetNextWindowPos(ImVec2(panelWidth, display.y - timingsHeight));
+        ImGui::SetNextWindowSize(ImVec2(display.x - panelWidth, timingsHeight));
+        if (ImGui::Begin("Timings", nullptr, kPaneFlags))
+            drawTimings(m_session);
+        ImGui::End();
+
+        // Where things are, in framebuffer pixels (what a screenshot holds): tests crop the panes with it.
+        const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+        const auto pixels = [&](float x, float y, float w, float h) {
+            return std::array{int(x * scale.x + 0.5f), int(y * scale.y + 0.5f), int(w * scale.x + 0.5f),
+                              int(h * scale.y + 0.5f)};
+        };
+        const auto& image = m_imageView.drawnRect();
+        m_layout = {{"panel", pixels(0.0f, 0.0f, panelWidth, display.y)},
+                    {"image", pixels(image[0], image[1], image[2], image[3])},
+                    {"timings", pixels(panelWidth, display.y - timingsHeight, display.x - panelWidth, timingsHeight)}};
+    }
+
+    const GuiOptions& m_options;
+    Window m_window; // first: the GL context outlives every GL object below
+    RenderJob m_job;
+    Session m_session;
+    Theme m_theme;
+    SettingsPanel m_panel;
+    ImageView m_imageView;
+    std::optional<ActionScript> m_script;
+    nlohmann::json m_layout; // of the last frame drawn, for --state-json
+};
+} // namespace
+
+int runGui(const CommonOptions& options, const std::string& engineName, const GuiOptions& gui)
+{
+    const auto engine = parseEngine(engineName);
+    if (!engine)
+        throw UsageError("--engine must be single, multi or gpu (got '" + engineName + "')");
+    for (const auto& [flag, value] : {std::pair{"--output", &options.output}, {"--hdr", &options.hdr}, {"--stats", &options.stats}})
+        if (!value->empty())
+            throw UsageError(std::string(flag) + " is for --headless runs; in the window, use Save image");
+    parseWindowSize(gui.windowSize);
+    checkGuiOutputPaths(gui);
+    if (!gui.actions.empty())
+        ActionScript{gui.actions}; // a typo fails here, before a window opens
+    auto scene = std::make_shared<const Scene>(makeScene(options.scene, options.sceneOptions()));
+    const ImageSettings initial =
+        ImageSettings::from(options.scene, options.sceneOptions(), resolveSettings(options, *scene));
+    GuiApp app(gui, initial, std::move(scene), *engine);
+    return app.run();
+}
+} // namespace rt::gui

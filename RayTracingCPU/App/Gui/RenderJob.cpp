@@ -1,0 +1,258 @@
+#include "App/Gui/RenderJob.h"
+
+#include <chrono>
+#include <utility>
+
+#include "App/Gui/DisplayEncoding.h"
+#include "Error.h"
+#include "Scenes/Catalogue.h"
+
+namespace rt::gui
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+// Previews faster than the window redraws are wasted work on the render thread, and that time is inside
+// the render time the timings table reports.
+constexpr auto kPreviewInterval = std::chrono::milliseconds(50);
+
+/// The mean of two independent estimates, weighted by their samples per pixel (loop rendering).
+Image combine(const Image& mean, int meanSamples, const Image& estimate, int samples)
+{
+    if (meanSamples == 0)
+        return estimate;
+    Image out(estimate.width(), estimate.height());
+    const float keep = float(meanSamples) / float(meanSamples + samples);
+    for (std::size_t i = 0; i < out.pixelCount(); ++i)
+        out.data()[i] = mean.data()[i] * keep + estimate.data()[i] * (1.0f - keep);
+    return out;
+}
+} // namespace
+
+RenderJob::RenderJob(const GpuStartup::Options& gpu, const ImageSettings& initial,
+                     std::shared_ptr<const Scene> initialScene)
+    : m_gpu(gpu), m_scene(std::move(initialScene)), m_sceneKey(initial)
+{
+    m_slots[std::size_t(EngineKind::Single)].engine = &m_single;
+    m_slots[std::size_t(EngineKind::Multi)].engine = &m_multi;
+    m_sceneDefaults[initial.scene] = m_scene->defaults;
+    m_worker = std::thread([this] { workerLoop(); });
+}
+
+RenderJob::~RenderJob()
+{
+    {
+        std::lock_guard lock(m_mutex);
+        m_stop = true;
+        m_pending.reset();
+        if (m_control)
+            m_control->requestCancel();
+    }
+    m_wake.notify_all();
+    m_worker.join();
+}
+
+void RenderJob::submit(const RenderRequest& request)
+{
+    {
+        std::lock_guard lock(m_mutex);
+        m_pending = request;
+        m_loop = request.loop;
+        if (m_control)
+            m_control->requestCancel();
+    }
+    m_wake.notify_all();
+}
+
+void RenderJob::cancel()
+{
+    std::lock_guard lock(m_mutex);
+    m_pending.reset();
+    if (m_control)
+        m_control->requestCancel();
+}
+
+bool RenderJob::setLoop(bool loop)
+{
+    std::lock_guard lock(m_mutex);
+    m_loop = loop;
+    return m_pending.has_value() || m_phase != JobPhase::Idle;
+}
+
+JobProgress RenderJob::progress() const
+{
+    std::lock_guard lock(m_mutex);
+    JobProgress p;
+    p.phase = m_phase;
+    p.busy = m_pending.has_value() || m_phase != JobPhase::Idle;
+    p.loopIteration = m_loopIteration;
+    if (m_control && m_phase == JobPhase::Rendering)
+    {
+        p.fraction = m_control->fraction();
+        p.elapsedSeconds = m_control->elapsedSeconds();
+        p.etaSeconds = m_control->etaSeconds();
+    }
+    return p;
+}
+
+std::shared_ptr<const Preview> RenderJob::latestPreview() const
+{
+    std::lock_guard lock(m_mutex);
+    return m_preview;
+}
+
+std::vector<RenderOutcome> RenderJob::takeOutcomes()
+{
+    std::lock_guard lock(m_mutex);
+    return std::exchange(m_outcomes, {});
+}
+
+std::optional<SceneDefaults> RenderJob::sceneDefaults(const std::string& sceneId) const
+{
+    std::lock_guard lock(m_mutex);
+    const auto it = m_sceneDefaults.find(sceneId);
+    return it == m_sceneDefaults.end() ? std::nullopt : std::optional(it->second);
+}
+
+void RenderJob::workerLoop()
+{
+    std::unique_lock lock(m_mutex);
+    for (;;)
+    {
+        m_wake.wait(lock, [this] { return m_stop || m_pending.has_value(); });
+        if (m_stop)
+            return;
+        const RenderRequest request = std::move(*m_pending);
+        m_pending.reset();
+        // Made under the lock that submit() and cancel() take, so a newer request always finds it to cancel.
+        m_control = std::make_shared<RenderControl>();
+        auto control = m_control;
+        lock.unlock();
+        run(request, std::move(control));
+        lock.lock();
+        m_control.reset();
+        m_phase = JobPhase::Idle;
+        m_loopIteration = 0;
+    }
+}
+
+void RenderJob::run(const RenderRequest& request, std::shared_ptr<RenderControl> control)
+{
+    try
+    {
+        RenderEngine* engine = engineFor(request.engine, *control);
+        if (!engine)
+            return report({.request = request, .cancelled = true});
+        setPhase(JobPhase::BuildingScene);
+        const std::shared_ptr<const Scene> scene = sceneFor(request.image);
+        EngineSlot& slot = m_slots[std::size_t(request.engine)];
+        if (slot.scene != scene)
+        {
+            // The old scene lives until setScene has replaced what points into it; if setScene throws, the
+            // slot stays empty and the next request sets the scene again.
+            const auto previous = std::exchange(slot.scene, nullptr);
+            engine->setScene(*scene);
+            slot.scene = scene;
+        }
+
+        Image mean;
+        int meanSamples = 0;
+        for (int iteration = 0; control; ++iteration)
+        {
+            RenderSettings settings = request.image.renderSettings();
+            settings.seed += static_cast<std::uint32_t>(iteration); // independent streams, wrapping is fine
+            setPhase(JobPhase::Rendering, iteration);
+            Clock::time_point lastPreview{};
+            const RenderResult result =
+                engine->render(settings, *control, [&](const Image& estimate, int samples) {
+                    if (samples <= 0 || Clock::now() - lastPreview < kPreviewInterval)
+                        return;
+                    lastPreview = Clock::now();
+                    publish(request, combine(mean, meanSamples, estimate, samples), meanSamples + samples, false);
+                });
+            if (result.stats.cancelled)
+                return report({.request = request, .cancelled = true});
+            mean = combine(mean, meanSamples, result.image, result.stats.trueSpp);
+            meanSamples += result.stats.trueSpp;
+            publish(request, mean, meanSamples, true, RenderOutcome{.request = request, .stats = result.stats});
+            control = nextIteration();
+        }
+    }
+    catch (const std::exception& e)
+    {
+        report({.request = request, .error = e.what()});
+    }
+}
+
+RenderEngine* RenderJob::engineFor(EngineKind kind, const RenderControl& control)
+{
+    EngineSlot& slot = m_slots[std::size_t(kind)];
+    if (slot.engine)
+        return slot.engine;
+    setPhase(JobPhase::WaitingForGpu);
+    slot.engine = m_gpu.wait([&] { return control.cancelRequested(); });
+    if (slot.engine)
+        return slot.engine;
+    const GpuStartup::Status status = m_gpu.status();
+    if (status.state == GpuStartup::State::Unavailable)
+        throw DeviceError("the GPU engine is unavailable: " + status.detail);
+    return nullptr;
+}
+
+std::shared_ptr<const Scene> RenderJob::sceneFor(const ImageSettings& image)
+{
+    if (m_scene && m_sceneKey.sameScene(image))
+        return m_scene;
+    auto scene = std::make_shared<const Scene>(makeScene(image.scene, image.sceneOptions()));
+    {
+        std::lock_guard lock(m_mutex);
+        m_sceneDefaults[image.scene] = scene->defaults;
+    }
+    m_scene = scene;
+    m_sceneKey = image;
+    return scene;
+}
+
+void RenderJob::setPhase(JobPhase phase, int loopIteration)
+{
+    std::lock_guard lock(m_mutex);
+    m_phase = phase;
+    m_loopIteration = loopIteration;
+}
+
+void RenderJob::publish(const RenderRequest& request, Image estimate, int samples, bool complete,
+                        std::optional<RenderOutcome> outcome)
+{
+    auto preview = std::make_shared<Preview>();
+    preview->request = request;
+    preview->samples = samples;
+    preview->complete = complete;
+    preview->rgba = toDisplayRgba(estimate); // before the lock: the UI never waits for this
+    preview->linear = std::move(estimate);
+    std::lock_guard lock(m_mutex);
+    preview->generation = ++m_generation;
+    m_preview = std::move(preview);
+    if (outcome)
+        m_outcomes.push_back(std::move(*outcome));
+}
+
+void RenderJob::report(RenderOutcome outcome)
+{
+    std::lock_guard lock(m_mutex);
+    m_outcomes.push_back(std::move(outcome));
+}
+
+std::shared_ptr<RenderControl> RenderJob::nextIteration()
+{
+    std::lock_guard lock(m_mutex);
+    if (!m_loop || m_stop || m_pending || m_control->cancelRequested())
+    {
+        // Idle under the lock that decided it: a setLoop(true) from now on learns that it must submit.
+        m_phase = JobPhase::Idle;
+        return nullptr;
+    }
+    m_control = std::make_shared<RenderControl>();
+    return m_control;
+}
+} // namespace rt::gui

@@ -1,0 +1,144 @@
+// The window's render thread. It owns the engines and renders one request at a time, so the UI thread never
+// waits on a render (the thesis' app froze while it rendered). The UI submits requests and reads back
+// progress, progressive previews and outcomes; every exchange goes through one mutex, and a preview is an
+// immutable snapshot the UI can hold while the next one is being made.
+#pragma once
+
+#include <array>
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <unordered_map>
+#include <vector>
+
+#include "App/Gui/GpuStartup.h"
+#include "App/Gui/PanelSettings.h"
+#include "Engine/CpuEngine.h"
+#include "Render/RenderControl.h"
+#include "Render/RenderStats.h"
+#include "Scene/Scene.h"
+
+namespace rt::gui
+{
+struct RenderRequest
+{
+    ImageSettings image;
+    EngineKind engine = EngineKind::Multi;
+    bool loop = false; // loop rendering: when a render finishes, render again with the next seed and average
+};
+
+/// An estimate on its way or finished, with the request it belongs to.
+struct Preview
+{
+    std::uint64_t generation = 0; // grows with every preview published
+    RenderRequest request;
+    int samples = 0; // samples per pixel in the estimate, every loop iteration together
+    bool complete = false; // a render (or a loop iteration) finished; false for passes and cancelled renders
+    Image linear; // linear radiance, for Save image
+    std::vector<unsigned char> rgba; // the same as sRGB RGBA8, for the screen
+};
+
+enum class JobPhase
+{
+    Idle,
+    WaitingForGpu, // the GPU engine is still starting
+    BuildingScene, // makeScene and the engine's acceleration structures
+    Rendering
+};
+
+struct JobProgress
+{
+    JobPhase phase = JobPhase::Idle;
+    bool busy = false; // a render runs or a request waits to start
+    double fraction = 0.0; // of the render (loop iteration) in progress
+    double elapsedSeconds = 0.0;
+    double etaSeconds = -1.0; // negative while unknown
+    int loopIteration = 0;
+};
+
+/// What became of a request: one per finished render (each loop iteration), or its cancellation or failure.
+struct RenderOutcome
+{
+    RenderRequest request;
+    std::optional<RenderStats> stats; // set when the render ran to the end
+    bool cancelled = false;
+    std::string error; // set when it failed
+};
+
+class RenderJob
+{
+public:
+    /// `initialScene`, already built from `initial` (the command line's scene), is used rather than built again.
+    RenderJob(const GpuStartup::Options& gpu, const ImageSettings& initial, std::shared_ptr<const Scene> initialScene);
+    /// Cancels the render in progress and joins the render thread (and the GPU engine's start).
+    ~RenderJob();
+    RenderJob(const RenderJob&) = delete;
+    RenderJob& operator=(const RenderJob&) = delete;
+
+    /// Renders `request` once the render in progress has stopped: that one is cancelled, and a request that
+    /// has not started yet is replaced (twenty quick scene switches render the last scene, once).
+    void submit(const RenderRequest& request);
+    /// Cancels the render in progress and drops a waiting request.
+    void cancel();
+    /// Loop rendering of the request in progress; off stops after the current iteration. Returns false when
+    /// no request is in progress or waiting (nothing will loop until the next submit).
+    bool setLoop(bool loop);
+
+    JobProgress progress() const;
+    /// The newest preview; nullptr before the first.
+    std::shared_ptr<const Preview> latestPreview() const;
+    /// Outcomes since the last call, oldest first.
+    std::vector<RenderOutcome> takeOutcomes();
+    /// The defaults of a scene the job has built; empty for one it has not.
+    std::optional<SceneDefaults> sceneDefaults(const std::string& sceneId) const;
+    GpuStartup::Status gpuStatus() const { return m_gpu.status(); }
+    std::uint64_t gpuValidationMessages() const { return m_gpu.validationMessages(); }
+
+private:
+    struct EngineSlot
+    {
+        RenderEngine* engine = nullptr;
+        std::shared_ptr<const Scene> scene; // the scene the engine was last given: it must outlive its renders
+    };
+
+    void workerLoop();
+    void run(const RenderRequest& request, std::shared_ptr<RenderControl> control);
+    /// The engine for `kind`, waiting for the GPU engine to start; nullptr when the wait was cancelled.
+    RenderEngine* engineFor(EngineKind kind, const RenderControl& control);
+    std::shared_ptr<const Scene> sceneFor(const ImageSettings& image);
+    void setPhase(JobPhase phase, int loopIteration = 0);
+    /// Publishes an estimate (and, when given, the outcome that goes with it) in one step.
+    void publish(const RenderRequest& request, Image estimate, int samples, bool complete,
+                 std::optional<RenderOutcome> outcome = {});
+    void report(RenderOutcome outcome);
+    /// After a finished loop iteration: the control of the next one, or nullptr when the loop must stop.
+    std::shared_ptr<RenderControl> nextIteration();
+
+    GpuStartup m_gpu; // declared first: destroyed last, after the render thread has stopped using its engine
+    cpu::CpuEngine m_single{EngineKind::Single};
+    cpu::CpuEngine m_multi{EngineKind::Multi};
+    // Touched by the render thread only.
+    std::array<EngineSlot, 3> m_slots; // by EngineKind
+    std::shared_ptr<const Scene> m_scene; // the last scene built, for the next request of the same scene
+    ImageSettings m_sceneKey;
+
+    mutable std::mutex m_mutex;
+    std::condition_variable m_wake;
+    bool m_stop = false;
+    bool m_loop = false;
+    std::optional<RenderRequest> m_pending;
+    std::shared_ptr<RenderControl> m_control; // of the render in progress
+    JobPhase m_phase = JobPhase::Idle;
+    int m_loopIteration = 0;
+    std::shared_ptr<const Preview> m_preview;
+    std::uint64_t m_generation = 0;
+    std::vector<RenderOutcome> m_outcomes;
+    std::unordered_map<std::string, SceneDefaults> m_sceneDefaults;
+
+    std::thread m_worker; // last: starts after everything above exists
+};
+} // namespace rt::gui

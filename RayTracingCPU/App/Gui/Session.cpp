@@ -1,0 +1,261 @@
+#include "App/Gui/Session.h"
+
+#include <algorithm>
+
+#include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
+
+#include "Error.h"
+#include "Image/ImageIO.h"
+
+namespace rt::gui
+{
+namespace
+{
+nlohmann::json toJson(const ImageSettings& s)
+{
+    const RenderSettings r = s.renderSettings();
+    return {{"scene", s.scene},       {"count", s.count},
+            {"mesh", s.meshPath},     {"spp", s.spp},
+            {"true_spp", r.trueSpp()}, {"depth", s.depth},
+            {"width", s.width},       {"height", r.height()},
+            {"aspect", s.aspect},     {"sampling", toString(s.sampling)},
+            {"pdf", s.pdf},           {"unidirectional_light", s.unidirectionalLight},
+            {"seed", s.seed}};
+}
+
+const char* toString(GpuStartup::State state)
+{
+    switch (state)
+    {
+    case GpuStartup::State::Starting: return "starting";
+    case GpuStartup::State::Ready: return "ready";
+    case GpuStartup::State::Unavailable: return "unavailable";
+    }
+    return "?";
+}
+} // namespace
+
+Session::Session(RenderJob& job, const ImageSettings& image, EngineKind engine, bool loop)
+    : m_job(job), m_image(image), m_engine(engine), m_loop(loop), m_gpu(job.gpuStatus())
+{
+    render(); // the window opens on the command line's render
+}
+
+bool Session::tryImage(const ImageSettings& candidate)
+{
+    try
+    {
+        candidate.renderSettings().validate();
+    }
+    catch (const Error& e)
+    {
+        note(e.what(), true);
+        return false;
+    }
+    m_image = candidate;
+    return true;
+}
+
+bool Session::setScene(const std::string& id)
+{
+    if (!findScene(id))
+    {
+        note(fmt::format("no scene '{}'", id), true);
+        return false;
+    }
+    ImageSettings s = m_image;
+    s.scene = id;
+    return tryImage(s);
+}
+
+bool Session::setSpp(int spp)
+{
+    ImageSettings s = m_image;
+    s.spp = spp;
+    return tryImage(s);
+}
+
+bool Session::setDepth(int depth)
+{
+    ImageSettings s = m_image;
+    s.depth = depth;
+    return tryImage(s);
+}
+
+bool Session::setWidth(int width)
+{
+    ImageSettings s = m_image;
+    s.width = width;
+    return tryImage(s);
+}
+
+bool Session::setAspect(float aspect)
+{
+    ImageSettings s = m_image;
+    s.aspect = aspect;
+    return tryImage(s);
+}
+
+bool Session::setSeed(long long seed)
+{
+    if (seed < 0 || seed > 0xFFFFFFFFll)
+    {
+        note(fmt::format("seed must be in [0, 4294967295] (got {})", seed), true);
+        return false;
+    }
+    ImageSettings s = m_image;
+    s.seed = static_cast<std::uint32_t>(seed);
+    return tryImage(s);
+}
+
+bool Session::setCount(int count)
+{
+    ImageSettings s = m_image;
+    s.count = count < 0 ? -1 : count;
+    return tryImage(s);
+}
+
+void Session::setSampling(PixelSampling sampling) { m_image.sampling = sampling; }
+void Session::setPdf(bool on) { m_image.pdf = on; }
+void Session::setUnidirectionalLight(bool on) { m_image.unidirectionalLight = on; }
+
+bool Session::applySceneDefaults()
+{
+    const std::optional<SceneDefaults> d = m_job.sceneDefaults(m_image.scene);
+    if (!d)
+        return false;
+    ImageSettings s = m_image;
+    s.spp = d->spp;
+    s.depth = d->depth;
+    s.width = d->width;
+    s.aspect = d->aspect;
+    s.unidirectionalLight = d->unidirectionalLight;
+    return tryImage(s);
+}
+
+bool Session::selectEngine(EngineKind engine)
+{
+    if (engine == EngineKind::Gpu && m_gpu.state == GpuStartup::State::Unavailable)
+    {
+        note("the GPU engine is unavailable: " + m_gpu.detail, true);
+        return false;
+    }
+    m_engine = engine;
+    return true;
+}
+
+void Session::setLoop(bool on)
+{
+    m_loop = on;
+    if (!m_job.setLoop(on) && on)
+        render(); // loop rendering of an idle window starts rendering, as the thesis' checkbox did
+}
+
+void Session::render()
+{
+    m_requested = m_image;
+    m_message.clear();
+    m_job.submit({.image = m_image, .engine = m_engine, .loop = m_loop});
+    m_progress = m_job.progress();
+}
+
+void Session::cancel()
+{
+    m_job.cancel();
+    note("cancelled", false);
+}
+
+bool Session::saveImage(const std::filesystem::path& png)
+{
+    if (!m_preview)
+    {
+        note("nothing rendered yet", true);
+        return false;
+    }
+    try
+    {
+        if (png.extension() != ".png")
+            throw UsageError(fmt::format("'{}' must end in .png (the .pfm goes beside it)", png.string()));
+        std::filesystem::path pfm = png;
+        pfm.replace_extension(".pfm");
+        writePng(png, m_preview->linear);
+        writePfm(pfm, m_preview->linear);
+        note(fmt::format("saved {} and {}", png.string(), pfm.filename().string()), false);
+        return true;
+    }
+    catch (const Error& e)
+    {
+        note(e.what(), true);
+        return false;
+    }
+}
+
+std::string Session::suggestedImageName() const
+{
+    const ImageSettings& s = m_preview ? m_preview->request.image : m_image;
+    const RenderSettings r = s.renderSettings();
+    return fmt::format("{}_{}x{}_{}spp_{}.png", s.scene, r.width, r.height(), m_preview ? m_preview->samples : r.trueSpp(),
+                       toString(m_preview ? m_preview->request.engine : m_engine));
+}
+
+void Session::setFontSize(float pixels) { m_display.fontSize = std::clamp(pixels, 10.0f, 32.0f); }
+
+void Session::update()
+{
+    m_gpu = m_job.gpuStatus();
+    if (m_engine == EngineKind::Gpu && m_gpu.state == GpuStartup::State::Unavailable)
+    {
+        m_engine = EngineKind::Multi;
+        note("the GPU engine is unavailable (" + m_gpu.detail + "): switched to multi core", true);
+    }
+    if (m_requested != m_image)
+        render();
+    // Progress first: once it says idle, the outcomes taken next are all there are.
+    m_progress = m_job.progress();
+    for (RenderOutcome& outcome : m_job.takeOutcomes())
+    {
+        if (outcome.stats)
+        {
+            m_timings.record(outcome.request.image, *outcome.stats);
+            ++m_finished;
+            m_lastFinished = std::move(outcome);
+        }
+        else if (!outcome.error.empty())
+        {
+            ++m_failed;
+            spdlog::error("render failed: {}", outcome.error);
+            note("render failed: " + outcome.error, true);
+        }
+        // A cancellation is either the user's (cancel() said so) or a newer request's: nothing to say.
+    }
+    m_preview = m_job.latestPreview();
+}
+
+void Session::note(std::string text, bool error)
+{
+    m_message = std::move(text);
+    m_messageIsError = error;
+}
+
+nlohmann::json Session::stateJson() const
+{
+    nlohmann::json panel = toJson(m_image);
+    panel["engine"] = rt::toString(m_engine);
+    panel["loop"] = m_loop;
+    nlohmann::json image = nullptr;
+    if (m_preview)
+        image = {{"settings", toJson(m_preview->request.image)},
+                 {"engine", rt::toString(m_preview->request.engine)},
+                 {"samples", m_preview->samples},
+                 {"complete", m_preview->complete}};
+    return {{"panel", panel},
+            {"image", image},
+            {"image_matches_panel", !imageIsStale()},
+            {"timings", m_timings.toJson()},
+            {"gpu", {{"state", toString(m_gpu.state)}, {"detail", m_gpu.detail}}},
+            {"finished_renders", m_finished},
+            {"failed_renders", m_failed},
+            {"message", m_message}};
+}
+} // namespace rt::gui

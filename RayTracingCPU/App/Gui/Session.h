@@ -1,0 +1,101 @@
+// The window's state and the commands that change it. The panel's widgets and the --actions script call the
+// same functions, so a test drives exactly what a person's clicks do. Image settings start a new render as
+// soon as they differ from the last request's (no stale camera, no setting that waits for a scene rebuild);
+// the engine and loop rendering apply to the next render.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "App/Gui/PanelSettings.h"
+#include "App/Gui/RenderJob.h"
+#include "App/Gui/TimingsTable.h"
+
+namespace rt::gui
+{
+class Session
+{
+public:
+    /// Starts rendering `image` with `engine` at once.
+    Session(RenderJob& job, const ImageSettings& image, EngineKind engine, bool loop);
+
+    // Image settings. Each returns false, with message(), for a value the engines would refuse.
+    bool setScene(const std::string& id);
+    bool setSpp(int spp);
+    bool setDepth(int depth);
+    bool setWidth(int width);
+    bool setAspect(float aspect);
+    bool setSeed(long long seed);
+    /// white-spheres' sphere count; negative: the scene's default.
+    bool setCount(int count);
+    void setSampling(PixelSampling sampling);
+    void setPdf(bool on);
+    void setUnidirectionalLight(bool on);
+    /// The selected scene's own spp, depth, width, aspect and light mode; false until the scene was built once.
+    bool applySceneDefaults();
+
+    /// False, with message(), when the GPU engine is unavailable.
+    bool selectEngine(EngineKind engine);
+    void setLoop(bool on);
+    void render();
+    void cancel();
+
+    /// Writes the image on screen: `png` (sRGB) and the same name with .pfm (linear radiance).
+    bool saveImage(const std::filesystem::path& png);
+    /// scene_WxH_Nspp_engine.png, from the image on screen.
+    std::string suggestedImageName() const;
+    void clearTimings() { m_timings.clear(); }
+
+    void setDark(bool dark) { m_display.dark = dark; }
+    void setFont(const std::string& font) { m_display.font = font; }
+    void setFontSize(float pixels);
+
+    /// Once per frame: starts a render when the image settings differ from the last request's, collects
+    /// the render thread's outcomes and newest preview.
+    void update();
+
+    const ImageSettings& image() const { return m_image; }
+    EngineKind engine() const { return m_engine; }
+    bool loop() const { return m_loop; }
+    const DisplaySettings& display() const { return m_display; }
+    const JobProgress& progress() const { return m_progress; }
+    const GpuStartup::Status& gpu() const { return m_gpu; }
+    const std::shared_ptr<const Preview>& preview() const { return m_preview; }
+    /// True when the image on screen was rendered with other image settings than the panel shows.
+    bool imageIsStale() const { return !m_preview || m_preview->request.image != m_image; }
+    /// The latest render that ran to the end.
+    const std::optional<RenderOutcome>& lastFinished() const { return m_lastFinished; }
+    /// The latest error or note for the status line; empty when there is none.
+    const std::string& message() const { return m_message; }
+    bool messageIsError() const { return m_messageIsError; }
+    const TimingsTable& timings() const { return m_timings; }
+    int finishedRenders() const { return m_finished; }
+    int failedRenders() const { return m_failed; }
+    /// The panel, the image on screen, the timings and the GPU engine's status (--state-json).
+    nlohmann::json stateJson() const;
+
+private:
+    bool tryImage(const ImageSettings& candidate);
+    void note(std::string text, bool error);
+
+    RenderJob& m_job;
+    ImageSettings m_image;
+    EngineKind m_engine;
+    bool m_loop;
+    DisplaySettings m_display;
+    std::optional<ImageSettings> m_requested; // the image settings of the last request
+    JobProgress m_progress;
+    GpuStartup::Status m_gpu;
+    std::shared_ptr<const Preview> m_preview;
+    std::optional<RenderOutcome> m_lastFinished;
+    std::string m_message;
+    bool m_messageIsError = false;
+    TimingsTable m_timings;
+    int m_finished = 0;
+    int m_failed = 0;
+};
+} // namespace rt::gui

@@ -1,0 +1,277 @@
+#include "App/Gui/SettingsPanel.h"
+
+#include <thread>
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+#include <spdlog/fmt/fmt.h>
+
+#include "App/Gui/Theme.h"
+#include "Scenes/Catalogue.h"
+
+namespace rt::gui
+{
+namespace
+{
+// Numeric fields apply on Enter (or a +/- click): every applied change starts a render, and a render per
+// keystroke of "1000" would be three wasted ones.
+constexpr ImGuiInputTextFlags kApplyOnEnter = ImGuiInputTextFlags_EnterReturnsTrue;
+
+void tooltip(const char* text)
+{
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+        ImGui::TextUnformatted(text);
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+    }
+}
+
+/// Fields as wide as the panel allows with their labels still whole on their right.
+void pushFieldWidth()
+{
+    ImGui::PushItemWidth(-(ImGui::CalcTextSize("Samples per pixel").x + ImGui::GetStyle().ItemInnerSpacing.x * 2.0f));
+}
+
+std::string duration(double seconds)
+{
+    if (seconds < 0.0)
+        return "?";
+    if (seconds < 60.0)
+        return fmt::format("{:.1f} s", seconds);
+    return fmt::format("{}:{:02}", int(seconds) / 60, int(seconds) % 60);
+}
+} // namespace
+
+void SettingsPanel::draw(Session& session)
+{
+    pushFieldWidth();
+    if (ImGui::CollapsingHeader("UI parameters"))
+        drawUiParameters(session);
+    ImGui::SetNextItemOpen(true, ImGuiCond_Once);
+    if (ImGui::CollapsingHeader("Rendering parameters"))
+        drawRenderingParameters(session);
+    ImGui::Spacing();
+    drawRenderControls(session);
+    ImGui::Spacing();
+    ImGui::SetNextItemOpen(true, ImGuiCond_Once);
+    if (ImGui::CollapsingHeader("Save image"))
+        drawSaveImage(session);
+    ImGui::PopItemWidth();
+}
+
+void SettingsPanel::drawUiParameters(Session& session)
+{
+    const DisplaySettings& d = session.display();
+    if (ImGui::RadioButton("Dark", d.dark))
+        session.setDark(true);
+    ImGui::SameLine();
+    if (ImGui::RadioButton("Light", !d.dark))
+        session.setDark(false);
+    if (ImGui::BeginCombo("Font", d.font.c_str()))
+    {
+        for (const FontChoice& f : availableFonts())
+            if (ImGui::Selectable(f.name.c_str(), f.name == d.font))
+                session.setFont(f.name);
+        ImGui::EndCombo();
+    }
+    float size = d.fontSize;
+    ImGui::SliderFloat("Font size", &size, 10.0f, 32.0f, "%.0f px");
+    if (ImGui::IsItemDeactivatedAfterEdit()) // a new atlas per drag step would stutter
+        session.setFontSize(size);
+}
+
+void SettingsPanel::drawRenderingParameters(Session& session)
+{
+    const ImageSettings& s = session.image();
+    const SceneInfo* current = findScene(s.scene);
+    if (ImGui::BeginCombo("Scene", s.scene.c_str(), ImGuiComboFlags_HeightLarge))
+    {
+        for (const SceneInfo& info : sceneCatalogue())
+        {
+            if (ImGui::Selectable(info.id.c_str(), info.id == s.scene))
+                session.setScene(info.id);
+            ImGui::SameLine(ImGui::GetFontSize() * 12.0f);
+            ImGui::TextDisabled("%s", info.title.c_str());
+        }
+        ImGui::EndCombo();
+    }
+    if (ImGui::SmallButton("Scene defaults"))
+        session.applySceneDefaults();
+    tooltip("the scene's own spp, depth, width, aspect ratio and light mode");
+    if (current)
+    {
+        ImGui::SameLine();
+        ImGui::TextDisabled("%s", current->title.c_str());
+        tooltip(current->source.c_str());
+    }
+
+    int spp = s.spp;
+    if (ImGui::InputInt("Samples per pixel", &spp, 1, 10, kApplyOnEnter))
+        session.setSpp(spp);
+    if (const int trueSpp = s.renderSettings().trueSpp(); trueSpp != s.spp)
+        ImGui::TextDisabled("stratified: a square number of strata, %d true spp", trueSpp);
+    int depth = s.depth;
+    if (ImGui::InputInt("Ray-tracing depth", &depth, 1, 10, kApplyOnEnter))
+        session.setDepth(depth);
+    float aspect = s.aspect;
+    if (ImGui::InputFloat("Aspect ratio", &aspect, 0.0f, 0.0f, "%.4f", kApplyOnEnter))
+        session.setAspect(aspect);
+    int width = s.width;
+    if (ImGui::InputInt("Image width", &width, 16, 128, kApplyOnEnter))
+        session.setWidth(width);
+    ImGui::TextDisabled("%d x %d pixels", s.width, s.renderSettings().height());
+    for (const auto& [label, value] : {std::pair{"1:1", 1.0f}, {"4:3", 4.0f / 3.0f}, {"16:9", 16.0f / 9.0f}})
+    {
+        ImGui::SameLine();
+        if (ImGui::SmallButton(label))
+            session.setAspect(value);
+    }
+    if (s.scene == "white-spheres")
+    {
+        int count = s.count;
+        if (ImGui::InputInt("Spheres", &count, 100, 1000, kApplyOnEnter))
+            session.setCount(count);
+        tooltip("number of white spheres (-1: the scene's default)");
+    }
+
+    drawEngineChoice(session);
+
+    const PixelSampling samplings[] = {PixelSampling::Random, PixelSampling::Accumulate, PixelSampling::Stratified};
+    if (ImGui::BeginCombo("Pixel sampling", samplingLabel(s.sampling)))
+    {
+        for (PixelSampling p : samplings)
+            if (ImGui::Selectable(samplingLabel(p), p == s.sampling))
+                session.setSampling(p);
+        ImGui::EndCombo();
+    }
+    tooltip("normal: spp jittered samples per pixel in one pass; accumulation: 1-spp passes shown as they "
+            "finish; stratified: floor(sqrt(spp))^2 jittered strata");
+    bool pdf = s.pdf;
+    if (ImGui::Checkbox("Probability density function", &pdf))
+        session.setPdf(pdf);
+    tooltip("on: book 3's mixture of BSDF sampling and light sampling over the scene's light list; "
+            "off: BSDF sampling only (books 1 and 2)");
+    bool unidirectional = s.unidirectionalLight;
+    if (ImGui::Checkbox("Unidirectional light", &unidirectional))
+        session.setUnidirectionalLight(unidirectional);
+    tooltip("on: emitters emit from their front face only; off: from both faces");
+    bool loop = session.loop();
+    if (ImGui::Checkbox("Loop rendering", &loop))
+        session.setLoop(loop);
+    tooltip("when a render finishes, render again with the next seed and average: the image keeps converging");
+    std::uint32_t seed = s.seed;
+    const std::uint32_t step = 1;
+    if (ImGui::InputScalar("Seed", ImGuiDataType_U32, &seed, &step, nullptr, "%u", kApplyOnEnter))
+        session.setSeed(seed);
+}
+
+void SettingsPanel::drawEngineChoice(Session& session)
+{
+    ImGui::TextUnformatted("Rendering engine");
+    ImGui::Indent();
+    if (ImGui::RadioButton("Single core CPU", session.engine() == EngineKind::Single))
+        session.selectEngine(EngineKind::Single);
+    const std::string multi = fmt::format("Multi core CPU ({} threads)", std::thread::hardware_concurrency());
+    if (ImGui::RadioButton(multi.c_str(), session.engine() == EngineKind::Multi))
+        session.selectEngine(EngineKind::Multi);
+    const GpuStartup::Status& gpu = session.gpu();
+    switch (gpu.state)
+    {
+    case GpuStartup::State::Starting:
+        if (ImGui::RadioButton("GPU (starting...)", session.engine() == EngineKind::Gpu))
+            session.selectEngine(EngineKind::Gpu);
+        tooltip("the Vulkan device is opening and the ray-tracing pipeline compiling; a GPU render waits for it");
+        break;
+    case GpuStartup::State::Ready:
+        if (ImGui::RadioButton(fmt::format("GPU ({})", gpu.detail).c_str(), session.engine() == EngineKind::Gpu))
+            session.selectEngine(EngineKind::Gpu);
+        break;
+    case GpuStartup::State::Unavailable:
+        ImGui::BeginDisabled();
+        ImGui::RadioButton("GPU (unavailable)", false);
+        ImGui::EndDisabled();
+        tooltip(gpu.detail.c_str());
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextDisabled("%s", gpu.detail.c_str());
+        ImGui::PopTextWrapPos();
+        break;
+    }
+    ImGui::Unindent();
+}
+
+void SettingsPanel::drawRenderControls(Session& session)
+{
+    const JobProgress& p = session.progress();
+    const float half = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) * 0.5f;
+    if (ImGui::Button("Render", ImVec2(half, 0.0f)))
+        session.render();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!p.busy);
+    if (ImGui::Button("Cancel", ImVec2(half, 0.0f)))
+        session.cancel();
+    ImGui::EndDisabled();
+
+    std::string status;
+    float fraction = 0.0f;
+    switch (p.phase)
+    {
+    case JobPhase::Idle: status = p.busy ? "starting..." : session.lastFinished() ? "done" : "idle"; break;
+    case JobPhase::WaitingForGpu: status = "waiting for the GPU engine to start..."; break;
+    case JobPhase::BuildingScene: status = "building the scene..."; break;
+    case JobPhase::Rendering:
+        fraction = static_cast<float>(p.fraction);
+        status = fmt::format("{:.0f}%  {} elapsed, ETA {}", p.fraction * 100.0, duration(p.elapsedSeconds),
+                             duration(p.etaSeconds));
+        if (session.loop())
+            status += fmt::format("  (loop {})", p.loopIteration + 1);
+        break;
+    }
+    if (!p.busy && session.lastFinished())
+        fraction = 1.0f;
+    ImGui::ProgressBar(fraction, ImVec2(-1.0f, 0.0f), status.c_str());
+
+    if (const auto& last = session.lastFinished())
+    {
+        const RenderStats& st = *last->stats;
+        ImGui::Text("Last render: %.3f s", st.renderSeconds);
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextDisabled("%s, %s, %dx%d, %d spp, %.2f Mpaths/s, scene build %.3f s", engineLabel(st.engine),
+                            st.scene.c_str(), st.width, st.height, st.trueSpp, st.mpathsPerSecond(), st.buildSeconds);
+        ImGui::PopTextWrapPos();
+    }
+    else
+        ImGui::TextDisabled("Last render: none yet");
+    if (!session.message().empty())
+    {
+        const ImVec4 colour = session.messageIsError() ? ImVec4(0.95f, 0.40f, 0.35f, 1.0f)
+                                                       : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled);
+        ImGui::PushStyleColor(ImGuiCol_Text, colour);
+        ImGui::PushTextWrapPos(0.0f);
+        ImGui::TextUnformatted(session.message().c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::PopStyleColor();
+    }
+}
+
+void SettingsPanel::drawSaveImage(Session& session)
+{
+    if (!m_savePathEdited)
+        m_savePath = session.suggestedImageName();
+    if (ImGui::InputText("File", &m_savePath))
+        m_savePathEdited = true;
+    tooltip("PNG (sRGB) of the image on screen; the linear radiance goes beside it as .pfm");
+    ImGui::BeginDisabled(!session.preview());
+    if (ImGui::Button("Save PNG + PFM"))
+        session.saveImage(m_savePath);
+    ImGui::EndDisabled();
+    if (m_savePathEdited)
+    {
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Suggested name"))
+            m_savePathEdited = false;
+    }
+}
+} // namespace rt::gui

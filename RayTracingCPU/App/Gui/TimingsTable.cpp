@@ -1,0 +1,55 @@
+#include "App/Gui/TimingsTable.h"
+
+#include <algorithm>
+
+namespace rt::gui
+{
+void TimingsTable::record(const ImageSettings& image, const RenderStats& stats)
+{
+    const TimingKey key{.scene = stats.scene,
+                        .count = image.count,
+                        .width = stats.width,
+                        .height = stats.height,
+                        .spp = stats.trueSpp,
+                        .depth = stats.settings.depth,
+                        .sampling = stats.settings.sampling,
+                        .pdf = stats.settings.estimator == Estimator::Mixture,
+                        .unidirectionalLight = stats.settings.unidirectionalLight};
+    auto row = std::find_if(m_rows.begin(), m_rows.end(), [&](const TimingRow& r) { return r.key == key; });
+    if (row == m_rows.end())
+        row = m_rows.insert(m_rows.end(), TimingRow{.key = key});
+    auto& cell = row->engines[std::size_t(stats.engine)];
+    const double seconds = stats.renderSeconds;
+    if (!cell)
+        cell = EngineTiming{.bestSeconds = seconds};
+    cell->lastSeconds = seconds;
+    cell->bestSeconds = std::min(cell->bestSeconds, seconds);
+    cell->mpathsPerSecond = stats.mpathsPerSecond();
+    cell->renders += 1;
+    cell->device = stats.device;
+}
+
+nlohmann::json TimingsTable::toJson() const
+{
+    nlohmann::json out = nlohmann::json::array();
+    for (const TimingRow& row : m_rows)
+        for (std::size_t e = 0; e < row.engines.size(); ++e)
+            if (const auto& cell = row.engines[e])
+                out.push_back({{"scene", row.key.scene},
+                               {"count", row.key.count},
+                               {"width", row.key.width},
+                               {"height", row.key.height},
+                               {"spp", row.key.spp},
+                               {"depth", row.key.depth},
+                               {"sampling", toString(row.key.sampling)},
+                               {"pdf", row.key.pdf},
+                               {"unidirectional_light", row.key.unidirectionalLight},
+                               {"engine", toString(EngineKind(e))},
+                               {"seconds", cell->lastSeconds},
+                               {"best_seconds", cell->bestSeconds},
+                               {"mpaths_per_second", cell->mpathsPerSecond},
+                               {"renders", cell->renders},
+                               {"device", cell->device}});
+    return out;
+}
+} // namespace rt::gui

@@ -1,0 +1,64 @@
+// Every render that ran to the end in this run of the app, grouped by the work it did (scene, image size,
+// samples, depth, estimator, sampling, light mode) with one column per engine, so single core, multi core
+// and the GPU sit side by side for the same work. Cancelled renders are not timings and never enter it.
+#pragma once
+
+#include <array>
+#include <compare>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "App/Gui/PanelSettings.h"
+#include "Render/RenderStats.h"
+
+namespace rt::gui
+{
+struct TimingKey
+{
+    std::string scene;
+    int count = -1; // white-spheres' sphere count
+    int width = 0;
+    int height = 0;
+    int spp = 0; // true samples per pixel
+    int depth = 0;
+    PixelSampling sampling = PixelSampling::Random;
+    bool pdf = true;
+    bool unidirectionalLight = true;
+
+    auto operator<=>(const TimingKey&) const = default;
+};
+
+struct EngineTiming
+{
+    double lastSeconds = 0.0; // tracing time of the latest render
+    double bestSeconds = 0.0; // and of the fastest
+    double mpathsPerSecond = 0.0; // of the latest
+    int renders = 0;
+    std::string device;
+};
+
+struct TimingRow
+{
+    TimingKey key;
+    std::array<std::optional<EngineTiming>, 3> engines; // by EngineKind
+};
+
+class TimingsTable
+{
+public:
+    /// Adds a finished render (`image`: the panel settings it was rendered with).
+    void record(const ImageSettings& image, const RenderStats& stats);
+    void clear() { m_rows.clear(); }
+    /// In the order their first render finished.
+    const std::vector<TimingRow>& rows() const { return m_rows; }
+    /// One object per (row, engine): scene, width, height, spp, depth, sampling, pdf, unidirectional_light,
+    /// engine, seconds, best_seconds, mpaths_per_second, renders, device.
+    nlohmann::json toJson() const;
+
+private:
+    std::vector<TimingRow> m_rows;
+};
+} // namespace rt::gui

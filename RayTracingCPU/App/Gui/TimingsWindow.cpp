@@ -1,0 +1,100 @@
+#include "App/Gui/TimingsWindow.h"
+
+#include <string>
+
+#include <imgui.h>
+#include <spdlog/fmt/fmt.h>
+
+namespace rt::gui
+{
+namespace
+{
+constexpr EngineKind kEngines[] = {EngineKind::Single, EngineKind::Multi, EngineKind::Gpu};
+
+/// How many times faster than single core `engine` ran this row's work; empty without both timings.
+std::string speedUp(const TimingRow& row, EngineKind engine)
+{
+    const auto& single = row.engines[std::size_t(EngineKind::Single)];
+    const auto& other = row.engines[std::size_t(engine)];
+    if (!single || !other || other->lastSeconds <= 0.0)
+        return {};
+    return fmt::format("{} {:.1f}x", engine == EngineKind::Gpu ? "GPU" : "multi", single->lastSeconds / other->lastSeconds);
+}
+} // namespace
+
+void drawTimings(Session& session)
+{
+    const TimingsTable& table = session.timings();
+    ImGui::TextUnformatted("Timings of this session");
+    ImGui::SameLine();
+    ImGui::TextDisabled("(tracing time of the latest render and its Mpaths/s; hover for best of n)");
+    ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - ImGui::CalcTextSize("Clear").x -
+                    ImGui::GetStyle().FramePadding.x * 2.0f);
+    if (ImGui::SmallButton("Clear"))
+        session.clearTimings();
+
+    // Every column follows its widest cell as timings arrive; a pane too narrow scrolls rather than clips.
+    const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollX |
+                                  ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
+    if (!ImGui::BeginTable("timings", 10, flags))
+        return;
+    ImGui::TableSetupScrollFreeze(1, 1);
+    ImGui::TableSetupColumn("Scene");
+    ImGui::TableSetupColumn("Size");
+    ImGui::TableSetupColumn("spp");
+    ImGui::TableSetupColumn("Depth");
+    ImGui::TableSetupColumn("PDF");
+    ImGui::TableSetupColumn("Sampling");
+    for (EngineKind e : kEngines)
+        ImGui::TableSetupColumn(engineLabel(e));
+    ImGui::TableSetupColumn("vs single core");
+    ImGui::TableHeadersRow();
+
+    const ImU32 fastest = ImGui::GetColorU32(ImVec4(0.25f, 0.70f, 0.35f, 0.35f));
+    for (const TimingRow& row : table.rows())
+    {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(row.key.scene.c_str());
+        ImGui::TableNextColumn();
+        ImGui::Text("%dx%d", row.key.width, row.key.height);
+        ImGui::TableNextColumn();
+        ImGui::Text("%d", row.key.spp);
+        ImGui::TableNextColumn();
+        ImGui::Text("%d", row.key.depth);
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(row.key.pdf ? "on" : "off");
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(samplingLabel(row.key.sampling));
+
+        std::size_t best = row.engines.size();
+        for (std::size_t e = 0; e < row.engines.size(); ++e)
+            if (row.engines[e] && (best == row.engines.size() || row.engines[e]->lastSeconds < row.engines[best]->lastSeconds))
+                best = e;
+        for (std::size_t e = 0; e < row.engines.size(); ++e)
+        {
+            ImGui::TableNextColumn();
+            const auto& cell = row.engines[e];
+            if (!cell)
+            {
+                ImGui::TextDisabled("-");
+                continue;
+            }
+            if (e == best)
+                ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, fastest);
+            ImGui::BeginGroup();
+            ImGui::Text("%.3f s", cell->lastSeconds);
+            ImGui::TextDisabled("%.2f Mpaths/s", cell->mpathsPerSecond);
+            ImGui::EndGroup();
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("best %.3f s of %d render%s\n%s", cell->bestSeconds, cell->renders,
+                                  cell->renders == 1 ? "" : "s", cell->device.c_str());
+        }
+        ImGui::TableNextColumn();
+        for (EngineKind e : {EngineKind::Multi, EngineKind::Gpu})
+            if (const std::string s = speedUp(row, e); !s.empty())
+                ImGui::TextUnformatted(s.c_str());
+    }
+    ImGui::EndTable();
+}
+} // namespace rt::gui

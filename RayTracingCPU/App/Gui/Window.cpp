@@ -1,0 +1,107 @@
+#include "App/Gui/Window.h"
+
+#include <algorithm>
+#include <string>
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include "Error.h"
+
+namespace rt::gui
+{
+namespace
+{
+std::string g_lastGlfwError = "unknown GLFW error";
+
+void onGlfwError(int code, const char* description)
+{
+    g_lastGlfwError = std::string(description ? description : "?") + " (GLFW error " + std::to_string(code) + ")";
+}
+} // namespace
+
+Window::Glfw::Glfw()
+{
+    glfwSetErrorCallback(onGlfwError);
+    if (!glfwInit())
+        throw Error("cannot open a window: " + g_lastGlfwError +
+                    "; run with --headless, or under a display (xvfb-run -a ray-tracing-cpu ...)");
+}
+
+Window::Glfw::~Glfw() { glfwTerminate(); }
+
+void Window::WindowDeleter::operator()(GLFWwindow* window) const { glfwDestroyWindow(window); }
+
+Window::ImGuiBackends::ImGuiBackends(GLFWwindow* window)
+{
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr; // the layout is fixed: nothing to remember, no imgui.ini left behind
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 330");
+}
+
+Window::ImGuiBackends::~ImGuiBackends()
+{
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+}
+
+Window::Window(int width, int height, const std::string& title)
+{
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    m_window.reset(glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr));
+    if (!m_window)
+        throw Error("cannot open a window: " + g_lastGlfwError);
+    glfwMakeContextCurrent(m_window.get());
+    glfwSwapInterval(1);
+    m_imgui = std::make_unique<ImGuiBackends>(m_window.get());
+}
+
+// Members go in reverse order: the ImGui backends (their GL objects while the context exists), the window,
+// then GLFW.
+Window::~Window() = default;
+
+bool Window::closeRequested() const { return glfwWindowShouldClose(m_window.get()); }
+
+void Window::waitEvents(double timeoutSeconds) { glfwWaitEventsTimeout(timeoutSeconds); }
+
+FramebufferSize Window::framebufferSize() const
+{
+    FramebufferSize size;
+    glfwGetFramebufferSize(m_window.get(), &size.width, &size.height);
+    return size;
+}
+
+void Window::resize(int width, int height)
+{
+    // X11 ends the process on a 0-pixel window (BadValue from ConfigureWindow): 1 is its smallest size. A
+    // true 0x0 framebuffer (minimised on Windows) is what framebufferSize().empty() guards against.
+    glfwSetWindowSize(m_window.get(), std::max(width, 1), std::max(height, 1));
+}
+
+void Window::beginFrame()
+{
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+}
+
+void Window::endFrame(float clearGrey)
+{
+    ImGui::Render();
+    const FramebufferSize size = framebufferSize();
+    glViewport(0, 0, size.width, size.height);
+    glClearColor(clearGrey, clearGrey, clearGrey, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+void Window::present() { glfwSwapBuffers(m_window.get()); }
+} // namespace rt::gui
