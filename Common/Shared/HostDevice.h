@@ -252,13 +252,17 @@ struct SampleCounters
 // Descriptor set 1 of the timed ray-generation shader (RayGenCost.rgen); set 0 is the path tracer's. One set
 // per frame in flight: each frame has its own CostMax, which the host reads once the frame is done.
 RT_CONST(uint, kSetCost, 1u)
-RT_CONST(uint, kBindingCost, 0u)    // r32f storage image: shader-clock ticks of the pixel's samples, summed
-RT_CONST(uint, kBindingCostMax, 1u) // CostMax
+RT_CONST(uint, kBindingCost, 0u)      // r32f storage image: shader-clock ticks of the pixel's samples, summed
+RT_CONST(uint, kBindingCostStats, 1u) // CostStats
 
-/// The largest ticks per sample of any pixel after this frame's samples (the heatmap's automatic scale).
-struct CostMax
+/// Pixels' ticks per sample after one frame's samples, for the heatmap's legend and automatic scale: the
+/// largest, and how many fall in each power of two (the scale is a high percentile: the largest is often a
+/// pixel whose invocation was descheduled, far above the rest).
+RT_CONST(uint, kCostBuckets, 32u) // bucket b: ticks per sample in [2^b, 2^(b+1)); bucket 0 also holds [0, 1)
+struct CostStats
 {
-    uint ticksPerSampleBits; // floatBitsToUint of a non-negative float: atomicMax on the bits orders the floats
+    uint maxBits; // floatBitsToUint of a non-negative float: atomicMax on the bits orders the floats
+    uint buckets[kCostBuckets];
 };
 
 // Descriptor set 0 of the display pass (Display.vert/.frag), which fills the window with the ray tracer's image.
@@ -299,7 +303,7 @@ static_assert(sizeof(MediumRecord) == 64);
 static_assert(offsetof(MediumRecord, boxMax) == 32);
 static_assert(offsetof(MediumRecord, phaseMaterial) == 48);
 static_assert(sizeof(SampleCounters) == 8);
-static_assert(sizeof(CostMax) == 4);
+static_assert(sizeof(CostStats) == 4 * (1 + kCostBuckets));
 static_assert(sizeof(DisplayPushConstants) == 16);
 static_assert(sizeof(PreviewPushConstants) == 80 && offsetof(PreviewPushConstants, eye) == 64);
 #endif

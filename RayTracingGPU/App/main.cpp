@@ -1,20 +1,117 @@
 // ray-tracing-gpu: the Vulkan ray-tracing engine's command line. The flags are ray-tracing-cpu's
 // (Common/Cli/CommonOptions.h) plus --device and --validation; the headless flow is the shared one
-// (Common/Cli/HeadlessRun.h), so both apps report, write files and fail identically.
+// (Common/Cli/HeadlessRun.h), so both apps report, write files and fail identically. Without --headless the
+// app opens its window (App/Gui/WindowApp.h); the common flags give the window's initial settings.
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include <spdlog/spdlog.h>
 
 #include "App/Compare.h"
+#ifdef RT_GPU_WINDOW
+#include "App/Gui/WindowApp.h"
+#endif
 #include "Cli/HeadlessRun.h"
 #include "Engine/CpuEngine.h"
 #include "Engine/GpuContext.h"
 #include "Engine/GpuEngine.h"
 #include "Error.h"
 #include "Scenes/Catalogue.h"
+
+namespace
+{
+#ifdef RT_GPU_WINDOW
+/// The window's command-line flags beside the common ones.
+struct WindowFlags
+{
+    std::optional<int> frames;
+    std::string screenshot;
+    std::string actions;
+    int samplesPerFrame = 1;
+    std::string rayTracing = "on";
+    std::string accumulate = "on";
+    std::string heatmap = "off";
+};
+
+bool onOff(const std::string& value, const char* flag)
+{
+    if (value != "on" && value != "off")
+        throw rt::UsageError(fmt::format("{} must be on or off (got '{}')", flag, value));
+    return value == "on";
+}
+
+void addWindowOptions(CLI::App& app, WindowFlags& w)
+{
+    auto* frames = app.add_option("--frames", w.frames,
+                                  "Window: run N frames after the --actions, then exit (0 on success): with "
+                                  "--screenshot, tests and demos run without a person");
+    frames->check(CLI::PositiveNumber);
+    app.add_option("--screenshot", w.screenshot, "Window: save what the window shows in the last frame (.png)")
+        ->needs(frames);
+    app.add_option("--actions", w.actions,
+                   "Window: scripted input, one per frame, through the panel's own functions, separated by ';':\n" +
+                       rt::gpu::gui::actionHelp());
+    app.add_option("--samples-per-frame", w.samplesPerFrame, "Window: samples per pixel traced each frame")
+        ->check(CLI::Range(1, rt::gpu::gui::kMaxSamplesPerFrame))
+        ->capture_default_str();
+    app.add_option("--raytracing", w.rayTracing, "Window: ray tracing, or (off) the rasterised preview")
+        ->capture_default_str();
+    app.add_option("--accumulate", w.accumulate, "Window: accumulate samples between frames")->capture_default_str();
+    app.add_option("--heatmap", w.heatmap, "Window: show the time per pixel (needs VK_KHR_shader_clock)")
+        ->capture_default_str();
+}
+
+int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::optional<int> device, bool validation)
+{
+    if (!options.hdr.empty() || !options.stats.empty())
+        spdlog::warn("--hdr and --stats are for --headless; the window's Save writes the PFM beside the PNG");
+    if (options.sampling == "stratified")
+        spdlog::warn("the window accumulates random samples progressively; --sampling is for --headless");
+    rt::checkOutputPaths(options);
+    if (!flags.screenshot.empty() && std::filesystem::path(flags.screenshot).extension() != ".png")
+        throw rt::UsageError(fmt::format("--screenshot must name a .png file (got '{}')", flags.screenshot));
+    rt::gpu::gui::WindowOptions w;
+    w.actions = rt::gpu::gui::parseActions(flags.actions);
+    rt::Scene scene = rt::makeScene(options.scene, options.sceneOptions());
+    const rt::RenderSettings settings = rt::resolveSettings(options, scene);
+    rt::gpu::gui::ImageSettings& image = w.initial.image;
+    image.scene = scene.id;
+    image.camera = scene.camera;
+    image.size = {settings.width, settings.height()};
+    image.rayTracing = onOff(flags.rayTracing, "--raytracing");
+    image.accumulate = onOff(flags.accumulate, "--accumulate");
+    image.heatmap = onOff(flags.heatmap, "--heatmap");
+    image.depth = settings.depth;
+    image.pdf = settings.estimator == rt::Estimator::Mixture;
+    image.unidirectionalLight = settings.unidirectionalLight;
+    image.seed = settings.seed;
+    w.initial.display.samplesPerFrame = flags.samplesPerFrame;
+    w.initial.display.targetSpp = options.spp.value_or(0); // the scene's default spp is no reason to stop
+    w.sceneOptions = options.sceneOptions();
+    w.deviceIndex = device;
+    w.validation = validation;
+    w.frames = flags.frames;
+    w.screenshot = flags.screenshot;
+    w.savePath = options.output.empty() ? "ray-tracing-gpu.png" : options.output;
+    return rt::gpu::gui::runWindow(w, std::move(scene));
+}
+#else
+struct WindowFlags
+{
+};
+
+void addWindowOptions(CLI::App&, WindowFlags&) {}
+
+int runWindow(const rt::CommonOptions&, const WindowFlags&, std::optional<int>, bool)
+{
+    throw rt::UsageError("this build has no window (configured with RT_BUILD_GUI=OFF): run with --headless");
+}
+#endif
+} // namespace
 
 int main(int argc, char** argv)
 {
@@ -45,6 +142,8 @@ int main(int argc, char** argv)
     app.add_flag("--validation", validation,
                  "Run with VK_LAYER_KHRONOS_validation and fail (exit 1) if it reports any warning or error "
                  "(always on in Debug builds and with RT_VULKAN_VALIDATION=1)");
+    WindowFlags window;
+    addWindowOptions(app, window);
 
     return rt::guardedMain(app, argc, argv, [&] {
         spdlog::set_pattern("%^%l%$: %v");
@@ -71,7 +170,7 @@ int main(int argc, char** argv)
             });
         }
         if (!options.headless)
-            throw rt::UsageError("the interactive window is not built yet: run with --headless");
+            return runWindow(options, window, device, validation || rt::gpu::validationWanted());
         rt::checkOutputPaths(options);
         const rt::Scene scene = rt::makeScene(options.scene, options.sceneOptions());
         const rt::RenderSettings settings = rt::resolveSettings(options, scene);

@@ -49,7 +49,7 @@ std::vector<vk::DescriptorBinding> costBindingsOf(RayGenVariant variant)
     if (variant != RayGenVariant::Cost)
         return {};
     return {{kBindingCost, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_RAYGEN_BIT_KHR},
-            {kBindingCostMax, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_RAYGEN_BIT_KHR}};
+            {kBindingCostStats, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_RAYGEN_BIT_KHR}};
 }
 
 vk::PipelineLayout layoutOf(const vk::Device& device, const vk::DescriptorSetLayout& set,

@@ -43,7 +43,7 @@ public:
 
     const std::vector<vk::DescriptorBinding>& bindings() const { return m_bindings; }
     const vk::DescriptorSetLayout& setLayout() const { return m_setLayout; }
-    /// Set kSetCost of the Cost variant (kBindingCost, kBindingCostMax); empty for Radiance.
+    /// Set kSetCost of the Cost variant (kBindingCost, kBindingCostStats); empty for Radiance.
     const std::vector<vk::DescriptorBinding>& costBindings() const { return m_costBindings; }
     const vk::DescriptorSetLayout& costSetLayout() const { return m_costSetLayout; }
     const vk::PipelineLayout& layout() const { return m_layout; }

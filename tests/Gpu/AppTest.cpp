@@ -70,12 +70,27 @@ TEST(GpuApp, UnknownSceneIsSceneError)
     EXPECT_NE(r.output.find("unknown scene 'no-such-scene'"), std::string::npos) << r.output;
 }
 
-TEST(GpuApp, WithoutHeadlessSaysTheWindowComesLater)
+TEST(GpuApp, WithoutDisplayTheWindowSaysUseHeadless)
 {
-    const AppRun r = runApp("--scene rtnw-quads");
+    // Without --headless the app opens its window (tests/Gui/Gpu); with no display, or in a build without the
+    // window, it says so, naming --headless.
+    const AppRun r = runApp("--scene rtnw-quads", "env -u DISPLAY -u WAYLAND_DISPLAY");
+#ifdef RT_GPU_WINDOW
+    EXPECT_EQ(r.status, 5) << r.output;
+#else
     EXPECT_EQ(r.status, 2) << r.output;
+#endif
     EXPECT_NE(r.output.find("--headless"), std::string::npos) << r.output;
 }
+
+#ifdef RT_GPU_WINDOW
+TEST(GpuApp, BadActionIsUsageErrorBeforeAnyWindow)
+{
+    const AppRun r = runApp("--scene rtnw-quads --actions 'depth=0'", "env -u DISPLAY -u WAYLAND_DISPLAY");
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("depth=0"), std::string::npos) << r.output;
+}
+#endif
 
 TEST(GpuApp, NoVulkanDriverIsOneLineDeviceError)
 {

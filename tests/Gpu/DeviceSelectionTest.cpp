@@ -169,5 +169,41 @@ TEST(DeviceSelection, NoDeviceAtAllIsDeviceError)
 {
     EXPECT_THROW(selectDevice({}, std::nullopt), DeviceError);
 }
+
+TEST(DeviceSelection, HeadlessNeedsNoPresentation)
+{
+    DeviceCandidate c = capable(0, "compute only", DeviceType::DiscreteGpu);
+    c.extensions = {std::begin(kRequiredExtensions), std::end(kRequiredExtensions)};
+    c.presentQueue = false;
+    EXPECT_TRUE(judge(c).suitable());
+    EXPECT_EQ(selectDevice({c}, std::nullopt), 0u);
+}
+
+TEST(DeviceSelection, WindowNeedsSwapchainAndAPresentingQueue)
+{
+    const DeviceRequirements window{.presentation = true};
+    DeviceCandidate headless = capable(0, "no present", DeviceType::DiscreteGpu);
+    headless.extensions = {std::begin(kRequiredExtensions), std::end(kRequiredExtensions)};
+    const DeviceVerdict v = judge(headless, window);
+    EXPECT_TRUE(mentions(v.missing, "extension VK_KHR_swapchain"));
+    EXPECT_TRUE(mentions(v.missing, "a queue family with graphics, compute and presentation to the window's surface"));
+
+    DeviceCandidate presenting = capable(1, "presents", DeviceType::Cpu);
+    presenting.presentQueue = true;
+    EXPECT_TRUE(judge(presenting, window).suitable());
+    // The discrete GPU is preferred headless, but only the CPU device can present to the window.
+    EXPECT_EQ(selectDevice({headless, presenting}, std::nullopt), 0u);
+    EXPECT_EQ(selectDevice({headless, presenting}, std::nullopt, window), 1u);
+    try
+    {
+        selectDevice({headless}, std::nullopt, window);
+        FAIL() << "expected DeviceError";
+    }
+    catch (const DeviceError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("in a window"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("lacks extension VK_KHR_swapchain"), std::string::npos) << e.what();
+    }
+}
 } // namespace
 } // namespace rt::vk

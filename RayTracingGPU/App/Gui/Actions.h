@@ -1,0 +1,33 @@
+// Scripted input for running the window without a person (tests, demos): `--actions "scene=rtnw-quads;
+// depth=7;resize=0x0;resize=640x400;raytracing=off;heatmap=on;camera=forward:10"`. Actions run one per frame
+// in order, each through Controls (the panel's own functions); a scene action waits for its scene to be built
+// before the next one runs, and wait=N lets N frames pass.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "App/Gui/Controls.h"
+
+namespace rt::gpu::gui
+{
+struct Action
+{
+    std::string name;
+    std::string value;
+};
+
+/// Splits at ';' and checks every name and value (rt::UsageError naming the bad one), so a typo stops the app
+/// before the window opens.
+std::vector<Action> parseActions(const std::string& script);
+
+/// Applies one action through `controls`. `wait` is the frame loop's (it returns false for it).
+/// Returns true when the action was applied. Throws rt::SceneError for an unknown scene.
+bool applyAction(const Action& action, Controls& controls);
+
+/// The frames a wait action asks for.
+int waitFrames(const Action& action);
+
+/// The list of actions and their values, for --help.
+std::string actionHelp();
+} // namespace rt::gpu::gui

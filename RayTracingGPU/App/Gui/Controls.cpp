@@ -1,0 +1,50 @@
+#include "App/Gui/Controls.h"
+
+#include <algorithm>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "App/Gui/CameraController.h"
+#include "Error.h"
+#include "Scenes/Catalogue.h"
+
+namespace rt::gpu::gui
+{
+void Controls::selectScene(const std::string& id)
+{
+    if (!findScene(id))
+        throw SceneError(fmt::format("unknown scene '{}' (--list-scenes lists them)", id));
+    m_state->sceneRequest = id;
+}
+
+void Controls::setRayTracing(bool on) { m_state->image.rayTracing = on; }
+void Controls::setAccumulate(bool on) { m_state->image.accumulate = on; }
+void Controls::setHeatmap(bool on) { m_state->image.heatmap = on && m_state->costAvailable; }
+void Controls::setAutoCostScale(bool on) { m_state->display.autoCostScale = on; }
+void Controls::setCostScale(float ticksPerSample) { m_state->display.costScale = std::max(ticksPerSample, 1.0f); }
+void Controls::setSamplesPerFrame(int samples) { m_state->display.samplesPerFrame = std::clamp(samples, 1, kMaxSamplesPerFrame); }
+void Controls::setTargetSpp(int spp) { m_state->display.targetSpp = std::max(spp, 0); }
+void Controls::setDepth(int depth) { m_state->image.depth = std::max(depth, 1); }
+void Controls::setPdf(bool on) { m_state->image.pdf = on; }
+void Controls::setUnidirectionalLight(bool on) { m_state->image.unidirectionalLight = on; }
+void Controls::setFov(float degrees) { m_state->image.camera = withFov(m_state->image.camera, degrees); }
+void Controls::setAperture(float diameter) { m_state->image.camera = withAperture(m_state->image.camera, diameter); }
+
+void Controls::setFocusDistance(float distance)
+{
+    m_state->image.camera = withFocusDistance(m_state->image.camera, distance);
+}
+
+void Controls::moveCamera(const vec3& offset) { m_state->image.camera = gui::moveCamera(m_state->image.camera, offset); }
+
+void Controls::turnCamera(float yawDegrees, float pitchDegrees)
+{
+    m_state->image.camera = gui::turnCamera(m_state->image.camera, yawDegrees, pitchDegrees);
+}
+
+void Controls::resetCamera() { m_state->image.camera = m_state->sceneCamera; }
+void Controls::setDarkStyle(bool dark) { m_state->display.darkStyle = dark; }
+void Controls::setFontScale(float scale) { m_state->display.fontScale = std::clamp(scale, 0.5f, 3.0f); }
+void Controls::save(const std::filesystem::path& png) { m_state->saveRequest = png; }
+void Controls::resize(Extent size) { m_state->resizeRequest = Extent{std::max(size.width, 0), std::max(size.height, 0)}; }
+} // namespace rt::gpu::gui

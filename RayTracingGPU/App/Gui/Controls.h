@@ -1,0 +1,50 @@
+// Every change the panel's widgets make, and the only way they make it: the scripted actions (Actions.h) call
+// the same functions, so `--actions` exercises exactly what a person clicking does. Values are clamped here,
+// once.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "App/Gui/WindowState.h"
+#include "Math/Math.h"
+
+namespace rt::gpu::gui
+{
+inline constexpr int kMaxSamplesPerFrame = 256;
+
+class Controls final
+{
+public:
+    explicit Controls(WindowState& state) : m_state(&state) {}
+
+    /// Asks for scene `id` (built by the frame loop). Throws rt::SceneError for an id not in the catalogue.
+    void selectScene(const std::string& id);
+    void setRayTracing(bool on);
+    void setAccumulate(bool on);
+    void setHeatmap(bool on); // stays off without the shader clock (WindowState::costAvailable)
+    void setAutoCostScale(bool on);
+    void setCostScale(float ticksPerSample);
+    void setSamplesPerFrame(int samples);
+    void setTargetSpp(int spp); // 0: never stop
+    void setDepth(int depth);
+    void setPdf(bool on);
+    void setUnidirectionalLight(bool on);
+    void setFov(float degrees);
+    void setAperture(float diameter);
+    void setFocusDistance(float distance);
+    /// Moves by `offset` in view axes (x right, y up, z forward), world units.
+    void moveCamera(const vec3& offset);
+    void turnCamera(float yawDegrees, float pitchDegrees);
+    void resetCamera();
+    void setDarkStyle(bool dark);
+    void setFontScale(float scale);
+    /// Asks for the accumulated image as PNG at `png` and PFM beside it (same name, .pfm).
+    void save(const std::filesystem::path& png);
+    /// Asks for a window of `size` (0 x 0: minimised).
+    void resize(Extent size);
+
+private:
+    WindowState* m_state;
+};
+} // namespace rt::gpu::gui

@@ -1,0 +1,153 @@
+#include "App/Gui/Panel.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "App/Gui/CameraController.h"
+#include "Image/ImageIO.h"
+#include "Scenes/Catalogue.h"
+#include "Shared/HeatmapPalette.h"
+
+namespace rt::gpu::gui
+{
+namespace
+{
+ImU32 displayColor(const vec3& linear)
+{
+    return IM_COL32(linearToSrgb8(linear.x), linearToSrgb8(linear.y), linearToSrgb8(linear.z), 255);
+}
+
+void sceneSection(Controls& controls, const WindowState& state, const PanelInfo& info)
+{
+    const SceneInfo* current = findScene(state.image.scene);
+    if (ImGui::BeginCombo("Scene", current ? current->title.c_str() : state.image.scene.c_str()))
+    {
+        for (const SceneInfo& scene : sceneCatalogue())
+            if (ImGui::Selectable(scene.title.c_str(), scene.id == state.image.scene))
+                controls.selectScene(scene.id);
+        ImGui::EndCombo();
+    }
+    if (!info.building.empty())
+        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "Building %s...", info.building.c_str());
+}
+
+void rayTracingSection(Controls& controls, const WindowState& state)
+{
+    const ImageSettings& image = state.image;
+    const DisplaySettings& display = state.display;
+    if (bool on = image.rayTracing; ImGui::Checkbox("Enable ray tracing", &on))
+        controls.setRayTracing(on);
+    if (bool on = image.accumulate; ImGui::Checkbox("Accumulate between frames", &on))
+        controls.setAccumulate(on);
+    if (int samples = display.samplesPerFrame; ImGui::SliderInt("Samples / frame", &samples, 1, 64))
+        controls.setSamplesPerFrame(samples);
+    if (int spp = display.targetSpp; ImGui::InputInt("Stop at spp (0: never)", &spp, 16, 256))
+        controls.setTargetSpp(spp);
+    if (int depth = image.depth; ImGui::SliderInt("Depth", &depth, 1, 100))
+        controls.setDepth(depth);
+    if (bool on = image.pdf; ImGui::Checkbox("Light sampling (PDF mixture)", &on))
+        controls.setPdf(on);
+    if (bool on = image.unidirectionalLight; ImGui::Checkbox("Unidirectional light", &on))
+        controls.setUnidirectionalLight(on);
+}
+
+void cameraSection(Controls& controls, const WindowState& state)
+{
+    const CameraDesc& camera = state.image.camera;
+    if (float fov = camera.vfovDegrees; ImGui::SliderFloat("Field of view", &fov, kMinFov, kMaxFov, "%.1f deg"))
+        controls.setFov(fov);
+    const float scale = camera.focusDistance;
+    if (float aperture = apertureOf(camera); ImGui::DragFloat("Aperture", &aperture, 0.002f * scale, 0.0f, scale, "%.3f"))
+        controls.setAperture(aperture);
+    if (float focus = camera.focusDistance;
+        ImGui::DragFloat("Focus distance", &focus, 0.005f * scale, 1e-3f, 1e6f, "%.2f"))
+        controls.setFocusDistance(focus);
+    if (ImGui::Button("Reset camera"))
+        controls.resetCamera();
+    ImGui::TextDisabled("WASD/QE move, Shift x4, Ctrl x1/4,\ndrag to look, wheel: field of view");
+}
+
+void profilerSection(Controls& controls, const WindowState& state, const PanelInfo& info)
+{
+    if (bool on = state.image.heatmap; ImGui::Checkbox("Heatmap (time per pixel)", &on))
+        controls.setHeatmap(on);
+    if (bool on = state.display.autoCostScale; ImGui::Checkbox("Automatic scale", &on))
+        controls.setAutoCostScale(on);
+    if (!state.display.autoCostScale)
+        if (float scale = state.display.costScale;
+            ImGui::DragFloat("Scale", &scale, 0.01f * scale, 1.0f, 1e12f, "%.3g ticks", ImGuiSliderFlags_Logarithmic))
+            controls.setCostScale(scale);
+    // The colour scale: the display shader's own palette, 0 at the left, the scale in use at the right.
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const float width = ImGui::GetContentRegionAvail().x;
+    const float height = ImGui::GetFrameHeight();
+    constexpr int kSteps = 32;
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    for (int i = 0; i < kSteps; ++i)
+    {
+        const float x0 = origin.x + width * float(i) / kSteps, x1 = origin.x + width * float(i + 1) / kSteps;
+        draw->AddRectFilledMultiColor({x0, origin.y}, {x1, origin.y + height},
+                                      displayColor(shader::heatmapColor(float(i) / kSteps)),
+                                      displayColor(shader::heatmapColor(float(i + 1) / kSteps)),
+                                      displayColor(shader::heatmapColor(float(i + 1) / kSteps)),
+                                      displayColor(shader::heatmapColor(float(i) / kSteps)));
+    }
+    ImGui::Dummy({width, height});
+    ImGui::Text("0 ... %.3g ticks/sample", info.costScale);
+    ImGui::Text("max %.3g ticks/sample", info.costMax);
+}
+
+void statsSection(const WindowState& state, const PanelInfo& info)
+{
+    ImGui::Text("%.1f fps, %.2f Msamples/s", info.framesPerSecond, info.megaSamplesPerSecond);
+    if (state.display.targetSpp > 0)
+        ImGui::Text("%d / %d spp accumulated", info.accumulatedSpp, state.display.targetSpp);
+    else
+        ImGui::Text("%d spp accumulated", info.accumulatedSpp);
+    ImGui::Text("%d x %d, depth %d", info.size.width, info.size.height, state.image.depth);
+    ImGui::TextWrapped("%s", info.device.c_str());
+}
+
+void saveSection(Controls& controls, PanelState& panel, const PanelInfo& info)
+{
+    ImGui::InputText("File (.png)", &panel.savePath);
+    if (ImGui::Button("Save image"))
+        controls.save(panel.savePath);
+    ImGui::SameLine();
+    ImGui::TextDisabled("PNG + PFM");
+    if (!info.message.empty())
+        ImGui::TextWrapped("%s", info.message.c_str());
+}
+} // namespace
+
+void drawPanel(Controls& controls, const WindowState& state, const PanelInfo& info, PanelState& panel)
+{
+    const float fontScale = state.display.fontScale;
+    ImGui::SetNextWindowPos({8.0f, 8.0f}, ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize({320.0f * fontScale, 0.0f}, ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints({0.0f, 0.0f}, {1e6f, float(info.size.height) - 16.0f});
+    ImGui::Begin("ray-tracing-gpu", nullptr, ImGuiWindowFlags_NoSavedSettings);
+    ImGui::PushItemWidth(-140.0f * fontScale);
+    if (ImGui::CollapsingHeader("UI", ImGuiTreeNodeFlags_DefaultOpen))
+    {
+        if (bool dark = state.display.darkStyle; ImGui::Checkbox("Dark style", &dark))
+            controls.setDarkStyle(dark);
+        if (float scale = fontScale; ImGui::SliderFloat("Font size", &scale, 0.5f, 3.0f, "%.2fx"))
+            controls.setFontScale(scale);
+    }
+    if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen))
+        sceneSection(controls, state, info);
+    if (ImGui::CollapsingHeader("Ray tracing", ImGuiTreeNodeFlags_DefaultOpen))
+        rayTracingSection(controls, state);
+    if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen))
+        cameraSection(controls, state);
+    if (info.costAvailable && ImGui::CollapsingHeader("Profiler", ImGuiTreeNodeFlags_DefaultOpen))
+        profilerSection(controls, state, info);
+    if (ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen))
+        statsSection(state, info);
+    if (ImGui::CollapsingHeader("Save", ImGuiTreeNodeFlags_DefaultOpen))
+        saveSection(controls, panel, info);
+    ImGui::PopItemWidth();
+    ImGui::End();
+}
+} // namespace rt::gpu::gui

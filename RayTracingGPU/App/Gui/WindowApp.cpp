@@ -1,0 +1,451 @@
+#include "App/Gui/WindowApp.h"
+
+#include <chrono>
+#include <deque>
+#include <future>
+#include <memory>
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <spdlog/spdlog.h>
+
+#include "App/Gui/CameraController.h"
+#include "App/Gui/Controls.h"
+#include "App/Gui/DisplayPass.h"
+#include "App/Gui/ImGuiLayer.h"
+#include "App/Gui/Panel.h"
+#include "App/Gui/Presenter.h"
+#include "App/Gui/Window.h"
+#include "Engine/ProgressiveRenderer.h"
+#include "Engine/RasterPreview.h"
+#include "Error.h"
+#include "Image/ImageIO.h"
+
+namespace rt::gpu::gui
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+constexpr float kFastMove = 4.0f; // Shift
+constexpr float kSlowMove = 0.25f; // Ctrl
+constexpr float kDegreesPerPixel = 0.2f; // mouse look
+constexpr float kFovPerWheelStep = 2.0f; // degrees
+
+GpuEngineOptions engineOptions(const WindowOptions& options, const Window& window)
+{
+    GpuEngineOptions e;
+    e.deviceIndex = options.deviceIndex;
+    e.validation = options.validation;
+    e.presentation = Presentation{Window::requiredInstanceExtensions(),
+                                  [&window](VkInstance instance) { return window.createSurface(instance); }};
+    return e;
+}
+
+/// Frames and samples over the last second.
+class Throughput final
+{
+public:
+    void add(Clock::time_point now, std::uint64_t samples)
+    {
+        m_events.push_back({now, samples});
+        while (m_events.size() > 2 && now - m_events.front().time > std::chrono::seconds(1))
+            m_events.pop_front();
+    }
+    double framesPerSecond() const { return m_events.size() < 2 ? 0.0 : double(m_events.size() - 1) / span(); }
+    double samplesPerSecond() const
+    {
+        if (m_events.size() < 2)
+            return 0.0;
+        std::uint64_t samples = 0;
+        for (std::size_t i = 1; i < m_events.size(); ++i)
+            samples += m_events[i].samples;
+        return double(samples) / span();
+    }
+
+private:
+    double span() const
+    {
+        return std::max(1e-6, std::chrono::duration<double>(m_events.back().time - m_events.front().time).count());
+    }
+    struct Event
+    {
+        Clock::time_point time;
+        std::uint64_t samples;
+    };
+    std::deque<Event> m_events;
+};
+
+class WindowApp final
+{
+public:
+    WindowApp(const WindowOptions& options, Window& window, Scene scene)
+        : m_options(options), m_window(window), m_engine(engineOptions(options, window)),
+          m_scene(std::make_unique<Scene>(std::move(scene))),
+          m_presenter(m_engine.context(), window.framebufferSize()),
+          m_renderer(m_engine, kFramesInFlight),
+          m_preview(m_engine.context().device(), m_engine.shaderDir(), m_presenter.renderPass()),
+          m_display(m_engine.context().device(), m_engine.shaderDir(), m_presenter.renderPass()),
+          m_imgui(m_engine.context(), window.handle(), m_presenter.renderPass(), kFramesInFlight),
+          m_state(options.initial), m_controls(m_state)
+    {
+        m_panel.savePath = options.savePath;
+        m_state.costAvailable = m_renderer.costAvailable();
+        m_state.image.heatmap = m_state.image.heatmap && m_state.costAvailable;
+        if (options.initial.image.heatmap && !m_state.costAvailable)
+            spdlog::warn("the device has no VK_KHR_shader_clock: no heatmap");
+        showScene(*m_scene);
+        spdlog::info("window on '{}': {} images, format {}, present mode {}, shader clock {}",
+                     m_engine.deviceName(), m_presenter.imageCount(), static_cast<int>(m_presenter.format()),
+                     static_cast<int>(m_presenter.presentMode()), m_state.costAvailable ? "yes" : "no");
+    }
+
+    ~WindowApp() { m_presenter.waitIdle(); }
+
+    WindowApp(const WindowApp&) = delete;
+    WindowApp& operator=(const WindowApp&) = delete;
+
+    std::shared_ptr<const vk::ValidationLog> validationLog() const { return m_engine.validationLog(); }
+
+    void run()
+    {
+        Clock::time_point last = Clock::now();
+        while (!m_window.closeRequested() && !m_done)
+        {
+            m_window.pollEvents();
+            const Clock::time_point now = Clock::now();
+            const float seconds = std::chrono::duration<float>(now - last).count();
+            last = now;
+            finishSceneBuild();
+            runAutomation();
+            startSceneBuild();
+            applyRequests();
+            if (m_window.framebufferSize().width == 0 || m_window.framebufferSize().height == 0)
+            {
+                // Minimised: nothing to draw into. Scripts keep running (their next action restores the window).
+                m_window.waitEvents(automated() ? 0.01 : 0.0);
+                continue;
+            }
+            drawFrame(seconds);
+        }
+    }
+
+private:
+    bool automated() const { return m_options.frames.has_value(); }
+
+    /// Puts `scene` on the device, in the preview and behind the renderer's descriptor sets; the device is idle.
+    void showScene(const Scene& scene)
+    {
+        m_engine.setScene(scene);
+        m_preview.setScene(scene, m_engine.context().commandPool());
+        prepareImages(m_renderer.extent().width > 0 ? m_renderer.extent() : VkExtent2D{1, 1});
+        m_state.image.scene = scene.id;
+        m_state.sceneCamera = scene.camera;
+        m_state.image.camera = scene.camera;
+        m_state.cameraSpeed = movementSpeed(scene.camera);
+        glfwSetWindowTitle(m_window.handle(), ("ray-tracing-gpu: " + scene.id).c_str());
+    }
+
+    void prepareImages(VkExtent2D extent)
+    {
+        m_renderer.prepare(extent);
+        m_display.setImages(m_renderer.accumulationView(), m_renderer.costView());
+        m_needsClear = true;
+    }
+
+    void startSceneBuild()
+    {
+        if (!m_state.sceneRequest || m_loading.valid())
+            return; // one build at a time; a newer request waits for it
+        m_loadingId = *m_state.sceneRequest;
+        m_state.sceneRequest.reset();
+        m_loading = std::async(std::launch::async, [id = m_loadingId, options = m_options.sceneOptions] {
+            return makeScene(id, options);
+        });
+    }
+
+    void finishSceneBuild()
+    {
+        if (!m_loading.valid() || m_loading.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+            return;
+        try
+        {
+            auto scene = std::make_unique<Scene>(m_loading.get());
+            m_presenter.waitIdle();
+            try
+            {
+                showScene(*scene);
+            }
+            catch (const Error&)
+            {
+                showScene(*m_scene); // the engine dropped the old scene before failing: put it back
+                throw;
+            }
+            m_scene = std::move(scene);
+            m_message.clear();
+        }
+        catch (const Error& e)
+        {
+            m_message = e.what();
+            if (automated())
+                throw;
+            spdlog::error("{}", e.what());
+        }
+    }
+
+    void runAutomation()
+    {
+        if (!automated() || m_loading.valid() || m_state.sceneRequest)
+            return; // a scene action waits until its scene is on screen
+        if (m_waitFrames > 0)
+        {
+            --m_waitFrames;
+            return;
+        }
+        if (m_nextAction < m_options.actions.size())
+        {
+            const Action& action = m_options.actions[m_nextAction++];
+            spdlog::debug("action {}={}", action.name, action.value);
+            if (!applyAction(action, m_controls))
+                m_waitFrames = waitFrames(action);
+        }
+    }
+
+    bool actionsDone() const
+    {
+        return m_nextAction >= m_options.actions.size() && m_waitFrames == 0 && !m_loading.valid() &&
+               !m_state.sceneRequest;
+    }
+
+    void applyRequests()
+    {
+        if (m_state.resizeRequest)
+        {
+            m_window.resize(*m_state.resizeRequest);
+            m_state.resizeRequest.reset();
+        }
+        if (m_state.saveRequest)
+        {
+            const std::filesystem::path png = *m_state.saveRequest;
+            m_state.saveRequest.reset();
+            save(png);
+        }
+    }
+
+    void save(const std::filesystem::path& png)
+    {
+        try
+        {
+            if (!m_state.image.rayTracing || m_accumulatedSpp == 0)
+                throw UsageError("nothing to save: turn ray tracing on and let it accumulate");
+            m_presenter.waitIdle();
+            const Image image = m_renderer.readImage();
+            std::filesystem::path pfm = png;
+            pfm.replace_extension(".pfm");
+            writePng(png, image);
+            writePfm(pfm, image);
+            m_message = "saved " + png.string() + " and " + pfm.string() + " (" + std::to_string(m_accumulatedSpp) +
+                        " spp)";
+            spdlog::info("{}", m_message);
+        }
+        catch (const Error& e)
+        {
+            m_message = e.what();
+            if (automated())
+                throw;
+            spdlog::error("{}", e.what());
+        }
+    }
+
+    /// WASD/QE, Shift, Ctrl, mouse drag and wheel, unless the panel has the mouse or the keyboard.
+    void cameraInput(float seconds)
+    {
+        const ImGuiIO& io = ImGui::GetIO();
+        GLFWwindow* w = m_window.handle();
+        if (!io.WantCaptureKeyboard)
+        {
+            const auto down = [w](int key) { return glfwGetKey(w, key) == GLFW_PRESS ? 1.0f : 0.0f; };
+            const vec3 direction(down(GLFW_KEY_D) - down(GLFW_KEY_A), down(GLFW_KEY_E) - down(GLFW_KEY_Q),
+                                 down(GLFW_KEY_W) - down(GLFW_KEY_S));
+            if (direction != vec3(0.0f))
+            {
+                float speed = m_state.cameraSpeed * seconds;
+                if (down(GLFW_KEY_LEFT_SHIFT) + down(GLFW_KEY_RIGHT_SHIFT) > 0.0f)
+                    speed *= kFastMove;
+                if (down(GLFW_KEY_LEFT_CONTROL) + down(GLFW_KEY_RIGHT_CONTROL) > 0.0f)
+                    speed *= kSlowMove;
+                m_controls.moveCamera(speed * direction);
+            }
+        }
+        if (!io.WantCaptureMouse)
+        {
+            if (io.MouseDown[0] && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
+                m_controls.turnCamera(kDegreesPerPixel * io.MouseDelta.x, -kDegreesPerPixel * io.MouseDelta.y);
+            if (io.MouseWheel != 0.0f)
+                m_controls.setFov(m_state.image.camera.vfovDegrees - kFovPerWheelStep * io.MouseWheel);
+        }
+    }
+
+    PanelInfo panelInfo(Extent size) const
+    {
+        PanelInfo info;
+        info.device = m_engine.deviceName();
+        info.costAvailable = m_state.costAvailable;
+        info.building = m_loading.valid() ? m_loadingId : std::string();
+        info.message = m_message;
+        info.framesPerSecond = m_throughput.framesPerSecond();
+        info.megaSamplesPerSecond = m_throughput.samplesPerSecond() * 1e-6;
+        info.accumulatedSpp = static_cast<int>(m_accumulatedSpp);
+        info.costMax = m_cost.max;
+        info.costScale = costScale();
+        info.size = size;
+        return info;
+    }
+
+    float costScale() const
+    {
+        return m_state.display.autoCostScale ? std::max(m_cost.high, 1.0f) : m_state.display.costScale;
+    }
+
+    void drawFrame(float seconds)
+    {
+        const Extent size = m_window.framebufferSize();
+        m_imgui.newFrame(m_state.display.darkStyle, m_state.display.fontScale);
+        cameraInput(seconds);
+        drawPanel(m_controls, m_state, panelInfo(size), m_panel);
+
+        const std::optional<Frame> frame = m_presenter.beginFrame(size);
+        if (!frame)
+        {
+            m_imgui.render(VK_NULL_HANDLE);
+            return;
+        }
+        if (frame->extent.width != m_renderer.extent().width || frame->extent.height != m_renderer.extent().height)
+        {
+            m_presenter.waitIdle();
+            prepareImages(frame->extent);
+        }
+        m_state.image.size = {static_cast<int>(frame->extent.width), static_cast<int>(frame->extent.height)};
+        if (const CostSummary cost = m_renderer.takeCostSummary(frame->slot); cost.max > 0.0f)
+            m_cost = cost;
+
+        const VkCommandBuffer cmd = frame->commands;
+        std::uint64_t samples = 0;
+        if (m_state.image.rayTracing)
+            samples = traceSamples(*frame);
+        m_presenter.beginRenderPass(*frame);
+        if (m_state.image.rayTracing)
+        {
+            shader::DisplayPushConstants push{};
+            push.mode = m_state.image.heatmap ? shader::DisplayMode::Cost : shader::DisplayMode::Radiance;
+            push.encodeSrgb = m_presenter.shaderEncodesSrgb() ? 1u : 0u;
+            push.costScale = costScale();
+            m_display.record(cmd, frame->extent, push);
+        }
+        else
+            m_preview.record(cmd, m_state.image.camera, frame->extent, m_presenter.shaderEncodesSrgb());
+        m_imgui.render(cmd);
+        m_presenter.endRenderPass(*frame);
+
+        const bool last = automated() && actionsDone() && m_framesAfterActions + 1 >= *m_options.frames;
+        if (last && !m_options.screenshot.empty())
+            m_presenter.recordScreenshot(*frame);
+        m_presenter.endFrame(*frame, size);
+        m_throughput.add(Clock::now(), samples);
+        if (automated() && actionsDone() && ++m_framesAfterActions >= *m_options.frames)
+        {
+            if (!m_options.screenshot.empty())
+                saveScreenshot();
+            m_done = true;
+        }
+    }
+
+    /// Records this frame's samples; returns the camera samples (paths) traced.
+    std::uint64_t traceSamples(const Frame& frame)
+    {
+        const VkCommandBuffer cmd = frame.commands;
+        const bool restart = m_needsClear || !(m_state.image == m_traced);
+        if (restart || !m_state.image.accumulate)
+        {
+            m_renderer.recordClear(cmd);
+            m_accumulatedSpp = 0;
+            m_needsClear = false;
+        }
+        if (restart)
+            m_nextSample = 0; // a new image: its samples are those of a headless render from index 0
+        m_traced = m_state.image;
+
+        std::uint32_t count = static_cast<std::uint32_t>(m_state.display.samplesPerFrame);
+        if (m_state.display.targetSpp > 0 && m_state.image.accumulate)
+            count = std::min<std::uint32_t>(
+                count, static_cast<std::uint32_t>(std::max<std::int64_t>(m_state.display.targetSpp - std::int64_t(m_accumulatedSpp), 0)));
+        FrameRequest request;
+        request.settings.depth = m_state.image.depth;
+        request.settings.estimator = m_state.image.pdf ? Estimator::Mixture : Estimator::BsdfOnly;
+        request.settings.unidirectionalLight = m_state.image.unidirectionalLight;
+        request.settings.seed = m_state.image.seed;
+        request.camera = m_state.image.camera;
+        request.cost = m_state.image.heatmap;
+        m_renderer.recordSamples(cmd, frame.slot, request, m_nextSample, count);
+        // Without accumulation the indices still advance, so each frame shows new noise, not the same frame.
+        m_nextSample += count;
+        m_accumulatedSpp += count;
+        return std::uint64_t(count) * frame.extent.width * frame.extent.height;
+    }
+
+    void saveScreenshot()
+    {
+        int width = 0;
+        int height = 0;
+        const std::vector<unsigned char> rgba = m_presenter.screenshotPixels(width, height);
+        writePng8(m_options.screenshot, width, height, rgba);
+        spdlog::info("screenshot {} ({}x{}, {} spp)", m_options.screenshot.string(), width, height, m_accumulatedSpp);
+    }
+
+    const WindowOptions& m_options;
+    Window& m_window;
+    GpuEngine m_engine;
+    std::unique_ptr<Scene> m_scene; // what the engine renders (it keeps a pointer)
+    Presenter m_presenter;
+    ProgressiveRenderer m_renderer;
+    RasterPreview m_preview;
+    DisplayPass m_display;
+    ImGuiLayer m_imgui;
+    WindowState m_state;
+    Controls m_controls;
+    PanelState m_panel;
+
+    std::future<Scene> m_loading;
+    std::string m_loadingId;
+    std::string m_message;
+    ImageSettings m_traced; // the settings of the samples in the accumulation image
+    bool m_needsClear = true; // new images, or a new scene behind them
+    std::uint32_t m_nextSample = 0;
+    std::uint32_t m_accumulatedSpp = 0;
+    CostSummary m_cost; // of the last timed frame
+    Throughput m_throughput;
+
+    std::size_t m_nextAction = 0;
+    int m_waitFrames = 0;
+    int m_framesAfterActions = 0;
+    bool m_done = false;
+};
+} // namespace
+
+int runWindow(const WindowOptions& options, Scene scene)
+{
+    std::shared_ptr<const vk::ValidationLog> log;
+    {
+        Window window("ray-tracing-gpu", options.initial.image.size);
+        WindowApp app(options, window, std::move(scene));
+        log = app.validationLog();
+        app.run();
+    } // the device is destroyed here: leaked objects are reported into `log`
+    if (log && log->total() > 0)
+    {
+        spdlog::error("Vulkan validation reported {} warnings or errors (see above)", log->total());
+        return 1;
+    }
+    return 0;
+}
+} // namespace rt::gpu::gui

@@ -1,0 +1,39 @@
+// ray-tracing-gpu without --headless: the window, its frame loop and everything it draws with. One Vulkan
+// device for everything (the engine's), presenting to the window's surface.
+//
+// A frame: wait for its slot, acquire a swapchain image; with ray tracing on, clear the accumulation image if
+// the image settings changed (or every frame without accumulation) and trace a few samples per pixel into it;
+// then one render pass: the display pass (radiance or heatmap) or the rasterised preview, and the panel;
+// present. Scenes are built on a worker thread while the old one stays on screen; only the upload and the
+// acceleration-structure build wait for the device.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "App/Gui/Actions.h"
+#include "App/Gui/WindowState.h"
+#include "Engine/GpuEngine.h"
+#include "Scenes/Catalogue.h"
+
+namespace rt::gpu::gui
+{
+struct WindowOptions
+{
+    WindowState initial; // settings from the command line; image.scene is `scene`'s id, image.size the window's
+    SceneOptions sceneOptions;
+    std::optional<int> deviceIndex;
+    bool validation = false;
+    std::optional<int> frames; // run this many frames after the actions, then stop
+    std::filesystem::path screenshot; // with frames: what the window shows in the last frame, as PNG
+    std::vector<Action> actions;
+    std::string savePath; // the panel's initial file name for Save image
+};
+
+/// Opens the window on `scene` and runs until it is closed or `options.frames` have run. Returns the exit
+/// status: 0, or 1 when validation was on and reported anything, device destruction (leaked objects)
+/// included. Throws rt::Error (no display, no device that presents, a failing action or save with --frames).
+int runWindow(const WindowOptions& options, Scene scene);
+} // namespace rt::gpu::gui

@@ -1,0 +1,62 @@
+// What the window shows and what its panel edits, split the way accumulation needs it (style pattern 20):
+// ImageSettings holds everything the ray-traced image depends on, compared with a defaulted operator== so
+// that a field added later cannot be forgotten: any change restarts accumulation. DisplaySettings only change
+// how fast the image converges or how the window looks.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "Scene/Camera.h"
+
+namespace rt::gpu::gui
+{
+struct Extent
+{
+    int width = 0; // pixels of the window's framebuffer, which is the image's size
+    int height = 0;
+
+    bool operator==(const Extent&) const = default;
+};
+
+struct ImageSettings
+{
+    std::string scene; // catalogue id of the scene on the device
+    CameraDesc camera; // the interactive camera: the scene's, moved, turned and zoomed
+    Extent size;
+    bool rayTracing = true; // off: the rasterised preview
+    bool accumulate = true; // off: every frame starts a new image of samplesPerFrame samples
+    bool heatmap = false; // cost per pixel instead of radiance (needs the shader clock)
+    int depth = 50; // path segments at most
+    bool pdf = true; // book 3's mixture estimator; off: BSDF sampling only
+    bool unidirectionalLight = true;
+    std::uint32_t seed = 0;
+
+    bool operator==(const ImageSettings&) const = default;
+};
+
+struct DisplaySettings
+{
+    int samplesPerFrame = 1;
+    int targetSpp = 0; // tracing stops at this many samples per pixel; 0: never
+    bool autoCostScale = true; // the heatmap's top follows the image: 95 % of the pixels are below it
+    float costScale = 1.0e5f; // otherwise: ticks per sample at the top of the palette
+    bool darkStyle = true;
+    float fontScale = 1.0f;
+};
+
+/// The settings plus what the panel or an action asked the frame loop to do.
+struct WindowState
+{
+    ImageSettings image;
+    DisplaySettings display;
+    CameraDesc sceneCamera; // the scene's own camera: "Reset camera"
+    float cameraSpeed = 1.0f; // world units per second of WASD (movementSpeed of sceneCamera)
+    bool costAvailable = false; // the device has the shader clock: the heatmap can be turned on
+    std::optional<std::string> sceneRequest; // to be built, then shown
+    std::optional<std::filesystem::path> saveRequest; // PNG path; the PFM goes beside it
+    std::optional<Extent> resizeRequest; // 0 x 0: minimised
+};
+} // namespace rt::gpu::gui

@@ -1,0 +1,255 @@
+#include "Engine/ProgressiveRenderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "Engine/GpuEngine.h"
+#include "Engine/GpuScene.h"
+#include "Engine/PathTracingPipeline.h"
+#include "Engine/Uniforms.h"
+#include "Shared/HostDevice.h"
+#include "Vulkan/CommandBuffer.h"
+
+namespace rt::gpu
+{
+namespace
+{
+// The stages that touch the images between frames: the ray tracer writes, the display pass reads, clears write.
+constexpr VkPipelineStageFlags kImageStages = VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR |
+                                              VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
+
+void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags srcStages, VkAccessFlags srcAccess,
+                   VkPipelineStageFlags dstStages, VkAccessFlags dstAccess)
+{
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = srcAccess;
+    barrier.dstAccessMask = dstAccess;
+    vkCmdPipelineBarrier(cmd, srcStages, dstStages, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+}
+} // namespace
+
+ProgressiveRenderer::ProgressiveRenderer(const GpuEngine& engine, std::uint32_t frameSlots)
+    : m_engine(&engine),
+      m_counters(engine.context().device(), sizeof(shader::SampleCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                 vk::MemoryUse::Readback)
+{
+    const vk::Device& device = engine.context().device();
+    for (std::uint32_t slot = 0; slot < frameSlots; ++slot)
+        m_uniforms.emplace_back(device, sizeof(shader::RenderUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                vk::MemoryUse::Upload);
+    std::memset(m_counters.mapped(), 0, sizeof(shader::SampleCounters));
+}
+
+ProgressiveRenderer::~ProgressiveRenderer() = default;
+
+bool ProgressiveRenderer::costAvailable() const { return m_engine->context().device().shaderClock(); }
+
+void ProgressiveRenderer::prepare(VkExtent2D extent)
+{
+    const vk::Device& device = m_engine->context().device();
+    const VkExtent2D current = m_accumulation.extent();
+    if (current.width != extent.width || current.height != extent.height)
+    {
+        m_accumulationView = vk::ImageView();
+        m_costView = vk::ImageView();
+        m_accumulation = vk::Image(device, extent, VK_FORMAT_R32G32B32A32_SFLOAT,
+                                   VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                       VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+        m_accumulationView = vk::ImageView(device, m_accumulation);
+        m_cost = vk::Image(device, extent, VK_FORMAT_R32_SFLOAT,
+                           VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+        m_costView = vk::ImageView(device, m_cost);
+        m_imagesUndefined = true;
+    }
+
+    // Set 0 follows the scene (its image count is the set's variable count) and the images.
+    const PathTracingPipeline& pipeline = m_engine->pipeline();
+    const GpuScene& scene = m_engine->gpuScene();
+    const auto imageCount = static_cast<std::uint32_t>(scene.imageViews().size());
+    m_sets.clear();
+    m_pools.clear();
+    for (const vk::Buffer& uniforms : m_uniforms)
+    {
+        m_pools.emplace_back(device, pipeline.bindings(), imageCount);
+        m_sets.push_back(m_pools.back().allocate(pipeline.setLayout(), imageCount));
+        pipeline.writeDescriptors(device, m_sets.back(), scene,
+                                  {m_accumulationView.Handle(), uniforms.Handle(), m_counters.Handle()});
+    }
+    if (m_costPipeline)
+        writeCostDescriptors();
+}
+
+void ProgressiveRenderer::createCostResources()
+{
+    const vk::Device& device = m_engine->context().device();
+    m_costPipeline = std::make_unique<PathTracingPipeline>(device, m_engine->shaderDir(), RayGenVariant::Cost);
+    for (std::size_t slot = 0; slot < m_uniforms.size(); ++slot)
+    {
+        m_costStats.emplace_back(device, sizeof(shader::CostStats), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                 vk::MemoryUse::Readback);
+        std::memset(m_costStats.back().mapped(), 0, sizeof(shader::CostStats));
+        m_costPools.emplace_back(device, m_costPipeline->costBindings(), 0);
+        m_costSets.push_back(m_costPools.back().allocate(m_costPipeline->costSetLayout(), 0));
+    }
+    writeCostDescriptors();
+}
+
+void ProgressiveRenderer::writeCostDescriptors() const
+{
+    const VkDescriptorImageInfo image{VK_NULL_HANDLE, m_costView.Handle(), VK_IMAGE_LAYOUT_GENERAL};
+    for (std::size_t slot = 0; slot < m_costSets.size(); ++slot)
+    {
+        const VkDescriptorBufferInfo buffer{m_costStats[slot].Handle(), 0, VK_WHOLE_SIZE};
+        VkWriteDescriptorSet writes[2]{};
+        for (VkWriteDescriptorSet& w : writes)
+        {
+            w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+            w.dstSet = m_costSets[slot];
+            w.descriptorCount = 1;
+        }
+        writes[0].dstBinding = shader::kBindingCost;
+        writes[0].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+        writes[0].pImageInfo = &image;
+        writes[1].dstBinding = shader::kBindingCostStats;
+        writes[1].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        writes[1].pBufferInfo = &buffer;
+        vkUpdateDescriptorSets(m_engine->context().device().Handle(), 2, writes, 0, nullptr);
+    }
+}
+
+void ProgressiveRenderer::recordClear(VkCommandBuffer cmd)
+{
+    VkImageMemoryBarrier toClear[2]{};
+    const VkImage images[2] = {m_accumulation.Handle(), m_cost.Handle()};
+    for (int i = 0; i < 2; ++i)
+    {
+        VkImageMemoryBarrier& b = toClear[i];
+        b.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
+        // Earlier frames' shader writes (and their reads, by the execution dependency) come first.
+        b.srcAccessMask = m_imagesUndefined ? 0 : VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+        b.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        b.oldLayout = m_imagesUndefined ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_GENERAL;
+        b.newLayout = VK_IMAGE_LAYOUT_GENERAL;
+        b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        b.image = images[i];
+        b.subresourceRange = vk::kColorRange;
+    }
+    const VkPipelineStageFlags before = m_imagesUndefined ? VkPipelineStageFlags(VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT)
+                                                          : kImageStages;
+    vkCmdPipelineBarrier(cmd, before,
+                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 2, toClear);
+    const VkClearColorValue zero{};
+    for (VkImage image : images)
+        vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &vk::kColorRange);
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                  VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    m_imagesUndefined = false;
+}
+
+void ProgressiveRenderer::recordSamples(VkCommandBuffer cmd, std::uint32_t slot, const FrameRequest& request,
+                                        std::uint32_t firstSample, std::uint32_t count)
+{
+    if (count == 0)
+        return;
+    RenderSettings settings = request.settings;
+    settings.sampling = PixelSampling::Accumulate;
+    const VkExtent2D size = extent();
+    const shader::RenderUniforms uniforms = makeUniforms(m_engine->scene(), request.camera, settings, size.width,
+                                                         size.height, m_engine->gpuScene().lightCount());
+    std::memcpy(m_uniforms.at(slot).mapped(), &uniforms, sizeof(uniforms));
+
+    // After the previous frame's display reads (write-after-read) and its samples or clears.
+    memoryBarrier(cmd, kImageStages, VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    if (request.cost)
+    {
+        if (!m_costPipeline)
+            createCostResources();
+        const VkDescriptorSet sets[] = {m_sets.at(slot), m_costSets.at(slot)};
+        m_costPipeline->recordLaunches(cmd, sets, firstSample, count, size);
+    }
+    else
+        m_engine->pipeline().recordLaunches(cmd, {&m_sets.at(slot), 1}, firstSample, count, size);
+    memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
+                  VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
+}
+
+CostSummary summarizeCost(const shader::CostStats& stats)
+{
+    CostSummary summary;
+    std::memcpy(&summary.max, &stats.maxBits, sizeof(summary.max));
+    std::uint64_t pixels = 0;
+    for (std::uint32_t count : stats.buckets)
+        pixels += count;
+    // The 95th percentile, placed inside its bucket as if the bucket's pixels were spread evenly in log2.
+    const double target = 0.95 * static_cast<double>(pixels);
+    double below = 0.0;
+    for (std::uint32_t b = 0; b < shader::kCostBuckets && pixels > 0; ++b)
+    {
+        const double count = stats.buckets[b];
+        if (below + count >= target && count > 0.0)
+        {
+            summary.high = static_cast<float>(std::exp2(double(b) + (target - below) / count));
+            break;
+        }
+        below += count;
+    }
+    return summary;
+}
+
+CostSummary ProgressiveRenderer::takeCostSummary(std::uint32_t slot)
+{
+    if (slot >= m_costStats.size())
+        return {};
+    auto* stats = static_cast<shader::CostStats*>(m_costStats[slot].mapped());
+    const CostSummary summary = summarizeCost(*stats);
+    std::memset(stats, 0, sizeof(*stats));
+    return summary;
+}
+
+Image ProgressiveRenderer::readImage() const
+{
+    const vk::Device& device = m_engine->context().device();
+    const VkExtent2D size = extent();
+    if (m_imagesUndefined)
+        return Image(static_cast<int>(size.width), static_cast<int>(size.height)); // nothing traced yet
+    const vk::Buffer readback(device, VkDeviceSize(16) * size.width * size.height, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                              vk::MemoryUse::Readback);
+    vk::submitAndWait(device, m_engine->context().commandPool(), [&](VkCommandBuffer cmd) {
+        VkImageMemoryBarrier toSource{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+        toSource.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+        toSource.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+        toSource.oldLayout = VK_IMAGE_LAYOUT_GENERAL;
+        toSource.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+        toSource.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        toSource.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        toSource.image = m_accumulation.Handle();
+        toSource.subresourceRange = vk::kColorRange;
+        vkCmdPipelineBarrier(cmd, kImageStages, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1,
+                             &toSource);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {size.width, size.height, 1};
+        vkCmdCopyImageToBuffer(cmd, m_accumulation.Handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.Handle(),
+                               1, &region);
+        VkImageMemoryBarrier toGeneral = toSource; // back for the next frames' shaders
+        toGeneral.srcAccessMask = 0;
+        toGeneral.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+        toGeneral.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+        toGeneral.newLayout = VK_IMAGE_LAYOUT_GENERAL;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, kImageStages, 0, 0, nullptr, 0, nullptr, 1,
+                             &toGeneral);
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                      VK_ACCESS_HOST_READ_BIT);
+    });
+    Image image(static_cast<int>(size.width), static_cast<int>(size.height));
+    const auto* texels = static_cast<const float*>(readback.mapped());
+    for (std::size_t i = 0; i < image.pixelCount(); ++i)
+        image.data()[i] = vec3(texels[4 * i], texels[4 * i + 1], texels[4 * i + 2]) / std::max(texels[4 * i + 3], 1.0f);
+    return image;
+}
+} // namespace rt::gpu

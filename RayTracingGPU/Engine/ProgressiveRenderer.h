@@ -1,0 +1,97 @@
+// The window's ray tracing: a few camera samples per pixel per frame, added to an accumulation image of the
+// window's size and recorded into the frame's own command buffer (no readback, no wait). Each frame in flight
+// has its own uniforms and descriptor sets, so the camera and settings written for frame n + 1 never change
+// what frame n is still reading. With the heatmap on, the timed ray-generation shader also sums each pixel's
+// shader-clock ticks into a cost image. The display pass reads both images where they are (GENERAL layout).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "Image/Image.h"
+#include "Render/RenderSettings.h"
+#include "Scene/Camera.h"
+#include "Shared/HostDevice.h"
+#include "Vulkan/Buffer.h"
+#include "Vulkan/DescriptorPool.h"
+#include "Vulkan/Image.h"
+
+namespace rt::gpu
+{
+class GpuEngine;
+class PathTracingPipeline;
+
+/// What one frame traces.
+struct FrameRequest
+{
+    RenderSettings settings; // depth, estimator, unidirectional light, seed (sampling is always progressive)
+    CameraDesc camera; // the window's camera, not necessarily the scene's
+    bool cost = false; // time the samples (heatmap); needs costAvailable()
+};
+
+/// One frame's timed samples, summarised: the heatmap's legend and automatic scale.
+struct CostSummary
+{
+    float max = 0.0f; // largest ticks per sample of any pixel (0: the frame timed nothing)
+    float high = 0.0f; // 95th percentile of the pixels (interpolated in log2 within its power-of-two bucket)
+};
+
+CostSummary summarizeCost(const shader::CostStats& stats);
+
+class ProgressiveRenderer final
+{
+public:
+    /// `frameSlots`: frames in flight, each with its own uniforms and descriptor sets.
+    ProgressiveRenderer(const GpuEngine& engine, std::uint32_t frameSlots);
+    ProgressiveRenderer(const ProgressiveRenderer&) = delete;
+    ProgressiveRenderer& operator=(const ProgressiveRenderer&) = delete;
+    ~ProgressiveRenderer();
+
+    /// The device has the shader clock, so the heatmap can be shown.
+    bool costAvailable() const;
+    VkExtent2D extent() const { return m_accumulation.extent(); }
+
+    /// Images of `extent` (kept when it is unchanged) and descriptor sets for the engine's current scene. Call
+    /// with the device idle, after every setScene and resize; the next frame must begin with recordClear.
+    void prepare(VkExtent2D extent);
+
+    /// Records the clearing of the accumulation and cost images: the next sample starts a new image.
+    void recordClear(VkCommandBuffer cmd);
+    /// Records `count` samples of `request` (indices from `firstSample` on) for frame `slot`, whose previous
+    /// frame must have completed (its uniforms are rewritten now), and makes them visible to the display pass.
+    void recordSamples(VkCommandBuffer cmd, std::uint32_t slot, const FrameRequest& request, std::uint32_t firstSample,
+                       std::uint32_t count);
+
+    VkImageView accumulationView() const { return m_accumulationView.Handle(); }
+    VkImageView costView() const { return m_costView.Handle(); }
+
+    /// The cost of `slot`'s last timed frame (zeros if it timed nothing), and zero counts for its next one.
+    /// Call once `slot`'s previous frame has completed.
+    CostSummary takeCostSummary(std::uint32_t slot);
+
+    /// The accumulated estimate (radiance sum / sample count per pixel), read back: submits and waits.
+    Image readImage() const;
+
+private:
+    void createCostResources();
+    void writeCostDescriptors() const;
+
+    const GpuEngine* m_engine;
+    std::vector<vk::Buffer> m_uniforms; // per slot
+    vk::Buffer m_counters; // NaN / Inf samples, shared: only atomics touch it
+    vk::Image m_accumulation;
+    vk::ImageView m_accumulationView;
+    vk::Image m_cost;
+    vk::ImageView m_costView;
+    bool m_imagesUndefined = true; // not cleared since they were created
+    std::vector<vk::DescriptorPool> m_pools; // per slot, one set each
+    std::vector<VkDescriptorSet> m_sets;
+    // The heatmap's pipeline and set kSetCost per slot, made when first asked for (lavapipe compiles a
+    // ray-tracing pipeline for seconds at its first launch).
+    std::unique_ptr<PathTracingPipeline> m_costPipeline;
+    std::vector<vk::Buffer> m_costStats; // per slot: CostStats
+    std::vector<vk::DescriptorPool> m_costPools;
+    std::vector<VkDescriptorSet> m_costSets;
+};
+} // namespace rt::gpu
