@@ -89,6 +89,7 @@ RenderResult CpuEngine::render(const RenderSettings& settings, RenderControl& co
     const bool stratified = settings.sampling == PixelSampling::Stratified;
     const int trueSpp = settings.trueSpp();
     const int strata = stratified ? static_cast<int>(std::lround(std::sqrt(double(trueSpp)))) : 1;
+    const float invStrata = 1.0f / float(strata);
     const int passes = accumulate ? trueSpp : 1;
     const int samplesPerPass = accumulate ? 1 : trueSpp;
 
@@ -113,7 +114,9 @@ RenderResult CpuEngine::render(const RenderSettings& settings, RenderControl& co
             {
                 const auto pixelIndex = static_cast<std::uint32_t>(y * width + x);
                 vec3 acc(0.0f);
-                for (int s = firstSample; s < firstSample + samplesPerPass; ++s)
+                // Stratum (sx, sy) of sample s = sy * strata + sx, stepped instead of divided per sample.
+                int sx = firstSample % strata, sy = firstSample / strata;
+                for (int s = firstSample; s < firstSample + samplesPerPass; ++s, sx = sx + 1 == strata ? (++sy, 0) : sx + 1)
                 {
                     Rng rng = Rng::forSample(settings.seed, pixelIndex, static_cast<std::uint32_t>(s));
                     const float jx = rng.nextFloat();
@@ -121,8 +124,8 @@ RenderResult CpuEngine::render(const RenderSettings& settings, RenderControl& co
                     float fx, fy;
                     if (stratified)
                     {
-                        fx = float(x) + (float(s % strata) + jx) / float(strata);
-                        fy = float(y) + (float(s / strata) + jy) / float(strata);
+                        fx = float(x) + (float(sx) + jx) * invStrata;
+                        fy = float(y) + (float(sy) + jy) * invStrata;
                     }
                     else
                     {
