@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <vector>
 
 #include <GL/gl.h>
 #include <imgui.h>
@@ -36,10 +37,26 @@ void ImageView::update(const std::shared_ptr<const Preview>& preview)
 {
     if (!preview || preview->generation == m_generation)
         return;
-    m_texture.upload(preview->linear.width(), preview->linear.height(), preview->rgba.data());
     m_generation = preview->generation;
     m_width = preview->linear.width();
     m_height = preview->linear.height();
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    const int step = (std::max(m_width, m_height) + maxSize - 1) / std::max(maxSize, 1);
+    if (step <= 1)
+    {
+        m_texture.upload(m_width, m_height, preview->rgba.data());
+        return;
+    }
+    // Wider than a texture may be (renders go to 65536 pixels): show every step-th pixel; Save image keeps all.
+    const int w = m_width / step;
+    const int h = m_height / step;
+    std::vector<unsigned char> shown(std::size_t(w) * h * 4);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            std::copy_n(preview->rgba.data() + (std::size_t(y * step) * m_width + std::size_t(x * step)) * 4, 4,
+                        shown.data() + (std::size_t(y) * w + x) * 4);
+    m_texture.upload(w, h, shown.data());
 }
 
 void ImageView::draw(bool dim, const std::string& overlay)

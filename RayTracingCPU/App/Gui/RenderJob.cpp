@@ -143,7 +143,10 @@ void RenderJob::run(const RenderRequest& request, std::shared_ptr<RenderControl>
     {
         RenderEngine* engine = engineFor(request.engine, *control);
         if (!engine)
-            return report({.request = request, .cancelled = true});
+        {
+            report({.request = request, .cancelled = true});
+            return;
+        }
         setPhase(JobPhase::BuildingScene);
         const std::shared_ptr<const Scene> scene = sceneFor(request.image);
         EngineSlot& slot = m_slots[std::size_t(request.engine)];
@@ -172,7 +175,10 @@ void RenderJob::run(const RenderRequest& request, std::shared_ptr<RenderControl>
                     publish(request, combine(mean, meanSamples, estimate, samples), meanSamples + samples, false);
                 });
             if (result.stats.cancelled)
-                return report({.request = request, .cancelled = true});
+            {
+                report({.request = request, .cancelled = true});
+                return;
+            }
             mean = combine(mean, meanSamples, result.image, result.stats.trueSpp);
             meanSamples += result.stats.trueSpp;
             publish(request, mean, meanSamples, true, RenderOutcome{.request = request, .stats = result.stats});

@@ -124,7 +124,10 @@ bool Session::applySceneDefaults()
 {
     const std::optional<SceneDefaults> d = m_job.sceneDefaults(m_image.scene);
     if (!d)
+    {
+        note("the scene's defaults are known once it has been built: render it first", true);
         return false;
+    }
     ImageSettings s = m_image;
     s.spp = d->spp;
     s.depth = d->depth;

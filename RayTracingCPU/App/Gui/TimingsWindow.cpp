@@ -25,14 +25,10 @@ std::string speedUp(const TimingRow& row, EngineKind engine)
 void drawTimings(Session& session)
 {
     const TimingsTable& table = session.timings();
-    ImGui::TextUnformatted("Timings of this session");
-    ImGui::SameLine();
-    ImGui::TextDisabled("(tracing time of the latest render and its Mpaths/s; hover for best of n)");
-    ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - ImGui::CalcTextSize("Clear").x -
-                    ImGui::GetStyle().FramePadding.x * 2.0f);
     if (ImGui::SmallButton("Clear"))
         session.clearTimings();
-
+    ImGui::SameLine();
+    ImGui::TextDisabled("tracing time of the latest render and its Mpaths/s; hover a time for the best of n");
     // Every column follows its widest cell as timings arrive; a pane too narrow scrolls rather than clips.
     const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollX |
                                   ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
