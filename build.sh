@@ -24,7 +24,7 @@ packages=(
     libglm-dev libspdlog-dev libstb-dev libtinyobjloader-dev libtbb-dev libcli11-dev nlohmann-json3-dev
     libgtest-dev libbenchmark-dev
     libvulkan-dev vulkan-tools vulkan-validationlayers glslang-tools spirv-tools
-    libglfw3-dev libimgui-dev xvfb xauth x11-utils imagemagick
+    libglfw3-dev libimgui-dev xvfb xauth x11-utils imagemagick fonts-dejavu-core hyperfine
     xplanet-images assimp-testmodels
 )
 backports_packages=(mesa-vulkan-drivers)
