@@ -41,11 +41,13 @@ void rayTracingSection(Controls& controls, const WindowState& state)
         controls.setAccumulate(on);
     if (int samples = display.samplesPerFrame; ImGui::SliderInt("Samples / frame", &samples, 1, 64))
         controls.setSamplesPerFrame(samples);
-    if (int spp = display.targetSpp; ImGui::InputInt("Stop at spp (0: never)", &spp, 16, 256))
+    if (int spp = display.targetSpp; ImGui::InputInt("Stop at spp", &spp, 16, 256))
         controls.setTargetSpp(spp);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Tracing stops at this many samples per pixel; 0: never");
     if (int depth = image.depth; ImGui::SliderInt("Depth", &depth, 1, 100))
         controls.setDepth(depth);
-    if (bool on = image.pdf; ImGui::Checkbox("Light sampling (PDF mixture)", &on))
+    if (bool on = image.pdf; ImGui::Checkbox("Light sampling (PDF)", &on))
         controls.setPdf(on);
     if (bool on = image.unidirectionalLight; ImGui::Checkbox("Unidirectional light", &on))
         controls.setUnidirectionalLight(on);
@@ -124,10 +126,10 @@ void drawPanel(Controls& controls, const WindowState& state, const PanelInfo& in
 {
     const float fontScale = state.display.fontScale;
     ImGui::SetNextWindowPos({8.0f, 8.0f}, ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize({320.0f * fontScale, 0.0f}, ImGuiCond_Always);
+    ImGui::SetNextWindowSize({kPanelWidth * fontScale, 0.0f}, ImGuiCond_Always);
     ImGui::SetNextWindowSizeConstraints({0.0f, 0.0f}, {1e6f, float(info.size.height) - 16.0f});
     ImGui::Begin("ray-tracing-gpu", nullptr, ImGuiWindowFlags_NoSavedSettings);
-    ImGui::PushItemWidth(-140.0f * fontScale);
+    ImGui::PushItemWidth(-110.0f * fontScale); // room for the labels right of the widgets
     if (ImGui::CollapsingHeader("UI", ImGuiTreeNodeFlags_DefaultOpen))
     {
         if (bool dark = state.display.darkStyle; ImGui::Checkbox("Dark style", &dark))

@@ -9,6 +9,9 @@
 
 namespace rt::gpu::gui
 {
+/// Pixels at font scale 1: the panel sits at the window's top left, 8 pixels in, over the image.
+inline constexpr float kPanelWidth = 300.0f;
+
 /// What the panel shows but does not edit.
 struct PanelInfo
 {

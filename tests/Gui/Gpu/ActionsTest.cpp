@@ -1,0 +1,135 @@
+// The window's scripted actions and the settings they change, without a window: every action goes through
+// Controls, the functions the panel's widgets call, and every image setting restarts accumulation.
+#include <gtest/gtest.h>
+
+#include "App/Gui/Actions.h"
+#include "App/Gui/CameraController.h"
+#include "Error.h"
+#include "Scenes/Catalogue.h"
+
+namespace rt::gpu::gui
+{
+namespace
+{
+WindowState cornellState()
+{
+    WindowState state;
+    state.costAvailable = true;
+    state.sceneCamera = makeScene("cornell-box-lights").camera;
+    state.image.camera = state.sceneCamera;
+    return state;
+}
+
+void apply(WindowState& state, const std::string& script)
+{
+    Controls controls(state);
+    for (const Action& action : parseActions(script))
+        applyAction(action, controls);
+}
+
+TEST(WindowActions, ParseSplitsAtSemicolonsAndSkipsBlanks)
+{
+    const std::vector<Action> actions = parseActions("scene=rtnw-quads; ;depth=7;resize=0x0;camera=forward:10;");
+    ASSERT_EQ(actions.size(), 4u);
+    EXPECT_EQ(actions[0].name, "scene");
+    EXPECT_EQ(actions[0].value, "rtnw-quads");
+    EXPECT_EQ(actions[3].value, "forward:10");
+}
+
+TEST(WindowActions, BadNamesAndValuesAreUsageErrorsNamingThem)
+{
+    for (const char* bad : {"depth=0", "depth=x", "bogus=1", "heatmap=yes", "resize=10", "resize=-1x5",
+                            "camera=sideways:1", "camera=forward", "fov=abc", "style=pink", "nothing", "scene="})
+    {
+        try
+        {
+            parseActions(bad);
+            ADD_FAILURE() << bad << " was accepted";
+        }
+        catch (const UsageError& e)
+        {
+            const std::string name = std::string(bad).substr(0, std::string(bad).find('='));
+            EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(WindowActions, EachActionChangesItsSetting)
+{
+    WindowState state = cornellState();
+    apply(state, "depth=7;samples=4;spp=64;pdf=off;unidirectional-light=off;accumulate=off;raytracing=off;"
+                 "heatmap=on;heatmap-scale=5000;style=light;font=1.5;fov=55;focus=20;aperture=2");
+    EXPECT_EQ(state.image.depth, 7);
+    EXPECT_EQ(state.display.samplesPerFrame, 4);
+    EXPECT_EQ(state.display.targetSpp, 64);
+    EXPECT_FALSE(state.image.pdf);
+    EXPECT_FALSE(state.image.unidirectionalLight);
+    EXPECT_FALSE(state.image.accumulate);
+    EXPECT_FALSE(state.image.rayTracing);
+    EXPECT_TRUE(state.image.heatmap);
+    EXPECT_FALSE(state.display.autoCostScale);
+    EXPECT_FLOAT_EQ(state.display.costScale, 5000.0f);
+    EXPECT_FALSE(state.display.darkStyle);
+    EXPECT_FLOAT_EQ(state.display.fontScale, 1.5f);
+    EXPECT_FLOAT_EQ(state.image.camera.vfovDegrees, 55.0f);
+    EXPECT_FLOAT_EQ(state.image.camera.focusDistance, 20.0f);
+    EXPECT_NEAR(apertureOf(state.image.camera), 2.0f, 1e-4f);
+}
+
+TEST(WindowActions, RequestsAreLeftForTheFrameLoop)
+{
+    WindowState state = cornellState();
+    apply(state, "scene=rtnw-quads;resize=0x0;save=out.png");
+    EXPECT_EQ(state.sceneRequest, "rtnw-quads");
+    EXPECT_EQ(state.resizeRequest, (Extent{0, 0}));
+    EXPECT_EQ(state.saveRequest, std::filesystem::path("out.png"));
+    EXPECT_THROW(apply(state, "scene=no-such-scene"), SceneError);
+}
+
+TEST(WindowActions, CameraMovesInViewAxesAndResets)
+{
+    WindowState state = cornellState();
+    const CameraDesc start = state.image.camera;
+    apply(state, "camera=forward:10");
+    const vec3 forward = glm::normalize(start.lookAt - start.lookFrom);
+    EXPECT_NEAR(glm::length(state.image.camera.lookFrom - (start.lookFrom + 10.0f * forward)), 0.0f, 1e-3f);
+    apply(state, "camera=yaw:30;camera=pitch:-10;camera=up:5");
+    EXPECT_NE(state.image.camera, start);
+    apply(state, "camera=reset");
+    EXPECT_EQ(state.image.camera, start);
+}
+
+TEST(WindowActions, HeatmapStaysOffWithoutTheShaderClock)
+{
+    WindowState state = cornellState();
+    state.costAvailable = false;
+    apply(state, "heatmap=on");
+    EXPECT_FALSE(state.image.heatmap);
+}
+
+TEST(WindowActions, WaitIsTheFrameLoops)
+{
+    WindowState state = cornellState();
+    Controls controls(state);
+    const Action wait = parseActions("wait=3").front();
+    EXPECT_FALSE(applyAction(wait, controls));
+    EXPECT_EQ(waitFrames(wait), 3);
+}
+
+TEST(WindowSettings, EveryImageSettingRestartsAccumulationDisplaySettingsDoNot)
+{
+    const WindowState base = cornellState();
+    const auto changed = [&](const std::string& script) {
+        WindowState state = base;
+        apply(state, script);
+        return !(state.image == base.image);
+    };
+    for (const char* imageChange : {"depth=7", "pdf=off", "unidirectional-light=off", "accumulate=off",
+                                    "raytracing=off", "heatmap=on", "fov=30", "aperture=1", "focus=3",
+                                    "camera=forward:1", "camera=yaw:1"})
+        EXPECT_TRUE(changed(imageChange)) << imageChange;
+    for (const char* displayChange : {"samples=8", "spp=100", "heatmap-scale=100", "style=light", "font=2"})
+        EXPECT_FALSE(changed(displayChange)) << displayChange;
+}
+} // namespace
+} // namespace rt::gpu::gui

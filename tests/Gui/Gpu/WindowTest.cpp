@@ -1,0 +1,266 @@
+// ray-tracing-gpu's window end to end, under Xvfb with lavapipe (or any display and device): the app runs
+// with --frames/--screenshot/--actions and the tests look at what it saved. Each test skips, saying why, when
+// there is no display or no Vulkan device that can present to it.
+// RT_GUI_KEEP=<folder> keeps the screenshots for a person to look at.
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <stb_image.h>
+
+#ifndef _WIN32 // popen and the exit status macros: POSIX
+#include <sys/wait.h>
+
+#include "Image/ImageIO.h"
+
+namespace rt::gpu::gui::test
+{
+namespace
+{
+struct AppRun
+{
+    int status;
+    std::string output; // stdout and stderr
+};
+
+AppRun runApp(const std::string& arguments)
+{
+    const std::string command = "'" RT_GPU_APP "' " + arguments + " 2>&1";
+    AppRun run{-1, {}};
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe)
+        return run;
+    char buffer[4096];
+    while (std::size_t n = std::fread(buffer, 1, sizeof(buffer), pipe))
+        run.output.append(buffer, n);
+    const int status = pclose(pipe);
+    run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return run;
+}
+
+std::filesystem::path scratchDir()
+{
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("rt_gui_gpu_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+/// Copies `file` to $RT_GUI_KEEP, when set, under the test's name.
+void keep(const std::filesystem::path& file)
+{
+    if (const char* folder = std::getenv("RT_GUI_KEEP"))
+    {
+        std::filesystem::create_directories(folder);
+        const std::string name = std::string("gpu_") +
+                                 ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+                                 file.filename().string();
+        std::filesystem::copy_file(file, std::filesystem::path(folder) / name,
+                                   std::filesystem::copy_options::overwrite_existing);
+    }
+}
+
+/// Why the window cannot be tested here, or empty. Only these exact environment failures skip; any other
+/// failure of the app fails the test.
+std::string unavailable(const AppRun& run)
+{
+    if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY"))
+        return "no display (run under xvfb-run)";
+    for (const char* reason : {"cannot open a window", "no Vulkan device can run the ray tracer in a window",
+                               "no Vulkan driver found", "no Vulkan loader"})
+        if (run.status == 5 && run.output.find(reason) != std::string::npos)
+            return run.output;
+    return {};
+}
+
+#define RT_RUN_WINDOW(run, arguments)                                                                          \
+    const AppRun run = runApp(arguments);                                                                      \
+    if (const std::string why = unavailable(run); !why.empty())                                                \
+        GTEST_SKIP() << "no display-capable Vulkan device: " << why;                                           \
+    ASSERT_EQ(run.status, 0) << run.output;                                                                    \
+    EXPECT_EQ(run.output.find("Vulkan validation"), std::string::npos) << run.output
+
+struct Screenshot
+{
+    int width = 0;
+    int height = 0;
+    std::vector<unsigned char> rgba;
+
+    explicit Screenshot(const std::filesystem::path& png)
+    {
+        int channels = 0;
+        unsigned char* pixels = stbi_load(png.string().c_str(), &width, &height, &channels, 4);
+        if (pixels)
+            rgba.assign(pixels, pixels + std::size_t(4) * width * height);
+        stbi_image_free(pixels);
+    }
+};
+
+/// Pixel statistics of a rectangle [x0, x1) x [y0, y1).
+struct Region
+{
+    double meanLuma = 0.0;
+    double stddevLuma = 0.0;
+    std::size_t distinctColors = 0;
+    double redFraction = 0.0; // r well above g and b: the Cornell box's red wall
+    double paletteFraction = 0.0; // one channel dark, one bright: a heatmap colour, never a grey
+};
+
+Region region(const Screenshot& s, int x0, int y0, int x1, int y1)
+{
+    Region r;
+    std::vector<bool> seen(1 << 15, false);
+    double sum = 0.0, sum2 = 0.0;
+    std::size_t n = 0, red = 0, palette = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x)
+        {
+            const unsigned char* p = &s.rgba[4 * (std::size_t(y) * s.width + x)];
+            const double luma = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+            sum += luma;
+            sum2 += luma * luma;
+            ++n;
+            const int key = (p[0] >> 3) << 10 | (p[1] >> 3) << 5 | (p[2] >> 3);
+            if (!seen[key])
+            {
+                seen[key] = true;
+                ++r.distinctColors;
+            }
+            red += p[0] > 100 && p[0] > 2 * p[1] && p[0] > 2 * p[2];
+            palette += std::min({p[0], p[1], p[2]}) < 60 && std::max({p[0], p[1], p[2]}) > 120;
+        }
+    r.meanLuma = sum / double(n);
+    r.stddevLuma = std::sqrt(std::max(0.0, sum2 / double(n) - r.meanLuma * r.meanLuma));
+    r.redFraction = double(red) / double(n);
+    r.paletteFraction = double(palette) / double(n);
+    return r;
+}
+
+// 640 x 400 windows: the panel covers x in [8, 308) (kPanelWidth), the image shows right of it.
+constexpr const char* kWindow = "--width 640 --aspect 1.6 --validation ";
+const int kPanel[4] = {16, 40, 300, 380};
+const int kImage[4] = {320, 10, 630, 390};
+
+Region panelOf(const Screenshot& s) { return region(s, kPanel[0], kPanel[1], kPanel[2], kPanel[3]); }
+Region imageOf(const Screenshot& s) { return region(s, kImage[0], kImage[1], kImage[2], kImage[3]); }
+
+void expectPanel(const Screenshot& s)
+{
+    const Region panel = panelOf(s);
+    EXPECT_GT(panel.distinctColors, 8u) << "text, widgets and frames";
+    EXPECT_GT(panel.stddevLuma, 10.0);
+}
+
+TEST(GpuWindow, ScreenshotShowsPanelAndRayTracedImage)
+{
+    const auto dir = scratchDir();
+    RT_RUN_WINDOW(run, std::string(kWindow) + "--scene cornell-box-lights --frames 8 --screenshot '" +
+                           (dir / "shot.png").string() + "'");
+    const Screenshot s(dir / "shot.png");
+    keep(dir / "shot.png");
+    ASSERT_EQ(s.width, 640);
+    ASSERT_EQ(s.height, 400);
+    expectPanel(s);
+    const Region image = imageOf(s);
+    EXPECT_GT(image.meanLuma, 20.0) << "not blank";
+    EXPECT_GT(image.stddevLuma, 20.0);
+    EXPECT_GT(image.redFraction, 0.03) << "the red wall of the Cornell box";
+    EXPECT_LT(image.paletteFraction, 0.5) << "radiance, not the heatmap";
+}
+
+TEST(GpuWindow, RasterPreviewShowsTheSameSceneFromTheSameCamera)
+{
+    const auto dir = scratchDir();
+    RT_RUN_WINDOW(run, std::string(kWindow) + "--scene cornell-box-lights --raytracing off --frames 2 --screenshot '" +
+                           (dir / "preview.png").string() + "'");
+    const Screenshot s(dir / "preview.png");
+    keep(dir / "preview.png");
+    expectPanel(s);
+    const Region image = imageOf(s);
+    EXPECT_GT(image.meanLuma, 20.0);
+    EXPECT_GT(image.redFraction, 0.03) << "the red wall, where the ray tracer shows it";
+    EXPECT_LT(image.distinctColors, 2000u) << "flat shading, no noise";
+}
+
+TEST(GpuWindow, HeatmapShowsCostPerPixel)
+{
+    const auto dir = scratchDir();
+    RT_RUN_WINDOW(run, std::string(kWindow) + "--scene cornell-box-lights --heatmap on --frames 4 --screenshot '" +
+                           (dir / "heatmap.png").string() + "'");
+    if (run.output.find("no VK_KHR_shader_clock") != std::string::npos)
+        GTEST_SKIP() << "the device has no shader clock: the heatmap is hidden, as it should be";
+    const Screenshot s(dir / "heatmap.png");
+    keep(dir / "heatmap.png");
+    expectPanel(s);
+    const Region image = imageOf(s);
+    EXPECT_GT(image.paletteFraction, 0.9) << "heatmap colours only";
+    EXPECT_GT(image.distinctColors, 4u) << "cost varies over the image";
+}
+
+TEST(GpuWindow, AccumulatedImageMatchesTheSettingsShown)
+{
+    // Scene switch and depth change while accumulating; then the window's image must be the headless render of
+    // the settings it shows, sample for sample (same device, same streams: bit for bit here).
+    const auto dir = scratchDir();
+    RT_RUN_WINDOW(run, "--width 320 --aspect 1.6 --validation --scene cornell-box-lights --spp 4 --seed 7 --frames 1 "
+                       "--actions 'wait=2;scene=rtnw-quads;wait=1;depth=5;wait=8;save=" +
+                           (dir / "window.png").string() + "'");
+    EXPECT_NE(run.output.find("(4 spp)"), std::string::npos) << run.output;
+    const AppRun headless = runApp("--headless --quiet --scene rtnw-quads --width 320 --aspect 1.6 --spp 4 --seed 7 "
+                                   "--depth 5 --sampling accumulate --hdr '" +
+                                   (dir / "headless.pfm").string() + "'");
+    ASSERT_EQ(headless.status, 0) << headless.output;
+    const Image window = readPfm(dir / "window.pfm");
+    const Image reference = readPfm(dir / "headless.pfm");
+    ASSERT_EQ(window.width(), reference.width());
+    ASSERT_EQ(window.height(), reference.height());
+    float largest = 0.0f;
+    for (std::size_t i = 0; i < window.pixelCount(); ++i)
+        largest = std::max(largest, glm::length(window.data()[i] - reference.data()[i]));
+    EXPECT_LE(largest, 1e-5f);
+}
+
+TEST(GpuWindow, CameraMoveRestartsAccumulation)
+{
+    const auto dir = scratchDir();
+    RT_RUN_WINDOW(run, "--width 320 --aspect 1.6 --validation --scene cornell-box-lights --frames 1 --actions "
+                       "'wait=6;save=" + (dir / "before.png").string() + ";camera=forward:100;save=" +
+                           (dir / "after.png").string() + "'");
+    const std::regex spp(R"(\((\d+) spp\))");
+    std::vector<int> counts;
+    for (auto it = std::sregex_iterator(run.output.begin(), run.output.end(), spp); it != std::sregex_iterator(); ++it)
+        counts.push_back(std::stoi((*it)[1]));
+    ASSERT_GE(counts.size(), 2u) << run.output;
+    EXPECT_GE(counts[0], 6);
+    EXPECT_LE(counts[1], 2) << "the move started a new image";
+}
+
+TEST(GpuWindow, StressSwitchesResizesAndMinimisesWithoutValidationMessages)
+{
+    // 20 scene switches, depth changes while accumulating, a resize to 0 x 0 and back, both display modes:
+    // exit 0, nothing from the validation layer (leaks at device destruction included), the last frame at
+    // the new size.
+    const std::string scenes = "scene=rtnw-quads;scene=cornell-box-lights;scene=rtow-default;scene=rtnw-earth;"
+                               "scene=rtnw-cornell-smoke;scene=rtnw-simple-light;scene=rtrol-cornell-glass;"
+                               "scene=rtnw-perlin-spheres;scene=rtnw-motion-blur;scene=cube-and-spheres;";
+    const auto dir = scratchDir();
+    RT_RUN_WINDOW(run, "--width 320 --aspect 1.6 --validation --scene rtnw-quads --frames 3 --screenshot '" +
+                           (dir / "stress.png").string() + "' --actions '" + scenes + scenes +
+                           "depth=7;wait=2;depth=3;samples=2;resize=0x0;wait=3;resize=480x300;wait=2;"
+                           "raytracing=off;wait=1;raytracing=on;heatmap=on;wait=1;heatmap=off;accumulate=off;"
+                           "camera=forward:1;camera=yaw:10;fov=50;save=" +
+                           (dir / "image.png").string() + "'");
+    EXPECT_NE(run.output.find("saved"), std::string::npos) << run.output;
+    const Screenshot s(dir / "stress.png");
+    keep(dir / "stress.png");
+    EXPECT_EQ(s.width, 480);
+    EXPECT_EQ(s.height, 300);
+}
+} // namespace
+} // namespace rt::gpu::gui::test
+#endif
