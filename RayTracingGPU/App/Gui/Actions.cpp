@@ -170,7 +170,14 @@ const std::vector<ActionKind>& actionKinds()
              if (c)
                  c->setDarkStyle(a.value == "dark");
          }},
-        {"font", "SCALE", "font scale of the panel (0.5 to 3)",
+        {"font", "NAME", "font of the panel, as the panel lists it",
+         [](const Action& a, Controls* c) {
+             if (a.value.empty())
+                 throw UsageError("--actions: font=: expected a font name");
+             if (c)
+                 c->setFont(a.value);
+         }},
+        {"font-size", "SCALE", "font scale of the panel (0.5 to 3)",
          [](const Action& a, Controls* c) { const float v = toFloat(a, a.value, 0.5f); if (c) c->setFontScale(v); }},
     };
     return kinds;

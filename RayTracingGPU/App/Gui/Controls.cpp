@@ -44,6 +44,20 @@ void Controls::turnCamera(float yawDegrees, float pitchDegrees)
 
 void Controls::resetCamera() { m_state->image.camera = m_state->sceneCamera; }
 void Controls::setDarkStyle(bool dark) { m_state->display.darkStyle = dark; }
+void Controls::setFont(const std::string& name)
+{
+    const std::vector<std::string>& fonts = m_state->fonts;
+    const auto found = std::find(fonts.begin(), fonts.end(), name);
+    if (found == fonts.end())
+    {
+        std::string known;
+        for (const std::string& f : fonts)
+            known += (known.empty() ? "'" : ", '") + f + "'";
+        throw UsageError(fmt::format("no font '{}' (installed: {})", name, known));
+    }
+    m_state->display.font = static_cast<int>(found - fonts.begin());
+}
+
 void Controls::setFontScale(float scale) { m_state->display.fontScale = std::clamp(scale, 0.5f, 3.0f); }
 void Controls::save(const std::filesystem::path& png) { m_state->saveRequest = png; }
 void Controls::resize(Extent size) { m_state->resizeRequest = Extent{std::max(size.width, 0), std::max(size.height, 0)}; }

@@ -38,6 +38,8 @@ public:
     void turnCamera(float yawDegrees, float pitchDegrees);
     void resetCamera();
     void setDarkStyle(bool dark);
+    /// One of WindowState::fonts; throws rt::UsageError naming the others for any other name.
+    void setFont(const std::string& name);
     void setFontScale(float scale);
     /// Asks for the accumulated image as PNG at `png` and PFM beside it (same name, .pfm).
     void save(const std::filesystem::path& png);

@@ -1,5 +1,8 @@
 #include "App/Gui/ImGuiLayer.h"
 
+#include <algorithm>
+#include <filesystem>
+
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_vulkan.h>
@@ -24,6 +27,19 @@ PFN_vkVoidFunction loadFunction(const char* name, void* instance)
     return vk::instanceProcAddr(static_cast<VkInstance>(instance), name);
 }
 
+struct FontFile
+{
+    const char* name;
+    const char* path;
+};
+
+// Debian's fonts-dejavu-core (build.sh installs it); where a file is missing the font is not offered.
+constexpr FontFile kFontFiles[] = {
+    {"DejaVu Sans", "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"},
+    {"DejaVu Sans Mono", "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf"},
+};
+constexpr float kFontPixels = 15.0f; // ImGui's own is 13 pixels high
+
 const std::vector<vk::DescriptorBinding>& fontBindings()
 {
     static const std::vector<vk::DescriptorBinding> bindings = {
@@ -38,8 +54,14 @@ ImGuiLayer::ImGuiLayer(const GpuContext& context, GLFWwindow* window, VkRenderPa
 {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr; // no imgui.ini in whatever directory the app runs from
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr; // no imgui.ini in whatever directory the app runs from
     ImGui::StyleColorsDark();
+    io.Fonts->AddFontDefault();
+    m_fontNames.push_back("ImGui default");
+    for (const FontFile& font : kFontFiles)
+        if (std::filesystem::exists(font.path) && io.Fonts->AddFontFromFileTTF(font.path, kFontPixels))
+            m_fontNames.push_back(font.name);
     const VkInstance instance = context.instance().Handle();
     if (!ImGui_ImplVulkan_LoadFunctions(loadFunction, instance))
         throw DeviceError("Dear ImGui's Vulkan backend could not load its Vulkan functions");
@@ -71,14 +93,16 @@ ImGuiLayer::~ImGuiLayer()
     ImGui::DestroyContext();
 }
 
-void ImGuiLayer::newFrame(bool darkStyle, float fontScale)
+void ImGuiLayer::newFrame(bool darkStyle, int font, float fontScale)
 {
     if (darkStyle != m_darkStyle)
     {
         darkStyle ? ImGui::StyleColorsDark() : ImGui::StyleColorsLight();
         m_darkStyle = darkStyle;
     }
-    ImGui::GetIO().FontGlobalScale = fontScale;
+    ImGuiIO& io = ImGui::GetIO();
+    io.FontDefault = io.Fonts->Fonts[std::clamp(font, 0, io.Fonts->Fonts.Size - 1)];
+    io.FontGlobalScale = fontScale;
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();

@@ -134,6 +134,13 @@ void drawPanel(Controls& controls, const WindowState& state, const PanelInfo& in
     {
         if (bool dark = state.display.darkStyle; ImGui::Checkbox("Dark style", &dark))
             controls.setDarkStyle(dark);
+        if (ImGui::BeginCombo("Font", state.fonts.at(static_cast<std::size_t>(state.display.font)).c_str()))
+        {
+            for (std::size_t i = 0; i < state.fonts.size(); ++i)
+                if (ImGui::Selectable(state.fonts[i].c_str(), static_cast<int>(i) == state.display.font))
+                    controls.setFont(state.fonts[i]);
+            ImGui::EndCombo();
+        }
         if (float scale = fontScale; ImGui::SliderFloat("Font size", &scale, 0.5f, 3.0f, "%.2fx"))
             controls.setFontScale(scale);
     }

@@ -91,6 +91,10 @@ public:
     {
         m_panel.savePath = options.savePath;
         m_state.costAvailable = m_renderer.costAvailable();
+        m_state.fonts = m_imgui.fontNames();
+        if (!options.screenshot.empty() && !m_presenter.canScreenshot())
+            throw DeviceError("--screenshot: the window's swapchain cannot be copied from (no 8-bit format or no "
+                              "VK_IMAGE_USAGE_TRANSFER_SRC_BIT)");
         m_state.image.heatmap = m_state.image.heatmap && m_state.costAvailable;
         if (options.initial.image.heatmap && !m_state.costAvailable)
             spdlog::warn("the device has no VK_KHR_shader_clock: no heatmap");
@@ -310,7 +314,7 @@ private:
     void drawFrame(float seconds)
     {
         const Extent size = m_window.framebufferSize();
-        m_imgui.newFrame(m_state.display.darkStyle, m_state.display.fontScale);
+        m_imgui.newFrame(m_state.display.darkStyle, m_state.display.font, m_state.display.fontScale);
         cameraInput(seconds);
         drawPanel(m_controls, m_state, panelInfo(size), m_panel);
 

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "Scene/Camera.h"
 
@@ -44,6 +45,7 @@ struct DisplaySettings
     bool autoCostScale = true; // the heatmap's top follows the image: 95 % of the pixels are below it
     float costScale = 1.0e5f; // otherwise: ticks per sample at the top of the palette
     bool darkStyle = true;
+    int font = 0; // index into WindowState::fonts
     float fontScale = 1.0f;
 };
 
@@ -55,6 +57,7 @@ struct WindowState
     CameraDesc sceneCamera; // the scene's own camera: "Reset camera"
     float cameraSpeed = 1.0f; // world units per second of WASD (movementSpeed of sceneCamera)
     bool costAvailable = false; // the device has the shader clock: the heatmap can be turned on
+    std::vector<std::string> fonts{"ImGui default"}; // the panel's fonts (ImGuiLayer: those installed)
     std::optional<std::string> sceneRequest; // to be built, then shown
     std::optional<std::filesystem::path> saveRequest; // PNG path; the PFM goes beside it
     std::optional<Extent> resizeRequest; // 0 x 0: minimised

@@ -15,6 +15,7 @@ WindowState cornellState()
 {
     WindowState state;
     state.costAvailable = true;
+    state.fonts = {"ImGui default", "Mono"};
     state.sceneCamera = makeScene("cornell-box-lights").camera;
     state.image.camera = state.sceneCamera;
     return state;
@@ -58,7 +59,7 @@ TEST(WindowActions, EachActionChangesItsSetting)
 {
     WindowState state = cornellState();
     apply(state, "depth=7;samples=4;spp=64;pdf=off;unidirectional-light=off;accumulate=off;raytracing=off;"
-                 "heatmap=on;heatmap-scale=5000;style=light;font=1.5;fov=55;focus=20;aperture=2");
+                 "heatmap=on;heatmap-scale=5000;style=light;font=Mono;font-size=1.5;fov=55;focus=20;aperture=2");
     EXPECT_EQ(state.image.depth, 7);
     EXPECT_EQ(state.display.samplesPerFrame, 4);
     EXPECT_EQ(state.display.targetSpp, 64);
@@ -70,6 +71,7 @@ TEST(WindowActions, EachActionChangesItsSetting)
     EXPECT_FALSE(state.display.autoCostScale);
     EXPECT_FLOAT_EQ(state.display.costScale, 5000.0f);
     EXPECT_FALSE(state.display.darkStyle);
+    EXPECT_EQ(state.display.font, 1);
     EXPECT_FLOAT_EQ(state.display.fontScale, 1.5f);
     EXPECT_FLOAT_EQ(state.image.camera.vfovDegrees, 55.0f);
     EXPECT_FLOAT_EQ(state.image.camera.focusDistance, 20.0f);
@@ -84,6 +86,7 @@ TEST(WindowActions, RequestsAreLeftForTheFrameLoop)
     EXPECT_EQ(state.resizeRequest, (Extent{0, 0}));
     EXPECT_EQ(state.saveRequest, std::filesystem::path("out.png"));
     EXPECT_THROW(apply(state, "scene=no-such-scene"), SceneError);
+    EXPECT_THROW(apply(state, "font=Comic Sans"), UsageError);
 }
 
 TEST(WindowActions, CameraMovesInViewAxesAndResets)
@@ -128,7 +131,8 @@ TEST(WindowSettings, EveryImageSettingRestartsAccumulationDisplaySettingsDoNot)
                                     "raytracing=off", "heatmap=on", "fov=30", "aperture=1", "focus=3",
                                     "camera=forward:1", "camera=yaw:1"})
         EXPECT_TRUE(changed(imageChange)) << imageChange;
-    for (const char* displayChange : {"samples=8", "spp=100", "heatmap-scale=100", "style=light", "font=2"})
+    for (const char* displayChange :
+         {"samples=8", "spp=100", "heatmap-scale=100", "style=light", "font=Mono", "font-size=2"})
         EXPECT_FALSE(changed(displayChange)) << displayChange;
 }
 } // namespace
