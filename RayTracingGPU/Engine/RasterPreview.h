@@ -30,9 +30,6 @@ public:
     /// Records the draws inside the render pass, for a viewport of `extent`.
     void record(VkCommandBuffer cmd, const CameraDesc& camera, VkExtent2D extent, bool encodeSrgb) const;
 
-    std::size_t triangleCount() const { return m_triangleVertices / 3; }
-    std::size_t sphereCount() const { return m_sphereCount; }
-
 private:
     const vk::Device* m_device;
     vk::PipelineLayout m_layout;

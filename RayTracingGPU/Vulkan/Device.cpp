@@ -19,7 +19,7 @@ std::atomic<int> g_liveDevices{0};
 
 Device::Device(const PhysicalDevice& physical, bool presentation)
     : m_physical(physical.handle), m_queueFamily(physical.queueFamily), m_properties(queryProperties(physical)),
-      m_presentation(presentation), m_shaderClock(physical.candidate.features.shaderSubgroupClock)
+      m_shaderClock(physical.candidate.features.shaderSubgroupClock)
 {
     if (g_liveDevices.load() > 0)
         throw DeviceError("a Vulkan device already exists in this process; the engine drives one device at a time");
@@ -48,7 +48,7 @@ Device::Device(const PhysicalDevice& physical, bool presentation)
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     features.pNext = &rt;
     std::vector<const char*> extensions(std::begin(kRequiredExtensions), std::end(kRequiredExtensions));
-    if (m_presentation)
+    if (presentation)
         extensions.push_back(kPresentationExtension);
     if (m_shaderClock)
     {
@@ -74,7 +74,7 @@ Device::~Device() { destroy(); }
 Device::Device(Device&& other) noexcept
     : m_device(std::exchange(other.m_device, VK_NULL_HANDLE)), m_physical(other.m_physical),
       m_queue(std::exchange(other.m_queue, VK_NULL_HANDLE)), m_queueFamily(other.m_queueFamily),
-      m_properties(other.m_properties), m_presentation(other.m_presentation), m_shaderClock(other.m_shaderClock)
+      m_properties(other.m_properties), m_shaderClock(other.m_shaderClock)
 {
 }
 
@@ -88,7 +88,6 @@ Device& Device::operator=(Device&& other) noexcept
         m_queue = std::exchange(other.m_queue, VK_NULL_HANDLE);
         m_queueFamily = other.m_queueFamily;
         m_properties = other.m_properties;
-        m_presentation = other.m_presentation;
         m_shaderClock = other.m_shaderClock;
     }
     return *this;

@@ -29,8 +29,6 @@ public:
     VkQueue queue() const { return m_queue; }
     std::uint32_t queueFamily() const { return m_queueFamily; }
     const DeviceProperties& properties() const { return m_properties; }
-    /// VK_KHR_swapchain is enabled and the queue presents to the surface the device was chosen for.
-    bool presentation() const { return m_presentation; }
     /// VK_KHR_shader_clock with shaderSubgroupClock is enabled (clockARB in shaders).
     bool shaderClock() const { return m_shaderClock; }
 
@@ -47,7 +45,6 @@ private:
     VkQueue m_queue = VK_NULL_HANDLE;
     std::uint32_t m_queueFamily = 0;
     DeviceProperties m_properties;
-    bool m_presentation = false;
     bool m_shaderClock = false;
 };
 } // namespace rt::vk

@@ -46,7 +46,9 @@ std::vector<std::string> Window::requiredInstanceExtensions()
     std::uint32_t count = 0;
     const char** names = glfwGetRequiredInstanceExtensions(&count);
     if (!names)
-        throw DeviceError(fmt::format("cannot present to a window: {}", g_lastGlfwError));
+        throw DeviceError(fmt::format("cannot present to a window: Vulkan offers no surface extension for this "
+                                      "display ({})",
+                                      g_lastGlfwError.empty() ? "is a Vulkan driver installed?" : g_lastGlfwError));
     return {names, names + count};
 }
 

@@ -31,6 +31,7 @@ constexpr float kFastMove = 4.0f; // Shift
 constexpr float kSlowMove = 0.25f; // Ctrl
 constexpr float kDegreesPerPixel = 0.2f; // mouse look
 constexpr float kFovPerWheelStep = 2.0f; // degrees
+constexpr double kIdleFrameSeconds = 1.0 / 60.0;
 
 GpuEngineOptions engineOptions(const WindowOptions& options, const Window& window)
 {
@@ -116,7 +117,11 @@ public:
         Clock::time_point last = Clock::now();
         while (!m_window.closeRequested() && !m_done)
         {
-            m_window.pollEvents();
+            // Nothing to trace: redraw on input, or at most at kIdleFrameSeconds (the preview, the panel).
+            if (automated() || m_loading.valid() || tracing())
+                m_window.pollEvents();
+            else
+                m_window.waitEvents(kIdleFrameSeconds);
             const Clock::time_point now = Clock::now();
             const float seconds = std::chrono::duration<float>(now - last).count();
             last = now;
@@ -136,6 +141,14 @@ public:
 
 private:
     bool automated() const { return m_options.frames.has_value(); }
+
+    /// The next frame traces samples: ray tracing is on and the image has not reached its stop.
+    bool tracing() const
+    {
+        const DisplaySettings& d = m_state.display;
+        return m_state.image.rayTracing &&
+               (d.targetSpp == 0 || !m_state.image.accumulate || m_accumulatedSpp < std::uint32_t(d.targetSpp));
+    }
 
     /// Puts `scene` on the device, in the preview and behind the renderer's descriptor sets; the device is idle.
     void showScene(const Scene& scene)
@@ -379,10 +392,12 @@ private:
             m_nextSample = 0; // a new image: its samples are those of a headless render from index 0
         m_traced = m_state.image;
 
-        std::uint32_t count = static_cast<std::uint32_t>(m_state.display.samplesPerFrame);
+        auto count = static_cast<std::uint32_t>(m_state.display.samplesPerFrame);
         if (m_state.display.targetSpp > 0 && m_state.image.accumulate)
-            count = std::min<std::uint32_t>(
-                count, static_cast<std::uint32_t>(std::max<std::int64_t>(m_state.display.targetSpp - std::int64_t(m_accumulatedSpp), 0)));
+        {
+            const auto target = static_cast<std::uint32_t>(m_state.display.targetSpp);
+            count = std::min(count, target > m_accumulatedSpp ? target - m_accumulatedSpp : 0u);
+        }
         FrameRequest request;
         request.settings.depth = m_state.image.depth;
         request.settings.estimator = m_state.image.pdf ? Estimator::Mixture : Estimator::BsdfOnly;

@@ -71,8 +71,9 @@ std::string unavailable(const AppRun& run)
 {
     if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY"))
         return "no display (run under xvfb-run)";
-    for (const char* reason : {"cannot open a window", "no Vulkan device can run the ray tracer in a window",
-                               "no Vulkan driver found", "no Vulkan loader"})
+    for (const char* reason : {"cannot open a window", "cannot present to a window",
+                               "no Vulkan device can run the ray tracer in a window", "no Vulkan driver found",
+                               "no Vulkan loader"})
         if (run.status == 5 && run.output.find(reason) != std::string::npos)
             return run.output;
     return {};
