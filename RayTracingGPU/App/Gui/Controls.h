@@ -30,6 +30,7 @@ public:
     void setDepth(int depth);
     void setPdf(bool on);
     void setUnidirectionalLight(bool on);
+    float fov() const { return m_state->image.camera.vfovDegrees; }
     void setFov(float degrees);
     void setAperture(float diameter);
     void setFocusDistance(float distance);

@@ -1,20 +1,20 @@
 #include "App/Gui/WindowApp.h"
 
 #include <chrono>
-#include <deque>
 #include <future>
 #include <memory>
 
 #include <GLFW/glfw3.h>
-#include <imgui.h>
 #include <spdlog/spdlog.h>
 
 #include "App/Gui/CameraController.h"
+#include "App/Gui/CameraInput.h"
 #include "App/Gui/Controls.h"
 #include "App/Gui/DisplayPass.h"
 #include "App/Gui/ImGuiLayer.h"
 #include "App/Gui/Panel.h"
 #include "App/Gui/Presenter.h"
+#include "App/Gui/Throughput.h"
 #include "App/Gui/Window.h"
 #include "Engine/ProgressiveRenderer.h"
 #include "Engine/RasterPreview.h"
@@ -27,10 +27,6 @@ namespace
 {
 using Clock = std::chrono::steady_clock;
 
-constexpr float kFastMove = 4.0f; // Shift
-constexpr float kSlowMove = 0.25f; // Ctrl
-constexpr float kDegreesPerPixel = 0.2f; // mouse look
-constexpr float kFovPerWheelStep = 2.0f; // degrees
 constexpr double kIdleFrameSeconds = 1.0 / 60.0;
 
 GpuEngineOptions engineOptions(const WindowOptions& options, const Window& window)
@@ -42,40 +38,6 @@ GpuEngineOptions engineOptions(const WindowOptions& options, const Window& windo
                                   [&window](VkInstance instance) { return window.createSurface(instance); }};
     return e;
 }
-
-/// Frames and samples over the last second.
-class Throughput final
-{
-public:
-    void add(Clock::time_point now, std::uint64_t samples)
-    {
-        m_events.push_back({now, samples});
-        while (m_events.size() > 2 && now - m_events.front().time > std::chrono::seconds(1))
-            m_events.pop_front();
-    }
-    double framesPerSecond() const { return m_events.size() < 2 ? 0.0 : double(m_events.size() - 1) / span(); }
-    double samplesPerSecond() const
-    {
-        if (m_events.size() < 2)
-            return 0.0;
-        std::uint64_t samples = 0;
-        for (std::size_t i = 1; i < m_events.size(); ++i)
-            samples += m_events[i].samples;
-        return double(samples) / span();
-    }
-
-private:
-    double span() const
-    {
-        return std::max(1e-6, std::chrono::duration<double>(m_events.back().time - m_events.front().time).count());
-    }
-    struct Event
-    {
-        Clock::time_point time;
-        std::uint64_t samples;
-    };
-    std::deque<Event> m_events;
-};
 
 class WindowApp final
 {
@@ -274,35 +236,6 @@ private:
         }
     }
 
-    /// WASD/QE, Shift, Ctrl, mouse drag and wheel, unless the panel has the mouse or the keyboard.
-    void cameraInput(float seconds)
-    {
-        const ImGuiIO& io = ImGui::GetIO();
-        GLFWwindow* w = m_window.handle();
-        if (!io.WantCaptureKeyboard)
-        {
-            const auto down = [w](int key) { return glfwGetKey(w, key) == GLFW_PRESS ? 1.0f : 0.0f; };
-            const vec3 direction(down(GLFW_KEY_D) - down(GLFW_KEY_A), down(GLFW_KEY_E) - down(GLFW_KEY_Q),
-                                 down(GLFW_KEY_W) - down(GLFW_KEY_S));
-            if (direction != vec3(0.0f))
-            {
-                float speed = m_state.cameraSpeed * seconds;
-                if (down(GLFW_KEY_LEFT_SHIFT) + down(GLFW_KEY_RIGHT_SHIFT) > 0.0f)
-                    speed *= kFastMove;
-                if (down(GLFW_KEY_LEFT_CONTROL) + down(GLFW_KEY_RIGHT_CONTROL) > 0.0f)
-                    speed *= kSlowMove;
-                m_controls.moveCamera(speed * direction);
-            }
-        }
-        if (!io.WantCaptureMouse)
-        {
-            if (io.MouseDown[0] && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
-                m_controls.turnCamera(kDegreesPerPixel * io.MouseDelta.x, -kDegreesPerPixel * io.MouseDelta.y);
-            if (io.MouseWheel != 0.0f)
-                m_controls.setFov(m_state.image.camera.vfovDegrees - kFovPerWheelStep * io.MouseWheel);
-        }
-    }
-
     PanelInfo panelInfo(Extent size) const
     {
         PanelInfo info;
@@ -328,7 +261,7 @@ private:
     {
         const Extent size = m_window.framebufferSize();
         m_imgui.newFrame(m_state.display.darkStyle, m_state.display.font, m_state.display.fontScale);
-        cameraInput(seconds);
+        applyCameraInput(m_window.handle(), m_controls, m_state.cameraSpeed * seconds);
         drawPanel(m_controls, m_state, panelInfo(size), m_panel);
 
         const std::optional<Frame> frame = m_presenter.beginFrame(size);
@@ -368,7 +301,7 @@ private:
         if (last && !m_options.screenshot.empty())
             m_presenter.recordScreenshot(*frame);
         m_presenter.endFrame(*frame, size);
-        m_throughput.add(Clock::now(), samples);
+        m_throughput.add(Throughput::Clock::now(), samples);
         if (automated() && actionsDone() && ++m_framesAfterActions >= *m_options.frames)
         {
             if (!m_options.screenshot.empty())
