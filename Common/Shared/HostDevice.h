@@ -196,10 +196,12 @@ struct RenderUniforms
     uint pad2;
 };
 
-/// Per vkCmdTraceRaysKHR: each launch traces one camera sample per pixel.
+/// Per vkCmdTraceRaysKHR: each launch traces sampleCount camera samples per pixel, one after the other.
+/// Several per launch keep a GPU without ray-tracing cores busy between the barriers that order launches.
 struct TracePushConstants
 {
-    uint sampleIndex; // index of this sample within the whole render (not the dispatch)
+    uint firstSample; // index of the launch's first sample within the whole render (not the dispatch)
+    uint sampleCount;
 };
 
 /// What the shaders need to find one TLAS instance's geometry, at instanceCustomIndex in InstanceRecord[].
@@ -295,7 +297,7 @@ struct PreviewPushConstants
 static_assert(sizeof(RenderUniforms) == 160);
 static_assert(offsetof(RenderUniforms, background0) == 96);
 static_assert(offsetof(RenderUniforms, sampling) == 128);
-static_assert(sizeof(TracePushConstants) == 4);
+static_assert(sizeof(TracePushConstants) == 8);
 static_assert(sizeof(InstanceRecord) == 32);
 static_assert(sizeof(SphereRecord) == 32);
 static_assert(offsetof(SphereRecord, center1) == 16);

@@ -72,7 +72,7 @@ struct GpuEngine::Impl
         pipeline.writeDescriptors(device(), descriptorSet, *scene, target->bindings());
     }
 
-    /// Records and runs one dispatch: `samples` launches of one sample per pixel from `firstSample` on.
+    /// Records and runs one dispatch: `samples` samples per pixel from `firstSample` on.
     /// Returns the GPU seconds of the launches (negative when the queue has no timestamps).
     double dispatch(std::uint32_t firstSample, std::uint32_t samples, bool readback)
     {
@@ -83,8 +83,8 @@ struct GpuEngine::Impl
                 vkCmdResetQueryPool(cmd, timestamps.Handle(), 0, 2);
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps.Handle(), 0);
             }
-            pipeline.recordLaunches(cmd, {&descriptorSet, 1}, firstSample, samples,
-                                    {target->width(), target->height()});
+            pipeline.recordLaunch(cmd, {&descriptorSet, 1}, firstSample, samples, {target->width(), target->height()},
+                                  samplesPerLaunch(*sceneDesc));
             if (timed)
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 1);
             if (readback)

@@ -1,6 +1,9 @@
 #include "Engine/PathTracingPipeline.h"
 
 #include <algorithm>
+#include <limits>
+
+#include <algorithm>
 
 #include "Engine/GpuScene.h"
 #include "RayTracing/RayTracingPipeline.h"
@@ -79,25 +82,33 @@ PathTracingPipeline::PathTracingPipeline(const vk::Device& device, const std::fi
 {
 }
 
-void PathTracingPipeline::recordLaunches(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
-                                         std::uint32_t firstSample, std::uint32_t count, VkExtent2D extent) const
+void PathTracingPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
+                                        std::uint32_t firstSample, std::uint32_t count, VkExtent2D extent,
+                                        std::uint32_t samplesPerLaunch) const
 {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, m_pipeline.Handle());
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, m_layout.Handle(), 0,
                             static_cast<std::uint32_t>(sets.size()), sets.data(), 0, nullptr);
-    for (std::uint32_t s = 0; s < count; ++s)
+    for (std::uint32_t done = 0; done < count;)
     {
-        const TracePushConstants push{firstSample + s};
+        const std::uint32_t samples = std::min(count - done, std::max(samplesPerLaunch, 1u));
+        const TracePushConstants push{firstSample + done, samples};
         vkCmdPushConstants(cmd, m_layout.Handle(), kRayTracingStages, 0, sizeof(push), &push);
         vkCmdTraceRaysKHR(cmd, &m_sbt.raygen(), &m_sbt.miss(), &m_sbt.hit(), &m_sbt.callable(), extent.width,
                           extent.height, 1);
-        // Each launch reads and writes its pixel of the accumulation image: order the samples.
+        // The launch reads and writes its pixels of the accumulation image: order it before the next one.
         VkMemoryBarrier accumulated{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
         accumulated.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
         accumulated.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
         vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
                              VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0, 1, &accumulated, 0, nullptr, 0, nullptr);
+        done += samples;
     }
+}
+
+std::uint32_t samplesPerLaunch(const Scene& scene)
+{
+    return scene.hasMotion() ? 1u : std::numeric_limits<std::uint32_t>::max();
 }
 
 void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescriptorSet set, const GpuScene& scene,
