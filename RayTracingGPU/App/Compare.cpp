@@ -151,6 +151,11 @@ int runComparison(const Scene& scene, const RenderSettings& base, const CompareO
         jrow["spp"] = s.trueSpp();
         for (const auto& [kind, engine] : engines)
         {
+            // An untimed warm-up first: after seconds idle (the CPU's turn) a GPU drops its clocks, and the
+            // first render after that paid 150 ms on an H100 (docs/PERFORMANCE.md).
+            RenderSettings warmUp = s;
+            warmUp.spp = std::min(s.spp, 4);
+            render(*engine, warmUp);
             Run run = render(*engine, s);
             run.error = compareImages(run.image, reference);
             const double ms = run.gpuMs >= 0 ? run.gpuMs : run.renderMs;
