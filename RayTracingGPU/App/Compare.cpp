@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <map>
 #include <memory>
 #include <sstream>
 
@@ -136,28 +135,44 @@ int runComparison(const Scene& scene, const RenderSettings& base, const CompareO
     const bool ratio = engines.size() > 1 && engines.back().first == EngineKind::Gpu;
     if (ratio)
         header += fmt::format(" | {:>10} | {:>11}", "CPU/GPU", "relMSE C-G");
+
+    // Each engine runs all its rows back to back, after one untimed warm-up: interleaving engines row by
+    // row made the GPU rows 2-3x slower on an H100 right after a 16-thread CPU render (docs/PERFORMANCE.md).
+    std::vector<std::vector<Run>> runs(options.spps.size());
+    for (const auto& [kind, engine] : engines)
+    {
+        RenderSettings warmUp = base;
+        warmUp.spp = 4;
+        render(*engine, warmUp);
+        for (std::size_t row = 0; row < options.spps.size(); ++row)
+        {
+            RenderSettings s = base;
+            s.spp = options.spps[row];
+            Run run = render(*engine, s);
+            run.error = compareImages(run.image, reference);
+            spdlog::info("{} engine, {} spp: {:.1f} ms", toString(kind), s.trueSpp(),
+                         run.gpuMs >= 0 ? run.gpuMs : run.renderMs);
+            runs[row].push_back(std::move(run));
+        }
+    }
+
     std::printf("\n%s: %dx%d, depth %d, %s estimator, %s sampling; relMSE against %d spp (epsilon %g)\n",
                 scene.id.c_str(), base.width, base.height(), base.depth, toString(base.estimator),
                 toString(base.sampling), refSettings.spp, kRelMseEpsilon);
     std::printf("%s\n%s\n", header.c_str(), std::string(header.size(), '-').c_str());
-
-    for (const int spp : options.spps)
+    for (std::size_t rowIndex = 0; rowIndex < options.spps.size(); ++rowIndex)
     {
         RenderSettings s = base;
-        s.spp = spp;
-        std::map<EngineKind, Run> runs;
+        s.spp = options.spps[rowIndex];
         std::string row = fmt::format("{:>6}", s.trueSpp());
         nlohmann::json jrow;
         jrow["spp"] = s.trueSpp();
-        for (const auto& [kind, engine] : engines)
+        const Run* gpu = nullptr;
+        const Run* cpu = nullptr; // the fastest CPU engine of the row
+        for (std::size_t e = 0; e < engines.size(); ++e)
         {
-            // An untimed warm-up first: after seconds idle (the CPU's turn) a GPU drops its clocks, and the
-            // first render after that paid 150 ms on an H100 (docs/PERFORMANCE.md).
-            RenderSettings warmUp = s;
-            warmUp.spp = std::min(s.spp, 4);
-            render(*engine, warmUp);
-            Run run = render(*engine, s);
-            run.error = compareImages(run.image, reference);
+            const EngineKind kind = engines[e].first;
+            const Run& run = runs[rowIndex][e];
             const double ms = run.gpuMs >= 0 ? run.gpuMs : run.renderMs;
             row += fmt::format(" | {:>9.1f} {:>9.2e}", ms, run.error.relMse);
             jrow[toString(kind)] = {{"render_ms", run.renderMs},
@@ -165,24 +180,20 @@ int runComparison(const Scene& scene, const RenderSettings& base, const CompareO
                                     {"mpaths_per_second", run.mpaths},
                                     {"relmse", run.error.relMse},
                                     {"rmse", run.error.rmse}};
-            runs.emplace(kind, std::move(run));
+            if (kind == EngineKind::Gpu)
+                gpu = &run;
+            else if (!cpu || run.renderMs < cpu->renderMs)
+                cpu = &run;
         }
-        if (ratio)
+        if (ratio && gpu && cpu)
         {
-            const Run& gpu = runs.at(EngineKind::Gpu);
-            // The fastest CPU engine of the row against the GPU, and the two images against each other.
-            const Run* cpu = nullptr;
-            for (const auto& [kind, run] : runs)
-                if (kind != EngineKind::Gpu && (!cpu || run.renderMs < cpu->renderMs))
-                    cpu = &run;
-            const double gpuMs = gpu.gpuMs >= 0 ? gpu.gpuMs : gpu.renderMs;
-            const double between = compareImages(cpu->image, gpu.image).relMse;
+            const double gpuMs = gpu->gpuMs >= 0 ? gpu->gpuMs : gpu->renderMs;
+            const double between = compareImages(cpu->image, gpu->image).relMse;
             row += fmt::format(" | {:>9.1f}x | {:>11.2e}", cpu->renderMs / gpuMs, between);
             jrow["cpu_over_gpu"] = cpu->renderMs / gpuMs;
             jrow["relmse_cpu_gpu"] = between;
         }
         std::printf("%s\n", row.c_str());
-        std::fflush(stdout);
         json["rows"].push_back(jrow);
     }
     std::printf("(GPU ms from timestamp queries around the trace dispatches; CPU ms from the host clock; "
