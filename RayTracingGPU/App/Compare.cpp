@@ -1,6 +1,7 @@
 #include "App/Compare.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <sstream>
@@ -136,14 +137,17 @@ int runComparison(const Scene& scene, const RenderSettings& base, const CompareO
     if (ratio)
         header += fmt::format(" | {:>10} | {:>11}", "CPU/GPU", "relMSE C-G");
 
-    // Each engine runs all its rows back to back, after one untimed warm-up: interleaving engines row by
-    // row made the GPU rows 2-3x slower on an H100 right after a 16-thread CPU render (docs/PERFORMANCE.md).
+    // Each engine runs all its rows back to back, after half a second of untimed warm-up renders: a GPU
+    // idle through the CPU's turn drops its clocks, and an H100 then ran its first rows 3-10x slower; row
+    // by row interleaving with 16-thread CPU renders cost it 2-3x (docs/PERFORMANCE.md).
     std::vector<std::vector<Run>> runs(options.spps.size());
     for (const auto& [kind, engine] : engines)
     {
         RenderSettings warmUp = base;
         warmUp.spp = 4;
-        render(*engine, warmUp);
+        const auto warmStart = std::chrono::steady_clock::now();
+        for (int i = 0; i < 1000 && std::chrono::steady_clock::now() - warmStart < std::chrono::milliseconds(500); ++i)
+            render(*engine, warmUp);
         for (std::size_t row = 0; row < options.spps.size(); ++row)
         {
             RenderSettings s = base;
