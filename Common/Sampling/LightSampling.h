@@ -67,16 +67,55 @@ inline float planarHit(const LightData& light, const vec3& p, const vec3& wi)
     if (!(t > 0.0f))
         return -1.0f;
     const vec3 planar = p + t * wi - light.p0;
-    // (alpha, beta) coordinates along the two edges: w = n / |e1 x e2|^2 with n = normal |e1 x e2|.
-    const bool quad = light.shape == LightShape::Quad;
-    const vec3 w = light.normal / (quad ? light.area : 2.0f * light.area);
-    const float alpha = glm::dot(planar, glm::cross(light.p2, w));
-    const float beta = glm::dot(planar, glm::cross(w, light.p1));
-    if (quad)
-        return (alpha >= 0.0f && alpha <= 1.0f && beta >= 0.0f && beta <= 1.0f) ? t : -1.0f;
-    return (alpha >= 0.0f && beta >= 0.0f && alpha + beta <= 1.0f) ? t : -1.0f;
+    const float alpha = glm::dot(planar, light.dualU);
+    const float beta = glm::dot(planar, light.dualV);
+    // A few ulps of slack: a sample on the light's edge (u = 1) must find its own pdf after rounding
+    // (sampleLight takes its pdf from here), and the border it adds has no measure worth a bias.
+    constexpr float lo = -1e-6f, hi = 1.0f + 1e-6f;
+    if (light.shape == LightShape::Quad)
+        return (alpha >= lo && alpha <= hi && beta >= lo && beta <= hi) ? t : -1.0f;
+    return (alpha >= lo && beta >= lo && alpha + beta <= hi) ? t : -1.0f;
 }
 } // namespace detail
+
+/// A quad light: the parallelogram q + a u + b v (a, b in [0, 1]), front along u x v.
+inline LightData makeQuadLight(const vec3& q, const vec3& u, const vec3& v, std::uint32_t material)
+{
+    LightData l{};
+    l.shape = LightShape::Quad;
+    l.material = material;
+    l.p0 = q;
+    l.p1 = u;
+    l.p2 = v;
+    const vec3 n = glm::cross(u, v);
+    l.area = glm::length(n);
+    l.normal = n / l.area;
+    const vec3 w = n / glm::dot(n, n);
+    l.dualU = glm::cross(v, w);
+    l.dualV = glm::cross(w, u);
+    return l;
+}
+
+/// A triangle light with vertices a, b, c (front along (b - a) x (c - a)).
+inline LightData makeTriangleLight(const vec3& a, const vec3& b, const vec3& c, std::uint32_t material)
+{
+    LightData l = makeQuadLight(a, b - a, c - a, material);
+    l.shape = LightShape::Triangle;
+    l.area *= 0.5f;
+    return l;
+}
+
+/// A sphere light (or sampling target with material kNoIndex).
+inline LightData makeSphereLight(const vec3& center, float radius, std::uint32_t material)
+{
+    LightData l{};
+    l.shape = LightShape::Sphere;
+    l.material = material;
+    l.p0 = center;
+    l.radius = radius;
+    l.area = 4.0f * kPi * radius * radius;
+    return l;
+}
 
 /// Solid-angle pdf with which sampleLight(light, p, .) produces the unit direction `wi`; 0 if it cannot.
 inline float lightPdf(const LightData& light, const vec3& p, const vec3& wi)

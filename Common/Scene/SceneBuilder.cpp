@@ -4,6 +4,7 @@
 
 #include "Assets/ImageLoader.h"
 #include "Error.h"
+#include "Sampling/LightSampling.h"
 
 namespace rt
 {
@@ -16,38 +17,6 @@ std::uint32_t append(std::vector<T>& list, T value)
     return static_cast<std::uint32_t>(list.size() - 1);
 }
 
-LightData quadLight(const vec3& q, const vec3& u, const vec3& v, std::uint32_t material)
-{
-    LightData l{};
-    l.shape = shader::LightShape::Quad;
-    l.material = material;
-    l.p0 = q;
-    l.p1 = u;
-    l.p2 = v;
-    const vec3 n = glm::cross(u, v);
-    l.area = glm::length(n);
-    l.normal = n / l.area;
-    return l;
-}
-
-LightData triangleLight(const vec3& a, const vec3& b, const vec3& c, std::uint32_t material)
-{
-    LightData l = quadLight(a, b - a, c - a, material);
-    l.shape = shader::LightShape::Triangle;
-    l.area *= 0.5f;
-    return l;
-}
-
-LightData sphereLight(const vec3& center, float radius, std::uint32_t material)
-{
-    LightData l{};
-    l.shape = shader::LightShape::Sphere;
-    l.material = material;
-    l.p0 = center;
-    l.radius = radius;
-    l.area = 4.0f * kPi * radius * radius;
-    return l;
-}
 } // namespace
 
 SceneBuilder::SceneBuilder(std::string id) { m_scene.id = std::move(id); }
@@ -210,7 +179,7 @@ void SceneBuilder::boxMedium(std::uint32_t g, const vec3& a, const vec3& b, floa
 
 void SceneBuilder::samplingTargetSphere(const vec3& center, float radius)
 {
-    m_scene.lights.push_back(sphereLight(center, radius, kNoIndex));
+    m_scene.lights.push_back(makeSphereLight(center, radius, kNoIndex));
 }
 
 Scene SceneBuilder::finish()
@@ -225,7 +194,7 @@ Scene SceneBuilder::finish()
         const Transform& m = inst.worldFromObject;
         for (const QuadDesc& q : g.quads)
             if (s.isEmissive(q.material))
-                emitters.push_back(quadLight(m.point(q.q), m.vector(q.u), m.vector(q.v), q.material));
+                emitters.push_back(makeQuadLight(m.point(q.q), m.vector(q.u), m.vector(q.v), q.material));
         for (const SphereDesc& sp : g.spheres)
             if (s.isEmissive(sp.material))
             {
@@ -234,7 +203,7 @@ Scene SceneBuilder::finish()
                     throw SceneError(fmt::format("scene '{}': an emitting sphere in group '{}' is moving or "
                                                  "non-uniformly scaled; the light samplers need a static sphere",
                                                  s.id, g.name));
-                emitters.push_back(sphereLight(m.point(sp.center0), sp.radius * *scale, sp.material));
+                emitters.push_back(makeSphereLight(m.point(sp.center0), sp.radius * *scale, sp.material));
             }
         for (const MeshRef& ref : g.meshes)
         {
@@ -246,7 +215,7 @@ Scene SceneBuilder::finish()
                 const std::uint32_t mat = mesh.triangleMaterials.empty() ? ref.material : mesh.triangleMaterials[t];
                 if (!s.isEmissive(mat))
                     continue;
-                emitters.push_back(triangleLight(m.point(mesh.positions[mesh.indices[3 * t]]),
+                emitters.push_back(makeTriangleLight(m.point(mesh.positions[mesh.indices[3 * t]]),
                                                  m.point(mesh.positions[mesh.indices[3 * t + 1]]),
                                                  m.point(mesh.positions[mesh.indices[3 * t + 2]]), mat));
             }

@@ -117,6 +117,11 @@ struct LightData
     vec3 p1;
     vec3 p2;
     vec3 normal; // Quad / Triangle: unit geometric normal (u x v direction)
+    // Quad / Triangle: the point p0 + a p1 + b p2 of the light's plane has a = (x - p0) . dualU and
+    // b = (x - p0) . dualV, with w = (p1 x p2) / |p1 x p2|^2, dualU = p2 x w, dualV = w x p1 (RTTNW §6.4);
+    // kept here so a pdf evaluation needs no cross product.
+    vec3 dualU;
+    vec3 dualV;
 };
 
 // Perlin noise tables (RTTNW §5): 256 random unit gradients and three permutations of 0..255, generated
@@ -315,7 +320,7 @@ static_assert(sizeof(PreviewPushConstants) == 80 && offsetof(PreviewPushConstant
 static_assert(sizeof(PerlinData) == 256 * 12 + 3 * 256 * 4);
 static_assert(sizeof(TextureData) == 40);
 static_assert(sizeof(MaterialData) == 32);
-static_assert(sizeof(LightData) == 64);
+static_assert(sizeof(LightData) == 88);
 static_assert(offsetof(LightData, p0) == 16);
 static_assert(offsetof(TextureData, color0) == 16);
 } // namespace rt::shader

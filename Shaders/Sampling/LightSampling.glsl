@@ -61,13 +61,13 @@ float planarHit(LightData light, vec3 p, vec3 wi)
     if (!(t > 0.0))
         return -1.0;
     vec3 planar = p + t * wi - light.p0;
-    bool quad = light.shape == LightShape_Quad;
-    vec3 w = light.normal / (quad ? light.area : 2.0 * light.area);
-    float alpha = dot(planar, cross(light.p2, w));
-    float beta = dot(planar, cross(w, light.p1));
-    if (quad)
-        return (alpha >= 0.0 && alpha <= 1.0 && beta >= 0.0 && beta <= 1.0) ? t : -1.0;
-    return (alpha >= 0.0 && beta >= 0.0 && alpha + beta <= 1.0) ? t : -1.0;
+    float alpha = dot(planar, light.dualU);
+    float beta = dot(planar, light.dualV);
+    // A few ulps of slack, as in Common: a sample on the light's edge must find its own pdf after rounding.
+    const float lo = -1e-6, hi = 1.0 + 1e-6;
+    if (light.shape == LightShape_Quad)
+        return (alpha >= lo && alpha <= hi && beta >= lo && beta <= hi) ? t : -1.0;
+    return (alpha >= lo && beta >= lo && alpha + beta <= hi) ? t : -1.0;
 }
 
 /// Solid-angle pdf with which sampleLight(light, p, .) produces the unit direction wi; 0 if it cannot.

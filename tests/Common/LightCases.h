@@ -23,6 +23,9 @@ inline LightData makeQuadLight(const vec3& q, const vec3& u, const vec3& v)
     const dvec3 n = glm::cross(dvec3(u), dvec3(v));
     l.area = float(glm::length(n));
     l.normal = vec3(glm::normalize(n));
+    const dvec3 w = n / glm::dot(n, n);
+    l.dualU = vec3(glm::cross(dvec3(v), w));
+    l.dualV = vec3(glm::cross(w, dvec3(u)));
     return l;
 }
 

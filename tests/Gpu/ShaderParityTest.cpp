@@ -148,34 +148,14 @@ TEST(GpuShaderParity, WarpsMatchCommon)
     }
 }
 
-LightData quadLight(const vec3& q, const vec3& u, const vec3& v)
-{
-    LightData l{};
-    l.shape = shader::LightShape::Quad;
-    l.p0 = q;
-    l.p1 = u;
-    l.p2 = v;
-    const vec3 n = glm::cross(u, v);
-    l.area = glm::length(n);
-    l.normal = n / l.area;
-    return l;
-}
 
 TEST(GpuShaderParity, LightSamplersMatchCommon)
 {
     RT_REQUIRE_GPU();
     std::vector<LightData> lights;
-    lights.push_back(quadLight({213, 554, 227}, {130, 0, 0}, {0, 0, 105}));
-    LightData triangle = quadLight({0, 500, 0}, {100, 0, 0}, {0, 0, 50});
-    triangle.shape = shader::LightShape::Triangle;
-    triangle.area *= 0.5f;
-    lights.push_back(triangle);
-    LightData sphere{};
-    sphere.shape = shader::LightShape::Sphere;
-    sphere.p0 = {277, 530, 277};
-    sphere.radius = 50.0f;
-    sphere.area = 4.0f * kPi * 50.0f * 50.0f;
-    lights.push_back(sphere);
+    lights.push_back(makeQuadLight({213, 554, 227}, {130, 0, 0}, {0, 0, 105}, 0));
+    lights.push_back(makeTriangleLight({0, 500, 0}, {100, 500, 0}, {0, 500, 50}, 0));
+    lights.push_back(makeSphereLight({277, 530, 277}, 50.0f, 0));
 
     const std::vector<float> r = uniforms(5 * 192, 0.0f, 1.0f, 5u);
     std::vector<std::uint32_t> in;
@@ -184,7 +164,7 @@ TEST(GpuShaderParity, LightSamplersMatchCommon)
         // Points in the Cornell box, some inside the sphere light (its uniform-area branch).
         vec3 p = vec3(555.0f * r[5 * c], 555.0f * r[5 * c + 1], 555.0f * r[5 * c + 2]);
         if (c % 8 == 0)
-            p = sphere.p0 + vec3(10.0f * r[5 * c], -20.0f * r[5 * c + 1], 5.0f);
+            p = lights[2].p0 + vec3(10.0f * r[5 * c], -20.0f * r[5 * c + 1], 5.0f);
         in.insert(in.end(), {std::uint32_t(c % 3), bits(p.x), bits(p.y), bits(p.z), bits(r[5 * c + 3]),
                              bits(r[5 * c + 4])});
     }
