@@ -58,7 +58,7 @@ GpuScene::GpuScene(const vk::Device& device, const vk::CommandPool& pool, const 
     for (const ImageData& image : scene.images.empty() ? fallback : scene.images)
     {
         const VkExtent2D extent{std::uint32_t(image.width), std::uint32_t(image.height)};
-        m_images.emplace_back(device, extent, VK_FORMAT_R8G8B8A8_SRGB,
+        m_images.emplace_back(device, extent, VK_FORMAT_R8G8B8A8_UNORM, // sRGB texels, decoded in ImageTexture.glsl
                               VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
         upload.image(m_images.back(), image.rgba.data(), image.rgba.size());
         m_views.emplace_back(device, m_images.back());

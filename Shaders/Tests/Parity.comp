@@ -20,6 +20,7 @@ layout(push_constant, scalar) uniform Push { uint mode; uint caseCount; uint inp
 #include "Sampling/LightSampling.glsl"
 #include "Sampling/Warps.glsl"
 #include "Textures/Perlin.glsl"
+#include "Textures/Srgb.glsl"
 
 uint inBase;
 uint outBase;
@@ -83,4 +84,6 @@ void main()
         outFloat(1u, roots.t0);
         outFloat(2u, roots.t1);
     }
+    else if (mode == 6u) // Srgb: 8-bit code -> linear, as a UNORM texel fetch gives it to srgbToLinear
+        outFloat(0u, srgbToLinear(vec3(float(inputs[inBase]) / 255.0)).x);
 }

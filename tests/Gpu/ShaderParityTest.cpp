@@ -11,6 +11,7 @@
 #include "Assets/AssetPaths.h"
 #include "ComputeKernel.h"
 #include "GpuTestEnvironment.h"
+#include "Image/ImageIO.h"
 #include "Math/RayOffset.h"
 #include "Random/Pcg.h"
 #include "Sampling/LightSampling.h"
@@ -29,14 +30,15 @@ enum Mode : std::uint32_t
     kWarps = 2,
     kLightSampling = 3,
     kPerlin = 4,
-    kSphere = 5
+    kSphere = 5,
+    kSrgb = 6
 };
 struct Layout
 {
     std::uint32_t inputWords;
     std::uint32_t outputWords;
 };
-constexpr Layout kLayouts[] = {{3, 8}, {6, 3}, {3, 13}, {6, 6}, {3, 2}, {10, 3}};
+constexpr Layout kLayouts[] = {{3, 8}, {6, 3}, {3, 13}, {6, 6}, {3, 2}, {10, 3}, {1, 1}};
 
 std::uint32_t bits(float f) { return std::bit_cast<std::uint32_t>(f); }
 float asFloat(std::uint32_t u) { return std::bit_cast<float>(u); }
@@ -198,6 +200,21 @@ TEST(GpuShaderParity, PerlinNoiseMatchesCommon)
         const vec3 p = vec3At(in, 3 * c);
         EXPECT_NEAR(asFloat(out[2 * c]), perlinNoise(perlinTables(), p), 1e-5f) << "case " << c;
         EXPECT_NEAR(asFloat(out[2 * c + 1]), perlinTurbulence(perlinTables(), p, 7), 1e-5f) << "case " << c;
+    }
+}
+
+TEST(GpuShaderParity, SrgbDecodeMatchesCommon)
+{
+    RT_REQUIRE_GPU();
+    std::vector<std::uint32_t> in(256);
+    for (std::uint32_t code = 0; code < 256; ++code)
+        in[code] = code;
+    const std::vector<std::uint32_t> out = runParity(kSrgb, in);
+    for (std::uint32_t code = 0; code < 256; ++code)
+    {
+        const float cpu = srgb8ToLinear(static_cast<unsigned char>(code));
+        // GLSL's pow may be a few ulps from std::pow; the engines' agreement tests allow 1e-5 relative.
+        EXPECT_NEAR(asFloat(out[code]), cpu, 1e-6f * cpu + 1e-9f) << "code " << code;
     }
 }
 
