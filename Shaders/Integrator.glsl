@@ -49,7 +49,8 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
             break;
         beta *= s.weight;
         origin = medium ? hit.position
-                        : offsetRayOrigin(hit.position, dot(s.direction, hit.normal) > 0.0 ? hit.normal : -hit.normal);
+                        : offsetRayOrigin(hit.position, dot(s.direction, hit.normal) > 0.0 ? hit.normal : -hit.normal,
+                                          payload.offsetScale);
         direction = s.direction;
     }
     return radiance;

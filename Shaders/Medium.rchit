@@ -18,4 +18,5 @@ void main()
     payload.uv = vec2(0.0);
     payload.material = medium.phaseMaterial;
     payload.flags = kHitMedium;
+    payload.offsetScale = 1.0; // unused: a scattering event inside a medium is not offset
 }

@@ -12,6 +12,7 @@ struct HitPayload
     vec3 normal; // world-space unit geometric normal, outward (arbitrary inside a medium)
     uint flags; // kHitMedium
     vec2 uv;
+    float offsetScale; // offsetRayOrigin's scale: the largest |vertex coordinate| of a triangle, else 1
     vec3 background; // radiance of the background on a miss
 };
 

@@ -25,4 +25,5 @@ void main()
     payload.uv = sphereUv(q);
     payload.material = sphere.material;
     payload.flags = 0u;
+    payload.offsetScale = 1.0; // our own sphere test: its error scales with p (RayOffset.glsl)
 }

@@ -9,6 +9,7 @@
 
 #include "Bindings.glsl"
 #include "Payload.glsl"
+#include "RayOffset.glsl"
 
 layout(location = 0) rayPayloadInEXT HitPayload payload;
 hitAttributeEXT vec2 barycentrics;
@@ -37,4 +38,6 @@ void main()
                            ? triangleMaterials[record.firstTriangleMaterial + gl_PrimitiveID]
                            : record.material;
     payload.flags = 0u;
+    payload.offsetScale = planarOffsetScale(gl_ObjectToWorldEXT * vec4(p0, 1.0), gl_ObjectToWorldEXT * vec4(p1, 1.0),
+                                            gl_ObjectToWorldEXT * vec4(p2, 1.0));
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 
@@ -8,14 +9,21 @@
 namespace rt
 {
 /// Moves a surface point off the surface along the geometric normal `n` (pointing to the side the new ray
-/// leaves from) by an amount that scales with the point's magnitude, so that the new ray, started with
-/// tmin = 0, does not hit the surface it leaves.
+/// leaves from) far enough that the new ray, started with tmin = 0, does not hit the surface it leaves.
 /// Wächter & Binder, "A Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing Gems ch. 6, 2019:
-/// 256 ulps away from the origin, 1/65536 absolute below |p| = 1/32. The GLSL twin is Shaders/RayOffset.glsl.
-inline vec3 offsetRayOrigin(const vec3& p, const vec3& n)
+/// 256 ulps of each coordinate, and below |p_i| = 1/32 an absolute 1/65536, both times `scale`.
+///
+/// `scale` is the largest coordinate magnitude the surface's intersection test computes with (the largest
+/// |vertex coordinate| of a triangle or quad; 1 for surfaces whose test errs in proportion to p, such as
+/// our own sphere test). Wächter & Binder bound the error of p alone; a triangle test in a driver (NVIDIA's)
+/// errs by ulps of the vertices, and a wall at x = 0 of a 555-unit Cornell box re-hit itself from the
+/// 1/65536 offset often enough to lose 6-10 % of its radiance on the H100. Values below 1 count as 1.
+/// The GLSL twin is Shaders/RayOffset.glsl, bit for bit (the constants are powers of two: s times them is exact).
+inline vec3 offsetRayOrigin(const vec3& p, const vec3& n, float scale = 1.0f)
 {
-    constexpr float kOrigin = 1.0f / 32.0f;
-    constexpr float kFloatScale = 1.0f / 65536.0f;
+    const float s = scale > 1.0f ? scale : 1.0f;
+    const float origin = s * (1.0f / 32.0f);
+    const float floatOffset = s * (1.0f / 65536.0f);
     constexpr float kIntScale = 256.0f;
     vec3 out;
     for (int i = 0; i < 3; ++i)
@@ -23,8 +31,15 @@ inline vec3 offsetRayOrigin(const vec3& p, const vec3& n)
         const auto offset = static_cast<std::int32_t>(kIntScale * n[i]);
         const std::int32_t bits = std::bit_cast<std::int32_t>(p[i]);
         const float moved = std::bit_cast<float>(bits + (p[i] < 0.0f ? -offset : offset));
-        out[i] = std::fabs(p[i]) < kOrigin ? p[i] + kFloatScale * n[i] : moved;
+        out[i] = std::fabs(p[i]) < origin ? p[i] + floatOffset * n[i] : moved;
     }
     return out;
+}
+
+/// The `scale` of offsetRayOrigin for a planar primitive: its largest |vertex coordinate|, world space.
+inline float planarOffsetScale(const vec3& a, const vec3& b, const vec3& c)
+{
+    const vec3 m = glm::max(glm::abs(a), glm::max(glm::abs(b), glm::abs(c)));
+    return std::max(m.x, std::max(m.y, m.z));
 }
 } // namespace rt

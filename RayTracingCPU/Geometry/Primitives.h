@@ -29,6 +29,7 @@ struct QuadRec
     std::uint32_t material;
     vec3 ua; // cross(v, w), w = n / |n|^2 with n = u x v
     vec3 vb; // cross(w, u)
+    float offsetScale; // largest |corner coordinate|: offsetRayOrigin's scale
 };
 
 /// A triangle of a mesh, vertices in world space.
@@ -38,6 +39,7 @@ struct TriangleRec
     std::uint32_t material;
     std::uint32_t mesh; // Common scene mesh index, for vertex uvs
     std::uint32_t triangle; // triangle index in that mesh
+    float offsetScale; // largest |vertex coordinate|: offsetRayOrigin's scale
 };
 
 /// A constant-density medium; its boundary is tested in object space, where it is a sphere or a box.

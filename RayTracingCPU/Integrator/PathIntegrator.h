@@ -120,7 +120,7 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
             break;
         }
         }
-        const vec3 origin = si.medium ? si.p : offsetRayOrigin(si.p, glm::dot(wi, si.n) > 0.0f ? si.n : -si.n);
+        const vec3 origin = si.medium ? si.p : offsetRayOrigin(si.p, glm::dot(wi, si.n) > 0.0f ? si.n : -si.n, si.offsetScale);
         ray = Ray{origin, wi, ray.time};
     }
     return radiance;

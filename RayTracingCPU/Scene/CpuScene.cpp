@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "Math/RayOffset.h"
+
 namespace rt::cpu
 {
 namespace
@@ -18,6 +20,7 @@ QuadRec makeQuad(const vec3& q, const vec3& u, const vec3& v, std::uint32_t mate
     rec.material = material;
     rec.ua = glm::cross(v, w);
     rec.vb = glm::cross(w, u);
+    rec.offsetScale = std::max(planarOffsetScale(q, q + u, q + v), planarOffsetScale(q + u + v, q, q));
     return rec;
 }
 
@@ -98,6 +101,7 @@ CpuScene::CpuScene(const Scene& scene) : m_scene(&scene)
                 rec.material = mesh.triangleMaterials.empty() ? ref.material : mesh.triangleMaterials[t];
                 rec.mesh = ref.mesh;
                 rec.triangle = static_cast<std::uint32_t>(t);
+                rec.offsetScale = planarOffsetScale(rec.p0, rec.p1, rec.p2);
                 Aabb box(rec.p0, rec.p1);
                 box.expand(rec.p2);
                 add(PrimType::Triangle, m_triangles.size(), box);
@@ -188,6 +192,7 @@ SurfaceInteraction CpuScene::interaction(const TraceRay& r, const HitRecord& hit
         si.n = q.normal;
         si.uv = {hit.b1, hit.b2};
         si.material = q.material;
+        si.offsetScale = q.offsetScale;
         break;
     }
     case PrimType::Triangle:
@@ -205,6 +210,7 @@ SurfaceInteraction CpuScene::interaction(const TraceRay& r, const HitRecord& hit
             si.uv = b0 * mesh.uvs[idx[0]] + hit.b1 * mesh.uvs[idx[1]] + hit.b2 * mesh.uvs[idx[2]];
         }
         si.material = tri.material;
+        si.offsetScale = tri.offsetScale;
         break;
     }
     case PrimType::Medium:

@@ -21,6 +21,7 @@ struct SurfaceInteraction
     vec2 uv; // texture coordinates
     std::uint32_t material;
     bool medium; // a scattering event inside a participating medium (n, uv meaningless)
+    float offsetScale = 1.0f; // offsetRayOrigin's scale: the largest |vertex coordinate| of a triangle or quad
 };
 
 class CpuScene

@@ -48,8 +48,8 @@ void main()
         for (uint k = 4u; k < 8u; ++k)
             outFloat(k, nextFloat(rng));
     }
-    else if (mode == 1u) // RayOffset: (p, n) -> offsetRayOrigin(p, n)
-        outVec3(0u, offsetRayOrigin(inVec3(0u), inVec3(3u)));
+    else if (mode == 1u) // RayOffset: (p, n, scale) -> offsetRayOrigin(p, n, scale)
+        outVec3(0u, offsetRayOrigin(inVec3(0u), inVec3(3u), inFloat(6u)));
     else if (mode == 2u) // Warps: (u, oneMinusCosThetaMax) -> cosine, sphere, cone, disk, triangle
     {
         vec2 u = inVec2(0u);

@@ -2,7 +2,8 @@
 # Runs on the lent NVIDIA machine (the workplace's `device` tool), from the repository root, with the build
 # carried in .devcarry/ (bin/: the binaries, shaders and assets; lib/: the shared libraries ldd lists beyond
 # glibc; layers/: the Khronos validation layer) and Debian's Vulkan loader in .gl/ (see docs/PERFORMANCE.md).
-#   tests/Bench/device_run.sh tests    the GPU test suite and the apps' smoke tests
+#   tests/Bench/device_run.sh tests    the GPU test suite (but its heavy part) and the apps' smoke tests
+#   tests/Bench/device_run.sh heavy    the heavy part: CPU/GPU agreement of every scene at 128 px, 64 spp
 #   tests/Bench/device_run.sh table    thesis Table 5.4 redone: cornell-box-lights 600x600, depth 50
 set -u
 mode=${1:-tests}
@@ -25,8 +26,11 @@ case "$mode" in
 tests)
     "$bin/ray-tracing-gpu" --headless --validation --scene rtrol-cornell-glass --width 200 --spp 16 \
         --output "$out/glass.png" --stats "$out/glass.json"
-    "$bin/rt_gpu_tests" --gtest_brief=1 2>&1 | tail -40
+    "$bin/rt_gpu_tests" --gtest_brief=1 --gtest_filter=-Heavy/* 2>&1 | tail -40
     bash tests/Cli/bad_input.sh "$bin/ray-tracing-gpu" | grep -v "^ok"
+    ;;
+heavy)
+    "$bin/rt_gpu_tests" --gtest_brief=1 --gtest_filter=Heavy/* 2>&1 | tail -40
     ;;
 table)
     "$bin/ray-tracing-gpu" --compare --quiet --scene cornell-box-lights --width 600 --depth 50 \

@@ -64,7 +64,8 @@ TEST(Onb, ToWorldMapsLocalZToTheNormal)
 TEST(RayOffset, MovesThePointToTheNormalsSide)
 {
     // The offset point lies strictly on the side the normal points to (so a ray from it leaves the surface),
-    // yet close: within 1/16384 absolute or a relative 1e-4 of the point (256 ulps is 3e-5 relative).
+    // yet close: within max(1, offsetScale) / 16384 absolute or a relative 1e-4 of the point (256 ulps is 3e-5
+    // relative).
     Rng rng(pcgHash(88));
     for (int i = 0; i < 100'000; ++i)
     {
@@ -73,11 +74,37 @@ TEST(RayOffset, MovesThePointToTheNormalsSide)
         const vec3 p = scale * (2.0f * vec3(x, y, z) - vec3(1.0f));
         const float a = rng.nextFloat(), b = rng.nextFloat();
         const vec3 n = sampleUniformSphere({a, b});
-        const vec3 q = offsetRayOrigin(p, n);
+        const float offsetScale = i % 2 == 0 ? 1.0f : scale * 4.0f * rng.nextFloat();
+        const vec3 q = offsetRayOrigin(p, n, offsetScale);
         ASSERT_TRUE(isFinite(q));
         const dvec3 d = dvec3(q) - dvec3(p);
         EXPECT_GT(glm::dot(d, dvec3(n)), 0.0) << "p = (" << p.x << ", " << p.y << ", " << p.z << ")";
-        EXPECT_LE(glm::length(d), 1.0 / 16384.0 + 1e-4 * glm::length(dvec3(p)));
+        EXPECT_LE(glm::length(d), std::max(1.0, double(offsetScale)) / 16384.0 + 1e-4 * glm::length(dvec3(p)));
+        if (HasFailure())
+            return;
+    }
+}
+
+TEST(RayOffset, ClearsTheErrorOfATestWithLargeVertices)
+{
+    // A point on a surface whose vertices reach |coordinate| S (a wall at x = 0 of a box of side S) leaves it by
+    // at least 4 ulps of S along the normal, whatever its own coordinates: a triangle test computing with the
+    // vertices (a driver's) errs by about an ulp of S. Wächter & Binder's offset alone moved such a point by
+    // 1/65536, a quarter of an ulp of 555: NVIDIA's test then re-hit the Cornell box's red wall.
+    Rng rng(pcgHash(89));
+    for (int i = 0; i < 100'000; ++i)
+    {
+        const float s = std::pow(10.0f, 8.0f * rng.nextFloat() - 2.0f); // 1e-2 .. 1e6
+        const float a = rng.nextFloat(), b = rng.nextFloat();
+        const vec3 n = sampleUniformSphere({a, b});
+        // Coordinates from 0 to S, some exactly 0 (axis-aligned walls through the origin).
+        vec3 p;
+        for (int k = 0; k < 3; ++k)
+            p[k] = rng.nextFloat() < 0.3f ? 0.0f : s * (2.0f * rng.nextFloat() - 1.0f) * rng.nextFloat();
+        const vec3 q = offsetRayOrigin(p, n, s);
+        const double ulpOfS = std::ldexp(1.0, std::ilogb(std::max(1.0f, s)) - 23);
+        EXPECT_GE(glm::dot(dvec3(q) - dvec3(p), dvec3(n)), 4.0 * ulpOfS)
+            << "p = (" << p.x << ", " << p.y << ", " << p.z << "), S = " << s;
         if (HasFailure())
             return;
     }

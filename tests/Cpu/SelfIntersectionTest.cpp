@@ -43,7 +43,7 @@ int selfHits(const Scene& scene, float scale)
             vec3 d = sampleUniformSphere({rng.nextFloat(), rng.nextFloat()});
             if (glm::dot(d, side * toward) < 0.0f)
                 d = -d;
-            const vec3 origin = offsetRayOrigin(si.p, glm::dot(d, si.n) > 0.0f ? si.n : -si.n);
+            const vec3 origin = offsetRayOrigin(si.p, glm::dot(d, si.n) > 0.0f ? si.n : -si.n, si.offsetScale);
             HitRecord again;
             if (cs.intersect(TraceRay(Ray{origin, d, 0.0f}, cs.rayNeeds()), 0.0f, kInfinity, again, rng) &&
                 again.prim == hit.prim && again.t < 1e-3f * scale)

@@ -38,7 +38,7 @@ struct Layout
     std::uint32_t inputWords;
     std::uint32_t outputWords;
 };
-constexpr Layout kLayouts[] = {{3, 8}, {6, 3}, {3, 13}, {6, 6}, {3, 2}, {10, 3}, {1, 1}};
+constexpr Layout kLayouts[] = {{3, 8}, {7, 3}, {3, 13}, {6, 6}, {3, 2}, {10, 3}, {1, 1}};
 
 std::uint32_t bits(float f) { return std::bit_cast<std::uint32_t>(f); }
 float asFloat(std::uint32_t u) { return std::bit_cast<float>(u); }
@@ -114,12 +114,13 @@ TEST(GpuShaderParity, RayOffsetIsBitIdentical)
         const float scale = scales[c % scales.size()];
         const vec3 p = scale * vec3(r[6 * c], r[6 * c + 1], r[6 * c + 2]);
         const vec3 n = glm::normalize(vec3(r[6 * c + 3], r[6 * c + 4], r[6 * c + 5]) + vec3(1e-3f));
-        in.insert(in.end(), {bits(p.x), bits(p.y), bits(p.z), bits(n.x), bits(n.y), bits(n.z)});
+        const float offsetScale = scales[(c / scales.size()) % scales.size()]; // below 1 counts as 1
+        in.insert(in.end(), {bits(p.x), bits(p.y), bits(p.z), bits(n.x), bits(n.y), bits(n.z), bits(offsetScale)});
     }
     const std::vector<std::uint32_t> out = runParity(kRayOffset, in);
     for (std::size_t c = 0; c < 64; ++c)
     {
-        const vec3 expected = offsetRayOrigin(vec3At(in, 6 * c), vec3At(in, 6 * c + 3));
+        const vec3 expected = offsetRayOrigin(vec3At(in, 7 * c), vec3At(in, 7 * c + 3), asFloat(in[7 * c + 6]));
         for (int k = 0; k < 3; ++k)
             EXPECT_EQ(out[3 * c + k], bits(expected[k])) << "case " << c << ", component " << k;
     }
