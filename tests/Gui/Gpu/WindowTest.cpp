@@ -12,44 +12,23 @@
 #include <gtest/gtest.h>
 #include <stb_image.h>
 
-#ifndef _WIN32 // popen and the exit status macros: POSIX
-#include <sys/wait.h>
+#ifndef _WIN32 // the app runs through a POSIX shell (Support/AppProcess.h)
 
 #include "Image/ImageIO.h"
+#include "Support/AppProcess.h"
 
 namespace rt::gpu::gui::test
 {
 namespace
 {
-struct AppRun
-{
-    int status;
-    std::string output; // stdout and stderr
-};
+using ::rt::test::AppRun;
 
-AppRun runApp(const std::string& arguments)
+AppRun runApp(const std::string& arguments, const std::string& environment = "")
 {
-    const std::string command = "'" RT_GPU_APP "' " + arguments + " 2>&1";
-    AppRun run{-1, {}};
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe)
-        return run;
-    char buffer[4096];
-    while (std::size_t n = std::fread(buffer, 1, sizeof(buffer), pipe))
-        run.output.append(buffer, n);
-    const int status = pclose(pipe);
-    run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return run;
+    return ::rt::test::runApp(RT_GPU_APP, arguments, environment);
 }
 
-std::filesystem::path scratchDir()
-{
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("rt_gui_gpu_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
+std::filesystem::path scratchDir() { return ::rt::test::scratchDir("rt_gui_gpu_"); }
 
 /// Copies `file` to $RT_GUI_KEEP, when set, under the test's name.
 void keep(const std::filesystem::path& file)

@@ -1,0 +1,38 @@
+#include "Support/AppProcess.h"
+
+#include <cstdio>
+
+#include <gtest/gtest.h>
+
+#ifndef _WIN32
+#include <sys/wait.h>
+#endif
+
+namespace rt::test
+{
+AppRun runApp(const std::string& app, const std::string& arguments, const std::string& environment)
+{
+    AppRun run{-1, {}};
+#ifndef _WIN32
+    const std::string command = environment + " '" + app + "' " + arguments + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe)
+        return run;
+    char buffer[4096];
+    while (std::size_t n = std::fread(buffer, 1, sizeof(buffer), pipe))
+        run.output.append(buffer, n);
+    const int status = pclose(pipe);
+    run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+#endif
+    return run;
+}
+
+std::filesystem::path scratchDir(const std::string& prefix)
+{
+    const auto dir = std::filesystem::temp_directory_path() /
+                     (prefix + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+} // namespace rt::test
