@@ -47,6 +47,15 @@ inline bool sphereCone(const LightData& s, const vec3& p, float& oneMinusCos, fl
     return true;
 }
 
+/// lightPdf of a sphere seen from outside, from sphereCone's cone: uniform over the cone, 0 outside it.
+inline float conePdf(float oneMinusCos, const vec3& axis, const vec3& wi)
+{
+    // In the cone iff the chord |wi - axis| = sqrt(2 (1 - cos)) is at most the cone's: unlike a float cosine,
+    // which moves in steps of 6e-8 near 1 (coarser than a small cone's 1 - cos), the chord keeps its precision
+    // at every size. The slack is the rounding of a float unit direction (4 ulps of 1).
+    const bool inside = glm::length(wi - axis) <= std::sqrt(2.0f * oneMinusCos) + 4.0f * 0x1p-24f;
+    return inside ? uniformConePdf(oneMinusCos) : 0.0f;
+}
 /// Far root of the ray p + t wi against a sphere that contains p (t > 0 always exists).
 inline float sphereExitDistance(const LightData& s, const vec3& p, const vec3& wi)
 {
@@ -125,13 +134,7 @@ inline float lightPdf(const LightData& light, const vec3& p, const vec3& wi)
         float oneMinusCos, cosThetaMax;
         vec3 axis;
         if (detail::sphereCone(light, p, oneMinusCos, cosThetaMax, axis))
-        {
-            // In the cone iff the chord |wi - axis| = sqrt(2 (1 - cos)) is at most the cone's: unlike a float
-            // cosine, which moves in steps of 6e-8 near 1 (coarser than a small cone's 1 - cos), the chord keeps
-            // its precision at every size. The slack is the rounding of a float unit direction (4 ulps of 1).
-            const bool inside = glm::length(wi - axis) <= std::sqrt(2.0f * oneMinusCos) + 4.0f * 0x1p-24f;
-            return inside ? uniformConePdf(oneMinusCos) : 0.0f;
-        }
+            return detail::conePdf(oneMinusCos, axis, wi);
         const float t = detail::sphereExitDistance(light, p, wi);
         if (!(t > 0.0f))
             return 0.0f;
@@ -161,7 +164,7 @@ inline bool sampleLight(const LightData& light, const vec3& p, const vec2& u, Li
         {
             out.wi = Onb(axis).toWorld(sampleUniformCone(u, oneMinusCos));
             out.distance = glm::length(light.p0 - p) - light.radius; // lower bound; the mixture needs no more
-            out.pdf = lightPdf(light, p, out.wi);
+            out.pdf = detail::conePdf(oneMinusCos, axis, out.wi); // = lightPdf(light, p, out.wi), cone reused
             return out.pdf > 0.0f;
         }
         y = light.p0 + light.radius * sampleUniformSphere(u);

@@ -14,8 +14,8 @@ struct TraceRay
     vec3 origin;
     vec3 direction;
     float time;
-    vec3 invDirection; // 1 / d per component (+-inf for 0 components: the slab test handles them)
-    int directionNegative[3];
+    vec3 invDirection; // 1 / d per component (+-inf for 0 components: the slab test handles them); box tests only
+    int directionNegative[3]; // box tests only
     float directionLength2; // d . d
     float invDirectionLength2; // 1 / (d . d)
     float directionLength; // |d|; only computed when the scene has media
@@ -29,13 +29,17 @@ struct TraceRay
     {
         bool triangles = true;
         bool media = true;
+        bool boxes = true; // false when the scene is one BVH leaf: its rays meet no box
     };
 
     TraceRay(const Ray& r, Needs needs) : origin(r.origin), direction(r.direction), time(r.time)
     {
-        invDirection = 1.0f / direction;
-        for (int i = 0; i < 3; ++i)
-            directionNegative[i] = invDirection[i] < 0.0f;
+        if (needs.boxes)
+        {
+            invDirection = 1.0f / direction;
+            for (int i = 0; i < 3; ++i)
+                directionNegative[i] = invDirection[i] < 0.0f;
+        }
         directionLength2 = lengthSquared(direction);
         invDirectionLength2 = 1.0f / directionLength2;
         directionLength = needs.media ? std::sqrt(directionLength2) : 0.0f;

@@ -38,7 +38,7 @@ public:
     const std::vector<QuadRec>& quads() const { return m_quads; }
     const std::vector<TriangleRec>& triangles() const { return m_triangles; }
     bool hasMedia() const { return !m_media.empty(); }
-    TraceRay::Needs rayNeeds() const { return {!m_triangles.empty(), !m_media.empty()}; }
+    TraceRay::Needs rayNeeds() const { return {!m_triangles.empty(), !m_media.empty(), !m_bvh4.rootIsLeaf}; }
 
     /// Closest hit along r in (tMin, tMax). Consumes random numbers only when the ray crosses a medium.
     bool intersect(const TraceRay& r, float tMin, float tMax, HitRecord& hit, Rng& rng) const

@@ -70,6 +70,16 @@ float planarHit(LightData light, vec3 p, vec3 wi)
     return (alpha >= lo && beta >= lo && alpha + beta <= hi) ? t : -1.0;
 }
 
+/// lightPdf of a sphere seen from outside, from sphereCone's cone: uniform over the cone, 0 outside it.
+float conePdf(float oneMinusCos, vec3 axis, vec3 wi)
+{
+    // In the cone iff the chord |wi - axis| = sqrt(2 (1 - cos)) is at most the cone's: a float cosine moves in
+    // steps of 6e-8 near 1, coarser than a small cone's 1 - cos; the chord keeps its precision. The slack is
+    // the rounding of a float unit direction (4 ulps of 1).
+    bool inside = length(wi - axis) <= sqrt(2.0 * oneMinusCos) + 4.0 / 16777216.0;
+    return inside ? uniformConePdf(oneMinusCos) : 0.0;
+}
+
 /// Solid-angle pdf with which sampleLight(light, p, .) produces the unit direction wi; 0 if it cannot.
 float lightPdf(LightData light, vec3 p, vec3 wi)
 {
@@ -79,13 +89,7 @@ float lightPdf(LightData light, vec3 p, vec3 wi)
         float cosThetaMax;
         vec3 axis;
         if (sphereCone(light, p, oneMinusCos, cosThetaMax, axis))
-        {
-            // In the cone iff the chord |wi - axis| = sqrt(2 (1 - cos)) is at most the cone's: a float cosine
-            // moves in steps of 6e-8 near 1, coarser than a small cone's 1 - cos; the chord keeps its
-            // precision. The slack is the rounding of a float unit direction (4 ulps of 1).
-            bool inside = length(wi - axis) <= sqrt(2.0 * oneMinusCos) + 4.0 / 16777216.0;
-            return inside ? uniformConePdf(oneMinusCos) : 0.0;
-        }
+            return conePdf(oneMinusCos, axis, wi);
         float t = sphereExitDistance(light, p, wi);
         if (!(t > 0.0))
             return 0.0;
@@ -117,7 +121,7 @@ bool sampleLight(LightData light, vec3 p, vec2 u, out LightSample ls)
         {
             ls.wi = onbToWorld(onbFromNormal(axis), sampleUniformCone(u, oneMinusCos));
             ls.distance = length(light.p0 - p) - light.radius; // a lower bound; the mixture needs no more
-            ls.pdf = lightPdf(light, p, ls.wi);
+            ls.pdf = conePdf(oneMinusCos, axis, ls.wi); // = lightPdf(light, p, ls.wi), cone reused
             return ls.pdf > 0.0;
         }
         y = light.p0 + light.radius * sampleUniformSphere(u);
