@@ -11,13 +11,18 @@ namespace rt
 /// Moves a surface point off the surface along the geometric normal `n` (pointing to the side the new ray
 /// leaves from) far enough that the new ray, started with tmin = 0, does not hit the surface it leaves.
 /// Wächter & Binder, "A Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing Gems ch. 6, 2019:
-/// 256 ulps of each coordinate, and below |p_i| = 1/32 an absolute 1/65536, both times `scale`.
+/// 256 ulps of each coordinate, except below |p_i| = scale/32, where the offset is an absolute scale/65536
+/// (their constants are those of scale = 1).
 ///
 /// `scale` is the largest coordinate magnitude the surface's intersection test computes with (the largest
 /// |vertex coordinate| of a triangle or quad; 1 for surfaces whose test errs in proportion to p, such as
 /// our own sphere test). Wächter & Binder bound the error of p alone; a triangle test in a driver (NVIDIA's)
 /// errs by ulps of the vertices, and a wall at x = 0 of a 555-unit Cornell box re-hit itself from the
 /// 1/65536 offset often enough to lose 6-10 % of its radiance on the H100. Values below 1 count as 1.
+/// The offset grows with the largest primitive: a ground quad of side 1e5 moves points near its axis planes
+/// by about 1.5 units (the catalogue's largest, rtnw-final's ground boxes, by 0.015).
+/// A quad is two triangles on the GPU, each scaled by its own three corners; the CPU takes all four, so the
+/// two engines' offsets can differ on tilted quads (by a factor below 2; both clear the error).
 /// The GLSL twin is Shaders/RayOffset.glsl, bit for bit (the constants are powers of two: s times them is exact).
 inline vec3 offsetRayOrigin(const vec3& p, const vec3& n, float scale = 1.0f)
 {

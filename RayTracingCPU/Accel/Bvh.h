@@ -7,7 +7,6 @@
 #include <span>
 #include <vector>
 
-#include "Geometry/TraceRay.h"
 #include "Math/Aabb.h"
 
 namespace rt::cpu
@@ -34,61 +33,4 @@ struct Bvh
     static Bvh build(std::span<const Aabb> primitiveBounds, int maxLeafSize = 16);
 };
 
-/// Slab test against the node bounds within (0, tMax). The far distance is enlarged by 1 + 2 gamma(3) so the
-/// test stays conservative under rounding (pbrt-v4 Bounds3::IntersectP), which the watertight triangle
-/// test needs.
-inline bool hitsBox(const BvhNode& n, const TraceRay& r, float tMax)
-{
-    const vec3 t0 = (n.boundsMin - r.origin) * r.invDirection;
-    const vec3 t1 = (n.boundsMax - r.origin) * r.invDirection;
-    const vec3 tNear = glm::min(t0, t1);
-    const vec3 tFar = glm::max(t0, t1);
-    // A NaN slab (0 * inf: origin on a slab plane of a flat box) is ignored: minf/maxf return the 2nd operand.
-    const float enter = maxf(tNear.x, maxf(tNear.y, maxf(tNear.z, 0.0f)));
-    const float exit = minf(tFar.x, minf(tFar.y, minf(tFar.z, tMax))) * 1.0000004f;
-    return enter <= exit;
-}
-
-/// Visits the leaves whose boxes the ray enters before hit.t, nearer child first along the split axis.
-/// `leaf(firstSlot, count)` tests primitives and shrinks hit.t; traversal culls with the current hit.t.
-template <typename LeafFn>
-inline void traverse(const Bvh& bvh, const TraceRay& r, const float& tMax, LeafFn&& leaf)
-{
-    if (bvh.nodes.empty())
-        return;
-    std::uint32_t stack[128];
-    int top = 0;
-    std::uint32_t index = 0;
-    const BvhNode* nodes = bvh.nodes.data();
-    for (;;)
-    {
-        const BvhNode& node = nodes[index];
-        if (hitsBox(node, r, tMax))
-        {
-            if (node.count > 0)
-            {
-                leaf(node.offset, node.count);
-                if (top == 0)
-                    return;
-                index = stack[--top];
-            }
-            else if (r.directionNegative[node.axis])
-            {
-                stack[top++] = index + 1;
-                index = node.offset;
-            }
-            else
-            {
-                stack[top++] = node.offset;
-                index = index + 1;
-            }
-        }
-        else
-        {
-            if (top == 0)
-                return;
-            index = stack[--top];
-        }
-    }
-}
 } // namespace rt::cpu

@@ -26,11 +26,11 @@ case "$mode" in
 tests)
     "$bin/ray-tracing-gpu" --headless --validation --scene rtrol-cornell-glass --width 200 --spp 16 \
         --output "$out/glass.png" --stats "$out/glass.json"
-    "$bin/rt_gpu_tests" --gtest_brief=1 --gtest_filter=-Heavy/* 2>&1 | tail -40
+    "$bin/rt_gpu_tests" --gtest_brief=1 --gtest_filter='-Heavy/*' 2>&1 | tail -40
     bash tests/Cli/bad_input.sh "$bin/ray-tracing-gpu" | grep -v "^ok"
     ;;
 heavy)
-    "$bin/rt_gpu_tests" --gtest_brief=1 --gtest_filter=Heavy/* 2>&1 | tail -40
+    "$bin/rt_gpu_tests" --gtest_brief=1 --gtest_filter='Heavy/*' 2>&1 | tail -40
     ;;
 table)
     "$bin/ray-tracing-gpu" --compare --quiet --scene cornell-box-lights --width 600 --depth 50 \

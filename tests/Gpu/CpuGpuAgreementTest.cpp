@@ -16,9 +16,12 @@ namespace
 {
 constexpr int kSeeds = 4; // independent renders per engine
 constexpr int kBlock = 8; // pixels per block side
-// |Z| bound: ~1e-4 two-sided per block, so a few hundred blocks over the catalogue rarely raise a false alarm;
-// a wrong pdf or a missing cosine moves whole regions by far more.
+// |Z| bounds: 4 is 6e-5 two-sided per block, 0.05 false alarms expected over the default suite's ~800 blocks;
+// 4.5 is 7e-6 per block, 0.03 over the heavy suite's ~4,400. A wrong pdf or a missing cosine moves whole
+// regions by far more; the biases the heavy suite found (a wall re-hit by its own rays) gave |Z| from 4 to 7
+// on a dozen blocks of each Cornell box.
 constexpr double kMaxZ = 4.0;
+constexpr double kMaxZHeavy = 4.5;
 
 struct BlockEstimate
 {
@@ -82,7 +85,7 @@ void PrintTo(const AgreementCase& c, std::ostream* os)
 }
 
 /// Renders `c` on both engines with `s` (size, spp, depth) and Z-tests every block.
-void expectAgreement(const AgreementCase& c, RenderSettings s)
+void expectAgreement(const AgreementCase& c, RenderSettings s, double maxZ)
 {
     const Scene scene = makeScene(c.scene);
     s.aspect = scene.defaults.aspect;
@@ -103,7 +106,7 @@ void expectAgreement(const AgreementCase& c, RenderSettings s)
         const double rounding = 1e-5 * std::max(std::fabs(cpu.mean[i]), std::fabs(gpu.mean[i]));
         const double sigma = std::sqrt(cpu.variance[i] + gpu.variance[i] + rounding * rounding);
         const double z = sigma > 0.0 ? difference / sigma : 0.0;
-        if (std::fabs(z) > kMaxZ)
+        if (std::fabs(z) > maxZ)
         {
             ++failures;
             ADD_FAILURE() << c.scene << ": block (" << i % cpu.blocksX << ", " << i / cpu.blocksX
@@ -125,12 +128,12 @@ TEST_P(GpuCpuAgreement, BlockMeansAgree)
     s.width = 32;
     s.spp = 16;
     s.depth = 16;
-    expectAgreement(GetParam(), s);
+    expectAgreement(GetParam(), s, kMaxZ);
 }
 
-/// The same comparison with 16x the pixels, 4x the samples and the books' depth: each block's standard error
-/// is about 4x smaller, so a bias a quarter the size of what the default suite can see fails here. Label
-/// heavy (minutes on lavapipe).
+/// The same comparison with 16x the pixels (16x the blocks), 4x the samples (each block's standard error
+/// halved) and the books' depth: a bias half the size of what the default suite can see fails here, on every
+/// 8x8 block of a 128-pixel-wide image. Label heavy (minutes on lavapipe).
 class GpuCpuAgreementFine : public ::testing::TestWithParam<AgreementCase>
 {
 };
@@ -142,7 +145,7 @@ TEST_P(GpuCpuAgreementFine, BlockMeansAgree)
     s.width = 128;
     s.spp = 64;
     s.depth = 50;
-    expectAgreement(GetParam(), s);
+    expectAgreement(GetParam(), s, kMaxZHeavy);
 }
 
 std::vector<AgreementCase> cases()

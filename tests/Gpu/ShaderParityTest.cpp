@@ -214,8 +214,9 @@ TEST(GpuShaderParity, SrgbDecodeMatchesCommon)
     for (std::uint32_t code = 0; code < 256; ++code)
     {
         const float cpu = srgb8ToLinear(static_cast<unsigned char>(code));
-        // GLSL's pow may be a few ulps from std::pow; the engines' agreement tests allow 1e-5 relative.
-        EXPECT_NEAR(asFloat(out[code]), cpu, 1e-6f * cpu + 1e-9f) << "code " << code;
+        // GLSL's pow is exp2(y log2 x) within Vulkan's precision rules, a few ulps from std::pow at most
+        // (lavapipe and NVIDIA: within 1e-6); the engines' agreement tests allow 1e-5 relative.
+        EXPECT_NEAR(asFloat(out[code]), cpu, 4e-6f * cpu + 1e-9f) << "code " << code;
     }
 }
 

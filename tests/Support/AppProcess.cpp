@@ -10,7 +10,8 @@
 
 namespace rt::test
 {
-AppRun runApp(const std::string& app, const std::string& arguments, const std::string& environment)
+AppRun runApp([[maybe_unused]] const std::string& app, [[maybe_unused]] const std::string& arguments,
+              [[maybe_unused]] const std::string& environment)
 {
     AppRun run{-1, {}};
 #ifndef _WIN32
