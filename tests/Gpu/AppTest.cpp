@@ -95,6 +95,25 @@ TEST(GpuApp, NoVulkanLoaderIsOneLineDeviceError)
 }
 #endif
 
+#ifdef RT_HIDE_RAY_TRACING_LAYER_DIR
+TEST(GpuApp, NoRayTracingDeviceListsWhatEachLacks)
+{
+    RT_REQUIRE_GPU(); // a device exists; the layer takes its ray tracing away
+    const auto dir = scratchDir();
+    const AppRun r = runApp("--headless --scene rtnw-quads --width 8 --spp 1 --quiet --output '" +
+                                (dir / "out.png").string() + "'",
+                            "VK_LAYER_PATH='" RT_HIDE_RAY_TRACING_LAYER_DIR "' VK_INSTANCE_LAYERS=VK_LAYER_RT_hide_ray_tracing");
+    EXPECT_EQ(r.status, 5) << r.output;
+    EXPECT_NE(r.output.find("error: "), std::string::npos) << r.output;
+    // Every device is listed with what it lacks, by name.
+    EXPECT_NE(r.output.find("device 0 '"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("): lacks extension "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("extension " VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("extension " VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
+#endif
+
 TEST(GpuApp, AbsurdSizeNamesTheLimitAndWritesNothing)
 {
     RT_REQUIRE_GPU();
