@@ -1,6 +1,9 @@
 #include "Cli/CommonOptions.h"
 
+#include <cstdio>
+
 #include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
 
 #include "Error.h"
 
@@ -82,5 +85,15 @@ std::string sceneListing()
     for (const SceneInfo& s : sceneCatalogue())
         out += fmt::format("{:<24} {:<52} {}\n", s.id, s.title, s.source);
     return out;
+}
+
+bool runCommonCommands(const CommonOptions& options)
+{
+    spdlog::set_pattern("%^%l%$: %v");
+    spdlog::set_level(options.quiet ? spdlog::level::warn : spdlog::level::info);
+    if (!options.listScenes)
+        return false;
+    std::fputs(sceneListing().c_str(), stdout);
+    return true;
 }
 } // namespace rt

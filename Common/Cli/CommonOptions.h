@@ -45,4 +45,8 @@ RenderSettings resolveSettings(const CommonOptions& options, const Scene& scene)
 
 /// One line per catalogue scene: id, title, source.
 std::string sceneListing();
+
+/// What every command of both apps does first: log level from --quiet, and --list-scenes printed to stdout.
+/// Returns true when the command is done (it was --list-scenes).
+bool runCommonCommands(const CommonOptions& options);
 } // namespace rt

@@ -1,9 +1,5 @@
 // ray-tracing-cpu: the CPU path tracer's command line and, without --headless, its desktop window
 // (App/Gui: the thesis' settings panel, renders off the UI thread, timings of every engine side by side).
-#include <cstdio>
-
-#include <spdlog/spdlog.h>
-
 #include "Cli/HeadlessRun.h"
 #include "Engine/CpuEngine.h"
 #include "Error.h"
@@ -30,13 +26,8 @@ int main(int argc, char** argv)
 #endif
 
     return rt::guardedMain(app, argc, argv, [&] {
-        spdlog::set_pattern("%^%l%$: %v");
-        spdlog::set_level(options.quiet ? spdlog::level::warn : spdlog::level::info);
-        if (options.listScenes)
-        {
-            std::fputs(rt::sceneListing().c_str(), stdout);
+        if (rt::runCommonCommands(options))
             return 0;
-        }
         if (!options.headless)
         {
 #ifdef RT_WITH_GUI

@@ -3,7 +3,6 @@
 // (Common/Cli/HeadlessRun.h), so both apps report, write files and fail identically. Without --headless the
 // app opens its window (App/Gui/WindowApp.h); the common flags give the window's initial settings.
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -146,13 +145,8 @@ int main(int argc, char** argv)
     addWindowOptions(app, window);
 
     return rt::guardedMain(app, argc, argv, [&] {
-        spdlog::set_pattern("%^%l%$: %v");
-        spdlog::set_level(options.quiet ? spdlog::level::warn : spdlog::level::info);
-        if (options.listScenes)
-        {
-            std::fputs(rt::sceneListing().c_str(), stdout);
+        if (rt::runCommonCommands(options))
             return 0;
-        }
         if (compare)
         {
             const rt::Scene scene = rt::makeScene(options.scene, options.sceneOptions());
