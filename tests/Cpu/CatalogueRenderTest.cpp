@@ -4,6 +4,7 @@
 
 #include "RenderTestSupport.h"
 #include "Scenes/Catalogue.h"
+#include "Support/CatalogueCases.h"
 
 namespace rt::test
 {
@@ -29,20 +30,7 @@ TEST_P(CpuCatalogue, RendersWithoutNanOnBothEngines)
     }
 }
 
-std::vector<std::string> catalogueIds()
-{
-    std::vector<std::string> ids;
-    for (const SceneInfo& s : sceneCatalogue())
-        ids.push_back(s.id);
-    return ids;
-}
-
-INSTANTIATE_TEST_SUITE_P(AllScenes, CpuCatalogue, ::testing::ValuesIn(catalogueIds()), [](const auto& param) {
-    std::string name = param.param;
-    for (char& c : name)
-        if (c == '-')
-            c = '_';
-    return name;
-});
+INSTANTIATE_TEST_SUITE_P(AllScenes, CpuCatalogue, ::testing::ValuesIn(catalogueIds()),
+                         [](const auto& param) { return testNameOf(param.param); });
 } // namespace
 } // namespace rt::test

@@ -5,19 +5,12 @@
 
 #include "GpuTestEnvironment.h"
 #include "Scenes/Catalogue.h"
+#include "Support/CatalogueCases.h"
 
 namespace rt::gpu::test
 {
 namespace
 {
-std::vector<std::string> sceneIds()
-{
-    std::vector<std::string> ids;
-    for (const SceneInfo& info : sceneCatalogue())
-        ids.push_back(info.id);
-    return ids;
-}
-
 class GpuCatalogue : public ::testing::TestWithParam<std::string>
 {
 };
@@ -47,13 +40,9 @@ TEST_P(GpuCatalogue, RendersFiniteWithoutValidationMessages)
     EXPECT_EQ(engine.validationMessages(), messagesBefore) << "Vulkan validation messages";
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryScene, GpuCatalogue, ::testing::ValuesIn(sceneIds()),
+INSTANTIATE_TEST_SUITE_P(EveryScene, GpuCatalogue, ::testing::ValuesIn(::rt::test::catalogueIds()),
                          [](const ::testing::TestParamInfo<std::string>& param) {
-                             std::string name = param.param;
-                             for (char& c : name)
-                                 if (c == '-')
-                                     c = '_';
-                             return name;
+                             return ::rt::test::testNameOf(param.param);
                          });
 } // namespace
 } // namespace rt::gpu::test

@@ -9,6 +9,7 @@
 #include "Engine/CpuEngine.h"
 #include "GpuTestEnvironment.h"
 #include "Scenes/Catalogue.h"
+#include "Support/CatalogueCases.h"
 
 namespace rt::gpu::test
 {
@@ -160,11 +161,8 @@ std::vector<AgreementCase> cases()
 
 std::string caseName(const ::testing::TestParamInfo<AgreementCase>& param)
 {
-    std::string name = param.param.scene + (param.param.estimator == Estimator::Mixture ? "_mixture" : "_bsdf");
-    for (char& ch : name)
-        if (ch == '-')
-            ch = '_';
-    return name;
+    return ::rt::test::testNameOf(param.param.scene) +
+           (param.param.estimator == Estimator::Mixture ? "_mixture" : "_bsdf");
 }
 
 INSTANTIATE_TEST_SUITE_P(Catalogue, GpuCpuAgreement, ::testing::ValuesIn(cases()), caseName);
