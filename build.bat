@@ -3,7 +3,7 @@ rem Set up, build, and run the main job or the tests on Windows with vcpkg (the 
 rem   build.bat          install the vcpkg packages, configure and build (Release) into build\
 rem   build.bat run      ... then render cornell-box-lights to out\
 rem   build.bat test     ... then run the test suite (everything but the label "heavy")
-rem Needs: Visual Studio 2022 (C++20), CMake, the Vulkan SDK (glslangValidator, loader, validation layers),
+rem Needs: Visual Studio 2022 (C++20), CMake, the Vulkan SDK (glslc, loader, validation layers),
 rem and vcpkg on PATH or in VCPKG_ROOT.
 setlocal
 cd /d "%~dp0"
@@ -19,9 +19,11 @@ if "%VCPKG_ROOT%"=="" (
 )
 
 "%VCPKG_ROOT%\vcpkg.exe" install --triplet x64-windows glm spdlog stb tinyobjloader tbb cli11 nlohmann-json ^
-    gtest benchmark glfw3 imgui[glfw-binding,vulkan-binding] vulkan || exit /b 1
+    gtest benchmark vulkan || exit /b 1
 
-cmake -S . -B build -G "Visual Studio 17 2022" -A x64 ^
+rem The windows compile Dear ImGui's backends from Debian's libimgui-dev sources (CMakeLists.txt), which vcpkg
+rem does not install: this route builds the headless apps, the engines and the tests.
+cmake -S . -B build -G "Visual Studio 17 2022" -A x64 -DRT_BUILD_GUI=OFF ^
     -DCMAKE_TOOLCHAIN_FILE="%VCPKG_ROOT%\scripts\buildsystems\vcpkg.cmake" || exit /b 1
 cmake --build build --config Release --parallel || exit /b 1
 

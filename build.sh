@@ -23,7 +23,7 @@ packages=(
     cmake g++ make pkg-config file python3 python3-matplotlib
     libglm-dev libspdlog-dev libstb-dev libtinyobjloader-dev libtbb-dev libcli11-dev nlohmann-json3-dev
     libgtest-dev libbenchmark-dev
-    libvulkan-dev vulkan-tools vulkan-validationlayers glslang-tools spirv-tools
+    libvulkan-dev vulkan-tools vulkan-validationlayers glslc
     libglfw3-dev libimgui-dev xvfb xauth x11-utils imagemagick fonts-dejavu-core hyperfine
     xplanet-images assimp-testmodels
 )
