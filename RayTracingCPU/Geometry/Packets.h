@@ -53,14 +53,22 @@ void padPacket(Packet& p, int used)
 
 namespace detail
 {
-/// Records the nearest lane of `t` among `mask` in `hit`; true if there was one.
-inline bool takeNearest(Lanes mask, Lanes t, Lanes b1, Lanes b2, const std::uint32_t prim[kLanes], HitRecord& hit)
+/// The lane of `mask` with the smallest `t` (the lowest among equals); -1 if `mask` is empty.
+inline int nearestLane(Lanes mask, Lanes t)
 {
     const int bits = movemask(mask);
     if (bits == 0)
-        return false;
+        return -1;
     const Lanes masked = select(mask, t, Lanes(kInfinity));
-    const int lane = std::countr_zero(static_cast<unsigned>(movemask(masked == horizontalMin(masked)) & bits));
+    return std::countr_zero(static_cast<unsigned>(movemask(masked == horizontalMin(masked)) & bits));
+}
+
+/// Records the nearest lane of `t` among `mask` in `hit`; true if there was one.
+inline bool takeNearest(Lanes mask, Lanes t, Lanes b1, Lanes b2, const std::uint32_t prim[kLanes], HitRecord& hit)
+{
+    const int lane = nearestLane(mask, t);
+    if (lane < 0)
+        return false;
     hit = {t[lane], prim[lane], b1[lane], b2[lane]};
     return true;
 }
@@ -143,6 +151,11 @@ inline bool intersectPacket(const TrianglePacket& p, const TraceRay& r, float tM
     Lanes mask = andNot(negative & positive, andNot(det == zero, (t > Lanes(tMin)) & (t < Lanes(hit.t))));
     mask = andNot(undecided, mask);
     undecidedLanes = movemask(undecided);
-    return detail::takeNearest(mask, t, v / det, w / det, p.prim, hit);
+    // The barycentrics of the winning lane only: a division per lane, the same bits as dividing the vectors.
+    const int lane = detail::nearestLane(mask, t);
+    if (lane < 0)
+        return false;
+    hit = {t[lane], p.prim[lane], v[lane] / det[lane], w[lane] / det[lane]};
+    return true;
 }
 } // namespace rt::cpu
