@@ -1,6 +1,5 @@
 #pragma once
 
-#include <algorithm>
 #include <bit>
 #include <cstdint>
 
@@ -44,7 +43,6 @@ inline vec3 offsetRayOrigin(const vec3& p, const vec3& n, float scale = 1.0f)
 /// The `scale` of offsetRayOrigin for a planar primitive: its largest |vertex coordinate|, world space.
 inline float planarOffsetScale(const vec3& a, const vec3& b, const vec3& c)
 {
-    const vec3 m = glm::max(glm::abs(a), glm::max(glm::abs(b), glm::abs(c)));
-    return std::max(m.x, std::max(m.y, m.z));
+    return maxComponent(glm::max(glm::abs(a), glm::max(glm::abs(b), glm::abs(c))));
 }
 } // namespace rt

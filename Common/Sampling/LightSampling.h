@@ -9,6 +9,7 @@
 
 #include "Math/Math.h"
 #include "Math/Onb.h"
+#include "Math/PlaneDuals.h"
 #include "Sampling/Warps.h"
 #include "Shared/HostDevice.h"
 
@@ -99,9 +100,9 @@ inline LightData makeQuadLight(const vec3& q, const vec3& u, const vec3& v, std:
     const vec3 n = glm::cross(u, v);
     l.area = glm::length(n);
     l.normal = n / l.area;
-    const vec3 w = n / glm::dot(n, n);
-    l.dualU = glm::cross(v, w);
-    l.dualV = glm::cross(w, u);
+    const PlaneDuals duals = planeDuals(u, v);
+    l.dualU = duals.ua;
+    l.dualV = duals.vb;
     return l;
 }
 

@@ -11,7 +11,7 @@ namespace
 {
 constexpr int kBins = 16;
 constexpr float kNodeCost = 2.0f; // a 4-wide node visit (box tests, sorting, stack) measured at ~2 packet tests
-constexpr int kMaxSahDepth = 64; // below it, median splits: depth stays < 64 + 32 (traversal stack: 128)
+constexpr int kMaxSahDepth = 64; // below it, median splits: depth stays < 64 + 32 (Bvh4's traversal stack: 512)
 
 float packets(std::uint32_t n) { return float((n + kLanes - 1) / kLanes); }
 

@@ -114,9 +114,7 @@ RenderResult CpuEngine::render(const RenderSettings& settings, RenderControl& co
             {
                 const auto pixelIndex = static_cast<std::uint32_t>(y * width + x);
                 vec3 acc(0.0f);
-                // Stratum (sx, sy) of sample s = sy * strata + sx, stepped instead of divided per sample.
-                int sx = firstSample % strata, sy = firstSample / strata;
-                for (int s = firstSample; s < firstSample + samplesPerPass; ++s, sx = sx + 1 == strata ? (++sy, 0) : sx + 1)
+                for (int s = firstSample; s < firstSample + samplesPerPass; ++s)
                 {
                     Rng rng = Rng::forSample(settings.seed, pixelIndex, static_cast<std::uint32_t>(s));
                     const float jx = rng.nextFloat();
@@ -124,8 +122,8 @@ RenderResult CpuEngine::render(const RenderSettings& settings, RenderControl& co
                     float fx, fy;
                     if (stratified)
                     {
-                        fx = float(x) + (float(sx) + jx) * invStrata;
-                        fy = float(y) + (float(sy) + jy) * invStrata;
+                        fx = float(x) + (float(s % strata) + jx) * invStrata; // stratum (s % n, s / n)
+                        fy = float(y) + (float(s / strata) + jy) * invStrata;
                     }
                     else
                     {

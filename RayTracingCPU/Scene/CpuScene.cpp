@@ -3,32 +3,40 @@
 #include <algorithm>
 #include <cmath>
 
+#include "Math/PlaneDuals.h"
 #include "Math/RayOffset.h"
 
 namespace rt::cpu
 {
 namespace
 {
+/// The box of the parallelogram's four corners.
+Aabb quadCorners(const vec3& q, const vec3& u, const vec3& v)
+{
+    Aabb box(q, q + u + v);
+    box.expand(q + u);
+    box.expand(q + v);
+    return box;
+}
+
 QuadRec makeQuad(const vec3& q, const vec3& u, const vec3& v, std::uint32_t material)
 {
-    const vec3 n = glm::cross(u, v);
-    const vec3 w = n / glm::dot(n, n);
     QuadRec rec;
     rec.q = q;
-    rec.normal = glm::normalize(n);
+    rec.normal = glm::normalize(glm::cross(u, v));
     rec.d = glm::dot(rec.normal, q);
     rec.material = material;
-    rec.ua = glm::cross(v, w);
-    rec.vb = glm::cross(w, u);
-    rec.offsetScale = std::max(planarOffsetScale(q, q + u, q + v), planarOffsetScale(q + u + v, q, q));
+    const PlaneDuals duals = planeDuals(u, v);
+    rec.ua = duals.ua;
+    rec.vb = duals.vb;
+    const Aabb corners = quadCorners(q, u, v);
+    rec.offsetScale = maxComponent(glm::max(glm::abs(corners.min), glm::abs(corners.max))); // largest |corner coordinate|
     return rec;
 }
 
 Aabb quadBounds(const QuadRec& q, const vec3& u, const vec3& v)
 {
-    Aabb box(q.q, q.q + u + v);
-    box.expand(q.q + u);
-    box.expand(q.q + v);
+    const Aabb box = quadCorners(q.q, u, v);
     // A flat box has no volume; pad it so the slab test does not depend on 0 * inf.
     const vec3 pad = glm::max(vec3(1e-4f), 1e-6f * glm::abs(box.max));
     return Aabb(box.min - pad, box.max + pad);

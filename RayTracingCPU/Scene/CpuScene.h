@@ -66,8 +66,7 @@ public:
                     break;
                 }
                 case PrimType::Medium:
-                    intersectMedium(m_media[ref.index()], r, tMin, hit, PrimRef::make(PrimType::Medium, ref.index()).bits,
-                                    rng);
+                    intersectMedium(m_media[ref.index()], r, tMin, hit, ref.bits, rng);
                     break;
                 }
             }
