@@ -11,6 +11,7 @@
 #include "Engine/RenderTarget.h"
 #include "Engine/Uniforms.h"
 #include "Error.h"
+#include "Vulkan/Barriers.h"
 #include "Vulkan/CommandBuffer.h"
 #include "Vulkan/DescriptorPool.h"
 #include "Vulkan/QueryPool.h"
@@ -89,11 +90,8 @@ struct GpuEngine::Impl
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 1);
             if (readback)
                 target->recordReadback(cmd);
-            VkMemoryBarrier counted{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-            counted.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-            counted.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-            vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
-                                 &counted, 0, nullptr, 0, nullptr);
+            vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
+                              VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT); // the NaN/Inf counters
         });
         return timed ? timestamps.secondsBetween(0, device().properties().limits.timestampPeriod) : -1.0;
     }

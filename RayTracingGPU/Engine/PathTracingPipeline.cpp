@@ -8,6 +8,7 @@
 #include "Engine/GpuScene.h"
 #include "RayTracing/RayTracingPipeline.h"
 #include "Shared/HostDevice.h"
+#include "Vulkan/Barriers.h"
 
 namespace rt::gpu
 {
@@ -97,11 +98,9 @@ void PathTracingPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDe
         vkCmdTraceRaysKHR(cmd, &m_sbt.raygen(), &m_sbt.miss(), &m_sbt.hit(), &m_sbt.callable(), extent.width,
                           extent.height, 1);
         // The launch reads and writes its pixels of the accumulation image: order it before the next one.
-        VkMemoryBarrier accumulated{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-        accumulated.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-        accumulated.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
-                             VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0, 1, &accumulated, 0, nullptr, 0, nullptr);
+        vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                          VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
         done += samples;
     }
 }

@@ -7,8 +7,10 @@
 #include "Engine/GpuEngine.h"
 #include "Engine/GpuScene.h"
 #include "Engine/PathTracingPipeline.h"
+#include "Engine/RenderLimits.h"
 #include "Engine/Uniforms.h"
 #include "Shared/HostDevice.h"
+#include "Vulkan/Barriers.h"
 #include "Vulkan/CommandBuffer.h"
 
 namespace rt::gpu
@@ -19,14 +21,6 @@ namespace
 constexpr VkPipelineStageFlags kImageStages = VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR |
                                               VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
 
-void memoryBarrier(VkCommandBuffer cmd, VkPipelineStageFlags srcStages, VkAccessFlags srcAccess,
-                   VkPipelineStageFlags dstStages, VkAccessFlags dstAccess)
-{
-    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    barrier.srcAccessMask = srcAccess;
-    barrier.dstAccessMask = dstAccess;
-    vkCmdPipelineBarrier(cmd, srcStages, dstStages, 0, 1, &barrier, 0, nullptr, 0, nullptr);
-}
 } // namespace
 
 ProgressiveRenderer::ProgressiveRenderer(const GpuEngine& engine, std::uint32_t frameSlots)
@@ -143,7 +137,7 @@ void ProgressiveRenderer::recordClear(VkCommandBuffer cmd)
     const VkClearColorValue zero{};
     for (VkImage image : images)
         vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &vk::kColorRange);
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     m_imagesUndefined = false;
@@ -162,7 +156,7 @@ void ProgressiveRenderer::recordSamples(VkCommandBuffer cmd, std::uint32_t slot,
     std::memcpy(m_uniforms.at(slot).mapped(), &uniforms, sizeof(uniforms));
 
     // After the previous frame's display reads (write-after-read) and its samples or clears.
-    memoryBarrier(cmd, kImageStages, VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
+    vk::memoryBarrier(cmd, kImageStages, VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     if (request.cost)
     {
@@ -174,7 +168,7 @@ void ProgressiveRenderer::recordSamples(VkCommandBuffer cmd, std::uint32_t slot,
     else
         m_engine->pipeline().recordLaunch(cmd, {&m_sets.at(slot), 1}, firstSample, count, size,
                                           samplesPerLaunch(m_engine->scene()));
-    memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
 }
@@ -218,34 +212,12 @@ Image ProgressiveRenderer::readImage() const
     const VkExtent2D size = extent();
     if (m_imagesUndefined)
         return Image(static_cast<int>(size.width), static_cast<int>(size.height)); // nothing traced yet
-    const vk::Buffer readback(device, VkDeviceSize(16) * size.width * size.height, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+    const vk::Buffer readback(device, VkDeviceSize(kAccumulationBytesPerPixel) * size.width * size.height, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                               vk::MemoryUse::Readback);
     vk::submitAndWait(device, m_engine->context().commandPool(), [&](VkCommandBuffer cmd) {
-        VkImageMemoryBarrier toSource{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-        toSource.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
-        toSource.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-        toSource.oldLayout = VK_IMAGE_LAYOUT_GENERAL;
-        toSource.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-        toSource.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-        toSource.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-        toSource.image = m_accumulation.Handle();
-        toSource.subresourceRange = vk::kColorRange;
-        vkCmdPipelineBarrier(cmd, kImageStages, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 1,
-                             &toSource);
-        VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {size.width, size.height, 1};
-        vkCmdCopyImageToBuffer(cmd, m_accumulation.Handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.Handle(),
-                               1, &region);
-        VkImageMemoryBarrier toGeneral = toSource; // back for the next frames' shaders
-        toGeneral.srcAccessMask = 0;
-        toGeneral.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-        toGeneral.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-        toGeneral.newLayout = VK_IMAGE_LAYOUT_GENERAL;
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, kImageStages, 0, 0, nullptr, 0, nullptr, 1,
-                             &toGeneral);
-        memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
-                      VK_ACCESS_HOST_READ_BIT);
+        vk::recordImageReadback(cmd, m_accumulation.Handle(), size, readback.Handle(), VK_IMAGE_LAYOUT_GENERAL,
+                                kImageStages, VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, kImageStages,
+                                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     });
     Image image(static_cast<int>(size.width), static_cast<int>(size.height));
     const auto* texels = static_cast<const float*>(readback.mapped());

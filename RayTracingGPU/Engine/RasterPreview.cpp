@@ -7,6 +7,7 @@
 
 #include "Engine/PreviewMesh.h"
 #include "Shared/HostDevice.h"
+#include "Vulkan/Barriers.h"
 #include "Vulkan/CommandBuffer.h"
 #include "Vulkan/GraphicsPipeline.h"
 #include "Vulkan/UploadBatch.h"
@@ -87,11 +88,8 @@ void RasterPreview::setScene(const Scene& scene, const vk::CommandPool& pool)
     batch.submit(pool);
     // The batch's copies are made visible to shaders and builds; the vertex stage needs its own barrier.
     vk::submitAndWait(*m_device, pool, [](VkCommandBuffer cmd) {
-        VkMemoryBarrier uploaded{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-        uploaded.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-        uploaded.dstAccessMask = VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT;
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_VERTEX_INPUT_BIT, 0, 1, &uploaded,
-                             0, nullptr, 0, nullptr);
+        vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_VERTEX_INPUT_BIT, VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT);
     });
     m_sphereMeshVertices = static_cast<std::uint32_t>(sphere.size());
     m_triangleVertices = static_cast<std::uint32_t>(geometry.triangles.size());

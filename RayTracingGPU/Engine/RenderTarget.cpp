@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "Engine/RenderLimits.h"
+#include "Vulkan/Barriers.h"
 
 namespace rt::gpu
 {
@@ -33,58 +34,22 @@ shader::SampleCounters RenderTarget::readCounters() const
 
 void RenderTarget::recordClear(VkCommandBuffer cmd) const
 {
-    VkImageMemoryBarrier toGeneral{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    toGeneral.srcAccessMask = 0;
-    toGeneral.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    toGeneral.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    toGeneral.newLayout = VK_IMAGE_LAYOUT_GENERAL;
-    toGeneral.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    toGeneral.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    toGeneral.image = m_image.Handle();
-    toGeneral.subresourceRange = vk::kColorRange;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
-                         nullptr, 1, &toGeneral);
+    vk::imageBarrier(cmd, m_image.Handle(),
+                     {VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
     const VkClearColorValue zero{};
     vkCmdClearColorImage(cmd, m_image.Handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &vk::kColorRange);
-    VkImageMemoryBarrier cleared = toGeneral;
-    cleared.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    cleared.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-    cleared.oldLayout = VK_IMAGE_LAYOUT_GENERAL;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0, 0,
-                         nullptr, 0, nullptr, 1, &cleared);
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 }
 
 void RenderTarget::recordReadback(VkCommandBuffer cmd) const
 {
-    VkImageMemoryBarrier toSource{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    toSource.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-    toSource.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-    toSource.oldLayout = VK_IMAGE_LAYOUT_GENERAL;
-    toSource.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    toSource.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    toSource.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    toSource.image = m_image.Handle();
-    toSource.subresourceRange = vk::kColorRange;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
-                         nullptr, 0, nullptr, 1, &toSource);
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {width(), height(), 1};
-    vkCmdCopyImageToBuffer(cmd, m_image.Handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, m_readback.Handle(), 1,
-                           &region);
-    // Back to GENERAL for the next dispatch's storage-image writes, after the copy has read the image.
-    VkImageMemoryBarrier toGeneral = toSource;
-    toGeneral.srcAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-    toGeneral.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-    toGeneral.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    toGeneral.newLayout = VK_IMAGE_LAYOUT_GENERAL;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0, 0,
-                         nullptr, 0, nullptr, 1, &toGeneral);
-    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr,
-                         0, nullptr);
+    // Back to GENERAL afterwards for the next dispatch's storage-image writes.
+    vk::recordImageReadback(cmd, m_image.Handle(), m_image.extent(), m_readback.Handle(), VK_IMAGE_LAYOUT_GENERAL,
+                            VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
+                            VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                            VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 }
 
 Image RenderTarget::readEstimate(std::uint32_t samples) const

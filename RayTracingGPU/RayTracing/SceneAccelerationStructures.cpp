@@ -5,6 +5,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "Error.h"
+#include "Vulkan/Barriers.h"
 #include "Vulkan/CommandBuffer.h"
 
 namespace rt::gpu
@@ -202,17 +203,14 @@ SceneAccelerationStructures buildAccelerationStructures(const vk::Device& device
         if (!blasInfos.empty())
             vkCmdBuildAccelerationStructuresKHR(cmd, static_cast<std::uint32_t>(blasInfos.size()), blasInfos.data(),
                                                 blasRanges.data());
-        VkMemoryBarrier built{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-        built.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
-        built.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR | VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-                             VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, 0, 1, &built, 0, nullptr, 0, nullptr);
+        vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                          VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,
+                          VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                          VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR | VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR);
         vkCmdBuildAccelerationStructuresKHR(cmd, 1, &tlasInfo, &tlasRanges);
-        VkMemoryBarrier ready{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-        ready.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
-        ready.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR;
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-                             VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0, 1, &ready, 0, nullptr, 0, nullptr);
+        vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                          VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                          VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR);
     });
     return out;
 }

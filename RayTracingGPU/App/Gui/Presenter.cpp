@@ -7,6 +7,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "Error.h"
+#include "Vulkan/Barriers.h"
 #include "Vulkan/Check.h"
 
 namespace rt::gpu::gui
@@ -210,34 +211,11 @@ void Presenter::recordScreenshot(const Frame& frame)
         m_screenshot = vk::Buffer(m_context->device(), bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback);
     m_screenshotExtent = frame.extent;
 
-    VkImageMemoryBarrier toSource{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    toSource.srcAccessMask = 0; // the render pass's outgoing dependency made its writes visible to transfers
-    toSource.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-    toSource.oldLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
-    toSource.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    toSource.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    toSource.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    toSource.image = m_swapchain.image(frame.imageIndex);
-    toSource.subresourceRange = vk::kColorRange;
-    vkCmdPipelineBarrier(frame.commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr,
-                         0, nullptr, 1, &toSource);
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {frame.extent.width, frame.extent.height, 1};
-    vkCmdCopyImageToBuffer(frame.commands, toSource.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           m_screenshot.Handle(), 1, &region);
-    VkImageMemoryBarrier toPresent = toSource;
-    toPresent.srcAccessMask = 0; // only read: presentation waits for the semaphore, not for memory
-    toPresent.dstAccessMask = 0;
-    toPresent.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    toPresent.newLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
-    vkCmdPipelineBarrier(frame.commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 0,
-                         nullptr, 0, nullptr, 1, &toPresent);
-    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    vkCmdPipelineBarrier(frame.commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0,
-                         nullptr, 0, nullptr);
+    // Source access 0: the render pass's outgoing dependency made its writes visible to transfers. Back to
+    // PRESENT_SRC with nothing to wait for: presentation waits for the semaphore, not for memory.
+    vk::recordImageReadback(frame.commands, m_swapchain.image(frame.imageIndex), frame.extent, m_screenshot.Handle(),
+                            VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                            VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
 }
 
 void Presenter::endFrame(const Frame& frame, Extent framebuffer)
