@@ -8,8 +8,9 @@
 
 /// Estimates the camera samples first .. first + count - 1 of `pixel` and adds them to its accumulation
 /// texel (rgb: radiance sum, a: sample count) one after the other, in sample order, so the sums do not
-/// depend on how many samples a launch traces. Non-finite samples are counted and dropped.
-void accumulateCameraSamples(uvec2 pixel, uint first, uint count)
+/// depend on how many samples a launch traces. Non-finite samples are counted and dropped. Returns the
+/// texel's sample count afterwards.
+float accumulateCameraSamples(uvec2 pixel, uint first, uint count)
 {
     ivec2 texel = ivec2(pixel);
     vec4 sum = imageLoad(accumulation, texel);
@@ -35,6 +36,7 @@ void accumulateCameraSamples(uvec2 pixel, uint first, uint count)
         sum += vec4(radiance, 1.0);
     }
     imageStore(accumulation, texel, sum);
+    return sum.a;
 }
 
 #endif

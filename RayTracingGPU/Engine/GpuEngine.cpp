@@ -59,14 +59,20 @@ struct GpuEngine::Impl
 
     const vk::Device& device() const { return context.device(); }
 
-    /// A target of the settings' size (reused when the size is unchanged) and a descriptor set for it.
+    /// A target of the settings' size (kept while the size stays, across scenes) and a descriptor set for it
+    /// and the scene (setScene drops the set).
     void prepareTarget(std::uint32_t width, std::uint32_t height)
     {
-        if (target && target->width() == width && target->height() == height && descriptorSet != VK_NULL_HANDLE)
+        const bool resized = !target || target->width() != width || target->height() != height;
+        if (!resized && descriptorSet != VK_NULL_HANDLE)
             return;
-        descriptorPool = vk::DescriptorPool();
-        target.reset();
-        target = std::make_unique<RenderTarget>(device(), width, height);
+        descriptorPool = vk::DescriptorPool(); // its set names the old target or the old scene
+        descriptorSet = VK_NULL_HANDLE;
+        if (resized)
+        {
+            target.reset();
+            target = std::make_unique<RenderTarget>(device(), width, height);
+        }
         const auto imageCount = static_cast<std::uint32_t>(scene->imageViews().size());
         descriptorPool = vk::DescriptorPool(device(), pipeline.bindings(), imageCount);
         descriptorSet = descriptorPool.allocate(pipeline.setLayout(), imageCount);
@@ -85,7 +91,7 @@ struct GpuEngine::Impl
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps.Handle(), 0);
             }
             pipeline.recordLaunch(cmd, {&descriptorSet, 1}, firstSample, samples, {target->width(), target->height()},
-                                  samplesPerLaunch(*sceneDesc));
+                                  scene->samplesPerLaunch());
             if (timed)
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 1);
             if (readback)

@@ -1,6 +1,7 @@
 // The Vulkan ray-tracing engine: rt::RenderEngine on a hardware (or software: lavapipe) ray-tracing
-// pipeline. setScene uploads the scene and builds BLASes/TLAS; render traces one camera sample per pixel
-// per vkCmdTraceRaysKHR into an RGBA32F accumulation image, a few samples per dispatch, and reads it back.
+// pipeline. setScene uploads the scene and builds BLASes/TLAS; render traces the samples into an RGBA32F
+// accumulation image in dispatches of bounded size (each launch loops over its samples per pixel; one sample
+// per launch for scenes with moving spheres) and reads it back.
 // docs/GPU.md describes the mapping of the scene, the shader groups and the bindings.
 #pragma once
 

@@ -1,6 +1,7 @@
 #include "Engine/GpuScene.h"
 
 #include <chrono>
+#include <limits>
 
 #include <spdlog/fmt/fmt.h>
 
@@ -34,7 +35,8 @@ void checkImageLimits(const vk::Device& device, const Scene& scene, std::uint32_
 } // namespace
 
 GpuScene::GpuScene(const vk::Device& device, const vk::CommandPool& pool, const Scene& scene, std::uint32_t maxImages)
-    : m_sampler(device), m_lightCount(static_cast<std::uint32_t>(scene.lights.size()))
+    : m_sampler(device), m_lightCount(static_cast<std::uint32_t>(scene.lights.size())),
+      m_samplesPerLaunch(scene.hasMotion() ? 1u : std::numeric_limits<std::uint32_t>::max())
 {
     checkImageLimits(device, scene, maxImages);
     const SceneLayout layout = layoutScene(scene);

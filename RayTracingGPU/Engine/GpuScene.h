@@ -29,6 +29,9 @@ public:
     /// Host seconds of the BLAS and TLAS builds (uploads excluded).
     double buildSeconds() const { return m_buildSeconds; }
     std::uint32_t lightCount() const { return m_lightCount; }
+    /// Samples one launch may loop over: any number, except with moving spheres, whose intersection shader
+    /// recomputes the ray's shutter time from push.firstSample and so needs one sample per launch.
+    std::uint32_t samplesPerLaunch() const { return m_samplesPerLaunch; }
 
     struct Buffers
     {
@@ -48,6 +51,7 @@ private:
     vk::Sampler m_sampler;
     SceneAccelerationStructures m_accelerationStructures;
     std::uint32_t m_lightCount = 0;
+    std::uint32_t m_samplesPerLaunch = 1;
     double m_buildSeconds = 0.0;
 };
 } // namespace rt::gpu

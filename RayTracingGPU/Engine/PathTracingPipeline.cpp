@@ -1,7 +1,6 @@
 #include "Engine/PathTracingPipeline.h"
 
 #include <algorithm>
-#include <limits>
 
 #include <algorithm>
 
@@ -103,11 +102,6 @@ void PathTracingPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDe
                           VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
         done += samples;
     }
-}
-
-std::uint32_t samplesPerLaunch(const Scene& scene)
-{
-    return scene.hasMotion() ? 1u : std::numeric_limits<std::uint32_t>::max();
 }
 
 void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescriptorSet set, const GpuScene& scene,

@@ -75,8 +75,4 @@ private:
     vk::Pipeline m_pipeline;
     ShaderBindingTable m_sbt;
 };
-
-/// Samples one launch may loop over for `scene`: any number, except with moving spheres, whose intersection
-/// shader recomputes the ray's shutter time from push.firstSample and so needs one sample per launch.
-std::uint32_t samplesPerLaunch(const Scene& scene);
 } // namespace rt::gpu

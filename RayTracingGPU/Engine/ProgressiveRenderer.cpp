@@ -163,11 +163,11 @@ void ProgressiveRenderer::recordSamples(VkCommandBuffer cmd, std::uint32_t slot,
         if (!m_costPipeline)
             createCostResources();
         const VkDescriptorSet sets[] = {m_sets.at(slot), m_costSets.at(slot)};
-        m_costPipeline->recordLaunch(cmd, sets, firstSample, count, size, samplesPerLaunch(m_engine->scene()));
+        m_costPipeline->recordLaunch(cmd, sets, firstSample, count, size, m_engine->gpuScene().samplesPerLaunch());
     }
     else
         m_engine->pipeline().recordLaunch(cmd, {&m_sets.at(slot), 1}, firstSample, count, size,
-                                          samplesPerLaunch(m_engine->scene()));
+                                          m_engine->gpuScene().samplesPerLaunch());
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);

@@ -22,6 +22,8 @@ bool scatterMixture(bool uniformSphere, vec3 p, vec3 ns, vec3 albedo, inout Rng 
     float choice = nextFloat(rng);
     vec2 u = nextFloat2(rng);
     vec3 wi;
+    uint picked = uniforms.lightCount; // the light sampled, whose pdf sampleLight returned; none yet
+    float pickedPdf = 0.0;
     if (choice < 0.5)
         wi = uniformSphere ? sampleUniformSphere(u) : onbToWorld(onbFromNormal(ns), sampleCosineHemisphere(u));
     else
@@ -29,14 +31,16 @@ bool scatterMixture(bool uniformSphere, vec3 p, vec3 ns, vec3 albedo, inout Rng 
         float n = float(uniforms.lightCount);
         float pick = min((2.0 * choice - 1.0) * n, n - 1.0);
         LightSample ls;
-        if (!sampleLight(lights[uint(pick)], p, u, ls))
+        picked = uint(pick);
+        if (!sampleLight(lights[picked], p, u, ls))
             return false;
         wi = ls.wi;
+        pickedPdf = ls.pdf; // = lightPdf(lights[picked], p, wi)
     }
     float scatteringPdf = uniformSphere ? uniformSpherePdf() : cosineHemispherePdf(dot(ns, wi));
     float lightPdfSum = 0.0;
     for (uint j = 0u; j < uniforms.lightCount; ++j)
-        lightPdfSum += lightPdf(lights[j], p, wi);
+        lightPdfSum += j == picked ? pickedPdf : lightPdf(lights[j], p, wi);
     float pdf = 0.5 * scatteringPdf + 0.5 * lightPdfSum / float(uniforms.lightCount);
     if (!(scatteringPdf > 0.0) || !(pdf > 0.0))
         return false;
