@@ -5,18 +5,17 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
+#include "Cli/ValueParsing.h"
 #include "Error.h"
 
 namespace rt
 {
 namespace
 {
-bool parseOnOff(const std::string& flag, const std::string& value)
+bool onOffFlag(const std::string& flag, const std::string& value)
 {
-    if (value == "on")
-        return true;
-    if (value == "off")
-        return false;
+    if (const auto on = parseOnOff(value))
+        return *on;
     throw UsageError(fmt::format("{} must be 'on' or 'off' (got '{}')", flag, value));
 }
 } // namespace
@@ -71,8 +70,8 @@ RenderSettings resolveSettings(const CommonOptions& o, const Scene& scene)
         throw UsageError(
             fmt::format("--sampling must be random, stratified or accumulate (got '{}')", o.sampling));
     s.sampling = *sampling;
-    s.estimator = parseOnOff("--pdf", o.pdf) ? Estimator::Mixture : Estimator::BsdfOnly;
-    s.unidirectionalLight = o.unidirectionalLight ? parseOnOff("--unidirectional-light", *o.unidirectionalLight)
+    s.estimator = onOffFlag("--pdf", o.pdf) ? Estimator::Mixture : Estimator::BsdfOnly;
+    s.unidirectionalLight = o.unidirectionalLight ? onOffFlag("--unidirectional-light", *o.unidirectionalLight)
                                                   : scene.defaults.unidirectionalLight;
     s.seed = o.seed;
     s.validate();

@@ -41,26 +41,6 @@ bool stderrIsTerminal()
 #endif
 }
 
-void checkPath(const std::string& path, const char* flag, std::initializer_list<const char*> extensions)
-{
-    if (path.empty())
-        return;
-    const std::filesystem::path p(path);
-    bool known = false;
-    for (const char* e : extensions)
-        known |= p.extension() == e;
-    if (!known)
-    {
-        std::string list;
-        for (const char* e : extensions)
-            list += (list.empty() ? "" : " or ") + std::string(e);
-        throw UsageError(fmt::format("{} '{}' must end in {}", flag, path, list));
-    }
-    const std::filesystem::path parent = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
-    if (!std::filesystem::is_directory(parent))
-        throw OutputError(fmt::format("{} '{}': folder '{}' does not exist", flag, path, parent.string()));
-}
-
 /// Prints "[####      ]  42%  12.1 s, ETA 16.4 s" on stderr: in place on a terminal, every 10 % otherwise.
 class ProgressPrinter
 {
@@ -115,11 +95,31 @@ private:
 };
 } // namespace
 
+void checkOutputPath(const std::string& path, const char* flag, std::initializer_list<const char*> extensions)
+{
+    if (path.empty())
+        return;
+    const std::filesystem::path p(path);
+    bool known = false;
+    for (const char* e : extensions)
+        known |= p.extension() == e;
+    if (!known)
+    {
+        std::string list;
+        for (const char* e : extensions)
+            list += (list.empty() ? "" : " or ") + std::string(e);
+        throw UsageError(fmt::format("{} '{}' must end in {}", flag, path, list));
+    }
+    const std::filesystem::path parent = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
+    if (!std::filesystem::is_directory(parent))
+        throw OutputError(fmt::format("{} '{}': folder '{}' does not exist", flag, path, parent.string()));
+}
+
 void checkOutputPaths(const CommonOptions& o)
 {
-    checkPath(o.output, "--output", {".png"});
-    checkPath(o.hdr, "--hdr", {".pfm"});
-    checkPath(o.stats, "--stats", {".json"});
+    checkOutputPath(o.output, "--output", {".png"});
+    checkOutputPath(o.hdr, "--hdr", {".pfm"});
+    checkOutputPath(o.stats, "--stats", {".json"});
 }
 
 int runHeadless(RenderEngine& engine, const Scene& scene, const RenderSettings& settings, const CommonOptions& o)

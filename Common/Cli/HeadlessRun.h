@@ -2,11 +2,18 @@
 // cleanly on Ctrl-C, write the image, HDR and stats files asked for, print a one-line summary.
 #pragma once
 
+#include <initializer_list>
+#include <string>
+
 #include "Cli/CommonOptions.h"
 #include "Render/RenderEngine.h"
 
 namespace rt
 {
+/// Checks, before any work, that `path` (if not empty) ends in one of `extensions` and that its folder exists.
+/// Throws UsageError (extension) or OutputError (folder), naming `flag`.
+void checkOutputPath(const std::string& path, const char* flag, std::initializer_list<const char*> extensions);
+
 /// Checks, before any work, that every output path can be written (folder exists, known extension).
 /// Throws UsageError or OutputError.
 void checkOutputPaths(const CommonOptions& options);

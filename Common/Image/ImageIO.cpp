@@ -82,6 +82,15 @@ void writePfm(const std::filesystem::path& path, const Image& image)
     });
 }
 
+std::filesystem::path writePngWithPfm(const std::filesystem::path& png, const Image& image)
+{
+    std::filesystem::path pfm = png;
+    pfm.replace_extension(".pfm");
+    writePng(png, image);
+    writePfm(pfm, image);
+    return pfm;
+}
+
 Image readPfm(const std::filesystem::path& path)
 {
     std::ifstream in(path, std::ios::binary);

@@ -19,6 +19,10 @@ void writePng8(const std::filesystem::path& path, int width, int height, const s
 /// Portable Float Map ("PF", little-endian, bottom row first per the format): lossless linear radiance.
 void writePfm(const std::filesystem::path& path, const Image& image);
 
+/// What the windows' Save image writes: `png` (writePng) and its linear radiance beside it, the same name
+/// with .pfm (writePfm). Returns the PFM's path.
+std::filesystem::path writePngWithPfm(const std::filesystem::path& png, const Image& image);
+
 /// Reads a PFM written by writePfm (or any RGB little- or big-endian PFM). Throws AssetError.
 Image readPfm(const std::filesystem::path& path);
 

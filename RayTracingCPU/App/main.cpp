@@ -37,9 +37,7 @@ int main(int argc, char** argv)
 #endif
         }
 #ifdef RT_WITH_GUI
-        if (gui.anyGiven(app))
-            throw rt::UsageError("--frames, --screenshot, --actions, --state-json, --window-size, --no-gpu and "
-                                 "--validation are for the window: leave out --headless");
+        rt::gui::GuiOptions::rejectIfGiven(app);
 #endif
         const auto engine = rt::parseEngine(engineName);
         if (!engine || *engine == rt::EngineKind::Gpu)

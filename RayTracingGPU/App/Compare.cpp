@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -10,6 +11,7 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
+#include "Cli/ValueParsing.h"
 #include "Error.h"
 #include "IO/AtomicFile.h"
 #include "Image/Metrics.h"
@@ -53,19 +55,10 @@ std::vector<int> parseSppList(const std::string& text)
     std::vector<int> spps;
     for (const std::string& part : split(text))
     {
-        std::size_t used = 0;
-        int value = 0;
-        try
-        {
-            value = std::stoi(part, &used);
-        }
-        catch (const std::exception&)
-        {
-            used = 0;
-        }
-        if (used != part.size() || value < 1)
+        const auto value = parseInteger(part);
+        if (!value || *value < 1 || *value > std::numeric_limits<int>::max())
             throw UsageError(fmt::format("--spp-list must be positive integers separated by commas (got '{}')", text));
-        spps.push_back(value);
+        spps.push_back(static_cast<int>(*value));
     }
     if (spps.empty())
         throw UsageError("--spp-list is empty");

@@ -15,6 +15,7 @@
 #include "App/Gui/WindowApp.h"
 #endif
 #include "Cli/HeadlessRun.h"
+#include "Cli/ValueParsing.h"
 #include "Engine/CpuEngine.h"
 #include "Engine/GpuContext.h"
 #include "Engine/GpuEngine.h"
@@ -38,9 +39,9 @@ struct WindowFlags
 
 bool onOff(const std::string& value, const char* flag)
 {
-    if (value != "on" && value != "off")
-        throw rt::UsageError(fmt::format("{} must be on or off (got '{}')", flag, value));
-    return value == "on";
+    if (const auto on = rt::parseOnOff(value))
+        return *on;
+    throw rt::UsageError(fmt::format("{} must be on or off (got '{}')", flag, value));
 }
 
 void addWindowOptions(CLI::App& app, WindowFlags& w)
@@ -147,6 +148,7 @@ int main(int argc, char** argv)
     return rt::guardedMain(app, argc, argv, [&] {
         if (rt::runCommonCommands(options))
             return 0;
+        validation = validation || rt::gpu::validationWanted();
         if (compare)
         {
             const rt::Scene scene = rt::makeScene(options.scene, options.sceneOptions());
@@ -159,16 +161,16 @@ int main(int argc, char** argv)
             return rt::app::runComparison(scene, settings, c, [&](rt::EngineKind kind) -> std::unique_ptr<rt::RenderEngine> {
                 if (kind == rt::EngineKind::Gpu)
                     return std::make_unique<rt::gpu::GpuEngine>(
-                        rt::gpu::GpuEngineOptions{.deviceIndex = device, .validation = validation || rt::gpu::validationWanted()});
+                        rt::gpu::GpuEngineOptions{.deviceIndex = device, .validation = validation});
                 return std::make_unique<rt::cpu::CpuEngine>(kind);
             });
         }
         if (!options.headless)
-            return runWindow(options, window, device, validation || rt::gpu::validationWanted());
+            return runWindow(options, window, device, validation);
         rt::checkOutputPaths(options);
         const rt::Scene scene = rt::makeScene(options.scene, options.sceneOptions());
         const rt::RenderSettings settings = rt::resolveSettings(options, scene);
-        rt::gpu::GpuEngine gpu({.deviceIndex = device, .validation = validation || rt::gpu::validationWanted()});
+        rt::gpu::GpuEngine gpu({.deviceIndex = device, .validation = validation});
         const int status = rt::runHeadless(gpu, scene, settings, options);
         if (gpu.validationMessages() > 0)
         {

@@ -1,12 +1,12 @@
 #include "App/Gui/ActionScript.h"
 
-#include <charconv>
 #include <map>
 #include <optional>
 
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
+#include "Cli/ValueParsing.h"
 #include "Error.h"
 #include "Scenes/Catalogue.h"
 
@@ -38,29 +38,6 @@ const std::map<std::string, Value>& grammar()
     return g;
 }
 
-std::optional<long long> integer(const std::string& text)
-{
-    long long v = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (ec != std::errc() || end != text.data() + text.size())
-        return std::nullopt;
-    return v;
-}
-
-std::optional<float> real(const std::string& text)
-{
-    try
-    {
-        std::size_t used = 0;
-        const float v = std::stof(text, &used);
-        return used == text.size() ? std::optional(v) : std::nullopt;
-    }
-    catch (const std::exception&)
-    {
-        return std::nullopt;
-    }
-}
-
 std::optional<PixelSampling> sampling(const std::string& text)
 {
     if (text == "normal" || text == "random")
@@ -74,14 +51,10 @@ std::optional<PixelSampling> sampling(const std::string& text)
 
 std::optional<std::pair<int, int>> size(const std::string& text)
 {
-    const auto x = text.find('x');
-    if (x == std::string::npos)
+    const auto s = parseSize(text);
+    if (!s || s->first < 0 || s->second < 0 || s->first > 16384 || s->second > 16384)
         return std::nullopt;
-    const auto w = integer(text.substr(0, x));
-    const auto h = integer(text.substr(x + 1));
-    if (!w || !h || *w < 0 || *h < 0 || *w > 16384 || *h > 16384)
-        return std::nullopt;
-    return std::pair{int(*w), int(*h)};
+    return std::pair{int(s->first), int(s->second)};
 }
 
 /// Checks what the grammar cannot: known scene ids and engines, sampling names, sizes, themes.
@@ -124,9 +97,9 @@ ActionScript::ActionScript(const std::string& text)
             switch (rule->second)
             {
             case Value::None: return eq == std::string::npos;
-            case Value::Integer: return integer(a.value).has_value();
-            case Value::Real: return real(a.value).has_value();
-            case Value::OnOff: return a.value == "on" || a.value == "off";
+            case Value::Integer: return parseInteger(a.value).has_value();
+            case Value::Real: return parseReal(a.value).has_value();
+            case Value::OnOff: return parseOnOff(a.value).has_value();
             case Value::Text: return valueIsValid(a.name, a.value);
             }
             return false;
@@ -168,17 +141,17 @@ bool ActionScript::run(const Action& a, Session& session, Window& window)
     if (a.name == "scene")
         return check(session.setScene(v));
     if (a.name == "spp")
-        return check(session.setSpp(int(*integer(v))));
+        return check(session.setSpp(int(*parseInteger(v))));
     if (a.name == "depth")
-        return check(session.setDepth(int(*integer(v))));
+        return check(session.setDepth(int(*parseInteger(v))));
     if (a.name == "width")
-        return check(session.setWidth(int(*integer(v))));
+        return check(session.setWidth(int(*parseInteger(v))));
     if (a.name == "aspect")
-        return check(session.setAspect(*real(v)));
+        return check(session.setAspect(*parseReal(v)));
     if (a.name == "seed")
-        return check(session.setSeed(*integer(v)));
+        return check(session.setSeed(*parseInteger(v)));
     if (a.name == "count")
-        return check(session.setCount(int(*integer(v))));
+        return check(session.setCount(int(*parseInteger(v))));
     if (a.name == "sampling")
     {
         session.setSampling(*sampling(v));
@@ -238,7 +211,7 @@ bool ActionScript::run(const Action& a, Session& session, Window& window)
     if (a.name == "frames")
     {
         if (!m_waiting)
-            m_framesLeft = int(*integer(v));
+            m_framesLeft = int(*parseInteger(v));
         return m_framesLeft-- <= 0;
     }
     if (a.name == "resize")
@@ -256,7 +229,7 @@ bool ActionScript::run(const Action& a, Session& session, Window& window)
     }
     if (a.name == "font-size")
     {
-        session.setFontSize(float(*integer(v)));
+        session.setFontSize(float(*parseInteger(v)));
         return true;
     }
     return true;

@@ -40,17 +40,16 @@ std::string describe(const Preview& p)
 class GuiApp
 {
 public:
-    GuiApp(const GuiOptions& options, const ImageSettings& initial, std::shared_ptr<const Scene> scene,
-           EngineKind engine)
+    /// `size` and `script`: the options' --window-size and --actions, parsed (and so checked) before.
+    GuiApp(const GuiOptions& options, WindowSize size, std::optional<ActionScript> script, const ImageSettings& initial,
+           std::shared_ptr<const Scene> scene, EngineKind engine)
         : m_options(options),
-          m_window(parseWindowSize(options.windowSize).width, parseWindowSize(options.windowSize).height,
-                   "ray-tracing-cpu: light-sampling lab"),
+          m_window(size.width, size.height, "ray-tracing-cpu: light-sampling lab"),
           m_job({.enabled = !options.noGpu, .validation = options.validation}, initial, std::move(scene)),
           m_session(m_job, initial, engine, false)
     {
         m_session.setFont(availableFonts().front().name);
-        if (!options.actions.empty())
-            m_script.emplace(options.actions);
+        m_script = std::move(script);
     }
 
     int run()
@@ -216,14 +215,15 @@ int runGui(const CommonOptions& options, const std::string& engineName, const Gu
     for (const auto& [flag, value] : {std::pair{"--output", &options.output}, {"--hdr", &options.hdr}, {"--stats", &options.stats}})
         if (!value->empty())
             throw UsageError(std::string(flag) + " is for --headless runs; in the window, use Save image");
-    parseWindowSize(gui.windowSize);
+    const WindowSize size = parseWindowSize(gui.windowSize);
     checkGuiOutputPaths(gui);
+    std::optional<ActionScript> script; // a typo fails here, before a window opens
     if (!gui.actions.empty())
-        ActionScript{gui.actions}; // a typo fails here, before a window opens
+        script.emplace(gui.actions);
     auto scene = std::make_shared<const Scene>(makeScene(options.scene, options.sceneOptions()));
     const ImageSettings initial =
         ImageSettings::from(options.scene, options.sceneOptions(), resolveSettings(options, *scene));
-    GuiApp app(gui, initial, std::move(scene), *engine);
+    GuiApp app(gui, size, std::move(script), initial, std::move(scene), *engine);
     return app.run();
 }
 } // namespace rt::gui

@@ -1,10 +1,11 @@
 #include "App/Gui/GuiOptions.h"
 
-#include <filesystem>
 
 #include <spdlog/fmt/fmt.h>
 
 #include "App/Gui/ActionScript.h"
+#include "Cli/HeadlessRun.h"
+#include "Cli/ValueParsing.h"
 #include "Error.h"
 
 namespace rt::gui
@@ -13,26 +14,20 @@ namespace
 {
 constexpr const char* kWindowFlags[] = {"--frames", "--screenshot", "--actions", "--state-json", "--window-size",
                                         "--no-gpu", "--validation"};
-
-void checkPath(const std::string& path, const char* flag, const char* extension)
-{
-    if (path.empty())
-        return;
-    const std::filesystem::path p(path);
-    if (p.extension() != extension)
-        throw UsageError(fmt::format("{} '{}' must end in {}", flag, path, extension));
-    const std::filesystem::path parent = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
-    if (!std::filesystem::is_directory(parent))
-        throw OutputError(fmt::format("{} '{}': folder '{}' does not exist", flag, path, parent.string()));
-}
 } // namespace
 
-bool GuiOptions::anyGiven(const CLI::App& app) const
+void GuiOptions::rejectIfGiven(const CLI::App& app)
 {
-    for (const char* flag : kWindowFlags)
-        if (app.count(flag) > 0)
-            return true;
-    return false;
+    bool given = false;
+    std::string list;
+    const std::size_t count = std::size(kWindowFlags);
+    for (std::size_t i = 0; i < count; ++i)
+    {
+        given |= app.count(kWindowFlags[i]) > 0;
+        list += (i == 0 ? "" : i + 1 == count ? " and " : ", ") + std::string(kWindowFlags[i]);
+    }
+    if (given)
+        throw UsageError(list + " are for the window: leave out --headless");
 }
 
 void addGuiOptions(CLI::App& app, GuiOptions& o)
@@ -54,19 +49,16 @@ void addGuiOptions(CLI::App& app, GuiOptions& o)
 
 WindowSize parseWindowSize(const std::string& text)
 {
-    WindowSize s;
-    char x = 0;
-    char rest = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &s.width, &x, &s.height, &rest) != 3 || x != 'x' || s.width < 1 ||
-        s.height < 1 || s.width > 16384 || s.height > 16384)
+    const auto s = parseSize(text);
+    if (!s || s->first < 1 || s->second < 1 || s->first > 16384 || s->second > 16384)
         throw UsageError(fmt::format("--window-size must be WxH, e.g. 1280x800 (got '{}')", text));
-    return s;
+    return {int(s->first), int(s->second)};
 }
 
 void checkGuiOutputPaths(const GuiOptions& o)
 {
-    checkPath(o.screenshot, "--screenshot", ".png");
-    checkPath(o.stateJson, "--state-json", ".json");
+    checkOutputPath(o.screenshot, "--screenshot", {".png"});
+    checkOutputPath(o.stateJson, "--state-json", {".json"});
     if (!o.screenshot.empty() && o.frames == 0)
         throw UsageError("--screenshot needs --frames N (the frame to save)");
 }

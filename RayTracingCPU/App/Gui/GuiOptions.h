@@ -19,8 +19,8 @@ struct GuiOptions
     bool noGpu = false;
     bool validation = false;
 
-    /// True when a flag that needs the window was given.
-    bool anyGiven(const CLI::App& app) const;
+    /// For --headless runs: throws UsageError, listing the window's flags, when one of them was given.
+    static void rejectIfGiven(const CLI::App& app);
 };
 
 void addGuiOptions(CLI::App& app, GuiOptions& options);

@@ -180,10 +180,7 @@ bool Session::saveImage(const std::filesystem::path& png)
     {
         if (png.extension() != ".png")
             throw UsageError(fmt::format("'{}' must end in .png (the .pfm goes beside it)", png.string()));
-        std::filesystem::path pfm = png;
-        pfm.replace_extension(".pfm");
-        writePng(png, m_preview->linear);
-        writePfm(pfm, m_preview->linear);
+        const std::filesystem::path pfm = writePngWithPfm(png, m_preview->linear);
         note(fmt::format("saved {} and {}", png.string(), pfm.filename().string()), false);
         return true;
     }

@@ -1,49 +1,40 @@
 #include "App/Gui/Actions.h"
 
-#include <charconv>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 #include <spdlog/fmt/fmt.h>
 
+#include "Cli/ValueParsing.h"
 #include "Error.h"
 
 namespace rt::gpu::gui
 {
 namespace
 {
-int toInt(const Action& a, int minimum)
+int toInt(const Action& a, const std::string& text, int minimum)
 {
-    int value = 0;
-    const auto [end, error] = std::from_chars(a.value.data(), a.value.data() + a.value.size(), value);
-    if (error != std::errc() || end != a.value.data() + a.value.size() || value < minimum)
-        throw UsageError(fmt::format("--actions: {}={}: expected an integer >= {}", a.name, a.value, minimum));
-    return value;
+    const auto value = parseInteger(text);
+    if (!value || *value < minimum || *value > std::numeric_limits<int>::max())
+        throw UsageError(fmt::format("--actions: {}={}: expected an integer >= {}", a.name, text, minimum));
+    return static_cast<int>(*value);
 }
+
+int toInt(const Action& a, int minimum) { return toInt(a, a.value, minimum); }
 
 float toFloat(const Action& a, const std::string& text, float minimum)
 {
-    std::size_t used = 0;
-    float value = 0.0f;
-    try
-    {
-        value = std::stof(text, &used);
-    }
-    catch (const std::exception&)
-    {
-        used = 0;
-    }
-    if (used == 0 || used != text.size() || !std::isfinite(value) || value < minimum)
+    const auto value = parseReal(text);
+    if (!value || !std::isfinite(*value) || *value < minimum)
         throw UsageError(fmt::format("--actions: {}={}: expected a number >= {}", a.name, a.value, minimum));
-    return value;
+    return *value;
 }
 
 bool toOnOff(const Action& a)
 {
-    if (a.value == "on")
-        return true;
-    if (a.value == "off")
-        return false;
+    if (const auto on = parseOnOff(a.value))
+        return *on;
     throw UsageError(fmt::format("--actions: {}={}: expected on or off", a.name, a.value));
 }
 
@@ -52,8 +43,7 @@ Extent toExtent(const Action& a)
     const std::size_t x = a.value.find('x');
     if (x == std::string::npos)
         throw UsageError(fmt::format("--actions: {}={}: expected WIDTHxHEIGHT", a.name, a.value));
-    const Action width{a.name, a.value.substr(0, x)}, height{a.name, a.value.substr(x + 1)};
-    return {toInt(width, 0), toInt(height, 0)};
+    return {toInt(a, a.value.substr(0, x), 0), toInt(a, a.value.substr(x + 1), 0)};
 }
 
 /// camera=forward|back|left|right|up|down:<units>, yaw|pitch:<degrees>, reset.

@@ -219,10 +219,7 @@ private:
                 throw UsageError("nothing to save: turn ray tracing on and let it accumulate");
             m_presenter.waitIdle();
             const Image image = m_renderer.readImage();
-            std::filesystem::path pfm = png;
-            pfm.replace_extension(".pfm");
-            writePng(png, image);
-            writePfm(pfm, image);
+            const std::filesystem::path pfm = writePngWithPfm(png, image);
             m_message = "saved " + png.string() + " and " + pfm.string() + " (" + std::to_string(m_accumulatedSpp) +
                         " spp)";
             spdlog::info("{}", m_message);
