@@ -13,7 +13,7 @@
 #include "Assets/ObjLoader.h"
 #include "Error.h"
 #include "Image/ImageIO.h"
-#include "ScratchDir.h"
+#include "Support/ScratchDir.h"
 
 namespace rt
 {

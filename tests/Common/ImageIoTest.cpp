@@ -16,7 +16,7 @@
 
 #include "Error.h"
 #include "Image/ImageIO.h"
-#include "ScratchDir.h"
+#include "Support/ScratchDir.h"
 
 namespace rt
 {

@@ -1,6 +1,5 @@
 #include "RenderTestSupport.h"
 
-#include <cmath>
 #include <cstring>
 
 namespace rt::test
@@ -24,23 +23,6 @@ RenderResult renderCpu(const Scene& scene, const RenderSettings& settings, Engin
     e.setScene(scene);
     RenderControl control;
     return e.render(settings, control);
-}
-
-MeanAndError pixelStatistics(const Image& image)
-{
-    const double n = double(image.pixelCount());
-    const auto value = [](const vec3& p) { return (double(p.x) + p.y + p.z) / 3.0; };
-    MeanAndError r;
-    for (const vec3& p : image.pixels())
-        r.mean += value(p);
-    r.mean /= n;
-    double squares = 0.0; // two passes: the one-pass formula cancels for nearly constant images
-    for (const vec3& p : image.pixels())
-        squares += (value(p) - r.mean) * (value(p) - r.mean);
-    const double variance = squares / (n - 1.0);
-    r.pixelStdDev = std::sqrt(variance);
-    r.standardError = std::sqrt(variance / n);
-    return r;
 }
 
 bool bitIdentical(const Image& a, const Image& b)

@@ -11,6 +11,7 @@
 
 #include "GpuTestEnvironment.h"
 #include "Support/AppProcess.h"
+#include "Support/ScratchDir.h"
 
 namespace rt::gpu::test
 {
@@ -23,7 +24,6 @@ AppRun runApp(const std::string& arguments, const std::string& environment = "")
     return ::rt::test::runApp(RT_GPU_APP, arguments, environment);
 }
 
-std::filesystem::path scratchDir() { return ::rt::test::scratchDir("rt_gpu_app_"); }
 
 TEST(GpuApp, HelpExplainsEveryFlag)
 {
@@ -99,7 +99,7 @@ TEST(GpuApp, NoVulkanLoaderIsOneLineDeviceError)
 TEST(GpuApp, NoRayTracingDeviceListsWhatEachLacks)
 {
     RT_REQUIRE_GPU(); // a device exists; the layer takes its ray tracing away
-    const auto dir = scratchDir();
+    const ::rt::test::ScratchDir dir;
     const AppRun r = runApp("--headless --scene rtnw-quads --width 8 --spp 1 --quiet --output '" +
                                 (dir / "out.png").string() + "'",
                             "VK_LAYER_PATH='" RT_HIDE_RAY_TRACING_LAYER_DIR "' VK_INSTANCE_LAYERS=VK_LAYER_RT_hide_ray_tracing");
@@ -117,7 +117,7 @@ TEST(GpuApp, NoRayTracingDeviceListsWhatEachLacks)
 TEST(GpuApp, AbsurdSizeNamesTheLimitAndWritesNothing)
 {
     RT_REQUIRE_GPU();
-    const auto dir = scratchDir();
+    const ::rt::test::ScratchDir dir;
     const AppRun r = runApp("--headless --scene rtnw-quads --width 60000 --aspect 1 --spp 1 --quiet --output '" +
                          (dir / "huge.png").string() + "'");
     EXPECT_EQ(r.status, 5) << r.output;
@@ -134,7 +134,7 @@ TEST(GpuApp, AbsurdSizeNamesTheLimitAndWritesNothing)
 TEST(GpuApp, HeadlessRenderWritesImageHdrAndStats)
 {
     RT_REQUIRE_GPU();
-    const auto dir = scratchDir();
+    const ::rt::test::ScratchDir dir;
     const AppRun r = runApp("--headless --scene rtnw-cornell-box --width 24 --spp 2 --depth 6 --validation --quiet "
                          "--output '" + (dir / "out.png").string() + "' --hdr '" + (dir / "out.pfm").string() +
                          "' --stats '" + (dir / "stats.json").string() + "'");

@@ -1,6 +1,5 @@
 #include "GpuTestEnvironment.h"
 
-#include <cmath>
 #include <memory>
 
 #include "Error.h"
@@ -45,20 +44,4 @@ RenderResult renderOnGpu(const Scene& scene, const RenderSettings& settings)
     return engine.render(settings, control);
 }
 
-MeanAndError pixelStatistics(const Image& image, int channel)
-{
-    const auto n = static_cast<double>(image.pixelCount());
-    double sum = 0.0;
-    double sumSquares = 0.0;
-    for (const vec3& p : image.pixels())
-    {
-        sum += p[channel];
-        sumSquares += double(p[channel]) * p[channel];
-    }
-    MeanAndError m;
-    m.mean = sum / n;
-    const double variance = std::max(0.0, (sumSquares - n * m.mean * m.mean) / (n - 1.0));
-    m.standardError = std::sqrt(variance / n);
-    return m;
-}
 } // namespace rt::gpu::test

@@ -9,6 +9,7 @@
 
 #include "Engine/GpuEngine.h"
 #include "Image/Image.h"
+#include "Support/PixelStatistics.h"
 
 namespace rt::gpu::test
 {
@@ -19,14 +20,8 @@ const std::string& engineError();
 /// Renders `scene` with `settings` on the shared engine (setScene first).
 RenderResult renderOnGpu(const Scene& scene, const RenderSettings& settings);
 
-/// Mean and standard error of the mean of one channel of `image` over its pixels, treating pixels as
-/// independent samples (valid when every pixel has the same expectation, as in the furnace).
-struct MeanAndError
-{
-    double mean = 0.0;
-    double standardError = 0.0;
-};
-MeanAndError pixelStatistics(const Image& image, int channel);
+using ::rt::test::MeanAndError;
+using ::rt::test::pixelStatistics;
 } // namespace rt::gpu::test
 
 #define RT_REQUIRE_GPU()                                                                                       \

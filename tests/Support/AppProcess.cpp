@@ -2,8 +2,6 @@
 
 #include <cstdio>
 
-#include <gtest/gtest.h>
-
 #ifndef _WIN32
 #include <sys/wait.h>
 #endif
@@ -26,14 +24,5 @@ AppRun runApp([[maybe_unused]] const std::string& app, [[maybe_unused]] const st
     run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 #endif
     return run;
-}
-
-std::filesystem::path scratchDir(const std::string& prefix)
-{
-    const auto dir = std::filesystem::temp_directory_path() /
-                     (prefix + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
 }
 } // namespace rt::test

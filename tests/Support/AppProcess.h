@@ -2,7 +2,6 @@
 // POSIX only (popen, the exit status macros); the callers are compiled out on Windows.
 #pragma once
 
-#include <filesystem>
 #include <string>
 
 namespace rt::test
@@ -15,7 +14,4 @@ struct AppRun
 
 /// Runs `'app' arguments 2>&1` through the shell, with `environment` ("NAME=value ...") before it.
 AppRun runApp(const std::string& app, const std::string& arguments, const std::string& environment = "");
-
-/// A fresh, empty folder under the temporary directory named `prefix` + the running gtest's test name.
-std::filesystem::path scratchDir(const std::string& prefix);
 } // namespace rt::test

@@ -16,6 +16,7 @@
 
 #include "Image/ImageIO.h"
 #include "Support/AppProcess.h"
+#include "Support/ScratchDir.h"
 
 namespace rt::gpu::gui::test
 {
@@ -28,7 +29,6 @@ AppRun runApp(const std::string& arguments, const std::string& environment = "")
     return ::rt::test::runApp(RT_GPU_APP, arguments, environment);
 }
 
-std::filesystem::path scratchDir() { return ::rt::test::scratchDir("rt_gui_gpu_"); }
 
 /// Copies `file` to $RT_GUI_KEEP, when set, under the test's name.
 void keep(const std::filesystem::path& file)
@@ -138,7 +138,7 @@ void expectPanel(const Screenshot& s)
 
 TEST(GpuWindow, ScreenshotShowsPanelAndRayTracedImage)
 {
-    const auto dir = scratchDir();
+    const ::rt::test::ScratchDir dir;
     RT_RUN_WINDOW(run, std::string(kWindow) + "--scene cornell-box-lights --frames 8 --screenshot '" +
                            (dir / "shot.png").string() + "'");
     const Screenshot s(dir / "shot.png");
@@ -155,7 +155,7 @@ TEST(GpuWindow, ScreenshotShowsPanelAndRayTracedImage)
 
 TEST(GpuWindow, RasterPreviewShowsTheSameSceneFromTheSameCamera)
 {
-    const auto dir = scratchDir();
+    const ::rt::test::ScratchDir dir;
     RT_RUN_WINDOW(run, std::string(kWindow) + "--scene cornell-box-lights --raytracing off --frames 2 --screenshot '" +
                            (dir / "preview.png").string() + "'");
     const Screenshot s(dir / "preview.png");
@@ -169,7 +169,7 @@ TEST(GpuWindow, RasterPreviewShowsTheSameSceneFromTheSameCamera)
 
 TEST(GpuWindow, HeatmapShowsCostPerPixel)
 {
-    const auto dir = scratchDir();
+    const ::rt::test::ScratchDir dir;
     RT_RUN_WINDOW(run, std::string(kWindow) + "--scene cornell-box-lights --heatmap on --frames 4 --screenshot '" +
                            (dir / "heatmap.png").string() + "'");
     if (run.output.find("no VK_KHR_shader_clock") != std::string::npos)
@@ -186,7 +186,7 @@ TEST(GpuWindow, AccumulatedImageMatchesTheSettingsShown)
 {
     // Scene switch and depth change while accumulating; then the window's image must be the headless render of
     // the settings it shows, sample for sample (same device, same streams: bit for bit here).
-    const auto dir = scratchDir();
+    const ::rt::test::ScratchDir dir;
     RT_RUN_WINDOW(run, "--width 320 --aspect 1.6 --validation --scene cornell-box-lights --spp 4 --seed 7 --frames 1 "
                        "--actions 'wait=2;scene=rtnw-quads;wait=1;depth=5;wait=8;save=" +
                            (dir / "window.png").string() + "'");
@@ -207,7 +207,7 @@ TEST(GpuWindow, AccumulatedImageMatchesTheSettingsShown)
 
 TEST(GpuWindow, CameraMoveRestartsAccumulation)
 {
-    const auto dir = scratchDir();
+    const ::rt::test::ScratchDir dir;
     RT_RUN_WINDOW(run, "--width 320 --aspect 1.6 --validation --scene cornell-box-lights --frames 1 --actions "
                        "'wait=6;save=" + (dir / "before.png").string() + ";camera=forward:100;save=" +
                            (dir / "after.png").string() + "'");
@@ -228,7 +228,7 @@ TEST(GpuWindow, StressSwitchesResizesAndMinimisesWithoutValidationMessages)
     const std::string scenes = "scene=rtnw-quads;scene=cornell-box-lights;scene=rtow-default;scene=rtnw-earth;"
                                "scene=rtnw-cornell-smoke;scene=rtnw-simple-light;scene=rtrol-cornell-glass;"
                                "scene=rtnw-perlin-spheres;scene=rtnw-motion-blur;scene=cube-and-spheres;";
-    const auto dir = scratchDir();
+    const ::rt::test::ScratchDir dir;
     RT_RUN_WINDOW(run, "--width 320 --aspect 1.6 --validation --scene rtnw-quads --frames 3 --screenshot '" +
                            (dir / "stress.png").string() + "' --actions '" + scenes + scenes +
                            "depth=7;wait=2;depth=3;samples=2;resize=0x0;wait=3;resize=480x300;wait=2;"

@@ -18,7 +18,7 @@ public:
     ScratchDir()
     {
         const testing::TestInfo* info = testing::UnitTest::GetInstance()->current_test_info();
-        const std::string name = std::string("rt_common_tests-") + std::to_string(::getpid()) + "-" +
+        const std::string name = std::string("rt_tests-") + std::to_string(::getpid()) + "-" +
                                  (info ? std::string(info->test_suite_name()) + "." + info->name() : "global");
         m_path = std::filesystem::temp_directory_path() / name;
         std::filesystem::remove_all(m_path);
