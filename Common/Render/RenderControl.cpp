@@ -30,6 +30,16 @@ double RenderControl::elapsedSeconds() const
     return start == 0 ? 0.0 : static_cast<double>(nowNs() - start) * 1e-9;
 }
 
+bool RenderControl::previewDue()
+{
+    const std::int64_t now = nowNs();
+    const std::int64_t last = m_lastPreviewNs.load();
+    if (last >= 0 && now - last < m_previewIntervalNs.load())
+        return false;
+    m_lastPreviewNs.store(now);
+    return true;
+}
+
 double RenderControl::etaSeconds() const
 {
     const double f = fraction();

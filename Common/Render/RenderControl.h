@@ -1,5 +1,6 @@
 // Shared between a running render and whoever watches it (the headless progress line, the GUI): a cancel
-// flag the engine polls between units of work, and a count of finished units for progress and ETA.
+// flag the engine polls between units of work, a count of finished units for progress and ETA, and how often
+// the watcher wants a preview.
 #pragma once
 
 #include <atomic>
@@ -26,10 +27,19 @@ public:
     /// Remaining seconds extrapolated from the rate so far; negative while unknown.
     double etaSeconds() const;
 
+    /// At most one preview per `interval` (default 0: one after every unit of work). Set before the render.
+    void setPreviewInterval(std::chrono::nanoseconds interval) { m_previewIntervalNs.store(interval.count()); }
+    /// Asked by the engine before it builds a preview (an estimate image, a read-back from the device), so
+    /// previews the watcher would drop cost nothing. True the first time and once `interval` has passed since
+    /// the last true; a true counts as the preview taken.
+    bool previewDue();
+
 private:
     std::atomic<bool> m_cancel{false};
     std::atomic<std::uint64_t> m_done{0};
     std::atomic<std::uint64_t> m_total{0};
     std::atomic<std::int64_t> m_startNs{0};
+    std::atomic<std::int64_t> m_previewIntervalNs{0};
+    std::atomic<std::int64_t> m_lastPreviewNs{-1}; // -1: none yet
 };
 } // namespace rt

@@ -155,7 +155,7 @@ RenderResult CpuEngine::render(const RenderSettings& settings, RenderControl& co
         for (std::size_t i = 0; i < sum.pixelCount(); ++i)
             sum.data()[i] += pass.data()[i];
         ++passesDone;
-        if (preview && accumulate)
+        if (preview && accumulate && control.previewDue())
         {
             Image estimate(width, height);
             const float scale = 1.0f / float(passesDone * samplesPerPass);
@@ -172,7 +172,7 @@ RenderResult CpuEngine::render(const RenderSettings& settings, RenderControl& co
     if (samplesTaken > 0)
         for (vec3& v : result.image.pixels())
             v /= float(samplesTaken);
-    if (preview && !accumulate)
+    if (preview && !accumulate && control.previewDue())
         preview(result.image, samplesTaken);
 
     RenderStats& st = result.stats;

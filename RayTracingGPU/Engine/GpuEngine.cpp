@@ -188,6 +188,7 @@ RenderResult GpuEngine::render(const RenderSettings& settings, RenderControl& co
     double gpuSeconds = 0.0;
     bool timed = true;
     const Clock::time_point renderStart = Clock::now();
+    bool readBack = false; // the last dispatch copied the image to the host (for a preview)
     for (std::uint32_t d = 0; d < plan.dispatchCount; ++d)
     {
         if (control.cancelRequested())
@@ -196,16 +197,17 @@ RenderResult GpuEngine::render(const RenderSettings& settings, RenderControl& co
             break;
         }
         const std::uint32_t samples = plan.samplesIn(d, totalSamples);
-        const double seconds = e.dispatch(samplesDone, samples, static_cast<bool>(preview));
+        readBack = preview && control.previewDue();
+        const double seconds = e.dispatch(samplesDone, samples, readBack);
         timed = timed && seconds >= 0.0;
         gpuSeconds += seconds;
         samplesDone += samples;
         control.advance();
-        if (preview)
+        if (readBack)
             preview(e.target->readEstimate(samplesDone), static_cast<int>(samplesDone));
     }
     stats.renderSeconds = secondsSince(renderStart);
-    if (!preview || samplesDone == 0)
+    if (!readBack)
         e.readback();
     result.image = e.target->readEstimate(samplesDone);
 

@@ -11,10 +11,8 @@ namespace rt::gui
 {
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
 // Previews faster than the window redraws are wasted work on the render thread, and that time is inside
-// the render time the timings table reports.
+// the render time the timings table reports: the engines build none more often (RenderControl::previewDue).
 constexpr auto kPreviewInterval = std::chrono::milliseconds(50);
 
 /// The mean of two independent estimates, weighted by their samples per pixel (loop rendering).
@@ -166,12 +164,11 @@ void RenderJob::run(const RenderRequest& request, std::shared_ptr<RenderControl>
             RenderSettings settings = request.image.renderSettings();
             settings.seed += static_cast<std::uint32_t>(iteration); // independent streams, wrapping is fine
             setPhase(JobPhase::Rendering, iteration);
-            Clock::time_point lastPreview{};
+            control->setPreviewInterval(kPreviewInterval);
             const RenderResult result =
                 engine->render(settings, *control, [&](const Image& estimate, int samples) {
-                    if (samples <= 0 || Clock::now() - lastPreview < kPreviewInterval)
+                    if (samples <= 0)
                         return;
-                    lastPreview = Clock::now();
                     publish(request, combine(mean, meanSamples, estimate, samples), meanSamples + samples, false);
                 });
             if (result.stats.cancelled)
