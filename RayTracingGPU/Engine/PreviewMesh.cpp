@@ -84,6 +84,13 @@ vec4 previewColor(const Scene& scene, std::uint32_t material)
 
 PreviewGeometry buildPreviewGeometry(const Scene& scene)
 {
+    // One colour per material, computed once: an image texture's mean reads every texel.
+    std::vector<vec4> colors;
+    colors.reserve(scene.materials.size());
+    for (std::uint32_t material = 0; material < scene.materials.size(); ++material)
+        colors.push_back(previewColor(scene, material));
+    const auto colorOf = [&](std::uint32_t material) { return colors.at(material); };
+
     PreviewGeometry g;
     for (const InstanceDesc& instance : scene.instances)
     {
@@ -92,7 +99,7 @@ PreviewGeometry buildPreviewGeometry(const Scene& scene)
         // Scene::validate allows spheres only under similarity transforms.
         const float scale = m.uniformScale().value_or(1.0f);
         for (const QuadDesc& q : group.quads)
-            addQuad(g.triangles, m, q.q, q.u, q.v, previewColor(scene, q.material));
+            addQuad(g.triangles, m, q.q, q.u, q.v, colorOf(q.material));
         for (const MeshRef& ref : group.meshes)
         {
             const MeshData& mesh = scene.meshes.at(ref.mesh);
@@ -101,14 +108,14 @@ PreviewGeometry buildPreviewGeometry(const Scene& scene)
                 const std::uint32_t material = mesh.triangleMaterials.empty() ? ref.material : mesh.triangleMaterials[t];
                 addTriangle(g.triangles, m.point(mesh.positions[mesh.indices[3 * t]]),
                             m.point(mesh.positions[mesh.indices[3 * t + 1]]),
-                            m.point(mesh.positions[mesh.indices[3 * t + 2]]), previewColor(scene, material));
+                            m.point(mesh.positions[mesh.indices[3 * t + 2]]), colorOf(material));
             }
         }
         for (const SphereDesc& s : group.spheres)
-            g.spheres.push_back({vec4(m.point(s.centerAt(0.5f)), s.radius * scale), previewColor(scene, s.material)});
+            g.spheres.push_back({vec4(m.point(s.centerAt(0.5f)), s.radius * scale), colorOf(s.material)});
         for (const MediumDesc& medium : group.media)
         {
-            const vec4 color = previewColor(scene, medium.phaseMaterial);
+            const vec4 color = colorOf(medium.phaseMaterial);
             if (medium.boundary == MediumDesc::Boundary::Sphere)
                 g.spheres.push_back({vec4(m.point(medium.center), medium.radius * scale), color});
             else

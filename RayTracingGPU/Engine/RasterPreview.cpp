@@ -7,8 +7,6 @@
 
 #include "Engine/PreviewMesh.h"
 #include "Shared/HostDevice.h"
-#include "Vulkan/Barriers.h"
-#include "Vulkan/CommandBuffer.h"
 #include "Vulkan/GraphicsPipeline.h"
 #include "Vulkan/UploadBatch.h"
 
@@ -78,20 +76,18 @@ RasterPreview::RasterPreview(const vk::Device& device, const std::filesystem::pa
 void RasterPreview::setScene(const Scene& scene, const vk::CommandPool& pool)
 {
     const PreviewGeometry geometry = buildPreviewGeometry(scene);
-    const std::vector<PreviewVertex> sphere = unitSphereMesh(kSphereSlices, kSphereStacks);
-    const std::vector<PreviewInstance> identity{{vec4(0.0f, 0.0f, 0.0f, 1.0f), vec4(1.0f)}};
     vk::UploadBatch batch(*m_device);
-    m_sphereMesh = vertexBuffer(batch, sphere);
-    m_identity = vertexBuffer(batch, identity);
+    if (m_sphereMesh.Handle() == VK_NULL_HANDLE) // the same for every scene: uploaded with the first
+    {
+        const std::vector<PreviewVertex> sphere = unitSphereMesh(kSphereSlices, kSphereStacks);
+        const std::vector<PreviewInstance> identity{{vec4(0.0f, 0.0f, 0.0f, 1.0f), vec4(1.0f)}};
+        m_sphereMesh = vertexBuffer(batch, sphere);
+        m_identity = vertexBuffer(batch, identity);
+        m_sphereMeshVertices = static_cast<std::uint32_t>(sphere.size());
+    }
     m_triangles = vertexBuffer(batch, geometry.triangles);
     m_spheres = vertexBuffer(batch, geometry.spheres);
-    batch.submit(pool);
-    // The batch's copies are made visible to shaders and builds; the vertex stage needs its own barrier.
-    vk::submitAndWait(*m_device, pool, [](VkCommandBuffer cmd) {
-        vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                          VK_PIPELINE_STAGE_VERTEX_INPUT_BIT, VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT);
-    });
-    m_sphereMeshVertices = static_cast<std::uint32_t>(sphere.size());
+    batch.submit(pool, VK_PIPELINE_STAGE_VERTEX_INPUT_BIT, VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT);
     m_triangleVertices = static_cast<std::uint32_t>(geometry.triangles.size());
     m_sphereCount = static_cast<std::uint32_t>(geometry.spheres.size());
     m_bounds = scene.bounds();

@@ -28,7 +28,7 @@ void UploadBatch::image(const Image& image, const void* texels, VkDeviceSize siz
     m_imageCopies.push_back({stage(texels, size).Handle(), image.Handle(), image.extent()});
 }
 
-void UploadBatch::submit(const CommandPool& pool)
+void UploadBatch::submit(const CommandPool& pool, VkPipelineStageFlags readers, VkAccessFlags readAccess)
 {
     if (m_bufferCopies.empty() && m_imageCopies.empty())
         return;
@@ -52,10 +52,7 @@ void UploadBatch::submit(const CommandPool& pool)
                           VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                           VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT});
         }
-        // Buffers feed acceleration-structure builds and shaders.
-        memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR | VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR);
+        memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, readers, readAccess);
     });
     m_staging.clear();
     m_bufferCopies.clear();

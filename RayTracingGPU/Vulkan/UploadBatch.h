@@ -31,7 +31,12 @@ public:
     void image(const Image& image, const void* texels, VkDeviceSize size);
 
     /// Records every copy into one command buffer, submits it and waits; the staging memory is released.
-    void submit(const CommandPool& pool);
+    /// The buffers are made visible to `readers` / `readAccess` (default: the ray-tracing shaders and
+    /// acceleration-structure builds).
+    void submit(const CommandPool& pool,
+                VkPipelineStageFlags readers = VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR |
+                                               VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                VkAccessFlags readAccess = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR);
 
 private:
     struct BufferCopy
