@@ -12,7 +12,7 @@ namespace rt::gpu
 {
 namespace
 {
-VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) { return (value + alignment - 1) / alignment * alignment; }
+using vk::alignUp;
 
 /// The geometries and ranges of one BLAS; the build info points into `geometries`, so this does not move.
 struct BlasInput

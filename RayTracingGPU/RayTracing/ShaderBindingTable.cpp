@@ -7,10 +7,7 @@
 
 namespace rt::gpu
 {
-namespace
-{
-VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) { return (value + alignment - 1) / alignment * alignment; }
-} // namespace
+using vk::alignUp;
 
 SbtLayout computeSbtLayout(std::uint32_t handleSize, std::uint32_t handleAlignment, std::uint32_t baseAlignment,
                            std::uint32_t missCount, std::uint32_t hitCount)

@@ -7,6 +7,12 @@
 
 namespace rt::vk
 {
+/// `value` rounded up to a multiple of `alignment` (> 0): offsets and device addresses Vulkan wants aligned.
+inline VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment)
+{
+    return (value + alignment - 1) / alignment * alignment;
+}
+
 class Buffer final
 {
 public:

@@ -34,7 +34,7 @@ std::vector<std::string> extensionNames(VkPhysicalDevice device)
     return names;
 }
 
-DeviceFeatures queryFeatures(VkPhysicalDevice device, std::uint32_t apiVersion)
+DeviceFeatures queryFeatures(VkPhysicalDevice device, std::uint32_t apiVersion, const std::vector<std::string>& extensions)
 {
     DeviceFeatures f;
     // Vulkan12Features may only be chained on a 1.2 device; an older one lacks everything anyway.
@@ -44,7 +44,6 @@ DeviceFeatures queryFeatures(VkPhysicalDevice device, std::uint32_t apiVersion)
     VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
     VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
     VkPhysicalDeviceShaderClockFeaturesKHR clock{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_CLOCK_FEATURES_KHR};
-    const std::vector<std::string> extensions = extensionNames(device);
     const auto has = [&](const char* name) {
         return std::find(extensions.begin(), extensions.end(), name) != extensions.end();
     };
@@ -134,7 +133,7 @@ std::vector<PhysicalDevice> enumeratePhysicalDevices(VkInstance instance, VkSurf
         d.candidate.type = toDeviceType(properties.deviceType);
         d.candidate.apiVersion = properties.apiVersion;
         d.candidate.extensions = extensionNames(handles[i]);
-        d.candidate.features = queryFeatures(handles[i], properties.apiVersion);
+        d.candidate.features = queryFeatures(handles[i], properties.apiVersion, d.candidate.extensions);
         const QueueChoice queue = pickQueueFamily(handles[i], surface);
         d.candidate.computeQueue = queue.family.has_value();
         d.candidate.presentQueue = queue.presents;
