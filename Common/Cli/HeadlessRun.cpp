@@ -161,26 +161,8 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderSettings& 
     return 0;
 }
 
-void requireBuildCpuFeatures()
-{
-#if defined(__AVX2__) && defined(__GNUC__)
-    // Built for x86-64-v3: on an older CPU the first AVX2 instruction would kill the process with SIGILL.
-    if (!__builtin_cpu_supports("avx2"))
-        throw Error("this build needs a CPU with AVX2 (x86-64-v3); rebuild with -DRT_X86_LEVEL=x86-64-v2");
-#endif
-}
-
 int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>& body)
 {
-    try
-    {
-        requireBuildCpuFeatures();
-    }
-    catch (const Error& e)
-    {
-        std::fprintf(stderr, "error: %s\n", e.what());
-        return e.exitCode();
-    }
     try
     {
         app.parse(argc, argv);

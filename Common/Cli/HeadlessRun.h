@@ -22,10 +22,7 @@ void checkOutputPaths(const CommonOptions& options);
 /// (nothing is written then). Throws rt::Error for failures.
 int runHeadless(RenderEngine& engine, const Scene& scene, const RenderSettings& settings, const CommonOptions& options);
 
-/// Throws rt::Error if the CPU lacks an instruction set the build was compiled for (AVX2 for x86-64-v3).
-void requireBuildCpuFeatures();
-
-/// Checks requireBuildCpuFeatures, parses the command line, then runs `body`, turning every rt::Error and CLI11 parse error into one "error: ..." line on stderr and the
-/// error's exit status. `--help` prints the help and returns 0.
+/// Parses the command line, then runs `body`, turning every rt::Error and CLI11 parse error into one
+/// "error: ..." line on stderr and the error's exit status. `--help` prints the help and returns 0.
 int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>& body);
 } // namespace rt
