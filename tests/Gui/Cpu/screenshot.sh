@@ -6,6 +6,7 @@
 set -eu
 app=$1
 here=$(cd "$(dirname "$0")" && pwd)
+. "$here/common.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -20,5 +21,5 @@ python3 "$here/window_checks.py" settled "$work/dark.json"
     --screenshot "$work/light.png" --state-json "$work/light.json"
 python3 "$here/window_checks.py" screenshot "$work/light.png" "$work/light.json" "$work/light-render.png" 900 640
 python3 "$here/window_checks.py" settled "$work/light.json"
-if [ -n "${RT_GUI_KEEP:-}" ]; then cp "$work"/*.png "$RT_GUI_KEEP"/; fi
+keep_pngs "$work"
 echo "screenshot ok"

@@ -8,6 +8,7 @@
 set -eu
 app=$1
 here=$(cd "$(dirname "$0")" && pwd)
+. "$here/common.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -26,12 +27,7 @@ actions+="engine=single;sampling=accumulation;spp=30;width=72;render;running;dep
 status=0
 "$app" --validation --scene rtrol-cornell-box --width 48 --spp 2 --actions "$actions" --frames 2 \
     --screenshot "$work/stress.png" --state-json "$work/stress.json" 2>"$work/stress.err" || status=$?
-if [ "$status" -ne 0 ]; then
-    tail -20 "$work/stress.err"; echo "FAIL: exit status $status"; exit 1
-fi
-if grep -q "Vulkan validation" "$work/stress.err"; then
-    grep "Vulkan validation" "$work/stress.err" | head; echo "FAIL: the validation layer reported something"; exit 1
-fi
+check_run stress "$status" "$work/stress.err"
 python3 "$here/window_checks.py" settled "$work/stress.json"
 [ "$(identify -format '%w %h' "$work/stress.png")" = "1040 680" ] || { echo "FAIL: screenshot is not 1040x680"; exit 1; }
 
@@ -39,5 +35,5 @@ python3 "$here/window_checks.py" settled "$work/stress.json"
 read -r -a flags <<<"$(python3 "$here/window_checks.py" headless-args "$work/stress.json")"
 "$app" --headless --quiet "${flags[@]}" --hdr "$work/headless.pfm" >/dev/null
 cmp -s "$work/final.pfm" "$work/headless.pfm" || { echo "FAIL: the window's image differs from a headless render of ${flags[*]}"; exit 1; }
-if [ -n "${RT_GUI_KEEP:-}" ]; then cp "$work"/*.png "$RT_GUI_KEEP"/; fi
+keep_pngs "$work"
 echo "stress ok: the window's image equals the headless render of ${flags[*]}"

@@ -6,6 +6,7 @@
 set -eu
 app=$1
 here=$(cd "$(dirname "$0")" && pwd)
+. "$here/common.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 clicks="engine=single;render;wait;engine=multi;render;wait;engine=gpu;render;wait"
@@ -17,24 +18,19 @@ run() { # name, VAR=value... for the environment
     env "$@" "$app" --validation --window-size 1000x640 --scene rtrol-cornell-box --width 64 --spp 4 --depth 8 \
         --actions "$clicks" --frames 2 --screenshot "$work/$name.png" --state-json "$work/$name.json" \
         2>"$work/$name.err" || status=$?
-    if [ "$status" -ne 0 ]; then
-        cat "$work/$name.err"; echo "FAIL: $name exited with status $status"; exit 1
-    fi
-    if grep -q "Vulkan validation" "$work/$name.err"; then
-        cat "$work/$name.err"; echo "FAIL: $name: the validation layer reported something"; exit 1
-    fi
+    check_run "$name" "$status" "$work/$name.err"
 }
 
 run no-driver VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json
 python3 "$here/window_checks.py" timings "$work/no-driver.json" no-gpu
 
 run device
-if python3 -c "import json,sys; sys.exit(json.load(open(sys.argv[1]))['gpu']['state'] != 'ready')" "$work/device.json"; then
+if python3 "$here/window_checks.py" gpu-ready "$work/device.json"; then
     python3 "$here/window_checks.py" timings "$work/device.json" gpu
 else
     echo "no Vulkan ray-tracing device here: checking the unavailable case only"
     python3 "$here/window_checks.py" timings "$work/device.json" no-gpu
 fi
 python3 "$here/window_checks.py" settled "$work/device.json"
-if [ -n "${RT_GUI_KEEP:-}" ]; then cp "$work"/*.png "$RT_GUI_KEEP"/; fi
+keep_pngs "$work"
 echo "three clicks ok"

@@ -121,9 +121,15 @@ def headless_args(state_path):
     print(" ".join(str(a) for a in args))
 
 
+def gpu_ready(state_path):
+    """Exit status 0 when the window's GPU engine started (a ray-tracing device exists), 1 when not."""
+    sys.exit(0 if json.load(open(state_path))["gpu"]["state"] == "ready" else 1)
+
+
 if __name__ == "__main__":
     command, *rest = sys.argv[1:]
     {"screenshot": lambda: screenshot(rest[0], rest[1], rest[2], rest[3], rest[4]),
      "timings": lambda: timings(rest[0], rest[1]),
      "settled": lambda: settled(rest[0]),
-     "headless-args": lambda: headless_args(rest[0])}[command]()
+     "headless-args": lambda: headless_args(rest[0]),
+     "gpu-ready": lambda: gpu_ready(rest[0])}[command]()
