@@ -8,6 +8,7 @@
 
 #include "Engine/CpuEngine.h"
 #include "Scenes/Catalogue.h"
+#include "Support/SmallSettings.h"
 
 namespace
 {
@@ -67,13 +68,7 @@ BENCHMARK(WhiteSpheres)->Arg(100)->Arg(1000)->Arg(5000)->Arg(10000)->Arg(20000)-
 void Catalogue(benchmark::State& state, const std::string& id)
 {
     const Scene scene = makeScene(id);
-    RenderSettings s;
-    s.width = 100;
-    s.aspect = scene.defaults.aspect;
-    s.spp = 8;
-    s.depth = 50;
-    s.unidirectionalLight = scene.defaults.unidirectionalLight;
-    renderBenchmark(state, scene, s, EngineKind::Multi);
+    renderBenchmark(state, scene, test::settingsFor(scene, 100, 8, 50), EngineKind::Multi);
 }
 
 const bool registered = [] {

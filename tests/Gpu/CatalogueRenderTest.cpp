@@ -6,6 +6,7 @@
 #include "GpuTestEnvironment.h"
 #include "Scenes/Catalogue.h"
 #include "Support/CatalogueCases.h"
+#include "Support/SmallSettings.h"
 
 namespace rt::gpu::test
 {
@@ -23,13 +24,7 @@ TEST_P(GpuCatalogue, RendersFiniteWithoutValidationMessages)
     const std::uint64_t messagesBefore = engine.validationMessages();
 
     const Scene scene = makeScene(GetParam());
-    RenderSettings s;
-    s.width = 32;
-    s.aspect = scene.defaults.aspect;
-    s.spp = 4;
-    s.depth = 8;
-    s.unidirectionalLight = scene.defaults.unidirectionalLight;
-    const RenderResult r = renderOnGpu(scene, s);
+    const RenderResult r = renderOnGpu(scene, ::rt::test::settingsFor(scene, 32, 4, 8));
 
     EXPECT_EQ(r.stats.nanSamples, 0u);
     EXPECT_EQ(r.stats.infSamples, 0u);

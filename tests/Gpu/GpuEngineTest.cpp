@@ -8,6 +8,7 @@
 #include "Scene/SceneBuilder.h"
 #include "GpuTestEnvironment.h"
 #include "Scenes/Catalogue.h"
+#include "Support/SmallSettings.h"
 
 namespace rt::gpu::test
 {
@@ -32,13 +33,7 @@ protected:
 
     static RenderSettings small(const Scene& scene, int width, int spp, int depth)
     {
-        RenderSettings s;
-        s.width = width;
-        s.aspect = scene.defaults.aspect;
-        s.spp = spp;
-        s.depth = depth;
-        s.unidirectionalLight = scene.defaults.unidirectionalLight;
-        return s;
+        return ::rt::test::settingsFor(scene, width, spp, depth);
     }
 
 private:
