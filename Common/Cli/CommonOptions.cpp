@@ -20,13 +20,13 @@ bool onOffFlag(const std::string& flag, const std::string& value)
 }
 } // namespace
 
-SceneOptions CommonOptions::sceneOptions() const
+SceneRef CommonOptions::sceneRef() const
 {
-    SceneOptions o;
-    o.count = count;
+    SceneRef ref{.id = scene};
+    ref.options.count = count;
     if (!mesh.empty())
-        o.meshPath = mesh;
-    return o;
+        ref.options.meshPath = mesh;
+    return ref;
 }
 
 void addCommonOptions(CLI::App& app, CommonOptions& o)
@@ -35,7 +35,7 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
     app.add_flag("--list-scenes", o.listScenes, "Print the scene ids with their titles and exit");
     app.add_option("--scene", o.scene, "Scene id (see --list-scenes)")->capture_default_str();
     app.add_option("--spp", o.spp, "Samples per pixel (default: the scene's)");
-    app.add_option("--depth", o.depth, "Maximum scattering events per path (default: the scene's, usually 50)");
+    app.add_option("--depth", o.depth, "Ray segments per path at most, the camera ray included: 1 sees only the emitters (default: the scene's, usually 50)");
     app.add_option("--width", o.width, "Image width in pixels (default: the scene's)");
     app.add_option("--aspect", o.aspect, "Aspect ratio width/height, e.g. 1 or 1.7778 (default: the scene's)");
     app.add_option("--sampling", o.sampling,
@@ -58,24 +58,32 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
     app.add_flag("--quiet", o.quiet, "No progress line");
 }
 
-RenderSettings resolveSettings(const CommonOptions& o, const Scene& scene)
+RenderRequest resolveRequest(const CommonOptions& o, const Scene& scene)
 {
-    RenderSettings s;
-    s.spp = o.spp.value_or(scene.defaults.spp);
-    s.depth = o.depth.value_or(scene.defaults.depth);
-    s.width = o.width.value_or(scene.defaults.width);
-    s.aspect = o.aspect.value_or(scene.defaults.aspect);
+    RenderRequest request = defaultRequest(o.sceneRef(), scene);
+    RenderSettings& s = request.settings;
+    s.spp = o.spp.value_or(s.spp);
+    s.depth = o.depth.value_or(s.depth);
+    s.width = o.width.value_or(s.width);
+    s.aspect = o.aspect.value_or(s.aspect);
     const auto sampling = parsePixelSampling(o.sampling);
     if (!sampling)
         throw UsageError(
             fmt::format("--sampling must be random, stratified or accumulate (got '{}')", o.sampling));
     s.sampling = *sampling;
     s.estimator = onOffFlag("--pdf", o.pdf) ? Estimator::Mixture : Estimator::BsdfOnly;
-    s.unidirectionalLight = o.unidirectionalLight ? onOffFlag("--unidirectional-light", *o.unidirectionalLight)
-                                                  : scene.defaults.unidirectionalLight;
+    if (o.unidirectionalLight)
+        s.unidirectionalLight = onOffFlag("--unidirectional-light", *o.unidirectionalLight);
     s.seed = o.seed;
     s.validate();
-    return s;
+    return request;
+}
+
+CommandLineRender resolveCommandLine(const CommonOptions& options)
+{
+    CommandLineRender r{.scene = buildScene(options.sceneRef())};
+    r.request = resolveRequest(options, r.scene);
+    return r;
 }
 
 std::string sceneListing()

@@ -8,9 +8,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "Render/RenderSettings.h"
+#include "Render/RenderRequest.h"
 #include "Scene/Scene.h"
-#include "Scenes/Catalogue.h"
 
 namespace rt
 {
@@ -34,14 +33,25 @@ struct CommonOptions
     std::string mesh;
     bool quiet = false;
 
-    SceneOptions sceneOptions() const;
+    SceneRef sceneRef() const;
 };
 
 /// Registers the shared flags on `app` with help text for each.
 void addCommonOptions(CLI::App& app, CommonOptions& options);
 
-/// The settings of a render: the scene's defaults, overridden by every flag the user gave. Throws UsageError.
-RenderSettings resolveSettings(const CommonOptions& options, const Scene& scene);
+/// The request of a command line for `scene` (built from options.sceneRef()): the scene's defaults,
+/// overridden by every flag the user gave. Throws UsageError.
+RenderRequest resolveRequest(const CommonOptions& options, const Scene& scene);
+
+/// A command line's scene, built, and its request.
+struct CommandLineRender
+{
+    Scene scene;
+    RenderRequest request;
+};
+
+/// Builds the scene the flags name and resolves the request. Throws UsageError, SceneError, AssetError.
+CommandLineRender resolveCommandLine(const CommonOptions& options);
 
 /// One line per catalogue scene: id, title, source.
 std::string sceneListing();

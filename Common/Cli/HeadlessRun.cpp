@@ -14,7 +14,7 @@
 
 #include "Error.h"
 #include "Image/ImageIO.h"
-#include "Render/RenderStats.h"
+#include "Render/RenderDriver.h"
 
 #ifndef _WIN32
 #include <unistd.h>
@@ -122,7 +122,7 @@ void checkOutputPaths(const CommonOptions& o)
     checkOutputPath(o.stats, "--stats", {".json"});
 }
 
-int runHeadless(RenderEngine& engine, const Scene& scene, const RenderSettings& settings, const CommonOptions& o)
+int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& request, const CommonOptions& o)
 {
     checkOutputPaths(o);
     spdlog::info("scene {}: {} primitives, {} lights; {} engine on {}", scene.id, scene.primitiveCount(),
@@ -136,7 +136,7 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderSettings& 
     RenderResult result;
     {
         ProgressPrinter progress(control, !o.quiet);
-        result = engine.render(settings, control);
+        result = render(engine, request, control);
     }
     std::signal(SIGINT, previous);
     g_activeControl = nullptr;
@@ -152,9 +152,10 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderSettings& 
     if (!o.stats.empty())
         writeStatsJson(o.stats, result.stats);
     const RenderStats& s = result.stats;
+    const RenderSettings& settings = request.settings;
     std::printf("%s: %dx%d, %d spp (%s, %s), depth %d, %s engine: render %.3f s, build %.3f s, %.2f Mpaths/s, "
                 "NaN %llu, Inf %llu%s%s\n",
-                s.scene.c_str(), s.width, s.height, s.trueSpp, toString(settings.sampling), toString(settings.estimator),
+                request.scene.id.c_str(), s.width, s.height, s.trueSpp, toString(settings.sampling), toString(settings.estimator),
                 settings.depth, toString(s.engine), s.renderSeconds, s.buildSeconds, s.mpathsPerSecond(),
                 static_cast<unsigned long long>(s.nanSamples), static_cast<unsigned long long>(s.infSamples),
                 o.output.empty() ? "" : ", wrote ", o.output.c_str());

@@ -7,6 +7,7 @@
 
 #include "Cli/CommonOptions.h"
 #include "Render/RenderEngine.h"
+#include "Render/RenderRequest.h"
 
 namespace rt
 {
@@ -18,9 +19,9 @@ void checkOutputPath(const std::string& path, const char* flag, std::initializer
 /// Throws UsageError or OutputError.
 void checkOutputPaths(const CommonOptions& options);
 
-/// Renders and writes the outputs. Returns the process exit status: 0, or 130 when cancelled by SIGINT
-/// (nothing is written then). Throws rt::Error for failures.
-int runHeadless(RenderEngine& engine, const Scene& scene, const RenderSettings& settings, const CommonOptions& options);
+/// Renders `request` of `scene` (the scene it names, built) and writes the outputs. Returns the process exit
+/// status: 0, or 130 when cancelled by SIGINT (nothing is written then). Throws rt::Error for failures.
+int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& request, const CommonOptions& options);
 
 /// Parses the command line, then runs `body`, turning every rt::Error and CLI11 parse error into one
 /// "error: ..." line on stderr and the error's exit status. `--help` prints the help and returns 0.

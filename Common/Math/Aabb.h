@@ -41,10 +41,4 @@ struct Aabb
         return (d.x >= d.y && d.x >= d.z) ? 0 : (d.y >= d.z ? 1 : 2);
     }
 };
-
-inline Aabb unite(Aabb a, const Aabb& b)
-{
-    a.expand(b);
-    return a;
-}
 } // namespace rt

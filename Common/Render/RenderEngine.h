@@ -1,27 +1,26 @@
-// The one interface every engine offers the apps: take a scene, render it with settings, report.
-// Virtual at this level only (once per render); nothing per ray goes through it.
+// The interface every engine offers the render driver (Render/RenderDriver.h): take a scene, then trace
+// ranges of camera samples into an accumulator the engine keeps, and hand back the estimate. The driver owns
+// everything around that (batches, progress, cancellation, previews, timing, stats), once for every engine.
+// Virtual at this level only (a few calls per batch); nothing per ray goes through it.
 #pragma once
 
-#include <functional>
+#include <cstdint>
 #include <string>
 
 #include "Image/Image.h"
-#include "Render/RenderControl.h"
 #include "Render/RenderSettings.h"
-#include "Render/RenderStats.h"
 #include "Scene/Scene.h"
 
 namespace rt
 {
-struct RenderResult
+/// What an engine counted while tracing since beginFrame.
+struct SampleTally
 {
-    Image image; // linear radiance, settings.width x settings.height; the estimate so far if cancelled
-    RenderStats stats;
+    std::uint64_t segments = 0; // ray segments traced (0 when the engine does not count them)
+    std::uint64_t nanSamples = 0; // camera samples whose radiance had a NaN (dropped from the accumulator)
+    std::uint64_t infSamples = 0; // ... or an infinity
+    int threadsUsed = 1; // host threads that traced
 };
-
-/// Called by an engine with the current estimate and the samples per pixel it holds, after every pass of an
-/// accumulating render and at the end of any render. Runs on the rendering thread: copy what you need.
-using PreviewCallback = std::function<void(const Image& estimate, int samplesSoFar)>;
 
 class RenderEngine
 {
@@ -33,13 +32,27 @@ public:
     virtual std::string deviceName() const = 0;
 
     /// Builds the engine's acceleration structures for `scene` (validated). The scene must outlive every
-    /// render() that follows. Returns the build time in seconds. Throws rt::Error on failure.
+    /// frame that follows. Returns the build time in seconds. Throws rt::Error on failure.
     virtual double setScene(const Scene& scene) = 0;
+    /// The scene last given to setScene; nullptr before the first.
+    virtual const Scene* scene() const = 0;
+    /// Seconds the last setScene took.
+    virtual double buildSeconds() const = 0;
 
-    /// Renders the scene last given to setScene. Blocks; returns early with stats.cancelled set when
-    /// control.requestCancel() is called. Throws UsageError for settings the engine cannot honour
-    /// (DeviceError when they exceed a device limit).
-    virtual RenderResult render(const RenderSettings& settings, RenderControl& control,
-                                const PreviewCallback& preview = {}) = 0;
+    /// Camera paths one batch of traceSamples should hold: enough that the per-batch cost vanishes, few
+    /// enough that a batch ends well within a second (cancel, progress, no GPU watchdog).
+    virtual std::uint64_t pathsPerBatch() const = 0;
+
+    /// Starts a frame of `settings` (validated by the caller) on the current scene: an accumulator of the
+    /// settings' size, cleared, and zero tallies. Throws UsageError before setScene, DeviceError naming the
+    /// limit when the image does not fit the device.
+    virtual void beginFrame(const RenderSettings& settings) = 0;
+    /// Adds camera samples firstSample .. firstSample + count - 1 of every pixel to the accumulator, one after
+    /// the other in sample order, so the sums do not depend on how the samples are cut into batches.
+    /// Returns the device's own seconds for the batch, or a negative number when it has no such clock.
+    virtual double traceSamples(std::uint32_t firstSample, std::uint32_t count) = 0;
+    /// The accumulator divided by `samples` (> 0): linear radiance, the frame's width x height.
+    virtual Image estimate(std::uint32_t samples) = 0;
+    virtual SampleTally tally() const = 0;
 };
 } // namespace rt

@@ -13,12 +13,14 @@ int RenderSettings::height() const
     return std::max(1, static_cast<int>(std::lround(static_cast<double>(width) / aspect)));
 }
 
+int RenderSettings::strata() const
+{
+    return sampling == PixelSampling::Stratified ? static_cast<int>(std::sqrt(static_cast<double>(spp))) : 1;
+}
+
 int RenderSettings::trueSpp() const
 {
-    if (sampling != PixelSampling::Stratified)
-        return spp;
-    const int n = static_cast<int>(std::sqrt(static_cast<double>(spp)));
-    return n * n;
+    return sampling == PixelSampling::Stratified ? strata() * strata() : spp;
 }
 
 void RenderSettings::validate() const

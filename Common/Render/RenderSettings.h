@@ -22,7 +22,7 @@ enum class EngineKind
 struct RenderSettings
 {
     int spp = 100; // samples per pixel asked for (stratified rounds down to a square: see trueSpp())
-    int depth = 50; // maximum number of scattering events along a path (RTIOW's max_depth)
+    int depth = 50; // ray segments per path at most, the camera ray included (RTIOW's max_depth): 1 sees emitters only
     int width = 600; // pixels
     float aspect = 1.0f; // width / height
     PixelSampling sampling = PixelSampling::Random;
@@ -30,8 +30,13 @@ struct RenderSettings
     bool unidirectionalLight = true; // emitters emit from their front side only
     std::uint32_t seed = 0;
 
+    bool operator==(const RenderSettings&) const = default;
+
     int height() const;
-    /// Samples each pixel really gets: spp, or floor(sqrt(spp))^2 for stratified sampling.
+    /// Strata per image axis of a pixel: floor(sqrt(spp)) for stratified sampling, else 1. Sample s of a
+    /// pixel falls in stratum (s % strata, s / strata).
+    int strata() const;
+    /// Samples each pixel really gets: spp, or strata()^2 for stratified sampling.
     int trueSpp() const;
     /// Throws UsageError naming the first bad value (spp < 1, width < 1, depth < 1, aspect <= 0, ...).
     void validate() const;

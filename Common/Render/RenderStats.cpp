@@ -7,7 +7,9 @@ namespace rt
 nlohmann::json RenderStats::toJson() const
 {
     nlohmann::json j;
-    j["scene"] = scene;
+    const RenderSettings& settings = request.settings;
+    j["scene"] = request.scene.id;
+    j["scene_options"] = {{"count", request.scene.options.count}, {"mesh", request.scene.options.meshPath}};
     j["engine"] = toString(engine);
     j["device"] = device;
     j["settings"] = {{"spp", settings.spp},

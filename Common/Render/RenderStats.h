@@ -6,24 +6,24 @@
 
 #include <nlohmann/json.hpp>
 
-#include "Render/RenderSettings.h"
+#include "Render/RenderRequest.h"
 
 namespace rt
 {
-/// What a finished (or cancelled) render reports; written as stats.json by the apps.
+/// What a finished (or cancelled) render reports (filled by the render driver, Render/RenderDriver.h);
+/// written as stats.json by the apps.
 struct RenderStats
 {
-    std::string scene;
+    RenderRequest request; // the scene and the settings asked for
     EngineKind engine = EngineKind::Single;
     std::string device; // CPU model or Vulkan device name
-    RenderSettings settings;
     int width = 0;
     int height = 0;
     int trueSpp = 0; // samples each pixel really received
     double wallSeconds = 0.0; // whole render call: setup + build + render + readback
     double buildSeconds = 0.0; // acceleration structures (BVH, BLAS/TLAS)
     double renderSeconds = 0.0; // tracing only, host clock
-    double gpuSeconds = -1.0; // tracing only, GPU timestamp queries; < 0 when not measured
+    double gpuSeconds = -1.0; // tracing only, the device's own clock (GPU timestamp queries); < 0: none
     std::uint64_t paths = 0; // camera paths traced (pixels x true spp)
     std::uint64_t segments = 0; // ray segments traced (0 when the engine does not count them)
     std::uint64_t nanSamples = 0; // camera samples whose radiance had a NaN (dropped from the image)

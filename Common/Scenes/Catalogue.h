@@ -14,6 +14,8 @@ struct SceneOptions
 {
     int count = -1; // number of objects for scenes that scale (white-spheres); < 0 = the scene's default
     std::string meshPath = "meshes/bunny.obj"; // OBJ for the mesh scenes (asset-relative or a real path)
+
+    bool operator==(const SceneOptions&) const = default;
 };
 
 struct SceneInfo

@@ -3,7 +3,6 @@
 #include "Cli/HeadlessRun.h"
 #include "Engine/CpuEngine.h"
 #include "Error.h"
-#include "Scenes/Catalogue.h"
 
 #ifdef RT_WITH_GUI
 #include "App/Gui/GuiApp.h"
@@ -43,9 +42,8 @@ int main(int argc, char** argv)
         if (!engine || *engine == rt::EngineKind::Gpu)
             throw rt::UsageError("--engine must be single or multi (got '" + engineName + "')");
         rt::checkOutputPaths(options);
-        const rt::Scene scene = rt::makeScene(options.scene, options.sceneOptions());
-        const rt::RenderSettings settings = rt::resolveSettings(options, scene);
+        const rt::CommandLineRender job = rt::resolveCommandLine(options);
         rt::cpu::CpuEngine cpu(*engine);
-        return rt::runHeadless(cpu, scene, settings, options);
+        return rt::runHeadless(cpu, job.scene, job.request, options);
     });
 }

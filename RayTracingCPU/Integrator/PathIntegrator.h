@@ -5,7 +5,7 @@
 //    pick one light of the scene's list uniformly and sample a direction towards it; weight the direction by
 //    f cos / (1/2 p_bsdf + 1/2 mean_j p_light_j): the balance-heuristic one-sample MIS of the two strategies,
 //    without shadow rays. Specular vertices follow their single direction.
-// The GLSL twin is Shaders/RayGen.rgen + Shaders/Integrator/*.glsl.
+// The GLSL twin is Shaders/RayGen.rgen + Shaders/Integrator.glsl.
 #pragma once
 
 #include <cstdint>

@@ -15,6 +15,7 @@
 #include "Error.h"
 #include "IO/AtomicFile.h"
 #include "Image/Metrics.h"
+#include "Render/RenderDriver.h"
 
 namespace rt::app
 {
@@ -38,10 +39,18 @@ struct Run
     Image image;
 };
 
-Run render(RenderEngine& engine, const RenderSettings& settings)
+/// `request` with `spp` samples per pixel and `seedOffset` added to its seed.
+RenderRequest withSpp(RenderRequest request, int spp, std::uint32_t seedOffset = 0)
+{
+    request.settings.spp = spp;
+    request.settings.seed += seedOffset;
+    return request;
+}
+
+Run timedRender(RenderEngine& engine, const RenderRequest& request)
 {
     RenderControl control;
-    RenderResult r = engine.render(settings, control);
+    RenderResult r = render(engine, request, control);
     if (r.stats.nanSamples + r.stats.infSamples > 0)
         spdlog::warn("{} engine: {} NaN and {} Inf samples", toString(engine.kind()), r.stats.nanSamples,
                      r.stats.infSamples);
@@ -80,9 +89,10 @@ std::vector<EngineKind> parseEngineList(const std::string& text)
     return engines;
 }
 
-int runComparison(const Scene& scene, const RenderSettings& base, const CompareOptions& options,
+int runComparison(const Scene& scene, const RenderRequest& baseRequest, const CompareOptions& options,
                   const std::function<std::unique_ptr<RenderEngine>(EngineKind)>& makeEngine)
 {
+    const RenderSettings& base = baseRequest.settings;
     // One engine of each kind, its acceleration structures built once.
     std::vector<std::pair<EngineKind, std::unique_ptr<RenderEngine>>> engines;
     for (const EngineKind kind : options.engines)
@@ -105,11 +115,9 @@ int runComparison(const Scene& scene, const RenderSettings& base, const CompareO
 
     // The reference: the last engine (the GPU when there is one) at referenceSpp with an independent seed.
     RenderEngine& refEngine = *engines.back().second;
-    RenderSettings refSettings = base;
-    refSettings.spp = options.referenceSpp;
-    refSettings.seed = base.seed + 1000;
-    spdlog::info("reference: {} spp on the {} engine", refSettings.spp, toString(refEngine.kind()));
-    const Image reference = render(refEngine, refSettings).image;
+    const RenderRequest refRequest = withSpp(baseRequest, options.referenceSpp, 1000);
+    spdlog::info("reference: {} spp on the {} engine", options.referenceSpp, toString(refEngine.kind()));
+    const Image reference = timedRender(refEngine, refRequest).image;
 
     nlohmann::json json;
     json["scene"] = scene.id;
@@ -118,7 +126,7 @@ int runComparison(const Scene& scene, const RenderSettings& base, const CompareO
     json["depth"] = base.depth;
     json["estimator"] = toString(base.estimator);
     json["sampling"] = toString(base.sampling);
-    json["reference_spp"] = refSettings.spp;
+    json["reference_spp"] = options.referenceSpp;
     json["relmse_epsilon"] = kRelMseEpsilon;
     for (const auto& [kind, engine] : engines)
         json["devices"][toString(kind)] = engine->deviceName();
@@ -136,18 +144,16 @@ int runComparison(const Scene& scene, const RenderSettings& base, const CompareO
     std::vector<std::vector<Run>> runs(options.spps.size());
     for (const auto& [kind, engine] : engines)
     {
-        RenderSettings warmUp = base;
-        warmUp.spp = 4;
+        const RenderRequest warmUp = withSpp(baseRequest, 4);
         const auto warmStart = std::chrono::steady_clock::now();
         for (int i = 0; i < 1000 && std::chrono::steady_clock::now() - warmStart < std::chrono::milliseconds(500); ++i)
-            render(*engine, warmUp);
+            timedRender(*engine, warmUp);
         for (std::size_t row = 0; row < options.spps.size(); ++row)
         {
-            RenderSettings s = base;
-            s.spp = options.spps[row];
-            Run run = render(*engine, s);
+            const RenderRequest request = withSpp(baseRequest, options.spps[row]);
+            Run run = timedRender(*engine, request);
             run.error = compareImages(run.image, reference);
-            spdlog::info("{} engine, {} spp: {:.1f} ms", toString(kind), s.trueSpp(),
+            spdlog::info("{} engine, {} spp: {:.1f} ms", toString(kind), request.settings.trueSpp(),
                          run.gpuMs >= 0 ? run.gpuMs : run.renderMs);
             runs[row].push_back(std::move(run));
         }
@@ -155,12 +161,11 @@ int runComparison(const Scene& scene, const RenderSettings& base, const CompareO
 
     std::printf("\n%s: %dx%d, depth %d, %s estimator, %s sampling; relMSE against %d spp (epsilon %g)\n",
                 scene.id.c_str(), base.width, base.height(), base.depth, toString(base.estimator),
-                toString(base.sampling), refSettings.spp, kRelMseEpsilon);
+                toString(base.sampling), options.referenceSpp, kRelMseEpsilon);
     std::printf("%s\n%s\n", header.c_str(), std::string(header.size(), '-').c_str());
     for (std::size_t rowIndex = 0; rowIndex < options.spps.size(); ++rowIndex)
     {
-        RenderSettings s = base;
-        s.spp = options.spps[rowIndex];
+        const RenderSettings s = withSpp(baseRequest, options.spps[rowIndex]).settings;
         std::string row = fmt::format("{:>6}", s.trueSpp());
         nlohmann::json jrow;
         jrow["spp"] = s.trueSpp();

@@ -6,7 +6,11 @@
 #include <string>
 #include <vector>
 
+#include <functional>
+#include <memory>
+
 #include "Render/RenderEngine.h"
+#include "Render/RenderRequest.h"
 
 namespace rt::app
 {
@@ -25,6 +29,7 @@ std::vector<EngineKind> parseEngineList(const std::string& text);
 
 /// Renders and prints the table on stdout; returns the process status. Engines that cannot start (no Vulkan
 /// ray-tracing device) are reported and left out rather than failing the comparison.
-int runComparison(const Scene& scene, const RenderSettings& base, const CompareOptions& options,
+/// `base` is the request of `scene` (the scene it names, built); each row renders it at another spp.
+int runComparison(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
                   const std::function<std::unique_ptr<RenderEngine>(EngineKind)>& makeEngine);
 } // namespace rt::app

@@ -76,8 +76,9 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
         throw rt::UsageError(fmt::format("--screenshot must name a .png file (got '{}')", flags.screenshot));
     rt::gpu::gui::WindowOptions w;
     w.actions = rt::gpu::gui::parseActions(flags.actions);
-    rt::Scene scene = rt::makeScene(options.scene, options.sceneOptions());
-    const rt::RenderSettings settings = rt::resolveSettings(options, scene);
+    rt::CommandLineRender job = rt::resolveCommandLine(options);
+    rt::Scene& scene = job.scene;
+    const rt::RenderSettings& settings = job.request.settings;
     rt::gpu::gui::ImageSettings& image = w.initial.image;
     image.scene = scene.id;
     image.camera = scene.camera;
@@ -91,7 +92,7 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
     image.seed = settings.seed;
     w.initial.display.samplesPerFrame = flags.samplesPerFrame;
     w.initial.display.targetSpp = options.spp.value_or(0); // the scene's default spp is no reason to stop
-    w.sceneOptions = options.sceneOptions();
+    w.sceneOptions = job.request.scene.options;
     w.deviceIndex = device;
     w.validation = validation;
     w.frames = flags.frames;
@@ -151,14 +152,13 @@ int main(int argc, char** argv)
         validation = validation || rt::gpu::validationWanted();
         if (compare)
         {
-            const rt::Scene scene = rt::makeScene(options.scene, options.sceneOptions());
-            const rt::RenderSettings settings = rt::resolveSettings(options, scene);
+            const rt::CommandLineRender job = rt::resolveCommandLine(options);
             rt::app::CompareOptions c;
             c.spps = rt::app::parseSppList(sppList);
             c.engines = rt::app::parseEngineList(engines);
             c.referenceSpp = referenceSpp > 0 ? referenceSpp : 4 * *std::max_element(c.spps.begin(), c.spps.end());
             c.json = table;
-            return rt::app::runComparison(scene, settings, c, [&](rt::EngineKind kind) -> std::unique_ptr<rt::RenderEngine> {
+            return rt::app::runComparison(job.scene, job.request, c, [&](rt::EngineKind kind) -> std::unique_ptr<rt::RenderEngine> {
                 if (kind == rt::EngineKind::Gpu)
                     return std::make_unique<rt::gpu::GpuEngine>(
                         rt::gpu::GpuEngineOptions{.deviceIndex = device, .validation = validation});
@@ -168,10 +168,9 @@ int main(int argc, char** argv)
         if (!options.headless)
             return runWindow(options, window, device, validation);
         rt::checkOutputPaths(options);
-        const rt::Scene scene = rt::makeScene(options.scene, options.sceneOptions());
-        const rt::RenderSettings settings = rt::resolveSettings(options, scene);
+        const rt::CommandLineRender job = rt::resolveCommandLine(options);
         rt::gpu::GpuEngine gpu({.deviceIndex = device, .validation = validation});
-        const int status = rt::runHeadless(gpu, scene, settings, options);
+        const int status = rt::runHeadless(gpu, job.scene, job.request, options);
         if (gpu.validationMessages() > 0)
         {
             spdlog::error("Vulkan validation reported {} warnings or errors (see above)", gpu.validationMessages());

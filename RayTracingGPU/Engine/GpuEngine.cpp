@@ -1,9 +1,6 @@
 #include "Engine/GpuEngine.h"
 
-#include <chrono>
-
 #include "Assets/AssetPaths.h"
-#include "Engine/DispatchPlan.h"
 #include "Engine/GpuContext.h"
 #include "Engine/GpuScene.h"
 #include "Engine/PathTracingPipeline.h"
@@ -20,10 +17,6 @@ namespace rt::gpu
 {
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
 TargetLimits targetLimits(const vk::Device& device)
 {
     const vk::DeviceProperties& p = device.properties();
@@ -38,11 +31,12 @@ struct GpuEngine::Impl
     std::filesystem::path shaderDir;
     PathTracingPipeline pipeline;
     vk::QueryPool timestamps;
-    std::uint64_t pathsPerDispatch;
+    std::uint64_t pathsPerBatch;
     const Scene* sceneDesc = nullptr;
     std::unique_ptr<GpuScene> scene;
     double buildSeconds = 0.0;
     std::unique_ptr<RenderTarget> target;
+
     vk::DescriptorPool descriptorPool;
     VkDescriptorSet descriptorSet = VK_NULL_HANDLE;
 
@@ -51,9 +45,9 @@ struct GpuEngine::Impl
           shaderDir(options.shaderDir.empty() ? executableDir() / "shaders" : options.shaderDir),
           pipeline(context.device(), shaderDir),
           timestamps(context.device(), 2),
-          pathsPerDispatch(options.pathsPerDispatch > 0 ? options.pathsPerDispatch
-                           : context.device().properties().type == vk::DeviceType::Cpu ? kPathsPerDispatchCpu
-                                                                                       : kPathsPerDispatchGpu)
+          pathsPerBatch(options.pathsPerBatch > 0 ? options.pathsPerBatch
+                        : context.device().properties().type == vk::DeviceType::Cpu ? kPathsPerBatchCpu
+                                                                                    : kPathsPerBatchGpu)
     {
     }
 
@@ -81,7 +75,7 @@ struct GpuEngine::Impl
 
     /// Records and runs one dispatch: `samples` samples per pixel from `firstSample` on.
     /// Returns the GPU seconds of the launches (negative when the queue has no timestamps).
-    double dispatch(std::uint32_t firstSample, std::uint32_t samples, bool readback)
+    double dispatch(std::uint32_t firstSample, std::uint32_t samples)
     {
         const bool timed = device().properties().timestampValidBits > 0;
         vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) {
@@ -94,8 +88,6 @@ struct GpuEngine::Impl
                                   scene->samplesPerLaunch());
             if (timed)
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 1);
-            if (readback)
-                target->recordReadback(cmd);
             vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                               VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT); // the NaN/Inf counters
         });
@@ -141,12 +133,11 @@ const GpuScene& GpuEngine::gpuScene() const
     return *m_impl->scene;
 }
 
-const Scene& GpuEngine::scene() const
-{
-    if (!m_impl->sceneDesc)
-        throw UsageError("GpuEngine::scene called before setScene");
-    return *m_impl->sceneDesc;
-}
+const Scene* GpuEngine::scene() const { return m_impl->sceneDesc; }
+
+double GpuEngine::buildSeconds() const { return m_impl->buildSeconds; }
+
+std::uint64_t GpuEngine::pathsPerBatch() const { return m_impl->pathsPerBatch; }
 
 double GpuEngine::setScene(const Scene& scene)
 {
@@ -162,70 +153,40 @@ double GpuEngine::setScene(const Scene& scene)
     return e.buildSeconds;
 }
 
-RenderResult GpuEngine::render(const RenderSettings& settings, RenderControl& control, const PreviewCallback& preview)
+void GpuEngine::beginFrame(const RenderSettings& settings)
 {
-    const Clock::time_point wallStart = Clock::now();
     Impl& e = *m_impl;
-    settings.validate();
     if (!e.scene)
-        throw UsageError("GpuEngine::render called before setScene");
+        throw UsageError("GpuEngine::beginFrame called before setScene");
     const auto width = static_cast<std::uint32_t>(settings.width);
     const auto height = static_cast<std::uint32_t>(settings.height());
     if (const auto problem = checkTargetLimits(width, height, targetLimits(e.device())))
         throw DeviceError(*problem);
-
     e.prepareTarget(width, height);
     e.target->reset(makeUniforms(*e.sceneDesc, e.sceneDesc->camera, settings, width, height, e.scene->lightCount()));
-    const auto totalSamples = static_cast<std::uint32_t>(settings.trueSpp());
-    const DispatchPlan plan = planDispatches(totalSamples, std::uint64_t(width) * height, e.pathsPerDispatch,
-                                             settings.sampling == PixelSampling::Accumulate);
-
-    RenderResult result;
-    RenderStats& stats = result.stats;
     e.clear();
-    control.begin(plan.dispatchCount);
-    std::uint32_t samplesDone = 0;
-    double gpuSeconds = 0.0;
-    bool timed = true;
-    const Clock::time_point renderStart = Clock::now();
-    bool readBack = false; // the last dispatch copied the image to the host (for a preview)
-    for (std::uint32_t d = 0; d < plan.dispatchCount; ++d)
-    {
-        if (control.cancelRequested())
-        {
-            stats.cancelled = true;
-            break;
-        }
-        const std::uint32_t samples = plan.samplesIn(d, totalSamples);
-        readBack = preview && control.previewDue();
-        const double seconds = e.dispatch(samplesDone, samples, readBack);
-        timed = timed && seconds >= 0.0;
-        gpuSeconds += seconds;
-        samplesDone += samples;
-        control.advance();
-        if (readBack)
-            preview(e.target->readEstimate(samplesDone), static_cast<int>(samplesDone));
-    }
-    stats.renderSeconds = secondsSince(renderStart);
-    if (!readBack)
-        e.readback();
-    result.image = e.target->readEstimate(samplesDone);
+}
 
-    const shader::SampleCounters counters = e.target->readCounters();
-    stats.scene = e.sceneDesc->id;
-    stats.engine = EngineKind::Gpu;
-    stats.device = deviceName();
-    stats.settings = settings;
-    stats.width = static_cast<int>(width);
-    stats.height = static_cast<int>(height);
-    stats.trueSpp = static_cast<int>(samplesDone);
-    stats.buildSeconds = e.buildSeconds;
-    stats.gpuSeconds = timed ? gpuSeconds : -1.0;
-    stats.paths = std::uint64_t(width) * height * samplesDone;
-    stats.nanSamples = counters.nanSamples;
-    stats.infSamples = counters.infSamples;
-    stats.threadsUsed = 1;
-    stats.wallSeconds = secondsSince(wallStart) + e.buildSeconds; // as the CPU engine: build included
-    return result;
+double GpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count)
+{
+    if (!m_impl->target)
+        throw UsageError("GpuEngine::traceSamples called before beginFrame");
+    return m_impl->dispatch(firstSample, count);
+}
+
+Image GpuEngine::estimate(std::uint32_t samples)
+{
+    if (!m_impl->target)
+        throw UsageError("GpuEngine::estimate called before beginFrame");
+    m_impl->readback();
+    return m_impl->target->readEstimate(samples);
+}
+
+SampleTally GpuEngine::tally() const
+{
+    if (!m_impl->target)
+        return {};
+    const shader::SampleCounters counters = m_impl->target->readCounters();
+    return {.segments = 0, .nanSamples = counters.nanSamples, .infSamples = counters.infSamples, .threadsUsed = 1};
 }
 } // namespace rt::gpu

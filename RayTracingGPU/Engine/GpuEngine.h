@@ -1,7 +1,7 @@
 // The Vulkan ray-tracing engine: rt::RenderEngine on a hardware (or software: lavapipe) ray-tracing
-// pipeline. setScene uploads the scene and builds BLASes/TLAS; render traces the samples into an RGBA32F
-// accumulation image in dispatches of bounded size (each launch loops over its samples per pixel; one sample
-// per launch for scenes with moving spheres) and reads it back.
+// pipeline. setScene uploads the scene and builds BLASes/TLAS; each batch of the render driver is one
+// dispatch into an RGBA32F accumulation image (each launch loops over its samples per pixel; one sample per
+// launch for scenes with moving spheres), read back for previews and at the end.
 // docs/GPU.md describes the mapping of the scene, the shader groups and the bindings.
 #pragma once
 
@@ -24,10 +24,15 @@ struct GpuEngineOptions
     std::optional<int> deviceIndex; // --device N (vkEnumeratePhysicalDevices order); empty: best suitable
     bool validation = false; // Khronos validation layer + counting messenger (see validationWanted())
     std::filesystem::path shaderDir; // empty: executableDir()/shaders, never the working directory
-    std::uint64_t pathsPerDispatch = 0; // 0: by device type (DispatchPlan.h)
+    std::uint64_t pathsPerBatch = 0; // camera paths per dispatch; 0: by device type (kPathsPerBatchGpu/Cpu)
     /// The window: the device must present to its surface (GpuContext.h). Headless leaves it empty.
     std::optional<Presentation> presentation;
 };
+
+/// Camera paths one dispatch aims at: ~16 M on a GPU (30 ms on an H100; 16 M ran 15 % faster than 4 M there,
+/// docs/PERFORMANCE.md), ~64 K on a CPU device such as lavapipe (a fraction of a second at the test sizes).
+inline constexpr std::uint64_t kPathsPerBatchGpu = std::uint64_t(1) << 24;
+inline constexpr std::uint64_t kPathsPerBatchCpu = std::uint64_t(1) << 16;
 
 class GpuEngine final : public RenderEngine
 {
@@ -43,10 +48,18 @@ public:
     EngineKind kind() const override { return EngineKind::Gpu; }
     std::string deviceName() const override;
     double setScene(const Scene& scene) override;
-    /// Throws rt::UsageError for invalid settings or when no scene is set, rt::DeviceError naming the limit
-    /// when the image does not fit the device (dimension, memory).
-    RenderResult render(const RenderSettings& settings, RenderControl& control,
-                        const PreviewCallback& preview = {}) override;
+    const Scene* scene() const override;
+    double buildSeconds() const override;
+
+    std::uint64_t pathsPerBatch() const override;
+    /// Throws rt::UsageError when no scene is set, rt::DeviceError naming the limit when the image does not fit
+    /// the device (dimension, memory, invocations per dispatch).
+    void beginFrame(const RenderSettings& settings) override;
+    /// One dispatch, waited for; returns its GPU time from timestamp queries (< 0 without timestamps).
+    double traceSamples(std::uint32_t firstSample, std::uint32_t count) override;
+    /// Reads the accumulation image back (one submission, waited for).
+    Image estimate(std::uint32_t samples) override;
+    SampleTally tally() const override;
 
     /// The instance, device and command pool, for work beside rendering (the tests' compute kernels).
     const GpuContext& context() const;
@@ -63,9 +76,8 @@ public:
     const PathTracingPipeline& pipeline() const;
     /// Where the SPIR-V files are (the window's pipelines load theirs from there too).
     const std::filesystem::path& shaderDir() const;
-    /// The scene set last, on the device and as described. Throw rt::UsageError before setScene.
+    /// The scene set last, on the device. Throws rt::UsageError before setScene.
     const GpuScene& gpuScene() const;
-    const Scene& scene() const;
 
 private:
     struct Impl;

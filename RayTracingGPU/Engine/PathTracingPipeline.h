@@ -50,7 +50,6 @@ public:
     const vk::DescriptorSetLayout& costSetLayout() const { return m_costSetLayout; }
     const vk::PipelineLayout& layout() const { return m_layout; }
     VkPipeline Handle() const { return m_pipeline.Handle(); }
-    const ShaderBindingTable& sbt() const { return m_sbt; }
     /// Size of the variable-count sampler array (the most images a scene may have).
     std::uint32_t maxImages() const { return m_maxImages; }
 

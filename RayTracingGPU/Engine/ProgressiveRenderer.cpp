@@ -151,7 +151,7 @@ void ProgressiveRenderer::recordSamples(VkCommandBuffer cmd, std::uint32_t slot,
     RenderSettings settings = request.settings;
     settings.sampling = PixelSampling::Accumulate;
     const VkExtent2D size = extent();
-    const shader::RenderUniforms uniforms = makeUniforms(m_engine->scene(), request.camera, settings, size.width,
+    const shader::RenderUniforms uniforms = makeUniforms(*m_engine->scene(), request.camera, settings, size.width,
                                                          size.height, m_engine->gpuScene().lightCount());
     std::memcpy(m_uniforms.at(slot).mapped(), &uniforms, sizeof(uniforms));
 

@@ -1,7 +1,5 @@
 #include "Engine/Uniforms.h"
 
-#include <cmath>
-
 #include "Scene/Camera.h"
 
 namespace rt::gpu
@@ -28,7 +26,7 @@ shader::RenderUniforms makeUniforms(const Scene& scene, const CameraDesc& camera
     u.background1 = scene.background.color1;
     u.estimator = settings.estimator;
     u.sampling = settings.sampling;
-    u.strata = static_cast<std::uint32_t>(std::sqrt(static_cast<double>(settings.trueSpp())));
+    u.strata = static_cast<std::uint32_t>(settings.strata());
     u.seed = settings.seed;
     u.unidirectionalLight = settings.unidirectionalLight ? 1u : 0u;
     u.lightCount = lightCount;

@@ -9,6 +9,7 @@
 #include "Engine/CpuEngine.h"
 #include "Scenes/Catalogue.h"
 #include "Support/SmallSettings.h"
+#include "Support/RenderWithSettings.h"
 
 namespace
 {
@@ -22,7 +23,7 @@ void renderBenchmark(benchmark::State& state, const Scene& scene, const RenderSe
     for (auto _ : state)
     {
         RenderControl control;
-        const RenderResult r = e.render(settings, control);
+        const RenderResult r = test::renderWithSettings(e, settings, control);
         paths += r.stats.paths;
         segments += r.stats.segments;
         benchmark::DoNotOptimize(r.image.data());

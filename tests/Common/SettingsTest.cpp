@@ -96,11 +96,12 @@ TEST(RenderSettings, NamesRoundTrip)
     EXPECT_FALSE(parseEngine("cpu").has_value());
 }
 
-TEST(ResolveSettings, FlagsOverrideTheScenesDefaults)
+TEST(ResolveRequest, FlagsOverrideTheScenesDefaults)
 {
     const Scene scene = makeScene("rtow-final"); // 16:9, its own defaults
     CommonOptions options;
-    RenderSettings s = resolveSettings(options, scene);
+    options.scene = "rtow-final";
+    RenderSettings s = resolveRequest(options, scene).settings;
     EXPECT_EQ(s.spp, scene.defaults.spp);
     EXPECT_EQ(s.depth, scene.defaults.depth);
     EXPECT_EQ(s.width, scene.defaults.width);
@@ -115,7 +116,13 @@ TEST(ResolveSettings, FlagsOverrideTheScenesDefaults)
     options.pdf = "off";
     options.unidirectionalLight = scene.defaults.unidirectionalLight ? "off" : "on";
     options.seed = 12;
-    s = resolveSettings(options, scene);
+    options.count = 5;
+    options.mesh = "meshes/other.obj";
+    const RenderRequest request = resolveRequest(options, scene);
+    EXPECT_EQ(request.scene.id, "rtow-final");
+    EXPECT_EQ(request.scene.options.count, 5);
+    EXPECT_EQ(request.scene.options.meshPath, "meshes/other.obj");
+    s = request.settings;
     EXPECT_EQ(s.spp, 7);
     EXPECT_EQ(s.depth, 3);
     EXPECT_EQ(s.width, 320);
@@ -128,13 +135,13 @@ TEST(ResolveSettings, FlagsOverrideTheScenesDefaults)
     EXPECT_EQ(s.seed, 12u);
 }
 
-TEST(ResolveSettings, BadFlagsAreUsageErrors)
+TEST(ResolveRequest, BadFlagsAreUsageErrors)
 {
     const Scene scene = makeScene("rtow-camera-test");
     const auto rejects = [&](auto change) {
         CommonOptions o;
         change(o);
-        EXPECT_THROW(resolveSettings(o, scene), UsageError);
+        EXPECT_THROW(resolveRequest(o, scene), UsageError);
     };
     rejects([](CommonOptions& o) { o.spp = 0; });
     rejects([](CommonOptions& o) { o.width = -1; });
@@ -147,17 +154,18 @@ TEST(ResolveSettings, BadFlagsAreUsageErrors)
 TEST(RenderStats, JsonReportsWhatWasRendered)
 {
     RenderStats stats;
-    stats.scene = "cornell-box-lights";
+    stats.request.scene = {.id = "white-spheres", .options = {.count = 300}};
     stats.engine = EngineKind::Multi;
-    stats.settings.spp = 10;
-    stats.settings.sampling = PixelSampling::Stratified;
+    stats.request.settings.spp = 10;
+    stats.request.settings.sampling = PixelSampling::Stratified;
     stats.width = 60;
     stats.height = 40;
-    stats.trueSpp = stats.settings.trueSpp();
+    stats.trueSpp = stats.request.settings.trueSpp();
     stats.paths = 60ull * 40 * 9;
     stats.renderSeconds = 0.5;
     const nlohmann::json j = stats.toJson();
-    EXPECT_EQ(j.at("scene"), "cornell-box-lights");
+    EXPECT_EQ(j.at("scene"), "white-spheres");
+    EXPECT_EQ(j.at("scene_options").at("count"), 300);
     EXPECT_EQ(j.at("engine"), "multi");
     EXPECT_EQ(j.at("settings").at("spp"), 10);
     EXPECT_EQ(j.at("settings").at("sampling"), "stratified");

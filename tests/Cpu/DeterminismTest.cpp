@@ -5,6 +5,7 @@
 
 #include "RenderTestSupport.h"
 #include "Scenes/Catalogue.h"
+#include "Support/RenderWithSettings.h"
 
 namespace rt::test
 {
@@ -54,7 +55,7 @@ TEST(CpuControl, CancelStopsARenderEarlyAndSaysSo)
     s.sampling = PixelSampling::Accumulate;
     RenderControl control;
     int previews = 0;
-    const RenderResult r = engine.render(s, control, [&](const Image&, int spp) {
+    const RenderResult r = renderWithSettings(engine, s, control, [&](const Image&, int spp) {
         ++previews;
         EXPECT_EQ(spp, previews); // one more sample per pixel at each pass
         if (previews == 3)

@@ -8,6 +8,7 @@
 #include "Sampling/Warps.h"
 #include "Scene/CpuScene.h"
 #include "Scene/SceneBuilder.h"
+#include "Support/RenderWithSettings.h"
 
 namespace rt::test
 {
@@ -176,7 +177,7 @@ TEST_P(GroundSphere, ShowsItsAlbedoUnderAUniformSky)
     settings.depth = 20;
     settings.estimator = Estimator::BsdfOnly; // zero variance: every escaping path carries exactly the albedo
     RenderControl control;
-    const Image image = engine.render(settings, control).image;
+    const Image image = renderWithSettings(engine, settings, control).image;
     for (const vec3& p : image.pixels())
         ASSERT_NEAR(p.x, 0.5f, 1e-4f);
 }

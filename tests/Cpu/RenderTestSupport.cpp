@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include "Support/RenderWithSettings.h"
+
 namespace rt::test
 {
 RenderSettings smallSettings(int width, int spp, int depth, Estimator estimator, float aspect)
@@ -22,7 +24,7 @@ RenderResult renderCpu(const Scene& scene, const RenderSettings& settings, Engin
     cpu::CpuEngine e(engine);
     e.setScene(scene);
     RenderControl control;
-    return e.render(settings, control);
+    return renderWithSettings(e, settings, control);
 }
 
 bool bitIdentical(const Image& a, const Image& b)

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "Engine/CpuEngine.h"
+#include "Render/RenderDriver.h"
 #include "Render/RenderSettings.h"
 #include "Support/PixelStatistics.h" // the render tests' image statistics
 

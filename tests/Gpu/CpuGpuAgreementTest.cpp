@@ -40,7 +40,7 @@ BlockEstimate estimate(RenderEngine& engine, const Scene& scene, RenderSettings 
     {
         settings.seed = 1000u + static_cast<std::uint32_t>(k);
         RenderControl control;
-        images.push_back(engine.render(settings, control).image);
+        images.push_back(renderWithSettings(engine, settings, control).image);
     }
     const int w = images[0].width();
     const int h = images[0].height();

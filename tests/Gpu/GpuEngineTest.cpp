@@ -143,7 +143,7 @@ TEST_F(GpuSettings, StatsDescribeTheRender)
     const RenderSettings s = small(scene, 32, 2, 4);
     const RenderResult r = renderOnGpu(scene, s);
     EXPECT_EQ(r.stats.engine, EngineKind::Gpu);
-    EXPECT_EQ(r.stats.scene, "rtnw-earth");
+    EXPECT_EQ(r.stats.request.scene.id, "rtnw-earth");
     EXPECT_EQ(r.stats.width, 32);
     EXPECT_EQ(r.stats.height, s.height());
     EXPECT_EQ(r.image.width(), 32);
@@ -162,7 +162,7 @@ TEST_F(GpuSettings, AbsurdSizeIsRefusedNamingTheLimit)
     RenderControl control;
     try
     {
-        sharedEngine()->render(s, control);
+        renderWithSettings(*sharedEngine(), s, control);
         FAIL() << "expected DeviceError";
     }
     catch (const DeviceError& e)
@@ -184,7 +184,7 @@ TEST_F(GpuSettings, InvalidSettingsAreUsageErrors)
     sharedEngine()->setScene(scene);
     RenderSettings s = small(scene, 8, 0, 2);
     RenderControl control;
-    EXPECT_THROW(sharedEngine()->render(s, control), UsageError);
+    EXPECT_THROW(renderWithSettings(*sharedEngine(), s, control), UsageError);
 }
 
 using GpuProgress = GpuEngineTest;
@@ -197,7 +197,7 @@ TEST_F(GpuProgress, PreviewAfterEveryDispatchAndProgressInDispatches)
     s.sampling = PixelSampling::Accumulate;
     RenderControl control;
     std::vector<int> previews;
-    const RenderResult r = sharedEngine()->render(s, control, [&](const Image& estimate, int samples) {
+    const RenderResult r = renderWithSettings(*sharedEngine(), s, control, [&](const Image& estimate, int samples) {
         EXPECT_EQ(estimate.width(), 16);
         previews.push_back(samples);
     });
@@ -214,7 +214,7 @@ TEST_F(GpuProgress, CancelStopsBetweenDispatchesWithTheEstimateSoFar)
     RenderSettings s = small(scene, 16, 50, 4);
     s.sampling = PixelSampling::Accumulate;
     RenderControl control;
-    const RenderResult r = sharedEngine()->render(s, control, [&](const Image&, int samples) {
+    const RenderResult r = renderWithSettings(*sharedEngine(), s, control, [&](const Image&, int samples) {
         if (samples == 3)
             control.requestCancel();
     });

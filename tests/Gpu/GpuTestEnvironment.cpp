@@ -41,7 +41,7 @@ RenderResult renderOnGpu(const Scene& scene, const RenderSettings& settings)
     GpuEngine& engine = *sharedEngine();
     engine.setScene(scene);
     RenderControl control;
-    return engine.render(settings, control);
+    return renderWithSettings(engine, settings, control);
 }
 
 } // namespace rt::gpu::test

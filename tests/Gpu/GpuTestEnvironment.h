@@ -10,6 +10,7 @@
 #include "Engine/GpuEngine.h"
 #include "Image/Image.h"
 #include "Support/PixelStatistics.h"
+#include "Support/RenderWithSettings.h"
 
 namespace rt::gpu::test
 {
@@ -22,6 +23,7 @@ RenderResult renderOnGpu(const Scene& scene, const RenderSettings& settings);
 
 using ::rt::test::MeanAndError;
 using ::rt::test::pixelStatistics;
+using ::rt::test::renderWithSettings;
 } // namespace rt::gpu::test
 
 #define RT_REQUIRE_GPU()                                                                                       \

@@ -30,18 +30,19 @@ constexpr ImGuiWindowFlags kPaneFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFla
 
 std::string describe(const Preview& p)
 {
-    const ImageSettings& s = p.request.image;
-    const RenderSettings r = s.renderSettings();
-    return fmt::format("{}  |  {}x{}  |  {} spp{}  |  depth {}  |  PDF {}  |  {}  |  {}", s.scene, r.width, r.height(),
-                       p.samples, p.request.loop || p.samples == r.trueSpp() ? "" : fmt::format(" of {}", r.trueSpp()),
-                       s.depth, s.pdf ? "on" : "off", samplingLabel(s.sampling), engineLabel(p.request.engine));
+    const RenderSettings& r = p.request.image.settings;
+    return fmt::format("{}  |  {}x{}  |  {} spp{}  |  depth {}  |  PDF {}  |  {}  |  {}", p.request.image.scene.id,
+                       r.width, r.height(), p.samples,
+                       p.request.loop || p.samples == r.trueSpp() ? "" : fmt::format(" of {}", r.trueSpp()), r.depth,
+                       r.estimator == Estimator::Mixture ? "on" : "off", samplingLabel(r.sampling),
+                       engineLabel(p.request.engine));
 }
 
 class GuiApp
 {
 public:
     /// `size` and `script`: the options' --window-size and --actions, parsed (and so checked) before.
-    GuiApp(const GuiOptions& options, WindowSize size, std::optional<ActionScript> script, const ImageSettings& initial,
+    GuiApp(const GuiOptions& options, WindowSize size, std::optional<ActionScript> script, const RenderRequest& initial,
            std::shared_ptr<const Scene> scene, EngineKind engine)
         : m_options(options),
           m_window(size.width, size.height, "ray-tracing-cpu: light-sampling lab"),
@@ -220,10 +221,9 @@ int runGui(const CommonOptions& options, const std::string& engineName, const Gu
     std::optional<ActionScript> script; // a typo fails here, before a window opens
     if (!gui.actions.empty())
         script.emplace(gui.actions);
-    auto scene = std::make_shared<const Scene>(makeScene(options.scene, options.sceneOptions()));
-    const ImageSettings initial =
-        ImageSettings::from(options.scene, options.sceneOptions(), resolveSettings(options, *scene));
-    GuiApp app(gui, size, std::move(script), initial, std::move(scene), *engine);
+    CommandLineRender job = resolveCommandLine(options);
+    const RenderRequest initial = job.request;
+    GuiApp app(gui, size, std::move(script), initial, std::make_shared<const Scene>(std::move(job.scene)), *engine);
     return app.run();
 }
 } // namespace rt::gui

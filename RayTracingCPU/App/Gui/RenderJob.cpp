@@ -28,13 +28,13 @@ Image combine(const Image& mean, int meanSamples, const Image& estimate, int sam
 }
 } // namespace
 
-RenderJob::RenderJob(const GpuStartup::Options& gpu, const ImageSettings& initial,
+RenderJob::RenderJob(const GpuStartup::Options& gpu, const RenderRequest& initial,
                      std::shared_ptr<const Scene> initialScene)
-    : m_gpu(gpu), m_scene(std::move(initialScene)), m_sceneKey(initial)
+    : m_gpu(gpu), m_scene(std::move(initialScene)), m_sceneKey(initial.scene)
 {
     m_slots[std::size_t(EngineKind::Single)].engine = &m_single;
     m_slots[std::size_t(EngineKind::Multi)].engine = &m_multi;
-    m_sceneDefaults[initial.scene] = m_scene->defaults;
+    m_sceneDefaults[initial.scene.id] = m_scene->defaults;
     m_worker = std::thread([this] { workerLoop(); });
 }
 
@@ -51,7 +51,7 @@ RenderJob::~RenderJob()
     m_worker.join();
 }
 
-void RenderJob::submit(const RenderRequest& request)
+void RenderJob::submit(const JobRequest& request)
 {
     {
         std::lock_guard lock(m_mutex);
@@ -121,7 +121,7 @@ void RenderJob::workerLoop()
         m_wake.wait(lock, [this] { return m_stop || m_pending.has_value(); });
         if (m_stop)
             return;
-        const RenderRequest request = std::move(*m_pending);
+        const JobRequest request = std::move(*m_pending);
         m_pending.reset();
         // Made under the lock that submit() and cancel() take, so a newer request always finds it to cancel.
         m_control = std::make_shared<RenderControl>();
@@ -135,7 +135,7 @@ void RenderJob::workerLoop()
     }
 }
 
-void RenderJob::run(const RenderRequest& request, std::shared_ptr<RenderControl> control)
+void RenderJob::run(const JobRequest& request, std::shared_ptr<RenderControl> control)
 {
     try
     {
@@ -146,7 +146,7 @@ void RenderJob::run(const RenderRequest& request, std::shared_ptr<RenderControl>
             return;
         }
         setPhase(JobPhase::BuildingScene);
-        const std::shared_ptr<const Scene> scene = sceneFor(request.image);
+        const std::shared_ptr<const Scene> scene = sceneFor(request.image.scene);
         EngineSlot& slot = m_slots[std::size_t(request.engine)];
         if (slot.scene != scene)
         {
@@ -161,12 +161,12 @@ void RenderJob::run(const RenderRequest& request, std::shared_ptr<RenderControl>
         int meanSamples = 0;
         for (int iteration = 0; control; ++iteration)
         {
-            RenderSettings settings = request.image.renderSettings();
-            settings.seed += static_cast<std::uint32_t>(iteration); // independent streams, wrapping is fine
+            RenderRequest iterationRequest = request.image;
+            iterationRequest.settings.seed += static_cast<std::uint32_t>(iteration); // independent streams, wrapping is fine
             setPhase(JobPhase::Rendering, iteration);
             control->setPreviewInterval(kPreviewInterval);
             const RenderResult result =
-                engine->render(settings, *control, [&](const Image& estimate, int samples) {
+                render(*engine, iterationRequest, *control, [&](const Image& estimate, int samples) {
                     if (samples <= 0)
                         return;
                     publish(request, combine(mean, meanSamples, estimate, samples), meanSamples + samples, false);
@@ -203,17 +203,17 @@ RenderEngine* RenderJob::engineFor(EngineKind kind, const RenderControl& control
     return nullptr;
 }
 
-std::shared_ptr<const Scene> RenderJob::sceneFor(const ImageSettings& image)
+std::shared_ptr<const Scene> RenderJob::sceneFor(const SceneRef& ref)
 {
-    if (m_scene && m_sceneKey.sameScene(image))
+    if (m_scene && m_sceneKey == ref)
         return m_scene;
-    auto scene = std::make_shared<const Scene>(makeScene(image.scene, image.sceneOptions()));
+    auto scene = std::make_shared<const Scene>(buildScene(ref));
     {
         std::lock_guard lock(m_mutex);
-        m_sceneDefaults[image.scene] = scene->defaults;
+        m_sceneDefaults[ref.id] = scene->defaults;
     }
     m_scene = scene;
-    m_sceneKey = image;
+    m_sceneKey = ref;
     return scene;
 }
 
@@ -224,7 +224,7 @@ void RenderJob::setPhase(JobPhase phase, int loopIteration)
     m_loopIteration = loopIteration;
 }
 
-void RenderJob::publish(const RenderRequest& request, Image estimate, int samples, bool complete,
+void RenderJob::publish(const JobRequest& request, Image estimate, int samples, bool complete,
                         std::optional<RenderOutcome> outcome)
 {
     auto preview = std::make_shared<Preview>();

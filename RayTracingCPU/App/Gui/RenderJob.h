@@ -19,14 +19,15 @@
 #include "App/Gui/PanelSettings.h"
 #include "Engine/CpuEngine.h"
 #include "Render/RenderControl.h"
+#include "Render/RenderDriver.h"
 #include "Render/RenderStats.h"
 #include "Scene/Scene.h"
 
 namespace rt::gui
 {
-struct RenderRequest
+struct JobRequest
 {
-    ImageSettings image;
+    RenderRequest image;
     EngineKind engine = EngineKind::Multi;
     bool loop = false; // loop rendering: when a render finishes, render again with the next seed and average
 };
@@ -35,7 +36,7 @@ struct RenderRequest
 struct Preview
 {
     std::uint64_t generation = 0; // grows with every preview published
-    RenderRequest request;
+    JobRequest request;
     int samples = 0; // samples per pixel in the estimate, every loop iteration together
     bool complete = false; // a render (or a loop iteration) finished; false for passes and cancelled renders
     Image linear; // linear radiance, for Save image
@@ -63,7 +64,7 @@ struct JobProgress
 /// What became of a request: one per finished render (each loop iteration), or its cancellation or failure.
 struct RenderOutcome
 {
-    RenderRequest request;
+    JobRequest request;
     std::optional<RenderStats> stats; // set when the render ran to the end
     bool cancelled = false;
     std::string error; // set when it failed
@@ -73,7 +74,7 @@ class RenderJob
 {
 public:
     /// `initialScene`, already built from `initial` (the command line's scene), is used rather than built again.
-    RenderJob(const GpuStartup::Options& gpu, const ImageSettings& initial, std::shared_ptr<const Scene> initialScene);
+    RenderJob(const GpuStartup::Options& gpu, const RenderRequest& initial, std::shared_ptr<const Scene> initialScene);
     /// Cancels the render in progress and joins the render thread (and the GPU engine's start).
     ~RenderJob();
     RenderJob(const RenderJob&) = delete;
@@ -81,7 +82,7 @@ public:
 
     /// Renders `request` once the render in progress has stopped: that one is cancelled, and a request that
     /// has not started yet is replaced (twenty quick scene switches render the last scene, once).
-    void submit(const RenderRequest& request);
+    void submit(const JobRequest& request);
     /// Cancels the render in progress and drops a waiting request.
     void cancel();
     /// Loop rendering of the request in progress; off stops after the current iteration. Returns false when
@@ -106,13 +107,13 @@ private:
     };
 
     void workerLoop();
-    void run(const RenderRequest& request, std::shared_ptr<RenderControl> control);
+    void run(const JobRequest& request, std::shared_ptr<RenderControl> control);
     /// The engine for `kind`, waiting for the GPU engine to start; nullptr when the wait was cancelled.
     RenderEngine* engineFor(EngineKind kind, const RenderControl& control);
-    std::shared_ptr<const Scene> sceneFor(const ImageSettings& image);
+    std::shared_ptr<const Scene> sceneFor(const SceneRef& ref);
     void setPhase(JobPhase phase, int loopIteration = 0);
     /// Publishes an estimate (and, when given, the outcome that goes with it) in one step.
-    void publish(const RenderRequest& request, Image estimate, int samples, bool complete,
+    void publish(const JobRequest& request, Image estimate, int samples, bool complete,
                  std::optional<RenderOutcome> outcome = {});
     void report(RenderOutcome outcome);
     /// After a finished loop iteration: the control of the next one, or nullptr when the loop must stop.
@@ -124,13 +125,13 @@ private:
     // Touched by the render thread only.
     std::array<EngineSlot, 3> m_slots; // by EngineKind
     std::shared_ptr<const Scene> m_scene; // the last scene built, for the next request of the same scene
-    ImageSettings m_sceneKey;
+    SceneRef m_sceneKey;
 
     mutable std::mutex m_mutex;
     std::condition_variable m_wake;
     bool m_stop = false;
     bool m_loop = false;
-    std::optional<RenderRequest> m_pending;
+    std::optional<JobRequest> m_pending;
     std::shared_ptr<RenderControl> m_control; // of the render in progress
     JobPhase m_phase = JobPhase::Idle;
     int m_loopIteration = 0;

@@ -12,16 +12,23 @@ namespace rt::gui
 {
 namespace
 {
-nlohmann::json toJson(const ImageSettings& s)
+nlohmann::json toJson(const RenderRequest& request)
 {
-    const RenderSettings r = s.renderSettings();
-    return {{"scene", s.scene},       {"count", s.count},
-            {"mesh", s.meshPath},     {"spp", s.spp},
-            {"true_spp", r.trueSpp()}, {"depth", s.depth},
-            {"width", s.width},       {"height", r.height()},
-            {"aspect", s.aspect},     {"sampling", toString(s.sampling)},
-            {"pdf", s.pdf},           {"unidirectional_light", s.unidirectionalLight},
-            {"seed", s.seed}};
+    const RenderSettings& r = request.settings;
+    return {{"scene", request.scene.id},
+            {"count", request.scene.options.count},
+            {"mesh", request.scene.options.meshPath},
+            {"spp", r.spp},
+            {"true_spp", r.trueSpp()},
+            {"depth", r.depth},
+            {"width", r.width},
+            {"height", r.height()},
+            {"aspect", r.aspect},
+            {"sampling", toString(r.sampling)},
+            {"estimator", toString(r.estimator)},
+            {"pdf", r.estimator == Estimator::Mixture},
+            {"unidirectional_light", r.unidirectionalLight},
+            {"seed", r.seed}};
 }
 
 const char* toString(GpuStartup::State state)
@@ -36,17 +43,17 @@ const char* toString(GpuStartup::State state)
 }
 } // namespace
 
-Session::Session(RenderJob& job, const ImageSettings& image, EngineKind engine, bool loop)
+Session::Session(RenderJob& job, const RenderRequest& image, EngineKind engine, bool loop)
     : m_job(job), m_image(image), m_engine(engine), m_loop(loop), m_gpu(job.gpuStatus())
 {
     render(); // the window opens on the command line's render
 }
 
-bool Session::tryImage(const ImageSettings& candidate)
+bool Session::tryImage(const RenderRequest& candidate)
 {
     try
     {
-        candidate.renderSettings().validate();
+        candidate.settings.validate();
     }
     catch (const Error& e)
     {
@@ -64,36 +71,36 @@ bool Session::setScene(const std::string& id)
         note(fmt::format("no scene '{}'", id), true);
         return false;
     }
-    ImageSettings s = m_image;
-    s.scene = id;
+    RenderRequest s = m_image;
+    s.scene.id = id;
     return tryImage(s);
 }
 
 bool Session::setSpp(int spp)
 {
-    ImageSettings s = m_image;
-    s.spp = spp;
+    RenderRequest s = m_image;
+    s.settings.spp = spp;
     return tryImage(s);
 }
 
 bool Session::setDepth(int depth)
 {
-    ImageSettings s = m_image;
-    s.depth = depth;
+    RenderRequest s = m_image;
+    s.settings.depth = depth;
     return tryImage(s);
 }
 
 bool Session::setWidth(int width)
 {
-    ImageSettings s = m_image;
-    s.width = width;
+    RenderRequest s = m_image;
+    s.settings.width = width;
     return tryImage(s);
 }
 
 bool Session::setAspect(float aspect)
 {
-    ImageSettings s = m_image;
-    s.aspect = aspect;
+    RenderRequest s = m_image;
+    s.settings.aspect = aspect;
     return tryImage(s);
 }
 
@@ -104,36 +111,36 @@ bool Session::setSeed(long long seed)
         note(fmt::format("seed must be in [0, 4294967295] (got {})", seed), true);
         return false;
     }
-    ImageSettings s = m_image;
-    s.seed = static_cast<std::uint32_t>(seed);
+    RenderRequest s = m_image;
+    s.settings.seed = static_cast<std::uint32_t>(seed);
     return tryImage(s);
 }
 
 bool Session::setCount(int count)
 {
-    ImageSettings s = m_image;
-    s.count = count < 0 ? -1 : count;
+    RenderRequest s = m_image;
+    s.scene.options.count = count < 0 ? -1 : count;
     return tryImage(s);
 }
 
-void Session::setSampling(PixelSampling sampling) { m_image.sampling = sampling; }
-void Session::setPdf(bool on) { m_image.pdf = on; }
-void Session::setUnidirectionalLight(bool on) { m_image.unidirectionalLight = on; }
+void Session::setSampling(PixelSampling sampling) { m_image.settings.sampling = sampling; }
+void Session::setPdf(bool on) { m_image.settings.estimator = on ? Estimator::Mixture : Estimator::BsdfOnly; }
+void Session::setUnidirectionalLight(bool on) { m_image.settings.unidirectionalLight = on; }
 
 bool Session::applySceneDefaults()
 {
-    const std::optional<SceneDefaults> d = m_job.sceneDefaults(m_image.scene);
+    const std::optional<SceneDefaults> d = m_job.sceneDefaults(m_image.scene.id);
     if (!d)
     {
         note("the scene's defaults are known once it has been built: render it first", true);
         return false;
     }
-    ImageSettings s = m_image;
-    s.spp = d->spp;
-    s.depth = d->depth;
-    s.width = d->width;
-    s.aspect = d->aspect;
-    s.unidirectionalLight = d->unidirectionalLight;
+    RenderRequest s = m_image;
+    s.settings.spp = d->spp;
+    s.settings.depth = d->depth;
+    s.settings.width = d->width;
+    s.settings.aspect = d->aspect;
+    s.settings.unidirectionalLight = d->unidirectionalLight;
     return tryImage(s);
 }
 
@@ -193,9 +200,9 @@ bool Session::saveImage(const std::filesystem::path& png)
 
 std::string Session::suggestedImageName() const
 {
-    const ImageSettings& s = m_preview ? m_preview->request.image : m_image;
-    const RenderSettings r = s.renderSettings();
-    return fmt::format("{}_{}x{}_{}spp_{}.png", s.scene, r.width, r.height(), m_preview ? m_preview->samples : r.trueSpp(),
+    const RenderRequest& s = m_preview ? m_preview->request.image : m_image;
+    const RenderSettings& r = s.settings;
+    return fmt::format("{}_{}x{}_{}spp_{}.png", s.scene.id, r.width, r.height(), m_preview ? m_preview->samples : r.trueSpp(),
                        toString(m_preview ? m_preview->request.engine : m_engine));
 }
 
@@ -217,7 +224,7 @@ void Session::update()
     {
         if (outcome.stats)
         {
-            m_timings.record(outcome.request.image, *outcome.stats);
+            m_timings.record(*outcome.stats);
             ++m_finished;
             m_lastFinished = std::move(outcome);
         }

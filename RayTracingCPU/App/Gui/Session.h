@@ -21,7 +21,7 @@ class Session
 {
 public:
     /// Starts rendering `image` with `engine` at once.
-    Session(RenderJob& job, const ImageSettings& image, EngineKind engine, bool loop);
+    Session(RenderJob& job, const RenderRequest& image, EngineKind engine, bool loop);
 
     // Image settings. Each returns false, with message(), for a value the engines would refuse.
     bool setScene(const std::string& id);
@@ -58,7 +58,7 @@ public:
     /// the render thread's outcomes and newest preview.
     void update();
 
-    const ImageSettings& image() const { return m_image; }
+    const RenderRequest& image() const { return m_image; }
     EngineKind engine() const { return m_engine; }
     bool loop() const { return m_loop; }
     const DisplaySettings& display() const { return m_display; }
@@ -79,15 +79,15 @@ public:
     nlohmann::json stateJson() const;
 
 private:
-    bool tryImage(const ImageSettings& candidate);
+    bool tryImage(const RenderRequest& candidate);
     void note(std::string text, bool error);
 
     RenderJob& m_job;
-    ImageSettings m_image;
+    RenderRequest m_image;
     EngineKind m_engine;
     bool m_loop;
     DisplaySettings m_display;
-    std::optional<ImageSettings> m_requested; // the image settings of the last request
+    std::optional<RenderRequest> m_requested; // the image settings of the last request
     JobProgress m_progress;
     GpuStartup::Status m_gpu;
     std::shared_ptr<const Preview> m_preview;

@@ -85,13 +85,14 @@ void SettingsPanel::drawUiParameters(Session& session)
 
 void SettingsPanel::drawRenderingParameters(Session& session)
 {
-    const ImageSettings& s = session.image();
-    const SceneInfo* current = findScene(s.scene);
-    if (ImGui::BeginCombo("Scene", s.scene.c_str(), ImGuiComboFlags_HeightLarge))
+    const RenderRequest& request = session.image();
+    const RenderSettings& s = request.settings;
+    const SceneInfo* current = findScene(request.scene.id);
+    if (ImGui::BeginCombo("Scene", request.scene.id.c_str(), ImGuiComboFlags_HeightLarge))
     {
         for (const SceneInfo& info : sceneCatalogue())
         {
-            if (ImGui::Selectable(info.id.c_str(), info.id == s.scene))
+            if (ImGui::Selectable(info.id.c_str(), info.id == request.scene.id))
                 session.setScene(info.id);
             ImGui::SameLine(ImGui::GetFontSize() * 12.0f);
             ImGui::TextDisabled("%s", info.title.c_str());
@@ -111,7 +112,7 @@ void SettingsPanel::drawRenderingParameters(Session& session)
     int spp = s.spp;
     if (ImGui::InputInt("Samples per pixel", &spp, 1, 10, kApplyOnEnter))
         session.setSpp(spp);
-    if (const int trueSpp = s.renderSettings().trueSpp(); trueSpp != s.spp)
+    if (const int trueSpp = s.trueSpp(); trueSpp != s.spp)
         ImGui::TextDisabled("stratified: a square number of strata, %d true spp", trueSpp);
     int depth = s.depth;
     if (ImGui::InputInt("Ray-tracing depth", &depth, 1, 10, kApplyOnEnter))
@@ -122,16 +123,16 @@ void SettingsPanel::drawRenderingParameters(Session& session)
     int width = s.width;
     if (ImGui::InputInt("Image width", &width, 16, 128, kApplyOnEnter))
         session.setWidth(width);
-    ImGui::TextDisabled("%d x %d pixels", s.width, s.renderSettings().height());
+    ImGui::TextDisabled("%d x %d pixels", s.width, s.height());
     for (const auto& [label, value] : {std::pair{"1:1", 1.0f}, {"4:3", 4.0f / 3.0f}, {"16:9", 16.0f / 9.0f}})
     {
         ImGui::SameLine();
         if (ImGui::SmallButton(label))
             session.setAspect(value);
     }
-    if (s.scene == "white-spheres")
+    if (request.scene.id == "white-spheres")
     {
-        int count = s.count;
+        int count = request.scene.options.count;
         if (ImGui::InputInt("Spheres", &count, 100, 1000, kApplyOnEnter))
             session.setCount(count);
         tooltip("number of white spheres (-1: the scene's default)");
@@ -149,7 +150,7 @@ void SettingsPanel::drawRenderingParameters(Session& session)
     }
     tooltip("normal: spp jittered samples per pixel in one pass; accumulation: 1-spp passes shown as they "
             "finish; stratified: floor(sqrt(spp))^2 jittered strata");
-    bool pdf = s.pdf;
+    bool pdf = s.estimator == Estimator::Mixture;
     if (ImGui::Checkbox("Probability density function", &pdf))
         session.setPdf(pdf);
     tooltip("on: book 3's mixture of BSDF sampling and light sampling over the scene's light list; "
@@ -239,7 +240,7 @@ void SettingsPanel::drawRenderControls(Session& session)
         ImGui::Text("Last render: %.3f s", st.renderSeconds);
         ImGui::PushTextWrapPos(0.0f);
         ImGui::TextDisabled("%s, %s, %dx%d, %d spp, %.2f Mpaths/s, scene build %.3f s", engineLabel(st.engine),
-                            st.scene.c_str(), st.width, st.height, st.trueSpp, st.mpathsPerSecond(), st.buildSeconds);
+                            st.request.scene.id.c_str(), st.width, st.height, st.trueSpp, st.mpathsPerSecond(), st.buildSeconds);
         ImGui::PopTextWrapPos();
     }
     else

@@ -4,17 +4,17 @@
 
 namespace rt::gui
 {
-void TimingsTable::record(const ImageSettings& image, const RenderStats& stats)
+void TimingsTable::record(const RenderStats& stats)
 {
-    const TimingKey key{.scene = stats.scene,
-                        .count = image.count,
+    const RenderSettings& s = stats.request.settings;
+    const TimingKey key{.scene = stats.request.scene,
                         .width = stats.width,
                         .height = stats.height,
                         .spp = stats.trueSpp,
-                        .depth = stats.settings.depth,
-                        .sampling = stats.settings.sampling,
-                        .pdf = stats.settings.estimator == Estimator::Mixture,
-                        .unidirectionalLight = stats.settings.unidirectionalLight};
+                        .depth = s.depth,
+                        .sampling = s.sampling,
+                        .estimator = s.estimator,
+                        .unidirectionalLight = s.unidirectionalLight};
     auto row = std::find_if(m_rows.begin(), m_rows.end(), [&](const TimingRow& r) { return r.key == key; });
     if (row == m_rows.end())
         row = m_rows.insert(m_rows.end(), TimingRow{.key = key});
@@ -35,14 +35,16 @@ nlohmann::json TimingsTable::toJson() const
     for (const TimingRow& row : m_rows)
         for (std::size_t e = 0; e < row.engines.size(); ++e)
             if (const auto& cell = row.engines[e])
-                out.push_back({{"scene", row.key.scene},
-                               {"count", row.key.count},
+                out.push_back({{"scene", row.key.scene.id},
+                               {"count", row.key.scene.options.count},
+                               {"mesh", row.key.scene.options.meshPath},
                                {"width", row.key.width},
                                {"height", row.key.height},
                                {"spp", row.key.spp},
                                {"depth", row.key.depth},
                                {"sampling", toString(row.key.sampling)},
-                               {"pdf", row.key.pdf},
+                               {"estimator", toString(row.key.estimator)},
+                               {"pdf", row.key.estimator == Estimator::Mixture},
                                {"unidirectional_light", row.key.unidirectionalLight},
                                {"engine", toString(EngineKind(e))},
                                {"seconds", cell->lastSeconds},

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <array>
-#include <compare>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,23 +11,25 @@
 #include <nlohmann/json.hpp>
 
 #include "App/Gui/PanelSettings.h"
+#include "Render/RenderRequest.h"
 #include "Render/RenderStats.h"
 
 namespace rt::gui
 {
+/// A render's request but its seed (loop rendering's iterations differ by seed only) and spp (the true spp
+/// counts: stratified sampling rounds down).
 struct TimingKey
 {
-    std::string scene;
-    int count = -1; // white-spheres' sphere count
+    SceneRef scene;
     int width = 0;
     int height = 0;
     int spp = 0; // true samples per pixel
     int depth = 0;
     PixelSampling sampling = PixelSampling::Random;
-    bool pdf = true;
+    Estimator estimator = Estimator::Mixture;
     bool unidirectionalLight = true;
 
-    auto operator<=>(const TimingKey&) const = default;
+    bool operator==(const TimingKey&) const = default;
 };
 
 struct EngineTiming
@@ -49,13 +50,13 @@ struct TimingRow
 class TimingsTable
 {
 public:
-    /// Adds a finished render (`image`: the panel settings it was rendered with).
-    void record(const ImageSettings& image, const RenderStats& stats);
+    /// Adds a finished render.
+    void record(const RenderStats& stats);
     void clear() { m_rows.clear(); }
     /// In the order their first render finished.
     const std::vector<TimingRow>& rows() const { return m_rows; }
-    /// One object per (row, engine): scene, width, height, spp, depth, sampling, pdf, unidirectional_light,
-    /// engine, seconds, best_seconds, mpaths_per_second, renders, device.
+    /// One object per (row, engine): scene, count, mesh, width, height, spp, depth, sampling, estimator, pdf,
+    /// unidirectional_light, engine, seconds, best_seconds, mpaths_per_second, renders, device.
     nlohmann::json toJson() const;
 
 private:

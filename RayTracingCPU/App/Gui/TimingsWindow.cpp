@@ -51,7 +51,7 @@ void drawTimings(Session& session)
     {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(row.key.scene.c_str());
+        ImGui::TextUnformatted(row.key.scene.id.c_str());
         ImGui::TableNextColumn();
         ImGui::Text("%dx%d", row.key.width, row.key.height);
         ImGui::TableNextColumn();
@@ -59,7 +59,7 @@ void drawTimings(Session& session)
         ImGui::TableNextColumn();
         ImGui::Text("%d", row.key.depth);
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(row.key.pdf ? "on" : "off");
+        ImGui::TextUnformatted(row.key.estimator == Estimator::Mixture ? "on" : "off");
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(samplingLabel(row.key.sampling));
 

@@ -1,0 +1,81 @@
+#include "Render/RenderDriver.h"
+
+#include <chrono>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "Check.h"
+#include "Error.h"
+#include "Render/BatchPlan.h"
+
+namespace rt
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+} // namespace
+
+RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderControl& control,
+                    const PreviewCallback& preview)
+{
+    const Clock::time_point wallStart = Clock::now();
+    const RenderSettings& settings = request.settings;
+    settings.validate();
+    const Scene* scene = engine.scene();
+    if (!scene)
+        throw UsageError(fmt::format("the {} engine was asked to render before it was given a scene",
+                                     toString(engine.kind())));
+    RT_CHECK_EQ(scene->id, request.scene.id); // the request names the scene the engine holds
+    engine.beginFrame(settings);
+
+    const int width = settings.width;
+    const int height = settings.height();
+    const auto totalSamples = static_cast<std::uint32_t>(settings.trueSpp());
+    const BatchPlan plan = planBatches(totalSamples, std::uint64_t(width) * std::uint64_t(height),
+                                       engine.pathsPerBatch(), settings.sampling == PixelSampling::Accumulate);
+    control.begin(plan.batchCount);
+
+    std::uint32_t samplesDone = 0;
+    double deviceSeconds = 0.0;
+    bool deviceTimed = true;
+    const Clock::time_point renderStart = Clock::now();
+    for (std::uint32_t batch = 0; batch < plan.batchCount && !control.cancelRequested(); ++batch)
+    {
+        const std::uint32_t samples = plan.samplesIn(batch, totalSamples);
+        RT_DCHECK_GT(samples, 0u);
+        const double seconds = engine.traceSamples(samplesDone, samples);
+        deviceTimed = deviceTimed && seconds >= 0.0;
+        deviceSeconds += seconds;
+        samplesDone += samples;
+        control.advance();
+        if (preview && control.previewDue())
+            preview(engine.estimate(samplesDone), static_cast<int>(samplesDone));
+    }
+    const double renderSeconds = secondsSince(renderStart);
+    RT_CHECK(control.cancelRequested() || samplesDone == totalSamples);
+
+    RenderResult result;
+    result.image = samplesDone > 0 ? engine.estimate(samplesDone) : Image(width, height);
+    const SampleTally tally = engine.tally();
+    RenderStats& st = result.stats;
+    st.request = request;
+    st.engine = engine.kind();
+    st.device = engine.deviceName();
+    st.width = width;
+    st.height = height;
+    st.trueSpp = static_cast<int>(samplesDone);
+    st.buildSeconds = engine.buildSeconds();
+    st.renderSeconds = renderSeconds;
+    st.gpuSeconds = deviceTimed ? deviceSeconds : -1.0;
+    st.paths = std::uint64_t(width) * std::uint64_t(height) * samplesDone;
+    st.segments = tally.segments;
+    st.nanSamples = tally.nanSamples;
+    st.infSamples = tally.infSamples;
+    st.threadsUsed = tally.threadsUsed;
+    st.cancelled = control.cancelRequested();
+    st.wallSeconds = secondsSince(wallStart) + st.buildSeconds; // the build belongs to the render's cost
+    return result;
+}
+} // namespace rt

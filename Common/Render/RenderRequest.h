@@ -1,0 +1,38 @@
+// The one settings record of a render: which scene (catalogue id and the options it is built with) and how
+// to render it. The command line resolves one (Cli/CommonOptions.h), both windows edit one, the render driver
+// takes one and the stats report it, --compare varies it. The defaulted operator== compares every field, so a
+// field added later takes part in every "is this the same render?" check (the windows' staleness, the
+// timings table) without anyone remembering to add it.
+#pragma once
+
+#include <string>
+
+#include "Render/RenderSettings.h"
+#include "Scenes/Catalogue.h"
+
+namespace rt
+{
+/// A scene as the catalogue builds it: equal references build equal scenes.
+struct SceneRef
+{
+    std::string id = "cornell-box-lights";
+    SceneOptions options;
+
+    bool operator==(const SceneRef&) const = default;
+};
+
+struct RenderRequest
+{
+    SceneRef scene;
+    RenderSettings settings;
+
+    bool operator==(const RenderRequest&) const = default;
+};
+
+/// Builds the scene `ref` names. Throws SceneError (unknown id), AssetError (missing mesh or texture).
+Scene buildScene(const SceneRef& ref);
+
+/// The request for `ref` with the built scene's own defaults (spp, depth, size, emitter sidedness); the
+/// rest are RenderSettings' defaults.
+RenderRequest defaultRequest(const SceneRef& ref, const Scene& scene);
+} // namespace rt
