@@ -77,28 +77,23 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
     rt::gpu::gui::WindowOptions w;
     w.actions = rt::gpu::gui::parseActions(flags.actions);
     rt::CommandLineRender job = rt::resolveCommandLine(options);
-    rt::Scene& scene = job.scene;
     const rt::RenderSettings& settings = job.request.settings;
     rt::gpu::gui::ImageSettings& image = w.initial.image;
-    image.scene = scene.id;
-    image.camera = scene.camera;
-    image.size = {settings.width, settings.height()};
+    image.request = job.request;
+    image.request.settings.sampling = rt::PixelSampling::Accumulate;
+    image.camera = job.scene.camera;
+    image.setSize({settings.width, settings.height()});
     image.rayTracing = onOff(flags.rayTracing, "--raytracing");
     image.accumulate = onOff(flags.accumulate, "--accumulate");
     image.heatmap = onOff(flags.heatmap, "--heatmap");
-    image.depth = settings.depth;
-    image.pdf = settings.estimator == rt::Estimator::Mixture;
-    image.unidirectionalLight = settings.unidirectionalLight;
-    image.seed = settings.seed;
     w.initial.display.samplesPerFrame = flags.samplesPerFrame;
     w.initial.display.targetSpp = options.spp.value_or(0); // the scene's default spp is no reason to stop
-    w.sceneOptions = job.request.scene.options;
     w.deviceIndex = device;
     w.validation = validation;
     w.frames = flags.frames;
     w.screenshot = flags.screenshot;
     w.savePath = options.output.empty() ? "ray-tracing-gpu.png" : options.output;
-    return rt::gpu::gui::runWindow(w, std::move(scene));
+    return rt::gpu::gui::runWindow(w, std::move(job.scene));
 }
 #else
 struct WindowFlags

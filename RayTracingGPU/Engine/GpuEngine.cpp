@@ -2,15 +2,12 @@
 
 #include "Assets/AssetPaths.h"
 #include "Engine/GpuContext.h"
-#include "Engine/GpuScene.h"
-#include "Engine/PathTracingPipeline.h"
 #include "Engine/RenderLimits.h"
 #include "Engine/RenderTarget.h"
-#include "Engine/Uniforms.h"
+#include "Engine/SceneTracer.h"
 #include "Error.h"
 #include "Vulkan/Barriers.h"
 #include "Vulkan/CommandBuffer.h"
-#include "Vulkan/DescriptorPool.h"
 #include "Vulkan/QueryPool.h"
 
 namespace rt::gpu
@@ -28,22 +25,16 @@ TargetLimits targetLimits(const vk::Device& device)
 struct GpuEngine::Impl
 {
     GpuContext context;
-    std::filesystem::path shaderDir;
-    PathTracingPipeline pipeline;
+    SceneTracer tracer;
     vk::QueryPool timestamps;
     std::uint64_t pathsPerBatch;
-    const Scene* sceneDesc = nullptr;
-    std::unique_ptr<GpuScene> scene;
-    double buildSeconds = 0.0;
     std::unique_ptr<RenderTarget> target;
-
-    vk::DescriptorPool descriptorPool;
-    VkDescriptorSet descriptorSet = VK_NULL_HANDLE;
+    TracingDescriptors descriptors; // the scene and the target; empty after setScene
 
     explicit Impl(const GpuEngineOptions& options)
         : context({options.deviceIndex, options.validation, options.presentation}),
-          shaderDir(options.shaderDir.empty() ? executableDir() / "shaders" : options.shaderDir),
-          pipeline(context.device(), shaderDir),
+          tracer(context.device(), context.commandPool(),
+                 options.shaderDir.empty() ? executableDir() / "shaders" : options.shaderDir),
           timestamps(context.device(), 2),
           pathsPerBatch(options.pathsPerBatch > 0 ? options.pathsPerBatch
                         : context.device().properties().type == vk::DeviceType::Cpu ? kPathsPerBatchCpu
@@ -58,19 +49,15 @@ struct GpuEngine::Impl
     void prepareTarget(std::uint32_t width, std::uint32_t height)
     {
         const bool resized = !target || target->width() != width || target->height() != height;
-        if (!resized && descriptorSet != VK_NULL_HANDLE)
+        if (!resized && descriptors.set != VK_NULL_HANDLE)
             return;
-        descriptorPool = vk::DescriptorPool(); // its set names the old target or the old scene
-        descriptorSet = VK_NULL_HANDLE;
+        descriptors = {}; // its set names the old target or the old scene
         if (resized)
         {
             target.reset();
             target = std::make_unique<RenderTarget>(device(), width, height);
         }
-        const auto imageCount = static_cast<std::uint32_t>(scene->imageViews().size());
-        descriptorPool = vk::DescriptorPool(device(), pipeline.bindings(), imageCount);
-        descriptorSet = descriptorPool.allocate(pipeline.setLayout(), imageCount);
-        pipeline.writeDescriptors(device(), descriptorSet, *scene, target->bindings());
+        descriptors = tracer.makeDescriptors(target->bindings());
     }
 
     /// Records and runs one dispatch: `samples` samples per pixel from `firstSample` on.
@@ -84,8 +71,7 @@ struct GpuEngine::Impl
                 vkCmdResetQueryPool(cmd, timestamps.Handle(), 0, 2);
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps.Handle(), 0);
             }
-            pipeline.recordLaunch(cmd, {&descriptorSet, 1}, firstSample, samples, {target->width(), target->height()},
-                                  scene->samplesPerLaunch());
+            tracer.recordLaunch(cmd, {&descriptors.set, 1}, firstSample, samples, {target->width(), target->height()});
             if (timed)
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 1);
             vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
@@ -122,48 +108,31 @@ std::shared_ptr<const vk::ValidationLog> GpuEngine::validationLog() const
     return m_impl->context.instance().validationLog();
 }
 
-const PathTracingPipeline& GpuEngine::pipeline() const { return m_impl->pipeline; }
+const SceneTracer& GpuEngine::tracer() const { return m_impl->tracer; }
 
-const std::filesystem::path& GpuEngine::shaderDir() const { return m_impl->shaderDir; }
+const Scene* GpuEngine::scene() const { return m_impl->tracer.scene(); }
 
-const GpuScene& GpuEngine::gpuScene() const
-{
-    if (!m_impl->scene)
-        throw UsageError("GpuEngine::gpuScene called before setScene");
-    return *m_impl->scene;
-}
-
-const Scene* GpuEngine::scene() const { return m_impl->sceneDesc; }
-
-double GpuEngine::buildSeconds() const { return m_impl->buildSeconds; }
+double GpuEngine::buildSeconds() const { return m_impl->tracer.buildSeconds(); }
 
 std::uint64_t GpuEngine::pathsPerBatch() const { return m_impl->pathsPerBatch; }
 
 double GpuEngine::setScene(const Scene& scene)
 {
-    Impl& e = *m_impl;
-    scene.validate();
-    e.descriptorPool = vk::DescriptorPool();
-    e.descriptorSet = VK_NULL_HANDLE;
-    e.scene.reset();
-    e.sceneDesc = nullptr;
-    e.scene = std::make_unique<GpuScene>(e.device(), e.context.commandPool(), scene, e.pipeline.maxImages());
-    e.sceneDesc = &scene;
-    e.buildSeconds = e.scene->buildSeconds();
-    return e.buildSeconds;
+    m_impl->descriptors = {};
+    return m_impl->tracer.setScene(scene);
 }
 
 void GpuEngine::beginFrame(const RenderSettings& settings)
 {
     Impl& e = *m_impl;
-    if (!e.scene)
+    if (!e.tracer.scene())
         throw UsageError("GpuEngine::beginFrame called before setScene");
     const auto width = static_cast<std::uint32_t>(settings.width);
     const auto height = static_cast<std::uint32_t>(settings.height());
     if (const auto problem = checkTargetLimits(width, height, targetLimits(e.device())))
         throw DeviceError(*problem);
     e.prepareTarget(width, height);
-    e.target->reset(makeUniforms(*e.sceneDesc, e.sceneDesc->camera, settings, width, height, e.scene->lightCount()));
+    e.target->reset(e.tracer.uniforms(e.tracer.scene()->camera, settings, {width, height}));
     e.clear();
 }
 

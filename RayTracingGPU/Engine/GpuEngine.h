@@ -16,8 +16,7 @@
 
 namespace rt::gpu
 {
-class GpuScene;
-class PathTracingPipeline;
+class SceneTracer;
 
 struct GpuEngineOptions
 {
@@ -71,13 +70,9 @@ public:
     /// is destroyed). Null without validation.
     std::shared_ptr<const vk::ValidationLog> validationLog() const;
 
-    // Interactive rendering (ProgressiveRenderer, RasterPreview: the window) records its own command buffers
-    // with the engine's pipeline and scene, and passes its camera through makeUniforms (Uniforms.h).
-    const PathTracingPipeline& pipeline() const;
-    /// Where the SPIR-V files are (the window's pipelines load theirs from there too).
-    const std::filesystem::path& shaderDir() const;
-    /// The scene set last, on the device. Throws rt::UsageError before setScene.
-    const GpuScene& gpuScene() const;
+    /// The pipeline and the scene on the device, for tracing into images of one's own (the window's
+    /// ProgressiveRenderer records its frames with it).
+    const SceneTracer& tracer() const;
 
 private:
     struct Impl;

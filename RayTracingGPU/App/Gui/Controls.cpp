@@ -24,9 +24,12 @@ void Controls::setAutoCostScale(bool on) { m_state->display.autoCostScale = on; 
 void Controls::setCostScale(float ticksPerSample) { m_state->display.costScale = std::max(ticksPerSample, 1.0f); }
 void Controls::setSamplesPerFrame(int samples) { m_state->display.samplesPerFrame = std::clamp(samples, 1, kMaxSamplesPerFrame); }
 void Controls::setTargetSpp(int spp) { m_state->display.targetSpp = std::max(spp, 0); }
-void Controls::setDepth(int depth) { m_state->image.depth = std::max(depth, 1); }
-void Controls::setPdf(bool on) { m_state->image.pdf = on; }
-void Controls::setUnidirectionalLight(bool on) { m_state->image.unidirectionalLight = on; }
+void Controls::setDepth(int depth) { m_state->image.request.settings.depth = std::max(depth, 1); }
+void Controls::setPdf(bool on)
+{
+    m_state->image.request.settings.estimator = on ? Estimator::Mixture : Estimator::BsdfOnly;
+}
+void Controls::setUnidirectionalLight(bool on) { m_state->image.request.settings.unidirectionalLight = on; }
 void Controls::setFov(float degrees) { m_state->image.camera = withFov(m_state->image.camera, degrees); }
 void Controls::setAperture(float diameter) { m_state->image.camera = withAperture(m_state->image.camera, diameter); }
 

@@ -19,11 +19,11 @@ ImU32 displayColor(const vec3& linear)
 
 void sceneSection(Controls& controls, const WindowState& state, const PanelInfo& info)
 {
-    const SceneInfo* current = findScene(state.image.scene);
-    if (ImGui::BeginCombo("Scene", current ? current->title.c_str() : state.image.scene.c_str()))
+    const SceneInfo* current = findScene(state.image.request.scene.id);
+    if (ImGui::BeginCombo("Scene", current ? current->title.c_str() : state.image.request.scene.id.c_str()))
     {
         for (const SceneInfo& scene : sceneCatalogue())
-            if (ImGui::Selectable(scene.title.c_str(), scene.id == state.image.scene))
+            if (ImGui::Selectable(scene.title.c_str(), scene.id == state.image.request.scene.id))
                 controls.selectScene(scene.id);
         ImGui::EndCombo();
     }
@@ -45,11 +45,11 @@ void rayTracingSection(Controls& controls, const WindowState& state)
         controls.setTargetSpp(spp);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Tracing stops at this many samples per pixel; 0: never");
-    if (int depth = image.depth; ImGui::SliderInt("Depth", &depth, 1, 100))
+    if (int depth = image.request.settings.depth; ImGui::SliderInt("Depth", &depth, 1, 100))
         controls.setDepth(depth);
-    if (bool on = image.pdf; ImGui::Checkbox("Light sampling (PDF)", &on))
+    if (bool on = image.request.settings.estimator == Estimator::Mixture; ImGui::Checkbox("Light sampling (PDF)", &on))
         controls.setPdf(on);
-    if (bool on = image.unidirectionalLight; ImGui::Checkbox("Unidirectional light", &on))
+    if (bool on = image.request.settings.unidirectionalLight; ImGui::Checkbox("Unidirectional light", &on))
         controls.setUnidirectionalLight(on);
 }
 
@@ -106,7 +106,7 @@ void statsSection(const WindowState& state, const PanelInfo& info)
         ImGui::Text("%d / %d spp accumulated", info.accumulatedSpp, state.display.targetSpp);
     else
         ImGui::Text("%d spp accumulated", info.accumulatedSpp);
-    ImGui::Text("%d x %d, depth %d", info.size.width, info.size.height, state.image.depth);
+    ImGui::Text("%d x %d, depth %d", info.size.width, info.size.height, state.image.request.settings.depth);
     ImGui::TextWrapped("%s", info.device.c_str());
 }
 

@@ -16,8 +16,9 @@
 #include "App/Gui/Presenter.h"
 #include "App/Gui/Throughput.h"
 #include "App/Gui/Window.h"
-#include "Engine/ProgressiveRenderer.h"
-#include "Engine/RasterPreview.h"
+#include "App/Gui/ProgressiveRenderer.h"
+#include "App/Gui/RasterPreview.h"
+#include "Engine/SceneTracer.h"
 #include "Error.h"
 #include "Image/ImageIO.h"
 
@@ -47,8 +48,8 @@ public:
           m_scene(std::make_unique<Scene>(std::move(scene))),
           m_presenter(m_engine.context(), window.framebufferSize()),
           m_renderer(m_engine, kFramesInFlight),
-          m_preview(m_engine.context().device(), m_engine.shaderDir(), m_presenter.renderPass()),
-          m_display(m_engine.context().device(), m_engine.shaderDir(), m_presenter.renderPass()),
+          m_preview(m_engine.context().device(), m_engine.tracer().shaderDir(), m_presenter.renderPass()),
+          m_display(m_engine.context().device(), m_engine.tracer().shaderDir(), m_presenter.renderPass()),
           m_imgui(m_engine.context(), window.handle(), m_presenter.renderPass(), kFramesInFlight),
           m_state(options.initial), m_controls(m_state)
     {
@@ -118,7 +119,7 @@ private:
         m_engine.setScene(scene);
         m_preview.setScene(scene, m_engine.context().commandPool());
         prepareImages(m_renderer.extent().width > 0 ? m_renderer.extent() : VkExtent2D{1, 1});
-        m_state.image.scene = scene.id;
+        m_state.image.request.scene.id = scene.id;
         m_state.sceneCamera = scene.camera;
         m_state.image.camera = scene.camera;
         m_state.cameraSpeed = movementSpeed(scene.camera);
@@ -138,9 +139,8 @@ private:
             return; // one build at a time; a newer request waits for it
         m_loadingId = *m_state.sceneRequest;
         m_state.sceneRequest.reset();
-        m_loading = std::async(std::launch::async, [id = m_loadingId, options = m_options.sceneOptions] {
-            return makeScene(id, options);
-        });
+        const SceneRef ref{.id = m_loadingId, .options = m_state.image.request.scene.options};
+        m_loading = std::async(std::launch::async, [ref] { return buildScene(ref); });
     }
 
     void finishSceneBuild()
@@ -272,7 +272,7 @@ private:
             m_presenter.waitIdle();
             prepareImages(frame->extent);
         }
-        m_state.image.size = {static_cast<int>(frame->extent.width), static_cast<int>(frame->extent.height)};
+        m_state.image.setSize({static_cast<int>(frame->extent.width), static_cast<int>(frame->extent.height)});
         if (const CostSummary cost = m_renderer.takeCostSummary(frame->slot); cost.max > 0.0f)
             m_cost = cost;
 
@@ -329,10 +329,7 @@ private:
             count = std::min(count, target > m_accumulatedSpp ? target - m_accumulatedSpp : 0u);
         }
         FrameRequest request;
-        request.settings.depth = m_state.image.depth;
-        request.settings.estimator = m_state.image.pdf ? Estimator::Mixture : Estimator::BsdfOnly;
-        request.settings.unidirectionalLight = m_state.image.unidirectionalLight;
-        request.settings.seed = m_state.image.seed;
+        request.settings = m_state.image.request.settings;
         request.camera = m_state.image.camera;
         request.cost = m_state.image.heatmap;
         m_renderer.recordSamples(cmd, frame.slot, request, m_nextSample, count);

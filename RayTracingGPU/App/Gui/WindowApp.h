@@ -22,8 +22,7 @@ namespace rt::gpu::gui
 {
 struct WindowOptions
 {
-    WindowState initial; // settings from the command line; image.scene is `scene`'s id, image.size the window's
-    SceneOptions sceneOptions;
+    WindowState initial; // settings from the command line; image.request names `scene`, image.size the window's
     std::optional<int> deviceIndex;
     bool validation = false;
     std::optional<int> frames; // run this many frames after the actions, then stop

@@ -4,12 +4,12 @@
 // how fast the image converges or how the window looks.
 #pragma once
 
-#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "Render/RenderRequest.h"
 #include "Scene/Camera.h"
 
 namespace rt::gpu::gui
@@ -24,18 +24,29 @@ struct Extent
 
 struct ImageSettings
 {
-    std::string scene; // catalogue id of the scene on the device
+    /// The scene on the device (id and options) and the settings of its samples: depth, estimator, emitter
+    /// sidedness, seed. The window traces progressively (sampling: accumulate) and its image is the
+    /// framebuffer: width and aspect follow `size` (withSize); the samples to stop at are DisplaySettings'.
+    RenderRequest request;
     CameraDesc camera; // the interactive camera: the scene's, moved, turned and zoomed
     Extent size;
     bool rayTracing = true; // off: the rasterised preview
     bool accumulate = true; // off: every frame starts a new image of samplesPerFrame samples
     bool heatmap = false; // cost per pixel instead of radiance (needs the shader clock)
-    int depth = 50; // path segments at most
-    bool pdf = true; // book 3's mixture estimator; off: BSDF sampling only
-    bool unidirectionalLight = true;
-    std::uint32_t seed = 0;
 
     bool operator==(const ImageSettings&) const = default;
+
+    /// These settings for an image of `extent`: size, and the request's width and aspect (a 0 x 0 window
+    /// keeps the request's).
+    void setSize(Extent extent)
+    {
+        size = extent;
+        if (extent.width > 0 && extent.height > 0)
+        {
+            request.settings.width = extent.width;
+            request.settings.aspect = float(extent.width) / float(extent.height);
+        }
+    }
 };
 
 struct DisplaySettings

@@ -60,11 +60,11 @@ TEST(WindowActions, EachActionChangesItsSetting)
     WindowState state = cornellState();
     apply(state, "depth=7;samples=4;spp=64;pdf=off;unidirectional-light=off;accumulate=off;raytracing=off;"
                  "heatmap=on;heatmap-scale=5000;style=light;font=Mono;font-size=1.5;fov=55;focus=20;aperture=2");
-    EXPECT_EQ(state.image.depth, 7);
+    EXPECT_EQ(state.image.request.settings.depth, 7);
     EXPECT_EQ(state.display.samplesPerFrame, 4);
     EXPECT_EQ(state.display.targetSpp, 64);
-    EXPECT_FALSE(state.image.pdf);
-    EXPECT_FALSE(state.image.unidirectionalLight);
+    EXPECT_EQ(state.image.request.settings.estimator, Estimator::BsdfOnly);
+    EXPECT_FALSE(state.image.request.settings.unidirectionalLight);
     EXPECT_FALSE(state.image.accumulate);
     EXPECT_FALSE(state.image.rayTracing);
     EXPECT_TRUE(state.image.heatmap);

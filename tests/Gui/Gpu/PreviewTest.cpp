@@ -5,12 +5,12 @@
 
 #include <gtest/gtest.h>
 
-#include "Engine/PreviewMesh.h"
-#include "Engine/ProgressiveRenderer.h"
-#include "Engine/RasterPreview.h"
+#include "App/Gui/PreviewMesh.h"
+#include "App/Gui/ProgressiveRenderer.h"
+#include "App/Gui/RasterPreview.h"
 #include "Scenes/Catalogue.h"
 
-namespace rt::gpu
+namespace rt::gpu::gui
 {
 namespace
 {
@@ -140,4 +140,4 @@ TEST(CostSummary, NinetyFifthPercentileInsideItsBucket)
     EXPECT_EQ(summarizeCost(shader::CostStats{}).high, 0.0f);
 }
 } // namespace
-} // namespace rt::gpu
+} // namespace rt::gpu::gui

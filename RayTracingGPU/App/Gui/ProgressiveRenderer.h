@@ -13,6 +13,7 @@
 #include "Render/RenderSettings.h"
 #include "Scene/Camera.h"
 #include "Shared/HostDevice.h"
+#include "Engine/SceneTracer.h"
 #include "Vulkan/Buffer.h"
 #include "Vulkan/DescriptorPool.h"
 #include "Vulkan/Image.h"
@@ -20,7 +21,10 @@
 namespace rt::gpu
 {
 class GpuEngine;
-class PathTracingPipeline;
+}
+
+namespace rt::gpu::gui
+{
 
 /// What one frame traces.
 struct FrameRequest
@@ -85,8 +89,7 @@ private:
     vk::Image m_cost;
     vk::ImageView m_costView;
     bool m_imagesUndefined = true; // not cleared since they were created
-    std::vector<vk::DescriptorPool> m_pools; // per slot, one set each
-    std::vector<VkDescriptorSet> m_sets;
+    std::vector<TracingDescriptors> m_sets; // per slot
     // The heatmap's pipeline and set kSetCost per slot, made when first asked for (lavapipe compiles a
     // ray-tracing pipeline for seconds at its first launch).
     std::unique_ptr<PathTracingPipeline> m_costPipeline;
@@ -94,4 +97,4 @@ private:
     std::vector<vk::DescriptorPool> m_costPools;
     std::vector<VkDescriptorSet> m_costSets;
 };
-} // namespace rt::gpu
+} // namespace rt::gpu::gui

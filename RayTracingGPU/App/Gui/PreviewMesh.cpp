@@ -1,11 +1,11 @@
-#include "Engine/PreviewMesh.h"
+#include "App/Gui/PreviewMesh.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "Image/ImageIO.h"
 
-namespace rt::gpu
+namespace rt::gpu::gui
 {
 namespace
 {
@@ -147,4 +147,4 @@ std::vector<PreviewVertex> unitSphereMesh(int slices, int stacks)
         }
     return out;
 }
-} // namespace rt::gpu
+} // namespace rt::gpu::gui

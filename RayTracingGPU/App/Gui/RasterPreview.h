@@ -13,7 +13,7 @@
 #include "Vulkan/Pipeline.h"
 #include "Vulkan/PipelineLayout.h"
 
-namespace rt::gpu
+namespace rt::gpu::gui
 {
 class RasterPreview final
 {
@@ -47,4 +47,4 @@ private:
 /// Vulkan clip space (y down, depth 0 at `near`, 1 at `far`) from world space for `camera` and an image of
 /// `aspect` = width / height. `near` and `far` enclose `sceneBounds` as seen from the camera.
 mat4 clipFromWorld(const CameraDesc& camera, float aspect, const Aabb& sceneBounds);
-} // namespace rt::gpu
+} // namespace rt::gpu::gui

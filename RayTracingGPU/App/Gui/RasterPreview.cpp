@@ -1,16 +1,16 @@
-#include "Engine/RasterPreview.h"
+#include "App/Gui/RasterPreview.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "Engine/PreviewMesh.h"
+#include "App/Gui/PreviewMesh.h"
 #include "Shared/HostDevice.h"
 #include "Vulkan/GraphicsPipeline.h"
 #include "Vulkan/UploadBatch.h"
 
-namespace rt::gpu
+namespace rt::gpu::gui
 {
 namespace
 {
@@ -119,4 +119,4 @@ void RasterPreview::record(VkCommandBuffer cmd, const CameraDesc& camera, VkExte
     draw(m_triangles, m_triangleVertices, m_identity, 1);
     draw(m_sphereMesh, m_sphereMeshVertices, m_spheres, m_sphereCount);
 }
-} // namespace rt::gpu
+} // namespace rt::gpu::gui

@@ -11,7 +11,7 @@
 #include "Math/Math.h"
 #include "Scene/Scene.h"
 
-namespace rt::gpu
+namespace rt::gpu::gui
 {
 /// Vertex of binding 0 (locations 0-2 of Preview.vert).
 struct PreviewVertex
@@ -41,4 +41,4 @@ PreviewGeometry buildPreviewGeometry(const Scene& scene);
 
 /// A unit sphere around the origin, `slices` around the axis and `stacks` from pole to pole, white.
 std::vector<PreviewVertex> unitSphereMesh(int slices, int stacks);
-} // namespace rt::gpu
+} // namespace rt::gpu::gui

@@ -1,19 +1,16 @@
-#include "Engine/ProgressiveRenderer.h"
+#include "App/Gui/ProgressiveRenderer.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 
 #include "Engine/GpuEngine.h"
-#include "Engine/GpuScene.h"
-#include "Engine/PathTracingPipeline.h"
 #include "Engine/RenderLimits.h"
-#include "Engine/Uniforms.h"
 #include "Shared/HostDevice.h"
 #include "Vulkan/Barriers.h"
 #include "Vulkan/CommandBuffer.h"
 
-namespace rt::gpu
+namespace rt::gpu::gui
 {
 namespace
 {
@@ -58,18 +55,10 @@ void ProgressiveRenderer::prepare(VkExtent2D extent)
     }
 
     // Set 0 follows the scene (its image count is the set's variable count) and the images.
-    const PathTracingPipeline& pipeline = m_engine->pipeline();
-    const GpuScene& scene = m_engine->gpuScene();
-    const auto imageCount = static_cast<std::uint32_t>(scene.imageViews().size());
     m_sets.clear();
-    m_pools.clear();
     for (const vk::Buffer& uniforms : m_uniforms)
-    {
-        m_pools.emplace_back(device, pipeline.bindings(), imageCount);
-        m_sets.push_back(m_pools.back().allocate(pipeline.setLayout(), imageCount));
-        pipeline.writeDescriptors(device, m_sets.back(), scene,
-                                  {m_accumulationView.Handle(), uniforms.Handle(), m_counters.Handle()});
-    }
+        m_sets.push_back(m_engine->tracer().makeDescriptors(
+            {m_accumulationView.Handle(), uniforms.Handle(), m_counters.Handle()}));
     if (m_costPipeline)
         writeCostDescriptors();
 }
@@ -77,7 +66,7 @@ void ProgressiveRenderer::prepare(VkExtent2D extent)
 void ProgressiveRenderer::createCostResources()
 {
     const vk::Device& device = m_engine->context().device();
-    m_costPipeline = std::make_unique<PathTracingPipeline>(device, m_engine->shaderDir(), RayGenVariant::Cost);
+    m_costPipeline = std::make_unique<PathTracingPipeline>(device, m_engine->tracer().shaderDir(), RayGenVariant::Cost);
     for (std::size_t slot = 0; slot < m_uniforms.size(); ++slot)
     {
         m_costStats.emplace_back(device, sizeof(shader::CostStats), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
@@ -151,8 +140,7 @@ void ProgressiveRenderer::recordSamples(VkCommandBuffer cmd, std::uint32_t slot,
     RenderSettings settings = request.settings;
     settings.sampling = PixelSampling::Accumulate;
     const VkExtent2D size = extent();
-    const shader::RenderUniforms uniforms = makeUniforms(*m_engine->scene(), request.camera, settings, size.width,
-                                                         size.height, m_engine->gpuScene().lightCount());
+    const shader::RenderUniforms uniforms = m_engine->tracer().uniforms(request.camera, settings, size);
     std::memcpy(m_uniforms.at(slot).mapped(), &uniforms, sizeof(uniforms));
 
     // After the previous frame's display reads (write-after-read) and its samples or clears.
@@ -162,12 +150,11 @@ void ProgressiveRenderer::recordSamples(VkCommandBuffer cmd, std::uint32_t slot,
     {
         if (!m_costPipeline)
             createCostResources();
-        const VkDescriptorSet sets[] = {m_sets.at(slot), m_costSets.at(slot)};
-        m_costPipeline->recordLaunch(cmd, sets, firstSample, count, size, m_engine->gpuScene().samplesPerLaunch());
+        const VkDescriptorSet sets[] = {m_sets.at(slot).set, m_costSets.at(slot)};
+        m_engine->tracer().recordLaunch(cmd, sets, firstSample, count, size, m_costPipeline.get());
     }
     else
-        m_engine->pipeline().recordLaunch(cmd, {&m_sets.at(slot), 1}, firstSample, count, size,
-                                          m_engine->gpuScene().samplesPerLaunch());
+        m_engine->tracer().recordLaunch(cmd, {&m_sets.at(slot).set, 1}, firstSample, count, size);
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
@@ -225,4 +212,4 @@ Image ProgressiveRenderer::readImage() const
         image.data()[i] = vec3(texels[4 * i], texels[4 * i + 1], texels[4 * i + 2]) / std::max(texels[4 * i + 3], 1.0f);
     return image;
 }
-} // namespace rt::gpu
+} // namespace rt::gpu::gui

@@ -1,0 +1,74 @@
+// The GPU engine's headless core, shared by the engine's batches (GpuEngine) and the window's frames
+// (App/Gui/ProgressiveRenderer): the path-tracing pipeline, compiled once, and the scene on the device
+// (GpuScene: BLAS/TLAS, buffers, images). A caller traces into an accumulation image of its own with three
+// calls: a descriptor set naming the scene and its target, the uniforms of a camera and settings, and the
+// launches. Nothing here waits for the device or owns an image.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <span>
+
+#include "Engine/PathTracingPipeline.h"
+#include "Render/RenderSettings.h"
+#include "Scene/Scene.h"
+#include "Shared/HostDevice.h"
+#include "Vulkan/CommandPool.h"
+#include "Vulkan/DescriptorPool.h"
+
+namespace rt::gpu
+{
+class GpuScene;
+
+/// A descriptor set of the pipeline's set 0 and the pool it lives in (freed together).
+struct TracingDescriptors
+{
+    vk::DescriptorPool pool;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+};
+
+class SceneTracer final
+{
+public:
+    /// Compiles the pipeline from the SPIR-V in `shaderDir`. Throws rt::AssetError (a shader is missing),
+    /// rt::DeviceError (the driver rejects the pipeline).
+    SceneTracer(const vk::Device& device, const vk::CommandPool& pool, std::filesystem::path shaderDir);
+    SceneTracer(const SceneTracer&) = delete;
+    SceneTracer& operator=(const SceneTracer&) = delete;
+    ~SceneTracer();
+
+    /// Uploads `scene` (validated first; it must outlive the tracer's use of it) and builds its acceleration
+    /// structures; waits for the device. Descriptor sets made for the previous scene must be dropped first.
+    /// Returns the build time in seconds. Throws rt::SceneError, rt::DeviceError.
+    double setScene(const Scene& scene);
+    /// The scene set last; nullptr before the first.
+    const Scene* scene() const { return m_sceneDesc; }
+    double buildSeconds() const;
+
+    const std::filesystem::path& shaderDir() const { return m_shaderDir; }
+    /// The pipeline's set layouts: a variant (the window's Cost pipeline) is built against the same ones.
+    const PathTracingPipeline& pipeline() const { return m_pipeline; }
+
+    /// Set 0 for the current scene and `target`. Throws rt::UsageError before setScene.
+    TracingDescriptors makeDescriptors(const TargetBindings& target) const;
+    /// The uniforms of an image of `extent` seen by `camera` with `settings` (the current scene's background,
+    /// light count).
+    shader::RenderUniforms uniforms(const CameraDesc& camera, const RenderSettings& settings, VkExtent2D extent) const;
+    /// Records `count` samples per pixel of `extent` from `firstSample` on (PathTracingPipeline::recordLaunch,
+    /// with the scene's samples per launch), with `sets` bound from set 0, through `variant` (default: the
+    /// radiance pipeline).
+    void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets, std::uint32_t firstSample,
+                      std::uint32_t count, VkExtent2D extent, const PathTracingPipeline* variant = nullptr) const;
+
+private:
+    const GpuScene& gpuScene() const;
+
+    const vk::Device* m_device;
+    const vk::CommandPool* m_pool;
+    std::filesystem::path m_shaderDir;
+    PathTracingPipeline m_pipeline;
+    const Scene* m_sceneDesc = nullptr;
+    std::unique_ptr<GpuScene> m_scene;
+};
+} // namespace rt::gpu
