@@ -1,12 +1,11 @@
 #include "App/Gui/ActionScript.h"
 
-#include <map>
 #include <optional>
 
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
-#include "Cli/ValueParsing.h"
+#include "Cli/ActionGrammar.h"
 #include "Error.h"
 #include "Scenes/Catalogue.h"
 
@@ -14,30 +13,6 @@ namespace rt::gui
 {
 namespace
 {
-enum class Value
-{
-    None,
-    Integer,
-    Real,
-    OnOff,
-    Text
-};
-
-// name -> what its value must be. The names are the panel's, shortened.
-const std::map<std::string, Value>& grammar()
-{
-    static const std::map<std::string, Value> g = {
-        {"scene", Value::Text},   {"spp", Value::Integer},      {"depth", Value::Integer},
-        {"width", Value::Integer}, {"aspect", Value::Real},     {"seed", Value::Integer},
-        {"count", Value::Integer}, {"sampling", Value::Text},   {"pdf", Value::OnOff},
-        {"unidirectional", Value::OnOff}, {"loop", Value::OnOff}, {"engine", Value::Text},
-        {"render", Value::None},  {"cancel", Value::None},      {"defaults", Value::None},
-        {"wait", Value::None},    {"running", Value::None},     {"frames", Value::Integer},
-        {"resize", Value::Text},  {"save", Value::Text},        {"theme", Value::Text},
-        {"font-size", Value::Integer}};
-    return g;
-}
-
 std::optional<PixelSampling> sampling(const std::string& text)
 {
     if (text == "normal" || text == "random")
@@ -49,68 +24,35 @@ std::optional<PixelSampling> sampling(const std::string& text)
     return std::nullopt;
 }
 
-std::optional<std::pair<int, int>> size(const std::string& text)
+/// The window's actions: the shared ones (Cli/ActionGrammar.h), then this window's own.
+const std::vector<ActionSpec>& specs()
 {
-    const auto s = parseSize(text);
-    if (!s || s->first < 0 || s->second < 0 || s->first > 16384 || s->second > 16384)
-        return std::nullopt;
-    return std::pair{int(s->first), int(s->second)};
-}
-
-/// Checks what the grammar cannot: known scene ids and engines, sampling names, sizes, themes.
-bool valueIsValid(const std::string& name, const std::string& value)
-{
-    if (name == "scene")
-        return findScene(value) != nullptr;
-    if (name == "sampling")
-        return sampling(value).has_value();
-    if (name == "engine")
-        return parseEngine(value).has_value();
-    if (name == "resize")
-        return size(value).has_value();
-    if (name == "theme")
-        return value == "dark" || value == "light";
-    if (name == "save")
-        return !value.empty();
-    return true;
+    static const std::vector<ActionSpec> all = joinActionSpecs(
+        sharedActionSpecs("samples per pixel of the render", 1),
+        {
+            {"width", ActionValue::Integer, "N", "image width in pixels", 1},
+            {"aspect", ActionValue::Real, "A", "aspect ratio width / height", 1e-6},
+            {"seed", ActionValue::Integer, "N", "seed of the random streams", 0, 4294967295.0},
+            {"count", ActionValue::Integer, "N", "white-spheres' sphere count (-1: the scene's)", -1},
+            {"sampling", ActionValue::Text, "normal|accumulation|stratified", "pixel sampling (random and accumulate too)",
+             0, 1e30, [](const std::string& v) { return sampling(v).has_value(); }},
+            {"loop", ActionValue::OnOff, "on|off", "loop rendering: render again with the next seed and average"},
+            {"engine", ActionValue::Text, "single|multi|gpu",
+             "rendering engine (gpu waits for the GPU engine to start; unavailable: a warning)", 0, 1e30,
+             [](const std::string& v) { return parseEngine(v).has_value(); }},
+            {"render", ActionValue::None, "", "start a render with the panel's settings"},
+            {"cancel", ActionValue::None, "", "cancel the render"},
+            {"defaults", ActionValue::None, "", "the scene's own spp, depth, width, aspect and light mode"},
+            {"wait", ActionValue::None, "", "until no render runs (loop rendering: until one more finishes)"},
+            {"running", ActionValue::None, "", "until a render is tracing, or none runs"},
+        });
+    return all;
 }
 } // namespace
 
-ActionScript::ActionScript(const std::string& text)
-{
-    std::size_t start = 0;
-    while (start <= text.size())
-    {
-        const std::size_t end = std::min(text.find(';', start), text.size());
-        std::string item = text.substr(start, end - start);
-        start = end + 1;
-        item.erase(0, item.find_first_not_of(" \t\n"));
-        item.erase(item.find_last_not_of(" \t\n") + 1);
-        if (item.empty())
-            continue;
-        const std::size_t eq = item.find('=');
-        Action a{item.substr(0, eq), eq == std::string::npos ? "" : item.substr(eq + 1), item};
-        const auto rule = grammar().find(a.name);
-        if (rule == grammar().end())
-            throw UsageError(fmt::format("--actions: unknown action '{}' (see --help)", a.text));
-        const bool ok = [&] {
-            switch (rule->second)
-            {
-            case Value::None: return eq == std::string::npos;
-            case Value::Integer: return parseInteger(a.value).has_value();
-            case Value::Real: return parseReal(a.value).has_value();
-            case Value::OnOff: return parseOnOff(a.value).has_value();
-            case Value::Text: return valueIsValid(a.name, a.value);
-            }
-            return false;
-        }();
-        if (!ok)
-            throw UsageError(fmt::format("--actions: bad value in '{}' (see --help)", a.text));
-        m_actions.push_back(std::move(a));
-    }
-}
+ActionScript::ActionScript(const std::string& text) : m_actions(parseActionScript(text, specs())) {}
 
-bool ActionScript::step(Session& session, Window& window)
+bool ActionScript::step(Session& session, GlWindow& window)
 {
     if (done())
         return true;
@@ -127,7 +69,7 @@ bool ActionScript::step(Session& session, Window& window)
     return done();
 }
 
-bool ActionScript::run(const Action& a, Session& session, Window& window)
+bool ActionScript::run(const Action& a, Session& session, GlWindow& window)
 {
     const auto check = [&](bool accepted) {
         if (!accepted)
@@ -141,17 +83,17 @@ bool ActionScript::run(const Action& a, Session& session, Window& window)
     if (a.name == "scene")
         return check(session.setScene(v));
     if (a.name == "spp")
-        return check(session.setSpp(int(*parseInteger(v))));
+        return check(session.setSpp(int(a.integer())));
     if (a.name == "depth")
-        return check(session.setDepth(int(*parseInteger(v))));
+        return check(session.setDepth(int(a.integer())));
     if (a.name == "width")
-        return check(session.setWidth(int(*parseInteger(v))));
+        return check(session.setWidth(int(a.integer())));
     if (a.name == "aspect")
-        return check(session.setAspect(*parseReal(v)));
+        return check(session.setAspect(a.real()));
     if (a.name == "seed")
-        return check(session.setSeed(*parseInteger(v)));
+        return check(session.setSeed(a.integer()));
     if (a.name == "count")
-        return check(session.setCount(int(*parseInteger(v))));
+        return check(session.setCount(int(a.integer())));
     if (a.name == "sampling")
     {
         session.setSampling(*sampling(v));
@@ -159,17 +101,17 @@ bool ActionScript::run(const Action& a, Session& session, Window& window)
     }
     if (a.name == "pdf")
     {
-        session.setPdf(v == "on");
+        session.setPdf(a.on());
         return true;
     }
-    if (a.name == "unidirectional")
+    if (a.name == "unidirectional-light")
     {
-        session.setUnidirectionalLight(v == "on");
+        session.setUnidirectionalLight(a.on());
         return true;
     }
     if (a.name == "loop")
     {
-        session.setLoop(v == "on");
+        session.setLoop(a.on());
         return true;
     }
     if (a.name == "engine")
@@ -211,12 +153,12 @@ bool ActionScript::run(const Action& a, Session& session, Window& window)
     if (a.name == "frames")
     {
         if (!m_waiting)
-            m_framesLeft = int(*parseInteger(v));
+            m_framesLeft = int(a.integer());
         return m_framesLeft-- <= 0;
     }
     if (a.name == "resize")
     {
-        const auto [w, h] = *size(v);
+        const auto [w, h] = a.size();
         window.resize(w, h);
         return true;
     }
@@ -229,7 +171,7 @@ bool ActionScript::run(const Action& a, Session& session, Window& window)
     }
     if (a.name == "font-size")
     {
-        session.setFontSize(float(*parseInteger(v)));
+        session.setFontSize(float(a.integer()));
         return true;
     }
     return true;
@@ -237,14 +179,9 @@ bool ActionScript::run(const Action& a, Session& session, Window& window)
 
 std::string actionHelp()
 {
-    return "UI actions separated by ';', one per frame, each calling what its widget calls:\n"
-           "  scene=ID spp=N depth=N width=N aspect=A seed=N count=N sampling=normal|accumulation|stratified\n"
-           "  pdf=on|off unidirectional=on|off loop=on|off   (image settings: a change starts a new render)\n"
-           "  engine=single|multi|gpu (gpu waits for the GPU engine to start; unavailable: a warning)\n"
-           "  render  cancel  defaults (the scene's own settings)  save=FILE.png (and FILE.pfm)\n"
-           "  wait (until no render runs; loop rendering: until one more finishes)\n"
-           "  running (until a render is tracing, or none runs)  frames=N (let N frames pass)\n"
-           "  resize=WxH (0x0 too)  theme=dark|light  font-size=N\n"
+    return "UI actions separated by ';', one per frame, each calling what its widget calls (a change of the image's\n"
+           "settings starts a new render):\n" +
+           actionScriptHelp(specs()) +
            "e.g. \"engine=single;render;wait;engine=multi;render;wait;engine=gpu;render;wait\"";
 }
 } // namespace rt::gui

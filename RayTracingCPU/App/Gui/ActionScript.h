@@ -7,31 +7,28 @@
 #include <vector>
 
 #include "App/Gui/Session.h"
-#include "App/Gui/Window.h"
+#include "Cli/ActionGrammar.h"
+#include "App/Gui/GlWindow.h"
 
 namespace rt::gui
 {
 class ActionScript
 {
 public:
-    /// Parses "name=value;name;..." (actionHelp() lists them). Throws UsageError naming a bad action.
+    /// Parses "name=value;name;..." (actionHelp() lists them; the grammar is Cli/ActionGrammar.h). Throws
+    /// UsageError naming a bad action.
     explicit ActionScript(const std::string& text);
 
     /// Runs the next action, or checks the one waiting. Returns true once every action has run.
-    bool step(Session& session, Window& window);
+    bool step(Session& session, GlWindow& window);
     bool done() const { return m_next == m_actions.size(); }
     /// Actions whose command refused (logged as errors); `engine=gpu` without a GPU engine is not one.
     int failures() const { return m_failures; }
 
 private:
-    struct Action
-    {
-        std::string name;
-        std::string value;
-        std::string text; // as written, for messages
-    };
+    using Action = ScriptedAction;
     /// True when the action is finished (a waiting action returns false until its condition holds).
-    bool run(const Action& action, Session& session, Window& window);
+    bool run(const Action& action, Session& session, GlWindow& window);
 
     std::vector<Action> m_actions;
     std::size_t m_next = 0;

@@ -16,7 +16,7 @@
 #include "App/Gui/SettingsPanel.h"
 #include "App/Gui/Theme.h"
 #include "App/Gui/TimingsWindow.h"
-#include "App/Gui/Window.h"
+#include "App/Gui/GlWindow.h"
 #include "Error.h"
 #include "IO/AtomicFile.h"
 
@@ -197,7 +197,7 @@ private:
     }
 
     const GuiOptions& m_options;
-    Window m_window; // first: the GL context outlives every GL object below
+    GlWindow m_window; // first: the GL context outlives every GL object below
     RenderJob m_job;
     Session m_session;
     Theme m_theme;

@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "App/Gui/Window.h"
+#include "App/Gui/GlWindow.h"
 
 namespace rt::gui
 {

@@ -23,7 +23,7 @@ const std::vector<FontChoice>& availableFonts();
 class Theme
 {
 public:
-    /// Applies what changed since the last call. Call outside a frame (before Window::beginFrame).
+    /// Applies what changed since the last call. Call outside a frame (before GlWindow::beginFrame).
     void apply(const DisplaySettings& display);
 
 private:

@@ -1,31 +1,29 @@
 // Scripted input for running the window without a person (tests, demos): `--actions "scene=rtnw-quads;
-// depth=7;resize=0x0;resize=640x400;raytracing=off;heatmap=on;camera=forward:10"`. Actions run one per frame
-// in order, each through Controls (the panel's own functions); a scene action waits for its scene to be built
-// before the next one runs, and wait=N lets N frames pass.
+// depth=7;resize=0x0;resize=640x400;raytracing=off;heatmap=on;camera=forward:10"`. The grammar and the
+// actions both windows share are Common's (Cli/ActionGrammar.h); this window adds its own. Actions run one
+// per frame in order, each through Controls (the panel's own functions); a scene action waits for its scene
+// to be built before the next one runs, and frames=N lets N frames pass.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "App/Gui/Controls.h"
+#include "Cli/ActionGrammar.h"
 
 namespace rt::gpu::gui
 {
-struct Action
-{
-    std::string name;
-    std::string value;
-};
+using Action = ScriptedAction;
 
 /// Splits at ';' and checks every name and value (rt::UsageError naming the bad one), so a typo stops the app
 /// before the window opens.
 std::vector<Action> parseActions(const std::string& script);
 
-/// Applies one action through `controls`. `wait` is the frame loop's (it returns false for it).
-/// Returns true when the action was applied. Throws rt::SceneError for an unknown scene.
+/// Applies one action through `controls`. `frames` is the frame loop's (it returns false for it).
+/// Returns true when the action was applied.
 bool applyAction(const Action& action, Controls& controls);
 
-/// The frames a wait action asks for.
+/// The frames a frames action asks for (0 for any other action).
 int waitFrames(const Action& action);
 
 /// The list of actions and their values, for --help.

@@ -1,5 +1,7 @@
 #include "App/Gui/ImGuiLayer.h"
 
+#include "App/Gui/WindowState.h"
+
 #include <algorithm>
 #include <filesystem>
 
@@ -38,7 +40,6 @@ constexpr FontFile kFontFiles[] = {
     {"DejaVu Sans", "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"},
     {"DejaVu Sans Mono", "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf"},
 };
-constexpr float kFontPixels = 15.0f; // ImGui's own is 13 pixels high
 
 const std::vector<vk::DescriptorBinding>& fontBindings()
 {
@@ -60,7 +61,7 @@ ImGuiLayer::ImGuiLayer(const GpuContext& context, GLFWwindow* window, VkRenderPa
     io.Fonts->AddFontDefault();
     m_fontNames.push_back("ImGui default");
     for (const FontFile& font : kFontFiles)
-        if (std::filesystem::exists(font.path) && io.Fonts->AddFontFromFileTTF(font.path, kFontPixels))
+        if (std::filesystem::exists(font.path) && io.Fonts->AddFontFromFileTTF(font.path, kPanelFontPixels))
             m_fontNames.push_back(font.name);
     const VkInstance instance = context.instance().Handle();
     if (!ImGui_ImplVulkan_LoadFunctions(loadFunction, instance))

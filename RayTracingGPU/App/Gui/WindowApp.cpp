@@ -15,7 +15,7 @@
 #include "App/Gui/Panel.h"
 #include "App/Gui/Presenter.h"
 #include "App/Gui/Throughput.h"
-#include "App/Gui/Window.h"
+#include "App/Gui/VulkanWindow.h"
 #include "App/Gui/ProgressiveRenderer.h"
 #include "App/Gui/RasterPreview.h"
 #include "Engine/SceneTracer.h"
@@ -30,12 +30,12 @@ using Clock = std::chrono::steady_clock;
 
 constexpr double kIdleFrameSeconds = 1.0 / 60.0;
 
-GpuEngineOptions engineOptions(const WindowOptions& options, const Window& window)
+GpuEngineOptions engineOptions(const WindowOptions& options, const VulkanWindow& window)
 {
     GpuEngineOptions e;
     e.deviceIndex = options.deviceIndex;
     e.validation = options.validation;
-    e.presentation = Presentation{Window::requiredInstanceExtensions(),
+    e.presentation = Presentation{VulkanWindow::requiredInstanceExtensions(),
                                   [&window](VkInstance instance) { return window.createSurface(instance); }};
     return e;
 }
@@ -43,7 +43,7 @@ GpuEngineOptions engineOptions(const WindowOptions& options, const Window& windo
 class WindowApp final
 {
 public:
-    WindowApp(const WindowOptions& options, Window& window, Scene scene)
+    WindowApp(const WindowOptions& options, VulkanWindow& window, Scene scene)
         : m_options(options), m_window(window), m_engine(engineOptions(options, window)),
           m_scene(std::make_unique<Scene>(std::move(scene))),
           m_presenter(m_engine.context(), window.framebufferSize()),
@@ -349,7 +349,7 @@ private:
     }
 
     const WindowOptions& m_options;
-    Window& m_window;
+    VulkanWindow& m_window;
     GpuEngine m_engine;
     std::unique_ptr<Scene> m_scene; // what the engine renders (it keeps a pointer)
     Presenter m_presenter;
@@ -382,7 +382,7 @@ int runWindow(const WindowOptions& options, Scene scene)
 {
     std::shared_ptr<const vk::ValidationLog> log;
     {
-        Window window("ray-tracing-gpu", options.initial.image.size);
+        VulkanWindow window("ray-tracing-gpu", options.initial.image.size);
         WindowApp app(options, window, std::move(scene));
         log = app.validationLog();
         app.run();

@@ -49,6 +49,9 @@ struct ImageSettings
     }
 };
 
+/// Pixel height of the panel's font at fontScale 1 (ImGui's own font is 13).
+inline constexpr float kPanelFontPixels = 15.0f;
+
 struct DisplaySettings
 {
     int samplesPerFrame = 1;
@@ -57,7 +60,7 @@ struct DisplaySettings
     float costScale = 1.0e5f; // otherwise: ticks per sample at the top of the palette
     bool darkStyle = true;
     int font = 0; // index into WindowState::fonts
-    float fontScale = 1.0f;
+    float fontScale = 1.0f; // font pixels / kPanelFontPixels
 };
 
 /// The settings plus what the panel or an action asked the frame loop to do.

@@ -188,7 +188,7 @@ TEST(GpuWindow, AccumulatedImageMatchesTheSettingsShown)
     // the settings it shows, sample for sample (same device, same streams: bit for bit here).
     const ::rt::test::ScratchDir dir;
     RT_RUN_WINDOW(run, "--width 320 --aspect 1.6 --validation --scene cornell-box-lights --spp 4 --seed 7 --frames 1 "
-                       "--actions 'wait=2;scene=rtnw-quads;wait=1;depth=5;wait=8;save=" +
+                       "--actions 'frames=2;scene=rtnw-quads;frames=1;depth=5;frames=8;save=" +
                            (dir / "window.png").string() + "'");
     EXPECT_NE(run.output.find("(4 spp)"), std::string::npos) << run.output;
     const AppRun headless = runApp("--headless --quiet --scene rtnw-quads --width 320 --aspect 1.6 --spp 4 --seed 7 "
@@ -209,7 +209,7 @@ TEST(GpuWindow, CameraMoveRestartsAccumulation)
 {
     const ::rt::test::ScratchDir dir;
     RT_RUN_WINDOW(run, "--width 320 --aspect 1.6 --validation --scene cornell-box-lights --frames 1 --actions "
-                       "'wait=6;save=" + (dir / "before.png").string() + ";camera=forward:100;save=" +
+                       "'frames=6;save=" + (dir / "before.png").string() + ";camera=forward:100;save=" +
                            (dir / "after.png").string() + "'");
     const std::regex spp(R"(\((\d+) spp\))");
     std::vector<int> counts;
@@ -231,8 +231,8 @@ TEST(GpuWindow, StressSwitchesResizesAndMinimisesWithoutValidationMessages)
     const ::rt::test::ScratchDir dir;
     RT_RUN_WINDOW(run, "--width 320 --aspect 1.6 --validation --scene rtnw-quads --frames 3 --screenshot '" +
                            (dir / "stress.png").string() + "' --actions '" + scenes + scenes +
-                           "depth=7;wait=2;depth=3;samples=2;resize=0x0;wait=3;resize=480x300;wait=2;"
-                           "raytracing=off;wait=1;raytracing=on;heatmap=on;wait=1;heatmap=off;accumulate=off;"
+                           "depth=7;frames=2;depth=3;samples=2;resize=0x0;frames=3;resize=480x300;frames=2;"
+                           "raytracing=off;frames=1;raytracing=on;heatmap=on;frames=1;heatmap=off;accumulate=off;"
                            "camera=forward:1;camera=yaw:10;fov=50;save=" +
                            (dir / "image.png").string() + "'");
     EXPECT_NE(run.output.find("saved"), std::string::npos) << run.output;

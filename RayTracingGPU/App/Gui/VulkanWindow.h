@@ -12,15 +12,15 @@ struct GLFWwindow;
 
 namespace rt::gpu::gui
 {
-class Window final
+class VulkanWindow final
 {
 public:
     /// Opens a window whose framebuffer is `size`. Throws rt::DeviceError when there is no display or GLFW
     /// finds no Vulkan (the message says so and suggests --headless).
-    Window(const std::string& title, Extent size);
-    ~Window();
-    Window(const Window&) = delete;
-    Window& operator=(const Window&) = delete;
+    VulkanWindow(const std::string& title, Extent size);
+    ~VulkanWindow();
+    VulkanWindow(const VulkanWindow&) = delete;
+    VulkanWindow& operator=(const VulkanWindow&) = delete;
 
     GLFWwindow* handle() const { return m_window; }
 

@@ -17,14 +17,14 @@ struct FramebufferSize
     bool empty() const { return width <= 0 || height <= 0; }
 };
 
-class Window
+class GlWindow
 {
 public:
     /// Throws rt::Error when no window can be opened (no display), naming GLFW's reason.
-    Window(int width, int height, const std::string& title);
-    ~Window();
-    Window(const Window&) = delete;
-    Window& operator=(const Window&) = delete;
+    GlWindow(int width, int height, const std::string& title);
+    ~GlWindow();
+    GlWindow(const GlWindow&) = delete;
+    GlWindow& operator=(const GlWindow&) = delete;
 
     bool closeRequested() const;
     /// Processes input, sleeping up to `timeoutSeconds` when there is none: the window redraws only as

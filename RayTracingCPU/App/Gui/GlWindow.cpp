@@ -1,4 +1,4 @@
-#include "App/Gui/Window.h"
+#include "App/Gui/GlWindow.h"
 
 #include <algorithm>
 #include <string>
@@ -22,7 +22,7 @@ void onGlfwError(int code, const char* description)
 }
 } // namespace
 
-Window::Glfw::Glfw()
+GlWindow::Glfw::Glfw()
 {
     glfwSetErrorCallback(onGlfwError);
     if (!glfwInit())
@@ -30,11 +30,11 @@ Window::Glfw::Glfw()
                     "; run with --headless, or under a display (xvfb-run -a ray-tracing-cpu ...)");
 }
 
-Window::Glfw::~Glfw() { glfwTerminate(); }
+GlWindow::Glfw::~Glfw() { glfwTerminate(); }
 
-void Window::WindowDeleter::operator()(GLFWwindow* window) const { glfwDestroyWindow(window); }
+void GlWindow::WindowDeleter::operator()(GLFWwindow* window) const { glfwDestroyWindow(window); }
 
-Window::ImGuiBackends::ImGuiBackends(GLFWwindow* window)
+GlWindow::ImGuiBackends::ImGuiBackends(GLFWwindow* window)
 {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -43,14 +43,14 @@ Window::ImGuiBackends::ImGuiBackends(GLFWwindow* window)
     ImGui_ImplOpenGL3_Init("#version 330");
 }
 
-Window::ImGuiBackends::~ImGuiBackends()
+GlWindow::ImGuiBackends::~ImGuiBackends()
 {
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
 }
 
-Window::Window(int width, int height, const std::string& title)
+GlWindow::GlWindow(int width, int height, const std::string& title)
 {
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
@@ -66,34 +66,34 @@ Window::Window(int width, int height, const std::string& title)
 
 // Members go in reverse order: the ImGui backends (their GL objects while the context exists), the window,
 // then GLFW.
-Window::~Window() = default;
+GlWindow::~GlWindow() = default;
 
-bool Window::closeRequested() const { return glfwWindowShouldClose(m_window.get()); }
+bool GlWindow::closeRequested() const { return glfwWindowShouldClose(m_window.get()); }
 
-void Window::waitEvents(double timeoutSeconds) { glfwWaitEventsTimeout(timeoutSeconds); }
+void GlWindow::waitEvents(double timeoutSeconds) { glfwWaitEventsTimeout(timeoutSeconds); }
 
-FramebufferSize Window::framebufferSize() const
+FramebufferSize GlWindow::framebufferSize() const
 {
     FramebufferSize size;
     glfwGetFramebufferSize(m_window.get(), &size.width, &size.height);
     return size;
 }
 
-void Window::resize(int width, int height)
+void GlWindow::resize(int width, int height)
 {
     // X11 ends the process on a 0-pixel window (BadValue from ConfigureWindow): 1 is its smallest size. A
     // true 0x0 framebuffer (minimised on Windows) is what framebufferSize().empty() guards against.
     glfwSetWindowSize(m_window.get(), std::max(width, 1), std::max(height, 1));
 }
 
-void Window::beginFrame()
+void GlWindow::beginFrame()
 {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
 }
 
-void Window::endFrame(float clearGrey)
+void GlWindow::endFrame(float clearGrey)
 {
     ImGui::Render();
     const FramebufferSize size = framebufferSize();
@@ -103,5 +103,5 @@ void Window::endFrame(float clearGrey)
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
-void Window::present() { glfwSwapBuffers(m_window.get()); }
+void GlWindow::present() { glfwSwapBuffers(m_window.get()); }
 } // namespace rt::gui

@@ -1,4 +1,4 @@
-#include "App/Gui/Window.h"
+#include "App/Gui/VulkanWindow.h"
 
 #include <GLFW/glfw3.h>
 #include <spdlog/fmt/fmt.h>
@@ -14,7 +14,7 @@ std::string g_lastGlfwError;
 void onGlfwError(int, const char* description) { g_lastGlfwError = description ? description : "unknown error"; }
 } // namespace
 
-Window::Window(const std::string& title, Extent size)
+VulkanWindow::VulkanWindow(const std::string& title, Extent size)
 {
     glfwSetErrorCallback(onGlfwError);
     if (!glfwInit())
@@ -35,13 +35,13 @@ Window::Window(const std::string& title, Extent size)
     }
 }
 
-Window::~Window()
+VulkanWindow::~VulkanWindow()
 {
     glfwDestroyWindow(m_window);
     glfwTerminate();
 }
 
-std::vector<std::string> Window::requiredInstanceExtensions()
+std::vector<std::string> VulkanWindow::requiredInstanceExtensions()
 {
     std::uint32_t count = 0;
     const char** names = glfwGetRequiredInstanceExtensions(&count);
@@ -52,7 +52,7 @@ std::vector<std::string> Window::requiredInstanceExtensions()
     return {names, names + count};
 }
 
-VkSurfaceKHR Window::createSurface(VkInstance instance) const
+VkSurfaceKHR VulkanWindow::createSurface(VkInstance instance) const
 {
     VkSurfaceKHR surface = VK_NULL_HANDLE;
     const VkResult result = glfwCreateWindowSurface(instance, m_window, nullptr, &surface);
@@ -62,7 +62,7 @@ VkSurfaceKHR Window::createSurface(VkInstance instance) const
     return surface;
 }
 
-Extent Window::framebufferSize() const
+Extent VulkanWindow::framebufferSize() const
 {
     if (m_minimisedByRequest || glfwGetWindowAttrib(m_window, GLFW_ICONIFIED))
         return {};
@@ -71,9 +71,9 @@ Extent Window::framebufferSize() const
     return size;
 }
 
-bool Window::closeRequested() const { return glfwWindowShouldClose(m_window); }
+bool VulkanWindow::closeRequested() const { return glfwWindowShouldClose(m_window); }
 
-void Window::resize(Extent size)
+void VulkanWindow::resize(Extent size)
 {
     m_minimisedByRequest = size.width == 0 || size.height == 0;
     if (m_minimisedByRequest)
@@ -85,9 +85,9 @@ void Window::resize(Extent size)
     glfwSetWindowSize(m_window, size.width, size.height);
 }
 
-void Window::pollEvents() const { glfwPollEvents(); }
+void VulkanWindow::pollEvents() const { glfwPollEvents(); }
 
-void Window::waitEvents(double timeoutSeconds) const
+void VulkanWindow::waitEvents(double timeoutSeconds) const
 {
     if (timeoutSeconds > 0.0)
         glfwWaitEventsTimeout(timeoutSeconds);

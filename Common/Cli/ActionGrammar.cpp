@@ -1,0 +1,146 @@
+#include "Cli/ActionGrammar.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "Cli/ValueParsing.h"
+#include "Error.h"
+#include "Scenes/Catalogue.h"
+
+namespace rt
+{
+namespace
+{
+constexpr long long kMaxSize = 16384;
+
+std::string trimmed(std::string_view text)
+{
+    const auto first = text.find_first_not_of(" \t\n");
+    if (first == std::string_view::npos)
+        return {};
+    const auto last = text.find_last_not_of(" \t\n");
+    return std::string(text.substr(first, last - first + 1));
+}
+
+/// What the value must be, for the error message.
+std::string expected(const ActionSpec& spec)
+{
+    switch (spec.value)
+    {
+    case ActionValue::None: return "no value";
+    case ActionValue::Integer:
+        return spec.maximum < 1e30 ? fmt::format("an integer in [{}, {}]", spec.minimum, spec.maximum)
+                                   : fmt::format("an integer >= {}", spec.minimum);
+    case ActionValue::Real:
+        return spec.maximum < 1e30 ? fmt::format("a number in [{}, {}]", spec.minimum, spec.maximum)
+                                   : fmt::format("a number >= {}", spec.minimum);
+    case ActionValue::OnOff: return "on or off";
+    case ActionValue::Size: return fmt::format("WIDTHxHEIGHT, each in [0, {}]", kMaxSize);
+    case ActionValue::Text: return spec.placeholder;
+    }
+    return "?";
+}
+
+bool valueFits(const ActionSpec& spec, const std::string& value, bool hasValue)
+{
+    bool ok = false;
+    switch (spec.value)
+    {
+    case ActionValue::None: return !hasValue;
+    case ActionValue::Integer:
+    {
+        const auto v = parseInteger(value);
+        ok = v && double(*v) >= spec.minimum && double(*v) <= spec.maximum;
+        break;
+    }
+    case ActionValue::Real:
+    {
+        const auto v = parseReal(value);
+        ok = v && std::isfinite(*v) && *v >= spec.minimum && *v <= spec.maximum;
+        break;
+    }
+    case ActionValue::OnOff: ok = parseOnOff(value).has_value(); break;
+    case ActionValue::Size:
+    {
+        const auto s = parseSize(value);
+        ok = s && s->first >= 0 && s->second >= 0 && s->first <= kMaxSize && s->second <= kMaxSize;
+        break;
+    }
+    case ActionValue::Text: ok = hasValue; break;
+    }
+    return ok && (!spec.accepts || spec.accepts(value));
+}
+} // namespace
+
+long long ScriptedAction::integer() const { return parseInteger(value).value_or(0); }
+
+float ScriptedAction::real() const { return parseReal(value).value_or(0.0f); }
+
+bool ScriptedAction::on() const { return parseOnOff(value).value_or(false); }
+
+std::pair<int, int> ScriptedAction::size() const
+{
+    const auto s = parseSize(value).value_or(std::pair{0ll, 0ll});
+    return {int(s.first), int(s.second)};
+}
+
+std::vector<ScriptedAction> parseActionScript(std::string_view script, const std::vector<ActionSpec>& specs)
+{
+    std::vector<ScriptedAction> actions;
+    std::size_t start = 0;
+    while (start <= script.size())
+    {
+        const std::size_t end = std::min(script.find(';', start), script.size());
+        const std::string item = trimmed(script.substr(start, end - start));
+        start = end + 1;
+        if (item.empty())
+            continue;
+        const std::size_t eq = item.find('=');
+        ScriptedAction a{item.substr(0, eq), eq == std::string::npos ? "" : item.substr(eq + 1), item};
+        const auto spec = std::find_if(specs.begin(), specs.end(), [&](const ActionSpec& s) { return s.name == a.name; });
+        if (spec == specs.end())
+            throw UsageError(fmt::format("--actions: unknown action '{}' (see --help)", a.text));
+        if (!valueFits(*spec, a.value, eq != std::string::npos))
+            throw UsageError(fmt::format("--actions: '{}': expected {} (see --help)", a.text,
+                                         spec->value == ActionValue::None ? "no value"
+                                                                          : a.name + "=" + expected(*spec)));
+        actions.push_back(std::move(a));
+    }
+    return actions;
+}
+
+std::string actionScriptHelp(const std::vector<ActionSpec>& specs)
+{
+    std::string help;
+    for (const ActionSpec& s : specs)
+        help += fmt::format("  {:<30} {}\n", s.placeholder.empty() ? s.name : s.name + "=" + s.placeholder, s.meaning);
+    return help;
+}
+
+std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long long sppMinimum)
+{
+    return {
+        {"scene", ActionValue::Text, "ID", "switch to a catalogue scene (--list-scenes)", 0, 1e30,
+         [](const std::string& id) { return findScene(id) != nullptr; }},
+        {"spp", ActionValue::Integer, "N", sppMeaning, double(sppMinimum)},
+        {"depth", ActionValue::Integer, "N", "ray segments per path at most", 1},
+        {"pdf", ActionValue::OnOff, "on|off", "book 3's mixture estimator, or BSDF sampling only"},
+        {"unidirectional-light", ActionValue::OnOff, "on|off", "emitters emit from their front face only"},
+        {"resize", ActionValue::Size, "WxH", "resize the window (0x0: as a minimised window reports)"},
+        {"save", ActionValue::Text, "FILE.png", "save the image shown: FILE.png and the linear FILE.pfm", 0, 1e30,
+         [](const std::string& path) { return path.size() > 4 && path.ends_with(".png"); }},
+        {"frames", ActionValue::Integer, "N", "let N frames pass", 0},
+        {"theme", ActionValue::Text, "dark|light", "colour theme of the panel", 0, 1e30,
+         [](const std::string& v) { return v == "dark" || v == "light"; }},
+        {"font-size", ActionValue::Integer, "PIXELS", "height of the panel's font", 8, 48},
+    };
+}
+
+std::vector<ActionSpec> joinActionSpecs(std::vector<ActionSpec> shared, const std::vector<ActionSpec>& own)
+{
+    shared.insert(shared.end(), own.begin(), own.end());
+    return shared;
+}
+} // namespace rt

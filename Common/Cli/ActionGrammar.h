@@ -1,0 +1,64 @@
+// The grammar of both windows' --actions: "name=value;name;..." (blanks around items ignored), run one per
+// frame through the panel's own functions. Each window lists its actions in one table of ActionSpecs; the
+// actions both windows have are declared once (sharedActionSpecs) with the same names, values and meaning,
+// so that a script line means the same thing in either window. Parsing checks every name and value against
+// the table, so a typo stops the app before its window opens.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace rt
+{
+enum class ActionValue
+{
+    None, // a bare name: "render"
+    Integer, // at least ActionSpec::minimum, at most ActionSpec::maximum
+    Real, // finite, in [minimum, maximum]
+    OnOff, // "on" or "off"
+    Size, // "WxH", each in [0, 16384]
+    Text // anything ActionSpec::accepts
+};
+
+struct ActionSpec
+{
+    std::string name;
+    ActionValue value = ActionValue::None;
+    std::string placeholder; // what --help shows after '=' ("N", "on|off", "ID"); empty for ActionValue::None
+    std::string meaning;
+    double minimum = 0.0;
+    double maximum = 1e30;
+    std::function<bool(const std::string&)> accepts = {}; // a further check of the value (Text: required)
+};
+
+/// One parsed action. The typed accessors read a value its spec has checked.
+struct ScriptedAction
+{
+    std::string name;
+    std::string value; // empty for ActionValue::None
+    std::string text; // as written, for messages
+
+    long long integer() const;
+    float real() const;
+    bool on() const;
+    std::pair<int, int> size() const;
+};
+
+/// Parses `script` against `specs`. Throws UsageError naming the first unknown action or bad value.
+std::vector<ScriptedAction> parseActionScript(std::string_view script, const std::vector<ActionSpec>& specs);
+
+/// One line per spec, "  name=PLACEHOLDER   meaning", for --help.
+std::string actionScriptHelp(const std::vector<ActionSpec>& specs);
+
+/// The actions both windows have: scene=ID (a catalogue id), spp=N, depth=N, pdf=on|off,
+/// unidirectional-light=on|off, resize=WxH, save=FILE.png, frames=N (let N frames pass), theme=dark|light,
+/// font-size=PIXELS. `sppMeaning` says what spp means in the window (the render's samples per pixel, or
+/// where accumulation stops).
+std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long long sppMinimum);
+
+/// `shared` followed by `own`.
+std::vector<ActionSpec> joinActionSpecs(std::vector<ActionSpec> shared, const std::vector<ActionSpec>& own);
+} // namespace rt
