@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "Engine/SceneLayout.h"
+#include "RayTracing/SceneLayout.h"
 #include "RayTracing/SceneAccelerationStructures.h"
 #include "Scene/Scene.h"
 #include "Vulkan/Buffer.h"

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "Engine/SceneLayout.h"
+#include "RayTracing/SceneLayout.h"
 #include "RayTracing/AccelerationStructure.h"
 #include "Vulkan/CommandPool.h"
 

@@ -1,7 +1,7 @@
 // How Common scenes map onto BLASes, TLAS instances and the shaders' records (host only, no device).
 #include <gtest/gtest.h>
 
-#include "Engine/SceneLayout.h"
+#include "RayTracing/SceneLayout.h"
 #include "Scene/SceneBuilder.h"
 #include "Scenes/Catalogue.h"
 

@@ -1,4 +1,4 @@
-#include "Engine/SceneLayout.h"
+#include "RayTracing/SceneLayout.h"
 
 #include <map>
 #include <optional>
