@@ -77,13 +77,19 @@ double CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count)
     const std::uint32_t strata = static_cast<std::uint32_t>(f.settings.strata());
     const float invStrata = 1.0f / float(strata);
     const std::uint32_t seed = f.settings.seed;
+    // Locals, as the compiler cannot keep members in registers across the path tracer's stores.
+    const Camera camera = f.camera;
+    const PathOptions options = f.options;
+    const CpuScene& scene = *m_scene;
+    Image& sums = f.sum;
+    std::vector<RowTally>& tallies = f.rows;
     const auto row = [&](int y) {
-        RowTally& t = f.rows[y];
+        RowTally& t = tallies[y];
         t.thread = std::hash<std::thread::id>{}(std::this_thread::get_id());
         for (int x = 0; x < width; ++x)
         {
             const auto pixelIndex = static_cast<std::uint32_t>(y * width + x);
-            vec3 sum = f.sum.at(x, y);
+            vec3 sum = sums.at(x, y);
             for (std::uint32_t s = firstSample; s < firstSample + count; ++s)
             {
                 Rng rng = Rng::forSample(seed, pixelIndex, s);
@@ -101,10 +107,10 @@ double CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count)
                     fy = float(y) + jy;
                 }
                 vec2 lens(0.0f);
-                if (f.camera.thinLens)
+                if (camera.thinLens)
                     lens = vec2(rng.nextFloat(), rng.nextFloat());
                 const float time = rng.nextFloat();
-                const vec3 l = tracePath(*m_scene, f.options, f.camera.generateRay(fx, fy, lens, time), rng, t.segments);
+                const vec3 l = tracePath(scene, options, camera.generateRay(fx, fy, lens, time), rng, t.segments);
                 if (isFinite(l))
                     sum += l;
                 else if (std::isnan(l.x) || std::isnan(l.y) || std::isnan(l.z))
@@ -112,7 +118,7 @@ double CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count)
                 else
                     ++t.inf;
             }
-            f.sum.at(x, y) = sum;
+            sums.at(x, y) = sum;
         }
     };
     if (m_kind == EngineKind::Single)

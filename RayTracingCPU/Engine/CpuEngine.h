@@ -15,9 +15,10 @@
 
 namespace rt::cpu
 {
-/// Camera paths per batch: 2^18, a tenth of a second on one core of the CI kind for the books' Cornell
-/// boxes, about a second for the heaviest catalogue scenes.
-inline constexpr std::uint64_t kPathsPerBatch = std::uint64_t(1) << 18;
+/// Camera paths per batch: 2^20, half a second on one core of the CI kind for the books' Cornell boxes. Each
+/// batch ends with the parallel loop's tail (about 3 ms on 2 cores): 2^18 cost 3 % of rtrol-cornell-glass's
+/// time, 2^21 nothing measurable (docs/PERFORMANCE.md).
+inline constexpr std::uint64_t kPathsPerBatch = std::uint64_t(1) << 20;
 
 class CpuEngine final : public RenderEngine
 {
