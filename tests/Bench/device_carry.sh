@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Prepares what tests/Bench/device_run.sh needs on the lent NVIDIA machine (Ubuntu 24.04, none of our Debian
+# packages, no network): .devcarry/ (bin: the built binaries, shaders and assets; lib: the shared libraries
+# ldd lists beyond glibc and libstdc++, which the host has newer; layers: the Khronos validation layer) and
+# .gl/ (Debian's Vulkan loader and the GL vendor-neutral libraries the NVIDIA ICD loads through). Both folders
+# are git-ignored; name them in the device tool's `carry`. Run from the repository root after a build.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+build=${BUILD_DIR:-build}
+rm -rf .devcarry
+mkdir -p .devcarry/lib .devcarry/layers .gl
+cp -rL "$build/bin" .devcarry/bin
+rm -f .devcarry/bin/rt_gui_gpu_tests .devcarry/bin/rt_bench # the window needs a display; benchmarks run here
+strip .devcarry/bin/ray-tracing-* .devcarry/bin/rt_*_tests 2>/dev/null || true
+for exe in .devcarry/bin/ray-tracing-gpu .devcarry/bin/ray-tracing-cpu .devcarry/bin/rt_gpu_tests; do
+    ldd "$exe" | awk '/=>/ {print $3}'
+done | sort -u | grep -vE '/(libc|libm|libdl|libpthread|librt|libstdc\+\+|libgcc_s)\.so' |
+    xargs -r -I{} cp -L {} .devcarry/lib/
+cp /usr/lib/x86_64-linux-gnu/libVkLayer_khronos_validation.so .devcarry/layers/
+sed 's|"library_path": "[^"]*"|"library_path": "./libVkLayer_khronos_validation.so"|' \
+    /usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json >.devcarry/layers/VkLayer_khronos_validation.json
+(cd .gl && apt-get download libvulkan1 libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2 2>/dev/null)
+du -sh .devcarry .gl
