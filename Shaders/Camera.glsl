@@ -5,7 +5,7 @@
 #define RT_CAMERA_GLSL
 
 #include "Random.glsl"
-#include "Sampling/Warps.glsl"
+#include "Shared/Warps.h"
 #include "Shared/HostDevice.h"
 
 struct CameraSample

@@ -6,7 +6,7 @@
 
 #include "Materials/Interaction.glsl"
 #include "Random.glsl"
-#include "Sampling/Warps.glsl"
+#include "Shared/Warps.h"
 #include "Textures/Texture.glsl"
 
 bool scatterMetal(MaterialData m, SurfaceHit hit, inout Rng rng, out ScatterSample s)

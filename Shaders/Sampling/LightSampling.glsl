@@ -8,7 +8,7 @@
 #include "Shared/HostDevice.h"
 #include "Math/Constants.glsl"
 #include "Math/Onb.glsl"
-#include "Sampling/Warps.glsl"
+#include "Shared/Warps.h"
 
 struct LightSample
 {

@@ -18,7 +18,7 @@ layout(push_constant, scalar) uniform Push { uint mode; uint caseCount; uint inp
 #include "Random.glsl"
 #include "RayOffset.glsl"
 #include "Sampling/LightSampling.glsl"
-#include "Sampling/Warps.glsl"
+#include "Shared/Warps.h"
 #include "Textures/Perlin.glsl"
 #include "Textures/Srgb.glsl"
 
