@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <spdlog/fmt/fmt.h>
 
@@ -24,15 +25,16 @@ std::string trimmed(std::string_view text)
     return std::string(text.substr(first, last - first + 1));
 }
 
+/// Integers end where the windows' int settings do.
+double integerMaximum(const ActionSpec& spec) { return std::min(spec.maximum, double(std::numeric_limits<int>::max())); }
+
 /// What the value must be, for the error message.
 std::string expected(const ActionSpec& spec)
 {
     switch (spec.value)
     {
     case ActionValue::None: return "no value";
-    case ActionValue::Integer:
-        return spec.maximum < 1e30 ? fmt::format("an integer in [{}, {}]", spec.minimum, spec.maximum)
-                                   : fmt::format("an integer >= {}", spec.minimum);
+    case ActionValue::Integer: return fmt::format("an integer in [{}, {}]", spec.minimum, integerMaximum(spec));
     case ActionValue::Real:
         return spec.maximum < 1e30 ? fmt::format("a number in [{}, {}]", spec.minimum, spec.maximum)
                                    : fmt::format("a number >= {}", spec.minimum);
@@ -52,7 +54,7 @@ bool valueFits(const ActionSpec& spec, const std::string& value, bool hasValue)
     case ActionValue::Integer:
     {
         const auto v = parseInteger(value);
-        ok = v && double(*v) >= spec.minimum && double(*v) <= spec.maximum;
+        ok = v && double(*v) >= spec.minimum && double(*v) <= integerMaximum(spec);
         break;
     }
     case ActionValue::Real:
@@ -134,7 +136,7 @@ std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long lo
         {"frames", ActionValue::Integer, "N", "let N frames pass", 0},
         {"theme", ActionValue::Text, "dark|light", "colour theme of the panel", 0, 1e30,
          [](const std::string& v) { return v == "dark" || v == "light"; }},
-        {"font-size", ActionValue::Integer, "PIXELS", "height of the panel's font", 8, 48},
+        {"font-size", ActionValue::Integer, "PIXELS", "height of the panel's font", 10, 32},
     };
 }
 

@@ -1,6 +1,7 @@
 // Shared between a running render and whoever watches it (the headless progress line, the GUI): a cancel
-// flag the engine polls between units of work, a count of finished units for progress and ETA, and how often
-// the watcher wants a preview.
+// flag the render driver polls between batches and an engine may poll within one, a count of finished units
+// of work (camera paths, advanced by the engine) for progress and ETA, and how often the watcher wants a
+// preview.
 #pragma once
 
 #include <atomic>
@@ -15,7 +16,7 @@ public:
     void requestCancel() { m_cancel.store(true, std::memory_order_relaxed); }
     bool cancelRequested() const { return m_cancel.load(std::memory_order_relaxed); }
 
-    /// Called by the engine before it starts: `totalUnits` units of work (rows x passes, dispatches, ...).
+    /// Called by the render driver before it starts: `totalUnits` units of work (the render's camera paths).
     void begin(std::uint64_t totalUnits);
     void advance(std::uint64_t units = 1) { m_done.fetch_add(units, std::memory_order_relaxed); }
 
@@ -27,9 +28,9 @@ public:
     /// Remaining seconds extrapolated from the rate so far; negative while unknown.
     double etaSeconds() const;
 
-    /// At most one preview per `interval` (default 0: one after every unit of work). Set before the render.
+    /// At most one preview per `interval` (default 0: one after every batch). Set before the render.
     void setPreviewInterval(std::chrono::nanoseconds interval) { m_previewIntervalNs.store(interval.count()); }
-    /// Asked by the engine before it builds a preview (an estimate image, a read-back from the device), so
+    /// Asked by the render driver before it builds a preview (an estimate image, a read-back from the device), so
     /// previews the watcher would drop cost nothing. True the first time and once `interval` has passed since
     /// the last true; a true counts as the preview taken.
     bool previewDue();

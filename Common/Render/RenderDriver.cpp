@@ -33,9 +33,11 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
     const int width = settings.width;
     const int height = settings.height();
     const auto totalSamples = static_cast<std::uint32_t>(settings.trueSpp());
-    const BatchPlan plan = planBatches(totalSamples, std::uint64_t(width) * std::uint64_t(height),
-                                       engine.pathsPerBatch(), settings.sampling == PixelSampling::Accumulate);
-    control.begin(plan.batchCount);
+    const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
+    const BatchPlan plan = planBatches(totalSamples, pixels, engine.pathsPerBatch(),
+                                       settings.sampling == PixelSampling::Accumulate);
+    RT_CHECK_GE(plan.batchCount, 1u);
+    control.begin(pixels * totalSamples); // progress in camera paths, advanced by the engine
 
     std::uint32_t samplesDone = 0;
     double deviceSeconds = 0.0;
@@ -45,16 +47,16 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
     {
         const std::uint32_t samples = plan.samplesIn(batch, totalSamples);
         RT_DCHECK_GT(samples, 0u);
-        const double seconds = engine.traceSamples(samplesDone, samples);
-        deviceTimed = deviceTimed && seconds >= 0.0;
-        deviceSeconds += seconds;
+        const BatchResult traced = engine.traceSamples(samplesDone, samples, control);
+        if (!traced.complete)
+            break;
+        deviceTimed = deviceTimed && traced.deviceSeconds >= 0.0;
+        deviceSeconds += traced.deviceSeconds;
         samplesDone += samples;
-        control.advance();
         if (preview && control.previewDue())
             preview(engine.estimate(samplesDone), static_cast<int>(samplesDone));
     }
     const double renderSeconds = secondsSince(renderStart);
-    RT_CHECK(control.cancelRequested() || samplesDone == totalSamples);
 
     RenderResult result;
     result.image = samplesDone > 0 ? engine.estimate(samplesDone) : Image(width, height);
@@ -69,12 +71,12 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
     st.buildSeconds = engine.buildSeconds();
     st.renderSeconds = renderSeconds;
     st.gpuSeconds = deviceTimed ? deviceSeconds : -1.0;
-    st.paths = std::uint64_t(width) * std::uint64_t(height) * samplesDone;
+    st.paths = pixels * samplesDone;
     st.segments = tally.segments;
     st.nanSamples = tally.nanSamples;
     st.infSamples = tally.infSamples;
     st.threadsUsed = tally.threadsUsed;
-    st.cancelled = control.cancelRequested();
+    st.cancelled = samplesDone < totalSamples; // a cancel during the last batch came too late to matter
     st.wallSeconds = secondsSince(wallStart) + st.buildSeconds; // the build belongs to the render's cost
     return result;
 }

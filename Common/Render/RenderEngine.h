@@ -8,6 +8,7 @@
 #include <string>
 
 #include "Image/Image.h"
+#include "Render/RenderControl.h"
 #include "Render/RenderSettings.h"
 #include "Scene/Scene.h"
 
@@ -20,6 +21,13 @@ struct SampleTally
     std::uint64_t nanSamples = 0; // camera samples whose radiance had a NaN (dropped from the accumulator)
     std::uint64_t infSamples = 0; // ... or an infinity
     int threadsUsed = 1; // host threads that traced
+};
+
+/// What one call of traceSamples did.
+struct BatchResult
+{
+    bool complete = true; // false: cancelled part way, the accumulator as it was before the call
+    double deviceSeconds = -1.0; // the device's own time for the batch; < 0 when it has no such clock
 };
 
 class RenderEngine
@@ -49,8 +57,9 @@ public:
     virtual void beginFrame(const RenderSettings& settings) = 0;
     /// Adds camera samples firstSample .. firstSample + count - 1 of every pixel to the accumulator, one after
     /// the other in sample order, so the sums do not depend on how the samples are cut into batches.
-    /// Returns the device's own seconds for the batch, or a negative number when it has no such clock.
-    virtual double traceSamples(std::uint32_t firstSample, std::uint32_t count) = 0;
+    /// Advances `control` by the camera paths traced (in parts, where the engine can: progress within a
+    /// batch) and may poll control.cancelRequested(): a batch it abandons leaves the accumulator as it was.
+    virtual BatchResult traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control) = 0;
     /// The accumulator divided by `samples` (> 0): linear radiance, the frame's width x height.
     virtual Image estimate(std::uint32_t samples) = 0;
     virtual SampleTally tally() const = 0;

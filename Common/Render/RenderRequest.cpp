@@ -4,14 +4,19 @@ namespace rt
 {
 Scene buildScene(const SceneRef& ref) { return makeScene(ref.id, ref.options); }
 
+void applySceneDefaults(RenderSettings& settings, const SceneDefaults& defaults)
+{
+    settings.spp = defaults.spp;
+    settings.depth = defaults.depth;
+    settings.width = defaults.width;
+    settings.aspect = defaults.aspect;
+    settings.unidirectionalLight = defaults.unidirectionalLight;
+}
+
 RenderRequest defaultRequest(const SceneRef& ref, const Scene& scene)
 {
     RenderRequest r{.scene = ref};
-    r.settings.spp = scene.defaults.spp;
-    r.settings.depth = scene.defaults.depth;
-    r.settings.width = scene.defaults.width;
-    r.settings.aspect = scene.defaults.aspect;
-    r.settings.unidirectionalLight = scene.defaults.unidirectionalLight;
+    applySceneDefaults(r.settings, scene.defaults);
     return r;
 }
 } // namespace rt

@@ -32,7 +32,10 @@ struct RenderRequest
 /// Builds the scene `ref` names. Throws SceneError (unknown id), AssetError (missing mesh or texture).
 Scene buildScene(const SceneRef& ref);
 
-/// The request for `ref` with the built scene's own defaults (spp, depth, size, emitter sidedness); the
-/// rest are RenderSettings' defaults.
+/// `settings` with a scene's own defaults: spp, depth, width, aspect, emitter sidedness.
+void applySceneDefaults(RenderSettings& settings, const SceneDefaults& defaults);
+
+/// The request for `ref` with the built scene's own defaults (applySceneDefaults); the rest are
+/// RenderSettings' defaults.
 RenderRequest defaultRequest(const SceneRef& ref, const Scene& scene);
 } // namespace rt

@@ -62,12 +62,15 @@ void CpuEngine::beginFrame(const RenderSettings& settings)
                           .camera = Camera(m_scene->source().camera, width, height),
                           .options = {settings.depth, settings.estimator, settings.unidirectionalLight},
                           .sum = Image(width, height),
+                          .before = Image(width, height),
                           .rows = std::vector<RowTally>(height),
+                          .rowsBefore = std::vector<RowTally>(height),
+                          .rowStates = std::vector<RowState>(height),
                           .rowIndices = std::vector<int>(height)});
     std::iota(m_frame->rowIndices.begin(), m_frame->rowIndices.end(), 0);
 }
 
-double CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count)
+BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control)
 {
     if (!m_frame)
         throw UsageError("CpuEngine::traceSamples called before beginFrame");
@@ -84,6 +87,15 @@ double CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count)
     Image& sums = f.sum;
     std::vector<RowTally>& tallies = f.rows;
     const auto row = [&](int y) {
+        if (control.cancelRequested())
+        {
+            f.rowStates[y] = RowState::Skipped;
+            return;
+        }
+        f.rowStates[y] = RowState::Traced;
+        const std::size_t rowStart = std::size_t(y) * std::size_t(width);
+        std::copy_n(sums.data() + rowStart, width, f.before.data() + rowStart);
+        f.rowsBefore[y] = tallies[y];
         RowTally& t = tallies[y];
         t.thread = std::hash<std::thread::id>{}(std::this_thread::get_id());
         for (int x = 0; x < width; ++x)
@@ -120,12 +132,22 @@ double CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count)
             }
             sums.at(x, y) = sum;
         }
+        control.advance(std::uint64_t(width) * count);
     };
     if (m_kind == EngineKind::Single)
         std::for_each(std::execution::seq, f.rowIndices.begin(), f.rowIndices.end(), row);
     else
         std::for_each(std::execution::par, f.rowIndices.begin(), f.rowIndices.end(), row);
-    return -1.0; // no clock of its own: the driver's host clock is the CPU's
+    if (std::find(f.rowStates.begin(), f.rowStates.end(), RowState::Skipped) == f.rowStates.end())
+        return {.complete = true}; // no clock of its own: the driver's host clock is the CPU's
+    for (int y = 0; y < f.sum.height(); ++y)
+        if (f.rowStates[y] == RowState::Traced)
+        {
+            const std::size_t rowStart = std::size_t(y) * std::size_t(width);
+            std::copy_n(f.before.data() + rowStart, width, sums.data() + rowStart);
+            tallies[y] = f.rowsBefore[y];
+        }
+    return {.complete = false};
 }
 
 Image CpuEngine::estimate(std::uint32_t samples)

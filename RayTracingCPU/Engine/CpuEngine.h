@@ -16,8 +16,8 @@
 namespace rt::cpu
 {
 /// Camera paths per batch: 2^20, half a second on one core of the CI kind for the books' Cornell boxes. Each
-/// batch ends with the parallel loop's tail (about 3 ms on 2 cores): 2^18 cost 3 % of rtrol-cornell-glass's
-/// time, 2^21 nothing measurable (docs/PERFORMANCE.md).
+/// batch ends with the parallel loop's tail (about 3 ms on 2 cores, docs/PERFORMANCE.md): fewer, larger
+/// batches cost less; progress and cancellation do not wait for a batch (they work per row).
 inline constexpr std::uint64_t kPathsPerBatch = std::uint64_t(1) << 20;
 
 class CpuEngine final : public RenderEngine
@@ -34,7 +34,9 @@ public:
 
     std::uint64_t pathsPerBatch() const override { return kPathsPerBatch; }
     void beginFrame(const RenderSettings& settings) override;
-    double traceSamples(std::uint32_t firstSample, std::uint32_t count) override;
+    /// Polls cancellation before each row and advances `control` after it; a cancelled batch puts back the
+    /// rows it had finished.
+    BatchResult traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control) override;
     Image estimate(std::uint32_t samples) override;
     SampleTally tally() const override;
 
@@ -48,13 +50,22 @@ private:
         std::size_t thread = 0; // hash of the thread that traced the row last
     };
 
+    enum class RowState : std::uint8_t
+    {
+        Skipped, // the batch was cancelled before the row started
+        Traced
+    };
+
     struct Frame
     {
         RenderSettings settings;
         Camera camera;
         PathOptions options;
         Image sum; // radiance sum of every sample traced so far
+        Image before; // each row of `sum` as the current batch found it: a cancelled batch puts it back
         std::vector<RowTally> rows;
+        std::vector<RowTally> rowsBefore;
+        std::vector<RowState> rowStates;
         std::vector<int> rowIndices; // 0 .. height - 1, the range the execution policy walks
     };
 

@@ -136,16 +136,19 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     e.clear();
 }
 
-double GpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count)
+BatchResult GpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control)
 {
-    if (!m_impl->target)
+    Impl& e = *m_impl;
+    if (!e.target || e.descriptors.set == VK_NULL_HANDLE)
         throw UsageError("GpuEngine::traceSamples called before beginFrame");
-    return m_impl->dispatch(firstSample, count);
+    const double seconds = e.dispatch(firstSample, count);
+    control.advance(std::uint64_t(e.target->width()) * e.target->height() * count);
+    return {.complete = true, .deviceSeconds = seconds};
 }
 
 Image GpuEngine::estimate(std::uint32_t samples)
 {
-    if (!m_impl->target)
+    if (!m_impl->target || m_impl->descriptors.set == VK_NULL_HANDLE)
         throw UsageError("GpuEngine::estimate called before beginFrame");
     m_impl->readback();
     return m_impl->target->readEstimate(samples);

@@ -54,8 +54,8 @@ public:
     /// Throws rt::UsageError when no scene is set, rt::DeviceError naming the limit when the image does not fit
     /// the device (dimension, memory, invocations per dispatch).
     void beginFrame(const RenderSettings& settings) override;
-    /// One dispatch, waited for; returns its GPU time from timestamp queries (< 0 without timestamps).
-    double traceSamples(std::uint32_t firstSample, std::uint32_t count) override;
+    /// One dispatch, waited for (never abandoned); its GPU time from timestamp queries (< 0 without them).
+    BatchResult traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control) override;
     /// Reads the accumulation image back (one submission, waited for).
     Image estimate(std::uint32_t samples) override;
     SampleTally tally() const override;

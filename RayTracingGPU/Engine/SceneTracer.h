@@ -2,7 +2,7 @@
 // (App/Gui/ProgressiveRenderer): the path-tracing pipeline, compiled once, and the scene on the device
 // (GpuScene: BLAS/TLAS, buffers, images). A caller traces into an accumulation image of its own with three
 // calls: a descriptor set naming the scene and its target, the uniforms of a camera and settings, and the
-// launches. Nothing here waits for the device or owns an image.
+// launches. It owns no image, and only setScene waits for the device.
 #pragma once
 
 #include <cstdint>

@@ -41,7 +41,7 @@ TEST(ActionGrammar, BadNamesAndValuesAreUsageErrorsQuotingTheAction)
 {
     for (const char* bad : {"bogus", "render=now", "spp=0", "spp=x", "depth=0", "pdf=yes", "resize=10",
                             "resize=-1x5", "resize=20000x10", "scene=", "scene=no-such-scene", "save=x.jpg",
-                            "save=.png", "theme=pink", "font-size=4", "font-size=1.5", "aspect=5", "aspect=nan",
+                            "save=.png", "theme=pink", "font-size=4", "font-size=33", "font-size=1.5", "spp=3000000000", "aspect=5", "aspect=nan",
                             "frames"})
     {
         try

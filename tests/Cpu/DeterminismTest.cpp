@@ -1,6 +1,7 @@
 // Reproducibility: a render depends on (scene, settings, seed) only, never on the thread schedule.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <thread>
 
 #include "RenderTestSupport.h"
@@ -64,6 +65,42 @@ TEST(CpuControl, CancelStopsARenderEarlyAndSaysSo)
     EXPECT_TRUE(r.stats.cancelled);
     EXPECT_EQ(r.stats.trueSpp, 3); // the image holds the finished passes only
     EXPECT_EQ(previews, 3);
+}
+TEST(CpuControl, CancelInsideABatchKeepsTheFinishedBatchesOnly)
+{
+    // 256 spp per batch of 2^20 paths at 64x64: a cancel lands inside a batch, whose rows are put back.
+    const Scene scene = makeScene("rtrol-cornell-glass");
+    cpu::CpuEngine engine(EngineKind::Multi);
+    engine.setScene(scene);
+    const RenderSettings s = smallSettings(64, 4096, 50, Estimator::Mixture);
+    RenderControl control;
+    const std::uint64_t batchPaths = 64ull * 64 * 256;
+    std::thread canceller([&] { // halfway through the second batch, by the engine's per-row progress
+        while (control.done() < batchPaths + batchPaths / 2)
+            std::this_thread::sleep_for(std::chrono::microseconds(200));
+        control.requestCancel();
+    });
+    const RenderResult cancelled = renderWithSettings(engine, s, control);
+    canceller.join();
+    ASSERT_TRUE(cancelled.stats.cancelled);
+    EXPECT_EQ(cancelled.stats.trueSpp, 256) << "the first batch only";
+    EXPECT_GE(control.done(), cancelled.stats.paths) << "progress counts the paths traced, abandoned rows too";
+    RenderSettings same = s;
+    same.spp = cancelled.stats.trueSpp;
+    EXPECT_TRUE(bitIdentical(cancelled.image, renderCpu(scene, same).image))
+        << "the image is a complete render of its true spp: no row of the abandoned batch stayed";
+}
+
+TEST(CpuControl, ProgressCountsEveryPath)
+{
+    const Scene scene = makeScene("rtrol-cornell-box");
+    cpu::CpuEngine engine(EngineKind::Single);
+    engine.setScene(scene);
+    RenderControl control;
+    const RenderResult r = renderWithSettings(engine, smallSettings(40, 9, 10, Estimator::Mixture), control);
+    EXPECT_EQ(control.total(), 40ull * 40 * 9);
+    EXPECT_EQ(control.done(), control.total());
+    EXPECT_EQ(r.stats.paths, control.total());
 }
 } // namespace
 } // namespace rt::test

@@ -136,11 +136,7 @@ bool Session::applySceneDefaults()
         return false;
     }
     RenderRequest s = m_image;
-    s.settings.spp = d->spp;
-    s.settings.depth = d->depth;
-    s.settings.width = d->width;
-    s.settings.aspect = d->aspect;
-    s.settings.unidirectionalLight = d->unidirectionalLight;
+    rt::applySceneDefaults(s.settings, *d);
     return tryImage(s);
 }
 

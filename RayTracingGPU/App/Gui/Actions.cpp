@@ -100,7 +100,7 @@ bool applyAction(const Action& a, Controls& c)
     else if (n == "theme")
         c.setDarkStyle(a.value == "dark");
     else if (n == "font-size")
-        c.setFontScale(float(a.integer()) / kPanelFontPixels);
+        c.setFontPixels(int(a.integer()));
     else if (n == "raytracing")
         c.setRayTracing(a.on());
     else if (n == "accumulate")

@@ -62,6 +62,11 @@ void Controls::setFont(const std::string& name)
 }
 
 void Controls::setFontScale(float scale) { m_state->display.fontScale = std::clamp(scale, 0.5f, 3.0f); }
+
+void Controls::setFontPixels(int pixels)
+{
+    setFontScale(float(pixels) / (m_state->display.font == 0 ? kImGuiFontPixels : kPanelFontPixels));
+}
 void Controls::save(const std::filesystem::path& png) { m_state->saveRequest = png; }
 void Controls::resize(Extent size) { m_state->resizeRequest = Extent{std::max(size.width, 0), std::max(size.height, 0)}; }
 } // namespace rt::gpu::gui

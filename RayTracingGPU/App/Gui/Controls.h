@@ -42,6 +42,8 @@ public:
     /// One of WindowState::fonts; throws rt::UsageError naming the others for any other name.
     void setFont(const std::string& name);
     void setFontScale(float scale);
+    /// The scale at which the current font is `pixels` high (the --actions' font-size, as in the CPU window).
+    void setFontPixels(int pixels);
     /// Asks for the accumulated image as PNG at `png` and PFM beside it (same name, .pfm).
     void save(const std::filesystem::path& png);
     /// Asks for a window of `size` (0 x 0: minimised).

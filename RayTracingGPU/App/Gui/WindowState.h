@@ -49,7 +49,9 @@ struct ImageSettings
     }
 };
 
-/// Pixel height of the panel's font at fontScale 1 (ImGui's own font is 13).
+/// Pixel height of the panel's fonts at fontScale 1: WindowState::fonts[0] is ImGui's own, the others are
+/// loaded at kPanelFontPixels.
+inline constexpr float kImGuiFontPixels = 13.0f;
 inline constexpr float kPanelFontPixels = 15.0f;
 
 struct DisplaySettings
