@@ -2,7 +2,8 @@
 // once, in Shared/ headers that include this one (Shared/Warps.h). Write such code in the common subset:
 // GLSL types and constructors (vec2, vec3), float literals with an `f` suffix (GLSL accepts it; without it
 // C++ would compute in double and the engines would differ), the scalar functions below, RT_FN before each
-// function and RT_OUT(T) for out parameters. C++ sees it in namespace rt::shader.
+// function, RT_OUT(T) for out parameters and RT_ENUM(Type, Value) for HostDevice.h's tags. C++ sees it in
+// namespace rt::shader.
 #ifndef RT_SHADER_LANG_H
 #define RT_SHADER_LANG_H
 
@@ -13,11 +14,15 @@
 
 namespace rt::shader
 {
+using glm::cross;
+using glm::dot;
+using glm::length;
 using glm::vec2;
 using glm::vec3;
 using rt::kInv4Pi;
 using rt::kInvPi;
 using rt::kPi;
+using rt::lengthSquared;
 using rt::safeSqrt;
 
 // GLSL's built-ins for float, so that an unqualified call never reaches C's double versions.
@@ -26,10 +31,13 @@ inline float sin(float x) { return std::sin(x); }
 inline float cos(float x) { return std::cos(x); }
 inline float abs(float x) { return std::fabs(x); }
 inline float roundEven(float x) { return std::nearbyint(x); } // the default rounding mode: to nearest, ties even
+/// +1 or -1 with the sign bit of x (-0 gives -1): copysign(1, x). GLSL's sign() returns 0 for 0.
+inline float signNotZero(float x) { return std::copysign(1.0f, x); }
 } // namespace rt::shader
 
 #define RT_FN inline
 #define RT_OUT(Type) Type&
+#define RT_ENUM(Type, Value) Type::Value
 #define RT_SHADER_NAMESPACE_BEGIN namespace rt::shader {
 #define RT_SHADER_NAMESPACE_END }
 #else
@@ -37,6 +45,12 @@ inline float roundEven(float x) { return std::nearbyint(x); } // the default rou
 
 #define RT_FN
 #define RT_OUT(Type) out Type
+#define RT_ENUM(Type, Value) Type##_##Value
+
+float signNotZero(float x)
+{
+    return (floatBitsToUint(x) & 0x80000000u) != 0u ? -1.0 : 1.0;
+}
 #define RT_SHADER_NAMESPACE_BEGIN
 #define RT_SHADER_NAMESPACE_END
 #endif

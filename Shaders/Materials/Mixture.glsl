@@ -7,9 +7,9 @@
 #define RT_MIXTURE_GLSL
 
 #include "Materials/Interaction.glsl"
-#include "Math/Onb.glsl"
+#include "Shared/Onb.h"
 #include "Random.glsl"
-#include "Sampling/LightSampling.glsl"
+#include "Shared/LightSampling.h"
 
 /// The BSDF strategy is the cosine lobe about ns, or the uniform sphere for an isotropic phase function.
 /// False when the path must stop (the light sample failed, or the direction has no density).

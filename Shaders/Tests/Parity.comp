@@ -17,7 +17,7 @@ layout(push_constant, scalar) uniform Push { uint mode; uint caseCount; uint inp
 #include "Geometry/Sphere.glsl"
 #include "Random.glsl"
 #include "RayOffset.glsl"
-#include "Sampling/LightSampling.glsl"
+#include "Shared/LightSampling.h"
 #include "Shared/Warps.h"
 #include "Textures/Perlin.glsl"
 #include "Textures/Srgb.glsl"

@@ -1,0 +1,160 @@
+// Sampling directions towards one light of the scene's world-space light list, and the solid-angle pdf of
+// any direction under that strategy, written once for both engines (Shared/ShaderLang.h). Both are needed
+// by the book-3 mixture (RTTROYL §9-12): the pdf of a direction must be evaluated for every light, whichever
+// strategy produced the direction.
+//
+// Conventions: `p` is the shading point (world space), `wi` a unit direction leaving p, pdfs are per unit
+// solid angle at p. A pdf is 0 for a direction that cannot be produced (misses the light), never a guess.
+#ifndef RT_SHARED_LIGHT_SAMPLING_H
+#define RT_SHARED_LIGHT_SAMPLING_H
+
+#include "Shared/HostDevice.h"
+#include "Shared/Onb.h"
+#include "Shared/ShaderLang.h"
+#include "Shared/Warps.h"
+
+RT_SHADER_NAMESPACE_BEGIN
+
+struct LightSample
+{
+    vec3 wi; // unit direction from p towards the sampled point
+    float pdf; // per unit solid angle
+    float distance; // from p to the sampled point on the light (a lower bound for cone-sampled spheres)
+};
+
+/// Area-measure pdf 1/area turned into solid angle at squared distance `dist2` with |cos| at the light.
+RT_FN float areaToSolidAngle(float dist2, float cosLight, float area)
+{
+    return cosLight > 0.0f ? dist2 / (cosLight * area) : 0.0f;
+}
+
+/// Sphere seen from p: true if p is outside (cone sampling applies), with 1 - cos(theta_max), cos(theta_max)
+/// and the unit axis towards the centre.
+RT_FN bool sphereCone(LightData s, vec3 p, RT_OUT(float) oneMinusCos, RT_OUT(float) cosThetaMax,
+                      RT_OUT(vec3) axis)
+{
+    const vec3 toCenter = s.p0 - p;
+    const float d2 = lengthSquared(toCenter);
+    const float r2 = s.radius * s.radius;
+    oneMinusCos = 0.0f;
+    cosThetaMax = 1.0f;
+    axis = vec3(0.0f, 0.0f, 1.0f);
+    if (d2 <= r2 * 1.00001f)
+        return false;
+    const float sin2 = r2 / d2;
+    cosThetaMax = safeSqrt(1.0f - sin2);
+    oneMinusCos = sin2 / (1.0f + cosThetaMax); // = 1 - cos without cancellation (research notes §1.2)
+    axis = toCenter / sqrt(d2);
+    return true;
+}
+
+/// lightPdf of a sphere seen from outside, from sphereCone's cone: uniform over the cone, 0 outside it.
+RT_FN float conePdf(float oneMinusCos, vec3 axis, vec3 wi)
+{
+    // In the cone iff the chord |wi - axis| = sqrt(2 (1 - cos)) is at most the cone's: unlike a float cosine,
+    // which moves in steps of 6e-8 near 1 (coarser than a small cone's 1 - cos), the chord keeps its precision
+    // at every size. The slack is the rounding of a float unit direction (4 ulps of 1 = 4 / 2^24).
+    const bool inside = length(wi - axis) <= sqrt(2.0f * oneMinusCos) + 4.0f / 16777216.0f;
+    return inside ? uniformConePdf(oneMinusCos) : 0.0f;
+}
+
+/// Far root of the ray p + t wi against a sphere that contains p (t > 0 always exists).
+RT_FN float sphereExitDistance(LightData s, vec3 p, vec3 wi)
+{
+    const vec3 f = p - s.p0;
+    const float b = dot(f, wi);
+    const vec3 l = f - b * wi; // closest approach (Hearn & Baker discriminant, RTG ch. 7)
+    const float disc = s.radius * s.radius - lengthSquared(l);
+    return -b + safeSqrt(disc);
+}
+
+/// Parametric hit of the ray p + t wi with the parallelogram / triangle of `light`; returns t or -1.
+RT_FN float planarHit(LightData light, vec3 p, vec3 wi)
+{
+    const float denom = dot(light.normal, wi);
+    if (abs(denom) < 1e-9f)
+        return -1.0f;
+    const float t = dot(light.normal, light.p0 - p) / denom;
+    if (!(t > 0.0f))
+        return -1.0f;
+    const vec3 planar = p + t * wi - light.p0;
+    const float alpha = dot(planar, light.dualU);
+    const float beta = dot(planar, light.dualV);
+    // A few ulps of slack: a sample on the light's edge (u = 1) must find its own pdf after rounding
+    // (sampleLight takes its pdf from here), and the border it adds has no measure worth a bias.
+    const float lo = -1e-6f;
+    const float hi = 1.0f + 1e-6f;
+    if (light.shape == RT_ENUM(LightShape, Quad))
+        return (alpha >= lo && alpha <= hi && beta >= lo && beta <= hi) ? t : -1.0f;
+    return (alpha >= lo && beta >= lo && alpha + beta <= hi) ? t : -1.0f;
+}
+
+/// Solid-angle pdf with which sampleLight(light, p, .) produces the unit direction `wi`; 0 if it cannot.
+RT_FN float lightPdf(LightData light, vec3 p, vec3 wi)
+{
+    if (light.shape == RT_ENUM(LightShape, Sphere))
+    {
+        float oneMinusCos;
+        float cosThetaMax;
+        vec3 axis;
+        if (sphereCone(light, p, oneMinusCos, cosThetaMax, axis))
+            return conePdf(oneMinusCos, axis, wi);
+        const float t = sphereExitDistance(light, p, wi);
+        if (!(t > 0.0f))
+            return 0.0f;
+        const vec3 n = (p + t * wi - light.p0) / light.radius;
+        const float area = 4.0f * kPi * light.radius * light.radius;
+        return areaToSolidAngle(t * t, abs(dot(n, wi)), area);
+    }
+    const float t = planarHit(light, p, wi);
+    if (t < 0.0f)
+        return 0.0f;
+    return areaToSolidAngle(t * t, abs(dot(light.normal, wi)), light.area);
+}
+
+/// Samples a direction from p towards `light` with uniform-area (quad, triangle, sphere seen from inside) or
+/// uniform-cone (sphere seen from outside) density. The pdf it returns is lightPdf(light, p, wi) itself, so
+/// a sample and the pdf of its direction can never disagree: a direction that rounding puts outside the light
+/// (p in the light's own plane, a cone sample on the silhouette) is dropped instead of being weighted by a pdf
+/// the mixture's other terms cannot see (that mismatch biased a closed-box furnace by +0.7 %).
+/// Returns false when no direction can be produced.
+RT_FN bool sampleLight(LightData light, vec3 p, vec2 u, RT_OUT(LightSample) ls)
+{
+    ls.wi = vec3(0.0f);
+    ls.pdf = 0.0f;
+    ls.distance = 0.0f;
+    vec3 y;
+    if (light.shape == RT_ENUM(LightShape, Sphere))
+    {
+        float oneMinusCos;
+        float cosThetaMax;
+        vec3 axis;
+        if (sphereCone(light, p, oneMinusCos, cosThetaMax, axis))
+        {
+            ls.wi = onbToWorld(onbFromNormal(axis), sampleUniformCone(u, oneMinusCos));
+            ls.distance = length(light.p0 - p) - light.radius; // lower bound; the mixture needs no more
+            ls.pdf = conePdf(oneMinusCos, axis, ls.wi); // = lightPdf(light, p, ls.wi), cone reused
+            return ls.pdf > 0.0f;
+        }
+        y = light.p0 + light.radius * sampleUniformSphere(u);
+    }
+    else if (light.shape == RT_ENUM(LightShape, Quad))
+        y = light.p0 + u.x * light.p1 + u.y * light.p2;
+    else
+    {
+        const vec2 b = sampleUniformTriangle(u);
+        y = light.p0 + b.x * light.p1 + b.y * light.p2; // p1, p2 are edges from p0
+    }
+    const vec3 w = y - p;
+    const float dist2 = lengthSquared(w);
+    if (!(dist2 > 0.0f))
+        return false;
+    ls.distance = sqrt(dist2);
+    ls.wi = w / ls.distance;
+    ls.pdf = lightPdf(light, p, ls.wi);
+    return ls.pdf > 0.0f;
+}
+
+RT_SHADER_NAMESPACE_END
+
+#endif
