@@ -10,11 +10,14 @@
 
 RT_SHADER_NAMESPACE_BEGIN
 
-/// sin and cos of 2 pi u for u in [0, 1]: quadrant reduction, then Taylor polynomials on [-pi/4, pi/4]
-/// (degree 7 and 8: absolute error below 4e-7). Sampling needs no more; libm's sincosf was a tenth of a
-/// diffuse bounce on the CPU, and the GPU's sin/cos are guaranteed only to 2^-11 (Vulkan).
+/// sin and cos of 2 pi u for u in [0, 1]. On the CPU: quadrant reduction, then Taylor polynomials on
+/// [-pi/4, pi/4] (degree 7 and 8: absolute error below 4e-7), as libm's sincosf was a tenth of a diffuse
+/// bounce. On the GPU: the hardware's sin and cos, one instruction each; the polynomial's quadrant switch
+/// cost an H200 8 % of cornell-box-lights' time (docs/PERFORMANCE.md). Vulkan guarantees them to 2^-11
+/// absolute only; the parity test bounds what the devices really do.
 RT_FN void sinCos2Pi(float u, RT_OUT(float) s, RT_OUT(float) c)
 {
+#ifdef __cplusplus
     const float u4 = 4.0f * u;
     const float quadrant = roundEven(u4);
     const float t = (u4 - quadrant) * (kPi / 2.0f); // in [-pi/4, pi/4]
@@ -40,6 +43,11 @@ RT_FN void sinCos2Pi(float u, RT_OUT(float) s, RT_OUT(float) c)
         c = st;
         break;
     }
+#else
+    const float phi = 2.0f * kPi * u;
+    s = sin(phi);
+    c = cos(phi);
+#endif
 }
 
 /// Cosine-weighted direction about +z (Malley's method: uniform disk point lifted to the hemisphere).
