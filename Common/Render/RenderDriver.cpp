@@ -40,6 +40,8 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
     control.begin(pixels * totalSamples); // progress in camera paths, advanced by the engine
 
     std::uint32_t samplesDone = 0;
+    Image previewImage; // the last preview's estimate, the result too when no batch followed it
+    std::uint32_t previewSamples = 0;
     double deviceSeconds = 0.0;
     bool deviceTimed = true;
     const Clock::time_point renderStart = Clock::now();
@@ -54,12 +56,21 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
         deviceSeconds += traced.deviceSeconds;
         samplesDone += samples;
         if (preview && control.previewDue())
-            preview(engine.estimate(samplesDone), static_cast<int>(samplesDone));
+        {
+            previewImage = engine.estimate(samplesDone);
+            previewSamples = samplesDone;
+            preview(previewImage, static_cast<int>(samplesDone));
+        }
     }
     const double renderSeconds = secondsSince(renderStart);
 
     RenderResult result;
-    result.image = samplesDone > 0 ? engine.estimate(samplesDone) : Image(width, height);
+    if (samplesDone == 0)
+        result.image = Image(width, height);
+    else if (previewSamples == samplesDone)
+        result.image = std::move(previewImage); // no second readback of the same estimate
+    else
+        result.image = engine.estimate(samplesDone);
     const SampleTally tally = engine.tally();
     RenderStats& st = result.stats;
     st.request = request;
