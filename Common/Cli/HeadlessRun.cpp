@@ -13,6 +13,7 @@
 #include <spdlog/spdlog.h>
 
 #include "Error.h"
+#include "Format.h"
 #include "Image/ImageIO.h"
 #include "Render/RenderDriver.h"
 
@@ -127,6 +128,7 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& r
     checkOutputPaths(o);
     spdlog::info("scene {}: {} primitives, {} lights; {} engine on {}", scene.id, scene.primitiveCount(),
                  scene.lights.size(), toString(engine.kind()), engine.deviceName());
+    spdlog::info("settings: {}", request.settings); // the scene's defaults with the flags applied
     const double build = engine.setScene(scene);
     spdlog::info("acceleration structures built in {:.3f} s", build);
 
