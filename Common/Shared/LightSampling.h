@@ -30,7 +30,7 @@ RT_FN float areaToSolidAngle(float dist2, float cosLight, float area)
 
 /// Sphere seen from p: true if p is outside (cone sampling applies), with 1 - cos(theta_max), cos(theta_max)
 /// and the unit axis towards the centre.
-RT_FN bool sphereCone(LightData s, vec3 p, RT_OUT(float) oneMinusCos, RT_OUT(float) cosThetaMax,
+RT_FN bool sphereCone(RT_IN(LightData) s, vec3 p, RT_OUT(float) oneMinusCos, RT_OUT(float) cosThetaMax,
                       RT_OUT(vec3) axis)
 {
     const vec3 toCenter = s.p0 - p;
@@ -59,7 +59,7 @@ RT_FN float conePdf(float oneMinusCos, vec3 axis, vec3 wi)
 }
 
 /// Far root of the ray p + t wi against a sphere that contains p (t > 0 always exists).
-RT_FN float sphereExitDistance(LightData s, vec3 p, vec3 wi)
+RT_FN float sphereExitDistance(RT_IN(LightData) s, vec3 p, vec3 wi)
 {
     const vec3 f = p - s.p0;
     const float b = dot(f, wi);
@@ -69,7 +69,7 @@ RT_FN float sphereExitDistance(LightData s, vec3 p, vec3 wi)
 }
 
 /// Parametric hit of the ray p + t wi with the parallelogram / triangle of `light`; returns t or -1.
-RT_FN float planarHit(LightData light, vec3 p, vec3 wi)
+RT_FN float planarHit(RT_IN(LightData) light, vec3 p, vec3 wi)
 {
     const float denom = dot(light.normal, wi);
     if (abs(denom) < 1e-9f)
@@ -90,7 +90,7 @@ RT_FN float planarHit(LightData light, vec3 p, vec3 wi)
 }
 
 /// Solid-angle pdf with which sampleLight(light, p, .) produces the unit direction `wi`; 0 if it cannot.
-RT_FN float lightPdf(LightData light, vec3 p, vec3 wi)
+RT_FN float lightPdf(RT_IN(LightData) light, vec3 p, vec3 wi)
 {
     if (light.shape == RT_ENUM(LightShape, Sphere))
     {
@@ -118,7 +118,7 @@ RT_FN float lightPdf(LightData light, vec3 p, vec3 wi)
 /// (p in the light's own plane, a cone sample on the silhouette) is dropped instead of being weighted by a pdf
 /// the mixture's other terms cannot see (that mismatch biased a closed-box furnace by +0.7 %).
 /// Returns false when no direction can be produced.
-RT_FN bool sampleLight(LightData light, vec3 p, vec2 u, RT_OUT(LightSample) ls)
+RT_FN bool sampleLight(RT_IN(LightData) light, vec3 p, vec2 u, RT_OUT(LightSample) ls)
 {
     ls.wi = vec3(0.0f);
     ls.pdf = 0.0f;

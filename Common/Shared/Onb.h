@@ -28,7 +28,7 @@ RT_FN Onb onbFromNormal(vec3 n)
     return onb;
 }
 
-RT_FN vec3 onbToWorld(Onb onb, vec3 local) { return local.x * onb.u + local.y * onb.v + local.z * onb.w; }
+RT_FN vec3 onbToWorld(RT_IN(Onb) onb, vec3 local) { return local.x * onb.u + local.y * onb.v + local.z * onb.w; }
 
 RT_SHADER_NAMESPACE_END
 

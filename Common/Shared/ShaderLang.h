@@ -2,8 +2,8 @@
 // once, in Shared/ headers that include this one (Shared/Warps.h). Write such code in the common subset:
 // GLSL types and constructors (vec2, vec3), float literals with an `f` suffix (GLSL accepts it; without it
 // C++ would compute in double and the engines would differ), the scalar functions below, RT_FN before each
-// function, RT_OUT(T) for out parameters and RT_ENUM(Type, Value) for HostDevice.h's tags. C++ sees it in
-// namespace rt::shader.
+// function, RT_OUT(T) for out parameters, RT_IN(T) for struct parameters and RT_ENUM(Type, Value) for
+// HostDevice.h's tags. C++ sees it in namespace rt::shader.
 #ifndef RT_SHADER_LANG_H
 #define RT_SHADER_LANG_H
 
@@ -37,6 +37,8 @@ inline float signNotZero(float x) { return std::copysign(1.0f, x); }
 
 #define RT_FN inline
 #define RT_OUT(Type) Type&
+// Structs go in by const reference on the CPU, as C++ code passes them (no copy left to the optimiser).
+#define RT_IN(Type) const Type&
 #define RT_ENUM(Type, Value) Type::Value
 #define RT_SHADER_NAMESPACE_BEGIN namespace rt::shader {
 #define RT_SHADER_NAMESPACE_END }
@@ -45,6 +47,7 @@ inline float signNotZero(float x) { return std::copysign(1.0f, x); }
 
 #define RT_FN
 #define RT_OUT(Type) out Type
+#define RT_IN(Type) Type
 #define RT_ENUM(Type, Value) Type##_##Value
 
 float signNotZero(float x)
