@@ -25,8 +25,11 @@ std::string trimmed(std::string_view text)
     return std::string(text.substr(first, last - first + 1));
 }
 
-/// Integers end where the windows' int settings do.
-double integerMaximum(const ActionSpec& spec) { return std::min(spec.maximum, double(std::numeric_limits<int>::max())); }
+/// Integers without a maximum of their own end where the windows' int settings do.
+double integerMaximum(const ActionSpec& spec)
+{
+    return spec.maximum >= 1e30 ? double(std::numeric_limits<int>::max()) : spec.maximum;
+}
 
 /// What the value must be, for the error message.
 std::string expected(const ActionSpec& spec)

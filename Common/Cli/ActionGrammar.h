@@ -16,7 +16,7 @@ namespace rt
 enum class ActionValue
 {
     None, // a bare name: "render"
-    Integer, // at least ActionSpec::minimum, at most ActionSpec::maximum and INT_MAX
+    Integer, // at least ActionSpec::minimum, at most ActionSpec::maximum (INT_MAX when it has none)
     Real, // finite, in [minimum, maximum]
     OnOff, // "on" or "off"
     Size, // "WxH", each in [0, 16384]

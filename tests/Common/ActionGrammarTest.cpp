@@ -71,6 +71,16 @@ TEST(ActionGrammar, SharedActionsAreTheSameForBothWindows)
     EXPECT_THROW(parseActionScript("spp=0", joinActionSpecs(cpu, {})), UsageError);
 }
 
+TEST(ActionGrammar, IntegersEndAtTheirOwnMaximumOrIntMax)
+{
+    const std::vector<ActionSpec> specs = {{"seed", ActionValue::Integer, "N", "seed", 0, 4294967295.0},
+                                           {"count", ActionValue::Integer, "N", "count", 0}};
+    EXPECT_EQ(parseActionScript("seed=4294967295", specs).front().integer(), 4294967295ll);
+    EXPECT_THROW(parseActionScript("seed=4294967296", specs), UsageError);
+    EXPECT_EQ(parseActionScript("count=2147483647", specs).front().integer(), 2147483647ll);
+    EXPECT_THROW(parseActionScript("count=2147483648", specs), UsageError);
+}
+
 TEST(ActionGrammar, HelpListsEveryAction)
 {
     const std::string help = actionScriptHelp(specsWithRender());
