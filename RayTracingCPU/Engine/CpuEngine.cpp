@@ -80,7 +80,7 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
     const std::uint32_t strata = static_cast<std::uint32_t>(f.settings.strata());
     const float invStrata = 1.0f / float(strata);
     const std::uint32_t seed = f.settings.seed;
-    // Locals, as the compiler cannot keep members in registers across the path tracer's stores.
+    // The batch's inputs as locals, read once rather than through the frame in the inner loop.
     const Camera camera = f.camera;
     const PathOptions options = f.options;
     const CpuScene& scene = *m_scene;
