@@ -21,8 +21,15 @@ layout(binding = kBindingTriangleMaterials, scalar) readonly buffer TriangleMate
 layout(binding = kBindingSpheres, scalar) readonly buffer SphereBlock { SphereRecord spheres[]; };
 layout(binding = kBindingMedia, scalar) readonly buffer MediumBlock { MediumRecord media[]; };
 layout(binding = kBindingCounters, scalar) buffer CounterBlock { SampleCounters counters; };
+layout(binding = kBindingPrimitiveLights, scalar) readonly buffer PrimitiveLightBlock { uint primitiveLights[]; };
 layout(binding = kBindingImages) uniform sampler2D images[];
 
 layout(push_constant, scalar) uniform PushBlock { TracePushConstants push; };
+
+/// The light that primitive `primitive` of a record is (InstanceRecord::firstPrimitiveLight), or kNoIndex.
+uint primitiveLight(InstanceRecord record, uint primitive)
+{
+    return record.firstPrimitiveLight == kNoIndex ? kNoIndex : primitiveLights[record.firstPrimitiveLight + primitive];
+}
 
 #endif

@@ -1,14 +1,18 @@
 // The path-tracing estimator of one camera sample, iterative (no recursion from hit shaders): the twin of
-// the CPU engine's integrator. Per segment: trace; on a miss add the background; on a hit add the emission
-// (front face only with unidirectional lights), stop on the last segment, else scatter by the material
-// (BSDF only, or the book-3 mixture over the light list) and continue from an offset origin.
+// the CPU engine's loop (RayTracingCPU/Integrator/PathIntegrator.h, which describes the four estimators).
+// Per segment: trace; on a miss add the background; on a hit add the emission (front face only with
+// unidirectional lights; MIS-weighted after a NEE vertex), stop on the last segment, else scatter: NEE and a
+// diffuse direction at diffuse vertices with nee / nee-mis, else by the material (BSDF only, or the book-3
+// mixture over the light list); then Russian roulette, and continue from an offset origin.
 // Needs the payload `payload` (location 0) and the globals of Bindings.glsl.
 #ifndef RT_INTEGRATOR_GLSL
 #define RT_INTEGRATOR_GLSL
 
+#include "DirectLighting.glsl"
 #include "Materials/Scatter.glsl"
 #include "Payload.glsl"
 #include "RayOffset.glsl"
+#include "Shared/RussianRoulette.h"
 
 // Far enough for any scene, finite so that no driver sees an infinite interval.
 const float kRayTMax = 3.0e38;
@@ -17,8 +21,15 @@ const float kRayTMax = 3.0e38;
 /// sample is counted like the CPU engine's instead of reaching traversal (undefined for NaN rays).
 vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
 {
+    bool nee = (uniforms.estimator == Estimator_Nee || uniforms.estimator == Estimator_NeeMis) &&
+               uniforms.emitterCount > 0u;
+    bool mis = uniforms.estimator == Estimator_NeeMis;
     vec3 radiance = vec3(0.0);
     vec3 beta = vec3(1.0);
+    // The origin of the current ray and its direction's BSDF pdf, for the MIS weight of the emission it finds
+    // (pdf 0: count it in full).
+    vec3 previousPoint = vec3(0.0);
+    float previousBsdfPdf = 0.0;
     for (uint segment = 0u; segment < uniforms.depth; ++segment)
     {
         if (!isFiniteVec(origin) || !isFiniteVec(direction))
@@ -31,6 +42,7 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
         }
         MaterialData m = materials[payload.material];
         bool medium = (payload.flags & kHitMedium) != 0u;
+        float offsetScale = payload.offsetScale;
         SurfaceHit hit;
         hit.position = payload.position;
         hit.normal = payload.normal;
@@ -40,18 +52,53 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
         hit.incoming = direction;
 
         if (m.emissionTexture != kNoIndex && (uniforms.unidirectionalLight == 0u || hit.frontFace))
-            radiance += beta * evaluateTexture(m.emissionTexture, hit.uv, hit.position);
+        {
+            float weight = 1.0;
+            if (previousBsdfPdf > 0.0 && payload.light != kNoIndex)
+                weight = mis ? powerHeuristic(previousBsdfPdf, uniformLightPmf(uniforms.emitterCount) *
+                                                                   lightPdf(lights[payload.light], previousPoint,
+                                                                            normalize(direction)))
+                             : 0.0;
+            radiance += beta * evaluateTexture(m.emissionTexture, hit.uv, hit.position) * weight;
+        }
         if (segment + 1u == uniforms.depth)
             break;
 
-        ScatterSample s;
-        if (!scatter(m, hit, rng, s))
-            break;
-        beta *= s.weight;
+        previousBsdfPdf = 0.0;
+        bool diffuse = m.type == MaterialType_Lambertian || m.type == MaterialType_Isotropic;
+        if (nee && diffuse)
+        {
+            bool phase = m.type == MaterialType_Isotropic;
+            vec3 albedo = evaluateTexture(m.albedoTexture, hit.uv, hit.position);
+            // The BSDF ray leaves from this origin too (below): sampleDiffuse keeps to the side of ns.
+            vec3 vertexOrigin = medium ? hit.position : offsetRayOrigin(hit.position, hit.shadingNormal, offsetScale);
+            radiance += beta * estimateDirect(vertexOrigin, hit.shadingNormal, phase, albedo, mis, rng);
+            direction = sampleDiffuse(phase, hit.shadingNormal, nextFloat2(rng));
+            beta *= albedo;
+            previousBsdfPdf = diffusePdf(phase, hit.shadingNormal, direction);
+        }
+        else
+        {
+            ScatterSample s;
+            if (!scatter(m, hit, rng, s))
+                break;
+            beta *= s.weight;
+            direction = s.direction;
+        }
+        if (uniforms.russianRoulette != 0u)
+        {
+            float survival = rouletteSurvival(beta, segment);
+            if (survival < 1.0)
+            {
+                if (!(nextFloat(rng) < survival))
+                    break;
+                beta /= survival;
+            }
+        }
         origin = medium ? hit.position
-                        : offsetRayOrigin(hit.position, dot(s.direction, hit.normal) > 0.0 ? hit.normal : -hit.normal,
-                                          payload.offsetScale);
-        direction = s.direction;
+                        : offsetRayOrigin(hit.position, dot(direction, hit.normal) > 0.0 ? hit.normal : -hit.normal,
+                                          offsetScale);
+        previousPoint = origin;
     }
     return radiance;
 }

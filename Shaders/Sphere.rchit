@@ -15,7 +15,8 @@ hitAttributeEXT vec3 hitCenter;
 
 void main()
 {
-    SphereRecord sphere = spheres[instances[gl_InstanceCustomIndexEXT].firstSphere + gl_PrimitiveID];
+    InstanceRecord record = instances[gl_InstanceCustomIndexEXT];
+    SphereRecord sphere = spheres[record.firstSphere + gl_PrimitiveID];
     vec3 objectPoint = gl_ObjectRayOriginEXT + gl_HitTEXT * gl_ObjectRayDirectionEXT;
     vec3 q = normalize(objectPoint - hitCenter); // outward unit normal, object space
     objectPoint = hitCenter + sphere.radius * q;
@@ -24,6 +25,7 @@ void main()
     payload.normal = normalize(q * mat3(gl_WorldToObjectEXT));
     payload.uv = sphereUv(q);
     payload.material = sphere.material;
+    payload.light = primitiveLight(record, uint(gl_PrimitiveID));
     payload.flags = 0u;
     payload.offsetScale = 1.0; // our own sphere test: its error scales with p (RayOffset.glsl)
 }

@@ -37,6 +37,7 @@ void main()
     payload.material = record.firstTriangleMaterial != kNoIndex
                            ? triangleMaterials[record.firstTriangleMaterial + gl_PrimitiveID]
                            : record.material;
+    payload.light = primitiveLight(record, uint(gl_PrimitiveID));
     payload.flags = 0u;
     payload.offsetScale = planarOffsetScale(gl_ObjectToWorldEXT * vec4(p0, 1.0), gl_ObjectToWorldEXT * vec4(p1, 1.0),
                                             gl_ObjectToWorldEXT * vec4(p2, 1.0));

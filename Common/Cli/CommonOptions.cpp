@@ -42,9 +42,17 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
                    "Pixel sampling: random (independent jitter), stratified (floor(sqrt(spp))^2 jittered strata), "
                    "accumulate (progressive 1-spp passes)")
         ->capture_default_str();
-    app.add_option("--pdf", o.pdf,
-                   "on: book-3 mixture of BSDF and light sampling over the scene's light list; "
-                   "off: BSDF sampling only (books 1-2)")
+    app.add_option("--estimator", o.estimator,
+                   "How a path gathers light (default: the scene's: nee-mis, or mixture for the books' scenes). "
+                   "bsdf: follow sampled BSDF directions only (books 1-2); mixture: book 3's one-sample mix of "
+                   "BSDF and light directions, no shadow rays; nee: a shadow ray to one sampled light at every "
+                   "diffuse vertex, BSDF rays ignore the lights; nee-mis: NEE and BSDF rays both count, weighted "
+                   "by the power heuristic");
+    app.add_option("--pdf", o.pdf, "The books' name for two estimators: on = --estimator mixture, off = bsdf");
+    app.add_option("--russian-roulette", o.russianRoulette,
+                   "on: from the third segment, a path whose throughput fell below 1 ends with probability "
+                   "1 - throughput and the survivors are scaled up (unbiased, pbrt-v4's rule); off: paths run "
+                   "to --depth")
         ->capture_default_str();
     app.add_option("--unidirectional-light", o.unidirectionalLight,
                    "on: emitters emit from their front face only; off: from both faces (default: the scene's)");
@@ -71,7 +79,23 @@ RenderRequest resolveRequest(const CommonOptions& o, const Scene& scene)
         throw UsageError(
             fmt::format("--sampling must be random, stratified or accumulate (got '{}')", o.sampling));
     s.sampling = *sampling;
-    s.estimator = onOffFlag("--pdf", o.pdf) ? Estimator::Mixture : Estimator::BsdfOnly;
+    if (o.estimator)
+    {
+        const auto estimator = parseEstimator(*o.estimator);
+        if (!estimator)
+            throw UsageError(
+                fmt::format("--estimator must be bsdf, mixture, nee or nee-mis (got '{}')", *o.estimator));
+        s.estimator = *estimator;
+    }
+    if (o.pdf)
+    {
+        const Estimator named = onOffFlag("--pdf", *o.pdf) ? Estimator::Mixture : Estimator::BsdfOnly;
+        if (o.estimator && s.estimator != named)
+            throw UsageError(fmt::format("--pdf {} means --estimator {}, which contradicts --estimator {}", *o.pdf,
+                                         toString(named), *o.estimator));
+        s.estimator = named;
+    }
+    s.russianRoulette = onOffFlag("--russian-roulette", o.russianRoulette);
     if (o.unidirectionalLight)
         s.unidirectionalLight = onOffFlag("--unidirectional-light", *o.unidirectionalLight);
     s.seed = o.seed;

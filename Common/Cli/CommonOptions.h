@@ -23,7 +23,9 @@ struct CommonOptions
     std::optional<int> width;
     std::optional<float> aspect;
     std::string sampling = "random";
-    std::string pdf = "on";
+    std::optional<std::string> estimator;
+    std::optional<std::string> pdf;
+    std::string russianRoulette = "on";
     std::optional<std::string> unidirectionalLight;
     std::uint32_t seed = 0;
     std::string output;

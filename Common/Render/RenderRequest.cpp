@@ -11,6 +11,7 @@ void applySceneDefaults(RenderSettings& settings, const SceneDefaults& defaults)
     settings.width = defaults.width;
     settings.aspect = defaults.aspect;
     settings.unidirectionalLight = defaults.unidirectionalLight;
+    settings.estimator = defaults.estimator;
 }
 
 RenderRequest defaultRequest(const SceneRef& ref, const Scene& scene)

@@ -67,6 +67,8 @@ const char* toString(Estimator estimator)
     {
     case Estimator::BsdfOnly: return "bsdf";
     case Estimator::Mixture: return "mixture";
+    case Estimator::Nee: return "nee";
+    case Estimator::NeeMis: return "nee-mis";
     }
     return "?";
 }
@@ -90,6 +92,14 @@ std::optional<PixelSampling> parsePixelSampling(const std::string& text)
         return PixelSampling::Stratified;
     if (text == "accumulate")
         return PixelSampling::Accumulate;
+    return std::nullopt;
+}
+
+std::optional<Estimator> parseEstimator(const std::string& text)
+{
+    for (Estimator e : {Estimator::BsdfOnly, Estimator::Mixture, Estimator::Nee, Estimator::NeeMis})
+        if (text == toString(e))
+            return e;
     return std::nullopt;
 }
 } // namespace rt

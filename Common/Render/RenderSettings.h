@@ -26,7 +26,8 @@ struct RenderSettings
     int width = 600; // pixels
     float aspect = 1.0f; // width / height
     PixelSampling sampling = PixelSampling::Random;
-    Estimator estimator = Estimator::Mixture;
+    Estimator estimator = Estimator::NeeMis;
+    bool russianRoulette = true; // paths end by Russian roulette from their third segment (Shared/RussianRoulette.h)
     bool unidirectionalLight = true; // emitters emit from their front side only
     std::uint32_t seed = 0;
 
@@ -47,4 +48,5 @@ const char* toString(PixelSampling sampling);
 const char* toString(Estimator estimator);
 std::optional<EngineKind> parseEngine(const std::string& text);
 std::optional<PixelSampling> parsePixelSampling(const std::string& text);
+std::optional<Estimator> parseEstimator(const std::string& text);
 } // namespace rt

@@ -18,7 +18,7 @@ nlohmann::json RenderStats::toJson() const
                      {"aspect", settings.aspect},
                      {"sampling", toString(settings.sampling)},
                      {"estimator", toString(settings.estimator)},
-                     {"pdf", settings.estimator != Estimator::BsdfOnly},
+                     {"russian_roulette", settings.russianRoulette},
                      {"unidirectional_light", settings.unidirectionalLight},
                      {"seed", settings.seed}};
     j["width"] = width;

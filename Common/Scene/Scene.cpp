@@ -54,6 +54,14 @@ bool Scene::isEmissive(std::uint32_t material) const
     return material < materials.size() && materials[material].emissionTexture != kNoIndex;
 }
 
+std::uint32_t Scene::emitterCount() const
+{
+    std::uint32_t n = 0;
+    while (n < lights.size() && lights[n].material != kNoIndex)
+        ++n;
+    return n;
+}
+
 std::size_t Scene::primitiveCount() const
 {
     std::size_t count = 0;
@@ -173,6 +181,11 @@ void Scene::validate() const
     }
     for (const LightData& l : lights)
         require(l.material == kNoIndex || materialOk(l.material), id, "a light refers to a missing material");
+    require(lightSources.size() == lights.size(), id, "every light needs its source (SceneBuilder::finish)");
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        require((lights[i].material == kNoIndex) == (lightSources[i].kind == LightSource::Kind::Target) &&
+                    (i < emitterCount() || lights[i].material == kNoIndex),
+                id, "the emitters come first in the light list, then the sampling targets");
     require(!instances.empty(), id, "the scene has no instances");
 }
 } // namespace rt

@@ -6,7 +6,8 @@
 //   groups    - sets of primitives in object space (spheres, quads, meshes, media);
 //   instances - a group placed in the world by an affine transform;
 //   lights    - the world-space list the light samplers draw from: every emitting primitive of every
-//               instance (added by SceneBuilder::finish) plus extra sampling targets a scene names.
+//               instance (added by SceneBuilder::finish), then the extra sampling targets a scene names;
+//               lightSources says which primitive each light is, so an engine can tell the light it hit.
 // Units are arbitrary world units; colours are linear RGB (albedo in [0,1], radiance unbounded).
 #pragma once
 
@@ -23,6 +24,7 @@
 namespace rt
 {
 using shader::BackgroundType;
+using shader::Estimator;
 using shader::kNoIndex;
 using shader::LightData;
 using shader::MaterialData;
@@ -136,6 +138,25 @@ struct SceneDefaults
     int width = 600;
     float aspect = 1.0f; // width / height
     bool unidirectionalLight = true; // emitters emit from their front side only (RTTROYL §12.4)
+    // This project's scenes use NEE + MIS; the books' keep book 3's mixture, so a render compares with theirs.
+    shader::Estimator estimator = shader::Estimator::NeeMis;
+};
+
+/// The primitive a light of Scene::lights was made from, so that a hit on it can name its light (the
+/// MIS weight of an emitter hit by a BSDF ray needs that light's selection pmf and pdf).
+struct LightSource
+{
+    enum class Kind : std::uint32_t
+    {
+        Quad, // groups[instances[instance].group].quads[primitive]
+        Sphere, // ... .spheres[primitive]
+        Triangle, // triangle `primitive` of the mesh of ... .meshes[meshRef]
+        Target // a sampling target (SceneBuilder::samplingTargetSphere): no primitive, emits nothing
+    };
+    Kind kind = Kind::Target;
+    std::uint32_t instance = 0;
+    std::uint32_t meshRef = 0;
+    std::uint32_t primitive = 0;
 };
 
 struct Scene
@@ -152,10 +173,13 @@ struct Scene
     std::vector<GroupDesc> groups;
     std::vector<InstanceDesc> instances;
     std::vector<LightData> lights;
+    std::vector<LightSource> lightSources; // one per light
 
     bool hasMedia() const;
     bool hasMotion() const;
     bool isEmissive(std::uint32_t material) const;
+    /// The lights that emit: lights[0, emitterCount()) (the sampling targets follow them).
+    std::uint32_t emitterCount() const;
     std::size_t primitiveCount() const; // spheres + quads + triangles + media over all instances
     Aabb bounds() const; // world-space bounds of every instance
 

@@ -185,45 +185,66 @@ void SceneBuilder::samplingTargetSphere(const vec3& center, float radius)
 Scene SceneBuilder::finish()
 {
     Scene& s = m_scene;
-    std::vector<LightData> emitters;
-    for (const InstanceDesc& inst : s.instances)
+    std::vector<LightData> lights;
+    std::vector<LightSource> sources;
+    const auto add = [&](const LightData& light, LightSource source) {
+        lights.push_back(light);
+        sources.push_back(source);
+    };
+    for (std::uint32_t i = 0; i < s.instances.size(); ++i)
     {
+        const InstanceDesc& inst = s.instances[i];
         if (inst.group >= s.groups.size())
             break; // validate() reports it
         const GroupDesc& g = s.groups[inst.group];
         const Transform& m = inst.worldFromObject;
-        for (const QuadDesc& q : g.quads)
-            if (s.isEmissive(q.material))
-                emitters.push_back(makeQuadLight(m.point(q.q), m.vector(q.u), m.vector(q.v), q.material));
-        for (const SphereDesc& sp : g.spheres)
-            if (s.isEmissive(sp.material))
-            {
-                const auto scale = m.uniformScale();
-                if (!scale || sp.moving())
-                    throw SceneError(fmt::format("scene '{}': an emitting sphere in group '{}' is moving or "
-                                                 "non-uniformly scaled; the light samplers need a static sphere",
-                                                 s.id, g.name));
-                emitters.push_back(makeSphereLight(m.point(sp.center0), sp.radius * *scale, sp.material));
-            }
-        for (const MeshRef& ref : g.meshes)
+        for (std::uint32_t k = 0; k < g.quads.size(); ++k)
         {
+            const QuadDesc& q = g.quads[k];
+            const vec3 u = m.vector(q.u), v = m.vector(q.v);
+            if (s.isEmissive(q.material) && lengthSquared(glm::cross(u, v)) > 0.0f)
+                add(makeQuadLight(m.point(q.q), u, v, q.material),
+                    {.kind = LightSource::Kind::Quad, .instance = i, .primitive = k});
+        }
+        for (std::uint32_t k = 0; k < g.spheres.size(); ++k)
+        {
+            const SphereDesc& sp = g.spheres[k];
+            if (!s.isEmissive(sp.material))
+                continue;
+            const auto scale = m.uniformScale();
+            if (!scale || sp.moving())
+                throw SceneError(fmt::format("scene '{}': an emitting sphere in group '{}' is moving or "
+                                             "non-uniformly scaled; the light samplers need a static sphere",
+                                             s.id, g.name));
+            add(makeSphereLight(m.point(sp.center0), sp.radius * *scale, sp.material),
+                {.kind = LightSource::Kind::Sphere, .instance = i, .primitive = k});
+        }
+        for (std::uint32_t r = 0; r < g.meshes.size(); ++r)
+        {
+            const MeshRef& ref = g.meshes[r];
             if (ref.mesh >= s.meshes.size())
                 break;
             const MeshData& mesh = s.meshes[ref.mesh];
-            for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
+            for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t)
             {
                 const std::uint32_t mat = mesh.triangleMaterials.empty() ? ref.material : mesh.triangleMaterials[t];
                 if (!s.isEmissive(mat))
                     continue;
-                emitters.push_back(makeTriangleLight(m.point(mesh.positions[mesh.indices[3 * t]]),
-                                                 m.point(mesh.positions[mesh.indices[3 * t + 1]]),
-                                                 m.point(mesh.positions[mesh.indices[3 * t + 2]]), mat));
+                const vec3 a = m.point(mesh.positions[mesh.indices[3 * t]]);
+                const vec3 b = m.point(mesh.positions[mesh.indices[3 * t + 1]]);
+                const vec3 c = m.point(mesh.positions[mesh.indices[3 * t + 2]]);
+                // Zero area: no light to sample, and no engine reports a hit on it either.
+                if (lengthSquared(glm::cross(b - a, c - a)) > 0.0f)
+                    add(makeTriangleLight(a, b, c, mat),
+                        {.kind = LightSource::Kind::Triangle, .instance = i, .meshRef = r, .primitive = t});
             }
         }
     }
     // Emitters first, then the explicit sampling targets, in the order the scene added them.
-    emitters.insert(emitters.end(), s.lights.begin(), s.lights.end());
-    s.lights = std::move(emitters);
+    for (const LightData& target : s.lights)
+        add(target, {.kind = LightSource::Kind::Target});
+    s.lights = std::move(lights);
+    s.lightSources = std::move(sources);
     s.validate();
     return std::move(m_scene);
 }

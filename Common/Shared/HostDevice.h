@@ -69,10 +69,12 @@ RT_ENUM_VALUE(LightShape, Sphere, 1)   // p0 = centre, radius
 RT_ENUM_VALUE(LightShape, Triangle, 2) // p0 = vertex, p1 and p2 = edges from p0
 RT_ENUM_END(LightShape)
 
-// Estimators (--pdf off = BsdfOnly, --pdf on = Mixture).
+// Estimators (--estimator; --pdf off = BsdfOnly, --pdf on = Mixture).
 RT_ENUM_BEGIN(Estimator)
 RT_ENUM_VALUE(Estimator, BsdfOnly, 0) // books 1-2: follow the sampled BSDF direction only
 RT_ENUM_VALUE(Estimator, Mixture, 1)  // book 3: 1/2 BSDF pdf + 1/2 uniform pick over the light list, no shadow ray
+RT_ENUM_VALUE(Estimator, Nee, 2)      // a shadow ray to one sampled light per diffuse vertex; BSDF rays skip lights
+RT_ENUM_VALUE(Estimator, NeeMis, 3)   // NEE and BSDF sampling weighted by the power heuristic (Veach 1997, §9.2)
 RT_ENUM_END(Estimator)
 
 RT_ENUM_BEGIN(PixelSampling)
@@ -155,8 +157,9 @@ RT_CONST(uint, kBindingTriangleMaterials, 11u) // uint[]: per-triangle materials
 RT_CONST(uint, kBindingSpheres, 12u)          // SphereRecord[] (object space)
 RT_CONST(uint, kBindingMedia, 13u)            // MediumRecord[] (object space)
 RT_CONST(uint, kBindingCounters, 14u)         // SampleCounters
-RT_CONST(uint, kBindingImages, 15u)           // sampler2D[]: the scene's images, 8-bit sRGB
-RT_CONST(uint, kBindingCount, 16u)
+RT_CONST(uint, kBindingPrimitiveLights, 15u)  // uint[]: per primitive of a record, its index into LightData[] or kNoIndex
+RT_CONST(uint, kBindingImages, 16u)           // sampler2D[]: the scene's images, 8-bit sRGB
+RT_CONST(uint, kBindingCount, 17u)
 
 // Shader binding table: one miss record, and per TLAS instance a hit-group record offset. A procedural BLAS
 // holds its spheres as geometry 0 and its media as geometry 1 (traceRayEXT uses sbtRecordStride 1), so an
@@ -195,9 +198,9 @@ struct RenderUniforms
     uint strata; // stratified sampling: n, with n * n strata per pixel
     uint seed;
     uint unidirectionalLight; // 1: emitters emit from their front face only
-    uint lightCount;
-    uint pad0;
-    uint pad1;
+    uint lightCount; // LightData[]: the emitters, then the mixture's sampling targets
+    uint emitterCount; // LightData[0, emitterCount) emit: what NEE samples
+    uint russianRoulette; // 1: paths end by Russian roulette on their throughput (RussianRoulette.h)
     uint pad2;
 };
 
@@ -220,7 +223,9 @@ struct InstanceRecord
     uint material; // triangles: material of every triangle without a per-triangle one
     uint firstSphere; // procedural: sphere geometry primitive 0
     uint firstMedium; // procedural: medium geometry primitive 0
-    uint pad;
+    // Where this record's primitives (triangles, spheres; quad k = triangles 2k and 2k + 1) start in the
+    // primitive-light array, or kNoIndex when none of them is a light.
+    uint firstPrimitiveLight;
 };
 
 /// A sphere moving linearly from center0 (time 0) to center1 (time 1), object space.

@@ -19,7 +19,10 @@ struct LightSample
 {
     vec3 wi; // unit direction from p towards the sampled point
     float pdf; // per unit solid angle
-    float distance; // from p to the sampled point on the light (a lower bound for cone-sampled spheres)
+    vec3 point; // the sampled point y on the light (world space)
+    float distance; // |y - p|
+    vec3 normal; // unit normal of the light at y, on its front side (outward for spheres)
+    vec2 uv; // the light's surface coordinates at y: (a, b) of quads, barycentrics (b1, b2) of triangles, 0 on spheres
 };
 
 /// Area-measure pdf 1/area turned into solid angle at squared distance `dist2` with |cos| at the light.
@@ -56,6 +59,16 @@ RT_FN float conePdf(float oneMinusCos, vec3 axis, vec3 wi)
     // at every size. The slack is the rounding of a float unit direction (4 ulps of 1 = 4 / 2^24).
     const bool inside = length(wi - axis) <= sqrt(2.0f * oneMinusCos) + 4.0f / 16777216.0f;
     return inside ? uniformConePdf(oneMinusCos) : 0.0f;
+}
+
+/// Near root of the ray p + t wi against a sphere that p is outside of, for wi inside the sphere's cone (a
+/// silhouette direction that rounding puts just outside it gets the closest approach instead).
+RT_FN float sphereEntryDistance(RT_IN(LightData) s, vec3 p, vec3 wi)
+{
+    const vec3 f = s.p0 - p;
+    const float b = dot(f, wi);
+    const vec3 l = f - b * wi; // closest approach (Hearn & Baker discriminant, RTG ch. 7)
+    return b - safeSqrt(s.radius * s.radius - lengthSquared(l));
 }
 
 /// Far root of the ray p + t wi against a sphere that contains p (t > 0 always exists).
@@ -122,8 +135,10 @@ RT_FN bool sampleLight(RT_IN(LightData) light, vec3 p, vec2 u, RT_OUT(LightSampl
 {
     ls.wi = vec3(0.0f);
     ls.pdf = 0.0f;
+    ls.point = vec3(0.0f);
     ls.distance = 0.0f;
-    vec3 y;
+    ls.normal = light.normal;
+    ls.uv = vec2(0.0f);
     if (light.shape == RT_ENUM(LightShape, Sphere))
     {
         float oneMinusCos;
@@ -132,20 +147,26 @@ RT_FN bool sampleLight(RT_IN(LightData) light, vec3 p, vec2 u, RT_OUT(LightSampl
         if (sphereCone(light, p, oneMinusCos, cosThetaMax, axis))
         {
             ls.wi = onbToWorld(onbFromNormal(axis), sampleUniformCone(u, oneMinusCos));
-            ls.distance = length(light.p0 - p) - light.radius; // lower bound; the mixture needs no more
             ls.pdf = conePdf(oneMinusCos, axis, ls.wi); // = lightPdf(light, p, ls.wi), cone reused
+            ls.distance = sphereEntryDistance(light, p, ls.wi);
+            ls.normal = normalize(p + ls.distance * ls.wi - light.p0);
+            ls.point = light.p0 + light.radius * ls.normal; // re-projected, as the engines' sphere hits are
             return ls.pdf > 0.0f;
         }
-        y = light.p0 + light.radius * sampleUniformSphere(u);
+        ls.normal = sampleUniformSphere(u);
+        ls.point = light.p0 + light.radius * ls.normal;
     }
     else if (light.shape == RT_ENUM(LightShape, Quad))
-        y = light.p0 + u.x * light.p1 + u.y * light.p2;
+    {
+        ls.uv = u;
+        ls.point = light.p0 + u.x * light.p1 + u.y * light.p2;
+    }
     else
     {
-        const vec2 b = sampleUniformTriangle(u);
-        y = light.p0 + b.x * light.p1 + b.y * light.p2; // p1, p2 are edges from p0
+        ls.uv = sampleUniformTriangle(u);
+        ls.point = light.p0 + ls.uv.x * light.p1 + ls.uv.y * light.p2; // p1, p2 are edges from p0
     }
-    const vec3 w = y - p;
+    const vec3 w = ls.point - p;
     const float dist2 = lengthSquared(w);
     if (!(dist2 > 0.0f))
         return false;

@@ -9,14 +9,17 @@
 
 #ifdef __cplusplus
 #include <cmath>
+#include <cstdint>
 
 #include "Math/Math.h"
 
 namespace rt::shader
 {
+using uint = std::uint32_t;
 using glm::cross;
 using glm::dot;
 using glm::length;
+using glm::normalize;
 using glm::vec2;
 using glm::vec3;
 using rt::kInv4Pi;
@@ -30,6 +33,10 @@ inline float sqrt(float x) { return std::sqrt(x); }
 inline float sin(float x) { return std::sin(x); }
 inline float cos(float x) { return std::cos(x); }
 inline float abs(float x) { return std::fabs(x); }
+inline float min(float a, float b) { return b < a ? b : a; } // GLSL's min/max: the first for NaN b, as std::min
+inline float max(float a, float b) { return a < b ? b : a; }
+inline uint min(uint a, uint b) { return b < a ? b : a; }
+inline uint max(uint a, uint b) { return a < b ? b : a; }
 inline float roundEven(float x) { return std::nearbyint(x); } // the default rounding mode: to nearest, ties even
 /// +1 or -1 with the sign bit of x (-0 gives -1): copysign(1, x). GLSL's sign() returns 0 for 0.
 inline float signNotZero(float x) { return std::copysign(1.0f, x); }

@@ -1,24 +1,33 @@
 // The path tracer of the CPU engine: one camera path, iterative (no recursion, no allocation).
-// Two estimators share the loop (shared/spec and RTTROYL):
+// Four estimators share the loop (Shared/HostDevice.h Estimator):
 //  - BsdfOnly (books 1-2): every bounce follows the material's sampled direction; the weight is the albedo.
 //  - Mixture (book 3, §9-12): at diffuse and isotropic vertices, with probability 1/2 sample the BSDF, else
 //    pick one light of the scene's list uniformly and sample a direction towards it; weight the direction by
 //    f cos / (1/2 p_bsdf + 1/2 mean_j p_light_j): the balance-heuristic one-sample MIS of the two strategies,
 //    without shadow rays. Specular vertices follow their single direction.
-// The GLSL twin is Shaders/RayGen.rgen + Shaders/Integrator.glsl.
+//  - Nee / NeeMis (Veach 1997 §9.2; pbrt-v4 PathIntegrator): at diffuse and isotropic vertices a shadow ray
+//    to a point of one selected emitter (next-event estimation), then the BSDF direction continues the path.
+//    Emission a BSDF ray finds after such a vertex counts 0 (Nee: NEE already did) or with the power
+//    heuristic's weight against NEE's pdf of the same direction (NeeMis); NEE's own sample gets the
+//    complementary weight. After specular vertices and from the camera, emission counts in full.
+// Russian roulette (Shared/RussianRoulette.h) may end any path from its third segment.
+// The GLSL twin of this loop is Shaders/Integrator.glsl; what they compute per vertex (warps, light
+// samplers, selection, MIS weights, roulette) is shared code in Common/Shared.
 #pragma once
 
 #include <cstdint>
 
 #include "Integrator/Background.h"
 #include "Materials/Dielectric.h"
-#include "Materials/Isotropic.h"
-#include "Materials/Lambertian.h"
 #include "Materials/Metal.h"
 #include "Math/RayOffset.h"
 #include "Render/RenderSettings.h"
 #include "Sampling/LightSampling.h"
 #include "Scene/CpuScene.h"
+#include "Shared/DiffuseScattering.h"
+#include "Shared/LightSelection.h"
+#include "Shared/Mis.h"
+#include "Shared/RussianRoulette.h"
 #include "Textures/TextureEval.h"
 
 namespace rt::cpu
@@ -26,7 +35,8 @@ namespace rt::cpu
 struct PathOptions
 {
     int depth = 50; // ray segments traced at most
-    Estimator estimator = Estimator::Mixture;
+    Estimator estimator = Estimator::NeeMis;
+    bool russianRoulette = true;
     bool unidirectionalLight = true;
 };
 
@@ -41,13 +51,65 @@ inline float mixturePdf(const Scene& scene, const vec3& p, const vec3& wi, float
     return 0.5f * bsdfPdf + 0.5f * lights / static_cast<float>(scene.lights.size());
 }
 
-/// Incident radiance along `ray` (linear RGB). `segments` is incremented per ray traced.
+/// Emitted radiance of the light sample `ls` towards its shading point: 0 from a light's back face when
+/// emitters are one-sided.
+inline vec3 sampledEmission(const Scene& scene, const LightData& light, const LightSample& ls, bool unidirectional)
+{
+    if (unidirectional && glm::dot(ls.wi, ls.normal) >= 0.0f)
+        return vec3(0.0f);
+    return evalTexture(scene, scene.materials[light.material].emissionTexture, ls.uv, ls.point);
+}
+
+/// Next-event estimation at a diffuse or isotropic vertex: one emitter selected uniformly, one point on it,
+/// a shadow ray. `origin` is where the vertex's rays leave from (the hit point offset to the side of the
+/// shading normal `ns`; the point itself in a medium): lights are sampled from there and the BSDF ray leaves
+/// from there too, so both strategies see one geometry and their MIS weights sum to 1 for every direction
+/// (sampled from the unoffset point, a sphere light's silhouette shifted between them: +0.05 % on a test).
+/// Returns f cos Le / (pmf pdf) times the MIS weight (mis: the power heuristic against the BSDF strategy's
+/// pdf of the same direction; else 1), or 0 when the point is occluded or faces away. Draws three numbers:
+/// the selection, then the point.
+inline vec3 estimateDirect(const CpuScene& cs, const vec3& origin, const vec3& ns, bool phase, const vec3& albedo,
+                           bool mis, bool unidirectional, float time, Rng& rng, std::uint64_t& segments)
+{
+    const Scene& scene = cs.source();
+    const std::uint32_t emitters = scene.emitterCount();
+    const std::uint32_t picked = shader::selectLightUniform(rng.nextFloat(), emitters);
+    const vec2 u(rng.nextFloat(), rng.nextFloat());
+    const LightData& light = scene.lights[picked];
+    LightSample ls;
+    if (!sampleLight(light, origin, u, ls))
+        return vec3(0.0f);
+    const float bsdfPdf = shader::diffusePdf(phase, ns, ls.wi); // f cos = albedo bsdfPdf
+    if (!(bsdfPdf > 0.0f))
+        return vec3(0.0f);
+    const vec3 le = sampledEmission(scene, light, ls, unidirectional);
+    if (maxComponent(le) <= 0.0f)
+        return vec3(0.0f);
+    const float lightPdfTotal = shader::uniformLightPmf(emitters) * ls.pdf;
+    const float weight = mis ? shader::powerHeuristic(lightPdfTotal, bsdfPdf) : 1.0f;
+    ++segments;
+    // The shadow ray stops short of the light's surface by a relative margin far above the rounding of the
+    // sampled point and of the light's intersection test.
+    if (cs.occluded(TraceRay(Ray{origin, ls.wi, time}, cs.rayNeeds()), 0.0f, ls.distance * (1.0f - 1e-4f), rng))
+        return vec3(0.0f);
+    return albedo * le * (weight * bsdfPdf / lightPdfTotal);
+}
+
+/// Incident radiance along `ray` (linear RGB). `segments` is incremented per ray traced, shadow rays included.
 inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, Rng& rng, std::uint64_t& segments)
 {
     const Scene& scene = cs.source();
     const bool mixture = options.estimator == Estimator::Mixture && !scene.lights.empty();
+    const bool nee = (options.estimator == Estimator::Nee || options.estimator == Estimator::NeeMis) &&
+                     scene.emitterCount() > 0;
+    const bool mis = options.estimator == Estimator::NeeMis;
     vec3 radiance(0.0f);
     vec3 throughput(1.0f);
+    // The vertex the current ray left, for the MIS weight of the emission it finds: the ray's origin and the
+    // BSDF strategy's solid-angle pdf of its direction; 0 when NEE did not run there (the camera, a specular
+    // vertex), so the emission counts in full.
+    vec3 previousPoint(0.0f);
+    float previousBsdfPdf = 0.0f;
     const TraceRay::Needs needs = cs.rayNeeds();
     for (int segment = 0; segment < options.depth; ++segment)
     {
@@ -65,11 +127,20 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
         const vec3 ns = frontFace ? si.n : -si.n;
 
         if (mat.emissionTexture != kNoIndex && (frontFace || !options.unidirectionalLight))
-            radiance += throughput * evalTexture(scene, mat.emissionTexture, si.uv, si.p);
+        {
+            float weight = 1.0f;
+            if (previousBsdfPdf > 0.0f && si.light != kNoIndex)
+                weight = mis ? shader::powerHeuristic(previousBsdfPdf,
+                                                      shader::uniformLightPmf(scene.emitterCount()) *
+                                                          lightPdf(scene.lights[si.light], previousPoint, ray.direction))
+                             : 0.0f;
+            radiance += throughput * evalTexture(scene, mat.emissionTexture, si.uv, si.p) * weight;
+        }
         if (segment + 1 == options.depth)
             break; // RTIOW's depth: the next segment would return black
 
         vec3 wi;
+        previousBsdfPdf = 0.0f;
         switch (mat.type)
         {
         case MaterialType::DiffuseLight: return radiance;
@@ -91,9 +162,18 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
             const vec3 albedo = evalTexture(scene, mat.albedoTexture, si.uv, si.p);
             if (!mixture)
             {
+                if (nee)
+                {
+                    // The BSDF ray leaves from this origin too (below): sampleDiffuse keeps to the side of ns.
+                    const vec3 origin = si.medium ? si.p : offsetRayOrigin(si.p, ns, si.offsetScale);
+                    radiance += throughput * estimateDirect(cs, origin, ns, phase, albedo, mis,
+                                                            options.unidirectionalLight, ray.time, rng, segments);
+                }
                 const vec2 u(rng.nextFloat(), rng.nextFloat());
-                wi = phase ? sampleIsotropic(u) : sampleLambertian(ns, u);
+                wi = shader::sampleDiffuse(phase, ns, u);
                 throughput *= albedo;
+                if (nee)
+                    previousBsdfPdf = shader::diffusePdf(phase, ns, wi);
                 break;
             }
             const float choice = rng.nextFloat();
@@ -101,7 +181,7 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
             std::size_t sampled = std::size_t(-1);
             float sampledPdf = 0.0f;
             if (choice < 0.5f)
-                wi = phase ? sampleIsotropic(u) : sampleLambertian(ns, u);
+                wi = shader::sampleDiffuse(phase, ns, u);
             else
             {
                 const auto n = static_cast<float>(scene.lights.size());
@@ -112,7 +192,7 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
                 wi = ls.wi;
                 sampledPdf = ls.pdf;
             }
-            const float scatteringPdf = phase ? isotropicPdf() : lambertianPdf(ns, wi);
+            const float scatteringPdf = shader::diffusePdf(phase, ns, wi);
             const float pdf = mixturePdf(scene, si.p, wi, scatteringPdf, sampled, sampledPdf);
             if (!(scatteringPdf > 0.0f) || !(pdf > 0.0f))
                 return radiance;
@@ -120,8 +200,19 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
             break;
         }
         }
+        if (options.russianRoulette)
+        {
+            const float survival = shader::rouletteSurvival(throughput, static_cast<std::uint32_t>(segment));
+            if (survival < 1.0f)
+            {
+                if (!(rng.nextFloat() < survival))
+                    return radiance;
+                throughput /= survival;
+            }
+        }
         const vec3 origin = si.medium ? si.p : offsetRayOrigin(si.p, glm::dot(wi, si.n) > 0.0f ? si.n : -si.n, si.offsetScale);
         ray = Ray{origin, wi, ray.time};
+        previousPoint = origin;
     }
     return radiance;
 }

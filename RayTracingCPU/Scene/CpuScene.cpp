@@ -5,6 +5,7 @@
 
 #include "Math/PlaneDuals.h"
 #include "Math/RayOffset.h"
+#include "Scene/LightLookup.h"
 
 namespace rt::cpu
 {
@@ -65,8 +66,10 @@ CpuScene::CpuScene(const Scene& scene) : m_scene(&scene)
         bounds.push_back(box);
     };
 
-    for (const InstanceDesc& inst : scene.instances)
+    const LightLookup lightOf(scene);
+    for (std::uint32_t instance = 0; instance < scene.instances.size(); ++instance)
     {
+        const InstanceDesc& inst = scene.instances[instance];
         const GroupDesc& group = scene.groups[inst.group];
         const Transform& m = inst.worldFromObject;
         const bool identity = m.isIdentity();
@@ -79,8 +82,10 @@ CpuScene::CpuScene(const Scene& scene) : m_scene(&scene)
             m_uvFrames.push_back(glm::transpose(mat3(m.m)) / scale); // M = s R: the object<-world rotation is R^T
             uvFrame = static_cast<std::uint32_t>(m_uvFrames.size() - 1);
         }
-        for (const SphereDesc& s : group.spheres)
+        for (std::uint32_t k = 0; k < group.spheres.size(); ++k)
         {
+            const SphereDesc& s = group.spheres[k];
+            m_sphereLights.push_back(lightOf.sphere(instance, k));
             SphereRec rec{m.point(s.center0), s.radius * scale, m.vector(s.center1 - s.center0), s.material, uvFrame};
             const vec3 r(rec.radius);
             Aabb box(rec.center0 - r, rec.center0 + r);
@@ -88,15 +93,18 @@ CpuScene::CpuScene(const Scene& scene) : m_scene(&scene)
             add(PrimType::Sphere, m_spheres.size(), box);
             m_spheres.push_back(rec);
         }
-        for (const QuadDesc& q : group.quads)
+        for (std::uint32_t k = 0; k < group.quads.size(); ++k)
         {
+            const QuadDesc& q = group.quads[k];
+            m_quadLights.push_back(lightOf.quad(instance, k));
             const vec3 u = m.vector(q.u), v = m.vector(q.v);
             const QuadRec rec = makeQuad(m.point(q.q), u, v, q.material);
             add(PrimType::Quad, m_quads.size(), quadBounds(rec, u, v));
             m_quads.push_back(rec);
         }
-        for (const MeshRef& ref : group.meshes)
+        for (std::uint32_t meshRef = 0; meshRef < group.meshes.size(); ++meshRef)
         {
+            const MeshRef& ref = group.meshes[meshRef];
             const MeshData& mesh = scene.meshes[ref.mesh];
             for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
             {
@@ -114,6 +122,7 @@ CpuScene::CpuScene(const Scene& scene) : m_scene(&scene)
                 box.expand(rec.p2);
                 add(PrimType::Triangle, m_triangles.size(), box);
                 m_triangles.push_back(rec);
+                m_triangleLights.push_back(lightOf.triangle(instance, meshRef, static_cast<std::uint32_t>(t)));
             }
         }
         for (const MediumDesc& md : group.media)
@@ -189,6 +198,7 @@ SurfaceInteraction CpuScene::interaction(const TraceRay& r, const HitRecord& hit
         si.n = n;
         si.p = center + s.radius * n; // re-projected onto the surface: o + t d carries error ~ t |d|
         si.material = s.material;
+        si.light = m_sphereLights[ref.index()];
         if (m_materialNeedsUv[s.material]) // acos + atan2 only where an image texture reads them
             si.uv = sphereUv(s.uvFrame ? m_uvFrames[s.uvFrame] * n : n);
         break;
@@ -200,6 +210,7 @@ SurfaceInteraction CpuScene::interaction(const TraceRay& r, const HitRecord& hit
         si.n = q.normal;
         si.uv = {hit.b1, hit.b2};
         si.material = q.material;
+        si.light = m_quadLights[ref.index()];
         si.offsetScale = q.offsetScale;
         break;
     }
@@ -218,6 +229,7 @@ SurfaceInteraction CpuScene::interaction(const TraceRay& r, const HitRecord& hit
             si.uv = b0 * mesh.uvs[idx[0]] + hit.b1 * mesh.uvs[idx[1]] + hit.b2 * mesh.uvs[idx[2]];
         }
         si.material = tri.material;
+        si.light = m_triangleLights[ref.index()];
         si.offsetScale = tri.offsetScale;
         break;
     }

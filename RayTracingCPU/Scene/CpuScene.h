@@ -20,6 +20,7 @@ struct SurfaceInteraction
     vec3 n; // unit geometric normal, on the primitive's front side (outward for spheres)
     vec2 uv; // texture coordinates
     std::uint32_t material;
+    std::uint32_t light = kNoIndex; // index into Scene::lights when the primitive is a light
     bool medium; // a scattering event inside a participating medium (n, uv meaningless)
     float offsetScale = 1.0f; // offsetRayOrigin's scale: the largest |vertex coordinate| of a triangle or quad
 };
@@ -47,29 +48,26 @@ public:
         hit.prim = kNoIndex;
         traverse(m_bvh4, r, hit.t, [&](std::uint32_t first, std::uint32_t count) {
             for (std::uint32_t k = first; k < first + count; ++k)
-            {
-                const PrimRef ref = m_leafPackets[k];
-                switch (ref.type())
-                {
-                case PrimType::Sphere: intersectPacket(m_spherePackets[ref.index()], r, tMin, hit); break;
-                case PrimType::Quad: intersectPacket(m_quadPackets[ref.index()], r, tMin, hit); break;
-                case PrimType::Triangle:
-                {
-                    const TrianglePacket& packet = m_trianglePackets[ref.index()];
-                    int undecided = 0;
-                    intersectPacket(packet, r, tMin, hit, undecided);
-                    for (; undecided; undecided &= undecided - 1)
-                    {
-                        const std::uint32_t prim = packet.prim[std::countr_zero(static_cast<unsigned>(undecided))];
-                        intersectTriangle(m_triangles[PrimRef{prim}.index()], r, tMin, hit, prim);
-                    }
-                    break;
-                }
-                case PrimType::Medium:
-                    intersectMedium(m_media[ref.index()], r, tMin, hit, ref.bits, rng);
-                    break;
-                }
-            }
+                intersectLeafPacket(m_leafPackets[k], r, tMin, hit, rng);
+        });
+        return hit.prim != kNoIndex;
+    }
+
+    /// True when something lies along r in (tMin, tMax): a shadow ray. Stops at the first hit found. A medium
+    /// the ray crosses occludes it with the probability that a particle stops it (1 - transmittance), so the
+    /// visibility it returns is an unbiased estimate of the transmittance (RTTNW §9's distance sampling).
+    bool occluded(const TraceRay& r, float tMin, float tMax, Rng& rng) const
+    {
+        HitRecord hit;
+        hit.t = tMax;
+        hit.prim = kNoIndex;
+        // Closest-hit traversal, cut short: after the first hit tMax = -1 lets no box pass (every box is
+        // entered at t >= 0).
+        traverse(m_bvh4, r, hit.t, [&](std::uint32_t first, std::uint32_t count) {
+            for (std::uint32_t k = first; k < first + count && hit.prim == kNoIndex; ++k)
+                intersectLeafPacket(m_leafPackets[k], r, tMin, hit, rng);
+            if (hit.prim != kNoIndex)
+                hit.t = -1.0f;
         });
         return hit.prim != kNoIndex;
     }
@@ -78,6 +76,28 @@ public:
     SurfaceInteraction interaction(const TraceRay& r, const HitRecord& hit) const;
 
 private:
+    void intersectLeafPacket(PrimRef ref, const TraceRay& r, float tMin, HitRecord& hit, Rng& rng) const
+    {
+        switch (ref.type())
+        {
+        case PrimType::Sphere: intersectPacket(m_spherePackets[ref.index()], r, tMin, hit); break;
+        case PrimType::Quad: intersectPacket(m_quadPackets[ref.index()], r, tMin, hit); break;
+        case PrimType::Triangle:
+        {
+            const TrianglePacket& packet = m_trianglePackets[ref.index()];
+            int undecided = 0;
+            intersectPacket(packet, r, tMin, hit, undecided);
+            for (; undecided; undecided &= undecided - 1)
+            {
+                const std::uint32_t prim = packet.prim[std::countr_zero(static_cast<unsigned>(undecided))];
+                intersectTriangle(m_triangles[PrimRef{prim}.index()], r, tMin, hit, prim);
+            }
+            break;
+        }
+        case PrimType::Medium: intersectMedium(m_media[ref.index()], r, tMin, hit, ref.bits, rng); break;
+        }
+    }
+
     void buildLeafPackets(const std::vector<PrimRef>& refs);
 
     const Scene* m_scene;
@@ -85,6 +105,10 @@ private:
     std::vector<QuadRec> m_quads;
     std::vector<TriangleRec> m_triangles;
     std::vector<MediumRec> m_media;
+    // Per record of m_spheres, m_quads, m_triangles: its index into Scene::lights, or kNoIndex.
+    std::vector<std::uint32_t> m_sphereLights;
+    std::vector<std::uint32_t> m_quadLights;
+    std::vector<std::uint32_t> m_triangleLights;
     std::vector<bool> m_materialNeedsUv; // an image texture reads (u, v): spheres compute them only then
     std::vector<mat3> m_uvFrames; // object-from-world rotations of instanced spheres; [0] = identity
     // What traversal reads: per leaf, a run of packet references (type + index into the packet arrays; for

@@ -35,7 +35,7 @@ void checkImageLimits(const vk::Device& device, const Scene& scene, std::uint32_
 } // namespace
 
 GpuScene::GpuScene(const vk::Device& device, const vk::CommandPool& pool, const Scene& scene, std::uint32_t maxImages)
-    : m_sampler(device), m_lightCount(static_cast<std::uint32_t>(scene.lights.size())),
+    : m_sampler(device),
       m_samplesPerLaunch(scene.hasMotion() ? 1u : std::numeric_limits<std::uint32_t>::max())
 {
     checkImageLimits(device, scene, maxImages);
@@ -47,6 +47,7 @@ GpuScene::GpuScene(const vk::Device& device, const vk::CommandPool& pool, const 
     m_buffers.lights = upload.buffer(scene.lights, kStorage);
     m_buffers.perlin = upload.buffer(&perlinTables(), sizeof(shader::PerlinData), kStorage);
     m_buffers.records = upload.buffer(layout.records, kStorage);
+    m_buffers.primitiveLights = upload.buffer(layout.primitiveLights, kStorage);
     m_buffers.positions = upload.buffer(layout.positions, kBuildInput);
     m_buffers.uvs = upload.buffer(layout.uvs, kStorage);
     m_buffers.triangles = upload.buffer(layout.triangles, kBuildInput);

@@ -28,15 +28,14 @@ public:
 
     /// Host seconds of the BLAS and TLAS builds (uploads excluded).
     double buildSeconds() const { return m_buildSeconds; }
-    std::uint32_t lightCount() const { return m_lightCount; }
     /// Samples one launch may loop over: any number, except with moving spheres, whose intersection shader
     /// recomputes the ray's shutter time from push.firstSample and so needs one sample per launch.
     std::uint32_t samplesPerLaunch() const { return m_samplesPerLaunch; }
 
     struct Buffers
     {
-        vk::Buffer materials, textures, lights, perlin, records, positions, uvs, triangles, triangleMaterials,
-            spheres, media, aabbs;
+        vk::Buffer materials, textures, lights, perlin, records, primitiveLights, positions, uvs, triangles,
+            triangleMaterials, spheres, media, aabbs;
     };
     const Buffers& buffers() const { return m_buffers; }
     VkAccelerationStructureKHR tlas() const { return m_accelerationStructures.tlas.Handle(); }
@@ -50,7 +49,6 @@ private:
     std::vector<vk::ImageView> m_views;
     vk::Sampler m_sampler;
     SceneAccelerationStructures m_accelerationStructures;
-    std::uint32_t m_lightCount = 0;
     std::uint32_t m_samplesPerLaunch = 1;
     double m_buildSeconds = 0.0;
 };

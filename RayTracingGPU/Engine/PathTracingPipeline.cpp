@@ -40,7 +40,8 @@ std::vector<vk::DescriptorBinding> bindingsOf(std::uint32_t maxImages)
     add(kBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
     for (std::uint32_t binding : {kBindingMaterials, kBindingTextures, kBindingLights, kBindingPerlin,
                                   kBindingInstances, kBindingPositions, kBindingUvs, kBindingTriangles,
-                                  kBindingTriangleMaterials, kBindingSpheres, kBindingMedia, kBindingCounters})
+                                  kBindingTriangleMaterials, kBindingSpheres, kBindingMedia, kBindingCounters,
+                                  kBindingPrimitiveLights})
         add(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     add(kBindingImages, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, maxImages,
         VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT | VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT);
@@ -121,6 +122,7 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
         {kBindingLights, &buffers.lights},
         {kBindingPerlin, &buffers.perlin},
         {kBindingInstances, &buffers.records},
+        {kBindingPrimitiveLights, &buffers.primitiveLights},
         {kBindingPositions, &buffers.positions},
         {kBindingUvs, &buffers.uvs},
         {kBindingTriangles, &buffers.triangles},

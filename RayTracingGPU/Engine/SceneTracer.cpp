@@ -45,8 +45,8 @@ TracingDescriptors SceneTracer::makeDescriptors(const TargetBindings& target) co
 shader::RenderUniforms SceneTracer::uniforms(const CameraDesc& camera, const RenderSettings& settings,
                                              VkExtent2D extent) const
 {
-    const std::uint32_t lightCount = gpuScene().lightCount(); // throws before setScene
-    return makeUniforms(*m_sceneDesc, camera, settings, extent.width, extent.height, lightCount);
+    gpuScene(); // throws before setScene
+    return makeUniforms(*m_sceneDesc, camera, settings, extent.width, extent.height);
 }
 
 void SceneTracer::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets, std::uint32_t firstSample,

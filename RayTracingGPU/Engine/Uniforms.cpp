@@ -5,7 +5,7 @@
 namespace rt::gpu
 {
 shader::RenderUniforms makeUniforms(const Scene& scene, const CameraDesc& cameraDesc, const RenderSettings& settings,
-                                    std::uint32_t width, std::uint32_t height, std::uint32_t lightCount)
+                                    std::uint32_t width, std::uint32_t height)
 {
     const Camera camera(cameraDesc, static_cast<int>(width), static_cast<int>(height));
     shader::RenderUniforms u{};
@@ -29,7 +29,9 @@ shader::RenderUniforms makeUniforms(const Scene& scene, const CameraDesc& camera
     u.strata = static_cast<std::uint32_t>(settings.strata());
     u.seed = settings.seed;
     u.unidirectionalLight = settings.unidirectionalLight ? 1u : 0u;
-    u.lightCount = lightCount;
+    u.lightCount = static_cast<std::uint32_t>(scene.lights.size());
+    u.emitterCount = scene.emitterCount();
+    u.russianRoulette = settings.russianRoulette ? 1u : 0u;
     return u;
 }
 } // namespace rt::gpu

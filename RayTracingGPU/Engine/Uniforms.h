@@ -13,5 +13,5 @@
 namespace rt::gpu
 {
 shader::RenderUniforms makeUniforms(const Scene& scene, const CameraDesc& camera, const RenderSettings& settings,
-                                    std::uint32_t width, std::uint32_t height, std::uint32_t lightCount);
+                                    std::uint32_t width, std::uint32_t height);
 } // namespace rt::gpu

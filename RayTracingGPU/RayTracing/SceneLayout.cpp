@@ -1,11 +1,13 @@
 #include "RayTracing/SceneLayout.h"
 
+#include <algorithm>
 #include <map>
 #include <optional>
 
 #include <spdlog/fmt/fmt.h>
 
 #include "Error.h"
+#include "Scene/LightLookup.h"
 
 namespace rt::gpu
 {
@@ -32,32 +34,42 @@ InstanceRecord emptyRecord()
             .material = kNoIndex,
             .firstSphere = kNoIndex,
             .firstMedium = kNoIndex,
-            .pad = 0};
+            .firstPrimitiveLight = kNoIndex};
 }
 
 /// A BLAS and the record its TLAS instances point at.
 struct Part
 {
+    enum class Kind
+    {
+        Quads,
+        Mesh,
+        Procedural
+    };
     std::uint32_t blas;
     std::uint32_t record;
     std::uint32_t hitGroup;
+    Kind kind;
+    std::uint32_t meshRef = 0; // Mesh: index into the group's meshes
 };
 
 class Builder
 {
 public:
-    explicit Builder(const Scene& scene) : m_scene(scene) {}
+    explicit Builder(const Scene& scene) : m_scene(scene), m_lightOf(scene) {}
 
     SceneLayout build()
     {
         std::map<std::uint32_t, std::vector<Part>> groupParts;
-        for (const InstanceDesc& instance : m_scene.instances)
+        for (std::uint32_t i = 0; i < m_scene.instances.size(); ++i)
         {
+            const InstanceDesc& instance = m_scene.instances[i];
             auto [it, added] = groupParts.try_emplace(instance.group);
             if (added)
                 it->second = partsOf(instance.group);
             for (const Part& part : it->second)
-                m_out.instances.push_back({part.blas, instance.worldFromObject.m, part.record, part.hitGroup});
+                m_out.instances.push_back(
+                    {part.blas, instance.worldFromObject.m, recordWithLights(part, i), part.hitGroup});
         }
         if (m_out.instances.size() >= kMaxCustomIndex || m_out.records.size() >= kMaxCustomIndex)
             throw SceneError(fmt::format("scene '{}' needs {} TLAS instances; the GPU engine addresses at most {}",
@@ -72,11 +84,51 @@ private:
         std::vector<Part> parts;
         if (!group.quads.empty())
             parts.push_back(quadPart(group));
-        for (const MeshRef& ref : group.meshes)
-            parts.push_back(meshPart(ref));
+        for (std::uint32_t r = 0; r < group.meshes.size(); ++r)
+        {
+            parts.push_back(meshPart(group.meshes[r]));
+            parts.back().meshRef = r;
+        }
         if (!group.spheres.empty() || !group.media.empty())
             parts.push_back(proceduralPart(group));
         return parts;
+    }
+
+    /// The part's record, or for an instance whose part holds lights a copy of it that finds them: the light
+    /// indices differ between instances of one group, the geometry does not.
+    std::uint32_t recordWithLights(const Part& part, std::uint32_t instance)
+    {
+        if (m_scene.emitterCount() == 0)
+            return part.record;
+        const GroupDesc& group = m_scene.groups[m_scene.instances[instance].group];
+        std::vector<std::uint32_t> lights; // per BLAS primitive
+        switch (part.kind)
+        {
+        case Part::Kind::Quads:
+            for (std::uint32_t k = 0; k < group.quads.size(); ++k)
+                lights.insert(lights.end(), 2, m_lightOf.quad(instance, k)); // two triangles per quad
+            break;
+        case Part::Kind::Mesh:
+        {
+            const MeshRef& ref = group.meshes[part.meshRef];
+            const MeshData& mesh = m_scene.meshes[ref.mesh];
+            if (mesh.triangleMaterials.empty() && !m_scene.isEmissive(ref.material))
+                return part.record;
+            for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t)
+                lights.push_back(m_lightOf.triangle(instance, part.meshRef, t));
+            break;
+        }
+        case Part::Kind::Procedural:
+            for (std::uint32_t k = 0; k < group.spheres.size(); ++k)
+                lights.push_back(m_lightOf.sphere(instance, k));
+            break;
+        }
+        if (std::all_of(lights.begin(), lights.end(), [](std::uint32_t l) { return l == kNoIndex; }))
+            return part.record;
+        InstanceRecord record = m_out.records[part.record];
+        record.firstPrimitiveLight = u32(m_out.primitiveLights.size());
+        m_out.primitiveLights.insert(m_out.primitiveLights.end(), lights.begin(), lights.end());
+        return addRecord(record);
     }
 
     std::uint32_t addRecord(const InstanceRecord& record)
@@ -109,7 +161,7 @@ private:
         blas.vertexCount = u32(m_out.positions.size()) - blas.firstVertex;
         blas.triangleCount = u32(m_out.triangles.size()) - blas.firstTriangle;
         m_out.blases.push_back(blas);
-        return {u32(m_out.blases.size() - 1), addRecord(record), kHitGroupTriangles};
+        return {u32(m_out.blases.size() - 1), addRecord(record), kHitGroupTriangles, Part::Kind::Quads};
     }
 
     Part meshPart(const MeshRef& ref)
@@ -124,7 +176,7 @@ private:
         auto [recordIt, newRecord] = m_meshRecords.try_emplace({ref.mesh, ref.material});
         if (newRecord)
             recordIt->second = addRecord(record);
-        return {mesh.blas, recordIt->second, kHitGroupTriangles};
+        return {mesh.blas, recordIt->second, kHitGroupTriangles, Part::Kind::Mesh};
     }
 
     struct MeshEntry
@@ -196,10 +248,11 @@ private:
         m_out.blases.push_back(blas);
         // Geometry 0 takes the instance's first record: spheres if any, else the media.
         const std::uint32_t hitGroup = blas.sphereCount > 0 ? kHitGroupSpheres : kHitGroupMedia;
-        return {u32(m_out.blases.size() - 1), addRecord(record), hitGroup};
+        return {u32(m_out.blases.size() - 1), addRecord(record), hitGroup, Part::Kind::Procedural};
     }
 
     const Scene& m_scene;
+    const LightLookup m_lightOf;
     SceneLayout m_out;
     std::map<std::uint32_t, MeshEntry> m_meshes;
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> m_meshRecords;

@@ -6,7 +6,9 @@
 //   mesh                          -> one triangle BLAS, shared by every group and instance that uses it;
 //   the quads of a group          -> one triangle BLAS (two triangles per quad, vertex uvs = edge coordinates);
 //   the spheres + media of a group -> one procedural (AABB) BLAS: geometry 0 = spheres, geometry 1 = media;
-//   scene instance                -> one TLAS instance per BLAS its group uses, with the instance's transform.
+//   scene instance                -> one TLAS instance per BLAS its group uses, with the instance's transform;
+//                                    its record is the group's, or a copy of it where the part holds lights
+//                                    (a run of primitiveLights names them: light indices differ per instance).
 #pragma once
 
 #include <cstdint>
@@ -64,6 +66,7 @@ struct SceneLayout
     std::vector<shader::MediumRecord> media;
     std::vector<AabbRecord> aabbs;
     std::vector<shader::InstanceRecord> records;
+    std::vector<std::uint32_t> primitiveLights; // runs that InstanceRecord::firstPrimitiveLight points at
     std::vector<BlasDesc> blases;
     std::vector<TlasInstanceDesc> instances;
 };

@@ -190,10 +190,11 @@ TEST(LightSampling, SamplesAreNeverDropped)
 
 // ---- The sample's other fields ---------------------------------------------------------------------------
 
-TEST(LightSampling, SampleDistanceReachesTheLight)
+TEST(LightSampling, SamplePointLiesOnTheLightAlongItsDirection)
 {
-    // The distance drives the shadow ray's extent: for planar lights and spheres seen from inside it is the
-    // distance to the sampled point; for a sphere seen from outside the header promises a lower bound.
+    // NEE's shadow ray runs from p along wi for `distance` and evaluates the emission at `point` with `normal`:
+    // all four must describe one point of the light's surface, seen from p (front side for a sphere seen from
+    // outside: the near root).
     for (const LightCase& c : allCases())
     {
         SCOPED_TRACE(c.name);
@@ -203,25 +204,24 @@ TEST(LightSampling, SampleDistanceReachesTheLight)
             LightSample s;
             if (!sampleLight(c.light, c.p, test::uniform2(rng), s))
                 continue; // SamplesAreNeverDropped
-            const dvec3 p(c.p), w(s.wi), center(c.light.p0);
-            const dvec3 y = p + double(s.distance) * w;
+            const dvec3 p(c.p), w(s.wi), y(s.point), n(s.normal), center(c.light.p0);
             const double scale = std::max(1.0, glm::length(p) + double(s.distance)); // float rounding scales with it
+            ASSERT_NEAR(glm::length(n), 1.0, 1e-5);
+            // Along wi: the sphere's cone sample re-projects its point onto the sphere, which moves it by the
+            // rounding of the near root (up to sqrt(eps) R at the silhouette).
+            const double along = c.light.shape == LightShape::Sphere ? 1e-3 * c.light.radius : 1e-5 * scale;
+            ASSERT_LE(glm::distance(p + double(s.distance) * w, y), along) << "the point is not along wi";
+            ASSERT_NEAR(glm::distance(p, y), double(s.distance), along);
             if (c.light.shape != LightShape::Sphere)
             {
-                const dvec3 n(c.light.normal);
-                ASSERT_NEAR(glm::dot(n, y - dvec3(c.light.p0)), 0.0, 1e-5 * scale) << "not on the light's plane";
+                ASSERT_NEAR(glm::dot(dvec3(c.light.normal), y - center), 0.0, 1e-5 * scale) << "not on the light's plane";
+                ASSERT_EQ(s.normal, c.light.normal);
+                continue;
             }
-            else if (glm::distance(p, center) < c.light.radius)
-                ASSERT_NEAR(glm::distance(y, center), double(c.light.radius), 1e-5 * scale) << "not on the sphere";
-            else
-            {
-                // Near root of |p + t w - c| = R in double.
-                const dvec3 f = p - center;
-                const double b = glm::dot(f, w), disc = b * b - (glm::dot(f, f) - double(c.light.radius) * c.light.radius);
-                const double tHit = -b - std::sqrt(std::max(disc, 0.0));
-                ASSERT_GE(s.distance, 0.0f);
-                ASSERT_LE(double(s.distance), tHit * (1.0 + 1e-5)) << "beyond the sphere";
-            }
+            ASSERT_NEAR(glm::distance(y, center), double(c.light.radius), 1e-5 * scale) << "not on the sphere";
+            ASSERT_LE(glm::distance(n, (y - center) / double(c.light.radius)), 1e-4) << "not the outward normal";
+            if (glm::distance(p, center) > c.light.radius)
+                ASSERT_LE(glm::dot(w, n), 1e-3) << "a sphere seen from outside shows its front";
         }
     }
 }

@@ -17,7 +17,7 @@ class CpuCatalogue : public ::testing::TestWithParam<std::string>
 TEST_P(CpuCatalogue, RendersWithoutNanOnBothEngines)
 {
     const Scene scene = makeScene(GetParam());
-    for (const Estimator estimator : {Estimator::BsdfOnly, Estimator::Mixture})
+    for (const Estimator estimator : {Estimator::BsdfOnly, Estimator::Mixture, Estimator::Nee, Estimator::NeeMis})
     {
         RenderSettings s = smallSettings(32, 4, 16, estimator, scene.defaults.aspect);
         s.unidirectionalLight = scene.defaults.unidirectionalLight;

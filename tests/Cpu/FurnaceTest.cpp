@@ -61,7 +61,10 @@ INSTANTIATE_TEST_SUITE_P(
                       FurnaceCase{0.5f, 0.5f, Estimator::Mixture, PixelSampling::Random},
                       FurnaceCase{0.8f, 0.1f, Estimator::BsdfOnly, PixelSampling::Random},
                       FurnaceCase{0.8f, 0.1f, Estimator::Mixture, PixelSampling::Stratified},
-                      FurnaceCase{0.3f, 1.4f, Estimator::Mixture, PixelSampling::Accumulate}));
+                      FurnaceCase{0.3f, 1.4f, Estimator::Mixture, PixelSampling::Accumulate},
+                      FurnaceCase{0.5f, 0.5f, Estimator::Nee, PixelSampling::Random},
+                      FurnaceCase{0.8f, 0.1f, Estimator::NeeMis, PixelSampling::Random},
+                      FurnaceCase{0.3f, 1.4f, Estimator::NeeMis, PixelSampling::Stratified}));
 } // namespace
 } // namespace rt::test
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "Materials/Dielectric.h"
-#include "Materials/Lambertian.h"
+#include "Shared/DiffuseScattering.h"
 #include "Materials/Metal.h"
 #include "Random/Pcg.h"
 
@@ -97,10 +97,10 @@ TEST(Material, LambertianStaysInTheShadingHemisphere)
     constexpr int kSamples = 200000;
     for (int i = 0; i < kSamples; ++i)
     {
-        const vec3 wi = sampleLambertian(n, {rng.nextFloat(), rng.nextFloat()});
+        const vec3 wi = shader::sampleDiffuse(false, n, {rng.nextFloat(), rng.nextFloat()});
         ASSERT_GE(glm::dot(wi, n), -1e-6f);
         meanCos += glm::dot(wi, n);
-        EXPECT_NEAR(lambertianPdf(n, wi), std::fmax(0.0f, glm::dot(wi, n)) / kPi, 1e-6f);
+        EXPECT_NEAR(shader::diffusePdf(false, n, wi), std::fmax(0.0f, glm::dot(wi, n)) / kPi, 1e-6f);
     }
     // E[cos] under cos/pi is 2/3.
     EXPECT_NEAR(meanCos / kSamples, 2.0 / 3.0, 3e-3);

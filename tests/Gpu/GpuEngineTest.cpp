@@ -69,6 +69,10 @@ TEST_F(GpuFurnace, HalfAlbedoMixtureGivesLeOverOneMinusAlbedo) { expectFurnace(0
 
 TEST_F(GpuFurnace, HighAlbedoMixtureGivesLeOverOneMinusAlbedo) { expectFurnace(0.8f, 0.25f, Estimator::Mixture, 16); }
 
+TEST_F(GpuFurnace, NeeMisGivesLeOverOneMinusAlbedo) { expectFurnace(0.8f, 0.25f, Estimator::NeeMis, 16); }
+
+TEST_F(GpuFurnace, NeeGivesLeOverOneMinusAlbedo) { expectFurnace(0.5f, 0.5f, Estimator::Nee, 16); }
+
 TEST_F(GpuFurnace, BsdfOnlyIsExact) { expectFurnace(0.7f, 1.0f, Estimator::BsdfOnly, 4); }
 
 using GpuKnownAnswer = GpuEngineTest;

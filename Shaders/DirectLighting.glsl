@@ -1,0 +1,51 @@
+// Next-event estimation at a diffuse or isotropic vertex: the GLSL twin of estimateDirect in
+// RayTracingCPU/Integrator/PathIntegrator.h, on the shared selection, light sampler and MIS weight.
+// Traces a shadow ray with the path's payload (location 0), so the caller must have read the payload first.
+// Needs the payload `payload` and the globals of Bindings.glsl.
+#ifndef RT_DIRECT_LIGHTING_GLSL
+#define RT_DIRECT_LIGHTING_GLSL
+
+#include "Payload.glsl"
+#include "Random.glsl"
+#include "Shared/DiffuseScattering.h"
+#include "Shared/LightSampling.h"
+#include "Shared/LightSelection.h"
+#include "Shared/Mis.h"
+#include "Textures/Texture.glsl"
+
+/// True when nothing lies between origin and origin + tMax direction: a shadow ray that stops at the first
+/// hit and runs no closest-hit shader; only a miss clears the material (Background.rmiss). A medium on the
+/// way stops it with the probability 1 - transmittance, as on the CPU.
+bool unoccluded(vec3 origin, vec3 direction, float tMax)
+{
+    payload.material = 0u;
+    traceRayEXT(tlas, gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT,
+                0xFF, 0, 1, 0, origin, 0.0, direction, tMax, 0);
+    return payload.material == kNoIndex;
+}
+
+/// f cos Le / (pmf pdf) x the MIS weight of one light sample seen from `origin`, where the vertex's rays
+/// leave (the hit point offset to the side of the shading normal ns; the point itself in a medium), or 0.
+/// Draws three numbers: the selection, then the point.
+vec3 estimateDirect(vec3 origin, vec3 ns, bool phase, vec3 albedo, bool mis, inout Rng rng)
+{
+    uint picked = selectLightUniform(nextFloat(rng), uniforms.emitterCount);
+    vec2 u = nextFloat2(rng);
+    LightSample ls;
+    if (!sampleLight(lights[picked], origin, u, ls))
+        return vec3(0.0);
+    float bsdfPdf = diffusePdf(phase, ns, ls.wi); // f cos = albedo bsdfPdf
+    if (!(bsdfPdf > 0.0) || (uniforms.unidirectionalLight != 0u && dot(ls.wi, ls.normal) >= 0.0))
+        return vec3(0.0);
+    vec3 le = evaluateTexture(materials[lights[picked].material].emissionTexture, ls.uv, ls.point);
+    if (!(max(le.x, max(le.y, le.z)) > 0.0))
+        return vec3(0.0);
+    float lightPdfTotal = uniformLightPmf(uniforms.emitterCount) * ls.pdf;
+    float weight = mis ? powerHeuristic(lightPdfTotal, bsdfPdf) : 1.0;
+    // Stop short of the light's surface by a relative margin far above the rounding (as on the CPU).
+    if (!unoccluded(origin, ls.wi, ls.distance * (1.0 - 1e-4)))
+        return vec3(0.0);
+    return albedo * le * (weight * bsdfPdf / lightPdfTotal);
+}
+
+#endif
