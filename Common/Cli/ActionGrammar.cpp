@@ -8,6 +8,7 @@
 
 #include "Cli/ValueParsing.h"
 #include "Error.h"
+#include "Render/RenderSettings.h"
 #include "Scenes/Catalogue.h"
 
 namespace rt
@@ -131,7 +132,10 @@ std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long lo
          [](const std::string& id) { return findScene(id) != nullptr; }},
         {"spp", ActionValue::Integer, "N", sppMeaning, double(sppMinimum)},
         {"depth", ActionValue::Integer, "N", "ray segments per path at most", 1},
-        {"pdf", ActionValue::OnOff, "on|off", "book 3's mixture estimator, or BSDF sampling only"},
+        {"estimator", ActionValue::Text, "bsdf|mixture|nee|nee-mis", "how paths gather light (--estimator)", 0, 1e30,
+         [](const std::string& v) { return parseEstimator(v).has_value(); }},
+        {"pdf", ActionValue::OnOff, "on|off", "the books' name: estimator=mixture, or estimator=bsdf"},
+        {"russian-roulette", ActionValue::OnOff, "on|off", "paths end by Russian roulette from their third segment"},
         {"unidirectional-light", ActionValue::OnOff, "on|off", "emitters emit from their front face only"},
         {"resize", ActionValue::Size, "WxH", "resize the window (0x0: as a minimised window reports)"},
         {"save", ActionValue::Text, "FILE.png", "save the image shown: FILE.png and the linear FILE.pfm", 0, 1e30,

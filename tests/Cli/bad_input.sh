@@ -41,6 +41,9 @@ expect_error "negative width" "width" --width -5
 expect_error "unknown flag" "--frobnicate" --frobnicate
 expect_error "bad sampling" "sampling" --sampling sobol
 expect_error "bad pdf value" "--pdf" --pdf maybe
+expect_error "bad estimator" "--estimator" --estimator path
+expect_error "contradicting estimators" "contradicts" --estimator nee --pdf on
+expect_error "bad roulette value" "--russian-roulette" --russian-roulette sometimes
 mkdir -p "$work/empty-assets"
 RT_ASSET_DIR="$work/empty-assets" expect_error "missing texture" "earth.jpg" --scene rtnw-earth
 expect_error "malformed OBJ" "malformed.obj" --scene mesh-in-one-weekend --mesh /usr/share/assimp/models/invalid/malformed.obj

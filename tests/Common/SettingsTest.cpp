@@ -135,6 +135,23 @@ TEST(ResolveRequest, FlagsOverrideTheScenesDefaults)
     EXPECT_EQ(s.seed, 12u);
 }
 
+TEST(ResolveRequest, EstimatorComesFromTheSceneUnlessNamed)
+{
+    // The project's scenes use NEE + MIS, the books' the mixture their images were made with.
+    CommonOptions options;
+    EXPECT_EQ(resolveRequest(options, makeScene("cornell-box-lights")).settings.estimator, Estimator::NeeMis);
+    EXPECT_EQ(resolveRequest(options, makeScene("rtrol-cornell-box")).settings.estimator, Estimator::Mixture);
+    EXPECT_TRUE(resolveRequest(options, makeScene("rtrol-cornell-box")).settings.russianRoulette);
+    options.estimator = "nee";
+    options.russianRoulette = "off";
+    const RenderSettings s = resolveRequest(options, makeScene("rtrol-cornell-box")).settings;
+    EXPECT_EQ(s.estimator, Estimator::Nee);
+    EXPECT_FALSE(s.russianRoulette);
+    options.estimator = "mixture";
+    options.pdf = "on"; // agrees: accepted
+    EXPECT_EQ(resolveRequest(options, makeScene("cornell-box-lights")).settings.estimator, Estimator::Mixture);
+}
+
 TEST(ResolveRequest, BadFlagsAreUsageErrors)
 {
     const Scene scene = makeScene("rtow-camera-test");
@@ -148,6 +165,12 @@ TEST(ResolveRequest, BadFlagsAreUsageErrors)
     rejects([](CommonOptions& o) { o.aspect = 0.0f; });
     rejects([](CommonOptions& o) { o.sampling = "jittered"; });
     rejects([](CommonOptions& o) { o.pdf = "maybe"; });
+    rejects([](CommonOptions& o) { o.estimator = "path"; });
+    rejects([](CommonOptions& o) { o.russianRoulette = "sometimes"; });
+    rejects([](CommonOptions& o) {
+        o.estimator = "nee";
+        o.pdf = "on";
+    });
     rejects([](CommonOptions& o) { o.unidirectionalLight = "yes please"; });
 }
 

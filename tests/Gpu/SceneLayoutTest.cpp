@@ -127,6 +127,52 @@ TEST(SceneLayout, InstancedGroupReusesItsBlasesAndRecords)
     EXPECT_EQ(l.blases[0].triangleCount, 12u);
 }
 
+TEST(SceneLayout, EachInstanceOfAnEmittingGroupNamesItsOwnLights)
+{
+    // A group with a lit sphere, a lit quad and an unlit quad, placed twice: one BLAS per kind for both, but
+    // each instance's records name that instance's lights, so a hit can find its LightData.
+    SceneBuilder b("lamps");
+    const std::uint32_t lamp = b.group("lamp");
+    const std::uint32_t glow = b.diffuseLight(vec3(3.0f));
+    b.quad(lamp, vec3(0.0f), {1, 0, 0}, {0, 1, 0}, b.lambertian(vec3(0.5f)));
+    b.quad(lamp, vec3(0.0f, 2.0f, 0.0f), {1, 0, 0}, {0, 0, 1}, glow);
+    b.sphere(lamp, vec3(0.5f), 0.25f, glow);
+    b.instance(lamp, Transform::translate(vec3(0.0f)));
+    b.instance(lamp, Transform::translate(vec3(5.0f, 0.0f, 0.0f)));
+    const Scene scene = b.finish();
+    ASSERT_EQ(scene.emitterCount(), 4u);
+    const SceneLayout l = layoutScene(scene);
+    EXPECT_EQ(l.blases.size(), 2u);
+    std::vector<std::uint32_t> quadLights;
+    std::vector<std::uint32_t> sphereLights;
+    for (const TlasInstanceDesc& i : l.instances)
+    {
+        const shader::InstanceRecord& r = l.records[i.record];
+        ASSERT_NE(r.firstPrimitiveLight, kNoIndex);
+        if (i.hitGroup == kHitGroupTriangles)
+        {
+            ASSERT_LE(r.firstPrimitiveLight + 4u, l.primitiveLights.size());
+            EXPECT_EQ(l.primitiveLights[r.firstPrimitiveLight], kNoIndex); // the unlit quad, both triangles
+            EXPECT_EQ(l.primitiveLights[r.firstPrimitiveLight + 1], kNoIndex);
+            EXPECT_EQ(l.primitiveLights[r.firstPrimitiveLight + 2], l.primitiveLights[r.firstPrimitiveLight + 3]);
+            quadLights.push_back(l.primitiveLights[r.firstPrimitiveLight + 2]);
+        }
+        else
+            sphereLights.push_back(l.primitiveLights[r.firstPrimitiveLight]);
+    }
+    ASSERT_EQ(quadLights.size(), 2u);
+    ASSERT_EQ(sphereLights.size(), 2u);
+    for (int k = 0; k < 2; ++k)
+    {
+        // The LightData each names is that instance's primitive, in world space.
+        const float x = 5.0f * float(k);
+        EXPECT_EQ(scene.lights[quadLights[k]].shape, shader::LightShape::Quad);
+        EXPECT_EQ(scene.lights[quadLights[k]].p0, vec3(x, 2.0f, 0.0f));
+        EXPECT_EQ(scene.lights[sphereLights[k]].shape, shader::LightShape::Sphere);
+        EXPECT_EQ(scene.lights[sphereLights[k]].p0, vec3(x + 0.5f, 0.5f, 0.5f));
+    }
+}
+
 TEST(SceneLayout, MeshBlasIsSharedAcrossMaterials)
 {
     // mesh-in-one-weekend places one mesh three times with three materials.
@@ -187,6 +233,17 @@ TEST(SceneLayout, EveryCatalogueSceneIsConsistent)
             EXPECT_LT(s.material, scene.materials.size());
         for (std::uint32_t m : l.triangleMaterials)
             EXPECT_LT(m, scene.materials.size());
+        // Every emitter is named by exactly the primitives it was made from: as many as its triangles
+        // (two per quad, one per mesh triangle) or one per sphere, over all records.
+        std::vector<int> named(scene.lights.size(), 0);
+        for (std::uint32_t light : l.primitiveLights)
+            if (light != kNoIndex)
+            {
+                ASSERT_LT(light, scene.emitterCount());
+                ++named[light];
+            }
+        for (std::uint32_t i = 0; i < scene.emitterCount(); ++i)
+            EXPECT_EQ(named[i], scene.lights[i].shape == shader::LightShape::Quad ? 2 : 1) << "light " << i;
     }
 }
 } // namespace

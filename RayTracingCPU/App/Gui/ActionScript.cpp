@@ -99,9 +99,19 @@ bool ActionScript::run(const Action& a, Session& session, GlWindow& window)
         session.setSampling(*sampling(v));
         return true;
     }
+    if (a.name == "estimator")
+    {
+        session.setEstimator(*parseEstimator(v));
+        return true;
+    }
     if (a.name == "pdf")
     {
-        session.setPdf(a.on());
+        session.setEstimator(a.on() ? Estimator::Mixture : Estimator::BsdfOnly);
+        return true;
+    }
+    if (a.name == "russian-roulette")
+    {
+        session.setRussianRoulette(a.on());
         return true;
     }
     if (a.name == "unidirectional-light")

@@ -31,10 +31,10 @@ constexpr ImGuiWindowFlags kPaneFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFla
 std::string describe(const Preview& p)
 {
     const RenderSettings& r = p.request.image.settings;
-    return fmt::format("{}  |  {}x{}  |  {} spp{}  |  depth {}  |  PDF {}  |  {}  |  {}", p.request.image.scene.id,
+    return fmt::format("{}  |  {}x{}  |  {} spp{}  |  depth {}  |  {}{}  |  {}  |  {}", p.request.image.scene.id,
                        r.width, r.height(), p.samples,
                        p.request.loop || p.samples == r.trueSpp() ? "" : fmt::format(" of {}", r.trueSpp()), r.depth,
-                       r.estimator == Estimator::Mixture ? "on" : "off", samplingLabel(r.sampling),
+                       toString(r.estimator), r.russianRoulette ? "" : ", no roulette", samplingLabel(r.sampling),
                        engineLabel(p.request.engine));
 }
 

@@ -26,7 +26,7 @@ nlohmann::json toJson(const RenderRequest& request)
             {"aspect", r.aspect},
             {"sampling", toString(r.sampling)},
             {"estimator", toString(r.estimator)},
-            {"pdf", r.estimator == Estimator::Mixture},
+            {"russian_roulette", r.russianRoulette},
             {"unidirectional_light", r.unidirectionalLight},
             {"seed", r.seed}};
 }
@@ -124,7 +124,8 @@ bool Session::setCount(int count)
 }
 
 void Session::setSampling(PixelSampling sampling) { m_image.settings.sampling = sampling; }
-void Session::setPdf(bool on) { m_image.settings.estimator = on ? Estimator::Mixture : Estimator::BsdfOnly; }
+void Session::setEstimator(Estimator estimator) { m_image.settings.estimator = estimator; }
+void Session::setRussianRoulette(bool on) { m_image.settings.russianRoulette = on; }
 void Session::setUnidirectionalLight(bool on) { m_image.settings.unidirectionalLight = on; }
 
 bool Session::applySceneDefaults()

@@ -33,7 +33,8 @@ public:
     /// white-spheres' sphere count; negative: the scene's default.
     bool setCount(int count);
     void setSampling(PixelSampling sampling);
-    void setPdf(bool on);
+    void setEstimator(Estimator estimator);
+    void setRussianRoulette(bool on);
     void setUnidirectionalLight(bool on);
     /// The selected scene's own spp, depth, width, aspect and light mode; false until the scene was built once.
     bool applySceneDefaults();

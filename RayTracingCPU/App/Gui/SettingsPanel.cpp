@@ -150,11 +150,21 @@ void SettingsPanel::drawRenderingParameters(Session& session)
     }
     tooltip("normal: spp jittered samples per pixel in one pass; accumulation: 1-spp passes shown as they "
             "finish; stratified: floor(sqrt(spp))^2 jittered strata");
-    bool pdf = s.estimator == Estimator::Mixture;
-    if (ImGui::Checkbox("Probability density function", &pdf))
-        session.setPdf(pdf);
-    tooltip("on: book 3's mixture of BSDF sampling and light sampling over the scene's light list; "
-            "off: BSDF sampling only (books 1 and 2)");
+    if (ImGui::BeginCombo("Estimator", toString(s.estimator)))
+    {
+        for (Estimator e : {Estimator::BsdfOnly, Estimator::Mixture, Estimator::Nee, Estimator::NeeMis})
+            if (ImGui::Selectable(toString(e), e == s.estimator))
+                session.setEstimator(e);
+        ImGui::EndCombo();
+    }
+    tooltip("bsdf: BSDF sampling only (books 1 and 2); mixture: book 3's mix of BSDF and light directions, no "
+            "shadow rays; nee: a shadow ray to one light per diffuse vertex; nee-mis: NEE and BSDF rays "
+            "weighted by the power heuristic");
+    bool roulette = s.russianRoulette;
+    if (ImGui::Checkbox("Russian roulette", &roulette))
+        session.setRussianRoulette(roulette);
+    tooltip("on: from the third segment, paths of low throughput end at random and survivors are scaled up "
+            "(unbiased); off: paths run to the depth");
     bool unidirectional = s.unidirectionalLight;
     if (ImGui::Checkbox("Unidirectional light", &unidirectional))
         session.setUnidirectionalLight(unidirectional);

@@ -26,7 +26,8 @@ struct TimingKey
     int spp = 0; // true samples per pixel
     int depth = 0;
     PixelSampling sampling = PixelSampling::Random;
-    Estimator estimator = Estimator::Mixture;
+    Estimator estimator = Estimator::NeeMis;
+    bool russianRoulette = true;
     bool unidirectionalLight = true;
 
     bool operator==(const TimingKey&) const = default;
@@ -55,8 +56,8 @@ public:
     void clear() { m_rows.clear(); }
     /// In the order their first render finished.
     const std::vector<TimingRow>& rows() const { return m_rows; }
-    /// One object per (row, engine): scene, count, mesh, width, height, spp, depth, sampling, estimator, pdf,
-    /// unidirectional_light, engine, seconds, best_seconds, mpaths_per_second, renders, device.
+    /// One object per (row, engine): scene, count, mesh, width, height, spp, depth, sampling, estimator,
+    /// russian_roulette, unidirectional_light, engine, seconds, best_seconds, mpaths_per_second, renders, device.
     nlohmann::json toJson() const;
 
 private:

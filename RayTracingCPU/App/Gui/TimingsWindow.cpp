@@ -39,7 +39,7 @@ void drawTimings(Session& session)
     ImGui::TableSetupColumn("Size");
     ImGui::TableSetupColumn("spp");
     ImGui::TableSetupColumn("Depth");
-    ImGui::TableSetupColumn("PDF");
+    ImGui::TableSetupColumn("Estimator");
     ImGui::TableSetupColumn("Sampling");
     for (EngineKind e : kEngines)
         ImGui::TableSetupColumn(engineLabel(e));
@@ -59,7 +59,7 @@ void drawTimings(Session& session)
         ImGui::TableNextColumn();
         ImGui::Text("%d", row.key.depth);
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(row.key.estimator == Estimator::Mixture ? "on" : "off");
+        ImGui::Text("%s%s", toString(row.key.estimator), row.key.russianRoulette ? "" : ", no RR");
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(samplingLabel(row.key.sampling));
 

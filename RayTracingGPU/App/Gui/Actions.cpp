@@ -89,8 +89,12 @@ bool applyAction(const Action& a, Controls& c)
         c.setTargetSpp(int(a.integer()));
     else if (n == "depth")
         c.setDepth(int(a.integer()));
+    else if (n == "estimator")
+        c.setEstimator(*parseEstimator(a.value));
     else if (n == "pdf")
-        c.setPdf(a.on());
+        c.setEstimator(a.on() ? Estimator::Mixture : Estimator::BsdfOnly);
+    else if (n == "russian-roulette")
+        c.setRussianRoulette(a.on());
     else if (n == "unidirectional-light")
         c.setUnidirectionalLight(a.on());
     else if (n == "resize")

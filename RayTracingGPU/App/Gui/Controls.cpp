@@ -25,10 +25,8 @@ void Controls::setCostScale(float ticksPerSample) { m_state->display.costScale =
 void Controls::setSamplesPerFrame(int samples) { m_state->display.samplesPerFrame = std::clamp(samples, 1, kMaxSamplesPerFrame); }
 void Controls::setTargetSpp(int spp) { m_state->display.targetSpp = std::max(spp, 0); }
 void Controls::setDepth(int depth) { m_state->image.request.settings.depth = std::max(depth, 1); }
-void Controls::setPdf(bool on)
-{
-    m_state->image.request.settings.estimator = on ? Estimator::Mixture : Estimator::BsdfOnly;
-}
+void Controls::setEstimator(Estimator estimator) { m_state->image.request.settings.estimator = estimator; }
+void Controls::setRussianRoulette(bool on) { m_state->image.request.settings.russianRoulette = on; }
 void Controls::setUnidirectionalLight(bool on) { m_state->image.request.settings.unidirectionalLight = on; }
 void Controls::setFov(float degrees) { m_state->image.camera = withFov(m_state->image.camera, degrees); }
 void Controls::setAperture(float diameter) { m_state->image.camera = withAperture(m_state->image.camera, diameter); }

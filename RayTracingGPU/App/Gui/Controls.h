@@ -28,7 +28,8 @@ public:
     void setSamplesPerFrame(int samples);
     void setTargetSpp(int spp); // 0: never stop
     void setDepth(int depth);
-    void setPdf(bool on);
+    void setEstimator(Estimator estimator);
+    void setRussianRoulette(bool on);
     void setUnidirectionalLight(bool on);
     float fov() const { return m_state->image.camera.vfovDegrees; }
     void setFov(float degrees);

@@ -47,8 +47,19 @@ void rayTracingSection(Controls& controls, const WindowState& state)
         ImGui::SetTooltip("Tracing stops at this many samples per pixel; 0: never");
     if (int depth = image.request.settings.depth; ImGui::SliderInt("Depth", &depth, 1, 100))
         controls.setDepth(depth);
-    if (bool on = image.request.settings.estimator == Estimator::Mixture; ImGui::Checkbox("Light sampling (PDF)", &on))
-        controls.setPdf(on);
+    const Estimator estimator = image.request.settings.estimator;
+    if (ImGui::BeginCombo("Estimator", toString(estimator)))
+    {
+        for (Estimator e : {Estimator::BsdfOnly, Estimator::Mixture, Estimator::Nee, Estimator::NeeMis})
+            if (ImGui::Selectable(toString(e), e == estimator))
+                controls.setEstimator(e);
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("bsdf: BSDF sampling only; mixture: book 3's mix, no shadow rays; nee: a shadow ray to one "
+                          "light per diffuse vertex; nee-mis: NEE and BSDF rays by the power heuristic");
+    if (bool on = image.request.settings.russianRoulette; ImGui::Checkbox("Russian roulette", &on))
+        controls.setRussianRoulette(on);
     if (bool on = image.request.settings.unidirectionalLight; ImGui::Checkbox("Unidirectional light", &on))
         controls.setUnidirectionalLight(on);
 }

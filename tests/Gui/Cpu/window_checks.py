@@ -114,7 +114,8 @@ def settled(state_path):
 def headless_args(state_path):
     s = json.load(open(state_path))["image"]["settings"]
     args = ["--scene", s["scene"], "--spp", s["spp"], "--depth", s["depth"], "--width", s["width"],
-            "--aspect", repr(s["aspect"]), "--sampling", s["sampling"], "--pdf", "on" if s["pdf"] else "off",
+            "--aspect", repr(s["aspect"]), "--sampling", s["sampling"], "--estimator", s["estimator"],
+            "--russian-roulette", "on" if s["russian_roulette"] else "off",
             "--unidirectional-light", "on" if s["unidirectional_light"] else "off", "--seed", s["seed"]]
     if s["count"] >= 0:
         args += ["--count", s["count"]]

@@ -59,13 +59,16 @@ TEST(WindowActions, BadNamesAndValuesAreUsageErrorsNamingThem)
 TEST(WindowActions, EachActionChangesItsSetting)
 {
     WindowState state = cornellState();
-    apply(state, "depth=7;samples=4;spp=64;pdf=off;unidirectional-light=off;accumulate=off;raytracing=off;"
+    apply(state, "depth=7;samples=4;spp=64;pdf=off;russian-roulette=off;unidirectional-light=off;accumulate=off;raytracing=off;"
                  "heatmap=on;heatmap-scale=5000;theme=light;font=Mono;font-size=30;fov=55;focus=20;aperture=2");
     EXPECT_EQ(state.image.request.settings.depth, 7);
     EXPECT_EQ(state.display.samplesPerFrame, 4);
     EXPECT_EQ(state.display.targetSpp, 64);
     EXPECT_EQ(state.image.request.settings.estimator, Estimator::BsdfOnly);
+    EXPECT_FALSE(state.image.request.settings.russianRoulette);
     EXPECT_FALSE(state.image.request.settings.unidirectionalLight);
+    apply(state, "estimator=nee");
+    EXPECT_EQ(state.image.request.settings.estimator, Estimator::Nee);
     EXPECT_FALSE(state.image.accumulate);
     EXPECT_FALSE(state.image.rayTracing);
     EXPECT_TRUE(state.image.heatmap);
@@ -127,7 +130,8 @@ TEST(WindowSettings, EveryImageSettingRestartsAccumulationDisplaySettingsDoNot)
         apply(state, script);
         return !(state.image == base.image);
     };
-    for (const char* imageChange : {"depth=7", "pdf=off", "unidirectional-light=off", "accumulate=off",
+    for (const char* imageChange : {"depth=7", "pdf=off", "estimator=nee", "russian-roulette=off",
+                                    "unidirectional-light=off", "accumulate=off",
                                     "raytracing=off", "heatmap=on", "fov=30", "aperture=1", "focus=3",
                                     "camera=forward:1", "camera=yaw:1"})
         EXPECT_TRUE(changed(imageChange)) << imageChange;
