@@ -14,6 +14,7 @@
 #include "Cli/ValueParsing.h"
 #include "Error.h"
 #include "IO/AtomicFile.h"
+#include "Image/ImageIO.h"
 #include "Image/Metrics.h"
 #include "Render/RenderDriver.h"
 
@@ -113,11 +114,25 @@ int runComparison(const Scene& scene, const RenderRequest& baseRequest, const Co
     if (engines.empty())
         throw DeviceError("no engine could start");
 
-    // The reference: the last engine (the GPU when there is one) at referenceSpp with an independent seed.
-    RenderEngine& refEngine = *engines.back().second;
-    const RenderRequest refRequest = withSpp(baseRequest, options.referenceSpp, 1000);
-    spdlog::info("reference: {} spp on the {} engine", options.referenceSpp, toString(refEngine.kind()));
-    const Image reference = timedRender(refEngine, refRequest).image;
+    // The reference: a file, or the last engine (the GPU when there is one) at referenceSpp with an
+    // independent seed.
+    Image reference;
+    if (!options.referencePath.empty())
+    {
+        reference = readPfm(options.referencePath);
+        if (reference.width() != base.width || reference.height() != base.height())
+            throw UsageError(fmt::format("--reference {} is {}x{}; the comparison renders {}x{}",
+                                         options.referencePath, reference.width(), reference.height(), base.width,
+                                         base.height()));
+        spdlog::info("reference: {}", options.referencePath);
+    }
+    else
+    {
+        RenderEngine& refEngine = *engines.back().second;
+        const RenderRequest refRequest = withSpp(baseRequest, options.referenceSpp, 1000);
+        spdlog::info("reference: {} spp on the {} engine", options.referenceSpp, toString(refEngine.kind()));
+        reference = timedRender(refEngine, refRequest).image;
+    }
 
     nlohmann::json json;
     json["scene"] = scene.id;
@@ -126,7 +141,10 @@ int runComparison(const Scene& scene, const RenderRequest& baseRequest, const Co
     json["depth"] = base.depth;
     json["estimator"] = toString(base.estimator);
     json["sampling"] = toString(base.sampling);
-    json["reference_spp"] = options.referenceSpp;
+    if (options.referencePath.empty())
+        json["reference_spp"] = options.referenceSpp;
+    else
+        json["reference"] = options.referencePath;
     json["relmse_epsilon"] = kRelMseEpsilon;
     for (const auto& [kind, engine] : engines)
         json["devices"][toString(kind)] = engine->deviceName();
@@ -159,9 +177,11 @@ int runComparison(const Scene& scene, const RenderRequest& baseRequest, const Co
         }
     }
 
-    std::printf("\n%s: %dx%d, depth %d, %s estimator, %s sampling; relMSE against %d spp (epsilon %g)\n",
+    const std::string against = options.referencePath.empty() ? fmt::format("{} spp", options.referenceSpp)
+                                                              : options.referencePath;
+    std::printf("\n%s: %dx%d, depth %d, %s estimator, %s sampling; relMSE against %s (epsilon %g)\n",
                 scene.id.c_str(), base.width, base.height(), base.depth, toString(base.estimator),
-                toString(base.sampling), options.referenceSpp, kRelMseEpsilon);
+                toString(base.sampling), against.c_str(), kRelMseEpsilon);
     std::printf("%s\n%s\n", header.c_str(), std::string(header.size(), '-').c_str());
     for (std::size_t rowIndex = 0; rowIndex < options.spps.size(); ++rowIndex)
     {

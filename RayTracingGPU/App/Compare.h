@@ -19,6 +19,7 @@ struct CompareOptions
     std::vector<int> spps; // sample counts, one table row each
     std::vector<EngineKind> engines; // columns, in order
     int referenceSpp = 0; // spp of the reference image (rendered by the last engine, seed + 1000)
+    std::string referencePath; // a linear PFM to use as the reference instead of rendering one
     std::string json; // write every figure here when not empty
 };
 

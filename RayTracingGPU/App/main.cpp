@@ -134,6 +134,11 @@ int main(int argc, char** argv)
     app.add_option("--reference-spp", referenceSpp,
                    "With --compare: spp of the reference image (default: 4x the largest count), rendered by the "
                    "last engine with seed + 1000");
+    std::string referencePath;
+    app.add_option("--reference", referencePath,
+                   "With --compare: a linear PFM of the same size (e.g. a long --hdr render) to measure against "
+                   "instead of rendering a reference")
+        ->check(CLI::ExistingFile);
     app.add_option("--table", table, "With --compare: write every figure as JSON here");
     app.add_flag("--validation", validation,
                  "Run with VK_LAYER_KHRONOS_validation and fail (exit 1) if it reports any warning or error "
@@ -153,6 +158,7 @@ int main(int argc, char** argv)
             c.engines = rt::app::parseEngineList(engines);
             c.referenceSpp = referenceSpp > 0 ? referenceSpp : 4 * *std::max_element(c.spps.begin(), c.spps.end());
             c.json = table;
+            c.referencePath = referencePath;
             return rt::app::runComparison(job.scene, job.request, c, [&](rt::EngineKind kind) -> std::unique_ptr<rt::RenderEngine> {
                 if (kind == rt::EngineKind::Gpu)
                     return std::make_unique<rt::gpu::GpuEngine>(

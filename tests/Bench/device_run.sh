@@ -6,6 +6,7 @@
 #   tests/Bench/device_run.sh tests    the GPU test suite (but its heavy part) and the apps' smoke tests
 #   tests/Bench/device_run.sh heavy    the heavy part: CPU/GPU agreement of every scene at 128 px, 64 spp
 #   tests/Bench/device_run.sh table    thesis Table 5.4 redone: cornell-box-lights 600x600, depth 50
+#   tests/Bench/device_run.sh estimators  the same scene on the GPU with each estimator against one reference
 set -u
 mode=${1:-tests}
 out=${OUT:-/tmp/out}
@@ -37,5 +38,16 @@ table)
     "$bin/ray-tracing-gpu" --compare --quiet --scene cornell-box-lights --width 600 --depth 50 \
         --spp-list 10,50,100,250,500,1000,2000,5000 --engines multi,gpu --reference-spp 20000 \
         --table "$out/table.json"
+    ;;
+estimators)
+    # One reference for every estimator (nee-mis, the least noisy, at 50,000 spp), then each estimator's
+    # ladder against it: relMSE against GPU time.
+    "$bin/ray-tracing-gpu" --headless --quiet --scene cornell-box-lights --width 600 --depth 50 \
+        --estimator nee-mis --spp 50000 --seed 7777 --hdr "$out/reference.pfm" --stats "$out/reference.json"
+    for e in mixture nee nee-mis; do
+        "$bin/ray-tracing-gpu" --compare --quiet --scene cornell-box-lights --width 600 --depth 50 \
+            --estimator "$e" --spp-list 25,50,100,250,500,1000 --engines gpu --reference "$out/reference.pfm" \
+            --table "$out/estimator-$e.json"
+    done
     ;;
 esac
