@@ -9,7 +9,7 @@
 #include "Payload.glsl"
 #include "Background.glsl"
 
-layout(location = 0) rayPayloadInEXT HitPayload payload;
+layout(location = kPayloadPath) rayPayloadInEXT HitPayload payload;
 
 void main()
 {

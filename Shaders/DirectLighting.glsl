@@ -1,11 +1,9 @@
 // Next-event estimation at a diffuse or isotropic vertex: the GLSL twin of estimateDirect in
 // RayTracingCPU/Integrator/PathIntegrator.h, on the shared selection, light sampler and MIS weight.
-// Traces a shadow ray with the path's payload (location 0), so the caller must have read the payload first.
-// Needs the payload `payload` and the globals of Bindings.glsl.
+// Needs the shadow payload `shadowVisible` (location kPayloadShadow) and the globals of Bindings.glsl.
 #ifndef RT_DIRECT_LIGHTING_GLSL
 #define RT_DIRECT_LIGHTING_GLSL
 
-#include "Payload.glsl"
 #include "Random.glsl"
 #include "Shared/DiffuseScattering.h"
 #include "Shared/LightSampling.h"
@@ -14,14 +12,14 @@
 #include "Textures/Texture.glsl"
 
 /// True when nothing lies between origin and origin + tMax direction: a shadow ray that stops at the first
-/// hit and runs no closest-hit shader; only a miss clears the material (Background.rmiss). A medium on the
-/// way stops it with the probability 1 - transmittance, as on the CPU.
+/// hit and runs no closest-hit shader, with a payload of one word; only its miss shader (Shadow.rmiss) sets
+/// it. A medium on the way stops it with the probability 1 - transmittance, as on the CPU.
 bool unoccluded(vec3 origin, vec3 direction, float tMax)
 {
-    payload.material = 0u;
+    shadowVisible = 0u;
     traceRayEXT(tlas, gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT,
-                0xFF, 0, 1, 0, origin, 0.0, direction, tMax, 0);
-    return payload.material == kNoIndex;
+                0xFF, 0, 1, kMissShadow, origin, 0.0, direction, tMax, int(kPayloadShadow));
+    return shadowVisible != 0u;
 }
 
 /// f cos Le / (pmf pdf) x the MIS weight of one light sample seen from `origin`, where the vertex's rays

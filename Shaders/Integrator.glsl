@@ -4,7 +4,8 @@
 // unidirectional lights; MIS-weighted after a NEE vertex), stop on the last segment, else scatter: NEE and a
 // diffuse direction at diffuse vertices with nee / nee-mis, else by the material (BSDF only, or the book-3
 // mixture over the light list); then Russian roulette, and continue from an offset origin.
-// Needs the payload `payload` (location 0) and the globals of Bindings.glsl.
+// Needs the payloads `payload` (location kPayloadPath) and `shadowVisible` (kPayloadShadow) and the globals of
+// Bindings.glsl.
 #ifndef RT_INTEGRATOR_GLSL
 #define RT_INTEGRATOR_GLSL
 
@@ -34,7 +35,8 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
     {
         if (!isFiniteVec(origin) || !isFiniteVec(direction))
             return vec3(uintBitsToFloat(0x7FC00000u)); // a quiet NaN
-        traceRayEXT(tlas, gl_RayFlagsOpaqueEXT, 0xFF, 0, 1, 0, origin, 0.0, direction, kRayTMax, 0);
+        traceRayEXT(tlas, gl_RayFlagsOpaqueEXT, 0xFF, 0, 1, kMissBackground, origin, 0.0, direction, kRayTMax,
+                    int(kPayloadPath));
         if (payload.material == kNoIndex)
         {
             radiance += beta * payload.background;

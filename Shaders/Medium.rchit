@@ -8,7 +8,7 @@
 #include "Bindings.glsl"
 #include "Payload.glsl"
 
-layout(location = 0) rayPayloadInEXT HitPayload payload;
+layout(location = kPayloadPath) rayPayloadInEXT HitPayload payload;
 
 void main()
 {

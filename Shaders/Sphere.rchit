@@ -10,7 +10,7 @@
 #include "Geometry/Sphere.glsl"
 #include "Payload.glsl"
 
-layout(location = 0) rayPayloadInEXT HitPayload payload;
+layout(location = kPayloadPath) rayPayloadInEXT HitPayload payload;
 hitAttributeEXT vec3 hitCenter;
 
 void main()

@@ -11,7 +11,7 @@
 #include "Payload.glsl"
 #include "RayOffset.glsl"
 
-layout(location = 0) rayPayloadInEXT HitPayload payload;
+layout(location = kPayloadPath) rayPayloadInEXT HitPayload payload;
 hitAttributeEXT vec2 barycentrics;
 
 void main()

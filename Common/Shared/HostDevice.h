@@ -161,8 +161,13 @@ RT_CONST(uint, kBindingPrimitiveLights, 15u)  // uint[]: per primitive of a reco
 RT_CONST(uint, kBindingImages, 16u)           // sampler2D[]: the scene's images, 8-bit sRGB
 RT_CONST(uint, kBindingCount, 17u)
 
-// Shader binding table: one miss record, and per TLAS instance a hit-group record offset. A procedural BLAS
-// holds its spheres as geometry 0 and its media as geometry 1 (traceRayEXT uses sbtRecordStride 1), so an
+// Shader binding table: two miss records (traceRayEXT's missIndex; each with its payload location), and per
+// TLAS instance a hit-group record offset.
+RT_CONST(uint, kMissBackground, 0u) // path rays, payload 0 (HitPayload): the background radiance
+RT_CONST(uint, kMissShadow, 1u)     // shadow rays, payload 1 (uint): 1 = reached the light unoccluded
+RT_CONST(uint, kPayloadPath, 0u)
+RT_CONST(uint, kPayloadShadow, 1u)
+// A procedural BLAS holds its spheres as geometry 0 and its media as geometry 1 (traceRayEXT uses sbtRecordStride 1), so an
 // instance of spheres and media starts at kHitGroupSpheres and reaches kHitGroupMedia through geometry 1.
 RT_CONST(uint, kHitGroupTriangles, 0u)
 RT_CONST(uint, kHitGroupSpheres, 1u)

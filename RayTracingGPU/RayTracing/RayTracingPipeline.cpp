@@ -34,6 +34,7 @@ vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::Pipel
     {
         RayGen,
         Miss,
+        ShadowMiss,
         TriangleHit,
         SphereIntersection,
         SphereHit,
@@ -44,6 +45,7 @@ vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::Pipel
     const Stage stages[StageCount] = {
         {rayGenFile, VK_SHADER_STAGE_RAYGEN_BIT_KHR},
         {"Background.rmiss.spv", VK_SHADER_STAGE_MISS_BIT_KHR},
+        {"Shadow.rmiss.spv", VK_SHADER_STAGE_MISS_BIT_KHR},
         {"Triangle.rchit.spv", VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR},
         {"Sphere.rint.spv", VK_SHADER_STAGE_INTERSECTION_BIT_KHR},
         {"Sphere.rchit.spv", VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR},
@@ -65,8 +67,12 @@ vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::Pipel
     std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
     groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR));
     groups.back().generalShader = RayGen;
+    // Miss groups in the order of the kMiss* constants.
+    static_assert(shader::kMissBackground == 0 && shader::kMissShadow == 1 && kMissGroupCount == 2);
     groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR));
     groups.back().generalShader = Miss;
+    groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR));
+    groups.back().generalShader = ShadowMiss;
     // Hit groups in the order of the kHitGroup* constants.
     static_assert(shader::kHitGroupTriangles == 0 && shader::kHitGroupSpheres == 1 && shader::kHitGroupMedia == 2);
     groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR));
