@@ -134,6 +134,8 @@ std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long lo
         {"depth", ActionValue::Integer, "N", "ray segments per path at most", 1},
         {"estimator", ActionValue::Text, "bsdf|mixture|nee|nee-mis", "how paths gather light (--estimator)", 0, 1e30,
          [](const std::string& v) { return parseEstimator(v).has_value(); }},
+        {"light-sampler", ActionValue::Text, "area|solid-angle", "how NEE picks a point on a light", 0, 1e30,
+         [](const std::string& v) { return parseLightSampler(v).has_value(); }},
         {"pdf", ActionValue::OnOff, "on|off", "the books' name: estimator=mixture, or estimator=bsdf"},
         {"russian-roulette", ActionValue::OnOff, "on|off", "paths end by Russian roulette from their third segment"},
         {"unidirectional-light", ActionValue::OnOff, "on|off", "emitters emit from their front face only"},

@@ -48,6 +48,11 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
                    "BSDF and light directions, no shadow rays; nee: a shadow ray to one sampled light at every "
                    "diffuse vertex, BSDF rays ignore the lights; nee-mis: NEE and BSDF rays both count, weighted "
                    "by the power heuristic");
+    app.add_option("--light-sampler", o.lightSampler,
+                   "How nee and nee-mis pick a point on a light: area (uniform over its surface) or solid-angle "
+                   "(uniform over the directions it covers: cones for spheres, spherical rectangles for "
+                   "rectangular quads, area where no solid-angle sampler applies). The mixture keeps book 3's.")
+        ->capture_default_str();
     app.add_option("--pdf", o.pdf, "The books' name for two estimators: on = --estimator mixture, off = bsdf");
     app.add_option("--russian-roulette", o.russianRoulette,
                    "on: from the third segment, a path whose throughput fell below 1 ends with probability "
@@ -96,6 +101,10 @@ RenderRequest resolveRequest(const CommonOptions& o, const Scene& scene)
         s.estimator = named;
     }
     s.russianRoulette = onOffFlag("--russian-roulette", o.russianRoulette);
+    const auto lightSampler = parseLightSampler(o.lightSampler);
+    if (!lightSampler)
+        throw UsageError(fmt::format("--light-sampler must be area or solid-angle (got '{}')", o.lightSampler));
+    s.lightSampler = *lightSampler;
     if (o.unidirectionalLight)
         s.unidirectionalLight = onOffFlag("--unidirectional-light", *o.unidirectionalLight);
     s.seed = o.seed;

@@ -102,4 +102,22 @@ std::optional<Estimator> parseEstimator(const std::string& text)
             return e;
     return std::nullopt;
 }
+
+const char* toString(LightSampler sampler)
+{
+    switch (sampler)
+    {
+    case LightSampler::Area: return "area";
+    case LightSampler::SolidAngle: return "solid-angle";
+    }
+    return "?";
+}
+
+std::optional<LightSampler> parseLightSampler(const std::string& text)
+{
+    for (LightSampler s : {LightSampler::Area, LightSampler::SolidAngle})
+        if (text == toString(s))
+            return s;
+    return std::nullopt;
+}
 } // namespace rt

@@ -10,6 +10,7 @@
 namespace rt
 {
 using shader::Estimator;
+using shader::LightSampler;
 using shader::PixelSampling;
 
 enum class EngineKind
@@ -27,6 +28,7 @@ struct RenderSettings
     float aspect = 1.0f; // width / height
     PixelSampling sampling = PixelSampling::Random;
     Estimator estimator = Estimator::NeeMis;
+    LightSampler lightSampler = LightSampler::SolidAngle; // how NEE samples a light
     bool russianRoulette = true; // paths end by Russian roulette from their third segment (Shared/RussianRoulette.h)
     bool unidirectionalLight = true; // emitters emit from their front side only
     std::uint32_t seed = 0;
@@ -46,7 +48,9 @@ struct RenderSettings
 const char* toString(EngineKind engine);
 const char* toString(PixelSampling sampling);
 const char* toString(Estimator estimator);
+const char* toString(LightSampler sampler);
 std::optional<EngineKind> parseEngine(const std::string& text);
 std::optional<PixelSampling> parsePixelSampling(const std::string& text);
 std::optional<Estimator> parseEstimator(const std::string& text);
+std::optional<LightSampler> parseLightSampler(const std::string& text);
 } // namespace rt

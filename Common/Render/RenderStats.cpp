@@ -18,6 +18,7 @@ nlohmann::json RenderStats::toJson() const
                      {"aspect", settings.aspect},
                      {"sampling", toString(settings.sampling)},
                      {"estimator", toString(settings.estimator)},
+                     {"light_sampler", toString(settings.lightSampler)},
                      {"russian_roulette", settings.russianRoulette},
                      {"unidirectional_light", settings.unidirectionalLight},
                      {"seed", settings.seed}};

@@ -12,6 +12,7 @@ namespace rt
 {
 using shader::LightData;
 using shader::LightShape;
+using shader::LightSampler;
 
 using shader::LightSample;
 using shader::lightPdf;

@@ -77,6 +77,13 @@ RT_ENUM_VALUE(Estimator, Nee, 2)      // a shadow ray to one sampled light per d
 RT_ENUM_VALUE(Estimator, NeeMis, 3)   // NEE and BSDF sampling weighted by the power heuristic (Veach 1997, §9.2)
 RT_ENUM_END(Estimator)
 
+// How NEE samples a point on a light (--light-sampler). Book 3's mixture keeps its own: cones for spheres,
+// area for quads and triangles.
+RT_ENUM_BEGIN(LightSampler)
+RT_ENUM_VALUE(LightSampler, Area, 0)       // uniform over the light's area (a sphere's whole surface)
+RT_ENUM_VALUE(LightSampler, SolidAngle, 1) // uniform over the solid angle: sphere cones, spherical rectangles
+RT_ENUM_END(LightSampler)
+
 RT_ENUM_BEGIN(PixelSampling)
 RT_ENUM_VALUE(PixelSampling, Random, 0)     // uniform jitter in the pixel, every sample independent
 RT_ENUM_VALUE(PixelSampling, Stratified, 1) // floor(sqrt(spp))^2 jittered strata; true spp is that square
@@ -206,7 +213,7 @@ struct RenderUniforms
     uint lightCount; // LightData[]: the emitters, then the mixture's sampling targets
     uint emitterCount; // LightData[0, emitterCount) emit: what NEE samples
     uint russianRoulette; // 1: paths end by Russian roulette on their throughput (RussianRoulette.h)
-    uint pad2;
+    RT_TAG(LightSampler) lightSampler; // NEE's
 };
 
 /// Per vkCmdTraceRaysKHR: each launch traces sampleCount camera samples per pixel, one after the other.

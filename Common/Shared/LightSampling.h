@@ -1,7 +1,9 @@
 // Sampling directions towards one light of the scene's world-space light list, and the solid-angle pdf of
 // any direction under that strategy, written once for both engines (Shared/ShaderLang.h). Both are needed
 // by the book-3 mixture (RTTROYL §9-12): the pdf of a direction must be evaluated for every light, whichever
-// strategy produced the direction.
+// strategy produced the direction; and by NEE + MIS, for the emitter a BSDF ray hits.
+// Two families: book 3's (sampleLight / lightPdf without a sampler: cones for spheres seen from outside,
+// area otherwise), which the mixture uses, and NEE's, chosen by a LightSampler (HostDevice.h).
 //
 // Conventions: `p` is the shading point (world space), `wi` a unit direction leaving p, pdfs are per unit
 // solid angle at p. A pdf is 0 for a direction that cannot be produced (misses the light), never a guess.
@@ -11,6 +13,7 @@
 #include "Shared/HostDevice.h"
 #include "Shared/Onb.h"
 #include "Shared/ShaderLang.h"
+#include "Shared/SphericalRectangle.h"
 #include "Shared/Warps.h"
 
 RT_SHADER_NAMESPACE_BEGIN
@@ -174,6 +177,91 @@ RT_FN bool sampleLight(RT_IN(LightData) light, vec3 p, vec2 u, RT_OUT(LightSampl
     ls.wi = w / ls.distance;
     ls.pdf = lightPdf(light, p, ls.wi);
     return ls.pdf > 0.0f;
+}
+
+/// Below this solid angle (sr) a rectangle is sampled by area: the float sum of four angles minus 2 pi
+/// carries an absolute error near 5e-7 sr, 5e-5 of the density here, and a light this small looks the same
+/// to both strategies.
+RT_CONST(float, kMinSphericalRectangle, 1e-2f)
+
+/// A quad whose edges are orthogonal (to float precision): what spherical-rectangle sampling needs.
+RT_FN bool isRectangle(RT_IN(LightData) light)
+{
+    return light.shape == RT_ENUM(LightShape, Quad) &&
+           abs(dot(light.p1, light.p2)) <= 1e-5f * length(light.p1) * length(light.p2);
+}
+
+/// Near root of the ray p + t wi against a sphere that p is outside of, or -1 when the ray misses it.
+RT_FN float sphereNearHit(RT_IN(LightData) s, vec3 p, vec3 wi)
+{
+    const vec3 f = s.p0 - p;
+    const float b = dot(f, wi);
+    const float disc = s.radius * s.radius - lengthSquared(f - b * wi);
+    if (!(disc >= 0.0f) || b <= 0.0f)
+        return -1.0f;
+    return b - sqrt(disc);
+}
+
+/// Solid-angle pdf with which sampleLight(light, strategy, p, .) produces the unit direction wi; 0 if it
+/// cannot. SolidAngle: 1 / S over a rectangle (Ureña et al. 2013) of at least kMinSphericalRectangle sr, the
+/// cone of a sphere seen from outside; Area: the area density of the point wi reaches first (a sphere's near
+/// side). Every other case is area sampling.
+RT_FN float lightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 wi)
+{
+    if (strategy == RT_ENUM(LightSampler, SolidAngle) && isRectangle(light))
+    {
+        const SphericalRectangle r = makeSphericalRectangle(p, light.p0, light.p1, light.p2);
+        if (r.solidAngle >= kMinSphericalRectangle)
+            return planarHit(light, p, wi) > 0.0f ? 1.0f / r.solidAngle : 0.0f;
+    }
+    if (strategy == RT_ENUM(LightSampler, Area) && light.shape == RT_ENUM(LightShape, Sphere) &&
+        lengthSquared(p - light.p0) > light.radius * light.radius)
+    {
+        const float t = sphereNearHit(light, p, wi);
+        if (!(t > 0.0f))
+            return 0.0f;
+        const vec3 n = (p + t * wi - light.p0) / light.radius;
+        return areaToSolidAngle(t * t, abs(dot(n, wi)), light.area);
+    }
+    return lightPdf(light, p, wi);
+}
+
+/// Samples a point of `light` for NEE from p with the density lightPdf(light, strategy, p, .) reports (the
+/// sample's pdf is that density of its direction). With Area, a sphere seen from outside is sampled over its
+/// whole surface: a point on its far side faces away from p and returns false, a sample of zero contribution.
+RT_FN bool sampleLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec2 u, RT_OUT(LightSample) ls)
+{
+    if (strategy == RT_ENUM(LightSampler, SolidAngle) && isRectangle(light))
+    {
+        const SphericalRectangle r = makeSphericalRectangle(p, light.p0, light.p1, light.p2);
+        if (r.solidAngle >= kMinSphericalRectangle)
+        {
+            ls.point = sampleSphericalRectangle(r, u);
+            ls.normal = light.normal;
+            const vec3 planar = ls.point - light.p0;
+            ls.uv = vec2(dot(planar, light.dualU), dot(planar, light.dualV));
+            const vec3 w = ls.point - p;
+            ls.distance = length(w);
+            ls.wi = w / ls.distance;
+            // The pdf of the direction, as lightPdf finds it: 0 where rounding put it off the rectangle.
+            ls.pdf = planarHit(light, p, ls.wi) > 0.0f ? 1.0f / r.solidAngle : 0.0f;
+            return ls.pdf > 0.0f;
+        }
+    }
+    if (strategy == RT_ENUM(LightSampler, Area) && light.shape == RT_ENUM(LightShape, Sphere) &&
+        lengthSquared(p - light.p0) > light.radius * light.radius)
+    {
+        ls.uv = vec2(0.0f);
+        ls.normal = sampleUniformSphere(u);
+        ls.point = light.p0 + light.radius * ls.normal;
+        const vec3 w = ls.point - p;
+        ls.distance = length(w);
+        ls.wi = w / ls.distance;
+        const float cosLight = -dot(ls.normal, ls.wi);
+        ls.pdf = cosLight > 0.0f ? areaToSolidAngle(ls.distance * ls.distance, cosLight, light.area) : 0.0f;
+        return ls.pdf > 0.0f;
+    }
+    return sampleLight(light, p, u, ls);
 }
 
 RT_SHADER_NAMESPACE_END

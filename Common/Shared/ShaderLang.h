@@ -33,10 +33,12 @@ inline float sqrt(float x) { return std::sqrt(x); }
 inline float sin(float x) { return std::sin(x); }
 inline float cos(float x) { return std::cos(x); }
 inline float abs(float x) { return std::fabs(x); }
+inline float acos(float x) { return std::acos(x); }
 inline float min(float a, float b) { return b < a ? b : a; } // GLSL's min/max: the first for NaN b, as std::min
 inline float max(float a, float b) { return a < b ? b : a; }
 inline uint min(uint a, uint b) { return b < a ? b : a; }
 inline uint max(uint a, uint b) { return a < b ? b : a; }
+inline float clamp(float x, float lo, float hi) { return min(max(x, lo), hi); } // GLSL's definition
 inline float roundEven(float x) { return std::nearbyint(x); } // the default rounding mode: to nearest, ties even
 /// +1 or -1 with the sign bit of x (-0 gives -1): copysign(1, x). GLSL's sign() returns 0 for 0.
 inline float signNotZero(float x) { return std::copysign(1.0f, x); }

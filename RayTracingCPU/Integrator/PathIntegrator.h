@@ -36,6 +36,7 @@ struct PathOptions
 {
     int depth = 50; // ray segments traced at most
     Estimator estimator = Estimator::NeeMis;
+    LightSampler lightSampler = LightSampler::SolidAngle; // NEE's
     bool russianRoulette = true;
     bool unidirectionalLight = true;
 };
@@ -65,11 +66,11 @@ inline vec3 sampledEmission(const Scene& scene, const LightData& light, const Li
 /// shading normal `ns`; the point itself in a medium): lights are sampled from there and the BSDF ray leaves
 /// from there too, so both strategies see one geometry and their MIS weights sum to 1 for every direction
 /// (sampled from the unoffset point, a sphere light's silhouette shifted between them: +0.05 % on a test).
-/// Returns f cos Le / (pmf pdf) times the MIS weight (mis: the power heuristic against the BSDF strategy's
-/// pdf of the same direction; else 1), or 0 when the point is occluded or faces away. Draws three numbers:
+/// Returns f cos Le / (pmf pdf) times the MIS weight (nee-mis: the power heuristic against the BSDF
+/// strategy's pdf of the same direction; nee: 1), or 0 when the point is occluded or faces away. Draws three numbers:
 /// the selection, then the point.
-inline vec3 estimateDirect(const CpuScene& cs, const vec3& origin, const vec3& ns, bool phase, const vec3& albedo,
-                           bool mis, bool unidirectional, float time, Rng& rng, std::uint64_t& segments)
+inline vec3 estimateDirect(const CpuScene& cs, const PathOptions& options, const vec3& origin, const vec3& ns,
+                           bool phase, const vec3& albedo, float time, Rng& rng, std::uint64_t& segments)
 {
     const Scene& scene = cs.source();
     const std::uint32_t emitters = scene.emitterCount();
@@ -77,16 +78,17 @@ inline vec3 estimateDirect(const CpuScene& cs, const vec3& origin, const vec3& n
     const vec2 u(rng.nextFloat(), rng.nextFloat());
     const LightData& light = scene.lights[picked];
     LightSample ls;
-    if (!sampleLight(light, origin, u, ls))
+    if (!sampleLight(light, options.lightSampler, origin, u, ls))
         return vec3(0.0f);
     const float bsdfPdf = shader::diffusePdf(phase, ns, ls.wi); // f cos = albedo bsdfPdf
     if (!(bsdfPdf > 0.0f))
         return vec3(0.0f);
-    const vec3 le = sampledEmission(scene, light, ls, unidirectional);
+    const vec3 le = sampledEmission(scene, light, ls, options.unidirectionalLight);
     if (maxComponent(le) <= 0.0f)
         return vec3(0.0f);
     const float lightPdfTotal = shader::uniformLightPmf(emitters) * ls.pdf;
-    const float weight = mis ? shader::powerHeuristic(lightPdfTotal, bsdfPdf) : 1.0f;
+    const float weight =
+        options.estimator == Estimator::NeeMis ? shader::powerHeuristic(lightPdfTotal, bsdfPdf) : 1.0f;
     ++segments;
     // The shadow ray stops short of the light's surface by a relative margin far above the rounding of the
     // sampled point and of the light's intersection test.
@@ -132,7 +134,8 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
             if (previousBsdfPdf > 0.0f && si.light != kNoIndex)
                 weight = mis ? shader::powerHeuristic(previousBsdfPdf,
                                                       shader::uniformLightPmf(scene.emitterCount()) *
-                                                          lightPdf(scene.lights[si.light], previousPoint, ray.direction))
+                                                          lightPdf(scene.lights[si.light], options.lightSampler,
+                                                                   previousPoint, ray.direction))
                              : 0.0f;
             radiance += throughput * evalTexture(scene, mat.emissionTexture, si.uv, si.p) * weight;
         }
@@ -166,8 +169,8 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
                 {
                     // The BSDF ray leaves from this origin too (below): sampleDiffuse keeps to the side of ns.
                     const vec3 origin = si.medium ? si.p : offsetRayOrigin(si.p, ns, si.offsetScale);
-                    radiance += throughput * estimateDirect(cs, origin, ns, phase, albedo, mis,
-                                                            options.unidirectionalLight, ray.time, rng, segments);
+                    radiance += throughput * estimateDirect(cs, options, origin, ns, phase, albedo, ray.time, rng,
+                                                            segments);
                 }
                 const vec2 u(rng.nextFloat(), rng.nextFloat());
                 wi = shader::sampleDiffuse(phase, ns, u);

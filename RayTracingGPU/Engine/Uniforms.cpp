@@ -32,6 +32,7 @@ shader::RenderUniforms makeUniforms(const Scene& scene, const CameraDesc& camera
     u.lightCount = static_cast<std::uint32_t>(scene.lights.size());
     u.emitterCount = scene.emitterCount();
     u.russianRoulette = settings.russianRoulette ? 1u : 0u;
+    u.lightSampler = settings.lightSampler;
     return u;
 }
 } // namespace rt::gpu

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,16 +24,27 @@ constexpr float kRadiance = 1.0f; // L; E is then the projected solid angle
 /// The receiver: at the origin, facing +z.
 const dvec3 kNormal(0.0, 0.0, 1.0);
 
-/// Mean of L max(0, n.wi) / pdf from the origin over sampleLight, with its standard error.
-test::MeanEstimate estimateIrradiance(const LightData& light, std::uint32_t seed)
+/// Mean of L max(0, n.wi) / pdf from the origin over sampleLight (book 3's, or NEE's `strategy`), with its
+/// standard error.
+test::MeanEstimate estimateIrradiance(const LightData& light, std::uint32_t seed,
+                                      std::optional<LightSampler> strategy = std::nullopt)
 {
     Rng rng(pcgHash(seed));
     return test::estimateMean(kSamples, [&](long) {
         LightSample s;
-        if (!sampleLight(light, vec3(0.0f), test::uniform2(rng), s))
+        const vec2 u = test::uniform2(rng);
+        if (!(strategy ? sampleLight(light, *strategy, vec3(0.0f), u, s) : sampleLight(light, vec3(0.0f), u, s)))
             return 0.0;
         return double(kRadiance) * std::max(0.0, glm::dot(kNormal, dvec3(s.wi))) / double(s.pdf);
     });
+}
+
+/// Book 3's samplers, then NEE's two: each must find the same irradiance.
+const std::optional<LightSampler> kStrategies[] = {std::nullopt, LightSampler::Area, LightSampler::SolidAngle};
+
+std::string nameOf(std::optional<LightSampler> strategy)
+{
+    return strategy ? (*strategy == LightSampler::Area ? "area" : "solid angle") : "book 3";
 }
 
 /// Within 3 standard errors (the brief's criterion; each configuration is one fixed-seed draw), plus 1e-5
@@ -83,9 +95,11 @@ TEST(LightIrradiance, SphereAboveTheHorizon)
         ASSERT_LE(theta, kPiD / 2 - std::asin(sinAlpha)) << "the case must be fully above the horizon";
         // E = pi L (R/d)^2 cos(theta): the closed form, written out rather than through the helper.
         const double expected = kPiD * kRadiance * sinAlpha * sinAlpha * std::cos(theta);
-        expectIrradiance(estimateIrradiance(sphereAt(c.radius, c.distance, c.thetaDegrees), seed++), expected,
-                         "R " + std::to_string(c.radius) + ", d " + std::to_string(c.distance) + ", theta " +
-                             std::to_string(c.thetaDegrees));
+        for (const auto strategy : kStrategies)
+            expectIrradiance(estimateIrradiance(sphereAt(c.radius, c.distance, c.thetaDegrees), seed++, strategy),
+                             expected,
+                             nameOf(strategy) + ": R " + std::to_string(c.radius) + ", d " +
+                                 std::to_string(c.distance) + ", theta " + std::to_string(c.thetaDegrees));
     }
 }
 
@@ -102,8 +116,11 @@ TEST(LightIrradiance, SphereStraddlingTheHorizon)
         const double theta = c.thetaDegrees * kPiD / 180.0;
         ASSERT_LT(std::cos(theta) * std::cos(theta), c.sinAlpha * c.sinAlpha) << "the case must straddle";
         const double expected = kRadiance * sphereProjectedSolidAngle(c.sinAlpha, theta);
-        expectIrradiance(estimateIrradiance(sphereAt(1.0, 1.0 / c.sinAlpha, c.thetaDegrees), seed++), expected,
-                         "sin(alpha) " + std::to_string(c.sinAlpha) + ", theta " + std::to_string(c.thetaDegrees));
+        for (const auto strategy : kStrategies)
+            expectIrradiance(estimateIrradiance(sphereAt(1.0, 1.0 / c.sinAlpha, c.thetaDegrees), seed++, strategy),
+                             expected,
+                             nameOf(strategy) + ": sin(alpha) " + std::to_string(c.sinAlpha) + ", theta " +
+                                 std::to_string(c.thetaDegrees));
     }
 }
 
@@ -130,8 +147,10 @@ TEST(LightIrradiance, RectangleWithACornerAbove)
     {
         const LightData quad = test::makeQuadLight({0.0f, 0.0f, float(c.c)}, {float(c.a), 0, 0}, {0, float(c.b), 0});
         const double expected = kRadiance * kPiD * cornerRectangleFormFactor(c.a, c.b, c.c);
-        expectIrradiance(estimateIrradiance(quad, seed++), expected,
-                         std::to_string(c.a) + " x " + std::to_string(c.b) + " at " + std::to_string(c.c));
+        for (const auto strategy : kStrategies)
+            expectIrradiance(estimateIrradiance(quad, seed++, strategy), expected,
+                             nameOf(strategy) + ": " + std::to_string(c.a) + " x " + std::to_string(c.b) + " at " +
+                                 std::to_string(c.c));
     }
 }
 
@@ -140,7 +159,9 @@ TEST(LightIrradiance, RectangleCentredAbove)
     // Four corner rectangles meet under the point: by superposition E = 4 pi L F(a/2, b/2, c).
     const LightData quad = test::makeQuadLight({-0.5f, -1.0f, 0.7f}, {0, 2, 0}, {1, 0, 0}); // faces down
     const double expected = kRadiance * 4.0 * kPiD * cornerRectangleFormFactor(0.5, 1.0, 0.7);
-    expectIrradiance(estimateIrradiance(quad, 31), expected, "1 x 2 centred at 0.7");
+    std::uint32_t seed = 31;
+    for (const auto strategy : kStrategies)
+        expectIrradiance(estimateIrradiance(quad, seed++, strategy), expected, nameOf(strategy) + ": 1 x 2 centred at 0.7");
 }
 
 // ---- Polygons by Lambert's formula (§4.2) -----------------------------------------------------------------
@@ -190,7 +211,8 @@ TEST(LightIrradiance, TriangleAndGrazingQuad)
     for (const Case& k : cases)
     {
         const double expected = kRadiance * lambertProjectedSolidAngle(k.vertices);
-        expectIrradiance(estimateIrradiance(k.light, seed++), expected, k.name);
+        for (const auto strategy : kStrategies)
+            expectIrradiance(estimateIrradiance(k.light, seed++, strategy), expected, nameOf(strategy) + ": " + k.name);
     }
 }
 } // namespace

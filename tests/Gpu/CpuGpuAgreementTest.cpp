@@ -25,11 +25,13 @@ struct AgreementCase
     std::string scene;
     Estimator estimator;
     bool russianRoulette = true;
+    LightSampler lightSampler = LightSampler::SolidAngle;
 };
 
 void PrintTo(const AgreementCase& c, std::ostream* os)
 {
-    *os << c.scene << " (" << toString(c.estimator) << (c.russianRoulette ? "" : ", no roulette") << ")";
+    *os << c.scene << " (" << toString(c.estimator) << ", " << toString(c.lightSampler)
+        << (c.russianRoulette ? "" : ", no roulette") << ")";
 }
 
 /// Renders `c` on both engines with `s` (size, spp, depth) and Z-tests every block.
@@ -39,6 +41,7 @@ void expectAgreement(const AgreementCase& c, RenderSettings s, double maxZ)
     s.aspect = scene.defaults.aspect;
     s.estimator = c.estimator;
     s.russianRoulette = c.russianRoulette;
+    s.lightSampler = c.lightSampler;
     s.unidirectionalLight = scene.defaults.unidirectionalLight;
 
     cpu::CpuEngine cpuEngine(EngineKind::Multi);
@@ -96,6 +99,8 @@ std::vector<AgreementCase> cases()
         out.push_back({id, Estimator::Nee});
     for (const char* id : {"rtnw-cornell-smoke", "cornell-box-lights"})
         out.push_back({id, Estimator::NeeMis, false});
+    for (const char* id : {"rtnw-simple-light", "cornell-box-lights", "rtrol-cornell-box"})
+        out.push_back({id, Estimator::NeeMis, true, LightSampler::Area});
     return out;
 }
 
@@ -104,6 +109,7 @@ std::string caseName(const ::testing::TestParamInfo<AgreementCase>& param)
     std::string estimator = toString(param.param.estimator);
     std::replace(estimator.begin(), estimator.end(), '-', '_');
     return ::rt::test::testNameOf(param.param.scene) + "_" + estimator +
+           (param.param.lightSampler == LightSampler::Area ? "_area" : "") +
            (param.param.russianRoulette ? "" : "_no_roulette");
 }
 

@@ -109,6 +109,11 @@ bool ActionScript::run(const Action& a, Session& session, GlWindow& window)
         session.setEstimator(a.on() ? Estimator::Mixture : Estimator::BsdfOnly);
         return true;
     }
+    if (a.name == "light-sampler")
+    {
+        session.setLightSampler(*parseLightSampler(v));
+        return true;
+    }
     if (a.name == "russian-roulette")
     {
         session.setRussianRoulette(a.on());

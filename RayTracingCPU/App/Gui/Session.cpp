@@ -26,6 +26,7 @@ nlohmann::json toJson(const RenderRequest& request)
             {"aspect", r.aspect},
             {"sampling", toString(r.sampling)},
             {"estimator", toString(r.estimator)},
+            {"light_sampler", toString(r.lightSampler)},
             {"russian_roulette", r.russianRoulette},
             {"unidirectional_light", r.unidirectionalLight},
             {"seed", r.seed}};
@@ -126,6 +127,7 @@ bool Session::setCount(int count)
 void Session::setSampling(PixelSampling sampling) { m_image.settings.sampling = sampling; }
 void Session::setEstimator(Estimator estimator) { m_image.settings.estimator = estimator; }
 void Session::setRussianRoulette(bool on) { m_image.settings.russianRoulette = on; }
+void Session::setLightSampler(LightSampler sampler) { m_image.settings.lightSampler = sampler; }
 void Session::setUnidirectionalLight(bool on) { m_image.settings.unidirectionalLight = on; }
 
 bool Session::applySceneDefaults()

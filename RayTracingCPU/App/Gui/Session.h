@@ -35,6 +35,7 @@ public:
     void setSampling(PixelSampling sampling);
     void setEstimator(Estimator estimator);
     void setRussianRoulette(bool on);
+    void setLightSampler(LightSampler sampler);
     void setUnidirectionalLight(bool on);
     /// The selected scene's own spp, depth, width, aspect and light mode; false until the scene was built once.
     bool applySceneDefaults();

@@ -160,6 +160,15 @@ void SettingsPanel::drawRenderingParameters(Session& session)
     tooltip("bsdf: BSDF sampling only (books 1 and 2); mixture: book 3's mix of BSDF and light directions, no "
             "shadow rays; nee: a shadow ray to one light per diffuse vertex; nee-mis: NEE and BSDF rays "
             "weighted by the power heuristic");
+    if (ImGui::BeginCombo("Light sampler", toString(s.lightSampler)))
+    {
+        for (LightSampler l : {LightSampler::Area, LightSampler::SolidAngle})
+            if (ImGui::Selectable(toString(l), l == s.lightSampler))
+                session.setLightSampler(l);
+        ImGui::EndCombo();
+    }
+    tooltip("how nee and nee-mis pick a point on a light: area: uniform over its surface; solid-angle: uniform "
+            "over the directions it covers (sphere cones, spherical rectangles)");
     bool roulette = s.russianRoulette;
     if (ImGui::Checkbox("Russian roulette", &roulette))
         session.setRussianRoulette(roulette);

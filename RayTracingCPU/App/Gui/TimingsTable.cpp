@@ -14,6 +14,7 @@ void TimingsTable::record(const RenderStats& stats)
                         .depth = s.depth,
                         .sampling = s.sampling,
                         .estimator = s.estimator,
+                        .lightSampler = s.lightSampler,
                         .russianRoulette = s.russianRoulette,
                         .unidirectionalLight = s.unidirectionalLight};
     auto row = std::find_if(m_rows.begin(), m_rows.end(), [&](const TimingRow& r) { return r.key == key; });
@@ -45,6 +46,7 @@ nlohmann::json TimingsTable::toJson() const
                                {"depth", row.key.depth},
                                {"sampling", toString(row.key.sampling)},
                                {"estimator", toString(row.key.estimator)},
+                               {"light_sampler", toString(row.key.lightSampler)},
                                {"russian_roulette", row.key.russianRoulette},
                                {"unidirectional_light", row.key.unidirectionalLight},
                                {"engine", toString(EngineKind(e))},

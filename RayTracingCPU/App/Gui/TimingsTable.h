@@ -27,6 +27,7 @@ struct TimingKey
     int depth = 0;
     PixelSampling sampling = PixelSampling::Random;
     Estimator estimator = Estimator::NeeMis;
+    LightSampler lightSampler = LightSampler::SolidAngle;
     bool russianRoulette = true;
     bool unidirectionalLight = true;
 

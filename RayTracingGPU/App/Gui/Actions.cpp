@@ -93,6 +93,8 @@ bool applyAction(const Action& a, Controls& c)
         c.setEstimator(*parseEstimator(a.value));
     else if (n == "pdf")
         c.setEstimator(a.on() ? Estimator::Mixture : Estimator::BsdfOnly);
+    else if (n == "light-sampler")
+        c.setLightSampler(*parseLightSampler(a.value));
     else if (n == "russian-roulette")
         c.setRussianRoulette(a.on());
     else if (n == "unidirectional-light")

@@ -27,6 +27,7 @@ void Controls::setTargetSpp(int spp) { m_state->display.targetSpp = std::max(spp
 void Controls::setDepth(int depth) { m_state->image.request.settings.depth = std::max(depth, 1); }
 void Controls::setEstimator(Estimator estimator) { m_state->image.request.settings.estimator = estimator; }
 void Controls::setRussianRoulette(bool on) { m_state->image.request.settings.russianRoulette = on; }
+void Controls::setLightSampler(LightSampler sampler) { m_state->image.request.settings.lightSampler = sampler; }
 void Controls::setUnidirectionalLight(bool on) { m_state->image.request.settings.unidirectionalLight = on; }
 void Controls::setFov(float degrees) { m_state->image.camera = withFov(m_state->image.camera, degrees); }
 void Controls::setAperture(float diameter) { m_state->image.camera = withAperture(m_state->image.camera, diameter); }

@@ -30,6 +30,7 @@ public:
     void setDepth(int depth);
     void setEstimator(Estimator estimator);
     void setRussianRoulette(bool on);
+    void setLightSampler(LightSampler sampler);
     void setUnidirectionalLight(bool on);
     float fov() const { return m_state->image.camera.vfovDegrees; }
     void setFov(float degrees);

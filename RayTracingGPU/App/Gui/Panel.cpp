@@ -58,6 +58,14 @@ void rayTracingSection(Controls& controls, const WindowState& state)
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("bsdf: BSDF sampling only; mixture: book 3's mix, no shadow rays; nee: a shadow ray to one "
                           "light per diffuse vertex; nee-mis: NEE and BSDF rays by the power heuristic");
+    const LightSampler lightSampler = image.request.settings.lightSampler;
+    if (ImGui::BeginCombo("Light sampler", toString(lightSampler)))
+    {
+        for (LightSampler l : {LightSampler::Area, LightSampler::SolidAngle})
+            if (ImGui::Selectable(toString(l), l == lightSampler))
+                controls.setLightSampler(l);
+        ImGui::EndCombo();
+    }
     if (bool on = image.request.settings.russianRoulette; ImGui::Checkbox("Russian roulette", &on))
         controls.setRussianRoulette(on);
     if (bool on = image.request.settings.unidirectionalLight; ImGui::Checkbox("Unidirectional light", &on))

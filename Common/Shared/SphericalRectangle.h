@@ -1,0 +1,97 @@
+// Uniform solid-angle sampling of a rectangle, written once for both engines (Shared/ShaderLang.h):
+// C. Ureña, M. Fajardo, A. King, "An Area-Preserving Parametrization for Spherical Rectangles", EGSR 2013
+// (Computer Graphics Forum 32(4)), §3 (setup, the solid angle as the sum of the four internal angles minus 2 pi)
+// and §4 (the two-step inversion). Research notes §1.5 list the numerical guards used here.
+//
+// Frame: the rectangle's corner s and orthogonal edges ex, ey, seen from the point o; local axes x = ex/|ex|,
+// y = ey/|ey|, z = x cross y turned away from the rectangle, so that it lies in the plane z = z0 <= 0 and
+// covers [x0, x1] x [y0, y1] there.
+#ifndef RT_SHARED_SPHERICAL_RECTANGLE_H
+#define RT_SHARED_SPHERICAL_RECTANGLE_H
+
+#include "Shared/ShaderLang.h"
+
+RT_SHADER_NAMESPACE_BEGIN
+
+struct SphericalRectangle
+{
+    vec3 o; // the point it is seen from
+    vec3 x;
+    vec3 y;
+    vec3 z;
+    float x0;
+    float x1;
+    float y0;
+    float y1;
+    float z0;
+    float b0; // z component of the normal of the plane through o and the edge y = y0 (the paper's n0.z)
+    float b1; // ... through o and the edge y = y1 (n2.z)
+    float k; // 2 pi - g2 - g3: the angle where the first coordinate's inversion starts
+    float solidAngle; // S, steradians
+};
+
+/// The rectangle s + a ex + b ey (a, b in [0, 1], ex . ey = 0) as seen from o (Ureña et al. 2013, §3,
+/// Algorithm 1 "SphQuadInit"). The normals of the four planes through o and an edge each have one zero
+/// component, so each internal angle is acos of a product of two z components.
+RT_FN SphericalRectangle makeSphericalRectangle(vec3 o, vec3 s, vec3 ex, vec3 ey)
+{
+    SphericalRectangle r;
+    const float exLength = length(ex);
+    const float eyLength = length(ey);
+    r.o = o;
+    r.x = ex / exLength;
+    r.y = ey / eyLength;
+    r.z = cross(r.x, r.y);
+    const vec3 d = s - o;
+    r.z0 = dot(d, r.z);
+    if (r.z0 > 0.0f)
+    {
+        r.z = -r.z;
+        r.z0 = -r.z0;
+    }
+    r.x0 = dot(d, r.x);
+    r.y0 = dot(d, r.y);
+    r.x1 = r.x0 + exLength;
+    r.y1 = r.y0 + eyLength;
+    const float z2 = r.z0 * r.z0;
+    // z components of the unit normals n0 = (0, z0, -y0), n1 = (-z0, 0, x1), n2 = (0, -z0, y1), n3 = (z0, 0, -x0).
+    const float n0z = -r.y0 / sqrt(z2 + r.y0 * r.y0);
+    const float n1z = r.x1 / sqrt(z2 + r.x1 * r.x1);
+    const float n2z = r.y1 / sqrt(z2 + r.y1 * r.y1);
+    const float n3z = -r.x0 / sqrt(z2 + r.x0 * r.x0);
+    const float g0 = acos(clamp(-n0z * n1z, -1.0f, 1.0f));
+    const float g1 = acos(clamp(-n1z * n2z, -1.0f, 1.0f));
+    const float g2 = acos(clamp(-n2z * n3z, -1.0f, 1.0f));
+    const float g3 = acos(clamp(-n3z * n0z, -1.0f, 1.0f));
+    r.b0 = n0z;
+    r.b1 = n2z;
+    r.k = 2.0f * kPi - g2 - g3;
+    r.solidAngle = g0 + g1 + g2 + g3 - 2.0f * kPi;
+    return r;
+}
+
+/// The point of the rectangle for u in [0, 1)^2, uniform in solid angle as seen from r.o (density 1 / S)
+/// (Ureña et al. 2013, §4, Algorithm 2 "SphQuadSample"): u.x fixes the vertical line x = xu that cuts off
+/// u.x S of the solid angle, u.y the height on it through h(y) = y / sqrt(d^2 + y^2), which is linear in the
+/// solid angle along that line.
+RT_FN vec3 sampleSphericalRectangle(RT_IN(SphericalRectangle) r, vec2 u)
+{
+    const float au = u.x * r.solidAngle + r.k;
+    const float sinAu = sin(au);
+    const float fu = (cos(au) * r.b0 - r.b1) / sinAu;
+    // cu = cos of the angle of the cut plane; +-0 when sin(au) = 0 (fu infinite), never NaN.
+    const float cu = abs(sinAu) > 0.0f ? clamp(signNotZero(fu) / sqrt(fu * fu + r.b0 * r.b0), -0.9999999f, 0.9999999f)
+                                       : 0.0f;
+    const float xu = clamp(-cu * r.z0 / max(sqrt(1.0f - cu * cu), 1e-7f), r.x0, r.x1);
+    const float d = sqrt(xu * xu + r.z0 * r.z0);
+    const float h0 = r.y0 / sqrt(d * d + r.y0 * r.y0);
+    const float h1 = r.y1 / sqrt(d * d + r.y1 * r.y1);
+    const float hv = h0 + u.y * (h1 - h0);
+    const float hv2 = hv * hv;
+    const float yv = hv2 < 1.0f - 1e-6f ? clamp(hv * d / sqrt(1.0f - hv2), r.y0, r.y1) : r.y1;
+    return r.o + xu * r.x + yv * r.y + r.z0 * r.z;
+}
+
+RT_SHADER_NAMESPACE_END
+
+#endif
