@@ -33,6 +33,8 @@ const std::vector<SceneInfo>& sceneCatalogue()
         {"mesh-in-one-weekend", "Thesis GPU app: meshes in one weekend", "thesis B.2", meshInOneWeekend},
         {"cornell-box-and-mesh", "Thesis GPU app: Cornell box and mesh", "thesis B.2", cornellBoxAndMesh},
         {"furnace", "White furnace: Le / (1 - a) everywhere", "research notes §4.5", furnace},
+        {"rect-light-closeup", "Rectangular light upright on a floor, seen near its foot", "scenes.md", rectLightCloseup},
+        {"sphere-light-closeup", "Sphere light just above a floor", "scenes.md", sphereLightCloseup},
     };
     return catalogue;
 }

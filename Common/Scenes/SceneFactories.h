@@ -36,6 +36,8 @@ Scene meshInOneWeekend(const SceneOptions&);
 Scene cornellBoxAndMesh(const SceneOptions&);
 // Light-sampling tests
 Scene furnace(const SceneOptions&);
+Scene rectLightCloseup(const SceneOptions&);
+Scene sphereLightCloseup(const SceneOptions&);
 
 // Pieces several sources share.
 inline const vec3 kSky{0.70f, 0.80f, 1.00f};
