@@ -95,8 +95,10 @@ struct fmt::formatter<rt::RenderSettings> : fmt::formatter<std::string_view>
     auto format(const rt::RenderSettings& s, FormatContext& ctx) const -> decltype(ctx.out())
     {
         const std::string text = fmt::format(
-            "spp {}, depth {}, {}x{}, {}, {}, {} light sampling, Russian roulette {}, unidirectional light {}, seed {}",
+            "spp {}, depth {}, {}x{}, {}, {}, {} light sampling, {} light selection, Russian roulette {}, "
+            "unidirectional light {}, seed {}",
             s.spp, s.depth, s.width, s.height(), s.sampling, s.estimator, rt::toString(s.lightSampler),
+            rt::toString(s.lightSelection),
             s.russianRoulette ? "on" : "off",
             s.unidirectionalLight ? "on" : "off", s.seed);
         return fmt::formatter<std::string_view>::format(text, ctx);

@@ -22,6 +22,7 @@ layout(binding = kBindingSpheres, scalar) readonly buffer SphereBlock { SphereRe
 layout(binding = kBindingMedia, scalar) readonly buffer MediumBlock { MediumRecord media[]; };
 layout(binding = kBindingCounters, scalar) buffer CounterBlock { SampleCounters counters; };
 layout(binding = kBindingPrimitiveLights, scalar) readonly buffer PrimitiveLightBlock { uint primitiveLights[]; };
+layout(binding = kBindingLightAlias, scalar) readonly buffer LightAliasBlock { AliasEntry lightAlias[]; };
 layout(binding = kBindingImages) uniform sampler2D images[];
 
 layout(push_constant, scalar) uniform PushBlock { TracePushConstants push; };

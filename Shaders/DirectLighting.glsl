@@ -27,7 +27,8 @@ bool unoccluded(vec3 origin, vec3 direction, float tMax)
 /// Draws three numbers: the selection, then the point.
 vec3 estimateDirect(vec3 origin, vec3 ns, bool phase, vec3 albedo, bool mis, inout Rng rng)
 {
-    uint picked = selectLightUniform(nextFloat(rng), uniforms.emitterCount);
+    float pmf;
+    uint picked = selectLight(uniforms.lightSelection, nextFloat(rng), uniforms.emitterCount, pmf);
     vec2 u = nextFloat2(rng);
     LightSample ls;
     if (!sampleLight(lights[picked], uniforms.lightSampler, origin, u, ls))
@@ -38,7 +39,7 @@ vec3 estimateDirect(vec3 origin, vec3 ns, bool phase, vec3 albedo, bool mis, ino
     vec3 le = evaluateTexture(materials[lights[picked].material].emissionTexture, ls.uv, ls.point);
     if (!(max(le.x, max(le.y, le.z)) > 0.0))
         return vec3(0.0);
-    float lightPdfTotal = uniformLightPmf(uniforms.emitterCount) * ls.pdf;
+    float lightPdfTotal = pmf * ls.pdf;
     float weight = mis ? powerHeuristic(lightPdfTotal, bsdfPdf) : 1.0;
     // Stop short of the light's surface by a relative margin far above the rounding (as on the CPU).
     if (!unoccluded(origin, ls.wi, ls.distance * (1.0 - 1e-4)))

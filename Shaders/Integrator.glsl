@@ -57,7 +57,8 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
         {
             float weight = 1.0;
             if (previousBsdfPdf > 0.0 && payload.light != kNoIndex)
-                weight = mis ? powerHeuristic(previousBsdfPdf, uniformLightPmf(uniforms.emitterCount) *
+                weight = mis ? powerHeuristic(previousBsdfPdf, lightSelectionPmf(uniforms.lightSelection, payload.light,
+                                                                                 uniforms.emitterCount) *
                                                                    lightPdf(lights[payload.light],
                                                                             uniforms.lightSampler, previousPoint,
                                                                             normalize(direction)))

@@ -53,6 +53,10 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
                    "(uniform over the directions it covers: cones for spheres, spherical rectangles for "
                    "rectangular quads, area where no solid-angle sampler applies). The mixture keeps book 3's.")
         ->capture_default_str();
+    app.add_option("--light-selection", o.lightSelection,
+                   "Which light nee and nee-mis sample at a vertex: uniform (each of the N emitters 1/N) or power "
+                   "(in proportion to area x emitted luminance, by an alias table)")
+        ->capture_default_str();
     app.add_option("--pdf", o.pdf, "The books' name for two estimators: on = --estimator mixture, off = bsdf");
     app.add_option("--russian-roulette", o.russianRoulette,
                    "on: from the third segment, a path whose throughput fell below 1 ends with probability "
@@ -105,6 +109,10 @@ RenderRequest resolveRequest(const CommonOptions& o, const Scene& scene)
     if (!lightSampler)
         throw UsageError(fmt::format("--light-sampler must be area or solid-angle (got '{}')", o.lightSampler));
     s.lightSampler = *lightSampler;
+    const auto lightSelection = parseLightSelection(o.lightSelection);
+    if (!lightSelection)
+        throw UsageError(fmt::format("--light-selection must be uniform or power (got '{}')", o.lightSelection));
+    s.lightSelection = *lightSelection;
     if (o.unidirectionalLight)
         s.unidirectionalLight = onOffFlag("--unidirectional-light", *o.unidirectionalLight);
     s.seed = o.seed;

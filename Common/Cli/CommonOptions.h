@@ -27,6 +27,7 @@ struct CommonOptions
     std::optional<std::string> pdf;
     std::string russianRoulette = "on";
     std::string lightSampler = "solid-angle";
+    std::string lightSelection = "power";
     std::optional<std::string> unidirectionalLight;
     std::uint32_t seed = 0;
     std::string output;

@@ -120,4 +120,22 @@ std::optional<LightSampler> parseLightSampler(const std::string& text)
             return s;
     return std::nullopt;
 }
+
+const char* toString(LightSelection selection)
+{
+    switch (selection)
+    {
+    case LightSelection::Uniform: return "uniform";
+    case LightSelection::Power: return "power";
+    }
+    return "?";
+}
+
+std::optional<LightSelection> parseLightSelection(const std::string& text)
+{
+    for (LightSelection s : {LightSelection::Uniform, LightSelection::Power})
+        if (text == toString(s))
+            return s;
+    return std::nullopt;
+}
 } // namespace rt

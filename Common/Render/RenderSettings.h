@@ -11,6 +11,7 @@ namespace rt
 {
 using shader::Estimator;
 using shader::LightSampler;
+using shader::LightSelection;
 using shader::PixelSampling;
 
 enum class EngineKind
@@ -29,6 +30,7 @@ struct RenderSettings
     PixelSampling sampling = PixelSampling::Random;
     Estimator estimator = Estimator::NeeMis;
     LightSampler lightSampler = LightSampler::SolidAngle; // how NEE samples a light
+    LightSelection lightSelection = LightSelection::Power; // how NEE picks the light it samples
     bool russianRoulette = true; // paths end by Russian roulette from their third segment (Shared/RussianRoulette.h)
     bool unidirectionalLight = true; // emitters emit from their front side only
     std::uint32_t seed = 0;
@@ -49,8 +51,10 @@ const char* toString(EngineKind engine);
 const char* toString(PixelSampling sampling);
 const char* toString(Estimator estimator);
 const char* toString(LightSampler sampler);
+const char* toString(LightSelection selection);
 std::optional<EngineKind> parseEngine(const std::string& text);
 std::optional<PixelSampling> parsePixelSampling(const std::string& text);
 std::optional<Estimator> parseEstimator(const std::string& text);
 std::optional<LightSampler> parseLightSampler(const std::string& text);
+std::optional<LightSelection> parseLightSelection(const std::string& text);
 } // namespace rt

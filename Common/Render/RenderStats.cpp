@@ -19,6 +19,7 @@ nlohmann::json RenderStats::toJson() const
                      {"sampling", toString(settings.sampling)},
                      {"estimator", toString(settings.estimator)},
                      {"light_sampler", toString(settings.lightSampler)},
+                     {"light_selection", toString(settings.lightSelection)},
                      {"russian_roulette", settings.russianRoulette},
                      {"unidirectional_light", settings.unidirectionalLight},
                      {"seed", settings.seed}};

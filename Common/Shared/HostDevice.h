@@ -84,6 +84,12 @@ RT_ENUM_VALUE(LightSampler, Area, 0)       // uniform over the light's area (a s
 RT_ENUM_VALUE(LightSampler, SolidAngle, 1) // uniform over the solid angle: sphere cones, spherical rectangles
 RT_ENUM_END(LightSampler)
 
+// How NEE picks the light it samples (--light-selection).
+RT_ENUM_BEGIN(LightSelection)
+RT_ENUM_VALUE(LightSelection, Uniform, 0) // every emitter 1 / N
+RT_ENUM_VALUE(LightSelection, Power, 1)   // in proportion to emitted power (an alias table, LightSelection.h)
+RT_ENUM_END(LightSelection)
+
 RT_ENUM_BEGIN(PixelSampling)
 RT_ENUM_VALUE(PixelSampling, Random, 0)     // uniform jitter in the pixel, every sample independent
 RT_ENUM_VALUE(PixelSampling, Stratified, 1) // floor(sqrt(spp))^2 jittered strata; true spp is that square
@@ -114,6 +120,15 @@ struct MaterialData
     float pad0;
     float pad1;
     float pad2;
+};
+
+/// One slot of a light's alias table (Walker 1977; Vose 1991): slot i keeps light i with probability
+/// `threshold`, else gives `alias`; `pmf` is light i's own probability (for MIS).
+struct AliasEntry
+{
+    float threshold;
+    uint alias;
+    float pmf;
 };
 
 struct LightData
@@ -165,8 +180,9 @@ RT_CONST(uint, kBindingSpheres, 12u)          // SphereRecord[] (object space)
 RT_CONST(uint, kBindingMedia, 13u)            // MediumRecord[] (object space)
 RT_CONST(uint, kBindingCounters, 14u)         // SampleCounters
 RT_CONST(uint, kBindingPrimitiveLights, 15u)  // uint[]: per primitive of a record, its index into LightData[] or kNoIndex
-RT_CONST(uint, kBindingImages, 16u)           // sampler2D[]: the scene's images, 8-bit sRGB
-RT_CONST(uint, kBindingCount, 17u)
+RT_CONST(uint, kBindingLightAlias, 16u)       // AliasEntry[]: the emitters' power alias table
+RT_CONST(uint, kBindingImages, 17u)           // sampler2D[]: the scene's images, 8-bit sRGB
+RT_CONST(uint, kBindingCount, 18u)
 
 // Shader binding table: two miss records (traceRayEXT's missIndex; each with its payload location), and per
 // TLAS instance a hit-group record offset.
@@ -214,6 +230,10 @@ struct RenderUniforms
     uint emitterCount; // LightData[0, emitterCount) emit: what NEE samples
     uint russianRoulette; // 1: paths end by Russian roulette on their throughput (RussianRoulette.h)
     RT_TAG(LightSampler) lightSampler; // NEE's
+    RT_TAG(LightSelection) lightSelection; // NEE's
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
 
 /// Per vkCmdTraceRaysKHR: each launch traces sampleCount camera samples per pixel, one after the other.
@@ -316,7 +336,7 @@ struct PreviewPushConstants
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(RenderUniforms) == 160);
+static_assert(sizeof(RenderUniforms) == 176);
 static_assert(offsetof(RenderUniforms, background0) == 96);
 static_assert(offsetof(RenderUniforms, sampling) == 128);
 static_assert(sizeof(TracePushConstants) == 8);
@@ -338,6 +358,7 @@ static_assert(sizeof(PerlinData) == 256 * 12 + 3 * 256 * 4);
 static_assert(sizeof(TextureData) == 40);
 static_assert(sizeof(MaterialData) == 32);
 static_assert(sizeof(LightData) == 88);
+static_assert(sizeof(AliasEntry) == 12);
 static_assert(offsetof(LightData, p0) == 16);
 static_assert(offsetof(TextureData, color0) == 16);
 } // namespace rt::shader

@@ -1,9 +1,11 @@
 // Choosing which light NEE samples, written once for both engines (Shared/ShaderLang.h). The probability
 // mass of every light is available (lightSelectionPmf): the MIS weight of an emitter found by a BSDF ray
-// needs it.
+// needs it. The alias table is built on the host (Sampling/LightPower.h); GLSL reads it as the global
+// `lightAlias` (Bindings.glsl), C++ passes it (RT_ARRAY).
 #ifndef RT_SHARED_LIGHT_SELECTION_H
 #define RT_SHARED_LIGHT_SELECTION_H
 
+#include "Shared/HostDevice.h"
 #include "Shared/ShaderLang.h"
 
 RT_SHADER_NAMESPACE_BEGIN
@@ -18,6 +20,37 @@ RT_FN uint selectLightUniform(float u, uint count)
 RT_FN float uniformLightPmf(uint count)
 {
     return 1.0f / float(count);
+}
+
+/// One of `count` > 0 lights with the probabilities of the alias table (Vose 1991, "A linear algorithm for
+/// generating random numbers with a given distribution", IEEE TSE 17(9)): u picks a slot and, by what
+/// remains of it, the slot's light or its alias. One number, no search.
+RT_FN uint selectLightAlias(RT_ARRAY(AliasEntry, lightAlias) float u, uint count)
+{
+    const float scaled = u * float(count);
+    const uint slot = min(uint(scaled), count - 1u);
+    return scaled - float(slot) < lightAlias[slot].threshold ? slot : lightAlias[slot].alias;
+}
+
+/// The light NEE samples, by `selection`, and its probability in `pmf`.
+RT_FN uint selectLight(RT_ARRAY(AliasEntry, lightAlias) RT_TAG(LightSelection) selection, float u, uint count,
+                       RT_OUT(float) pmf)
+{
+    if (selection == RT_ENUM(LightSelection, Power))
+    {
+        const uint light = selectLightAlias(RT_PASS(lightAlias) u, count);
+        pmf = lightAlias[light].pmf;
+        return light;
+    }
+    pmf = uniformLightPmf(count);
+    return selectLightUniform(u, count);
+}
+
+/// Probability that selectLight picks `light` (for the MIS weight of an emitter a BSDF ray hits).
+RT_FN float lightSelectionPmf(RT_ARRAY(AliasEntry, lightAlias) RT_TAG(LightSelection) selection, uint light,
+                              uint count)
+{
+    return selection == RT_ENUM(LightSelection, Power) ? lightAlias[light].pmf : uniformLightPmf(count);
 }
 
 RT_SHADER_NAMESPACE_END

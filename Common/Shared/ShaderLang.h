@@ -49,6 +49,11 @@ inline float signNotZero(float x) { return std::copysign(1.0f, x); }
 // Structs go in by const reference on the CPU, as C++ code passes them (no copy left to the optimiser).
 #define RT_IN(Type) const Type&
 #define RT_ENUM(Type, Value) Type::Value
+// A read-only array that GLSL reads as a global buffer (Bindings.glsl) and C++ passes as a pointer: written
+// first in a parameter list, RT_ARRAY(Type, name) declares `const Type* name,` in C++ and nothing in GLSL, so
+// the body names the array the same way in both; C++ calls pass it, GLSL calls leave it out.
+#define RT_ARRAY(Type, name) const Type* name,
+#define RT_PASS(name) name, // passes an RT_ARRAY on to another such function
 #define RT_SHADER_NAMESPACE_BEGIN namespace rt::shader {
 #define RT_SHADER_NAMESPACE_END }
 #else
@@ -63,6 +68,8 @@ float signNotZero(float x)
 {
     return (floatBitsToUint(x) & 0x80000000u) != 0u ? -1.0 : 1.0;
 }
+#define RT_ARRAY(Type, name)
+#define RT_PASS(name)
 #define RT_SHADER_NAMESPACE_BEGIN
 #define RT_SHADER_NAMESPACE_END
 #endif

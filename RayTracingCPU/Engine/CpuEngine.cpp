@@ -60,8 +60,8 @@ void CpuEngine::beginFrame(const RenderSettings& settings)
     const int height = settings.height();
     m_frame.emplace(Frame{.settings = settings,
                           .camera = Camera(m_scene->source().camera, width, height),
-                          .options = {settings.depth, settings.estimator, settings.lightSampler, settings.russianRoulette,
-                                    settings.unidirectionalLight},
+                          .options = {settings.depth, settings.estimator, settings.lightSampler, settings.lightSelection,
+                                    settings.russianRoulette, settings.unidirectionalLight},
                           .sum = Image(width, height),
                           .before = Image(width, height),
                           .rows = std::vector<RowTally>(height),

@@ -37,6 +37,7 @@ struct PathOptions
     int depth = 50; // ray segments traced at most
     Estimator estimator = Estimator::NeeMis;
     LightSampler lightSampler = LightSampler::SolidAngle; // NEE's
+    LightSelection lightSelection = LightSelection::Power; // NEE's
     bool russianRoulette = true;
     bool unidirectionalLight = true;
 };
@@ -61,7 +62,8 @@ inline vec3 sampledEmission(const Scene& scene, const LightData& light, const Li
     return evalTexture(scene, scene.materials[light.material].emissionTexture, ls.uv, ls.point);
 }
 
-/// Next-event estimation at a diffuse or isotropic vertex: one emitter selected uniformly, one point on it,
+/// Next-event estimation at a diffuse or isotropic vertex: one emitter selected (uniformly or by power), one
+/// point on it,
 /// a shadow ray. `origin` is where the vertex's rays leave from (the hit point offset to the side of the
 /// shading normal `ns`; the point itself in a medium): lights are sampled from there and the BSDF ray leaves
 /// from there too, so both strategies see one geometry and their MIS weights sum to 1 for every direction
@@ -74,7 +76,9 @@ inline vec3 estimateDirect(const CpuScene& cs, const PathOptions& options, const
 {
     const Scene& scene = cs.source();
     const std::uint32_t emitters = scene.emitterCount();
-    const std::uint32_t picked = shader::selectLightUniform(rng.nextFloat(), emitters);
+    float pmf;
+    const std::uint32_t picked =
+        shader::selectLight(cs.lightAlias(), options.lightSelection, rng.nextFloat(), emitters, pmf);
     const vec2 u(rng.nextFloat(), rng.nextFloat());
     const LightData& light = scene.lights[picked];
     LightSample ls;
@@ -86,7 +90,7 @@ inline vec3 estimateDirect(const CpuScene& cs, const PathOptions& options, const
     const vec3 le = sampledEmission(scene, light, ls, options.unidirectionalLight);
     if (maxComponent(le) <= 0.0f)
         return vec3(0.0f);
-    const float lightPdfTotal = shader::uniformLightPmf(emitters) * ls.pdf;
+    const float lightPdfTotal = pmf * ls.pdf;
     const float weight =
         options.estimator == Estimator::NeeMis ? shader::powerHeuristic(lightPdfTotal, bsdfPdf) : 1.0f;
     ++segments;
@@ -133,7 +137,9 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
             float weight = 1.0f;
             if (previousBsdfPdf > 0.0f && si.light != kNoIndex)
                 weight = mis ? shader::powerHeuristic(previousBsdfPdf,
-                                                      shader::uniformLightPmf(scene.emitterCount()) *
+                                                      shader::lightSelectionPmf(cs.lightAlias(),
+                                                                                options.lightSelection, si.light,
+                                                                                scene.emitterCount()) *
                                                           lightPdf(scene.lights[si.light], options.lightSampler,
                                                                    previousPoint, ray.direction))
                              : 0.0f;

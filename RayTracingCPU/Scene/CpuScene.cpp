@@ -5,6 +5,7 @@
 
 #include "Math/PlaneDuals.h"
 #include "Math/RayOffset.h"
+#include "Sampling/LightPower.h"
 #include "Scene/LightLookup.h"
 
 namespace rt::cpu
@@ -52,7 +53,7 @@ vec2 sphereUv(const vec3& q)
 }
 } // namespace
 
-CpuScene::CpuScene(const Scene& scene) : m_scene(&scene)
+CpuScene::CpuScene(const Scene& scene) : m_scene(&scene), m_lightAlias(lightAliasTable(scene))
 {
     const auto isImage = [&](std::uint32_t t) { return t != kNoIndex && scene.textures[t].type == TextureType::Image; };
     for (const MaterialData& m : scene.materials)

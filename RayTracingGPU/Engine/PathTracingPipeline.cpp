@@ -41,7 +41,7 @@ std::vector<vk::DescriptorBinding> bindingsOf(std::uint32_t maxImages)
     for (std::uint32_t binding : {kBindingMaterials, kBindingTextures, kBindingLights, kBindingPerlin,
                                   kBindingInstances, kBindingPositions, kBindingUvs, kBindingTriangles,
                                   kBindingTriangleMaterials, kBindingSpheres, kBindingMedia, kBindingCounters,
-                                  kBindingPrimitiveLights})
+                                  kBindingPrimitiveLights, kBindingLightAlias})
         add(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     add(kBindingImages, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, maxImages,
         VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT | VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT);
@@ -123,6 +123,7 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
         {kBindingPerlin, &buffers.perlin},
         {kBindingInstances, &buffers.records},
         {kBindingPrimitiveLights, &buffers.primitiveLights},
+        {kBindingLightAlias, &buffers.lightAlias},
         {kBindingPositions, &buffers.positions},
         {kBindingUvs, &buffers.uvs},
         {kBindingTriangles, &buffers.triangles},

@@ -33,6 +33,7 @@ shader::RenderUniforms makeUniforms(const Scene& scene, const CameraDesc& camera
     u.emitterCount = scene.emitterCount();
     u.russianRoulette = settings.russianRoulette ? 1u : 0u;
     u.lightSampler = settings.lightSampler;
+    u.lightSelection = settings.lightSelection;
     return u;
 }
 } // namespace rt::gpu

@@ -44,6 +44,7 @@ expect_error "bad pdf value" "--pdf" --pdf maybe
 expect_error "bad estimator" "--estimator" --estimator path
 expect_error "contradicting estimators" "contradicts" --estimator nee --pdf on
 expect_error "bad light sampler" "--light-sampler" --light-sampler cosine
+expect_error "bad light selection" "--light-selection" --light-selection bvh2
 expect_error "bad roulette value" "--russian-roulette" --russian-roulette sometimes
 mkdir -p "$work/empty-assets"
 RT_ASSET_DIR="$work/empty-assets" expect_error "missing texture" "earth.jpg" --scene rtnw-earth

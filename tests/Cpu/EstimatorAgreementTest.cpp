@@ -20,6 +20,7 @@ struct Variant
     Estimator estimator;
     bool russianRoulette;
     LightSampler lightSampler = LightSampler::SolidAngle;
+    LightSelection lightSelection = LightSelection::Power;
     // More samples for the noisier estimators: their rare bright paths (a BSDF ray that finds a small light)
     // are what 4 x 32 samples miss, and the Z-test's variance, estimated from the same samples, misses them
     // too (white-spheres' dark corner: BSDF 0 +- 0 against NEE's 0.0015, |Z| 16).
@@ -46,16 +47,19 @@ TEST_P(CpuEstimatorAgreement, EveryEstimatorMatchesNeeMis)
         settings.russianRoulette = v.russianRoulette;
         settings.spp *= v.sppFactor;
         settings.lightSampler = v.lightSampler;
+        settings.lightSelection = v.lightSelection;
         return estimateBlocks(engine, scene, settings);
     };
     const BlockEstimate reference = blocksOf({Estimator::NeeMis, true});
-    for (const Variant v : {Variant{Estimator::Nee, true}, Variant{Estimator::Mixture, true, LightSampler::SolidAngle, 4},
-                            Variant{Estimator::BsdfOnly, true, LightSampler::SolidAngle, 16}, Variant{Estimator::NeeMis, false},
-                            Variant{Estimator::NeeMis, true, LightSampler::Area}, Variant{Estimator::Nee, true, LightSampler::Area}})
+    for (const Variant v : {Variant{Estimator::Nee, true}, Variant{Estimator::Mixture, true, LightSampler::SolidAngle, LightSelection::Power, 4},
+                            Variant{Estimator::BsdfOnly, true, LightSampler::SolidAngle, LightSelection::Power, 16}, Variant{Estimator::NeeMis, false},
+                            Variant{Estimator::NeeMis, true, LightSampler::Area}, Variant{Estimator::Nee, true, LightSampler::Area},
+                            Variant{Estimator::NeeMis, true, LightSampler::SolidAngle, LightSelection::Uniform}})
     {
         const auto failures = disagreeingBlocks(reference, blocksOf(v), kMaxZ);
         for (const std::string& f : failures)
-            ADD_FAILURE() << "A = nee-mis, B = " << toString(v.estimator) << " (" << toString(v.lightSampler)
+            ADD_FAILURE() << "A = nee-mis, B = " << toString(v.estimator) << " (" << toString(v.lightSampler) << ", "
+                          << toString(v.lightSelection)
                           << (v.russianRoulette ? "" : ", without roulette") << "): " << f;
     }
 }

@@ -26,11 +26,13 @@ struct AgreementCase
     Estimator estimator;
     bool russianRoulette = true;
     LightSampler lightSampler = LightSampler::SolidAngle;
+    LightSelection lightSelection = LightSelection::Power;
 };
 
 void PrintTo(const AgreementCase& c, std::ostream* os)
 {
-    *os << c.scene << " (" << toString(c.estimator) << ", " << toString(c.lightSampler)
+    *os << c.scene << " (" << toString(c.estimator) << ", " << toString(c.lightSampler) << ", "
+        << toString(c.lightSelection)
         << (c.russianRoulette ? "" : ", no roulette") << ")";
 }
 
@@ -42,6 +44,7 @@ void expectAgreement(const AgreementCase& c, RenderSettings s, double maxZ)
     s.estimator = c.estimator;
     s.russianRoulette = c.russianRoulette;
     s.lightSampler = c.lightSampler;
+    s.lightSelection = c.lightSelection;
     s.unidirectionalLight = scene.defaults.unidirectionalLight;
 
     cpu::CpuEngine cpuEngine(EngineKind::Multi);
@@ -101,6 +104,8 @@ std::vector<AgreementCase> cases()
         out.push_back({id, Estimator::NeeMis, false});
     for (const char* id : {"rtnw-simple-light", "cornell-box-lights", "rtrol-cornell-box"})
         out.push_back({id, Estimator::NeeMis, true, LightSampler::Area});
+    for (const char* id : {"cornell-box-lights", "rtnw-final"})
+        out.push_back({id, Estimator::NeeMis, true, LightSampler::SolidAngle, LightSelection::Uniform});
     return out;
 }
 
@@ -110,6 +115,7 @@ std::string caseName(const ::testing::TestParamInfo<AgreementCase>& param)
     std::replace(estimator.begin(), estimator.end(), '-', '_');
     return ::rt::test::testNameOf(param.param.scene) + "_" + estimator +
            (param.param.lightSampler == LightSampler::Area ? "_area" : "") +
+           (param.param.lightSelection == LightSelection::Uniform ? "_uniform" : "") +
            (param.param.russianRoulette ? "" : "_no_roulette");
 }
 

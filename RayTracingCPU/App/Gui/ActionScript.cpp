@@ -114,6 +114,11 @@ bool ActionScript::run(const Action& a, Session& session, GlWindow& window)
         session.setLightSampler(*parseLightSampler(v));
         return true;
     }
+    if (a.name == "light-selection")
+    {
+        session.setLightSelection(*parseLightSelection(v));
+        return true;
+    }
     if (a.name == "russian-roulette")
     {
         session.setRussianRoulette(a.on());

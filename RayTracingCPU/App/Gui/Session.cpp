@@ -27,6 +27,7 @@ nlohmann::json toJson(const RenderRequest& request)
             {"sampling", toString(r.sampling)},
             {"estimator", toString(r.estimator)},
             {"light_sampler", toString(r.lightSampler)},
+            {"light_selection", toString(r.lightSelection)},
             {"russian_roulette", r.russianRoulette},
             {"unidirectional_light", r.unidirectionalLight},
             {"seed", r.seed}};
@@ -128,6 +129,7 @@ void Session::setSampling(PixelSampling sampling) { m_image.settings.sampling = 
 void Session::setEstimator(Estimator estimator) { m_image.settings.estimator = estimator; }
 void Session::setRussianRoulette(bool on) { m_image.settings.russianRoulette = on; }
 void Session::setLightSampler(LightSampler sampler) { m_image.settings.lightSampler = sampler; }
+void Session::setLightSelection(LightSelection selection) { m_image.settings.lightSelection = selection; }
 void Session::setUnidirectionalLight(bool on) { m_image.settings.unidirectionalLight = on; }
 
 bool Session::applySceneDefaults()

@@ -36,6 +36,7 @@ public:
     void setEstimator(Estimator estimator);
     void setRussianRoulette(bool on);
     void setLightSampler(LightSampler sampler);
+    void setLightSelection(LightSelection selection);
     void setUnidirectionalLight(bool on);
     /// The selected scene's own spp, depth, width, aspect and light mode; false until the scene was built once.
     bool applySceneDefaults();

@@ -169,6 +169,14 @@ void SettingsPanel::drawRenderingParameters(Session& session)
     }
     tooltip("how nee and nee-mis pick a point on a light: area: uniform over its surface; solid-angle: uniform "
             "over the directions it covers (sphere cones, spherical rectangles)");
+    if (ImGui::BeginCombo("Light selection", toString(s.lightSelection)))
+    {
+        for (LightSelection l : {LightSelection::Uniform, LightSelection::Power})
+            if (ImGui::Selectable(toString(l), l == s.lightSelection))
+                session.setLightSelection(l);
+        ImGui::EndCombo();
+    }
+    tooltip("which light nee and nee-mis sample: uniform (each 1/N) or in proportion to its power");
     bool roulette = s.russianRoulette;
     if (ImGui::Checkbox("Russian roulette", &roulette))
         session.setRussianRoulette(roulette);

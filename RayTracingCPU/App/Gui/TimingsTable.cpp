@@ -15,6 +15,7 @@ void TimingsTable::record(const RenderStats& stats)
                         .sampling = s.sampling,
                         .estimator = s.estimator,
                         .lightSampler = s.lightSampler,
+                        .lightSelection = s.lightSelection,
                         .russianRoulette = s.russianRoulette,
                         .unidirectionalLight = s.unidirectionalLight};
     auto row = std::find_if(m_rows.begin(), m_rows.end(), [&](const TimingRow& r) { return r.key == key; });
@@ -47,6 +48,7 @@ nlohmann::json TimingsTable::toJson() const
                                {"sampling", toString(row.key.sampling)},
                                {"estimator", toString(row.key.estimator)},
                                {"light_sampler", toString(row.key.lightSampler)},
+                               {"light_selection", toString(row.key.lightSelection)},
                                {"russian_roulette", row.key.russianRoulette},
                                {"unidirectional_light", row.key.unidirectionalLight},
                                {"engine", toString(EngineKind(e))},

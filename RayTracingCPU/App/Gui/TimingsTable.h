@@ -28,6 +28,7 @@ struct TimingKey
     PixelSampling sampling = PixelSampling::Random;
     Estimator estimator = Estimator::NeeMis;
     LightSampler lightSampler = LightSampler::SolidAngle;
+    LightSelection lightSelection = LightSelection::Power;
     bool russianRoulette = true;
     bool unidirectionalLight = true;
 

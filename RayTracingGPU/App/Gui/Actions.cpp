@@ -95,6 +95,8 @@ bool applyAction(const Action& a, Controls& c)
         c.setEstimator(a.on() ? Estimator::Mixture : Estimator::BsdfOnly);
     else if (n == "light-sampler")
         c.setLightSampler(*parseLightSampler(a.value));
+    else if (n == "light-selection")
+        c.setLightSelection(*parseLightSelection(a.value));
     else if (n == "russian-roulette")
         c.setRussianRoulette(a.on());
     else if (n == "unidirectional-light")

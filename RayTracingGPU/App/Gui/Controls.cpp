@@ -28,6 +28,10 @@ void Controls::setDepth(int depth) { m_state->image.request.settings.depth = std
 void Controls::setEstimator(Estimator estimator) { m_state->image.request.settings.estimator = estimator; }
 void Controls::setRussianRoulette(bool on) { m_state->image.request.settings.russianRoulette = on; }
 void Controls::setLightSampler(LightSampler sampler) { m_state->image.request.settings.lightSampler = sampler; }
+void Controls::setLightSelection(LightSelection selection)
+{
+    m_state->image.request.settings.lightSelection = selection;
+}
 void Controls::setUnidirectionalLight(bool on) { m_state->image.request.settings.unidirectionalLight = on; }
 void Controls::setFov(float degrees) { m_state->image.camera = withFov(m_state->image.camera, degrees); }
 void Controls::setAperture(float diameter) { m_state->image.camera = withAperture(m_state->image.camera, diameter); }

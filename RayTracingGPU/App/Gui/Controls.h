@@ -31,6 +31,7 @@ public:
     void setEstimator(Estimator estimator);
     void setRussianRoulette(bool on);
     void setLightSampler(LightSampler sampler);
+    void setLightSelection(LightSelection selection);
     void setUnidirectionalLight(bool on);
     float fov() const { return m_state->image.camera.vfovDegrees; }
     void setFov(float degrees);

@@ -66,6 +66,14 @@ void rayTracingSection(Controls& controls, const WindowState& state)
                 controls.setLightSampler(l);
         ImGui::EndCombo();
     }
+    const LightSelection lightSelection = image.request.settings.lightSelection;
+    if (ImGui::BeginCombo("Light selection", toString(lightSelection)))
+    {
+        for (LightSelection l : {LightSelection::Uniform, LightSelection::Power})
+            if (ImGui::Selectable(toString(l), l == lightSelection))
+                controls.setLightSelection(l);
+        ImGui::EndCombo();
+    }
     if (bool on = image.request.settings.russianRoulette; ImGui::Checkbox("Russian roulette", &on))
         controls.setRussianRoulette(on);
     if (bool on = image.request.settings.unidirectionalLight; ImGui::Checkbox("Unidirectional light", &on))

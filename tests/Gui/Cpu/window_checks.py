@@ -116,6 +116,7 @@ def headless_args(state_path):
     args = ["--scene", s["scene"], "--spp", s["spp"], "--depth", s["depth"], "--width", s["width"],
             "--aspect", repr(s["aspect"]), "--sampling", s["sampling"], "--estimator", s["estimator"],
             "--russian-roulette", "on" if s["russian_roulette"] else "off", "--light-sampler", s["light_sampler"],
+            "--light-selection", s["light_selection"],
             "--unidirectional-light", "on" if s["unidirectional_light"] else "off", "--seed", s["seed"]]
     if s["count"] >= 0:
         args += ["--count", s["count"]]

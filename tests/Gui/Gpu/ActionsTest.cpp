@@ -67,9 +67,10 @@ TEST(WindowActions, EachActionChangesItsSetting)
     EXPECT_EQ(state.image.request.settings.estimator, Estimator::BsdfOnly);
     EXPECT_FALSE(state.image.request.settings.russianRoulette);
     EXPECT_FALSE(state.image.request.settings.unidirectionalLight);
-    apply(state, "estimator=nee;light-sampler=area");
+    apply(state, "estimator=nee;light-sampler=area;light-selection=uniform");
     EXPECT_EQ(state.image.request.settings.estimator, Estimator::Nee);
     EXPECT_EQ(state.image.request.settings.lightSampler, LightSampler::Area);
+    EXPECT_EQ(state.image.request.settings.lightSelection, LightSelection::Uniform);
     EXPECT_FALSE(state.image.accumulate);
     EXPECT_FALSE(state.image.rayTracing);
     EXPECT_TRUE(state.image.heatmap);
@@ -131,7 +132,7 @@ TEST(WindowSettings, EveryImageSettingRestartsAccumulationDisplaySettingsDoNot)
         apply(state, script);
         return !(state.image == base.image);
     };
-    for (const char* imageChange : {"depth=7", "pdf=off", "estimator=nee", "russian-roulette=off", "light-sampler=area",
+    for (const char* imageChange : {"depth=7", "pdf=off", "estimator=nee", "russian-roulette=off", "light-sampler=area", "light-selection=uniform",
                                     "unidirectional-light=off", "accumulate=off",
                                     "raytracing=off", "heatmap=on", "fov=30", "aperture=1", "focus=3",
                                     "camera=forward:1", "camera=yaw:1"})
