@@ -141,6 +141,9 @@ int runComparison(const Scene& scene, const RenderRequest& baseRequest, const Co
     json["depth"] = base.depth;
     json["estimator"] = toString(base.estimator);
     json["sampling"] = toString(base.sampling);
+    json["light_sampler"] = toString(base.lightSampler);
+    json["light_selection"] = toString(base.lightSelection);
+    json["russian_roulette"] = base.russianRoulette;
     if (options.referencePath.empty())
         json["reference_spp"] = options.referenceSpp;
     else
@@ -179,8 +182,10 @@ int runComparison(const Scene& scene, const RenderRequest& baseRequest, const Co
 
     const std::string against = options.referencePath.empty() ? fmt::format("{} spp", options.referenceSpp)
                                                               : options.referencePath;
-    std::printf("\n%s: %dx%d, depth %d, %s estimator, %s sampling; relMSE against %s (epsilon %g)\n",
+    std::printf("\n%s: %dx%d, depth %d, %s estimator (%s light sampler, %s selection, roulette %s), %s "
+                "sampling; relMSE against %s (epsilon %g)\n",
                 scene.id.c_str(), base.width, base.height(), base.depth, toString(base.estimator),
+                toString(base.lightSampler), toString(base.lightSelection), base.russianRoulette ? "on" : "off",
                 toString(base.sampling), against.c_str(), kRelMseEpsilon);
     std::printf("%s\n%s\n", header.c_str(), std::string(header.size(), '-').c_str());
     for (std::size_t rowIndex = 0; rowIndex < options.spps.size(); ++rowIndex)
