@@ -31,7 +31,8 @@ vec3 estimateDirect(vec3 origin, vec3 ns, bool phase, vec3 albedo, bool mis, ino
     uint picked = selectLight(uniforms.lightSelection, nextFloat(rng), uniforms.emitterCount, pmf);
     vec2 u = nextFloat2(rng);
     LightSample ls;
-    if (!sampleLight(lights[picked], uniforms.lightSampler, origin, u, ls))
+    vec3 receiver = phase ? vec3(0.0) : ns; // no horizon in a medium
+    if (!sampleLight(lights[picked], uniforms.lightSampler, origin, receiver, u, ls))
         return vec3(0.0);
     float bsdfPdf = diffusePdf(phase, ns, ls.wi); // f cos = albedo bsdfPdf
     if (!(bsdfPdf > 0.0) || (uniforms.unidirectionalLight != 0u && dot(ls.wi, ls.normal) >= 0.0))

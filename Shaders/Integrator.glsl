@@ -30,6 +30,7 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
     // The origin of the current ray and its direction's BSDF pdf, for the MIS weight of the emission it finds
     // (pdf 0: count it in full).
     vec3 previousPoint = vec3(0.0);
+    vec3 previousNormal = vec3(0.0); // the receiver normal there, for the projected samplers (0 in a medium)
     float previousBsdfPdf = 0.0;
     for (uint segment = 0u; segment < uniforms.depth; ++segment)
     {
@@ -61,7 +62,7 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
                                                                                  uniforms.emitterCount) *
                                                                    lightPdf(lights[payload.light],
                                                                             uniforms.lightSampler, previousPoint,
-                                                                            normalize(direction)))
+                                                                            previousNormal, normalize(direction)))
                              : 0.0;
             radiance += beta * evaluateTexture(m.emissionTexture, hit.uv, hit.position) * weight;
         }
@@ -80,6 +81,7 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
             direction = sampleDiffuse(phase, hit.shadingNormal, nextFloat2(rng));
             beta *= albedo;
             previousBsdfPdf = diffusePdf(phase, hit.shadingNormal, direction);
+            previousNormal = phase ? vec3(0.0) : hit.shadingNormal;
         }
         else
         {

@@ -134,7 +134,7 @@ std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long lo
         {"depth", ActionValue::Integer, "N", "ray segments per path at most", 1},
         {"estimator", ActionValue::Text, "bsdf|mixture|nee|nee-mis", "how paths gather light (--estimator)", 0, 1e30,
          [](const std::string& v) { return parseEstimator(v).has_value(); }},
-        {"light-sampler", ActionValue::Text, "area|solid-angle", "how NEE picks a point on a light", 0, 1e30,
+        {"light-sampler", ActionValue::Text, "area|solid-angle|projected", "how NEE picks a point on a light", 0, 1e30,
          [](const std::string& v) { return parseLightSampler(v).has_value(); }},
         {"light-selection", ActionValue::Text, "uniform|power", "how NEE picks the light it samples", 0, 1e30,
          [](const std::string& v) { return parseLightSelection(v).has_value(); }},

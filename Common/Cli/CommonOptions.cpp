@@ -49,9 +49,11 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
                    "diffuse vertex, BSDF rays ignore the lights; nee-mis: NEE and BSDF rays both count, weighted "
                    "by the power heuristic");
     app.add_option("--light-sampler", o.lightSampler,
-                   "How nee and nee-mis pick a point on a light: area (uniform over its surface) or solid-angle "
+                   "How nee and nee-mis pick a point on a light: area (uniform over its surface), solid-angle "
                    "(uniform over the directions it covers: cones for spheres, spherical rectangles for "
-                   "rectangular quads, area where no solid-angle sampler applies). The mixture keeps book 3's.")
+                   "rectangular quads, area where no solid-angle sampler applies) or projected (by the cosine "
+                   "over a sphere's cap when it lies above the receiver's horizon, else as solid-angle). The "
+                   "mixture keeps book 3's.")
         ->capture_default_str();
     app.add_option("--light-selection", o.lightSelection,
                    "Which light nee and nee-mis sample at a vertex: uniform (each of the N emitters 1/N) or power "
@@ -107,7 +109,8 @@ RenderRequest resolveRequest(const CommonOptions& o, const Scene& scene)
     s.russianRoulette = onOffFlag("--russian-roulette", o.russianRoulette);
     const auto lightSampler = parseLightSampler(o.lightSampler);
     if (!lightSampler)
-        throw UsageError(fmt::format("--light-sampler must be area or solid-angle (got '{}')", o.lightSampler));
+        throw UsageError(
+            fmt::format("--light-sampler must be area, solid-angle or projected (got '{}')", o.lightSampler));
     s.lightSampler = *lightSampler;
     const auto lightSelection = parseLightSelection(o.lightSelection);
     if (!lightSelection)

@@ -26,7 +26,7 @@ struct CommonOptions
     std::optional<std::string> estimator;
     std::optional<std::string> pdf;
     std::string russianRoulette = "on";
-    std::string lightSampler = "solid-angle";
+    std::string lightSampler = "projected";
     std::string lightSelection = "power";
     std::optional<std::string> unidirectionalLight;
     std::uint32_t seed = 0;

@@ -109,13 +109,14 @@ const char* toString(LightSampler sampler)
     {
     case LightSampler::Area: return "area";
     case LightSampler::SolidAngle: return "solid-angle";
+    case LightSampler::Projected: return "projected";
     }
     return "?";
 }
 
 std::optional<LightSampler> parseLightSampler(const std::string& text)
 {
-    for (LightSampler s : {LightSampler::Area, LightSampler::SolidAngle})
+    for (LightSampler s : {LightSampler::Area, LightSampler::SolidAngle, LightSampler::Projected})
         if (text == toString(s))
             return s;
     return std::nullopt;

@@ -29,7 +29,7 @@ struct RenderSettings
     float aspect = 1.0f; // width / height
     PixelSampling sampling = PixelSampling::Random;
     Estimator estimator = Estimator::NeeMis;
-    LightSampler lightSampler = LightSampler::SolidAngle; // how NEE samples a light
+    LightSampler lightSampler = LightSampler::Projected; // how NEE samples a light
     LightSelection lightSelection = LightSelection::Power; // how NEE picks the light it samples
     bool russianRoulette = true; // paths end by Russian roulette from their third segment (Shared/RussianRoulette.h)
     bool unidirectionalLight = true; // emitters emit from their front side only

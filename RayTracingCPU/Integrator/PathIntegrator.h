@@ -36,7 +36,7 @@ struct PathOptions
 {
     int depth = 50; // ray segments traced at most
     Estimator estimator = Estimator::NeeMis;
-    LightSampler lightSampler = LightSampler::SolidAngle; // NEE's
+    LightSampler lightSampler = LightSampler::Projected; // NEE's
     LightSelection lightSelection = LightSelection::Power; // NEE's
     bool russianRoulette = true;
     bool unidirectionalLight = true;
@@ -82,7 +82,8 @@ inline vec3 estimateDirect(const CpuScene& cs, const PathOptions& options, const
     const vec2 u(rng.nextFloat(), rng.nextFloat());
     const LightData& light = scene.lights[picked];
     LightSample ls;
-    if (!sampleLight(light, options.lightSampler, origin, u, ls))
+    const vec3 receiver = phase ? vec3(0.0f) : ns; // no horizon in a medium
+    if (!sampleLight(light, options.lightSampler, origin, receiver, u, ls))
         return vec3(0.0f);
     const float bsdfPdf = shader::diffusePdf(phase, ns, ls.wi); // f cos = albedo bsdfPdf
     if (!(bsdfPdf > 0.0f))
@@ -115,6 +116,7 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
     // BSDF strategy's solid-angle pdf of its direction; 0 when NEE did not run there (the camera, a specular
     // vertex), so the emission counts in full.
     vec3 previousPoint(0.0f);
+    vec3 previousNormal(0.0f); // its receiver normal for the projected samplers (0 in a medium)
     float previousBsdfPdf = 0.0f;
     const TraceRay::Needs needs = cs.rayNeeds();
     for (int segment = 0; segment < options.depth; ++segment)
@@ -141,7 +143,7 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
                                                                                 options.lightSelection, si.light,
                                                                                 scene.emitterCount()) *
                                                           lightPdf(scene.lights[si.light], options.lightSampler,
-                                                                   previousPoint, ray.direction))
+                                                                   previousPoint, previousNormal, ray.direction))
                              : 0.0f;
             radiance += throughput * evalTexture(scene, mat.emissionTexture, si.uv, si.p) * weight;
         }
@@ -182,7 +184,10 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
                 wi = shader::sampleDiffuse(phase, ns, u);
                 throughput *= albedo;
                 if (nee)
+                {
                     previousBsdfPdf = shader::diffusePdf(phase, ns, wi);
+                    previousNormal = phase ? vec3(0.0f) : ns;
+                }
                 break;
             }
             const float choice = rng.nextFloat();

@@ -90,7 +90,7 @@ public:
                         dvec3 w = y - dvec3(m_p);
                         const double r2 = glm::dot(w, w);
                         w /= std::sqrt(r2);
-                        const double pdf = strategy ? lightPdf(m_light, *strategy, m_p, vec3(w))
+                        const double pdf = strategy ? lightPdf(m_light, *strategy, m_p, vec3(0.0f), vec3(w))
                                                     : lightPdf(m_light, m_p, vec3(w));
                         integral += pdf * std::fabs(glm::dot(normal, w)) / r2 * jacobian;
                     }

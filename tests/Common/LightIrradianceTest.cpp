@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "LightCases.h"
+#include "Render/RenderSettings.h"
 #include "StatisticsHelpers.h"
 
 namespace rt
@@ -33,18 +34,20 @@ test::MeanEstimate estimateIrradiance(const LightData& light, std::uint32_t seed
     return test::estimateMean(kSamples, [&](long) {
         LightSample s;
         const vec2 u = test::uniform2(rng);
-        if (!(strategy ? sampleLight(light, *strategy, vec3(0.0f), u, s) : sampleLight(light, vec3(0.0f), u, s)))
+        if (!(strategy ? sampleLight(light, *strategy, vec3(0.0f), vec3(kNormal), u, s)
+                       : sampleLight(light, vec3(0.0f), u, s)))
             return 0.0;
         return double(kRadiance) * std::max(0.0, glm::dot(kNormal, dvec3(s.wi))) / double(s.pdf);
     });
 }
 
-/// Book 3's samplers, then NEE's two: each must find the same irradiance.
-const std::optional<LightSampler> kStrategies[] = {std::nullopt, LightSampler::Area, LightSampler::SolidAngle};
+/// Book 3's samplers, then NEE's three: each must find the same irradiance.
+const std::optional<LightSampler> kStrategies[] = {std::nullopt, LightSampler::Area, LightSampler::SolidAngle,
+                                                   LightSampler::Projected};
 
 std::string nameOf(std::optional<LightSampler> strategy)
 {
-    return strategy ? (*strategy == LightSampler::Area ? "area" : "solid angle") : "book 3";
+    return strategy ? toString(*strategy) : "book 3";
 }
 
 /// Within 3 standard errors (the brief's criterion; each configuration is one fixed-seed draw), plus 1e-5

@@ -22,6 +22,7 @@ using test::kPiD;
 using test::LightCase;
 
 constexpr long kChiSquareSamples = 1'000'000;
+const vec3 kNoNormal(0.0f); // these samplers ignore the receiver's normal
 
 /// Solid angle of the triangle (a, b, c) seen from the origin: Van Oosterom & Strackee (1983),
 /// tan(Omega / 2) = |a . (b x c)| / (|a||b||c| + (a.b)|c| + (a.c)|b| + (b.c)|a|), in double.
@@ -81,7 +82,7 @@ TEST(SphericalRectangle, ChiSquareUniformOverTheSolidAngle)
         const test::LightSurfaceDomain domain(c.light, c.p, 32);
         const auto h = test::histogram(domain.cellCount(), kChiSquareSamples, seed++, [&](Rng& rng) {
             LightSample s;
-            return sampleLight(c.light, LightSampler::SolidAngle, c.p, test::uniform2(rng), s) ? domain.cell(s.wi)
+            return sampleLight(c.light, LightSampler::SolidAngle, c.p, kNoNormal, test::uniform2(rng), s) ? domain.cell(s.wi)
                                                                                                  : -1;
         });
         EXPECT_EQ(h.outside, 0) << "samples missing the light, or no sample";
@@ -104,9 +105,9 @@ TEST(SphericalRectangle, EverySamplePdfIsOneOverTheSolidAngle)
         for (int i = 0; i < 20'000; ++i)
         {
             LightSample s;
-            ASSERT_TRUE(sampleLight(c.light, LightSampler::SolidAngle, c.p, test::uniform2(rng), s));
+            ASSERT_TRUE(sampleLight(c.light, LightSampler::SolidAngle, c.p, kNoNormal, test::uniform2(rng), s));
             ASSERT_NEAR(1.0 / double(s.pdf), solidAngle, 2e-6 + 1e-5 * solidAngle);
-            ASSERT_EQ(lightPdf(c.light, LightSampler::SolidAngle, c.p, s.wi), s.pdf);
+            ASSERT_EQ(lightPdf(c.light, LightSampler::SolidAngle, c.p, kNoNormal, s.wi), s.pdf);
             // The point is on the rectangle, along wi, and uv are its edge coordinates.
             const dvec3 y(s.point);
             ASSERT_NEAR(glm::distance(dvec3(c.p) + double(s.distance) * dvec3(s.wi), y), 0.0, 1e-5 * (1.0 + s.distance));
@@ -131,8 +132,8 @@ TEST(SphericalRectangle, SmallOrSkewedQuadsFallBackToAreaSampling)
         {
             const vec2 u = test::uniform2(rng);
             LightSample a, b;
-            ASSERT_EQ(sampleLight(l, LightSampler::SolidAngle, vec3(0.0f), u, a),
-                      sampleLight(l, LightSampler::Area, vec3(0.0f), u, b));
+            ASSERT_EQ(sampleLight(l, LightSampler::SolidAngle, vec3(0.0f), kNoNormal, u, a),
+                      sampleLight(l, LightSampler::Area, vec3(0.0f), kNoNormal, u, b));
             EXPECT_EQ(a.pdf, b.pdf);
             EXPECT_EQ(a.point, b.point);
         }
@@ -158,7 +159,7 @@ TEST(SphereAreaSampling, ChiSquareUniformOverTheVisibleCap)
         long declined = 0;
         const auto h = test::histogram(domain.cellCount(), kChiSquareSamples, seed++, [&](Rng& rng) {
             LightSample s;
-            if (sampleLight(c.light, LightSampler::Area, c.p, test::uniform2(rng), s))
+            if (sampleLight(c.light, LightSampler::Area, c.p, kNoNormal, test::uniform2(rng), s))
                 return domain.cell(dvec3(s.normal));
             ++declined;
             return -2;
@@ -182,7 +183,7 @@ TEST(SphereAreaSampling, SamplePdfIsTheNearPointsAreaDensity)
         for (int i = 0; i < 20'000; ++i)
         {
             LightSample s;
-            if (!sampleLight(c.light, LightSampler::Area, c.p, test::uniform2(rng), s))
+            if (!sampleLight(c.light, LightSampler::Area, c.p, kNoNormal, test::uniform2(rng), s))
                 continue;
             ++samples;
             const dvec3 w(s.wi), y(s.point), n(s.normal), center(c.light.p0);
@@ -199,10 +200,115 @@ TEST(SphereAreaSampling, SamplePdfIsTheNearPointsAreaDensity)
             const double d = glm::distance(dvec3(c.p), center);
             const double tolerance = 1e-4 + 3e-7 * (d / r) / (cosLight * cosLight);
             if (tolerance < 1e-2)
-                ASSERT_NEAR(lightPdf(c.light, LightSampler::Area, c.p, s.wi), s.pdf, tolerance * s.pdf);
+                ASSERT_NEAR(lightPdf(c.light, LightSampler::Area, c.p, kNoNormal, s.wi), s.pdf, tolerance * s.pdf);
             ASSERT_NEAR(glm::distance(y, center), r, 1e-5 * (1.0 + glm::length(center)));
         }
         EXPECT_GT(samples, 500); // (1 - sin alpha) / 2 of 20,000: 4.5 % for the nearest
+    }
+}
+// ---- Spheres by projected solid angle (Ureña & Georgiev 2018) -------------------------------------------
+
+/// Spheres wholly above the horizon of the receiver normal +z at the origin: overhead, low (the cap's lower
+/// rim 2 degrees above the horizon), near (alpha = 65 degrees) and small.
+struct CapCase
+{
+    std::string name;
+    LightData light;
+};
+
+std::vector<CapCase> capCases()
+{
+    const auto sphere = [](double radius, double distance, double elevationDegrees, double azimuthDegrees) {
+        const double e = elevationDegrees * kPiD / 180.0, a = azimuthDegrees * kPiD / 180.0;
+        const dvec3 dir(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
+        return test::makeSphereLight(vec3(distance * dir), float(radius));
+    };
+    const double lowElevation = std::asin(0.3) * 180.0 / kPiD + 2.0;
+    return {
+        {"overhead", sphere(1.0, 3.0, 90.0, 0.0)},
+        {"tilted", sphere(1.0, 4.0, 50.0, 30.0)},
+        {"low", sphere(1.0, 1.0 / 0.3, lowElevation, 120.0)},
+        {"near", sphere(1.0, 1.0 / std::sin(65.0 * kPiD / 180.0), 80.0, 200.0)},
+        {"small", sphere(0.01, 10.0, 35.0, 70.0)},
+    };
+}
+
+const vec3 kUp(0.0f, 0.0f, 1.0f);
+
+/// F = pi sin^2(alpha) sin(beta): the projected solid angle of a cap wholly above the horizon (§4.1).
+double capProjectedSolidAngle(const LightData& l)
+{
+    const dvec3 c(l.p0);
+    const double d = glm::length(c), sinAlpha = double(l.radius) / d;
+    return kPiD * sinAlpha * sinAlpha * (c.z / d);
+}
+
+TEST(ProjectedCap, OneSampleGivesTheIrradianceExactly)
+{
+    // Zero variance (research notes §1.6): for every sample, L cos / pdf = L F, the closed form, to round-off.
+    std::uint32_t seed = 1000;
+    for (const CapCase& c : capCases())
+    {
+        SCOPED_TRACE(c.name);
+        const double expected = capProjectedSolidAngle(c.light);
+        Rng rng(pcgHash(seed++));
+        for (int i = 0; i < 20'000; ++i)
+        {
+            LightSample s;
+            ASSERT_TRUE(sampleLight(c.light, LightSampler::Projected, vec3(0.0f), kUp, test::uniform2(rng), s));
+            const double estimate = double(s.wi.z) / double(s.pdf);
+            ASSERT_NEAR(estimate, expected, 1e-4 * expected);
+            const float pdf = lightPdf(c.light, LightSampler::Projected, vec3(0.0f), kUp, s.wi);
+            if (pdf > 0.0f) // 0 for the rim samples rounding moved out of the cone (next test)
+                ASSERT_NEAR(pdf, s.pdf, 1e-6f * s.pdf);
+            ASSERT_NEAR(glm::distance(dvec3(s.point), dvec3(c.light.p0)), double(c.light.radius),
+                        1e-5 * (1.0 + glm::length(dvec3(c.light.p0))));
+        }
+    }
+}
+
+TEST(ProjectedCap, ChiSquareFollowsTheCosineOverTheCap)
+{
+    const auto cases = capCases();
+    std::uint32_t seed = 1100;
+    for (const CapCase& c : cases)
+    {
+        SCOPED_TRACE(c.name);
+        const test::Cone cone = test::coneOf(c.light, vec3(0.0f));
+        const test::CapDomain domain(cone.axis, cone.cosMax, 16, 32);
+        const auto h = test::histogram(domain.cellCount(), kChiSquareSamples, seed++, [&](Rng& rng) {
+            LightSample s;
+            return sampleLight(c.light, LightSampler::Projected, vec3(0.0f), kUp, test::uniform2(rng), s)
+                       ? domain.cell(dvec3(s.wi))
+                       : -2;
+        });
+        // A sample at the rim can be a few ulps outside the cone in double: no more than 1e-5 of them.
+        EXPECT_LE(h.outside, kChiSquareSamples / 100'000) << "samples outside the cone, or none";
+        // The density in double from the geometry, independent of lightPdf: cos / F.
+        const double f = capProjectedSolidAngle(c.light);
+        const auto expected = domain.expectedCounts([&](const dvec3& w) { return w.z / f; }, kChiSquareSamples, 4);
+        const auto r = test::chiSquareTest(h.counts, expected, test::kChiSquareAlpha, int(cases.size()));
+        EXPECT_TRUE(r.passed) << r.message;
+    }
+}
+
+TEST(ProjectedCap, BelowTheHorizonOrInAMediumItIsTheCone)
+{
+    // A cap that straddles the horizon, and a point with no receiver (a medium): the cone's samples.
+    const LightData straddling = test::makeSphereLight({3.0f, 0.0f, 0.2f}, 1.0f);
+    const LightData above = capCases()[1].light;
+    Rng rng(pcgHash(1200));
+    for (int i = 0; i < 1000; ++i)
+    {
+        const vec2 u = test::uniform2(rng);
+        for (const auto& [light, normal] : {std::pair{straddling, kUp}, std::pair{above, vec3(0.0f)}})
+        {
+            LightSample a, b;
+            ASSERT_EQ(sampleLight(light, LightSampler::Projected, vec3(0.0f), normal, u, a),
+                      sampleLight(light, LightSampler::SolidAngle, vec3(0.0f), normal, u, b));
+            EXPECT_EQ(a.pdf, b.pdf);
+            EXPECT_EQ(a.wi, b.wi);
+        }
     }
 }
 } // namespace

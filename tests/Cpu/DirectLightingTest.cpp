@@ -60,7 +60,10 @@ void expectMatches(const Scene& scene, const RenderSettings& s, const std::funct
         }
     const double meanDiff = sum / n;
     const double se = std::sqrt((sum2 / n - meanDiff * meanDiff) / (n - 1));
-    EXPECT_NEAR(meanDiff, 0.0, 3.0 * se) << "expected mean radiance " << expectedSum / n << ", standard error " << se;
+    // Plus 1e-4 of the value: rays leave from points offset ~5e-5 above this floor (RayOffset.h), where the
+    // irradiance differs by ~2e-5 relative; NEE with projected caps has almost no variance and sees it.
+    EXPECT_NEAR(meanDiff, 0.0, 3.0 * se + 1e-4 * expectedSum / n)
+        << "expected mean radiance " << expectedSum / n << ", standard error " << se;
     EXPECT_LT(std::fabs(meanDiff) / (expectedSum / n), 0.02);
 }
 

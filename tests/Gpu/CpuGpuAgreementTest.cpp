@@ -25,7 +25,7 @@ struct AgreementCase
     std::string scene;
     Estimator estimator;
     bool russianRoulette = true;
-    LightSampler lightSampler = LightSampler::SolidAngle;
+    LightSampler lightSampler = LightSampler::Projected;
     LightSelection lightSelection = LightSelection::Power;
 };
 
@@ -105,18 +105,23 @@ std::vector<AgreementCase> cases()
     for (const char* id : {"rtnw-simple-light", "cornell-box-lights", "rtrol-cornell-box"})
         out.push_back({id, Estimator::NeeMis, true, LightSampler::Area});
     for (const char* id : {"cornell-box-lights", "rtnw-final"})
-        out.push_back({id, Estimator::NeeMis, true, LightSampler::SolidAngle, LightSelection::Uniform});
+        out.push_back({id, Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Uniform});
+    for (const char* id : {"sphere-light-closeup", "rect-light-closeup"})
+        out.push_back({id, Estimator::NeeMis, true, LightSampler::SolidAngle});
     return out;
 }
 
 std::string caseName(const ::testing::TestParamInfo<AgreementCase>& param)
 {
-    std::string estimator = toString(param.param.estimator);
-    std::replace(estimator.begin(), estimator.end(), '-', '_');
-    return ::rt::test::testNameOf(param.param.scene) + "_" + estimator +
-           (param.param.lightSampler == LightSampler::Area ? "_area" : "") +
-           (param.param.lightSelection == LightSelection::Uniform ? "_uniform" : "") +
-           (param.param.russianRoulette ? "" : "_no_roulette");
+    const AgreementCase& c = param.param;
+    std::string name = c.scene + "_" + toString(c.estimator);
+    if (c.lightSampler != LightSampler::Projected)
+        name += std::string("_") + toString(c.lightSampler);
+    if (c.lightSelection == LightSelection::Uniform)
+        name += "_uniform";
+    if (!c.russianRoulette)
+        name += "_no_roulette";
+    return ::rt::test::testNameOf(name); // '-' -> '_'
 }
 
 INSTANTIATE_TEST_SUITE_P(Catalogue, GpuCpuAgreement, ::testing::ValuesIn(cases()), caseName);

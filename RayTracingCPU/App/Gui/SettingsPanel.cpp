@@ -162,7 +162,7 @@ void SettingsPanel::drawRenderingParameters(Session& session)
             "weighted by the power heuristic");
     if (ImGui::BeginCombo("Light sampler", toString(s.lightSampler)))
     {
-        for (LightSampler l : {LightSampler::Area, LightSampler::SolidAngle})
+        for (LightSampler l : {LightSampler::Area, LightSampler::SolidAngle, LightSampler::Projected})
             if (ImGui::Selectable(toString(l), l == s.lightSampler))
                 session.setLightSampler(l);
         ImGui::EndCombo();

@@ -27,7 +27,7 @@ struct TimingKey
     int depth = 0;
     PixelSampling sampling = PixelSampling::Random;
     Estimator estimator = Estimator::NeeMis;
-    LightSampler lightSampler = LightSampler::SolidAngle;
+    LightSampler lightSampler = LightSampler::Projected;
     LightSelection lightSelection = LightSelection::Power;
     bool russianRoulette = true;
     bool unidirectionalLight = true;

@@ -61,7 +61,7 @@ void rayTracingSection(Controls& controls, const WindowState& state)
     const LightSampler lightSampler = image.request.settings.lightSampler;
     if (ImGui::BeginCombo("Light sampler", toString(lightSampler)))
     {
-        for (LightSampler l : {LightSampler::Area, LightSampler::SolidAngle})
+        for (LightSampler l : {LightSampler::Area, LightSampler::SolidAngle, LightSampler::Projected})
             if (ImGui::Selectable(toString(l), l == lightSampler))
                 controls.setLightSampler(l);
         ImGui::EndCombo();
