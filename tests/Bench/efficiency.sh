@@ -12,11 +12,12 @@ mkdir -p "$out"
 strategies=(
     "mixture solid-angle power on"
     "mixture solid-angle power off"
-    "nee solid-angle power on"
+    "nee projected power on"
     "nee-mis area uniform on"
-    "nee-mis solid-angle uniform on"
     "nee-mis solid-angle power on"
-    "nee-mis solid-angle power off"
+    "nee-mis projected uniform on"
+    "nee-mis projected power on"
+    "nee-mis projected power off"
 )
 for scene in "$@"; do
     reference="$out/$scene-reference.pfm"
