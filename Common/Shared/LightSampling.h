@@ -202,6 +202,20 @@ RT_FN float sphereNearHit(RT_IN(LightData) s, vec3 p, vec3 wi)
     return b - sqrt(disc);
 }
 
+/// The cosine to the receiver normal n at the rectangle's four corners, seen from r.o, floored at 0.01 (a
+/// corner below the horizon still gets samples near it, where the cosine rises): (w00, w10, w01, w11), the
+/// weights of the bilinear warp that makes spherical-rectangle samples follow the cosine (pbrt-v4 §6.5.4,
+/// after Hart et al. 2020, "Practical Product Sampling by Fitting and Composing Warps").
+RT_FN vec4 rectangleCosineWeights(RT_IN(SphericalRectangle) r, vec3 n)
+{
+    const vec3 zn = r.z0 * r.z;
+    const float w00 = max(dot(n, normalize(r.x0 * r.x + r.y0 * r.y + zn)), 0.01f);
+    const float w10 = max(dot(n, normalize(r.x1 * r.x + r.y0 * r.y + zn)), 0.01f);
+    const float w01 = max(dot(n, normalize(r.x0 * r.x + r.y1 * r.y + zn)), 0.01f);
+    const float w11 = max(dot(n, normalize(r.x1 * r.x + r.y1 * r.y + zn)), 0.01f);
+    return vec4(w00, w10, w01, w11);
+}
+
 /// A sphere light seen from p over the horizon of the receiver normal n: the orthographic projection of its
 /// cap onto the tangent plane, an ellipse (Ureña & Georgiev 2018, "Stratified Sampling of Projected Spherical
 /// Caps", EGSR, §3: centre cos(alpha) cos(beta) along the centre's horizontal direction, semi-axes
@@ -248,11 +262,26 @@ RT_FN bool projectedCap(RT_IN(LightData) s, vec3 p, vec3 n, RT_OUT(ProjectedCap)
 /// Solid-angle pdf with which sampleLight(light, strategy, p, n, .) produces the unit direction wi; 0 if it
 /// cannot. SolidAngle: 1 / S over a rectangle (Ureña et al. 2013) of at least kMinSphericalRectangle sr, the
 /// cone of a sphere seen from outside; Projected: cos / F over a sphere's cap wholly above the horizon of
-/// the receiver normal n, F = pi sin^2(alpha) sin(beta) its projected solid angle, and SolidAngle's pdf
-/// otherwise; Area: the area density of the point wi reaches first (a sphere's near side). Every other case
+/// the receiver normal n, F = pi sin^2(alpha) sin(beta) its projected solid angle; over such a rectangle the
+/// bilinear cosine warp's density at the direction's (u, v) over 1 / S; SolidAngle's pdf otherwise (and for
+/// n = 0); Area: the area density of the point wi reaches first (a sphere's near side). Every other case
 /// is area sampling.
 RT_FN float lightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec3 wi)
 {
+    if (strategy == RT_ENUM(LightSampler, Projected) && isRectangle(light) && dot(n, n) > 0.0f)
+    {
+        const SphericalRectangle r = makeSphericalRectangle(p, light.p0, light.p1, light.p2);
+        if (r.solidAngle >= kMinSphericalRectangle)
+        {
+            const float t = planarHit(light, p, wi);
+            if (t < 0.0f)
+                return 0.0f;
+            const vec3 y = t * wi;
+            const vec2 uv = invertSphericalRectangle(r, dot(y, r.x), dot(y, r.y));
+            const vec4 w = rectangleCosineWeights(r, n);
+            return bilinearPdf(uv, w.x, w.y, w.z, w.w) / r.solidAngle;
+        }
+    }
     if (strategy == RT_ENUM(LightSampler, Projected) && light.shape == RT_ENUM(LightShape, Sphere))
     {
         ProjectedCap cap;
@@ -296,6 +325,27 @@ RT_FN float lightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3
 RT_FN bool sampleLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec2 u,
                        RT_OUT(LightSample) ls)
 {
+    if (strategy == RT_ENUM(LightSampler, Projected) && isRectangle(light) && dot(n, n) > 0.0f)
+    {
+        const SphericalRectangle r = makeSphericalRectangle(p, light.p0, light.p1, light.p2);
+        if (r.solidAngle >= kMinSphericalRectangle)
+        {
+            const vec4 w = rectangleCosineWeights(r, n);
+            const vec2 warped = sampleBilinear(u, w.x, w.y, w.z, w.w);
+            ls.point = sampleSphericalRectangle(r, warped);
+            ls.normal = light.normal;
+            const vec3 planar = ls.point - light.p0;
+            ls.uv = vec2(dot(planar, light.dualU), dot(planar, light.dualV));
+            const vec3 toPoint = ls.point - p;
+            ls.distance = length(toPoint);
+            ls.wi = toPoint / ls.distance;
+            // The density of the construction at its own (u, v): the bilinear warp's over the rectangle's 1 / S.
+            ls.pdf = planarHit(light, p, ls.wi) > 0.0f
+                         ? bilinearPdf(warped, w.x, w.y, w.z, w.w) / r.solidAngle
+                         : 0.0f;
+            return ls.pdf > 0.0f;
+        }
+    }
     if (strategy == RT_ENUM(LightSampler, Projected) && light.shape == RT_ENUM(LightShape, Sphere))
     {
         ProjectedCap cap;

@@ -92,6 +92,27 @@ RT_FN vec3 sampleSphericalRectangle(RT_IN(SphericalRectangle) r, vec2 u)
     return r.o + xu * r.x + yv * r.y + r.z0 * r.z;
 }
 
+/// The (u, v) with which sampleSphericalRectangle gives the rectangle's point with local coordinates
+/// (px, py) (in [x0, x1] x [y0, y1]): u is the solid angle of the part [x0, px] over the whole (how the first
+/// coordinate was drawn), v where h(py) lies between h(y0) and h(y1) on the line x = px.
+RT_FN vec2 invertSphericalRectangle(RT_IN(SphericalRectangle) r, float px, float py)
+{
+    const vec3 corner = r.o + r.x0 * r.x + r.y0 * r.y + r.z0 * r.z;
+    float u = 0.0f;
+    if (px > r.x0)
+    {
+        const SphericalRectangle part =
+            makeSphericalRectangle(r.o, corner, (px - r.x0) * r.x, (r.y1 - r.y0) * r.y);
+        u = clamp(part.solidAngle / r.solidAngle, 0.0f, 1.0f);
+    }
+    const float d2 = px * px + r.z0 * r.z0;
+    const float h0 = r.y0 / sqrt(d2 + r.y0 * r.y0);
+    const float h1 = r.y1 / sqrt(d2 + r.y1 * r.y1);
+    const float hv = py / sqrt(d2 + py * py);
+    const float v = h1 > h0 ? clamp((hv - h0) / (h1 - h0), 0.0f, 1.0f) : 0.5f;
+    return vec2(u, v);
+}
+
 RT_SHADER_NAMESPACE_END
 
 #endif

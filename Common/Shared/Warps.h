@@ -123,6 +123,38 @@ RT_FN vec2 sampleUniformDiskConcentric(vec2 u)
     return r * vec2(cos(theta), sin(theta));
 }
 
+/// x in [0, 1] with density proportional to the line from a (at 0) to b (at 1), a, b >= 0 not both 0: the
+/// inverse of its cumulative (a x + (b - a) x^2 / 2) / ((a + b) / 2), written as u (a + b) / (a + sqrt(lerp(u,
+/// a^2, b^2))) to stay exact when a = b (pbrt-v4 §A.4.2 derives the same form).
+RT_FN float sampleLinear(float u, float a, float b)
+{
+    if (u == 0.0f && a == 0.0f)
+        return 0.0f;
+    const float x = u * (a + b) / (a + sqrt((1.0f - u) * a * a + u * b * b));
+    return min(x, 0.99999994f);
+}
+
+/// A point of [0, 1]^2 with density proportional to the bilinear interpolation of the corner weights w00 (at
+/// (0, 0)), w10, w01, w11: v from its marginal, then u given v (pbrt-v4's SampleBilinear). The weights are
+/// >= 0 and not all 0.
+RT_FN vec2 sampleBilinear(vec2 u, float w00, float w10, float w01, float w11)
+{
+    const float v = sampleLinear(u.y, w00 + w10, w01 + w11);
+    const float x = sampleLinear(u.x, (1.0f - v) * w00 + v * w01, (1.0f - v) * w10 + v * w11);
+    return vec2(x, v);
+}
+
+/// Density of sampleBilinear at p, per unit area of the square.
+RT_FN float bilinearPdf(vec2 p, float w00, float w10, float w01, float w11)
+{
+    const float total = w00 + w10 + w01 + w11;
+    if (!(total > 0.0f))
+        return 1.0f;
+    const float value = (1.0f - p.x) * (1.0f - p.y) * w00 + p.x * (1.0f - p.y) * w10 + (1.0f - p.x) * p.y * w01 +
+                        p.x * p.y * w11;
+    return 4.0f * value / total;
+}
+
 RT_SHADER_NAMESPACE_END
 
 #endif

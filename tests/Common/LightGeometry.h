@@ -67,7 +67,8 @@ public:
     /// Expected samples per cell when `samples` are drawn with the density lightPdf reports: book 3's, or
     /// that of `strategy` when given.
     std::vector<double> expectedCounts(long samples, int subdivisions,
-                                       std::optional<LightSampler> strategy = std::nullopt) const
+                                       std::optional<LightSampler> strategy = std::nullopt,
+                                       const vec3& receiverNormal = vec3(0.0f)) const
     {
         const dvec3 e1(m_light.p1), e2(m_light.p2);
         const dvec3 cross = glm::cross(e1, e2);
@@ -90,7 +91,7 @@ public:
                         dvec3 w = y - dvec3(m_p);
                         const double r2 = glm::dot(w, w);
                         w /= std::sqrt(r2);
-                        const double pdf = strategy ? lightPdf(m_light, *strategy, m_p, vec3(0.0f), vec3(w))
+                        const double pdf = strategy ? lightPdf(m_light, *strategy, m_p, receiverNormal, vec3(w))
                                                     : lightPdf(m_light, m_p, vec3(w));
                         integral += pdf * std::fabs(glm::dot(normal, w)) / r2 * jacobian;
                     }

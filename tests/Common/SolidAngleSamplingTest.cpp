@@ -311,5 +311,61 @@ TEST(ProjectedCap, BelowTheHorizonOrInAMediumItIsTheCone)
         }
     }
 }
+// ---- Rectangles by the bilinear cosine warp -------------------------------------------------------------
+
+/// A receiver normal tilted away from the rectangle's centre, so that the cosine varies across it.
+vec3 tiltedNormal(const LightCase& c)
+{
+    const vec3 centre = c.light.p0 + 0.5f * (c.light.p1 + c.light.p2) - c.p;
+    return glm::normalize(glm::normalize(centre) + vec3(0.5f, -0.3f, 0.2f));
+}
+
+TEST(ProjectedRectangle, SamplesFollowTheWarpedDensityItReports)
+{
+    // Chi-square against lightPdf(Projected): that pdf inverts the spherical rectangle's parametrisation
+    // (the solid angle of a sub-rectangle) and evaluates the bilinear warp there, so the test checks the
+    // inversion and the warp's sampling against each other.
+    const auto cases = rectangleCases();
+    std::uint32_t seed = 1300;
+    for (const LightCase& c : cases)
+    {
+        SCOPED_TRACE(c.name);
+        const vec3 n = tiltedNormal(c);
+        const test::LightSurfaceDomain domain(c.light, c.p, 32);
+        const auto h = test::histogram(domain.cellCount(), kChiSquareSamples, seed++, [&](Rng& rng) {
+            LightSample s;
+            return sampleLight(c.light, LightSampler::Projected, c.p, n, test::uniform2(rng), s) ? domain.cell(s.wi)
+                                                                                                 : -1;
+        });
+        EXPECT_EQ(h.outside, 0) << "samples missing the light, or no sample";
+        const auto expected = domain.expectedCounts(kChiSquareSamples, 8, LightSampler::Projected, n);
+        const auto r = test::chiSquareTest(h.counts, expected, test::kChiSquareAlpha, int(cases.size()));
+        EXPECT_TRUE(r.passed) << r.message;
+    }
+}
+
+TEST(ProjectedRectangle, SamplePdfMatchesLightPdfAndIntegratesToOne)
+{
+    std::uint32_t seed = 1400;
+    for (const LightCase& c : rectangleCases())
+    {
+        SCOPED_TRACE(c.name);
+        const vec3 n = tiltedNormal(c);
+        const double solidAngle = rectangleSolidAngle(c.light, c.p);
+        Rng rng(pcgHash(seed++));
+        double inverseSum = 0.0;
+        constexpr int kSamples = 20'000;
+        for (int i = 0; i < kSamples; ++i)
+        {
+            LightSample s;
+            ASSERT_TRUE(sampleLight(c.light, LightSampler::Projected, c.p, n, test::uniform2(rng), s));
+            const float pdf = lightPdf(c.light, LightSampler::Projected, c.p, n, s.wi);
+            ASSERT_NEAR(pdf, s.pdf, 2e-3f * s.pdf) << "the inversion disagrees with the sample";
+            inverseSum += 1.0 / double(s.pdf);
+        }
+        // E[1 / pdf] over the samples = the solid angle the density lives on (§2.2).
+        EXPECT_NEAR(inverseSum / kSamples, solidAngle, 0.02 * solidAngle);
+    }
+}
 } // namespace
 } // namespace rt
