@@ -72,7 +72,7 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
     app.add_option("--output", o.output, "Write the tone-mapped sRGB image here (.png)");
     app.add_option("--hdr", o.hdr, "Write the linear radiance image here (.pfm)");
     app.add_option("--stats", o.stats, "Write render statistics as JSON here");
-    app.add_option("--count", o.count, "Object count for scenes that scale (white-spheres: number of spheres)");
+    app.add_option("--count", o.count, "Object count for scenes that scale (white-spheres: spheres, default 20000; many-lights: lights, default 1000)");
     app.add_option("--mesh", o.mesh, "OBJ file for the mesh scenes (default: the Stanford bunny in Assets)");
     app.add_flag("--quiet", o.quiet, "No progress line");
 }

@@ -34,6 +34,7 @@ const std::vector<SceneInfo>& sceneCatalogue()
         {"cornell-box-and-mesh", "Thesis GPU app: Cornell box and mesh", "thesis B.2", cornellBoxAndMesh},
         {"furnace", "White furnace: Le / (1 - a) everywhere", "research notes §4.5", furnace},
         {"rect-light-closeup", "Rectangular light upright on a floor, seen near its foot", "scenes.md", rectLightCloseup},
+        {"many-lights", "cornell-box-lights' room with N small lights (--count, default 1000)", "scenes.md", manyLights},
         {"sphere-light-closeup", "Sphere light just above a floor", "scenes.md", sphereLightCloseup},
     };
     return catalogue;

@@ -37,6 +37,7 @@ Scene cornellBoxAndMesh(const SceneOptions&);
 // Light-sampling tests
 Scene furnace(const SceneOptions&);
 Scene rectLightCloseup(const SceneOptions&);
+Scene manyLights(const SceneOptions&);
 Scene sphereLightCloseup(const SceneOptions&);
 
 // Pieces several sources share.

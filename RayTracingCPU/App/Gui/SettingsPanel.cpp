@@ -130,12 +130,14 @@ void SettingsPanel::drawRenderingParameters(Session& session)
         if (ImGui::SmallButton(label))
             session.setAspect(value);
     }
-    if (request.scene.id == "white-spheres")
+    if (request.scene.id == "white-spheres" || request.scene.id == "many-lights")
     {
+        const bool spheres = request.scene.id == "white-spheres";
         int count = request.scene.options.count;
-        if (ImGui::InputInt("Spheres", &count, 100, 1000, kApplyOnEnter))
+        if (ImGui::InputInt(spheres ? "Spheres" : "Lights", &count, 100, 1000, kApplyOnEnter))
             session.setCount(count);
-        tooltip("number of white spheres (-1: the scene's default)");
+        tooltip(spheres ? "number of white spheres (-1: the scene's default, 20000)"
+                        : "number of small lights (-1: the scene's default, 1000)");
     }
 
     drawEngineChoice(session);
