@@ -59,16 +59,19 @@ void main()
         outVec2(9u, sampleUniformDiskConcentric(u));
         outVec2(11u, sampleUniformTriangle(u));
     }
-    else if (mode == 3u) // LightSampling: (light, p, u) -> ok, wi, pdf, lightPdf(wi)
-    {
+    else if (mode == 3u) // LightSampling: (light, p, u, strategy, n) -> ok, wi, pdf, lightPdf(wi)
+    {                     // strategy kNoIndex: book 3's sampler, else NEE's LightSampler with receiver n
         LightData light = lights[inputs[inBase]];
         vec3 p = inVec3(1u);
+        uint strategy = inputs[inBase + 6u];
+        vec3 n = inVec3(7u);
         LightSample ls;
-        bool ok = sampleLight(light, p, inVec2(4u), ls);
+        bool book3 = strategy == kNoIndex;
+        bool ok = book3 ? sampleLight(light, p, inVec2(4u), ls) : sampleLight(light, strategy, p, n, inVec2(4u), ls);
         outUint(0u, ok ? 1u : 0u);
         outVec3(1u, ls.wi);
         outFloat(4u, ls.pdf);
-        outFloat(5u, ok ? lightPdf(light, p, ls.wi) : 0.0);
+        outFloat(5u, !ok ? 0.0 : book3 ? lightPdf(light, p, ls.wi) : lightPdf(light, strategy, p, n, ls.wi));
     }
     else if (mode == 4u) // Perlin: p -> noise, turbulence (7 octaves)
     {

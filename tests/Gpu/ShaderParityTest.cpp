@@ -38,7 +38,7 @@ struct Layout
     std::uint32_t inputWords;
     std::uint32_t outputWords;
 };
-constexpr Layout kLayouts[] = {{3, 8}, {7, 3}, {3, 13}, {6, 6}, {3, 2}, {10, 3}, {1, 1}};
+constexpr Layout kLayouts[] = {{3, 8}, {7, 3}, {3, 13}, {10, 6}, {3, 2}, {10, 3}, {1, 1}};
 
 std::uint32_t bits(float f) { return std::bit_cast<std::uint32_t>(f); }
 float asFloat(std::uint32_t u) { return std::bit_cast<float>(u); }
@@ -154,38 +154,59 @@ TEST(GpuShaderParity, WarpsMatchCommon)
 
 TEST(GpuShaderParity, LightSamplersMatchCommon)
 {
+    // Book 3's samplers and NEE's three, each with a receiver normal (up: the lights are overhead; sideways:
+    // the projected samplers' horizon cuts them): the GPU's compilation of Shared/LightSampling.h must give the
+    // C++ samples and pdfs to float tolerance.
     RT_REQUIRE_GPU();
     std::vector<LightData> lights;
-    lights.push_back(makeQuadLight({213, 554, 227}, {130, 0, 0}, {0, 0, 105}, 0));
+    lights.push_back(makeQuadLight({213, 554, 227}, {130, 0, 0}, {0, 0, 105}, 0)); // a rectangle
     lights.push_back(makeTriangleLight({0, 500, 0}, {100, 500, 0}, {0, 500, 50}, 0));
     lights.push_back(makeSphereLight({277, 530, 277}, 50.0f, 0));
-
-    const std::vector<float> r = uniforms(5 * 192, 0.0f, 1.0f, 5u);
+    const std::uint32_t strategies[] = {kNoIndex, std::uint32_t(LightSampler::Area),
+                                        std::uint32_t(LightSampler::SolidAngle), std::uint32_t(LightSampler::Projected)};
+    constexpr std::size_t kCases = 4 * 192;
+    const std::vector<float> r = uniforms(5 * kCases, 0.0f, 1.0f, 5u);
     std::vector<std::uint32_t> in;
-    for (std::size_t c = 0; c < 192; ++c)
+    for (std::size_t c = 0; c < kCases; ++c)
     {
         // Points in the Cornell box, some inside the sphere light (its uniform-area branch).
-        vec3 p = vec3(555.0f * r[5 * c], 555.0f * r[5 * c + 1], 555.0f * r[5 * c + 2]);
+        vec3 p = vec3(555.0f * r[5 * c], 480.0f * r[5 * c + 1], 555.0f * r[5 * c + 2]);
         if (c % 8 == 0)
             p = lights[2].p0 + vec3(10.0f * r[5 * c], -20.0f * r[5 * c + 1], 5.0f);
+        const vec3 n = c % 3 == 0 ? glm::normalize(vec3(1.0f, 0.3f, 0.2f)) : vec3(0.0f, 1.0f, 0.0f);
         in.insert(in.end(), {std::uint32_t(c % 3), bits(p.x), bits(p.y), bits(p.z), bits(r[5 * c + 3]),
-                             bits(r[5 * c + 4])});
+                             bits(r[5 * c + 4]), strategies[(c / 3) % 4], bits(n.x), bits(n.y), bits(n.z)});
     }
     const std::vector<std::uint32_t> out = runParity(kLightSampling, in, lights);
-    for (std::size_t c = 0; c < 192; ++c)
+    int compared = 0;
+    for (std::size_t c = 0; c < kCases; ++c)
     {
-        const LightData& light = lights[in[6 * c]];
-        const vec3 p = vec3At(in, 6 * c + 1);
+        const std::uint32_t* k = &in[10 * c];
+        const LightData& light = lights[k[0]];
+        const vec3 p = vec3At(in, 10 * c + 1);
+        const vec2 u(asFloat(k[4]), asFloat(k[5]));
+        const vec3 n = vec3At(in, 10 * c + 7);
+        const bool book3 = k[6] == kNoIndex;
+        const auto strategy = LightSampler(k[6]);
         LightSample ls;
-        const bool ok = sampleLight(light, p, {asFloat(in[6 * c + 4]), asFloat(in[6 * c + 5])}, ls);
+        const bool ok = book3 ? sampleLight(light, p, u, ls) : sampleLight(light, strategy, p, n, u, ls);
         ASSERT_EQ(out[6 * c] != 0, ok) << "case " << c;
         if (!ok)
             continue;
-        expectNear(vec3At(out, 6 * c + 1), ls.wi, 1e-4f, "wi", c);
-        EXPECT_NEAR(asFloat(out[6 * c + 4]), ls.pdf, 1e-3f * ls.pdf) << "pdf, case " << c;
-        const float pdfOfWi = lightPdf(light, p, ls.wi);
-        EXPECT_NEAR(asFloat(out[6 * c + 5]), pdfOfWi, 1e-3f * pdfOfWi + 1e-6f) << "lightPdf, case " << c;
+        ++compared;
+        // The spherical rectangle's solid angle is four acos minus 2 pi, and its inversion runs sin and cos:
+        // Vulkan bounds those only loosely (sin, cos: 2^-11 absolute; acos: inherited from atan, 4096 ulp),
+        // and lavapipe's differ from libm's by 1e-5 to 1e-4, which the cancellation turns into up to 2e-3 of
+        // the pdf. Every other sampler keeps to 1e-4 in direction and 1e-3 in pdf.
+        const bool sphericalRectangle = !book3 && strategy != LightSampler::Area && shader::isRectangle(light);
+        const float wiTolerance = sphericalRectangle ? 1e-3f : 1e-4f;
+        const float pdfTolerance = sphericalRectangle ? 5e-3f : 1e-3f;
+        expectNear(vec3At(out, 6 * c + 1), ls.wi, wiTolerance, "wi", c);
+        EXPECT_NEAR(asFloat(out[6 * c + 4]), ls.pdf, pdfTolerance * ls.pdf) << "pdf, case " << c;
+        const float pdfOfWi = book3 ? lightPdf(light, p, ls.wi) : lightPdf(light, strategy, p, n, ls.wi);
+        EXPECT_NEAR(asFloat(out[6 * c + 5]), pdfOfWi, pdfTolerance * pdfOfWi + 1e-6f) << "lightPdf, case " << c;
     }
+    EXPECT_GT(compared, int(kCases) / 2);
 }
 
 TEST(GpuShaderParity, PerlinNoiseMatchesCommon)
