@@ -25,7 +25,8 @@ double meanLuminance(const Scene& scene, std::uint32_t texture)
 std::vector<double> emitterPowers(const Scene& scene)
 {
     std::vector<double> powers;
-    for (std::uint32_t i = 0; i < scene.emitterCount(); ++i)
+    const std::uint32_t emitters = scene.emitterCount();
+    for (std::uint32_t i = 0; i < emitters; ++i)
     {
         const LightData& l = scene.lights[i];
         powers.push_back(double(l.area) * meanLuminance(scene, scene.materials[l.material].emissionTexture));

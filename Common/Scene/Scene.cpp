@@ -182,9 +182,10 @@ void Scene::validate() const
     for (const LightData& l : lights)
         require(l.material == kNoIndex || materialOk(l.material), id, "a light refers to a missing material");
     require(lightSources.size() == lights.size(), id, "every light needs its source (SceneBuilder::finish)");
+    const std::uint32_t emitters = emitterCount();
     for (std::size_t i = 0; i < lights.size(); ++i)
         require((lights[i].material == kNoIndex) == (lightSources[i].kind == LightSource::Kind::Target) &&
-                    (i < emitterCount() || lights[i].material == kNoIndex),
+                    (i < emitters || lights[i].material == kNoIndex),
                 id, "the emitters come first in the light list, then the sampling targets");
     require(!instances.empty(), id, "the scene has no instances");
 }

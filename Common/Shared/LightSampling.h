@@ -268,7 +268,7 @@ RT_FN bool projectedCap(RT_IN(LightData) s, vec3 p, vec3 n, RT_OUT(ProjectedCap)
 /// is area sampling.
 RT_FN float lightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec3 wi)
 {
-    if (strategy == RT_ENUM(LightSampler, Projected) && isRectangle(light) && dot(n, n) > 0.0f)
+    if (strategy != RT_ENUM(LightSampler, Area) && isRectangle(light))
     {
         const SphericalRectangle r = makeSphericalRectangle(p, light.p0, light.p1, light.p2);
         if (r.solidAngle >= kMinSphericalRectangle)
@@ -276,6 +276,8 @@ RT_FN float lightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3
             const float t = planarHit(light, p, wi);
             if (t < 0.0f)
                 return 0.0f;
+            if (strategy == RT_ENUM(LightSampler, SolidAngle) || !(dot(n, n) > 0.0f))
+                return 1.0f / r.solidAngle;
             const vec3 y = t * wi;
             const vec2 uv = invertSphericalRectangle(r, dot(y, r.x), dot(y, r.y));
             const vec4 w = rectangleCosineWeights(r, n);
@@ -295,23 +297,14 @@ RT_FN float lightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3
                                                          : 0.0f;
         }
     }
-    if (strategy != RT_ENUM(LightSampler, Area))
-        strategy = RT_ENUM(LightSampler, SolidAngle);
-
-    if (strategy == RT_ENUM(LightSampler, SolidAngle) && isRectangle(light))
-    {
-        const SphericalRectangle r = makeSphericalRectangle(p, light.p0, light.p1, light.p2);
-        if (r.solidAngle >= kMinSphericalRectangle)
-            return planarHit(light, p, wi) > 0.0f ? 1.0f / r.solidAngle : 0.0f;
-    }
     if (strategy == RT_ENUM(LightSampler, Area) && light.shape == RT_ENUM(LightShape, Sphere) &&
         lengthSquared(p - light.p0) > light.radius * light.radius)
     {
         const float t = sphereNearHit(light, p, wi);
         if (!(t > 0.0f))
             return 0.0f;
-        const vec3 n = (p + t * wi - light.p0) / light.radius;
-        return areaToSolidAngle(t * t, abs(dot(n, wi)), light.area);
+        const vec3 sphereNormal = (p + t * wi - light.p0) / light.radius;
+        return areaToSolidAngle(t * t, abs(dot(sphereNormal, wi)), light.area);
     }
     return lightPdf(light, p, wi);
 }
@@ -325,13 +318,15 @@ RT_FN float lightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3
 RT_FN bool sampleLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec2 u,
                        RT_OUT(LightSample) ls)
 {
-    if (strategy == RT_ENUM(LightSampler, Projected) && isRectangle(light) && dot(n, n) > 0.0f)
+    if (strategy != RT_ENUM(LightSampler, Area) && isRectangle(light))
     {
         const SphericalRectangle r = makeSphericalRectangle(p, light.p0, light.p1, light.p2);
         if (r.solidAngle >= kMinSphericalRectangle)
         {
-            const vec4 w = rectangleCosineWeights(r, n);
-            const vec2 warped = sampleBilinear(u, w.x, w.y, w.z, w.w);
+            // Projected warps u toward the receiver's cosine first; SolidAngle (or no receiver) takes u as is.
+            const bool warp = strategy == RT_ENUM(LightSampler, Projected) && dot(n, n) > 0.0f;
+            const vec4 w = warp ? rectangleCosineWeights(r, n) : vec4(1.0f);
+            const vec2 warped = warp ? sampleBilinear(u, w.x, w.y, w.z, w.w) : u;
             ls.point = sampleSphericalRectangle(r, warped);
             ls.normal = light.normal;
             const vec3 planar = ls.point - light.p0;
@@ -339,10 +334,10 @@ RT_FN bool sampleLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, ve
             const vec3 toPoint = ls.point - p;
             ls.distance = length(toPoint);
             ls.wi = toPoint / ls.distance;
-            // The density of the construction at its own (u, v): the bilinear warp's over the rectangle's 1 / S.
-            ls.pdf = planarHit(light, p, ls.wi) > 0.0f
-                         ? bilinearPdf(warped, w.x, w.y, w.z, w.w) / r.solidAngle
-                         : 0.0f;
+            // The density of the construction at its own (u, v) (the warp's, 1 without it) over 1 / S; 0 where
+            // rounding put the direction off the rectangle, as lightPdf finds it.
+            const float warpPdf = warp ? bilinearPdf(warped, w.x, w.y, w.z, w.w) : 1.0f;
+            ls.pdf = planarHit(light, p, ls.wi) > 0.0f ? warpPdf / r.solidAngle : 0.0f;
             return ls.pdf > 0.0f;
         }
     }
@@ -364,26 +359,6 @@ RT_FN bool sampleLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, ve
             // cone (where lightPdf's chord test says 0: 3 in 1e6 for a cap of 1e-3 rad) keeps it rather than
             // being dropped; the two differ only on that rim, a set of no measure.
             ls.pdf = max(dot(n, ls.wi), 0.0f) / (kPi * cap.axisX * cap.axisY);
-            return ls.pdf > 0.0f;
-        }
-    }
-    if (strategy != RT_ENUM(LightSampler, Area))
-        strategy = RT_ENUM(LightSampler, SolidAngle);
-
-    if (strategy == RT_ENUM(LightSampler, SolidAngle) && isRectangle(light))
-    {
-        const SphericalRectangle r = makeSphericalRectangle(p, light.p0, light.p1, light.p2);
-        if (r.solidAngle >= kMinSphericalRectangle)
-        {
-            ls.point = sampleSphericalRectangle(r, u);
-            ls.normal = light.normal;
-            const vec3 planar = ls.point - light.p0;
-            ls.uv = vec2(dot(planar, light.dualU), dot(planar, light.dualV));
-            const vec3 w = ls.point - p;
-            ls.distance = length(w);
-            ls.wi = w / ls.distance;
-            // The pdf of the direction, as lightPdf finds it: 0 where rounding put it off the rectangle.
-            ls.pdf = planarHit(light, p, ls.wi) > 0.0f ? 1.0f / r.solidAngle : 0.0f;
             return ls.pdf > 0.0f;
         }
     }

@@ -75,7 +75,7 @@ inline vec3 estimateDirect(const CpuScene& cs, const PathOptions& options, const
                            bool phase, const vec3& albedo, float time, Rng& rng, std::uint64_t& segments)
 {
     const Scene& scene = cs.source();
-    const std::uint32_t emitters = scene.emitterCount();
+    const std::uint32_t emitters = cs.emitterCount();
     float pmf;
     const std::uint32_t picked =
         shader::selectLight(cs.lightAlias(), options.lightSelection, rng.nextFloat(), emitters, pmf);
@@ -108,7 +108,7 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
     const Scene& scene = cs.source();
     const bool mixture = options.estimator == Estimator::Mixture && !scene.lights.empty();
     const bool nee = (options.estimator == Estimator::Nee || options.estimator == Estimator::NeeMis) &&
-                     scene.emitterCount() > 0;
+                     cs.emitterCount() > 0;
     const bool mis = options.estimator == Estimator::NeeMis;
     vec3 radiance(0.0f);
     vec3 throughput(1.0f);
@@ -141,7 +141,7 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
                 weight = mis ? shader::powerHeuristic(previousBsdfPdf,
                                                       shader::lightSelectionPmf(cs.lightAlias(),
                                                                                 options.lightSelection, si.light,
-                                                                                scene.emitterCount()) *
+                                                                                cs.emitterCount()) *
                                                           lightPdf(scene.lights[si.light], options.lightSampler,
                                                                    previousPoint, previousNormal, ray.direction))
                              : 0.0f;

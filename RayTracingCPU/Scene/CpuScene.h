@@ -39,6 +39,8 @@ public:
     const std::vector<QuadRec>& quads() const { return m_quads; }
     const std::vector<TriangleRec>& triangles() const { return m_triangles; }
     bool hasMedia() const { return !m_media.empty(); }
+    /// Scene::emitterCount(), counted once: NEE and the MIS weight need it at every vertex.
+    std::uint32_t emitterCount() const { return m_emitterCount; }
     /// The emitters' power alias table (Sampling/LightPower.h) for NEE's power selection.
     const shader::AliasEntry* lightAlias() const { return m_lightAlias.data(); }
     TraceRay::Needs rayNeeds() const { return {!m_triangles.empty(), !m_media.empty(), !m_bvh4.rootIsLeaf}; }
@@ -112,6 +114,7 @@ private:
     std::vector<std::uint32_t> m_quadLights;
     std::vector<std::uint32_t> m_triangleLights;
     std::vector<shader::AliasEntry> m_lightAlias;
+    std::uint32_t m_emitterCount = 0;
     std::vector<bool> m_materialNeedsUv; // an image texture reads (u, v): spheres compute them only then
     std::vector<mat3> m_uvFrames; // object-from-world rotations of instanced spheres; [0] = identity
     // What traversal reads: per leaf, a run of packet references (type + index into the packet arrays; for

@@ -98,7 +98,7 @@ private:
     /// indices differ between instances of one group, the geometry does not.
     std::uint32_t recordWithLights(const Part& part, std::uint32_t instance)
     {
-        if (m_scene.emitterCount() == 0)
+        if (m_scene.lights.empty() || m_scene.lights[0].material == kNoIndex) // no emitter (they come first)
             return part.record;
         const GroupDesc& group = m_scene.groups[m_scene.instances[instance].group];
         std::vector<std::uint32_t> lights; // per BLAS primitive

@@ -221,7 +221,9 @@ TEST(LightSampling, SamplePointLiesOnTheLightAlongItsDirection)
             ASSERT_NEAR(glm::distance(y, center), double(c.light.radius), 1e-5 * scale) << "not on the sphere";
             ASSERT_LE(glm::distance(n, (y - center) / double(c.light.radius)), 1e-4) << "not the outward normal";
             if (glm::distance(p, center) > c.light.radius)
+            {
                 ASSERT_LE(glm::dot(w, n), 1e-3) << "a sphere seen from outside shows its front";
+            }
         }
     }
 }

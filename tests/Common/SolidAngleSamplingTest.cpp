@@ -200,7 +200,9 @@ TEST(SphereAreaSampling, SamplePdfIsTheNearPointsAreaDensity)
             const double d = glm::distance(dvec3(c.p), center);
             const double tolerance = 1e-4 + 3e-7 * (d / r) / (cosLight * cosLight);
             if (tolerance < 1e-2)
+            {
                 ASSERT_NEAR(lightPdf(c.light, LightSampler::Area, c.p, kNoNormal, s.wi), s.pdf, tolerance * s.pdf);
+            }
             ASSERT_NEAR(glm::distance(y, center), r, 1e-5 * (1.0 + glm::length(center)));
         }
         EXPECT_GT(samples, 500); // (1 - sin alpha) / 2 of 20,000: 4.5 % for the nearest
@@ -260,7 +262,9 @@ TEST(ProjectedCap, OneSampleGivesTheIrradianceExactly)
             ASSERT_NEAR(estimate, expected, 1e-4 * expected);
             const float pdf = lightPdf(c.light, LightSampler::Projected, vec3(0.0f), kUp, s.wi);
             if (pdf > 0.0f) // 0 for the rim samples rounding moved out of the cone (next test)
+            {
                 ASSERT_NEAR(pdf, s.pdf, 1e-6f * s.pdf);
+            }
             ASSERT_NEAR(glm::distance(dvec3(s.point), dvec3(c.light.p0)), double(c.light.radius),
                         1e-5 * (1.0 + glm::length(dvec3(c.light.p0))));
         }
