@@ -23,6 +23,8 @@ layout(binding = kBindingMedia, scalar) readonly buffer MediumBlock { MediumReco
 layout(binding = kBindingCounters, scalar) buffer CounterBlock { SampleCounters counters; };
 layout(binding = kBindingPrimitiveLights, scalar) readonly buffer PrimitiveLightBlock { uint primitiveLights[]; };
 layout(binding = kBindingLightAlias, scalar) readonly buffer LightAliasBlock { AliasEntry lightAlias[]; };
+layout(binding = kBindingLightBvh, scalar) readonly buffer LightBvhBlock { LightBvhNode lightBvh[]; };
+layout(binding = kBindingLightBvhLeaves, scalar) readonly buffer LightBvhLeafBlock { uint lightBvhLeaves[]; };
 layout(binding = kBindingImages) uniform sampler2D images[];
 
 layout(push_constant, scalar) uniform PushBlock { TracePushConstants push; };

@@ -28,10 +28,13 @@ bool unoccluded(vec3 origin, vec3 direction, float tMax)
 vec3 estimateDirect(vec3 origin, vec3 ns, bool phase, vec3 albedo, bool mis, inout Rng rng)
 {
     float pmf;
-    uint picked = selectLight(uniforms.lightSelection, nextFloat(rng), uniforms.emitterCount, pmf);
-    vec2 u = nextFloat2(rng);
-    LightSample ls;
     vec3 receiver = phase ? vec3(0.0) : ns; // no horizon in a medium
+    uint picked = selectLight(uniforms.lightSelection, nextFloat(rng), uniforms.emitterCount, origin, receiver,
+                              uniforms.unidirectionalLight == 0u, pmf);
+    vec2 u = nextFloat2(rng);
+    if (picked == kNoIndex)
+        return vec3(0.0); // the light BVH proved that no emitter reaches this point
+    LightSample ls;
     if (!sampleLight(lights[picked], uniforms.lightSampler, origin, receiver, u, ls))
         return vec3(0.0);
     float bsdfPdf = diffusePdf(phase, ns, ls.wi); // f cos = albedo bsdfPdf

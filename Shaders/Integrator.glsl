@@ -59,7 +59,9 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
             float weight = 1.0;
             if (previousBsdfPdf > 0.0 && payload.light != kNoIndex)
                 weight = mis ? powerHeuristic(previousBsdfPdf, lightSelectionPmf(uniforms.lightSelection, payload.light,
-                                                                                 uniforms.emitterCount) *
+                                                                                 uniforms.emitterCount, previousPoint,
+                                                                                 previousNormal,
+                                                                                 uniforms.unidirectionalLight == 0u) *
                                                                    lightPdf(lights[payload.light],
                                                                             uniforms.lightSampler, previousPoint,
                                                                             previousNormal, normalize(direction)))

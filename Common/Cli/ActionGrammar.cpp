@@ -136,7 +136,7 @@ std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long lo
          [](const std::string& v) { return parseEstimator(v).has_value(); }},
         {"light-sampler", ActionValue::Text, "area|solid-angle|projected", "how NEE picks a point on a light", 0, 1e30,
          [](const std::string& v) { return parseLightSampler(v).has_value(); }},
-        {"light-selection", ActionValue::Text, "uniform|power", "how NEE picks the light it samples", 0, 1e30,
+        {"light-selection", ActionValue::Text, "uniform|power|bvh", "how NEE picks the light it samples", 0, 1e30,
          [](const std::string& v) { return parseLightSelection(v).has_value(); }},
         {"pdf", ActionValue::OnOff, "on|off", "the books' name: estimator=mixture, or estimator=bsdf"},
         {"russian-roulette", ActionValue::OnOff, "on|off", "paths end by Russian roulette from their third segment"},

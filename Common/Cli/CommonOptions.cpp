@@ -56,8 +56,10 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
                    "mixture keeps book 3's.")
         ->capture_default_str();
     app.add_option("--light-selection", o.lightSelection,
-                   "Which light nee and nee-mis sample at a vertex: uniform (each of the N emitters 1/N) or power "
-                   "(in proportion to area x emitted luminance, by an alias table)")
+                   "Which light nee and nee-mis sample at a vertex: uniform (each of the N emitters 1/N), power "
+                   "(in proportion to area x emitted luminance, by an alias table) or bvh (by a light BVH: in "
+                   "proportion to a bound of what each group of emitters can contribute at the vertex, from its "
+                   "power, distance, orientation and the receiver's horizon)")
         ->capture_default_str();
     app.add_option("--pdf", o.pdf, "The books' name for two estimators: on = --estimator mixture, off = bsdf");
     app.add_option("--russian-roulette", o.russianRoulette,
@@ -114,7 +116,7 @@ RenderRequest resolveRequest(const CommonOptions& o, const Scene& scene)
     s.lightSampler = *lightSampler;
     const auto lightSelection = parseLightSelection(o.lightSelection);
     if (!lightSelection)
-        throw UsageError(fmt::format("--light-selection must be uniform or power (got '{}')", o.lightSelection));
+        throw UsageError(fmt::format("--light-selection must be uniform, power or bvh (got '{}')", o.lightSelection));
     s.lightSelection = *lightSelection;
     if (o.unidirectionalLight)
         s.unidirectionalLight = onOffFlag("--unidirectional-light", *o.unidirectionalLight);

@@ -27,7 +27,7 @@ struct CommonOptions
     std::optional<std::string> pdf;
     std::string russianRoulette = "on";
     std::string lightSampler = "projected";
-    std::string lightSelection = "power";
+    std::string lightSelection = "bvh";
     std::optional<std::string> unidirectionalLight;
     std::uint32_t seed = 0;
     std::string output;

@@ -128,13 +128,14 @@ const char* toString(LightSelection selection)
     {
     case LightSelection::Uniform: return "uniform";
     case LightSelection::Power: return "power";
+    case LightSelection::Bvh: return "bvh";
     }
     return "?";
 }
 
 std::optional<LightSelection> parseLightSelection(const std::string& text)
 {
-    for (LightSelection s : {LightSelection::Uniform, LightSelection::Power})
+    for (LightSelection s : {LightSelection::Uniform, LightSelection::Power, LightSelection::Bvh})
         if (text == toString(s))
             return s;
     return std::nullopt;

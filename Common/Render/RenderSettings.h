@@ -30,7 +30,7 @@ struct RenderSettings
     PixelSampling sampling = PixelSampling::Random;
     Estimator estimator = Estimator::NeeMis;
     LightSampler lightSampler = LightSampler::Projected; // how NEE samples a light
-    LightSelection lightSelection = LightSelection::Power; // how NEE picks the light it samples
+    LightSelection lightSelection = LightSelection::Bvh; // how NEE picks the light it samples
     bool russianRoulette = true; // paths end by Russian roulette from their third segment (Shared/RussianRoulette.h)
     bool unidirectionalLight = true; // emitters emit from their front side only
     std::uint32_t seed = 0;

@@ -89,6 +89,7 @@ RT_ENUM_END(LightSampler)
 RT_ENUM_BEGIN(LightSelection)
 RT_ENUM_VALUE(LightSelection, Uniform, 0) // every emitter 1 / N
 RT_ENUM_VALUE(LightSelection, Power, 1)   // in proportion to emitted power (an alias table, LightSelection.h)
+RT_ENUM_VALUE(LightSelection, Bvh, 2)     // by importance seen from the shading point (a light BVH, LightBvh.h)
 RT_ENUM_END(LightSelection)
 
 RT_ENUM_BEGIN(PixelSampling)
@@ -130,6 +131,24 @@ struct AliasEntry
     float threshold;
     uint alias;
     float pmf;
+};
+
+/// One node of the light BVH (Shared/LightBvh.h; built by Sampling/LightBvh.h), depth first: an interior
+/// node's first child follows it, its second is at `child`; a leaf is one emitter. What it bounds, for every
+/// emitter below it: their points (the box, world space), their summed power, and the directions they emit
+/// in: within theta_e of some direction within theta_o of `axis` (Estevez Conty & Kulla 2018, "Importance
+/// Sampling of Many Lights with Adaptive Tree Splitting", HPG, §4.1; pbrt-v4's LightBounds).
+struct LightBvhNode
+{
+    vec3 boundsMin;
+    float power; // summed power of the emitters below (Sampling/LightPower.h's units)
+    vec3 boundsMax;
+    float cosThetaO; // the cone of the emitters' normals: cos of its half-angle (-1: every direction)
+    vec3 axis; // unit axis of that cone
+    float cosThetaE; // how far beyond its normal an emitter emits: cos(pi/2) = 0 for diffuse emitters
+    uint child; // interior: index of the second child; leaf: the emitter's index into LightData[]
+    uint parent; // the parent's index (kNoIndex at the root)
+    uint leaf; // 1: a leaf
 };
 
 struct LightData
@@ -182,8 +201,10 @@ RT_CONST(uint, kBindingMedia, 13u)            // MediumRecord[] (object space)
 RT_CONST(uint, kBindingCounters, 14u)         // SampleCounters
 RT_CONST(uint, kBindingPrimitiveLights, 15u)  // uint[]: per primitive of a record, its index into LightData[] or kNoIndex
 RT_CONST(uint, kBindingLightAlias, 16u)       // AliasEntry[]: the emitters' power alias table
-RT_CONST(uint, kBindingImages, 17u)           // sampler2D[]: the scene's images, 8-bit sRGB
-RT_CONST(uint, kBindingCount, 18u)
+RT_CONST(uint, kBindingLightBvh, 17u)         // LightBvhNode[]: the emitters' light BVH
+RT_CONST(uint, kBindingLightBvhLeaves, 18u)   // uint[]: per emitter, its leaf in LightBvhNode[] (kNoIndex: no power)
+RT_CONST(uint, kBindingImages, 19u)           // sampler2D[]: the scene's images, 8-bit sRGB
+RT_CONST(uint, kBindingCount, 20u)
 
 // Shader binding table: two miss records (traceRayEXT's missIndex; each with its payload location), and per
 // TLAS instance a hit-group record offset.
@@ -338,6 +359,7 @@ struct PreviewPushConstants
 
 #ifdef __cplusplus
 static_assert(sizeof(RenderUniforms) == 176);
+static_assert(sizeof(LightBvhNode) == 60);
 static_assert(offsetof(RenderUniforms, background0) == 96);
 static_assert(offsetof(RenderUniforms, sampling) == 128);
 static_assert(sizeof(TracePushConstants) == 8);

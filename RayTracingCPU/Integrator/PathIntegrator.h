@@ -37,7 +37,7 @@ struct PathOptions
     int depth = 50; // ray segments traced at most
     Estimator estimator = Estimator::NeeMis;
     LightSampler lightSampler = LightSampler::Projected; // NEE's
-    LightSelection lightSelection = LightSelection::Power; // NEE's
+    LightSelection lightSelection = LightSelection::Bvh; // NEE's
     bool russianRoulette = true;
     bool unidirectionalLight = true;
 };
@@ -53,6 +53,14 @@ inline float mixturePdf(const Scene& scene, const vec3& p, const vec3& wi, float
     return 0.5f * bsdfPdf + 0.5f * lights / static_cast<float>(scene.lights.size());
 }
 
+/// Probability that NEE at `origin` (receiver normal `receiver`, 0 in a medium) selects `light`.
+inline float selectionPmf(const CpuScene& cs, const PathOptions& options, std::uint32_t light, const vec3& origin,
+                          const vec3& receiver)
+{
+    return shader::lightSelectionPmf(cs.lightAlias(), cs.lightBvh(), cs.lightBvhLeaves(), options.lightSelection,
+                                     light, cs.emitterCount(), origin, receiver, !options.unidirectionalLight);
+}
+
 /// Emitted radiance of the light sample `ls` towards its shading point: 0 from a light's back face when
 /// emitters are one-sided.
 inline vec3 sampledEmission(const Scene& scene, const LightData& light, const LightSample& ls, bool unidirectional)
@@ -62,9 +70,8 @@ inline vec3 sampledEmission(const Scene& scene, const LightData& light, const Li
     return evalTexture(scene, scene.materials[light.material].emissionTexture, ls.uv, ls.point);
 }
 
-/// Next-event estimation at a diffuse or isotropic vertex: one emitter selected (uniformly or by power), one
-/// point on it,
-/// a shadow ray. `origin` is where the vertex's rays leave from (the hit point offset to the side of the
+/// Next-event estimation at a diffuse or isotropic vertex: one emitter selected (uniformly, by power or by the
+/// light BVH), one point on it, a shadow ray. `origin` is where the vertex's rays leave from (the hit point offset to the side of the
 /// shading normal `ns`; the point itself in a medium): lights are sampled from there and the BSDF ray leaves
 /// from there too, so both strategies see one geometry and their MIS weights sum to 1 for every direction
 /// (sampled from the unoffset point, a sphere light's silhouette shifted between them: +0.05 % on a test).
@@ -77,12 +84,15 @@ inline vec3 estimateDirect(const CpuScene& cs, const PathOptions& options, const
     const Scene& scene = cs.source();
     const std::uint32_t emitters = cs.emitterCount();
     float pmf;
-    const std::uint32_t picked =
-        shader::selectLight(cs.lightAlias(), options.lightSelection, rng.nextFloat(), emitters, pmf);
+    const vec3 receiver = phase ? vec3(0.0f) : ns; // no horizon in a medium
+    const std::uint32_t picked = shader::selectLight(cs.lightAlias(), cs.lightBvh(), options.lightSelection,
+                                                     rng.nextFloat(), emitters, origin, receiver,
+                                                     !options.unidirectionalLight, pmf);
     const vec2 u(rng.nextFloat(), rng.nextFloat());
+    if (picked == kNoIndex)
+        return vec3(0.0f); // the light BVH proved that no emitter reaches this point
     const LightData& light = scene.lights[picked];
     LightSample ls;
-    const vec3 receiver = phase ? vec3(0.0f) : ns; // no horizon in a medium
     if (!sampleLight(light, options.lightSampler, origin, receiver, u, ls))
         return vec3(0.0f);
     const float bsdfPdf = shader::diffusePdf(phase, ns, ls.wi); // f cos = albedo bsdfPdf
@@ -139,9 +149,8 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
             float weight = 1.0f;
             if (previousBsdfPdf > 0.0f && si.light != kNoIndex)
                 weight = mis ? shader::powerHeuristic(previousBsdfPdf,
-                                                      shader::lightSelectionPmf(cs.lightAlias(),
-                                                                                options.lightSelection, si.light,
-                                                                                cs.emitterCount()) *
+                                                      selectionPmf(cs, options, si.light, previousPoint,
+                                                                   previousNormal) *
                                                           lightPdf(scene.lights[si.light], options.lightSampler,
                                                                    previousPoint, previousNormal, ray.direction))
                              : 0.0f;

@@ -54,7 +54,7 @@ vec2 sphereUv(const vec3& q)
 } // namespace
 
 CpuScene::CpuScene(const Scene& scene)
-    : m_scene(&scene), m_lightAlias(lightAliasTable(scene)), m_emitterCount(scene.emitterCount())
+    : m_scene(&scene), m_lightAlias(lightAliasTable(scene)), m_lightBvh(buildLightBvh(scene)), m_emitterCount(scene.emitterCount())
 {
     const auto isImage = [&](std::uint32_t t) { return t != kNoIndex && scene.textures[t].type == TextureType::Image; };
     for (const MaterialData& m : scene.materials)

@@ -9,6 +9,7 @@
 #include "Geometry/Intersect.h"
 #include "Geometry/Packets.h"
 #include "Geometry/Primitives.h"
+#include "Sampling/LightBvh.h"
 #include "Scene/Scene.h"
 
 namespace rt::cpu
@@ -43,6 +44,9 @@ public:
     std::uint32_t emitterCount() const { return m_emitterCount; }
     /// The emitters' power alias table (Sampling/LightPower.h) for NEE's power selection.
     const shader::AliasEntry* lightAlias() const { return m_lightAlias.data(); }
+    /// The emitters' light BVH (Sampling/LightBvh.h) for NEE's bvh selection: its nodes and each emitter's leaf.
+    const shader::LightBvhNode* lightBvh() const { return m_lightBvh.nodes.data(); }
+    const std::uint32_t* lightBvhLeaves() const { return m_lightBvh.leaves.data(); }
     TraceRay::Needs rayNeeds() const { return {!m_triangles.empty(), !m_media.empty(), !m_bvh4.rootIsLeaf}; }
 
     /// Closest hit along r in (tMin, tMax). Consumes random numbers only when the ray crosses a medium.
@@ -114,6 +118,7 @@ private:
     std::vector<std::uint32_t> m_quadLights;
     std::vector<std::uint32_t> m_triangleLights;
     std::vector<shader::AliasEntry> m_lightAlias;
+    LightBvh m_lightBvh;
     std::uint32_t m_emitterCount = 0;
     std::vector<bool> m_materialNeedsUv; // an image texture reads (u, v): spheres compute them only then
     std::vector<mat3> m_uvFrames; // object-from-world rotations of instanced spheres; [0] = identity

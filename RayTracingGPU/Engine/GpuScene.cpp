@@ -6,6 +6,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "Error.h"
+#include "Sampling/LightBvh.h"
 #include "Sampling/LightPower.h"
 #include "Scene/Perlin.h"
 #include "Vulkan/UploadBatch.h"
@@ -47,6 +48,9 @@ GpuScene::GpuScene(const vk::Device& device, const vk::CommandPool& pool, const 
     m_buffers.textures = upload.buffer(scene.textures, kStorage);
     m_buffers.lights = upload.buffer(scene.lights, kStorage);
     m_buffers.lightAlias = upload.buffer(lightAliasTable(scene), kStorage);
+    const LightBvh lightBvh = buildLightBvh(scene);
+    m_buffers.lightBvh = upload.buffer(lightBvh.nodes, kStorage);
+    m_buffers.lightBvhLeaves = upload.buffer(lightBvh.leaves, kStorage);
     m_buffers.perlin = upload.buffer(&perlinTables(), sizeof(shader::PerlinData), kStorage);
     m_buffers.records = upload.buffer(layout.records, kStorage);
     m_buffers.primitiveLights = upload.buffer(layout.primitiveLights, kStorage);

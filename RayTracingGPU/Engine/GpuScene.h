@@ -34,7 +34,7 @@ public:
 
     struct Buffers
     {
-        vk::Buffer materials, textures, lights, lightAlias, perlin, records, primitiveLights, positions, uvs, triangles,
+        vk::Buffer materials, textures, lights, lightAlias, lightBvh, lightBvhLeaves, perlin, records, primitiveLights, positions, uvs, triangles,
             triangleMaterials, spheres, media, aabbs;
     };
     const Buffers& buffers() const { return m_buffers; }

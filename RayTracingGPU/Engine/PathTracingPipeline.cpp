@@ -41,7 +41,7 @@ std::vector<vk::DescriptorBinding> bindingsOf(std::uint32_t maxImages)
     for (std::uint32_t binding : {kBindingMaterials, kBindingTextures, kBindingLights, kBindingPerlin,
                                   kBindingInstances, kBindingPositions, kBindingUvs, kBindingTriangles,
                                   kBindingTriangleMaterials, kBindingSpheres, kBindingMedia, kBindingCounters,
-                                  kBindingPrimitiveLights, kBindingLightAlias})
+                                  kBindingPrimitiveLights, kBindingLightAlias, kBindingLightBvh, kBindingLightBvhLeaves})
         add(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     add(kBindingImages, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, maxImages,
         VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT | VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT);
@@ -124,6 +124,8 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
         {kBindingInstances, &buffers.records},
         {kBindingPrimitiveLights, &buffers.primitiveLights},
         {kBindingLightAlias, &buffers.lightAlias},
+        {kBindingLightBvh, &buffers.lightBvh},
+        {kBindingLightBvhLeaves, &buffers.lightBvhLeaves},
         {kBindingPositions, &buffers.positions},
         {kBindingUvs, &buffers.uvs},
         {kBindingTriangles, &buffers.triangles},

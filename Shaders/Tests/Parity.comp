@@ -12,11 +12,14 @@ layout(binding = 0, scalar) readonly buffer Inputs { uint inputs[]; };
 layout(binding = 1, scalar) writeonly buffer Outputs { uint outputs[]; };
 layout(binding = 2, scalar) readonly buffer PerlinBlock { PerlinData perlinTables; };
 layout(binding = 3, scalar) readonly buffer LightBlock { LightData lights[]; };
+layout(binding = 4, scalar) readonly buffer LightBvhBlock { LightBvhNode lightBvh[]; };
+layout(binding = 5, scalar) readonly buffer LightBvhLeafBlock { uint lightBvhLeaves[]; };
 layout(push_constant, scalar) uniform Push { uint mode; uint caseCount; uint inputStride; uint outputStride; };
 
 #include "Geometry/Sphere.glsl"
 #include "Random.glsl"
 #include "RayOffset.glsl"
+#include "Shared/LightBvh.h"
 #include "Shared/LightSampling.h"
 #include "Shared/Warps.h"
 #include "Textures/Perlin.glsl"
@@ -89,4 +92,15 @@ void main()
     }
     else if (mode == 6u) // Srgb: 8-bit code -> linear, as a UNORM texel fetch gives it to srgbToLinear
         outFloat(0u, srgbToLinear(vec3(float(inputs[inBase]) / 255.0)).x);
+    else if (mode == 7u) // LightBvh: (p, n, twoSided, u) -> selected light, its pmf, lightBvhPmf of it
+    {
+        vec3 p = inVec3(0u);
+        vec3 n = inVec3(3u);
+        bool twoSided = inputs[inBase + 6u] != 0u;
+        float pmf;
+        uint light = selectLightBvh(p, n, twoSided, inFloat(7u), pmf);
+        outUint(0u, light);
+        outFloat(1u, pmf);
+        outFloat(2u, light == kNoIndex ? 0.0 : lightBvhPmf(light, p, n, twoSided));
+    }
 }

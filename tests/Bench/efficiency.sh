@@ -8,7 +8,7 @@ set -eu
 bin=$1 out=$2 engine=$3 width=$4 referenceSpp=$5 sppList=$6
 shift 6
 mkdir -p "$out"
-# estimator, light sampler, light selection, Russian roulette
+# estimator, light sampler, light selection, Russian roulette; STRATEGIES="nee-mis projected bvh on;..." picks others
 strategies=(
     "mixture solid-angle power on"
     "mixture solid-angle power off"
@@ -18,7 +18,9 @@ strategies=(
     "nee-mis projected uniform on"
     "nee-mis projected power on"
     "nee-mis projected power off"
+    "nee-mis projected bvh on"
 )
+if [ -n "${STRATEGIES:-}" ]; then IFS=';' read -r -a strategies <<<"$STRATEGIES"; fi
 for scene in "$@"; do
     reference="$out/$scene-reference.pfm"
     if [ "$engine" = gpu ]; then app="$bin/ray-tracing-gpu"; else app="$bin/ray-tracing-cpu --engine $engine"; fi

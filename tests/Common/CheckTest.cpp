@@ -139,7 +139,7 @@ TEST(Format, RenderSettings)
     RenderSettings s;
     s.spp = 16;
     EXPECT_EQ(fmt::format("{}", s),
-              "spp 16, depth 50, 600x600, random, nee-mis, projected light sampling, power light selection, Russian roulette on, unidirectional light on, seed 0");
+              "spp 16, depth 50, 600x600, random, nee-mis, projected light sampling, bvh light selection, Russian roulette on, unidirectional light on, seed 0");
 
     s.spp = 10;
     s.depth = 8;
@@ -150,7 +150,7 @@ TEST(Format, RenderSettings)
     s.unidirectionalLight = false;
     s.seed = 7;
     EXPECT_EQ(fmt::format("{}", s),
-              "spp 10, depth 8, 400x225, stratified, bsdf, projected light sampling, power light selection, Russian roulette on, unidirectional light off, seed 7");
+              "spp 10, depth 8, 400x225, stratified, bsdf, projected light sampling, bvh light selection, Russian roulette on, unidirectional light off, seed 7");
 }
 } // namespace
 } // namespace rt

@@ -68,9 +68,12 @@ TEST(AliasTable, SelectionFollowsThePmfAndNeverPicksAZeroWeight)
     constexpr long kSamples = 1'000'000;
     const auto h = test::histogram(n, kSamples, 42, [&](Rng& rng) {
         float pmf = 0.0f;
-        const auto light = shader::selectLight(table.data(), LightSelection::Power, rng.nextFloat(), n, pmf);
+        const auto light = shader::selectLight(table.data(), nullptr, LightSelection::Power, rng.nextFloat(), n,
+                                               vec3(0.0f), vec3(0.0f), false, pmf);
         EXPECT_EQ(pmf, table[light].pmf);
-        EXPECT_EQ(shader::lightSelectionPmf(table.data(), LightSelection::Power, light, n), pmf);
+        EXPECT_EQ(shader::lightSelectionPmf(table.data(), nullptr, nullptr, LightSelection::Power, light, n,
+                                            vec3(0.0f), vec3(0.0f), false),
+                  pmf);
         return int(light);
     });
     EXPECT_EQ(h.counts[1], 0.0);
@@ -88,7 +91,8 @@ TEST(LightSelection, UniformGivesEveryLightOneOverN)
     for (const float u : {0.0f, 0.3f, 0.999999f})
     {
         float pmf = 0.0f;
-        const auto light = shader::selectLight(none.data(), LightSelection::Uniform, u, 7, pmf);
+        const auto light = shader::selectLight(none.data(), nullptr, LightSelection::Uniform, u, 7, vec3(0.0f),
+                                               vec3(0.0f), false, pmf);
         EXPECT_EQ(light, std::uint32_t(u * 7.0f));
         EXPECT_FLOAT_EQ(pmf, 1.0f / 7.0f);
     }

@@ -20,7 +20,7 @@ struct Variant
     Estimator estimator;
     bool russianRoulette;
     LightSampler lightSampler = LightSampler::Projected;
-    LightSelection lightSelection = LightSelection::Power;
+    LightSelection lightSelection = LightSelection::Bvh;
     // More samples for the noisier estimators: their rare bright paths (a BSDF ray that finds a small light)
     // are what 4 x 32 samples miss, and the Z-test's variance, estimated from the same samples, misses them
     // too (white-spheres' dark corner: BSDF 0 +- 0 against NEE's 0.0015, |Z| 16).
@@ -51,10 +51,12 @@ TEST_P(CpuEstimatorAgreement, EveryEstimatorMatchesNeeMis)
         return estimateBlocks(engine, scene, settings);
     };
     const BlockEstimate reference = blocksOf({Estimator::NeeMis, true});
-    for (const Variant v : {Variant{Estimator::Nee, true}, Variant{Estimator::Mixture, true, LightSampler::Projected, LightSelection::Power, 4},
-                            Variant{Estimator::BsdfOnly, true, LightSampler::Projected, LightSelection::Power, 16}, Variant{Estimator::NeeMis, false},
+    for (const Variant v : {Variant{Estimator::Nee, true}, Variant{Estimator::Mixture, true, LightSampler::Projected, LightSelection::Bvh, 4},
+                            Variant{Estimator::BsdfOnly, true, LightSampler::Projected, LightSelection::Bvh, 16}, Variant{Estimator::NeeMis, false},
                             Variant{Estimator::NeeMis, true, LightSampler::Area}, Variant{Estimator::Nee, true, LightSampler::Area},
                             Variant{Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Uniform},
+                            Variant{Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Power},
+                            Variant{Estimator::Nee, true, LightSampler::Projected, LightSelection::Power},
                             Variant{Estimator::NeeMis, true, LightSampler::SolidAngle}})
     {
         const auto failures = disagreeingBlocks(reference, blocksOf(v), kMaxZ);

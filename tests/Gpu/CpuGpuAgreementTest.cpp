@@ -26,7 +26,7 @@ struct AgreementCase
     Estimator estimator;
     bool russianRoulette = true;
     LightSampler lightSampler = LightSampler::Projected;
-    LightSelection lightSelection = LightSelection::Power;
+    LightSelection lightSelection = LightSelection::Bvh;
 };
 
 void PrintTo(const AgreementCase& c, std::ostream* os)
@@ -106,6 +106,8 @@ std::vector<AgreementCase> cases()
         out.push_back({id, Estimator::NeeMis, true, LightSampler::Area});
     for (const char* id : {"cornell-box-lights", "rtnw-final"})
         out.push_back({id, Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Uniform});
+    for (const char* id : {"cornell-box-lights", "many-lights"})
+        out.push_back({id, Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Power});
     for (const char* id : {"sphere-light-closeup", "rect-light-closeup"})
         out.push_back({id, Estimator::NeeMis, true, LightSampler::SolidAngle});
     return out;
@@ -117,8 +119,8 @@ std::string caseName(const ::testing::TestParamInfo<AgreementCase>& param)
     std::string name = c.scene + "_" + toString(c.estimator);
     if (c.lightSampler != LightSampler::Projected)
         name += std::string("_") + toString(c.lightSampler);
-    if (c.lightSelection == LightSelection::Uniform)
-        name += "_uniform";
+    if (c.lightSelection != LightSelection::Bvh)
+        name += std::string("_") + toString(c.lightSelection);
     if (!c.russianRoulette)
         name += "_no_roulette";
     return ::rt::test::testNameOf(name); // '-' -> '_'

@@ -14,9 +14,12 @@
 #include "Image/ImageIO.h"
 #include "Math/RayOffset.h"
 #include "Random/Pcg.h"
+#include "Sampling/LightBvh.h"
 #include "Sampling/LightSampling.h"
 #include "Sampling/Warps.h"
 #include "Scene/Perlin.h"
+#include "Scenes/Catalogue.h"
+#include "Shared/LightBvh.h"
 
 namespace rt::gpu::test
 {
@@ -31,32 +34,37 @@ enum Mode : std::uint32_t
     kLightSampling = 3,
     kPerlin = 4,
     kSphere = 5,
-    kSrgb = 6
+    kSrgb = 6,
+    kLightBvh = 7
 };
 struct Layout
 {
     std::uint32_t inputWords;
     std::uint32_t outputWords;
 };
-constexpr Layout kLayouts[] = {{3, 8}, {7, 3}, {3, 13}, {10, 6}, {3, 2}, {10, 3}, {1, 1}};
+constexpr Layout kLayouts[] = {{3, 8}, {7, 3}, {3, 13}, {10, 6}, {3, 2}, {10, 3}, {1, 1}, {8, 3}};
 
 std::uint32_t bits(float f) { return std::bit_cast<std::uint32_t>(f); }
 float asFloat(std::uint32_t u) { return std::bit_cast<float>(u); }
 
 /// Runs `mode` over `inputs` (inputWords per case); returns outputWords per case.
 std::vector<std::uint32_t> runParity(Mode mode, const std::vector<std::uint32_t>& inputs,
-                                     const std::vector<LightData>& lights = {})
+                                     const std::vector<LightData>& lights = {}, const LightBvh* lightBvh = nullptr)
 {
     const Layout layout = kLayouts[mode];
     const auto cases = static_cast<std::uint32_t>(inputs.size() / layout.inputWords);
     const std::uint32_t push[4] = {mode, cases, layout.inputWords, layout.outputWords};
     const std::vector<LightData> lightBuffer = lights.empty() ? std::vector<LightData>(1) : lights;
+    const LightBvh noBvh{std::vector<LightBvhNode>(1), std::vector<std::uint32_t>(1)};
+    const LightBvh& bvh = lightBvh != nullptr ? *lightBvh : noBvh;
     const std::vector<std::byte> out = runKernel(
         sharedEngine()->context(), executableDir() / "shaders" / "Tests" / "Parity.comp.spv",
         {{inputs.data(), inputs.size() * 4},
          {nullptr, std::size_t(cases) * layout.outputWords * 4},
          {&perlinTables(), sizeof(shader::PerlinData)},
-         {lightBuffer.data(), lightBuffer.size() * sizeof(LightData)}},
+         {lightBuffer.data(), lightBuffer.size() * sizeof(LightData)},
+         {bvh.nodes.data(), bvh.nodes.size() * sizeof(LightBvhNode)},
+         {bvh.leaves.data(), bvh.leaves.size() * 4}},
         1, push, sizeof(push), (cases + 63) / 64);
     std::vector<std::uint32_t> words(out.size() / 4);
     std::memcpy(words.data(), out.data(), out.size());
@@ -205,6 +213,51 @@ TEST(GpuShaderParity, LightSamplersMatchCommon)
         EXPECT_NEAR(asFloat(out[6 * c + 5]), pdfOfWi, pdfTolerance * pdfOfWi + 1e-6f) << "lightPdf, case " << c;
     }
     EXPECT_GT(compared, int(kCases) / 2);
+}
+
+TEST(GpuShaderParity, LightBvhSelectionMatchesCommon)
+{
+    // many-lights' light BVH (1012 emitters) descended from points of the room with and without a receiver
+    // normal: the GPU's compilation of Shared/LightBvh.h selects the light C++ selects, with its pmf.
+    RT_REQUIRE_GPU();
+    const Scene scene = makeScene("many-lights");
+    const LightBvh bvh = buildLightBvh(scene);
+    constexpr std::size_t kCases = 2048;
+    const std::vector<float> r = uniforms(6 * kCases, 0.0f, 1.0f, 11u);
+    std::vector<std::uint32_t> in;
+    for (std::size_t c = 0; c < kCases; ++c)
+    {
+        const vec3 p(555.0f * r[6 * c], 555.0f * r[6 * c + 1], 555.0f * r[6 * c + 2]);
+        const vec3 n = c % 4 == 0 ? vec3(0.0f) : shader::sampleUniformSphere({r[6 * c + 3], r[6 * c + 4]});
+        in.insert(in.end(), {bits(p.x), bits(p.y), bits(p.z), bits(n.x), bits(n.y), bits(n.z),
+                             std::uint32_t(c % 3 == 0), bits(r[6 * c + 5])});
+    }
+    const std::vector<std::uint32_t> out = runParity(kLightBvh, in, scene.lights, &bvh);
+    int differentLight = 0;
+    int selected = 0;
+    for (std::size_t c = 0; c < kCases; ++c)
+    {
+        const vec3 p = vec3At(in, 8 * c);
+        const vec3 n = vec3At(in, 8 * c + 3);
+        const bool twoSided = in[8 * c + 6] != 0;
+        float pmf = 0.0f;
+        const std::uint32_t light =
+            shader::selectLightBvh(bvh.nodes.data(), p, n, twoSided, asFloat(in[8 * c + 7]), pmf);
+        if (out[3 * c] != light)
+        {
+            // u on a boundary between two children, which rounding moves: rare.
+            ++differentLight;
+            continue;
+        }
+        EXPECT_NEAR(asFloat(out[3 * c + 1]), pmf, 1e-4f * pmf) << "case " << c;
+        if (light == kNoIndex)
+            continue;
+        ++selected;
+        const float pmfOfLight = shader::lightBvhPmf(bvh.nodes.data(), bvh.leaves.data(), light, p, n, twoSided);
+        EXPECT_NEAR(asFloat(out[3 * c + 2]), pmfOfLight, 1e-4f * pmfOfLight) << "case " << c;
+    }
+    EXPECT_LE(differentLight, int(kCases) / 200);
+    EXPECT_GT(selected, int(kCases) / 2);
 }
 
 TEST(GpuShaderParity, PerlinNoiseMatchesCommon)

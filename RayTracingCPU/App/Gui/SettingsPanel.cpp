@@ -173,7 +173,7 @@ void SettingsPanel::drawRenderingParameters(Session& session)
             "over the directions it covers (sphere cones, spherical rectangles)");
     if (ImGui::BeginCombo("Light selection", toString(s.lightSelection)))
     {
-        for (LightSelection l : {LightSelection::Uniform, LightSelection::Power})
+        for (LightSelection l : {LightSelection::Uniform, LightSelection::Power, LightSelection::Bvh})
             if (ImGui::Selectable(toString(l), l == s.lightSelection))
                 session.setLightSelection(l);
         ImGui::EndCombo();

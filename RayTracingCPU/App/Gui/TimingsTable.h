@@ -28,7 +28,7 @@ struct TimingKey
     PixelSampling sampling = PixelSampling::Random;
     Estimator estimator = Estimator::NeeMis;
     LightSampler lightSampler = LightSampler::Projected;
-    LightSelection lightSelection = LightSelection::Power;
+    LightSelection lightSelection = LightSelection::Bvh;
     bool russianRoulette = true;
     bool unidirectionalLight = true;
 

@@ -69,7 +69,7 @@ void rayTracingSection(Controls& controls, const WindowState& state)
     const LightSelection lightSelection = image.request.settings.lightSelection;
     if (ImGui::BeginCombo("Light selection", toString(lightSelection)))
     {
-        for (LightSelection l : {LightSelection::Uniform, LightSelection::Power})
+        for (LightSelection l : {LightSelection::Uniform, LightSelection::Power, LightSelection::Bvh})
             if (ImGui::Selectable(toString(l), l == lightSelection))
                 controls.setLightSelection(l);
         ImGui::EndCombo();
