@@ -164,24 +164,20 @@ private:
     void write(std::uint32_t index, const Bounds& b, std::uint32_t child, std::uint32_t parent, bool leaf)
     {
         LightBvhNode& n = m_out.nodes[index];
-        n.boundsMin = vec3(b.lo);
-        n.boundsMax = vec3(b.hi);
-        // Float boxes and cones rounded outwards, so that they still bound what they bounded in double.
-        for (int k = 0; k < 3; ++k)
-        {
-            if (double(n.boundsMin[k]) > b.lo[k])
-                n.boundsMin[k] = std::nextafter(n.boundsMin[k], -std::numeric_limits<float>::infinity());
-            if (double(n.boundsMax[k]) < b.hi[k])
-                n.boundsMax[k] = std::nextafter(n.boundsMax[k], std::numeric_limits<float>::infinity());
-        }
+        // The sphere through the box's corners, in float about the rounded centre: its radius grows by the
+        // rounding of the centre and by 1e-6 of the coordinates' magnitude (16 float ulps: the rounding of a
+        // point the engines compute on the light), so that it holds every such point.
+        n.centre = vec3(b.centre());
+        const double radius = 0.5 * glm::length(b.hi - b.lo);
+        const double slack = glm::length(dvec3(n.centre) - b.centre()) + 1e-6 * (glm::length(b.centre()) + radius);
+        n.radius2 = static_cast<float>((radius + slack) * (radius + slack));
         n.power = static_cast<float>(b.power);
         n.axis = vec3(b.normals.w);
         const bool whole = b.normals.theta >= std::numbers::pi;
         n.cosThetaO = whole ? -1.0f : static_cast<float>(std::cos(b.normals.theta + (leaf ? 0.0 : 1e-6)));
         n.cosThetaE = static_cast<float>(std::cos(b.thetaE));
-        n.child = child;
+        n.child = leaf ? shader::kLightBvhLeaf | child : child;
         n.parent = parent;
-        n.leaf = leaf ? 1u : 0u;
     }
 
     /// Reorders items[begin, end) into two non-empty halves and returns where the second starts.
@@ -264,9 +260,8 @@ LightBvh buildLightBvh(const Scene& scene)
     if (items.empty())
     {
         LightBvhNode empty{};
-        empty.child = kNoIndex;
+        empty.child = shader::kLightBvhLeaf;
         empty.parent = kNoIndex;
-        empty.leaf = 1u;
         bvh.nodes.push_back(empty);
         return bvh;
     }

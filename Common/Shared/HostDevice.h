@@ -135,21 +135,23 @@ struct AliasEntry
 
 /// One node of the light BVH (Shared/LightBvh.h; built by Sampling/LightBvh.h), depth first: an interior
 /// node's first child follows it, its second is at `child`; a leaf is one emitter. What it bounds, for every
-/// emitter below it: their points (the box, world space), their summed power, and the directions they emit
-/// in: within theta_e of some direction within theta_o of `axis` (Estevez Conty & Kulla 2018, "Importance
-/// Sampling of Many Lights with Adaptive Tree Splitting", HPG, §4.1; pbrt-v4's LightBounds).
+/// emitter below it: their points (the sphere around their box, world space), their summed power, and the
+/// directions they emit in: within theta_e of some direction within theta_o of `axis` (Estevez Conty & Kulla
+/// 2018, "Importance Sampling of Many Lights with Adaptive Tree Splitting", HPG, §4.1; pbrt-v4's
+/// LightBounds). Three 16-byte words: the GPU reads a node in three aligned loads.
 struct LightBvhNode
 {
-    vec3 boundsMin;
+    vec3 centre; // of the box around the emitters' points
+    float radius2; // squared radius of the sphere through the box's corners
+    vec3 axis; // unit axis of the cone of the emitters' normals
+    float cosThetaO; // cos of that cone's half-angle (-1: every direction)
     float power; // summed power of the emitters below (Sampling/LightPower.h's units)
-    vec3 boundsMax;
-    float cosThetaO; // the cone of the emitters' normals: cos of its half-angle (-1: every direction)
-    vec3 axis; // unit axis of that cone
     float cosThetaE; // how far beyond its normal an emitter emits: cos(pi/2) = 0 for diffuse emitters
-    uint child; // interior: index of the second child; leaf: the emitter's index into LightData[]
+    uint child; // interior: index of the second child; leaf: kLightBvhLeaf | the emitter's index into LightData[]
     uint parent; // the parent's index (kNoIndex at the root)
-    uint leaf; // 1: a leaf
 };
+
+RT_CONST(uint, kLightBvhLeaf, 0x80000000u) // LightBvhNode::child's flag of a leaf
 
 struct LightData
 {
@@ -359,7 +361,7 @@ struct PreviewPushConstants
 
 #ifdef __cplusplus
 static_assert(sizeof(RenderUniforms) == 176);
-static_assert(sizeof(LightBvhNode) == 60);
+static_assert(sizeof(LightBvhNode) == 48);
 static_assert(offsetof(RenderUniforms, background0) == 96);
 static_assert(offsetof(RenderUniforms, sampling) == 128);
 static_assert(sizeof(TracePushConstants) == 8);

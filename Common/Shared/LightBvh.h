@@ -43,9 +43,8 @@ RT_FN float sinSubClamped(float sinA, float cosA, float sinB, float cosB)
 /// whole sphere is below the horizon.
 RT_FN float lightBvhImportance(RT_IN(LightBvhNode) node, vec3 p, vec3 n, bool twoSided)
 {
-    const vec3 centre = 0.5f * (node.boundsMin + node.boundsMax);
-    const float radius2 = 0.25f * lengthSquared(node.boundsMax - node.boundsMin);
-    const vec3 toCentre = centre - p;
+    const float radius2 = node.radius2;
+    const vec3 toCentre = node.centre - p;
     const float distance2 = lengthSquared(toCentre);
     // The cone of directions from p that can reach the bounding sphere: half-angle theta_b.
     float sinB = 0.0f;
@@ -85,11 +84,12 @@ RT_FN float lightBvhImportance(RT_IN(LightBvhNode) node, vec3 p, vec3 n, bool tw
 
 /// The probability of the first child of interior node `index` at (p, n): its share of the two children's
 /// importance, or -1 when neither can contribute.
-RT_FN float lightBvhFirstChildProbability(RT_ARRAY(LightBvhNode, lightBvh) uint index, vec3 p, vec3 n,
+/// `child` is the node's second child.
+RT_FN float lightBvhFirstChildProbability(RT_ARRAY(LightBvhNode, lightBvh) uint index, uint child, vec3 p, vec3 n,
                                           bool twoSided)
 {
     const float first = lightBvhImportance(lightBvh[index + 1u], p, n, twoSided);
-    const float second = lightBvhImportance(lightBvh[lightBvh[index].child], p, n, twoSided);
+    const float second = lightBvhImportance(lightBvh[child], p, n, twoSided);
     const float total = first + second;
     return total > 0.0f ? first / total : -1.0f;
 }
@@ -104,13 +104,14 @@ RT_FN uint selectLightBvh(RT_ARRAY(LightBvhNode, lightBvh) vec3 p, vec3 n, bool 
     uint index = 0u;
     for (uint level = 0u; level < kLightBvhMaxDepth; ++level)
     {
-        if (lightBvh[index].leaf != 0u)
+        const uint child = lightBvh[index].child;
+        if ((child & kLightBvhLeaf) != 0u)
         {
             if (lightBvh[index].power > 0.0f)
-                return lightBvh[index].child;
+                return child & ~kLightBvhLeaf;
             break; // the tree of a scene without powered emitters
         }
-        const float first = lightBvhFirstChildProbability(RT_PASS(lightBvh) index, p, n, twoSided);
+        const float first = lightBvhFirstChildProbability(RT_PASS(lightBvh) index, child, p, n, twoSided);
         if (first < 0.0f)
             break;
         if (u < first)
@@ -123,7 +124,7 @@ RT_FN uint selectLightBvh(RT_ARRAY(LightBvhNode, lightBvh) vec3 p, vec3 n, bool 
         {
             u = min((u - first) / (1.0f - first), kOneMinusEpsilon);
             pmf *= 1.0f - first;
-            index = lightBvh[index].child;
+            index = child;
         }
     }
     pmf = 0.0f;
@@ -144,7 +145,8 @@ RT_FN float lightBvhPmf(RT_ARRAY(LightBvhNode, lightBvh) RT_ARRAY(uint, lightBvh
         const uint parent = lightBvh[index].parent;
         if (parent == kNoIndex)
             break;
-        const float first = lightBvhFirstChildProbability(RT_PASS(lightBvh) parent, p, n, twoSided);
+        const float first =
+            lightBvhFirstChildProbability(RT_PASS(lightBvh) parent, lightBvh[parent].child, p, n, twoSided);
         if (first < 0.0f)
             return 0.0f;
         pmf *= index == parent + 1u ? first : 1.0f - first;

@@ -84,10 +84,30 @@ float pmfOf(const LightBvh& bvh, std::uint32_t light, const vec3& p, const vec3&
     return shader::lightBvhPmf(bvh.nodes.data(), bvh.leaves.data(), light, p, n, twoSided);
 }
 
-bool contains(const LightBvhNode& outer, const LightBvhNode& inner)
+bool isLeaf(const LightBvhNode& node) { return (node.child & shader::kLightBvhLeaf) != 0u; }
+
+/// True when the node's sphere holds every point of the light (its corners; a sphere's box corners).
+bool holds(const LightBvhNode& node, const LightData& l)
 {
-    return glm::all(glm::lessThanEqual(outer.boundsMin, inner.boundsMin)) &&
-           glm::all(glm::lessThanEqual(inner.boundsMax, outer.boundsMax));
+    std::vector<vec3> corners;
+    if (l.shape == LightShape::Sphere)
+    {
+        for (int k = 0; k < 8; ++k)
+            corners.push_back(l.p0 + l.radius * vec3(k & 1 ? 1.0f : -1.0f, k & 2 ? 1.0f : -1.0f, k & 4 ? 1.0f : -1.0f));
+    }
+    else
+    {
+        corners = {l.p0, l.p0 + l.p1, l.p0 + l.p2};
+        if (l.shape == LightShape::Quad)
+            corners.push_back(l.p0 + l.p1 + l.p2);
+    }
+    for (const vec3& c : corners)
+    {
+        const dvec3 d = dvec3(c) - dvec3(node.centre);
+        if (glm::dot(d, d) > double(node.radius2))
+            return false;
+    }
+    return true;
 }
 
 TEST(LightBvh, TreeBoundsItsLightsAndEveryLeafIsFound)
@@ -99,11 +119,12 @@ TEST(LightBvh, TreeBoundsItsLightsAndEveryLeafIsFound)
     for (std::uint32_t i = 0; i < bvh.nodes.size(); ++i)
     {
         const LightBvhNode& node = bvh.nodes[i];
-        if (node.leaf != 0u)
+        if (isLeaf(node))
         {
             ++leaves;
-            ASSERT_LT(node.child, scene.lights.size());
-            EXPECT_EQ(bvh.leaves[node.child], i);
+            const std::uint32_t light = node.child & ~shader::kLightBvhLeaf;
+            ASSERT_LT(light, scene.lights.size());
+            EXPECT_EQ(bvh.leaves[light], i);
             EXPECT_GT(node.power, 0.0f);
             continue;
         }
@@ -111,18 +132,20 @@ TEST(LightBvh, TreeBoundsItsLightsAndEveryLeafIsFound)
         const LightBvhNode& b = bvh.nodes[node.child];
         EXPECT_EQ(a.parent, i);
         EXPECT_EQ(b.parent, i);
-        EXPECT_TRUE(contains(node, a) && contains(node, b)) << "node " << i;
         EXPECT_NEAR(node.power, a.power + b.power, 1e-5f * node.power);
     }
-    // Every node's cone of normals holds the normals of the emitters below it (a sphere's: every direction).
+    // Every node's sphere holds the emitters below it, its cone of normals their normals (a sphere's: every
+    // direction).
     for (std::uint32_t light = 0; light < scene.lights.size(); ++light)
     {
         if (bvh.leaves[light] == kNoIndex)
             continue;
         const LightBvhNode& leaf = bvh.nodes[bvh.leaves[light]];
+        EXPECT_TRUE(holds(leaf, scene.lights[light])) << "light " << light;
         for (std::uint32_t k = leaf.parent; k != kNoIndex; k = bvh.nodes[k].parent)
         {
             const LightBvhNode& node = bvh.nodes[k];
+            EXPECT_TRUE(holds(node, scene.lights[light])) << "light " << light << " under node " << k;
             const float thetaNode = std::acos(node.cosThetaO);
             const float between = std::acos(std::clamp(glm::dot(node.axis, leaf.axis), -1.0f, 1.0f));
             EXPECT_LE(std::min(between + std::acos(leaf.cosThetaO), 3.14159265f), thetaNode + 1e-4f)
