@@ -15,6 +15,14 @@ struct CameraSample
     float time; // in [shutterOpen, shutterClose)
 };
 
+/// The numbers of camera sample `sampleIndex` of `pixel`, by the render's pixel sampling.
+Rng rngForCameraSample(uvec2 pixel, uint sampleIndex)
+{
+    uint pixelIndex = pixel.y * uniforms.width + pixel.x;
+    return uniforms.sampling == PixelSampling_Sobol ? rngForSobolSample(uniforms.seed, pixelIndex, sampleIndex)
+                                                    : rngForSample(uniforms.seed, pixelIndex, sampleIndex);
+}
+
 /// Draws the camera sample of `sampleIndex` from the start of its stream, in the CPU engine's order: pixel
 /// jitter (2), lens (2, only with a thin lens), time (1).
 CameraSample drawCameraSample(inout Rng rng, uvec2 pixel, uint sampleIndex)
@@ -53,7 +61,7 @@ void generateRay(CameraSample cs, out vec3 origin, out vec3 direction)
 /// payload, so they replay the first numbers of the sample's stream; the time stays the same along a path.
 float cameraSampleTime(uvec2 pixel, uint sampleIndex)
 {
-    Rng rng = rngForSample(uniforms.seed, pixel.y * uniforms.width + pixel.x, sampleIndex);
+    Rng rng = rngForCameraSample(pixel, sampleIndex);
     return drawCameraSample(rng, pixel, sampleIndex).time;
 }
 

@@ -16,7 +16,7 @@ float accumulateCameraSamples(uvec2 pixel, uint first, uint count)
     vec4 sum = imageLoad(accumulation, texel);
     for (uint sampleIndex = first; sampleIndex < first + count; ++sampleIndex)
     {
-        Rng rng = rngForSample(uniforms.seed, pixel.y * uniforms.width + pixel.x, sampleIndex);
+        Rng rng = rngForCameraSample(pixel, sampleIndex);
         CameraSample cs = drawCameraSample(rng, pixel, sampleIndex);
         vec3 origin;
         vec3 direction;

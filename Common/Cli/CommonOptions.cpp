@@ -40,7 +40,9 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
     app.add_option("--aspect", o.aspect, "Aspect ratio width/height, e.g. 1 or 1.7778 (default: the scene's)");
     app.add_option("--sampling", o.sampling,
                    "Pixel sampling: random (independent jitter), stratified (floor(sqrt(spp))^2 jittered strata), "
-                   "accumulate (progressive 1-spp passes)")
+                   "accumulate (progressive 1-spp passes) or sobol (every 2D draw of a sample - pixel, lens, light "
+                   "point, BSDF direction - an Owen-scrambled Sobol point over the pixel's samples, Burley 2020: "
+                   "stratified at every power-of-two spp)")
         ->capture_default_str();
     app.add_option("--estimator", o.estimator,
                    "How a path gathers light (default: the scene's: nee-mis, or mixture for the books' scenes). "
@@ -90,7 +92,7 @@ RenderRequest resolveRequest(const CommonOptions& o, const Scene& scene)
     const auto sampling = parsePixelSampling(o.sampling);
     if (!sampling)
         throw UsageError(
-            fmt::format("--sampling must be random, stratified or accumulate (got '{}')", o.sampling));
+            fmt::format("--sampling must be random, stratified, accumulate or sobol (got '{}')", o.sampling));
     s.sampling = *sampling;
     if (o.estimator)
     {

@@ -57,6 +57,7 @@ const char* toString(PixelSampling sampling)
     case PixelSampling::Random: return "random";
     case PixelSampling::Stratified: return "stratified";
     case PixelSampling::Accumulate: return "accumulate";
+    case PixelSampling::Sobol: return "sobol";
     }
     return "?";
 }
@@ -92,6 +93,8 @@ std::optional<PixelSampling> parsePixelSampling(const std::string& text)
         return PixelSampling::Stratified;
     if (text == "accumulate")
         return PixelSampling::Accumulate;
+    if (text == "sobol")
+        return PixelSampling::Sobol;
     return std::nullopt;
 }
 

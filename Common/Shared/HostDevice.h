@@ -96,6 +96,7 @@ RT_ENUM_BEGIN(PixelSampling)
 RT_ENUM_VALUE(PixelSampling, Random, 0)     // uniform jitter in the pixel, every sample independent
 RT_ENUM_VALUE(PixelSampling, Stratified, 1) // floor(sqrt(spp))^2 jittered strata; true spp is that square
 RT_ENUM_VALUE(PixelSampling, Accumulate, 2) // random jitter, rendered as progressive 1-spp passes
+RT_ENUM_VALUE(PixelSampling, Sobol, 3)      // every 2D draw of a sample Owen-scrambled Sobol over the pixel's samples (Shared/Sobol.h)
 RT_ENUM_END(PixelSampling)
 
 RT_CONST(uint, kNoIndex, 0xFFFFFFFFu)

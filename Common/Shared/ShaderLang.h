@@ -42,6 +42,15 @@ inline float clamp(float x, float lo, float hi) { return min(max(x, lo), hi); } 
 inline float roundEven(float x) { return std::nearbyint(x); } // the default rounding mode: to nearest, ties even
 /// +1 or -1 with the sign bit of x (-0 gives -1): copysign(1, x). GLSL's sign() returns 0 for 0.
 inline float signNotZero(float x) { return std::copysign(1.0f, x); }
+/// GLSL's bitfieldReverse for 32 bits: bit k moves to bit 31 - k.
+inline uint bitfieldReverse(uint x)
+{
+    x = ((x >> 1u) & 0x55555555u) | ((x & 0x55555555u) << 1u);
+    x = ((x >> 2u) & 0x33333333u) | ((x & 0x33333333u) << 2u);
+    x = ((x >> 4u) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4u);
+    x = ((x >> 8u) & 0x00FF00FFu) | ((x & 0x00FF00FFu) << 8u);
+    return (x >> 16u) | (x << 16u);
+}
 } // namespace rt::shader
 
 #define RT_FN inline

@@ -78,6 +78,7 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
     Frame& f = *m_frame;
     const int width = f.sum.width();
     const bool stratified = f.settings.sampling == PixelSampling::Stratified;
+    const bool sobol = f.settings.sampling == PixelSampling::Sobol;
     const std::uint32_t strata = static_cast<std::uint32_t>(f.settings.strata());
     const float invStrata = 1.0f / float(strata);
     const std::uint32_t seed = f.settings.seed;
@@ -105,23 +106,22 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
             vec3 sum = sums.at(x, y);
             for (std::uint32_t s = firstSample; s < firstSample + count; ++s)
             {
-                Rng rng = Rng::forSample(seed, pixelIndex, s);
-                const float jx = rng.nextFloat();
-                const float jy = rng.nextFloat();
+                Rng rng = sobol ? Rng::forSobolSample(seed, pixelIndex, s) : Rng::forSample(seed, pixelIndex, s);
+                const vec2 jitter = rng.next2D();
                 float fx, fy;
                 if (stratified)
                 {
-                    fx = float(x) + (float(s % strata) + jx) * invStrata; // stratum (s % n, s / n)
-                    fy = float(y) + (float(s / strata) + jy) * invStrata;
+                    fx = float(x) + (float(s % strata) + jitter.x) * invStrata; // stratum (s % n, s / n)
+                    fy = float(y) + (float(s / strata) + jitter.y) * invStrata;
                 }
                 else
                 {
-                    fx = float(x) + jx;
-                    fy = float(y) + jy;
+                    fx = float(x) + jitter.x;
+                    fy = float(y) + jitter.y;
                 }
                 vec2 lens(0.0f);
                 if (camera.thinLens)
-                    lens = vec2(rng.nextFloat(), rng.nextFloat());
+                    lens = rng.next2D();
                 const float time = rng.nextFloat();
                 const vec3 l = tracePath(scene, options, camera.generateRay(fx, fy, lens, time), rng, t.segments);
                 if (isFinite(l))

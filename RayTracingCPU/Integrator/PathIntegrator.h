@@ -88,7 +88,7 @@ inline vec3 estimateDirect(const CpuScene& cs, const PathOptions& options, const
     const std::uint32_t picked = shader::selectLight(cs.lightAlias(), cs.lightBvh(), options.lightSelection,
                                                      rng.nextFloat(), emitters, origin, receiver,
                                                      !options.unidirectionalLight, pmf);
-    const vec2 u(rng.nextFloat(), rng.nextFloat());
+    const vec2 u = rng.next2D();
     if (picked == kNoIndex)
         return vec3(0.0f); // the light BVH proved that no emitter reaches this point
     const LightData& light = scene.lights[picked];
@@ -166,7 +166,7 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
         case MaterialType::DiffuseLight: return radiance;
         case MaterialType::Metal:
         {
-            const vec2 u(rng.nextFloat(), rng.nextFloat());
+            const vec2 u = rng.next2D();
             if (!scatterMetal(ray.direction, ns, mat.fuzz, u, wi))
                 return radiance;
             throughput *= evalTexture(scene, mat.albedoTexture, si.uv, si.p);
@@ -189,7 +189,7 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
                     radiance += throughput * estimateDirect(cs, options, origin, ns, phase, albedo, ray.time, rng,
                                                             segments);
                 }
-                const vec2 u(rng.nextFloat(), rng.nextFloat());
+                const vec2 u = rng.next2D();
                 wi = shader::sampleDiffuse(phase, ns, u);
                 throughput *= albedo;
                 if (nee)
@@ -200,7 +200,7 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
                 break;
             }
             const float choice = rng.nextFloat();
-            const vec2 u(rng.nextFloat(), rng.nextFloat());
+            const vec2 u = rng.next2D();
             std::size_t sampled = std::size_t(-1);
             float sampledPdf = 0.0f;
             if (choice < 0.5f)

@@ -92,6 +92,12 @@ void main()
     }
     else if (mode == 6u) // Srgb: 8-bit code -> linear, as a UNORM texel fetch gives it to srgbToLinear
         outFloat(0u, srgbToLinear(vec3(float(inputs[inBase]) / 255.0)).x);
+    else if (mode == 8u) // Sobol: (seed, pixel, sample) -> 4 nextFloat2 of the Owen-scrambled Sobol stream
+    {
+        Rng rng = rngForSobolSample(inputs[inBase], inputs[inBase + 1u], inputs[inBase + 2u]);
+        for (uint k = 0u; k < 8u; k += 2u)
+            outVec2(k, nextFloat2(rng));
+    }
     else if (mode == 7u) // LightBvh: (p, n, twoSided, u) -> selected light, its pmf, lightBvhPmf of it
     {
         vec3 p = inVec3(0u);

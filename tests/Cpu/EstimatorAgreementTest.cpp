@@ -25,6 +25,7 @@ struct Variant
     // are what 4 x 32 samples miss, and the Z-test's variance, estimated from the same samples, misses them
     // too (white-spheres' dark corner: BSDF 0 +- 0 against NEE's 0.0015, |Z| 16).
     int sppFactor = 1;
+    PixelSampling sampling = PixelSampling::Random;
 };
 
 class CpuEstimatorAgreement : public ::testing::TestWithParam<std::string>
@@ -48,6 +49,7 @@ TEST_P(CpuEstimatorAgreement, EveryEstimatorMatchesNeeMis)
         settings.spp *= v.sppFactor;
         settings.lightSampler = v.lightSampler;
         settings.lightSelection = v.lightSelection;
+        settings.sampling = v.sampling;
         return estimateBlocks(engine, scene, settings);
     };
     const BlockEstimate reference = blocksOf({Estimator::NeeMis, true});
@@ -57,12 +59,13 @@ TEST_P(CpuEstimatorAgreement, EveryEstimatorMatchesNeeMis)
                             Variant{Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Uniform},
                             Variant{Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Power},
                             Variant{Estimator::Nee, true, LightSampler::Projected, LightSelection::Power},
+                            Variant{Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Bvh, 1, PixelSampling::Sobol},
                             Variant{Estimator::NeeMis, true, LightSampler::SolidAngle}})
     {
         const auto failures = disagreeingBlocks(reference, blocksOf(v), kMaxZ);
         for (const std::string& f : failures)
             ADD_FAILURE() << "A = nee-mis, B = " << toString(v.estimator) << " (" << toString(v.lightSampler) << ", "
-                          << toString(v.lightSelection)
+                          << toString(v.lightSelection) << ", " << toString(v.sampling)
                           << (v.russianRoulette ? "" : ", without roulette") << "): " << f;
     }
 }

@@ -27,12 +27,13 @@ struct AgreementCase
     bool russianRoulette = true;
     LightSampler lightSampler = LightSampler::Projected;
     LightSelection lightSelection = LightSelection::Bvh;
+    PixelSampling sampling = PixelSampling::Random;
 };
 
 void PrintTo(const AgreementCase& c, std::ostream* os)
 {
     *os << c.scene << " (" << toString(c.estimator) << ", " << toString(c.lightSampler) << ", "
-        << toString(c.lightSelection)
+        << toString(c.lightSelection) << ", " << toString(c.sampling)
         << (c.russianRoulette ? "" : ", no roulette") << ")";
 }
 
@@ -45,6 +46,7 @@ void expectAgreement(const AgreementCase& c, RenderSettings s, double maxZ)
     s.russianRoulette = c.russianRoulette;
     s.lightSampler = c.lightSampler;
     s.lightSelection = c.lightSelection;
+    s.sampling = c.sampling;
     s.unidirectionalLight = scene.defaults.unidirectionalLight;
 
     cpu::CpuEngine cpuEngine(EngineKind::Multi);
@@ -110,6 +112,10 @@ std::vector<AgreementCase> cases()
         out.push_back({id, Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Power});
     for (const char* id : {"sphere-light-closeup", "rect-light-closeup"})
         out.push_back({id, Estimator::NeeMis, true, LightSampler::SolidAngle});
+    // Sobol draws on both engines; rtnw-final's moving spheres replay the sample's time in the GPU's
+    // intersection shaders.
+    for (const char* id : {"cornell-box-lights", "rtnw-final", "sphere-light-closeup"})
+        out.push_back({id, Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Bvh, PixelSampling::Sobol});
     return out;
 }
 
@@ -121,6 +127,8 @@ std::string caseName(const ::testing::TestParamInfo<AgreementCase>& param)
         name += std::string("_") + toString(c.lightSampler);
     if (c.lightSelection != LightSelection::Bvh)
         name += std::string("_") + toString(c.lightSelection);
+    if (c.sampling != PixelSampling::Random)
+        name += std::string("_") + toString(c.sampling);
     if (!c.russianRoulette)
         name += "_no_roulette";
     return ::rt::test::testNameOf(name); // '-' -> '_'

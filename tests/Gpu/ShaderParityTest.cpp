@@ -35,14 +35,15 @@ enum Mode : std::uint32_t
     kPerlin = 4,
     kSphere = 5,
     kSrgb = 6,
-    kLightBvh = 7
+    kLightBvh = 7,
+    kSobol = 8
 };
 struct Layout
 {
     std::uint32_t inputWords;
     std::uint32_t outputWords;
 };
-constexpr Layout kLayouts[] = {{3, 8}, {7, 3}, {3, 13}, {10, 6}, {3, 2}, {10, 3}, {1, 1}, {8, 3}};
+constexpr Layout kLayouts[] = {{3, 8}, {7, 3}, {3, 13}, {10, 6}, {3, 2}, {10, 3}, {1, 1}, {8, 3}, {3, 8}};
 
 std::uint32_t bits(float f) { return std::bit_cast<std::uint32_t>(f); }
 float asFloat(std::uint32_t u) { return std::bit_cast<float>(u); }
@@ -90,6 +91,27 @@ void expectNear(const vec3& gpu, const vec3& cpu, float tolerance, const char* w
 vec3 vec3At(const std::vector<std::uint32_t>& w, std::size_t i)
 {
     return {asFloat(w[i]), asFloat(w[i + 1]), asFloat(w[i + 2])};
+}
+
+TEST(GpuShaderParity, SobolStreamsAreBitIdentical)
+{
+    RT_REQUIRE_GPU();
+    std::vector<std::uint32_t> in;
+    for (std::uint32_t seed : {0u, 0xDEADBEEFu})
+        for (std::uint32_t pixel : {0u, 12345u, 0xFFFFFFFFu})
+            for (std::uint32_t sample : {0u, 1u, 7u, 100000u, 0xFFFFFFFFu})
+                in.insert(in.end(), {seed, pixel, sample});
+    const std::vector<std::uint32_t> out = runParity(kSobol, in);
+    for (std::size_t c = 0; c < in.size() / 3; ++c)
+    {
+        Rng rng = Rng::forSobolSample(in[3 * c], in[3 * c + 1], in[3 * c + 2]);
+        for (std::size_t k = 0; k < 8; k += 2)
+        {
+            const vec2 u = rng.next2D();
+            EXPECT_EQ(out[8 * c + k], bits(u.x)) << "case " << c << ", draw " << k / 2;
+            EXPECT_EQ(out[8 * c + k + 1], bits(u.y)) << "case " << c << ", draw " << k / 2;
+        }
+    }
 }
 
 TEST(GpuShaderParity, RandomStreamsAreBitIdentical)

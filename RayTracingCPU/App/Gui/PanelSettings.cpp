@@ -20,6 +20,7 @@ const char* samplingLabel(PixelSampling sampling)
     case PixelSampling::Random: return "normal";
     case PixelSampling::Accumulate: return "accumulation";
     case PixelSampling::Stratified: return "stratified";
+    case PixelSampling::Sobol: return "sobol";
     }
     return "?";
 }

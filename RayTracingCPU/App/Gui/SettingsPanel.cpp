@@ -142,7 +142,8 @@ void SettingsPanel::drawRenderingParameters(Session& session)
 
     drawEngineChoice(session);
 
-    const PixelSampling samplings[] = {PixelSampling::Random, PixelSampling::Accumulate, PixelSampling::Stratified};
+    const PixelSampling samplings[] = {PixelSampling::Random, PixelSampling::Accumulate, PixelSampling::Stratified,
+                                       PixelSampling::Sobol};
     if (ImGui::BeginCombo("Pixel sampling", samplingLabel(s.sampling)))
     {
         for (PixelSampling p : samplings)
