@@ -81,8 +81,8 @@ RT_ENUM_END(Estimator)
 // area for quads and triangles.
 RT_ENUM_BEGIN(LightSampler)
 RT_ENUM_VALUE(LightSampler, Area, 0)       // uniform over the light's area (a sphere's whole surface)
-RT_ENUM_VALUE(LightSampler, SolidAngle, 1) // uniform over the solid angle: sphere cones, spherical rectangles
-RT_ENUM_VALUE(LightSampler, Projected, 2)  // by the receiver's cosine: caps above its horizon, warped rectangles; else SolidAngle
+RT_ENUM_VALUE(LightSampler, SolidAngle, 1) // uniform over the solid angle: sphere cones, spherical rectangles and triangles (Arvo)
+RT_ENUM_VALUE(LightSampler, Projected, 2)  // by the receiver's cosine: caps above its horizon, warped rectangles and triangles; else SolidAngle
 RT_ENUM_END(LightSampler)
 
 // How NEE picks the light it samples (--light-selection).

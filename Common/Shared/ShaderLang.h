@@ -34,6 +34,7 @@ inline float sin(float x) { return std::sin(x); }
 inline float cos(float x) { return std::cos(x); }
 inline float abs(float x) { return std::fabs(x); }
 inline float acos(float x) { return std::acos(x); }
+inline float atan(float y, float x) { return std::atan2(y, x); } // GLSL's two-argument atan
 inline float min(float a, float b) { return b < a ? b : a; } // GLSL's min/max: the first for NaN b, as std::min
 inline float max(float a, float b) { return a < b ? b : a; }
 inline uint min(uint a, uint b) { return b < a ? b : a; }
@@ -42,6 +43,17 @@ inline float clamp(float x, float lo, float hi) { return min(max(x, lo), hi); } 
 inline float roundEven(float x) { return std::nearbyint(x); } // the default rounding mode: to nearest, ties even
 /// +1 or -1 with the sign bit of x (-0 gives -1): copysign(1, x). GLSL's sign() returns 0 for 0.
 inline float signNotZero(float x) { return std::copysign(1.0f, x); }
+
+// The same built-ins for double, for Shared code whose scalar type is double on the CPU and float in GLSL
+// (Shared/SphericalTriangle.h's Real). A call mixing float and double is ambiguous, so it does not compile.
+inline double sqrt(double x) { return std::sqrt(x); }
+inline double sin(double x) { return std::sin(x); }
+inline double cos(double x) { return std::cos(x); }
+inline double abs(double x) { return std::fabs(x); }
+inline double atan(double y, double x) { return std::atan2(y, x); }
+inline double min(double a, double b) { return b < a ? b : a; }
+inline double max(double a, double b) { return a < b ? b : a; }
+inline double clamp(double x, double lo, double hi) { return min(max(x, lo), hi); }
 } // namespace rt::shader
 
 #define RT_FN inline
