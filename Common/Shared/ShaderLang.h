@@ -3,7 +3,9 @@
 // GLSL types and constructors (vec2, vec3), float literals with an `f` suffix (GLSL accepts it; without it
 // C++ would compute in double and the engines would differ), the scalar functions below, RT_FN before each
 // function, RT_OUT(T) for out parameters, RT_IN(T) for struct parameters and RT_ENUM(Type, Value) for
-// HostDevice.h's tags. C++ sees it in namespace rt::shader.
+// HostDevice.h's tags. C++ sees it in namespace rt::shader. Code whose scalar type is switched to double for
+// the CPU (Shared/SphericalTriangle.h's Real) writes its literals without the suffix instead: double in C++,
+// float in GLSL.
 #ifndef RT_SHADER_LANG_H
 #define RT_SHADER_LANG_H
 

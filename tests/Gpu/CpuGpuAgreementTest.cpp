@@ -106,7 +106,7 @@ std::vector<AgreementCase> cases()
         out.push_back({id, Estimator::NeeMis, true, LightSampler::Area});
     for (const char* id : {"cornell-box-lights", "rtnw-final"})
         out.push_back({id, Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Uniform});
-    for (const char* id : {"sphere-light-closeup", "rect-light-closeup"})
+    for (const char* id : {"sphere-light-closeup", "rect-light-closeup", "triangle-lights"})
         out.push_back({id, Estimator::NeeMis, true, LightSampler::SolidAngle});
     return out;
 }
