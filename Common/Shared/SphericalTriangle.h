@@ -1,8 +1,8 @@
 // Uniform solid-angle sampling of a triangle and its inverse, written once for both engines
 // (Shared/ShaderLang.h): J. Arvo, "Stratified Sampling of Spherical Triangles", SIGGRAPH 1995, pp. 437-438,
 // "The Sampling Algorithm": stage one picks the sub-triangle A B C' of area u.x times the whole (Girard's
-// formula (1) and the cosine law for angles (2) solved for the arc A C'), stage two the point on the arc
-// B C' whose 1 - cos to B is u.y times the arc's. The solid angle is Van Oosterom & Strackee's, "The Solid
+// formula (1) and the spherical cosine laws for angles (2), (3) solved for the arc A C'), stage two the point
+// on the arc B C' whose 1 - cos to B is u.y times the arc's. The solid angle is Van Oosterom & Strackee's, "The Solid
 // Angle of a Plane Triangle", IEEE Trans. Biomed. Eng. 30(2), 1983, on un-normalised vectors with the
 // triple product taken from the edges (research notes §1.3: Girard's angle sum cancels).
 //
