@@ -45,9 +45,9 @@ Scene triangleLights(const SceneOptions& options)
     SceneBuilder b("triangle-lights");
     const std::uint32_t w = b.world();
     rtrolCornellWalls(b, w);
-    // Two panels of triangles: the book-3 ceiling light Q (213, 554, 227), u (130, 0, 0), v (0, 0, 105) cut along
-    // its diagonal (both halves face down, along u x v), and a 300 x 3 sliver on the back wall at y = 400
-    // facing the camera (-z).
+    // Two panels of triangles: the book-3 ceiling light Q (213, 554, 227), u (130, 0, 0), v (0, 0, 105) cut
+    // along its diagonal (both halves face down, along u x v), and a 300 x 3 sliver on the back wall at
+    // y = 400 facing the camera (-z).
     const vec3 q(213.0f, 554.0f, 227.0f);
     const vec3 u(130.0f, 0.0f, 0.0f);
     const vec3 v(0.0f, 0.0f, 105.0f);
@@ -60,8 +60,10 @@ Scene triangleLights(const SceneOptions& options)
     panels.triangleMaterials = {ceiling, ceiling, b.diffuseLight(vec3(8.0f))};
     b.mesh(w, b.addMesh(std::move(panels)), ceiling);
     // The mesh scenes' mesh, every triangle a light.
-    placeMesh(b, b.addMesh(loadObj(options.meshPath)), b.diffuseLight(vec3(2.0f)), {278.0f, 0.0f, 278.0f}, 150.0f);
-    b.sphere(w, {150.0f, 100.0f, 277.5f}, 100.0f, b.lambertian(vec3(kWhite))); // cornell-box-lights' white sphere
+    const std::uint32_t mesh = b.addMesh(loadObj(options.meshPath));
+    placeMesh(b, mesh, b.diffuseLight(vec3(2.0f)), {278.0f, 0.0f, 278.0f}, 150.0f);
+    // cornell-box-lights' white sphere.
+    b.sphere(w, {150.0f, 100.0f, 277.5f}, 100.0f, b.lambertian(vec3(kWhite)));
     Scene& s = b.scene();
     cornellCamera(s);
     s.defaults = {.spp = 100, .depth = 50, .width = 600, .aspect = 1.0f, .unidirectionalLight = true};

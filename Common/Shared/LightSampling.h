@@ -86,7 +86,7 @@ RT_FN float sphereExitDistance(RT_IN(LightData) s, vec3 p, vec3 wi)
 }
 
 /// Whether the edge coordinates (alpha, beta) lie on the quad ([0, 1]^2) or triangle (alpha, beta >= 0,
-/// alpha + beta <= 1), give or take the slacks sa, sb and sab (for alpha + beta <= 1, quads: alpha and beta <= 1).
+/// alpha + beta <= 1), give or take the slacks sa (alpha), sb (beta) and sab (alpha + beta, triangles).
 RT_FN bool onPlanarLight(RT_TAG(LightShape) shape, float alpha, float beta, float sa, float sb, float sab)
 {
     if (alpha < -sa || beta < -sb)
@@ -114,14 +114,14 @@ RT_FN float planarHit(RT_IN(LightData) light, vec3 p, vec3 wi)
     // involved away, more at grazing incidence (the ray slides along the plane by t / cos): 4 ulps of them,
     // turned into edge coordinates by the duals' lengths (1 / the light's heights). Tested after the tight
     // bound, as lengths cost square roots and nearly every hit passes without them. The border added has no
-    // measure worth a bias: 1e-4 of a 3-unit sliver's height across a room.
+    // measure worth a bias: 2e-4 of a 3-unit sliver's height seen across a room.
     if (onPlanarLight(light.shape, alpha, beta, 1e-6f, 1e-6f, 1e-6f))
         return t;
     const float slack = 2.4e-7f * (t / abs(denom) + length(p) + length(light.p0));
-    return onPlanarLight(light.shape, alpha, beta, 1e-6f + slack * length(light.dualU),
-                         1e-6f + slack * length(light.dualV), 1e-6f + slack * length(light.dualU + light.dualV))
-               ? t
-               : -1.0f;
+    const float slackAlpha = 1e-6f + slack * length(light.dualU);
+    const float slackBeta = 1e-6f + slack * length(light.dualV);
+    const float slackSum = 1e-6f + slack * length(light.dualU + light.dualV);
+    return onPlanarLight(light.shape, alpha, beta, slackAlpha, slackBeta, slackSum) ? t : -1.0f;
 }
 
 /// Solid-angle pdf with which sampleLight(light, p, .) produces the unit direction `wi`; 0 if it cannot.
@@ -343,7 +343,8 @@ RT_FN float lightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3
         if (strategy == RT_ENUM(LightSampler, SolidAngle) || !(dot(n, n) > 0.0f))
             return 1.0f / float(tri.solidAngle);
         const vec4 w = triangleCosineWeights(tri, n);
-        return bilinearPdf(invertSphericalTriangle(tri, RealVec3(wi)), w.x, w.y, w.z, w.w) / float(tri.solidAngle);
+        const vec2 uv = invertSphericalTriangle(tri, RealVec3(wi));
+        return bilinearPdf(uv, w.x, w.y, w.z, w.w) / float(tri.solidAngle);
     }
     if (strategy == RT_ENUM(LightSampler, Projected) && light.shape == RT_ENUM(LightShape, Sphere))
     {

@@ -2,9 +2,9 @@
 // (Shared/ShaderLang.h): J. Arvo, "Stratified Sampling of Spherical Triangles", SIGGRAPH 1995, pp. 437-438,
 // "The Sampling Algorithm": stage one picks the sub-triangle A B C' of area u.x times the whole (Girard's
 // formula (1) and the spherical cosine laws for angles (2), (3) solved for the arc A C'), stage two the point
-// on the arc B C' whose 1 - cos to B is u.y times the arc's. The solid angle is Van Oosterom & Strackee's, "The Solid
-// Angle of a Plane Triangle", IEEE Trans. Biomed. Eng. 30(2), 1983, on un-normalised vectors with the
-// triple product taken from the edges (research notes §1.3: Girard's angle sum cancels).
+// on the arc B C' whose 1 - cos to B is u.y times the arc's. The solid angle is Van Oosterom & Strackee's,
+// "The Solid Angle of a Plane Triangle", IEEE Trans. Biomed. Eng. 30(2), 1983, on un-normalised vectors with
+// the triple product taken from the edges (research notes §1.3: Girard's angle sum cancels).
 //
 // Precision. The algebra runs in `Real`: double on the CPU (research notes §0.2: Arvo's map in float put 5 %
 // of the samples off triangles of 2e-5 sr; in double none down to 1e-7 sr), float in GLSL. Its literals are
@@ -34,19 +34,19 @@ RT_SHADER_NAMESPACE_BEGIN
 
 struct SphericalTriangle
 {
-    RealVec3 r0; // p0 - o: un-normalised, for the plane intersection
-    RealVec3 e1; // p1 - p0
-    RealVec3 e2; // p2 - p0
-    RealVec3 a; // unit direction towards p0 (Arvo's A)
-    RealVec3 b; // ... towards p0 + e1 (B)
-    RealVec3 c; // ... towards p0 + e2 (C)
-    RealVec3 crossAB; // a x b, from R0 x e1
+    RealVec3 r0;        // p0 - o: un-normalised, for the plane intersection
+    RealVec3 e1;        // p1 - p0
+    RealVec3 e2;        // p2 - p0
+    RealVec3 a;         // unit direction towards p0 (Arvo's A)
+    RealVec3 b;         // ... towards p0 + e1 (B)
+    RealVec3 c;         // ... towards p0 + e2 (C)
+    RealVec3 crossAB;   // a x b, from R0 x e1
     RealVec3 tangentAC; // unit tangent at A of the arc towards C: C = cosArcAC a + sinArcAC tangentAC
-    Real cosArcAC; // Arvo's side b
+    Real cosArcAC;      // Arvo's side b
     Real sinArcAC;
     Real cosArcAB; // Arvo's side c
     Real oneMinusCosArcAB;
-    Real alpha; // internal angle at A, radians
+    Real alpha;      // internal angle at A, radians
     Real solidAngle; // steradians, in [0, 2 pi)
 };
 
@@ -83,7 +83,8 @@ RT_FN SphericalTriangle makeSphericalTriangle(vec3 o, vec3 p0, vec3 e1, vec3 e2)
     t.crossAB = cross(t.r0, t.e1) / (l0 * l1); // R0 x R1 = R0 x e1
     t.cosArcAB = dot(t.r0, r1) / (l0 * l1);
     t.oneMinusCosArcAB = oneMinusCos(length(t.crossAB), t.cosArcAB);
-    // C's component across A is e2's (R2 = R0 + e2 and R0 lies along A): no cancellation for a small triangle.
+    // C's component across A is e2's (R2 = R0 + e2 and R0 lies along A): no cancellation for a small
+    // triangle.
     const RealVec3 across = t.e2 - dot(t.e2, t.a) * t.a;
     const Real acrossLength = length(across);
     t.tangentAC = acrossLength > 0.0 ? across / acrossLength : RealVec3(0.0);
@@ -111,7 +112,8 @@ RT_FN RealVec3 sphericalTriangleDirection(RT_IN(SphericalTriangle) t, vec2 u)
     Real oneMinusQ = h > 0.0 ? (denominator > 0.0 ? h * (1.0 + t.cosArcAB) / denominator : 2.0) : 0.0;
     // Never past C (the arc A C ends there), whatever the rounding.
     oneMinusQ = clamp(oneMinusQ, 0.0, oneMinusCos(t.sinArcAC, t.cosArcAC));
-    const RealVec3 cutPoint = (1.0 - oneMinusQ) * t.a + sqrt(max(oneMinusQ * (2.0 - oneMinusQ), 0.0)) * t.tangentAC;
+    const RealVec3 cutPoint =
+        (1.0 - oneMinusQ) * t.a + sqrt(max(oneMinusQ * (2.0 - oneMinusQ), 0.0)) * t.tangentAC;
     const RealVec3 chord = cutPoint - t.b;
     const Real m = Real(u.y) * 0.5 * dot(chord, chord); // 1 - cos(arc B P)
     const RealVec3 across = chord - dot(chord, t.b) * t.b;
@@ -122,8 +124,8 @@ RT_FN RealVec3 sphericalTriangleDirection(RT_IN(SphericalTriangle) t, vec2 u)
 }
 
 /// Barycentrics (b1, b2) (the point p0 + b1 e1 + b2 e2) where the ray from o along w meets the triangle's
-/// plane (Moller & Trumbore 1997), clamped into the triangle and renormalised, so that a direction rounding put
-/// just outside still gives a point on the light (pbrt-v4 §6.5.4 does the same). w parallel to the plane
+/// plane (Moller & Trumbore 1997), clamped into the triangle and renormalised, so that a direction rounding
+/// put just outside still gives a point on the light (pbrt-v4 §6.5.4 does the same). w parallel to the plane
 /// (never for a triangle of some solid angle) gives the centroid.
 RT_FN vec2 sphericalTrianglePoint(RT_IN(SphericalTriangle) t, RealVec3 w)
 {
@@ -171,7 +173,8 @@ RT_FN vec2 invertSphericalTriangle(RT_IN(SphericalTriangle) t, RealVec3 directio
         cosTheta = t.cosArcAC;
         sinTheta = t.sinArcAC;
     }
-    // area(A, B, C') by Van Oosterom & Strackee on unit vectors, with A . (B x C') = sin(theta) (A x B) . tangent.
+    // area(A, B, C') by Van Oosterom & Strackee on unit vectors, with A . (B x C') = sin(theta) (A x B) .
+    // tangent.
     const Real tripleABC = sinTheta * abs(dot(t.crossAB, t.tangentAC));
     const Real tangentB = dot(t.tangentAC, t.b);
     const Real areaPart = 2.0 * atan(tripleABC, (1.0 + t.cosArcAB) * (1.0 + cosTheta) + sinTheta * tangentB);

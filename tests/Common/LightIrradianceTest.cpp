@@ -221,8 +221,8 @@ TEST(LightIrradiance, TriangleAndGrazingQuad)
 TEST(LightIrradiance, TrianglesForTheSphericalSampler)
 {
     // Triangles Arvo's sampler takes (3e-4 to 6.22 sr), where it replaced area sampling: a 355 x 10 sliver 4
-    // units overhead and 300 units away, a triangle 0.5 above the point that fills 6.07 sr of the hemisphere, and
-    // one of 3.6e-4 sr. Area, solid-angle and projected sampling must each find Lambert's irradiance.
+    // units overhead and 300 units away, a triangle 0.5 above the point that fills 6.07 sr of the hemisphere,
+    // and one of 3.6e-4 sr. Area, solid-angle and projected sampling must each find Lambert's irradiance.
     struct Case
     {
         std::string name;
@@ -238,8 +238,9 @@ TEST(LightIrradiance, TrianglesForTheSphericalSampler)
     for (const Case& k : cases)
     {
         const double expected = kRadiance * lambertProjectedSolidAngle({dvec3(k.a), dvec3(k.b), dvec3(k.c)});
+        const LightData light = test::makeTriangleLight(k.a, k.b, k.c);
         for (const auto strategy : kStrategies)
-            expectIrradiance(estimateIrradiance(test::makeTriangleLight(k.a, k.b, k.c), seed++, strategy), expected,
+            expectIrradiance(estimateIrradiance(light, seed++, strategy), expected,
                              nameOf(strategy) + ": " + k.name);
     }
 }

@@ -156,8 +156,9 @@ TEST(SceneCatalogue, CornellBoxLightsHasNineStripsAndThreeSpheres)
 
 TEST(SceneCatalogue, TriangleLightsHasTheCeilingHalvesTheSliverAndTheEmittingMesh)
 {
-    // scenes.md: the book-3 ceiling light as two triangles (15), facing down; a 300 x 3 sliver (8) on the back
-    // wall at y = 400 facing the camera; every triangle of the mesh (2), 150 tall on the floor about (278, 278).
+    // scenes.md: the book-3 ceiling light as two triangles (15), facing down; a 300 x 3 sliver (8) on the
+    // back wall at y = 400 facing the camera; every triangle of the mesh (2), 150 tall on the floor about
+    // (278, 278).
     const Scene s = makeScene("triangle-lights");
     for (const LightData& l : s.lights)
         ASSERT_EQ(l.shape, LightShape::Triangle);

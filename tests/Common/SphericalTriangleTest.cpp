@@ -1,20 +1,20 @@
-// NEE's triangle samplers (Shared/SphericalTriangle.h through LightSampling.h): Arvo's map (SolidAngle) and the
-// bilinear cosine warp composed with it (Projected). The solid angle against L'Huilier's theorem in long double;
-// the directions against the density (chi-square, research notes §2.1: SolidAngle's from the reference solid
-// angle alone, Projected's as lightPdf reports it); each sample's pdf against lightPdf of its direction and the
-// point on the light (§2.3); E[1/pdf] = the solid angle (§2.2); the inverse map against the forward one (§2.5);
-// finite samples with positive pdfs for slivers, degenerate and near-hemisphere triangles. Direct lighting
-// through them (area, solid angle, projected and Lambert's formula agreeing) is in LightIrradianceTest.cpp.
-#include <gtest/gtest.h>
-
-#include <cmath>
-#include <string>
-#include <vector>
-
+// NEE's triangle samplers (Shared/SphericalTriangle.h through LightSampling.h): Arvo's map (SolidAngle) and
+// the bilinear cosine warp composed with it (Projected). The solid angle against L'Huilier's theorem in long
+// double; the directions against the density (chi-square, research notes §2.1: SolidAngle's from the
+// reference solid angle alone, Projected's as lightPdf reports it); each sample's pdf against lightPdf of its
+// direction and the point on the light (§2.3); E[1/pdf] = the solid angle (§2.2); the inverse map against the
+// forward one (§2.5); finite samples with positive pdfs for slivers, degenerate and near-hemisphere
+// triangles. Direct lighting through them (area, solid angle, projected and Lambert's formula agreeing) is in
+// LightIrradianceTest.cpp.
 #include "LightGeometry.h"
 #include "Render/RenderSettings.h"
 #include "StatisticsHelpers.h"
 #include "Support/ChiSquare.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <string>
+#include <vector>
 
 namespace rt
 {
@@ -30,7 +30,10 @@ struct TriangleCase
 };
 
 /// cornell-box-lights' back-wall strip (355 x 10) cut along its diagonal: a sliver with a 1.6 degree corner.
-LightData sliver() { return test::makeTriangleLight({455, 100, 554}, {100, 100, 554}, {100, 110, 554}); }
+LightData sliver()
+{
+    return test::makeTriangleLight({455, 100, 554}, {100, 100, 554}, {100, 110, 554});
+}
 
 /// Triangles the spherical sampler takes (3e-4 to 6.22 sr): a general one (pbrt-v4's sampling test), the near
 /// field and a large triangle just below the point (both beyond 5.8 sr: nearly the hemisphere), grazing
@@ -41,9 +44,11 @@ std::vector<TriangleCase> triangleCases()
     return {
         {"general", test::makeTriangleLight({4, 1, 1}, {-10, 3, 3}, {-2, -8, 10}), {0.5f, -0.4f, 0.7f}},
         {"near field", test::makeTriangleLight({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), {0.25f, 0.25f, 0.01f}},
-        {"near hemisphere", test::makeTriangleLight({-20, -12, 0.5f}, {20, -12, 0.5f}, {0, 25, 0.5f}), vec3(0.0f)},
+        {"near hemisphere", test::makeTriangleLight({-20, -12, 0.5f}, {20, -12, 0.5f}, {0, 25, 0.5f}),
+         vec3(0.0f)},
         {"grazing", test::makeTriangleLight({2, -1, 0.03f}, {3, 1, 0.03f}, {2, 1, 0.03f}), vec3(0.0f)},
-        {"tiny", test::makeTriangleLight({0.3f, 0.2f, 1.0f}, {0.33f, 0.2f, 1.01f}, {0.31f, 0.23f, 0.99f}), vec3(0.0f)},
+        {"tiny", test::makeTriangleLight({0.3f, 0.2f, 1.0f}, {0.33f, 0.2f, 1.01f}, {0.31f, 0.23f, 0.99f}),
+         vec3(0.0f)},
         {"distant", test::makeTriangleLight({-10, 0, 400}, {10, 0, 400}, {0, 16, 400}), vec3(0.0f)},
         {"sliver, near", sliver(), {280, 104, 550}},
         {"sliver, across the room", sliver(), {278, 300, 254}},
@@ -60,11 +65,12 @@ double lhuilierSolidAngle(const LightData& l, const vec3& p)
     const V v0 = V(l.p0.x, l.p0.y, l.p0.z) - o;
     const V v1 = v0 + V(l.p1.x, l.p1.y, l.p1.z);
     const V v2 = v0 + V(l.p2.x, l.p2.y, l.p2.z);
-    const auto arc = [](const V& x, const V& y) { return std::atan2(glm::length(glm::cross(x, y)), glm::dot(x, y)); };
+    const auto arc = [](const V& x, const V& y)
+    { return std::atan2(glm::length(glm::cross(x, y)), glm::dot(x, y)); };
     const long double a = arc(v1, v2), b = arc(v0, v2), c = arc(v0, v1);
     const long double s = 0.5L * (a + b + c);
-    const long double product = std::tan(0.5L * s) * std::tan(0.5L * (s - a)) * std::tan(0.5L * (s - b)) *
-                                std::tan(0.5L * (s - c));
+    const long double product =
+        std::tan(0.5L * s) * std::tan(0.5L * (s - a)) * std::tan(0.5L * (s - b)) * std::tan(0.5L * (s - c));
     return double(4.0L * std::atan(std::sqrt(std::max(product, 0.0L))));
 }
 
@@ -120,8 +126,9 @@ TEST(SphericalTriangle, MapReachesTheVerticesAtTheCorners)
     for (const TriangleCase& c : triangleCases())
     {
         const auto tri = sphericalTriangleOf(c);
-        for (const auto& [u, vertex] : {std::pair{vec2(0.0f, 0.0f), tri.b}, std::pair{vec2(1.0f, 0.0f), tri.b},
-                                        std::pair{vec2(0.0f, 1.0f), tri.a}, std::pair{vec2(1.0f, 1.0f), tri.c}})
+        for (const auto& [u, vertex] :
+             {std::pair{vec2(0.0f, 0.0f), tri.b}, std::pair{vec2(1.0f, 0.0f), tri.b},
+              std::pair{vec2(0.0f, 1.0f), tri.a}, std::pair{vec2(1.0f, 1.0f), tri.c}})
             EXPECT_LT(glm::distance(shader::sphericalTriangleDirection(tri, u), vertex), 1e-9)
                 << c.name << ", u = " << u.x << ", " << u.y;
     }
@@ -136,17 +143,21 @@ TEST(SphericalTriangle, ChiSquareUniformOverTheSolidAngle)
     {
         SCOPED_TRACE(c.name);
         const test::LightSurfaceDomain domain(c.light, c.p, 32);
-        const auto h = test::histogram(domain.cellCount(), kChiSquareSamples, seed++, [&](Rng& rng) {
-            LightSample s;
-            return sampleLight(c.light, LightSampler::SolidAngle, c.p, vec3(0.0f), test::uniform2(rng), s)
-                       ? domain.cell(s.wi)
-                       : -1;
-        });
+        const auto h = test::histogram(domain.cellCount(), kChiSquareSamples, seed++,
+                                       [&](Rng& rng)
+                                       {
+                                           LightSample s;
+                                           return sampleLight(c.light, LightSampler::SolidAngle, c.p,
+                                                              vec3(0.0f), test::uniform2(rng), s)
+                                                      ? domain.cell(s.wi)
+                                                      : -1;
+                                       });
         EXPECT_EQ(h.outside, 0) << "samples missing the light, or no sample";
         const double solidAngle = lhuilierSolidAngle(c.light, c.p);
         // The area density cos / (r^2 Omega) peaks under the point for the near-hemisphere cases: 16 x 16
         // quadrature points per cell resolve it.
-        const auto expected = domain.expectedCounts(kChiSquareSamples, 16, [&](const dvec3&) { return 1.0 / solidAngle; });
+        const auto expected =
+            domain.expectedCounts(kChiSquareSamples, 16, [&](const dvec3&) { return 1.0 / solidAngle; });
         const auto r = test::chiSquareTest(h.counts, expected, test::kChiSquareAlpha, int(cases.size()));
         EXPECT_TRUE(r.passed) << r.message;
     }
@@ -161,11 +172,15 @@ TEST(ProjectedTriangle, ChiSquareFollowsTheWarpedDensityItReports)
         SCOPED_TRACE(c.name);
         const vec3 n = tiltedNormal(c);
         const test::LightSurfaceDomain domain(c.light, c.p, 32);
-        const auto h = test::histogram(domain.cellCount(), kChiSquareSamples, seed++, [&](Rng& rng) {
-            LightSample s;
-            return sampleLight(c.light, LightSampler::Projected, c.p, n, test::uniform2(rng), s) ? domain.cell(s.wi)
-                                                                                                 : -1;
-        });
+        const auto h = test::histogram(domain.cellCount(), kChiSquareSamples, seed++,
+                                       [&](Rng& rng)
+                                       {
+                                           LightSample s;
+                                           return sampleLight(c.light, LightSampler::Projected, c.p, n,
+                                                              test::uniform2(rng), s)
+                                                      ? domain.cell(s.wi)
+                                                      : -1;
+                                       });
         EXPECT_EQ(h.outside, 0) << "samples missing the light, or no sample";
         const auto expected = domain.expectedCounts(kChiSquareSamples, 16, LightSampler::Projected, n);
         const auto r = test::chiSquareTest(h.counts, expected, test::kChiSquareAlpha, int(cases.size()));
@@ -173,33 +188,41 @@ TEST(ProjectedTriangle, ChiSquareFollowsTheWarpedDensityItReports)
     }
 }
 
-/// Every sample of `strategy` from c.p (receiver normal n): accepted, on the light along its direction, with a
-/// finite positive pdf that lightPdf finds again for its direction to 1e-4. Returns the mean of 1 / pdf and
+/// Every sample of `strategy` from c.p (receiver normal n): accepted, on the light along its direction, with
+/// a finite positive pdf that lightPdf finds again for its direction to 1e-4. Returns the mean of 1 / pdf and
 /// its standard error.
-test::MeanEstimate checkEverySample(const TriangleCase& c, LightSampler strategy, const vec3& n, std::uint32_t seed)
+test::MeanEstimate checkEverySample(const TriangleCase& c, LightSampler strategy, const vec3& n,
+                                    std::uint32_t seed)
 {
     Rng rng(pcgHash(seed));
     constexpr long kSamples = 20'000;
-    return test::estimateMean(kSamples, [&](long) {
-        LightSample s;
-        const vec2 u = test::uniform2(rng);
-        EXPECT_TRUE(sampleLight(c.light, strategy, c.p, n, u, s)) << "u = " << u.x << ", " << u.y;
-        EXPECT_TRUE(std::isfinite(s.pdf) && s.pdf > 0.0f) << s.pdf;
-        const float pdf = lightPdf(c.light, strategy, c.p, n, s.wi);
-        EXPECT_NEAR(pdf, s.pdf, 1e-4f * s.pdf) << "u = " << u.x << ", " << u.y;
-        // The point lies on the triangle (barycentrics uv), along wi at the distance given.
-        EXPECT_TRUE(s.uv.x >= 0.0f && s.uv.y >= 0.0f && s.uv.x + s.uv.y <= 1.0f + 1e-6f) << s.uv.x << ", " << s.uv.y;
-        const dvec3 y(s.point);
-        const dvec3 onLight = dvec3(c.light.p0) + double(s.uv.x) * dvec3(c.light.p1) + double(s.uv.y) * dvec3(c.light.p2);
-        EXPECT_LE(glm::distance(onLight, y), 1e-6 * (1.0 + glm::length(y)));
-        EXPECT_LE(glm::distance(dvec3(c.p) + double(s.distance) * dvec3(s.wi), y), 1e-6 * (1.0 + glm::length(y)));
-        return 1.0 / double(s.pdf);
-    });
+    return test::estimateMean(
+        kSamples,
+        [&](long)
+        {
+            LightSample s;
+            const vec2 u = test::uniform2(rng);
+            EXPECT_TRUE(sampleLight(c.light, strategy, c.p, n, u, s)) << "u = " << u.x << ", " << u.y;
+            EXPECT_TRUE(std::isfinite(s.pdf) && s.pdf > 0.0f) << s.pdf;
+            const float pdf = lightPdf(c.light, strategy, c.p, n, s.wi);
+            EXPECT_NEAR(pdf, s.pdf, 1e-4f * s.pdf) << "u = " << u.x << ", " << u.y;
+            // The point lies on the triangle (barycentrics uv), along wi at the distance given.
+            EXPECT_TRUE(s.uv.x >= 0.0f && s.uv.y >= 0.0f && s.uv.x + s.uv.y <= 1.0f + 1e-6f)
+                << s.uv.x << ", " << s.uv.y;
+            const dvec3 y(s.point);
+            const dvec3 onLight =
+                dvec3(c.light.p0) + double(s.uv.x) * dvec3(c.light.p1) + double(s.uv.y) * dvec3(c.light.p2);
+            EXPECT_LE(glm::distance(onLight, y), 1e-6 * (1.0 + glm::length(y)));
+            EXPECT_LE(glm::distance(dvec3(c.p) + double(s.distance) * dvec3(s.wi), y),
+                      1e-6 * (1.0 + glm::length(y)));
+            return 1.0 / double(s.pdf);
+        });
 }
 
 TEST(SphericalTriangle, EverySamplePdfIsOneOverTheSolidAngle)
 {
-    // SolidAngle's 1 / pdf is the solid angle itself for every sample: E[1/pdf] = Omega with no spread (§2.2).
+    // SolidAngle's 1 / pdf is the solid angle itself for every sample: E[1/pdf] = Omega with no spread
+    // (§2.2).
     std::uint32_t seed = 2200;
     for (const TriangleCase& c : triangleCases())
     {
@@ -244,8 +267,11 @@ TEST(SphericalTriangle, OutsideItsBoundsTrianglesAreSampledByArea)
 {
     // Below 3e-4 sr (a 0.02-unit triangle at distance 1: 1.9e-4 sr) and above 6.22 sr (a large triangle 0.1
     // below the point: 6.24 sr) the densities are area sampling's.
-    const TriangleCase small{"small", test::makeTriangleLight({0.3f, 0.2f, 1.0f}, {0.32f, 0.2f, 1.0f}, {0.31f, 0.22f, 1.0f}), vec3(0.0f)};
-    const TriangleCase huge{"huge", test::makeTriangleLight({-20, -12, 0.1f}, {20, -12, 0.1f}, {0, 25, 0.1f}), vec3(0.0f)};
+    const TriangleCase small{
+        "small", test::makeTriangleLight({0.3f, 0.2f, 1.0f}, {0.32f, 0.2f, 1.0f}, {0.31f, 0.22f, 1.0f}),
+        vec3(0.0f)};
+    const TriangleCase huge{"huge", test::makeTriangleLight({-20, -12, 0.1f}, {20, -12, 0.1f}, {0, 25, 0.1f}),
+                            vec3(0.0f)};
     EXPECT_LT(lhuilierSolidAngle(small.light, small.p), double(shader::kMinSphericalTriangle));
     EXPECT_GT(lhuilierSolidAngle(huge.light, huge.p), double(shader::kMaxSphericalTriangle));
     for (const TriangleCase& c : {small, huge})
@@ -270,7 +296,8 @@ TEST(SphericalTriangle, OutsideItsBoundsTrianglesAreSampledByArea)
     }
 }
 
-// ---- Robustness ---------------------------------------------------------------------------------------------
+// ---- Robustness
+// ---------------------------------------------------------------------------------------------
 
 struct StressCase
 {
@@ -303,7 +330,8 @@ std::vector<StressCase> stressCases()
         {"hemisphere, 6.21 sr", big, {0, 0, -0.14f}, false},
         {"hemisphere, 6.24 sr", big, {0, 0, 0.1f}, false},
         {"hemisphere, 1e-3 away", big, {0, 0, 1e-3f}, false},
-        {"far from the origin", test::makeTriangleLight(far, far + vec3(1, 0, 0), far + vec3(0, 1, 0.5f)), far + vec3(0.2f, 0.3f, 3.0f), false},
+        {"far from the origin", test::makeTriangleLight(far, far + vec3(1, 0, 0), far + vec3(0, 1, 0.5f)),
+         far + vec3(0.2f, 0.3f, 3.0f), false},
     };
 }
 
@@ -313,8 +341,10 @@ TEST(SphericalTriangle, EveryReturnedSampleIsFiniteWithAPositivePdf)
     for (const StressCase& c : stressCases())
     {
         SCOPED_TRACE(c.name);
-        const vec3 n = glm::normalize(c.light.p0 + (c.light.p1 + c.light.p2) / 3.0f - c.p + vec3(0.1f, 0.2f, 0.0f));
-        for (const LightSampler strategy : {LightSampler::Area, LightSampler::SolidAngle, LightSampler::Projected})
+        const vec3 n =
+            glm::normalize(c.light.p0 + (c.light.p1 + c.light.p2) / 3.0f - c.p + vec3(0.1f, 0.2f, 0.0f));
+        for (const LightSampler strategy :
+             {LightSampler::Area, LightSampler::SolidAngle, LightSampler::Projected})
         {
             Rng rng(pcgHash(seed++));
             long declined = 0, disagreeing = 0;
@@ -338,8 +368,8 @@ TEST(SphericalTriangle, EveryReturnedSampleIsFiniteWithAPositivePdf)
             }
             if (c.degenerate)
                 continue;
-            // Area sampling declines the far side of nothing here, but a point whose direction rounding puts off
-            // the light, as its pdf does; the spherical samplers must keep every sample and agree.
+            // Area sampling declines the far side of nothing here, but a point whose direction rounding puts
+            // off the light, as its pdf does; the spherical samplers must keep every sample and agree.
             if (strategy != LightSampler::Area)
             {
                 EXPECT_EQ(declined, 0) << toString(strategy);
@@ -356,7 +386,11 @@ TEST(SphericalTriangle, RandomTrianglesGiveConsistentSamples)
     int spherical = 0;
     for (int k = 0; k < 300; ++k)
     {
-        const auto point = [&] { return vec3(20.0f * rng.nextFloat() - 10.0f, 20.0f * rng.nextFloat() - 10.0f, 20.0f * rng.nextFloat() - 10.0f); };
+        const auto point = [&]
+        {
+            return vec3(20.0f * rng.nextFloat() - 10.0f, 20.0f * rng.nextFloat() - 10.0f,
+                        20.0f * rng.nextFloat() - 10.0f);
+        };
         const vec3 a = point(), b = point(), c = point();
         vec3 p = point();
         p[int(rng.nextUint() % 3u)] = rng.nextFloat() < 0.5f ? -13.0f : 13.0f;
