@@ -87,13 +87,17 @@ TEST_P(GpuCpuAgreementFine, BlockMeansAgree)
 }
 
 /// Every scene with the mixture and with NEE + MIS; NEE alone, BSDF sampling and paths without Russian
-/// roulette where they differ most (media, glass, many lights).
+/// roulette where they differ most (media, glass, many lights). Book 3's mixture evaluates every light's pdf
+/// at every vertex: triangle-lights' 3,677 lights made it 35 s of the default suite (the CPU's side) and
+/// about 40 minutes of the heavy one, so that scene leaves it out; many-lights checks the mixture over
+/// hundreds of triangle lights, and book 3's samplers are not the ones triangle-lights is for.
 std::vector<AgreementCase> cases()
 {
     std::vector<AgreementCase> out;
     for (const SceneInfo& info : sceneCatalogue())
     {
-        out.push_back({info.id, Estimator::Mixture});
+        if (info.id != "triangle-lights")
+            out.push_back({info.id, Estimator::Mixture});
         out.push_back({info.id, Estimator::NeeMis});
     }
     for (const char* id : {"rtnw-cornell-smoke", "rtrol-cornell-glass", "rtnw-final"})
