@@ -88,8 +88,8 @@ TEST_P(GpuCpuAgreementFine, BlockMeansAgree)
 
 /// Every scene with the mixture and with NEE + MIS; NEE alone, BSDF sampling and paths without Russian
 /// roulette where they differ most (media, glass, many lights). Book 3's mixture evaluates every light's pdf
-/// at every vertex: triangle-lights' 3,677 lights made it 35 s of the default suite (the CPU's side) and
-/// about 40 minutes of the heavy one, so that scene leaves it out; many-lights checks the mixture over
+/// at every vertex: triangle-lights' 3,677 lights made it 35 s of the default suite (the CPU's side), some
+/// 40 minutes of the heavy one by extrapolation (64 times the samples), so that scene leaves it out; many-lights checks the mixture over
 /// hundreds of triangle lights, and book 3's samplers are not the ones triangle-lights is for.
 std::vector<AgreementCase> cases()
 {
