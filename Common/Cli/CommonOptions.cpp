@@ -53,9 +53,11 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
     app.add_option("--light-sampler", o.lightSampler,
                    "How nee and nee-mis pick a point on a light: area (uniform over its surface), solid-angle "
                    "(uniform over the directions it covers: cones for spheres, spherical rectangles for "
-                   "rectangular quads, area where no solid-angle sampler applies) or projected (by the cosine "
-                   "over a sphere's cap when it lies above the receiver's horizon, else as solid-angle). The "
-                   "mixture keeps book 3's.")
+                   "rectangular quads, spherical triangles (Arvo) for triangles of 3e-4 to 6.22 sr, area "
+                   "where no solid-angle sampler applies) or projected (by the cosine over a sphere's cap "
+                   "when it lies above the receiver's horizon, and over rectangles and triangles by a "
+                   "bilinear warp of their spherical samplers; else as solid-angle). The mixture keeps "
+                   "book 3's.")
         ->capture_default_str();
     app.add_option("--light-selection", o.lightSelection,
                    "Which light nee and nee-mis sample at a vertex: uniform (each of the N emitters 1/N), power "

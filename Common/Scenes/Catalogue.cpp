@@ -36,6 +36,8 @@ const std::vector<SceneInfo>& sceneCatalogue()
         {"rect-light-closeup", "Rectangular light upright on a floor, seen near its foot", "scenes.md", rectLightCloseup},
         {"many-lights", "cornell-box-lights' room with N small lights (--count, default 1000)", "scenes.md", manyLights},
         {"sphere-light-closeup", "Sphere light just above a floor", "scenes.md", sphereLightCloseup},
+        {"triangle-lights", "Cornell box lit by triangles: ceiling halves, a sliver, an emitting mesh",
+         "scenes.md", triangleLights},
     };
     return catalogue;
 }

@@ -1,5 +1,8 @@
 // The light-sampling test scenes of shared/spec/scenes.md: one light filling much of the hemisphere of the
-// floor near it, where the choice of light sampler matters most.
+// floor near it, where the choice of light sampler matters most; triangle lights of every proportion.
+#include <utility>
+
+#include "Assets/ObjLoader.h"
 #include "Scenes/SceneFactories.h"
 
 namespace rt::scenes
@@ -34,6 +37,36 @@ Scene rectLightCloseup(const SceneOptions&)
     s.camera.lookAt = {0.0f, 0.0f, -100.0f};
     s.camera.vfovDegrees = 45.0f;
     closeupDefaults(s);
+    return b.finish();
+}
+
+Scene triangleLights(const SceneOptions& options)
+{
+    SceneBuilder b("triangle-lights");
+    const std::uint32_t w = b.world();
+    rtrolCornellWalls(b, w);
+    // Two panels of triangles: the book-3 ceiling light Q (213, 554, 227), u (130, 0, 0), v (0, 0, 105) cut
+    // along its diagonal (both halves face down, along u x v), and a 300 x 3 sliver on the back wall at
+    // y = 400 facing the camera (-z).
+    const vec3 q(213.0f, 554.0f, 227.0f);
+    const vec3 u(130.0f, 0.0f, 0.0f);
+    const vec3 v(0.0f, 0.0f, 105.0f);
+    const std::uint32_t ceiling = b.diffuseLight(vec3(15.0f));
+    MeshData panels;
+    panels.name = "triangle-lights panels";
+    panels.positions = {q, q + u, q + u + v, q + v, {428.0f, 400.0f, 554.0f}, {128.0f, 400.0f, 554.0f},
+                        {278.0f, 403.0f, 554.0f}};
+    panels.indices = {0, 1, 2, 0, 2, 3, 4, 5, 6};
+    panels.triangleMaterials = {ceiling, ceiling, b.diffuseLight(vec3(8.0f))};
+    b.mesh(w, b.addMesh(std::move(panels)), ceiling);
+    // The mesh scenes' mesh, every triangle a light.
+    const std::uint32_t mesh = b.addMesh(loadObj(options.meshPath));
+    placeMesh(b, mesh, b.diffuseLight(vec3(2.0f)), {278.0f, 0.0f, 278.0f}, 150.0f);
+    // cornell-box-lights' white sphere.
+    b.sphere(w, {150.0f, 100.0f, 277.5f}, 100.0f, b.lambertian(vec3(kWhite)));
+    Scene& s = b.scene();
+    cornellCamera(s);
+    s.defaults = {.spp = 100, .depth = 50, .width = 600, .aspect = 1.0f, .unidirectionalLight = true};
     return b.finish();
 }
 

@@ -39,6 +39,7 @@ Scene furnace(const SceneOptions&);
 Scene rectLightCloseup(const SceneOptions&);
 Scene manyLights(const SceneOptions&);
 Scene sphereLightCloseup(const SceneOptions&);
+Scene triangleLights(const SceneOptions&);
 
 // Pieces several sources share.
 inline const vec3 kSky{0.70f, 0.80f, 1.00f};

@@ -78,11 +78,13 @@ RT_ENUM_VALUE(Estimator, NeeMis, 3)   // NEE and BSDF sampling weighted by the p
 RT_ENUM_END(Estimator)
 
 // How NEE samples a point on a light (--light-sampler). Book 3's mixture keeps its own: cones for spheres,
-// area for quads and triangles.
+// area for quads and triangles. SolidAngle: sphere cones, spherical rectangles (Ureña et al. 2013) and
+// spherical triangles (Arvo 1995). Projected: by the receiver's cosine over caps above its horizon, and over
+// rectangles and triangles by a bilinear warp of their spherical maps; elsewhere as SolidAngle.
 RT_ENUM_BEGIN(LightSampler)
 RT_ENUM_VALUE(LightSampler, Area, 0)       // uniform over the light's area (a sphere's whole surface)
-RT_ENUM_VALUE(LightSampler, SolidAngle, 1) // uniform over the solid angle: sphere cones, spherical rectangles
-RT_ENUM_VALUE(LightSampler, Projected, 2)  // by the receiver's cosine: caps above its horizon, warped rectangles; else SolidAngle
+RT_ENUM_VALUE(LightSampler, SolidAngle, 1) // uniform over the solid angle
+RT_ENUM_VALUE(LightSampler, Projected, 2)  // by the receiver's cosine
 RT_ENUM_END(LightSampler)
 
 // How NEE picks the light it samples (--light-selection).

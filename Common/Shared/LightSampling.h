@@ -14,6 +14,7 @@
 #include "Shared/Onb.h"
 #include "Shared/ShaderLang.h"
 #include "Shared/SphericalRectangle.h"
+#include "Shared/SphericalTriangle.h"
 #include "Shared/Warps.h"
 
 RT_SHADER_NAMESPACE_BEGIN
@@ -84,6 +85,17 @@ RT_FN float sphereExitDistance(RT_IN(LightData) s, vec3 p, vec3 wi)
     return -b + safeSqrt(disc);
 }
 
+/// Whether the edge coordinates (alpha, beta) lie on the quad ([0, 1]^2) or triangle (alpha, beta >= 0,
+/// alpha + beta <= 1), give or take the slacks sa (alpha), sb (beta) and sab (alpha + beta, triangles).
+RT_FN bool onPlanarLight(RT_TAG(LightShape) shape, float alpha, float beta, float sa, float sb, float sab)
+{
+    if (alpha < -sa || beta < -sb)
+        return false;
+    if (shape == RT_ENUM(LightShape, Quad))
+        return alpha <= 1.0f + sa && beta <= 1.0f + sb;
+    return alpha + beta <= 1.0f + sab;
+}
+
 /// Parametric hit of the ray p + t wi with the parallelogram / triangle of `light`; returns t or -1.
 RT_FN float planarHit(RT_IN(LightData) light, vec3 p, vec3 wi)
 {
@@ -96,13 +108,20 @@ RT_FN float planarHit(RT_IN(LightData) light, vec3 p, vec3 wi)
     const vec3 planar = p + t * wi - light.p0;
     const float alpha = dot(planar, light.dualU);
     const float beta = dot(planar, light.dualV);
-    // A few ulps of slack: a sample on the light's edge (u = 1) must find its own pdf after rounding
-    // (sampleLight takes its pdf from here), and the border it adds has no measure worth a bias.
-    const float lo = -1e-6f;
-    const float hi = 1.0f + 1e-6f;
-    if (light.shape == RT_ENUM(LightShape, Quad))
-        return (alpha >= lo && alpha <= hi && beta >= lo && beta <= hi) ? t : -1.0f;
-    return (alpha >= lo && beta >= lo && alpha + beta <= hi) ? t : -1.0f;
+    // A sample on the light's edge must find its own pdf here after rounding (the samplers' pdfs are this
+    // one's, or must agree with it). 1e-6 of slack covers a light seen from near by; a point sampled on the
+    // edge of a sliver seen from afar comes back from its float direction a few ulps of the distances
+    // involved away, more at grazing incidence (the ray slides along the plane by t / cos): 4 ulps of them,
+    // turned into edge coordinates by the duals' lengths (1 / the light's heights). Tested after the tight
+    // bound, as lengths cost square roots and nearly every hit passes without them. The border added has no
+    // measure worth a bias: 2e-4 of a 3-unit sliver's height seen across a room.
+    if (onPlanarLight(light.shape, alpha, beta, 1e-6f, 1e-6f, 1e-6f))
+        return t;
+    const float slack = 2.4e-7f * (t / abs(denom) + length(p) + length(light.p0));
+    const float slackAlpha = 1e-6f + slack * length(light.dualU);
+    const float slackBeta = 1e-6f + slack * length(light.dualV);
+    const float slackSum = 1e-6f + slack * length(light.dualU + light.dualV);
+    return onPlanarLight(light.shape, alpha, beta, slackAlpha, slackBeta, slackSum) ? t : -1.0f;
 }
 
 /// Solid-angle pdf with which sampleLight(light, p, .) produces the unit direction `wi`; 0 if it cannot.
@@ -184,6 +203,22 @@ RT_FN bool sampleLight(RT_IN(LightData) light, vec3 p, vec2 u, RT_OUT(LightSampl
 /// to both strategies.
 RT_CONST(float, kMinSphericalRectangle, 1e-2f)
 
+/// Triangles are sampled by solid angle (Arvo 1995) between these solid angles (sr), by area outside them
+/// (pbrt-v4's bounds, §6.5.4): below, a light this small looks the same to both strategies, and float
+/// trigonometry of sub-triangles this thin is where GPUs differ most (Vulkan bounds sin and cos to 2^-11
+/// absolute only); above, the triangle fills nearly the whole hemisphere and Arvo's denominators approach 0.
+RT_CONST(float, kMinSphericalTriangle, 3e-4f)
+RT_CONST(float, kMaxSphericalTriangle, 6.22f)
+
+/// A triangle seen from p within the spherical triangle sampler's bounds, set up in `t`.
+RT_FN bool sphericalTriangleApplies(RT_IN(LightData) light, vec3 p, RT_OUT(SphericalTriangle) t)
+{
+    if (light.shape != RT_ENUM(LightShape, Triangle))
+        return false;
+    t = makeSphericalTriangle(p, light.p0, light.p1, light.p2);
+    return t.solidAngle >= Real(kMinSphericalTriangle) && t.solidAngle <= Real(kMaxSphericalTriangle);
+}
+
 /// A quad whose edges are orthogonal (to float precision): what spherical-rectangle sampling needs.
 RT_FN bool isRectangle(RT_IN(LightData) light)
 {
@@ -214,6 +249,21 @@ RT_FN vec4 rectangleCosineWeights(RT_IN(SphericalRectangle) r, vec3 n)
     const float w01 = max(dot(n, normalize(r.x0 * r.x + r.y1 * r.y + zn)), 0.01f);
     const float w11 = max(dot(n, normalize(r.x1 * r.x + r.y1 * r.y + zn)), 0.01f);
     return vec4(w00, w10, w01, w11);
+}
+
+/// The bilinear cosine warp's corner weights for a spherical triangle (pbrt-v4 §6.5.4, after Hart et al.
+/// 2020): the cosine to the receiver normal n of the vertex directions, floored at 0.01 as the rectangle's,
+/// at the corners of u where Arvo's map puts them: (w00, w10, w01, w11) = (B, B, A, C), since u.y = 0 is
+/// the vertex B for every u.x and u.y = 1 runs from A (u.x = 0) to C (u.x = 1). pbrt takes |cos| as its
+/// normal may face either way; here n faces the side the receiver takes light from (NEE's BSDF is 0 on the
+/// other), so a vertex below its horizon gets the floor, as in rectangleCosineWeights.
+RT_FN vec4 triangleCosineWeights(RT_IN(SphericalTriangle) t, vec3 n)
+{
+    const RealVec3 normal = RealVec3(n);
+    const float wa = float(max(dot(normal, t.a), 0.01));
+    const float wb = float(max(dot(normal, t.b), 0.01));
+    const float wc = float(max(dot(normal, t.c), 0.01));
+    return vec4(wb, wb, wa, wc);
 }
 
 /// A sphere light seen from p over the horizon of the receiver normal n: the orthographic projection of its
@@ -260,12 +310,13 @@ RT_FN bool projectedCap(RT_IN(LightData) s, vec3 p, vec3 n, RT_OUT(ProjectedCap)
 }
 
 /// Solid-angle pdf with which sampleLight(light, strategy, p, n, .) produces the unit direction wi; 0 if it
-/// cannot. SolidAngle: 1 / S over a rectangle (Ureña et al. 2013) of at least kMinSphericalRectangle sr, the
-/// cone of a sphere seen from outside; Projected: cos / F over a sphere's cap wholly above the horizon of
-/// the receiver normal n, F = pi sin^2(alpha) sin(beta) its projected solid angle; over such a rectangle the
-/// bilinear cosine warp's density at the direction's (u, v) over 1 / S; SolidAngle's pdf otherwise (and for
-/// n = 0); Area: the area density of the point wi reaches first (a sphere's near side). Every other case
-/// is area sampling.
+/// cannot. SolidAngle: 1 / S over a rectangle (Ureña et al. 2013) of at least kMinSphericalRectangle sr or a
+/// triangle (Arvo 1995) of kMinSphericalTriangle to kMaxSphericalTriangle sr, the cone of a sphere seen from
+/// outside; Projected: cos / F over a sphere's cap wholly above the horizon of the receiver normal n,
+/// F = pi sin^2(alpha) sin(beta) its projected solid angle; over such a rectangle or triangle the bilinear
+/// cosine warp's density at the direction's u (the inverse of the spherical map) over 1 / S; SolidAngle's
+/// pdf otherwise (and for n = 0); Area: the area density of the point wi reaches first (a sphere's near
+/// side). Every other case is area sampling.
 RT_FN float lightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec3 wi)
 {
     if (strategy != RT_ENUM(LightSampler, Area) && isRectangle(light))
@@ -283,6 +334,17 @@ RT_FN float lightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3
             const vec4 w = rectangleCosineWeights(r, n);
             return bilinearPdf(uv, w.x, w.y, w.z, w.w) / r.solidAngle;
         }
+    }
+    SphericalTriangle tri;
+    if (strategy != RT_ENUM(LightSampler, Area) && sphericalTriangleApplies(light, p, tri))
+    {
+        if (planarHit(light, p, wi) < 0.0f)
+            return 0.0f;
+        if (strategy == RT_ENUM(LightSampler, SolidAngle) || !(dot(n, n) > 0.0f))
+            return 1.0f / float(tri.solidAngle);
+        const vec4 w = triangleCosineWeights(tri, n);
+        const vec2 uv = invertSphericalTriangle(tri, RealVec3(wi));
+        return bilinearPdf(uv, w.x, w.y, w.z, w.w) / float(tri.solidAngle);
     }
     if (strategy == RT_ENUM(LightSampler, Projected) && light.shape == RT_ENUM(LightShape, Sphere))
     {
@@ -315,6 +377,11 @@ RT_FN float lightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3
 /// and returns false, a sample of zero contribution. With Projected, a sphere over the horizon is sampled
 /// uniformly over its projected cap, the ellipse, by the concentric map scaled to it (area-preserving, so
 /// stratification survives), and lifted to the hemisphere: density cos / F (Ureña & Georgiev 2018, §3-4).
+/// Triangles by SolidAngle: Arvo's map, uniform over the spherical triangle (Shared/SphericalTriangle.h);
+/// by Projected: u first warped by the bilinear density of the receiver's cosine at the corners of the
+/// square that Arvo's map sends to the vertices (warp product sampling: Hart et al. 2020, "Practical Product
+/// Sampling by Fitting and Composing Warps", EGSR; pbrt-v4 §6.5.4), density warp / S. The point is where the
+/// sampled direction meets the triangle, clamped onto it.
 RT_FN bool sampleLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec2 u,
                        RT_OUT(LightSample) ls)
 {
@@ -340,6 +407,26 @@ RT_FN bool sampleLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, ve
             ls.pdf = planarHit(light, p, ls.wi) > 0.0f ? warpPdf / r.solidAngle : 0.0f;
             return ls.pdf > 0.0f;
         }
+    }
+    SphericalTriangle tri;
+    if (strategy != RT_ENUM(LightSampler, Area) && sphericalTriangleApplies(light, p, tri))
+    {
+        // As for rectangles: Projected composes the cosine warp with Arvo's map, SolidAngle takes u as is.
+        const bool warp = strategy == RT_ENUM(LightSampler, Projected) && dot(n, n) > 0.0f;
+        const vec4 w = warp ? triangleCosineWeights(tri, n) : vec4(1.0f);
+        const vec2 warped = warp ? sampleBilinear(u, w.x, w.y, w.z, w.w) : u;
+        // The direction becomes a point on the triangle (barycentrics clamped), so the sample never misses.
+        ls.uv = sphericalTrianglePoint(tri, sphericalTriangleDirection(tri, warped));
+        ls.point = light.p0 + ls.uv.x * light.p1 + ls.uv.y * light.p2;
+        ls.normal = light.normal;
+        const vec3 toPoint = ls.point - p;
+        ls.distance = length(toPoint);
+        ls.wi = toPoint / ls.distance;
+        const float warpPdf = warp ? bilinearPdf(warped, w.x, w.y, w.z, w.w) : 1.0f;
+        // planarHit's slack finds every such point again, so this 0 (the sample dropped, as lightPdf would
+        // drop its direction) is a guard the tests check is never taken.
+        ls.pdf = planarHit(light, p, ls.wi) > 0.0f ? warpPdf / float(tri.solidAngle) : 0.0f;
+        return ls.pdf > 0.0f;
     }
     if (strategy == RT_ENUM(LightSampler, Projected) && light.shape == RT_ENUM(LightShape, Sphere))
     {

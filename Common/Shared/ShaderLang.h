@@ -3,7 +3,9 @@
 // GLSL types and constructors (vec2, vec3), float literals with an `f` suffix (GLSL accepts it; without it
 // C++ would compute in double and the engines would differ), the scalar functions below, RT_FN before each
 // function, RT_OUT(T) for out parameters, RT_IN(T) for struct parameters and RT_ENUM(Type, Value) for
-// HostDevice.h's tags. C++ sees it in namespace rt::shader.
+// HostDevice.h's tags. C++ sees it in namespace rt::shader. Code whose scalar type is switched to double for
+// the CPU (Shared/SphericalTriangle.h's Real) writes its literals without the suffix instead: double in C++,
+// float in GLSL.
 #ifndef RT_SHADER_LANG_H
 #define RT_SHADER_LANG_H
 
@@ -34,6 +36,7 @@ inline float sin(float x) { return std::sin(x); }
 inline float cos(float x) { return std::cos(x); }
 inline float abs(float x) { return std::fabs(x); }
 inline float acos(float x) { return std::acos(x); }
+inline float atan(float y, float x) { return std::atan2(y, x); } // GLSL's two-argument atan
 inline float min(float a, float b) { return b < a ? b : a; } // GLSL's min/max: the first for NaN b, as std::min
 inline float max(float a, float b) { return a < b ? b : a; }
 inline uint min(uint a, uint b) { return b < a ? b : a; }
@@ -51,6 +54,17 @@ inline uint bitfieldReverse(uint x)
     x = ((x >> 8u) & 0x00FF00FFu) | ((x & 0x00FF00FFu) << 8u);
     return (x >> 16u) | (x << 16u);
 }
+
+// The same built-ins for double, for Shared code whose scalar type is double on the CPU and float in GLSL
+// (Shared/SphericalTriangle.h's Real). A call mixing float and double is ambiguous, so it does not compile.
+inline double sqrt(double x) { return std::sqrt(x); }
+inline double sin(double x) { return std::sin(x); }
+inline double cos(double x) { return std::cos(x); }
+inline double abs(double x) { return std::fabs(x); }
+inline double atan(double y, double x) { return std::atan2(y, x); }
+inline double min(double a, double b) { return b < a ? b : a; }
+inline double max(double a, double b) { return a < b ? b : a; }
+inline double clamp(double x, double lo, double hi) { return min(max(x, lo), hi); }
 } // namespace rt::shader
 
 #define RT_FN inline

@@ -39,7 +39,7 @@ expect_error "unknown scene" "no-such-scene" --scene no-such-scene
 expect_error "zero spp" "samples per pixel" --spp 0
 expect_error "negative width" "width" --width -5
 expect_error "unknown flag" "--frobnicate" --frobnicate
-expect_error "bad sampling" "sampling" --sampling sobol
+expect_error "bad sampling" "sampling" --sampling halton
 expect_error "bad pdf value" "--pdf" --pdf maybe
 expect_error "bad estimator" "--estimator" --estimator path
 expect_error "contradicting estimators" "contradicts" --estimator nee --pdf on

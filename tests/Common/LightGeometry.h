@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -70,6 +71,16 @@ public:
                                        std::optional<LightSampler> strategy = std::nullopt,
                                        const vec3& receiverNormal = vec3(0.0f)) const
     {
+        return expectedCounts(samples, subdivisions, [&](const dvec3& w) {
+            return strategy ? double(lightPdf(m_light, *strategy, m_p, receiverNormal, vec3(w)))
+                            : double(lightPdf(m_light, m_p, vec3(w)));
+        });
+    }
+
+    /// Expected samples per cell for a density over directions (per steradian) given by the test itself.
+    std::vector<double> expectedCounts(long samples, int subdivisions,
+                                       const std::function<double(const dvec3&)>& solidAnglePdf) const
+    {
         const dvec3 e1(m_light.p1), e2(m_light.p2);
         const dvec3 cross = glm::cross(e1, e2);
         const double parallelogramArea = glm::length(cross);
@@ -91,9 +102,7 @@ public:
                         dvec3 w = y - dvec3(m_p);
                         const double r2 = glm::dot(w, w);
                         w /= std::sqrt(r2);
-                        const double pdf = strategy ? lightPdf(m_light, *strategy, m_p, receiverNormal, vec3(w))
-                                                    : lightPdf(m_light, m_p, vec3(w));
-                        integral += pdf * std::fabs(glm::dot(normal, w)) / r2 * jacobian;
+                        integral += solidAnglePdf(w) * std::fabs(glm::dot(normal, w)) / r2 * jacobian;
                     }
                 counts[i * m_n + j] = integral * h * h * double(samples);
             }

@@ -154,6 +154,43 @@ TEST(SceneCatalogue, CornellBoxLightsHasNineStripsAndThreeSpheres)
     }
 }
 
+TEST(SceneCatalogue, TriangleLightsHasTheCeilingHalvesTheSliverAndTheEmittingMesh)
+{
+    // scenes.md: the book-3 ceiling light as two triangles (15), facing down; a 300 x 3 sliver (8) on the
+    // back wall at y = 400 facing the camera; every triangle of the mesh (2), 150 tall on the floor about
+    // (278, 278).
+    const Scene s = makeScene("triangle-lights");
+    for (const LightData& l : s.lights)
+        ASSERT_EQ(l.shape, LightShape::Triangle);
+    ASSERT_GT(s.lights.size(), 3u + 1000u); // the bunny has 3,674 triangles
+    for (int i = 0; i < 2; ++i)
+    {
+        EXPECT_EQ(s.lights[i].normal, vec3(0, -1, 0)) << i;
+        EXPECT_FLOAT_EQ(s.lights[i].area, 0.5f * 130.0f * 105.0f) << i;
+        EXPECT_EQ(s.lights[i].p0.y, 554.0f) << i;
+        EXPECT_EQ(emission(s, s.lights[i]), vec3(15.0f)) << i;
+    }
+    const LightData& sliver = s.lights[2];
+    EXPECT_EQ(sliver.normal, vec3(0, 0, -1));
+    EXPECT_FLOAT_EQ(sliver.area, 0.5f * 300.0f * 3.0f);
+    EXPECT_EQ(sliver.p0, vec3(428, 400, 554));
+    EXPECT_EQ(emission(s, sliver), vec3(8.0f));
+    Aabb mesh;
+    for (std::size_t i = 3; i < s.lights.size(); ++i)
+    {
+        const LightData& l = s.lights[i];
+        EXPECT_EQ(emission(s, l), vec3(2.0f)) << i;
+        for (const vec3& corner : {l.p0, l.p0 + l.p1, l.p0 + l.p2})
+            mesh.expand(corner);
+    }
+    EXPECT_NEAR(mesh.min.y, 0.0f, 1e-3f);
+    EXPECT_NEAR(mesh.max.y, 150.0f, 1e-3f);
+    EXPECT_NEAR(0.5f * (mesh.min.x + mesh.max.x), 278.0f, 1e-3f);
+    EXPECT_NEAR(0.5f * (mesh.min.z + mesh.max.z), 278.0f, 1e-3f);
+    EXPECT_EQ(s.defaults.estimator, shader::Estimator::NeeMis);
+    EXPECT_TRUE(s.defaults.unidirectionalLight);
+}
+
 TEST(SceneCatalogue, CornellGlassSamplesTheLightThenTheGlass)
 {
     // RTTROYL §12.5: the ceiling light (facing down) and the glass sphere, a sampling target that emits nothing.

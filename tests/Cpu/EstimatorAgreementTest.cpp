@@ -28,6 +28,9 @@ struct Variant
     PixelSampling sampling = PixelSampling::Random;
 };
 
+/// Scenes with more lights than this leave book 3's mixture out (its cost grows with the light count).
+constexpr std::size_t kMixtureMaxLights = 2000;
+
 class CpuEstimatorAgreement : public ::testing::TestWithParam<std::string>
 {
 };
@@ -53,6 +56,11 @@ TEST_P(CpuEstimatorAgreement, EveryEstimatorMatchesNeeMis)
         return estimateBlocks(engine, scene, settings);
     };
     const BlockEstimate reference = blocksOf({Estimator::NeeMis, true});
+    // Book 3's mixture evaluates every light's pdf at every vertex: with an emitting mesh's thousands of lights
+    // (triangle-lights) its four 32 x 32 renders of 128 spp took 100 s of this suite. Its sums over many
+    // triangles are checked here on many-lights (1,000 lights); book 3's samplers are not the ones
+    // triangle-lights is for.
+    const bool mixtureAffordable = scene.lights.size() <= kMixtureMaxLights;
     for (const Variant v : {Variant{Estimator::Nee, true}, Variant{Estimator::Mixture, true, LightSampler::Projected, LightSelection::Bvh, 4},
                             Variant{Estimator::BsdfOnly, true, LightSampler::Projected, LightSelection::Bvh, 16}, Variant{Estimator::NeeMis, false},
                             Variant{Estimator::NeeMis, true, LightSampler::Area}, Variant{Estimator::Nee, true, LightSampler::Area},
@@ -62,6 +70,8 @@ TEST_P(CpuEstimatorAgreement, EveryEstimatorMatchesNeeMis)
                             Variant{Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Bvh, 1, PixelSampling::Sobol},
                             Variant{Estimator::NeeMis, true, LightSampler::SolidAngle}})
     {
+        if (v.estimator == Estimator::Mixture && !mixtureAffordable)
+            continue;
         const auto failures = disagreeingBlocks(reference, blocksOf(v), kMaxZ);
         for (const std::string& f : failures)
             ADD_FAILURE() << "A = nee-mis, B = " << toString(v.estimator) << " (" << toString(v.lightSampler) << ", "

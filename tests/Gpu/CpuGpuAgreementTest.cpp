@@ -89,13 +89,17 @@ TEST_P(GpuCpuAgreementFine, BlockMeansAgree)
 }
 
 /// Every scene with the mixture and with NEE + MIS; NEE alone, BSDF sampling and paths without Russian
-/// roulette where they differ most (media, glass, many lights).
+/// roulette where they differ most (media, glass, many lights). Book 3's mixture evaluates every light's pdf
+/// at every vertex: triangle-lights' 3,677 lights made it 35 s of the default suite (the CPU's side), some
+/// 40 minutes of the heavy one by extrapolation (64 times the samples), so that scene leaves it out; many-lights checks the mixture over
+/// hundreds of triangle lights, and book 3's samplers are not the ones triangle-lights is for.
 std::vector<AgreementCase> cases()
 {
     std::vector<AgreementCase> out;
     for (const SceneInfo& info : sceneCatalogue())
     {
-        out.push_back({info.id, Estimator::Mixture});
+        if (info.id != "triangle-lights")
+            out.push_back({info.id, Estimator::Mixture});
         out.push_back({info.id, Estimator::NeeMis});
     }
     for (const char* id : {"rtnw-cornell-smoke", "rtrol-cornell-glass", "rtnw-final"})
@@ -110,7 +114,7 @@ std::vector<AgreementCase> cases()
         out.push_back({id, Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Uniform});
     for (const char* id : {"cornell-box-lights", "many-lights"})
         out.push_back({id, Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Power});
-    for (const char* id : {"sphere-light-closeup", "rect-light-closeup"})
+    for (const char* id : {"sphere-light-closeup", "rect-light-closeup", "triangle-lights"})
         out.push_back({id, Estimator::NeeMis, true, LightSampler::SolidAngle});
     // Sobol draws on both engines; rtnw-final's moving spheres replay the sample's time in the GPU's
     // intersection shaders.

@@ -186,15 +186,20 @@ TEST(GpuShaderParity, LightSamplersMatchCommon)
 {
     // Book 3's samplers and NEE's three, each with a receiver normal (up: the lights are overhead; sideways:
     // the projected samplers' horizon cuts them): the GPU's compilation of Shared/LightSampling.h must give the
-    // C++ samples and pdfs to float tolerance.
+    // C++ samples and pdfs to float tolerance. Triangles under SolidAngle and Projected take Arvo's map, in
+    // float on the GPU and in double on the CPU: a ceiling triangle of 2500 units^2, triangle-lights' 300 x 3
+    // sliver on the back wall, and a 6 x 6 triangle on the ceiling (from 3e-3 sr down to below the 3e-4 sr
+    // where area sampling takes over).
     RT_REQUIRE_GPU();
     std::vector<LightData> lights;
     lights.push_back(makeQuadLight({213, 554, 227}, {130, 0, 0}, {0, 0, 105}, 0)); // a rectangle
     lights.push_back(makeTriangleLight({0, 500, 0}, {100, 500, 0}, {0, 500, 50}, 0));
     lights.push_back(makeSphereLight({277, 530, 277}, 50.0f, 0));
+    lights.push_back(makeTriangleLight({428, 400, 554}, {128, 400, 554}, {278, 403, 554}, 0));
+    lights.push_back(makeTriangleLight({270, 554, 270}, {276, 554, 270}, {270, 554, 276}, 0));
     const std::uint32_t strategies[] = {kNoIndex, std::uint32_t(LightSampler::Area),
                                         std::uint32_t(LightSampler::SolidAngle), std::uint32_t(LightSampler::Projected)};
-    constexpr std::size_t kCases = 4 * 192;
+    constexpr std::size_t kCases = 4 * 320;
     const std::vector<float> r = uniforms(5 * kCases, 0.0f, 1.0f, 5u);
     std::vector<std::uint32_t> in;
     for (std::size_t c = 0; c < kCases; ++c)
@@ -204,8 +209,8 @@ TEST(GpuShaderParity, LightSamplersMatchCommon)
         if (c % 8 == 0)
             p = lights[2].p0 + vec3(10.0f * r[5 * c], -20.0f * r[5 * c + 1], 5.0f);
         const vec3 n = c % 3 == 0 ? glm::normalize(vec3(1.0f, 0.3f, 0.2f)) : vec3(0.0f, 1.0f, 0.0f);
-        in.insert(in.end(), {std::uint32_t(c % 3), bits(p.x), bits(p.y), bits(p.z), bits(r[5 * c + 3]),
-                             bits(r[5 * c + 4]), strategies[(c / 3) % 4], bits(n.x), bits(n.y), bits(n.z)});
+        in.insert(in.end(), {std::uint32_t(c % 5), bits(p.x), bits(p.y), bits(p.z), bits(r[5 * c + 3]),
+                             bits(r[5 * c + 4]), strategies[(c / 5) % 4], bits(n.x), bits(n.y), bits(n.z)});
     }
     const std::vector<std::uint32_t> out = runParity(kLightSampling, in, lights);
     int compared = 0;
