@@ -28,6 +28,7 @@ using rt::kInv4Pi;
 using rt::kInvPi;
 using rt::kPi;
 using rt::lengthSquared;
+using rt::reflect;
 using rt::safeSqrt;
 
 // GLSL's built-ins for float, so that an unqualified call never reaches C's double versions.

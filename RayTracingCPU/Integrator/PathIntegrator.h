@@ -18,8 +18,6 @@
 #include <cstdint>
 
 #include "Integrator/Background.h"
-#include "Materials/Dielectric.h"
-#include "Materials/Metal.h"
 #include "Math/RayOffset.h"
 #include "Render/RenderSettings.h"
 #include "Sampling/LightSampling.h"
@@ -28,6 +26,7 @@
 #include "Shared/LightSelection.h"
 #include "Shared/Mis.h"
 #include "Shared/RussianRoulette.h"
+#include "Shared/SpecularScattering.h"
 #include "Textures/TextureEval.h"
 
 namespace rt::cpu
@@ -167,13 +166,13 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
         case MaterialType::Metal:
         {
             const vec2 u = rng.next2D();
-            if (!scatterMetal(ray.direction, ns, mat.fuzz, u, wi))
+            if (!shader::sampleFuzzyMirror(ray.direction, ns, mat.fuzz, u, wi))
                 return radiance;
             throughput *= evalTexture(scene, mat.albedoTexture, si.uv, si.p);
             break;
         }
         case MaterialType::Dielectric:
-            wi = scatterDielectric(ray.direction, ns, frontFace ? 1.0f / mat.ior : mat.ior, rng.nextFloat());
+            wi = shader::sampleDielectric(ray.direction, ns, frontFace ? 1.0f / mat.ior : mat.ior, rng.nextFloat());
             break;
         case MaterialType::Lambertian:
         case MaterialType::Isotropic:

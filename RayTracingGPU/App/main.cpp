@@ -80,7 +80,9 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
     const rt::RenderSettings& settings = job.request.settings;
     rt::gpu::gui::ImageSettings& image = w.initial.image;
     image.request = job.request;
-    image.request.settings.sampling = rt::PixelSampling::Accumulate;
+    // The window traces progressively: random jitter per pass, or Sobol's points (indexed by the sample).
+    if (settings.sampling != rt::PixelSampling::Sobol)
+        image.request.settings.sampling = rt::PixelSampling::Accumulate;
     image.camera = job.scene.camera;
     image.setSize({settings.width, settings.height()});
     image.rayTracing = onOff(flags.rayTracing, "--raytracing");

@@ -8,7 +8,8 @@ set -eu
 bin=$1 out=$2 engine=$3 width=$4 referenceSpp=$5 sppList=$6
 shift 6
 mkdir -p "$out"
-# estimator, light sampler, light selection, Russian roulette; STRATEGIES="nee-mis projected bvh on;..." picks others
+# estimator, light sampler, light selection, Russian roulette[, pixel sampling (default random)];
+# STRATEGIES="nee-mis projected bvh on sobol;..." picks others
 strategies=(
     "mixture solid-angle power on"
     "mixture solid-angle power off"
@@ -28,9 +29,11 @@ for scene in "$@"; do
         --seed 7777 --hdr "$reference" --stats "$out/$scene-reference.json" >/dev/null
     for s in "${strategies[@]}"; do
         set -- $s
+        sampling=${5:-random}
         name="$scene-$1-$2-$3-rr$4"
+        [ "$sampling" = random ] || name="$name-$sampling"
         "$bin/ray-tracing-gpu" --compare --quiet --scene "$scene" --width "$width" --engines "$engine" \
-            --estimator "$1" --light-sampler "$2" --light-selection "$3" --russian-roulette "$4" \
+            --estimator "$1" --light-sampler "$2" --light-selection "$3" --russian-roulette "$4" --sampling "$sampling" \
             --spp-list "$sppList" --reference "$reference" --table "$out/$name.json" >/dev/null
         echo "$name done" >&2
     done

@@ -1,18 +1,16 @@
-// Scattering functions of the CPU engine against the physics they implement.
+// The materials' scattering (Shared/, both engines) against the physics it implements.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "Materials/Dielectric.h"
-#include "Shared/DiffuseScattering.h"
-#include "Materials/Metal.h"
 #include "Random/Pcg.h"
+#include "Shared/DiffuseScattering.h"
+#include "Shared/SpecularScattering.h"
 
 namespace rt::test
 {
 namespace
 {
-using namespace rt::cpu;
 
 TEST(Dielectric, RefractionObeysSnellsLaw)
 {
@@ -20,7 +18,7 @@ TEST(Dielectric, RefractionObeysSnellsLaw)
     const float eta = 1.0f / 1.5f; // air into glass
     const vec3 d = glm::normalize(vec3(0.6f, -1.0f, 0.2f));
     // u = 1: Schlick's reflectance is below 1, so the refracted branch is taken.
-    const vec3 t = scatterDielectric(d, n, eta, 0.999999f);
+    const vec3 t = shader::sampleDielectric(d, n, eta, 0.999999f);
     ASSERT_LT(t.y, 0.0f);
     const float sinIn = std::sqrt(1.0f - d.y * d.y);
     const float sinOut = std::sqrt(1.0f - t.y * t.y) / glm::length(t);
@@ -34,15 +32,15 @@ TEST(Dielectric, TotalInternalReflectionBeyondTheCriticalAngle)
 {
     const vec3 n(0.0f, 1.0f, 0.0f); // facing the ray, which travels inside glass towards air
     const vec3 d = glm::normalize(vec3(1.0f, -0.5f, 0.0f)); // 63 degrees from the normal > 41.8
-    const vec3 r = scatterDielectric(d, n, 1.5f, 0.0f);
+    const vec3 r = shader::sampleDielectric(d, n, 1.5f, 0.0f);
     EXPECT_NEAR(r.x, d.x, 1e-6f);
     EXPECT_NEAR(r.y, -d.y, 1e-6f);
 }
 
 TEST(Dielectric, SchlickAtNormalIncidenceIsR0AndGrazingIsOne)
 {
-    EXPECT_NEAR(schlickReflectance(1.0f, 1.0f / 1.5f), 0.04f, 1e-6f);
-    EXPECT_NEAR(schlickReflectance(0.0f, 1.0f / 1.5f), 1.0f, 1e-6f);
+    EXPECT_NEAR(shader::schlickReflectance(1.0f, 1.0f / 1.5f), 0.04f, 1e-6f);
+    EXPECT_NEAR(shader::schlickReflectance(0.0f, 1.0f / 1.5f), 1.0f, 1e-6f);
 }
 
 TEST(Metal, FuzzIsASphereAroundTheMirrorDirection)
@@ -60,7 +58,7 @@ TEST(Metal, FuzzIsASphereAroundTheMirrorDirection)
     for (int i = 0; i < 200000; ++i)
     {
         vec3 wi;
-        ASSERT_TRUE(scatterMetal(d, n, fuzz, {rng.nextFloat(), rng.nextFloat()}, wi));
+        ASSERT_TRUE(shader::sampleFuzzyMirror(d, n, fuzz, {rng.nextFloat(), rng.nextFloat()}, wi));
         ASSERT_LE(glm::length(wi - mirror), fuzz * 1.0001f);
         mean += wi;
         ++kept;
@@ -68,7 +66,7 @@ TEST(Metal, FuzzIsASphereAroundTheMirrorDirection)
     mean /= float(kept);
     EXPECT_GT(glm::dot(glm::normalize(mean), mirror), 0.999f);
     vec3 exact;
-    ASSERT_TRUE(scatterMetal(d, n, 0.0f, {0.3f, 0.7f}, exact));
+    ASSERT_TRUE(shader::sampleFuzzyMirror(d, n, 0.0f, {0.3f, 0.7f}, exact));
     EXPECT_LT(glm::length(exact - mirror), 1e-6f);
 }
 
@@ -81,7 +79,7 @@ TEST(Metal, DirectionsBelowTheSurfaceAreAbsorbed)
     for (int i = 0; i < 10000; ++i)
     {
         vec3 wi;
-        if (!scatterMetal(grazing, n, 1.0f, {rng.nextFloat(), rng.nextFloat()}, wi))
+        if (!shader::sampleFuzzyMirror(grazing, n, 1.0f, {rng.nextFloat(), rng.nextFloat()}, wi))
             ++absorbed;
         else
             ASSERT_GT(wi.y, 0.0f);

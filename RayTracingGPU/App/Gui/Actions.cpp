@@ -55,6 +55,7 @@ const std::vector<ActionSpec>& specs()
         {
             {"raytracing", ActionValue::OnOff, "on|off", "ray tracing, or the rasterised preview"},
             {"accumulate", ActionValue::OnOff, "on|off", "accumulate samples between frames"},
+            {"sobol", ActionValue::OnOff, "on|off", "Owen-scrambled Sobol pixel samples (off: random)"},
             {"heatmap", ActionValue::OnOff, "on|off", "per-pixel cost (needs VK_KHR_shader_clock)"},
             {"heatmap-scale", ActionValue::Text, "auto|TICKS", "top of the heatmap's palette, in clock ticks per sample",
              0, 1e30,
@@ -99,6 +100,8 @@ bool applyAction(const Action& a, Controls& c)
         c.setLightSelection(*parseLightSelection(a.value));
     else if (n == "russian-roulette")
         c.setRussianRoulette(a.on());
+    else if (n == "sobol")
+        c.setSobol(a.on());
     else if (n == "unidirectional-light")
         c.setUnidirectionalLight(a.on());
     else if (n == "resize")

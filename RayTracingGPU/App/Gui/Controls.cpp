@@ -32,6 +32,10 @@ void Controls::setLightSelection(LightSelection selection)
 {
     m_state->image.request.settings.lightSelection = selection;
 }
+void Controls::setSobol(bool on)
+{
+    m_state->image.request.settings.sampling = on ? PixelSampling::Sobol : PixelSampling::Accumulate;
+}
 void Controls::setUnidirectionalLight(bool on) { m_state->image.request.settings.unidirectionalLight = on; }
 void Controls::setFov(float degrees) { m_state->image.camera = withFov(m_state->image.camera, degrees); }
 void Controls::setAperture(float diameter) { m_state->image.camera = withAperture(m_state->image.camera, diameter); }

@@ -32,6 +32,8 @@ public:
     void setRussianRoulette(bool on);
     void setLightSampler(LightSampler sampler);
     void setLightSelection(LightSelection selection);
+    /// Owen-scrambled Sobol pixel samples (on) or random jitter per pass (off).
+    void setSobol(bool on);
     void setUnidirectionalLight(bool on);
     float fov() const { return m_state->image.camera.vfovDegrees; }
     void setFov(float degrees);

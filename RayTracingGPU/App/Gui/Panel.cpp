@@ -74,6 +74,11 @@ void rayTracingSection(Controls& controls, const WindowState& state)
                 controls.setLightSelection(l);
         ImGui::EndCombo();
     }
+    if (bool on = image.request.settings.sampling == PixelSampling::Sobol; ImGui::Checkbox("Sobol samples", &on))
+        controls.setSobol(on);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Every 2D draw of a sample (pixel, light point, BSDF direction) an Owen-scrambled Sobol "
+                          "point over the pixel's samples (Burley 2020); off: independent random numbers");
     if (bool on = image.request.settings.russianRoulette; ImGui::Checkbox("Russian roulette", &on))
         controls.setRussianRoulette(on);
     if (bool on = image.request.settings.unidirectionalLight; ImGui::Checkbox("Unidirectional light", &on))

@@ -67,7 +67,8 @@ TEST(WindowActions, EachActionChangesItsSetting)
     EXPECT_EQ(state.image.request.settings.estimator, Estimator::BsdfOnly);
     EXPECT_FALSE(state.image.request.settings.russianRoulette);
     EXPECT_FALSE(state.image.request.settings.unidirectionalLight);
-    apply(state, "estimator=nee;light-sampler=area;light-selection=uniform");
+    apply(state, "estimator=nee;light-sampler=area;light-selection=uniform;sobol=on");
+    EXPECT_EQ(state.image.request.settings.sampling, PixelSampling::Sobol);
     EXPECT_EQ(state.image.request.settings.estimator, Estimator::Nee);
     EXPECT_EQ(state.image.request.settings.lightSampler, LightSampler::Area);
     EXPECT_EQ(state.image.request.settings.lightSelection, LightSelection::Uniform);
@@ -133,7 +134,7 @@ TEST(WindowSettings, EveryImageSettingRestartsAccumulationDisplaySettingsDoNot)
         return !(state.image == base.image);
     };
     for (const char* imageChange : {"depth=7", "pdf=off", "estimator=nee", "russian-roulette=off", "light-sampler=area", "light-selection=uniform",
-                                    "unidirectional-light=off", "accumulate=off",
+                                    "sobol=on", "unidirectional-light=off", "accumulate=off",
                                     "raytracing=off", "heatmap=on", "fov=30", "aperture=1", "focus=3",
                                     "camera=forward:1", "camera=yaw:1"})
         EXPECT_TRUE(changed(imageChange)) << imageChange;
