@@ -43,43 +43,41 @@ RT_FN float sinSubClamped(float sinA, float cosA, float sinB, float cosB)
 /// whole sphere is below the horizon.
 RT_FN float lightBvhImportance(RT_IN(LightBvhNode) node, vec3 p, vec3 n, bool twoSided)
 {
-    const float radius2 = node.radius2;
     const vec3 toCentre = node.centre - p;
     const float distance2 = lengthSquared(toCentre);
-    // The cone of directions from p that can reach the bounding sphere: half-angle theta_b.
-    float sinB = 0.0f;
-    float cosB = -1.0f; // p inside the sphere: every direction
-    vec3 wi = vec3(0.0f, 0.0f, 1.0f);
-    if (distance2 > radius2)
+    // The squared distance to the centre, floored only near it: flooring it at the squared radius (every point
+    // inside the bounding sphere alike) cost many-lights 12 % of its relMSE; pbrt-v4 floors it at half the
+    // diagonal's length, which depends on the scene's units.
+    const float importance = node.power / max(distance2, 0.1f * node.radius2);
+    // p inside the sphere: directions to it fill the sphere of directions, and both cosines bound to 1.
+    if (distance2 <= node.radius2)
+        return importance;
+    // The cone of directions from p that can reach the bounding sphere: half-angle theta_b about wi.
+    const float sin2 = node.radius2 / distance2;
+    const float sinB = sqrt(sin2);
+    const float cosB = safeSqrt(1.0f - sin2);
+    const vec3 wi = toCentre / sqrt(distance2);
+    float cosEmission = 1.0f; // a cone of normals filling the sphere (spheres): any direction emits
+    if (node.cosThetaO > -1.0f)
     {
-        const float sin2 = radius2 / distance2;
-        sinB = sqrt(sin2);
-        cosB = safeSqrt(1.0f - sin2);
-        wi = toCentre / sqrt(distance2);
+        // The angle theta_w between the axis and the direction from the lights to p, less theta_o (the
+        // normals' spread) and theta_b; emitters emit nothing beyond theta_e.
+        float cosW = -dot(node.axis, wi);
+        if (twoSided)
+            cosW = abs(cosW);
+        const float sinW = safeSqrt(1.0f - cosW * cosW);
+        const float sinO = safeSqrt(1.0f - node.cosThetaO * node.cosThetaO);
+        const float cosX = cosSubClamped(sinW, cosW, sinO, node.cosThetaO);
+        const float sinX = sinSubClamped(sinW, cosW, sinO, node.cosThetaO);
+        cosEmission = cosSubClamped(sinX, cosX, sinB, cosB);
+        if (!(cosEmission > node.cosThetaE))
+            return 0.0f;
     }
-    // Emission: the angle theta_w between the axis and the direction from the lights to p, less theta_o (the
-    // normals' spread) and theta_b; emitters emit nothing beyond theta_e.
-    float cosW = -dot(node.axis, wi);
-    if (twoSided)
-        cosW = abs(cosW);
-    const float sinW = safeSqrt(1.0f - cosW * cosW);
-    const float sinO = safeSqrt(1.0f - node.cosThetaO * node.cosThetaO);
-    const float cosX = cosSubClamped(sinW, cosW, sinO, node.cosThetaO);
-    const float sinX = sinSubClamped(sinW, cosW, sinO, node.cosThetaO);
-    const float cosEmission = cosSubClamped(sinX, cosX, sinB, cosB);
-    if (!(cosEmission > node.cosThetaE))
-        return 0.0f;
-    // The squared distance to the centre, floored only near it: flooring it at radius2 (every point inside
-    // the bounding sphere alike) cost many-lights 12 % of its relMSE; pbrt-v4 floors it at half the diagonal's
-    // length, which depends on the scene's units.
-    float importance = node.power * cosEmission / max(distance2, 0.1f * radius2);
-    if (dot(n, n) > 0.0f)
-    {
-        const float cosI = dot(n, wi);
-        const float sinI = safeSqrt(1.0f - cosI * cosI);
-        importance *= max(cosSubClamped(sinI, cosI, sinB, cosB), 0.0f);
-    }
-    return importance;
+    if (!(dot(n, n) > 0.0f))
+        return importance * cosEmission;
+    const float cosI = dot(n, wi);
+    const float sinI = safeSqrt(1.0f - cosI * cosI);
+    return importance * cosEmission * max(cosSubClamped(sinI, cosI, sinB, cosB), 0.0f);
 }
 
 /// The probability of the first child of interior node `index` at (p, n): its share of the two children's
