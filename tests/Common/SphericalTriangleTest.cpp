@@ -6,10 +6,10 @@
 // forward one (§2.5); finite samples with positive pdfs for slivers, degenerate and near-hemisphere
 // triangles. Direct lighting through them (area, solid angle, projected and Lambert's formula agreeing) is in
 // LightIrradianceTest.cpp.
-#include "LightGeometry.h"
 #include "Render/RenderSettings.h"
-#include "StatisticsHelpers.h"
 #include "Support/ChiSquare.h"
+#include "Support/LightGeometry.h"
+#include "Support/StatisticsHelpers.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
