@@ -5,16 +5,16 @@
 // few hundred points; only a histogram of many samples sees a density the GPU's float trigonometry bends a
 // little everywhere, or a branch those points never took. The recipe is Mitsuba 3's (research notes §2.1,
 // Support/ChiSquare.h): cells below 5 expected samples pooled, alpha = 0.01 with Šidák's correction over the
-// configurations of a test. Each returned sample must also be finite with a positive pdf that the C++ lightPdf
-// of its direction finds again to 1e-3 (float32 on the GPU).
+// configurations of a test. Each returned sample must also be finite with a positive pdf that the C++
+// lightPdf of its direction finds again to 1e-3 (float32 on the GPU).
 //
 // Every sampler NEE has (LightSampler Area, SolidAngle, Projected) and book 3's (strategy kNoIndex), each on
 // sphere, rectangle and triangle lights seen near and large, distant and small (below the spherical samplers'
 // bounds: area sampling), at grazing incidence with the receiver's horizon across the light, and a sliver
 // triangle. The histogram domains are the Common tests': the planar light's own surface (LightSurfaceDomain),
-// the cone of directions to a sphere, and for Area sampling of a sphere the visible cap's normals (its density
-// over directions diverges at the silhouette, where no grid of directions integrates it; over the surface it
-// is uniform).
+// the cone of directions to a sphere, and for Area sampling of a sphere the visible cap's normals (its
+// density over directions diverges at the silhouette, where no grid of directions integrates it; over the
+// surface it is uniform).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -77,7 +77,8 @@ std::vector<SamplerCase> samplerCases()
 {
     namespace t = ::rt::test;
     const vec3 dir(0.3f, 1.0f, -0.2f);
-    const auto sphere = [&](const std::string& name, float sin2, double normalDegrees) {
+    const auto sphere = [&](const std::string& name, float sin2, double normalDegrees)
+    {
         const LightData l = t::sphereSeenAt(sin2, dir);
         return SamplerCase{name, l, vec3(0.0f), tiltedFrom(towards(l, vec3(0.0f)), normalDegrees)};
     };
@@ -95,22 +96,26 @@ std::vector<SamplerCase> samplerCases()
         sphere("sphere low, rim 2 degrees over the horizon (sin^2 = 0.09)", 0.09f, 90.0 - 17.4576 - 2.0),
         // alpha = 30 degrees, the centre 10 degrees up: Projected falls back to the cone.
         sphere("sphere straddling the horizon (sin^2 = 0.25)", 0.25f, 80.0),
-        {"quad near field, large", t::makeQuadLight({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), {0.3f, 0.6f, 0.02f},
+        {"quad near field, large",
+         t::makeQuadLight({0, 0, 0}, {1, 0, 0}, {0, 1, 0}),
+         {0.3f, 0.6f, 0.02f},
          glm::normalize(vec3(0.3f, 0.2f, -1.0f))},
         planar("strip across the room", t::makeQuadLight({455, 100, 554}, {-355, 0, 0}, {0, 10, 0}),
                {278, 300, 254}, 40.0),
-        planar("quad distant, small (4e-3 sr: area sampling)", t::makeQuadLight({-0.5f, -0.5f, 15}, {1, 0, 0}, {0, 1, 0}),
-               vec3(0.0f), 30.0),
-        {"quad grazing, horizon across it", t::makeQuadLight({1, -1, 0.05f}, {2, 0, 0}, {0, 2, 0}), vec3(0.0f),
-         acrossTheHorizon},
-        {"triangle near field, large", t::makeTriangleLight({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), {0.25f, 0.25f, 0.01f},
+        planar("quad distant, small (4e-3 sr: area sampling)",
+               t::makeQuadLight({-0.5f, -0.5f, 15}, {1, 0, 0}, {0, 1, 0}), vec3(0.0f), 30.0),
+        {"quad grazing, horizon across it", t::makeQuadLight({1, -1, 0.05f}, {2, 0, 0}, {0, 2, 0}),
+         vec3(0.0f), acrossTheHorizon},
+        {"triangle near field, large",
+         t::makeTriangleLight({0, 0, 0}, {1, 0, 0}, {0, 1, 0}),
+         {0.25f, 0.25f, 0.01f},
          glm::normalize(vec3(0.3f, -0.2f, -1.0f))},
         planar("triangle distant (1e-3 sr)", t::makeTriangleLight({-10, 0, 400}, {10, 0, 400}, {0, 16, 400}),
                vec3(0.0f), 45.0),
         planar("triangle distant, small (1.6e-4 sr: area sampling)",
                t::makeTriangleLight({-1, 0, 100}, {1, 0, 100}, {0, 1.6f, 100}), vec3(0.0f), 30.0),
-        {"triangle grazing, horizon across it", t::makeTriangleLight({2, -1, 0.03f}, {3, 1, 0.03f}, {2, 1, 0.03f}),
-         vec3(0.0f), acrossTheHorizon},
+        {"triangle grazing, horizon across it",
+         t::makeTriangleLight({2, -1, 0.03f}, {3, 1, 0.03f}, {2, 1, 0.03f}), vec3(0.0f), acrossTheHorizon},
         planar("sliver, near", t::sliverTriangle(), {280, 104, 550}, 30.0),
     };
 }
@@ -118,7 +123,8 @@ std::vector<SamplerCase> samplerCases()
 /// The density C++ reports for a direction under `strategy` (kNoIndex: book 3's sampler).
 float cpuPdf(const SamplerCase& c, std::uint32_t strategy, const vec3& wi)
 {
-    return strategy == kNoIndex ? lightPdf(c.light, c.p, wi) : lightPdf(c.light, LightSampler(strategy), c.p, c.n, wi);
+    return strategy == kNoIndex ? lightPdf(c.light, c.p, wi)
+                                : lightPdf(c.light, LightSampler(strategy), c.p, c.n, wi);
 }
 
 /// A sphere light seen from outside, histogrammed by the normal at the point each direction first meets:
@@ -129,7 +135,7 @@ float cpuPdf(const SamplerCase& c, std::uint32_t strategy, const vec3& wi)
 /// the sphere's cone goes to its closest approach, on the silhouette: the edge row.
 class SphereSurfaceDomain
 {
-public:
+  public:
     SphereSurfaceDomain(const LightData& sphere, const vec3& p, int thetaCells, int phiCells)
         : m_centre(sphere.p0), m_p(p), m_radius(sphere.radius),
           m_cap(m_p - m_centre, m_radius / glm::distance(m_p, m_centre), thetaCells, phiCells)
@@ -153,7 +159,8 @@ public:
                                        const std::function<double(const dvec3&)>& solidAnglePdf) const
     {
         return m_cap.expectedCounts(
-            [&](const dvec3& normal) {
+            [&](const dvec3& normal)
+            {
                 dvec3 w = m_centre + m_radius * normal - m_p;
                 const double r2 = glm::dot(w, w);
                 w /= std::sqrt(r2);
@@ -162,7 +169,7 @@ public:
             samples, subdivisions);
     }
 
-private:
+  private:
     dvec3 m_centre, m_p;
     double m_radius;
     CapDomain m_cap;
@@ -186,11 +193,13 @@ Histogramming histogrammingFor(const SamplerCase& c, std::uint32_t strategy, lon
     if (c.light.shape == LightShape::Sphere)
     {
         // The other samplers draw from the cone of directions to the sphere with a bounded density (uniform,
-        // or the receiver's cosine): cells of directions, as LightSampling's chi-square. Over the surface their
-        // density would peak at the point nearest p, (d - R)^-2, too sharply for a near sphere's quadrature.
+        // or the receiver's cosine): cells of directions, as LightSampling's chi-square. Over the surface
+        // their density would peak at the point nearest p, (d - R)^-2, too sharply for a near sphere's
+        // quadrature.
         const ::rt::test::Cone cone = ::rt::test::coneOf(c.light, c.p);
         const CapDomain domain(cone.axis, cone.cosMax, cells / 2, cells);
-        return {[domain](const vec3& wi) { return domain.cell(dvec3(wi)); }, domain.expectedCounts(pdf, samples, 4)};
+        return {[domain](const vec3& wi) { return domain.cell(dvec3(wi)); },
+                domain.expectedCounts(pdf, samples, 4)};
     }
     // 16 x 16 quadrature points per cell: the area density of the near-field cases peaks under the point.
     const LightSurfaceDomain domain(c.light, c.p, cells);
@@ -199,7 +208,8 @@ Histogramming histogrammingFor(const SamplerCase& c, std::uint32_t strategy, lon
 
 /// The GPU's samples of `strategy` for `samples` uniform points of a fixed seed: Parity.comp's
 /// kLightSampling output, (ok, wi, pdf, lightPdf(wi)) per sample.
-std::vector<std::uint32_t> sampleOnGpu(const SamplerCase& c, std::uint32_t strategy, long samples, std::uint32_t seed)
+std::vector<std::uint32_t> sampleOnGpu(const SamplerCase& c, std::uint32_t strategy, long samples,
+                                       std::uint32_t seed)
 {
     Rng rng(pcgHash(seed));
     std::vector<std::uint32_t> in;
@@ -207,8 +217,8 @@ std::vector<std::uint32_t> sampleOnGpu(const SamplerCase& c, std::uint32_t strat
     for (long i = 0; i < samples; ++i)
     {
         const vec2 u = ::rt::test::uniform2(rng);
-        in.insert(in.end(), {0u, bits(c.p.x), bits(c.p.y), bits(c.p.z), bits(u.x), bits(u.y), strategy, bits(c.n.x),
-                             bits(c.n.y), bits(c.n.z)});
+        in.insert(in.end(), {0u, bits(c.p.x), bits(c.p.y), bits(c.p.z), bits(u.x), bits(u.y), strategy,
+                             bits(c.n.x), bits(c.n.y), bits(c.n.z)});
     }
     return runParity(kLightSampling, in, {c.light});
 }
@@ -230,7 +240,9 @@ std::string runName(const ::testing::TestParamInfo<SamplerRun>& info)
 {
     const SamplerRun& r = info.param;
     const std::string strategy = r.strategy == kNoIndex ? "book3" : toString(LightSampler(r.strategy));
-    const char* shape = r.shape == LightShape::Sphere ? "sphere" : r.shape == LightShape::Quad ? "quad" : "triangle";
+    const char* shape = r.shape == LightShape::Sphere ? "sphere"
+                        : r.shape == LightShape::Quad ? "quad"
+                                                      : "triangle";
     return ::rt::test::testNameOf(strategy + "_" + shape); // '-' -> '_'
 }
 
@@ -252,7 +264,8 @@ TEST_P(GpuSamplerChiSquare, SamplesFollowTheCpuPdf)
         if (c.light.shape == run.shape)
             cases.push_back(c);
     const bool area = run.strategy == std::uint32_t(LightSampler::Area);
-    std::uint32_t seed = 9000 + 100 * (run.strategy == kNoIndex ? 3u : run.strategy) + 20 * std::uint32_t(run.shape);
+    std::uint32_t seed =
+        9000 + 100 * (run.strategy == kNoIndex ? 3u : run.strategy) + 20 * std::uint32_t(run.shape);
     for (const SamplerCase& c : cases)
     {
         SCOPED_TRACE(c.name);
@@ -272,11 +285,12 @@ TEST_P(GpuSamplerChiSquare, SamplesFollowTheCpuPdf)
             }
             const vec3 wi = vec3At(out, o + 1);
             const float pdf = asFloat(out[o + 4]);
-            if (!isFinite(wi) || std::fabs(glm::length(wi) - 1.0f) > 1e-5f || !std::isfinite(pdf) || !(pdf > 0.0f))
+            if (!isFinite(wi) || std::fabs(glm::length(wi) - 1.0f) > 1e-5f || !std::isfinite(pdf) ||
+                !(pdf > 0.0f))
             {
                 if (invalid++ < 3)
-                    ADD_FAILURE() << "sample " << i << ": wi (" << wi.x << ", " << wi.y << ", " << wi.z << "), pdf "
-                                  << pdf;
+                    ADD_FAILURE() << "sample " << i << ": wi (" << wi.x << ", " << wi.y << ", " << wi.z
+                                  << "), pdf " << pdf;
                 continue;
             }
             const int cell = h.cell(wi);
@@ -289,10 +303,11 @@ TEST_P(GpuSamplerChiSquare, SamplesFollowTheCpuPdf)
             double tolerance = 1e-3;
             if (sphere && area)
             {
-                // Area sampling of a sphere: C++ finds the point again from the float direction, whose rounding
-                // (6e-8 of d across) moves the cosine at a silhouette point, the root of a discriminant, by
-                // about 1e-7 (d / r) / cos^2 relative (LightSampling's SphereAreaSampling test). Where that
-                // is beyond 1 % the density diverges and the histogram, not the pdf, checks the samples.
+                // Area sampling of a sphere: C++ finds the point again from the float direction, whose
+                // rounding (6e-8 of d across) moves the cosine at a silhouette point, the root of a
+                // discriminant, by about 1e-7 (d / r) / cos^2 relative (LightSampling's SphereAreaSampling
+                // test). Where that is beyond 1 % the density diverges and the histogram, not the pdf, checks
+                // the samples.
                 const dvec3 w(wi), toCentre = dvec3(c.light.p0) - dvec3(c.p);
                 const dvec3 closest = toCentre - glm::dot(toCentre, w) * w;
                 const double r = c.light.radius;
@@ -314,14 +329,16 @@ TEST_P(GpuSamplerChiSquare, SamplesFollowTheCpuPdf)
                 continue;
             }
             if (std::fabs(double(pdf) - double(cpu)) > tolerance * double(cpu) && mismatches++ < 3)
-                ADD_FAILURE() << "sample " << i << ": GPU pdf " << pdf << ", C++ lightPdf of its direction " << cpu;
+                ADD_FAILURE() << "sample " << i << ": GPU pdf " << pdf << ", C++ lightPdf of its direction "
+                              << cpu;
         }
         EXPECT_EQ(invalid, 0);
         EXPECT_EQ(mismatches, 0) << "samples whose pdf C++ does not find again, of " << kSamples;
         EXPECT_LE(rim, kSamples / 100'000) << "rim samples outside the cone";
         // Within 1 % ill-conditioned: cos below sqrt(3e-5 d / r), 5.5 % of the visible samples of a sphere
         // seen at d = 100 r. The chi-square checks those too.
-        EXPECT_LE(illConditioned, (kSamples - declined) / 10) << "samples too near the silhouette to compare pdfs";
+        EXPECT_LE(illConditioned, (kSamples - declined) / 10)
+            << "samples too near the silhouette to compare pdfs";
         EXPECT_EQ(outside, 0) << "samples missing the light";
         std::vector<double> expected = h.expected;
         if (area && sphere)
@@ -338,7 +355,8 @@ TEST_P(GpuSamplerChiSquare, SamplesFollowTheCpuPdf)
         {
             EXPECT_EQ(declined, 0) << "samples declined";
         }
-        const auto r = ::rt::test::chiSquareTest(observed, expected, ::rt::test::kChiSquareAlpha, int(cases.size()));
+        const auto r =
+            ::rt::test::chiSquareTest(observed, expected, ::rt::test::kChiSquareAlpha, int(cases.size()));
         EXPECT_TRUE(r.passed) << r.message;
     }
 }
@@ -360,7 +378,8 @@ TEST(SamplerChiSquareCases, TakeEveryBranchOfTheSamplers)
     // The configurations' names promise the samplers' branches: the spherical rectangle and triangle within
     // their bounds or area sampling below them, a sphere's cap above the horizon (the ellipse) or across it.
     const auto cases = samplerCases();
-    const auto find = [&](const std::string& prefix) -> const SamplerCase& {
+    const auto find = [&](const std::string& prefix) -> const SamplerCase&
+    {
         for (const SamplerCase& c : cases)
             if (c.name.rfind(prefix, 0) == 0)
                 return c;
@@ -375,7 +394,8 @@ TEST(SamplerChiSquareCases, TakeEveryBranchOfTheSamplers)
             << name;
     }
     const SamplerCase& smallQuad = find("quad distant, small");
-    EXPECT_LT(shader::makeSphericalRectangle(smallQuad.p, smallQuad.light.p0, smallQuad.light.p1, smallQuad.light.p2)
+    EXPECT_LT(shader::makeSphericalRectangle(smallQuad.p, smallQuad.light.p0, smallQuad.light.p1,
+                                             smallQuad.light.p2)
                   .solidAngle,
               shader::kMinSphericalRectangle);
     for (const char* name : {"triangle near field", "triangle distant (", "triangle grazing", "sliver"})
@@ -384,7 +404,8 @@ TEST(SamplerChiSquareCases, TakeEveryBranchOfTheSamplers)
         EXPECT_TRUE(shader::sphericalTriangleApplies(find(name).light, find(name).p, t)) << name;
     }
     shader::SphericalTriangle t;
-    EXPECT_FALSE(shader::sphericalTriangleApplies(find("triangle distant, small").light, find("triangle distant, small").p, t));
+    EXPECT_FALSE(shader::sphericalTriangleApplies(find("triangle distant, small").light,
+                                                  find("triangle distant, small").p, t));
     for (const char* name : {"sphere near", "sphere distant", "sphere low"})
     {
         shader::ProjectedCap cap;

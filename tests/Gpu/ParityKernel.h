@@ -31,7 +31,8 @@ struct ParityLayout
     std::uint32_t inputWords;
     std::uint32_t outputWords;
 };
-inline constexpr ParityLayout kParityLayouts[] = {{3, 8}, {7, 3}, {3, 13}, {10, 6}, {3, 2}, {10, 3}, {1, 1}, {8, 3}, {3, 8}};
+inline constexpr ParityLayout kParityLayouts[] = {{3, 8},  {7, 3}, {3, 13}, {10, 6}, {3, 2},
+                                                  {10, 3}, {1, 1}, {8, 3},  {3, 8}};
 
 inline std::uint32_t bits(float f) { return std::bit_cast<std::uint32_t>(f); }
 inline float asFloat(std::uint32_t u) { return std::bit_cast<float>(u); }
@@ -43,5 +44,6 @@ inline vec3 vec3At(const std::vector<std::uint32_t>& w, std::size_t i)
 /// Runs `mode` on the shared engine's device over `inputs` (inputWords per case); returns outputWords per
 /// case. `lights` and `lightBvh` fill the light bindings (a placeholder each when absent).
 std::vector<std::uint32_t> runParity(ParityMode mode, const std::vector<std::uint32_t>& inputs,
-                                     const std::vector<LightData>& lights = {}, const LightBvh* lightBvh = nullptr);
+                                     const std::vector<LightData>& lights = {},
+                                     const LightBvh* lightBvh = nullptr);
 } // namespace rt::gpu::test

@@ -56,7 +56,10 @@ inline LightData sphereSeenAt(float sin2, const vec3& direction)
 }
 
 /// cornell-box-lights' back-wall strip (355 x 10) cut along its diagonal: a sliver with a 1.6 degree corner.
-inline LightData sliverTriangle() { return makeTriangleLight({455, 100, 554}, {100, 100, 554}, {100, 110, 554}); }
+inline LightData sliverTriangle()
+{
+    return makeTriangleLight({455, 100, 554}, {100, 100, 554}, {100, 110, 554});
+}
 
 struct LightCase
 {
