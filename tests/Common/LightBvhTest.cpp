@@ -7,13 +7,13 @@
 #include <cmath>
 #include <vector>
 
-#include "LightCases.h"
 #include "Random/Pcg.h"
 #include "Sampling/LightBvh.h"
-#include "Shared/LightSelection.h"
 #include "Scenes/Catalogue.h"
-#include "StatisticsHelpers.h"
+#include "Shared/LightSelection.h"
 #include "Support/ChiSquare.h"
+#include "Support/LightCases.h"
+#include "Support/StatisticsHelpers.h"
 
 namespace rt
 {

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "LightCases.h"
 #include "Render/RenderSettings.h"
-#include "StatisticsHelpers.h"
+#include "Support/LightCases.h"
+#include "Support/StatisticsHelpers.h"
 
 namespace rt
 {

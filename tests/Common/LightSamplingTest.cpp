@@ -9,10 +9,10 @@
 #include <sstream>
 #include <vector>
 
-#include "LightGeometry.h"
-#include "StatisticsHelpers.h"
 #include "Support/CapDomain.h"
 #include "Support/ChiSquare.h"
+#include "Support/LightGeometry.h"
+#include "Support/StatisticsHelpers.h"
 
 namespace rt
 {

@@ -10,10 +10,10 @@
 #include "Random/Pcg.h"
 #include "Render/RenderSettings.h"
 #include "Sampling/LightPower.h"
-#include "Shared/LightSelection.h"
 #include "Scenes/Catalogue.h"
-#include "StatisticsHelpers.h"
+#include "Shared/LightSelection.h"
 #include "Support/ChiSquare.h"
+#include "Support/StatisticsHelpers.h"
 
 namespace rt
 {

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "Random/Pcg.h"
-#include "StatisticsHelpers.h"
 #include "Support/ChiSquare.h"
+#include "Support/StatisticsHelpers.h"
 
 namespace rt
 {

@@ -10,8 +10,8 @@
 
 #include "Random/Pcg.h"
 #include "Shared/Sobol.h"
-#include "StatisticsHelpers.h"
 #include "Support/ChiSquare.h"
+#include "Support/StatisticsHelpers.h"
 
 namespace rt
 {

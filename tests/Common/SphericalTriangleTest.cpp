@@ -6,10 +6,10 @@
 // forward one (§2.5); finite samples with positive pdfs for slivers, degenerate and near-hemisphere
 // triangles. Direct lighting through them (area, solid angle, projected and Lambert's formula agreeing) is in
 // LightIrradianceTest.cpp.
-#include "LightGeometry.h"
 #include "Render/RenderSettings.h"
-#include "StatisticsHelpers.h"
 #include "Support/ChiSquare.h"
+#include "Support/LightGeometry.h"
+#include "Support/StatisticsHelpers.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -29,12 +29,6 @@ struct TriangleCase
     vec3 p; // shading point
 };
 
-/// cornell-box-lights' back-wall strip (355 x 10) cut along its diagonal: a sliver with a 1.6 degree corner.
-LightData sliver()
-{
-    return test::makeTriangleLight({455, 100, 554}, {100, 100, 554}, {100, 110, 554});
-}
-
 /// Triangles the spherical sampler takes (3e-4 to 6.22 sr): a general one (pbrt-v4's sampling test), the near
 /// field and a large triangle just below the point (both beyond 5.8 sr: nearly the hemisphere), grazing
 /// (every direction within 1 degree of the light's plane), tiny (3.6e-4 sr), distant (1e-3 sr from 400
@@ -50,8 +44,8 @@ std::vector<TriangleCase> triangleCases()
         {"tiny", test::makeTriangleLight({0.3f, 0.2f, 1.0f}, {0.33f, 0.2f, 1.01f}, {0.31f, 0.23f, 0.99f}),
          vec3(0.0f)},
         {"distant", test::makeTriangleLight({-10, 0, 400}, {10, 0, 400}, {0, 16, 400}), vec3(0.0f)},
-        {"sliver, near", sliver(), {280, 104, 550}},
-        {"sliver, across the room", sliver(), {278, 300, 254}},
+        {"sliver, near", test::sliverTriangle(), {280, 104, 550}},
+        {"sliver, across the room", test::sliverTriangle(), {278, 300, 254}},
     };
 }
 

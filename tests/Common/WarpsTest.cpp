@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "Sampling/Warps.h"
-#include "StatisticsHelpers.h"
 #include "Support/CapDomain.h"
 #include "Support/ChiSquare.h"
+#include "Support/StatisticsHelpers.h"
 
 namespace rt
 {

@@ -2,17 +2,14 @@
 // for bit (integer arithmetic, no fused multiply-add), the warps, light samplers, Perlin noise and sphere
 // roots to a tolerance that allows the GPU's transcendental functions (Vulkan guarantees sin/cos only to
 // an absolute 2^-11; real devices do far better).
-#include <bit>
-#include <cstring>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "Assets/AssetPaths.h"
-#include "ComputeKernel.h"
 #include "GpuTestEnvironment.h"
 #include "Image/ImageIO.h"
 #include "Math/RayOffset.h"
+#include "ParityKernel.h"
 #include "Random/Pcg.h"
 #include "Sampling/LightBvh.h"
 #include "Sampling/LightSampling.h"
@@ -25,53 +22,6 @@ namespace rt::gpu::test
 {
 namespace
 {
-// Case layouts of Shaders/Tests/Parity.comp, in 32-bit words.
-enum Mode : std::uint32_t
-{
-    kRandom = 0,
-    kRayOffset = 1,
-    kWarps = 2,
-    kLightSampling = 3,
-    kPerlin = 4,
-    kSphere = 5,
-    kSrgb = 6,
-    kLightBvh = 7,
-    kSobol = 8
-};
-struct Layout
-{
-    std::uint32_t inputWords;
-    std::uint32_t outputWords;
-};
-constexpr Layout kLayouts[] = {{3, 8}, {7, 3}, {3, 13}, {10, 6}, {3, 2}, {10, 3}, {1, 1}, {8, 3}, {3, 8}};
-
-std::uint32_t bits(float f) { return std::bit_cast<std::uint32_t>(f); }
-float asFloat(std::uint32_t u) { return std::bit_cast<float>(u); }
-
-/// Runs `mode` over `inputs` (inputWords per case); returns outputWords per case.
-std::vector<std::uint32_t> runParity(Mode mode, const std::vector<std::uint32_t>& inputs,
-                                     const std::vector<LightData>& lights = {}, const LightBvh* lightBvh = nullptr)
-{
-    const Layout layout = kLayouts[mode];
-    const auto cases = static_cast<std::uint32_t>(inputs.size() / layout.inputWords);
-    const std::uint32_t push[4] = {mode, cases, layout.inputWords, layout.outputWords};
-    const std::vector<LightData> lightBuffer = lights.empty() ? std::vector<LightData>(1) : lights;
-    const LightBvh noBvh{std::vector<LightBvhNode>(1), std::vector<std::uint32_t>(1)};
-    const LightBvh& bvh = lightBvh != nullptr ? *lightBvh : noBvh;
-    const std::vector<std::byte> out = runKernel(
-        sharedEngine()->context(), executableDir() / "shaders" / "Tests" / "Parity.comp.spv",
-        {{inputs.data(), inputs.size() * 4},
-         {nullptr, std::size_t(cases) * layout.outputWords * 4},
-         {&perlinTables(), sizeof(shader::PerlinData)},
-         {lightBuffer.data(), lightBuffer.size() * sizeof(LightData)},
-         {bvh.nodes.data(), bvh.nodes.size() * sizeof(LightBvhNode)},
-         {bvh.leaves.data(), bvh.leaves.size() * 4}},
-        1, push, sizeof(push), (cases + 63) / 64);
-    std::vector<std::uint32_t> words(out.size() / 4);
-    std::memcpy(words.data(), out.data(), out.size());
-    return words;
-}
-
 /// Deterministic test inputs in [lo, hi).
 std::vector<float> uniforms(std::size_t n, float lo, float hi, std::uint32_t seed)
 {
@@ -86,11 +36,6 @@ void expectNear(const vec3& gpu, const vec3& cpu, float tolerance, const char* w
 {
     for (int k = 0; k < 3; ++k)
         EXPECT_NEAR(gpu[k], cpu[k], tolerance) << what << ", case " << c << ", component " << k;
-}
-
-vec3 vec3At(const std::vector<std::uint32_t>& w, std::size_t i)
-{
-    return {asFloat(w[i]), asFloat(w[i + 1]), asFloat(w[i + 2])};
 }
 
 TEST(GpuShaderParity, SobolStreamsAreBitIdentical)

@@ -55,6 +55,12 @@ inline LightData sphereSeenAt(float sin2, const vec3& direction)
     return makeSphereLight(vec3(d * glm::normalize(dvec3(direction))), 1.0f);
 }
 
+/// cornell-box-lights' back-wall strip (355 x 10) cut along its diagonal: a sliver with a 1.6 degree corner.
+inline LightData sliverTriangle()
+{
+    return makeTriangleLight({455, 100, 554}, {100, 100, 554}, {100, 110, 554});
+}
+
 struct LightCase
 {
     std::string name;

@@ -1,6 +1,6 @@
-// What the Monte Carlo tests of this folder share: fixed-seed uniform points, histogramming into a domain's
-// cells, and the significance level of every chi-square test (research notes §2.1: alpha 0.01, Šidák over
-// the configurations a test runs).
+// What the Monte Carlo tests share: fixed-seed uniform points, histogramming into a domain's cells,
+// and the significance level of every chi-square test (research notes §2.1: alpha 0.01, Šidák over the
+// configurations a test runs). tests/Common's samplers and tests/Gpu's chi-square of their GPU twins.
 #pragma once
 
 #include <cmath>

@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-#include "LightCases.h"
+#include "Support/LightCases.h"
 
 namespace rt::test
 {
