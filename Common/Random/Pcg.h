@@ -20,9 +20,10 @@ constexpr std::uint32_t pcgHash(std::uint32_t v)
     return (word >> 22u) ^ word;
 }
 
-/// A PCG32 (RXS-M-XS) generator with 32 bits of state: O'Neill, "PCG: A Family of Simple Fast
-/// Space-Efficient Statistically Good Algorithms for Random Number Generation", 2014. A path draws a few
-/// hundred numbers, far inside the 2^32 period.
+/// The numbers of one camera sample: a PCG32 (RXS-M-XS) generator with 32 bits of state (O'Neill, "PCG: A
+/// Family of Simple Fast Space-Efficient Statistically Good Algorithms for Random Number Generation", 2014; a
+/// path draws a few hundred numbers, far inside the 2^32 period), or with forSobolSample one Owen-scrambled
+/// Sobol point per draw (Shared/Sobol.h). The path loops draw through nextFloat and next2D, which serve both.
 class Rng
 {
 public:
