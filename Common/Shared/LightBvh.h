@@ -14,11 +14,9 @@
 
 #include "Shared/HostDevice.h"
 #include "Shared/ShaderLang.h"
+#include "Shared/Warps.h"
 
 RT_SHADER_NAMESPACE_BEGIN
-
-/// The largest float below 1 (1 - 2^-24), where a rescaled u must stay.
-RT_CONST(float, kOneMinusEpsilon, 0.99999994f)
 
 /// The builder keeps every leaf within this many levels of the root (a bound for the shaders' loops).
 RT_CONST(uint, kLightBvhMaxDepth, 64u)

@@ -6,6 +6,7 @@
 #ifndef RT_SHARED_WARPS_H
 #define RT_SHARED_WARPS_H
 
+#include "Shared/HostDevice.h"
 #include "Shared/ShaderLang.h"
 
 RT_SHADER_NAMESPACE_BEGIN
@@ -123,6 +124,9 @@ RT_FN vec2 sampleUniformDiskConcentric(vec2 u)
     return r * vec2(cos(theta), sin(theta));
 }
 
+/// The largest float below 1 (1 - 2^-24), where a sample of [0, 1) must stay after rounding.
+RT_CONST(float, kOneMinusEpsilon, 0.99999994f)
+
 /// x in [0, 1] with density proportional to the line from a (at 0) to b (at 1), a, b >= 0 not both 0: the
 /// inverse of its cumulative (a x + (b - a) x^2 / 2) / ((a + b) / 2), written as u (a + b) / (a + sqrt(lerp(u,
 /// a^2, b^2))) to stay exact when a = b (pbrt-v4 §A.4.2 derives the same form).
@@ -131,7 +135,7 @@ RT_FN float sampleLinear(float u, float a, float b)
     if (u == 0.0f && a == 0.0f)
         return 0.0f;
     const float x = u * (a + b) / (a + sqrt((1.0f - u) * a * a + u * b * b));
-    return min(x, 0.99999994f);
+    return min(x, kOneMinusEpsilon);
 }
 
 /// A point of [0, 1]^2 with density proportional to the bilinear interpolation of the corner weights w00 (at

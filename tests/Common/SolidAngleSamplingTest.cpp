@@ -80,11 +80,7 @@ TEST(SphericalRectangle, ChiSquareUniformOverTheSolidAngle)
     {
         SCOPED_TRACE(c.name);
         const test::LightSurfaceDomain domain(c.light, c.p, 32);
-        const auto h = test::histogram(domain.cellCount(), kChiSquareSamples, seed++, [&](Rng& rng) {
-            LightSample s;
-            return sampleLight(c.light, LightSampler::SolidAngle, c.p, kNoNormal, test::uniform2(rng), s) ? domain.cell(s.wi)
-                                                                                                 : -1;
-        });
+        const auto h = domain.sampleHistogram(LightSampler::SolidAngle, kNoNormal, kChiSquareSamples, seed++);
         EXPECT_EQ(h.outside, 0) << "samples missing the light, or no sample";
         const auto expected = domain.expectedCounts(kChiSquareSamples, 8, LightSampler::SolidAngle);
         const auto r = test::chiSquareTest(h.counts, expected, test::kChiSquareAlpha, int(cases.size()));
@@ -336,11 +332,7 @@ TEST(ProjectedRectangle, SamplesFollowTheWarpedDensityItReports)
         SCOPED_TRACE(c.name);
         const vec3 n = tiltedNormal(c);
         const test::LightSurfaceDomain domain(c.light, c.p, 32);
-        const auto h = test::histogram(domain.cellCount(), kChiSquareSamples, seed++, [&](Rng& rng) {
-            LightSample s;
-            return sampleLight(c.light, LightSampler::Projected, c.p, n, test::uniform2(rng), s) ? domain.cell(s.wi)
-                                                                                                 : -1;
-        });
+        const auto h = domain.sampleHistogram(LightSampler::Projected, n, kChiSquareSamples, seed++);
         EXPECT_EQ(h.outside, 0) << "samples missing the light, or no sample";
         const auto expected = domain.expectedCounts(kChiSquareSamples, 8, LightSampler::Projected, n);
         const auto r = test::chiSquareTest(h.counts, expected, test::kChiSquareAlpha, int(cases.size()));

@@ -137,15 +137,7 @@ TEST(SphericalTriangle, ChiSquareUniformOverTheSolidAngle)
     {
         SCOPED_TRACE(c.name);
         const test::LightSurfaceDomain domain(c.light, c.p, 32);
-        const auto h = test::histogram(domain.cellCount(), kChiSquareSamples, seed++,
-                                       [&](Rng& rng)
-                                       {
-                                           LightSample s;
-                                           return sampleLight(c.light, LightSampler::SolidAngle, c.p,
-                                                              vec3(0.0f), test::uniform2(rng), s)
-                                                      ? domain.cell(s.wi)
-                                                      : -1;
-                                       });
+        const auto h = domain.sampleHistogram(LightSampler::SolidAngle, vec3(0.0f), kChiSquareSamples, seed++);
         EXPECT_EQ(h.outside, 0) << "samples missing the light, or no sample";
         const double solidAngle = lhuilierSolidAngle(c.light, c.p);
         // The area density cos / (r^2 Omega) peaks under the point for the near-hemisphere cases: 16 x 16
@@ -166,15 +158,7 @@ TEST(ProjectedTriangle, ChiSquareFollowsTheWarpedDensityItReports)
         SCOPED_TRACE(c.name);
         const vec3 n = tiltedNormal(c);
         const test::LightSurfaceDomain domain(c.light, c.p, 32);
-        const auto h = test::histogram(domain.cellCount(), kChiSquareSamples, seed++,
-                                       [&](Rng& rng)
-                                       {
-                                           LightSample s;
-                                           return sampleLight(c.light, LightSampler::Projected, c.p, n,
-                                                              test::uniform2(rng), s)
-                                                      ? domain.cell(s.wi)
-                                                      : -1;
-                                       });
+        const auto h = domain.sampleHistogram(LightSampler::Projected, n, kChiSquareSamples, seed++);
         EXPECT_EQ(h.outside, 0) << "samples missing the light, or no sample";
         const auto expected = domain.expectedCounts(kChiSquareSamples, 16, LightSampler::Projected, n);
         const auto r = test::chiSquareTest(h.counts, expected, test::kChiSquareAlpha, int(cases.size()));

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "Support/LightCases.h"
+#include "Support/StatisticsHelpers.h"
 
 namespace rt::test
 {
@@ -63,6 +64,16 @@ public:
         const int i = std::clamp(int(s * m_n), 0, m_n - 1);
         const int j = std::clamp(int(t * m_n), 0, m_n - 1);
         return i * m_n + j;
+    }
+
+    /// Histogram of `samples` points that NEE's `strategy` samples from the domain's point with receiver normal
+    /// n (fixed `seed`); a refused sample, or one off the light, counts as outside.
+    Histogram sampleHistogram(LightSampler strategy, const vec3& n, long samples, std::uint32_t seed) const
+    {
+        return histogram(cellCount(), samples, seed, [&](Rng& rng) {
+            LightSample s;
+            return sampleLight(m_light, strategy, m_p, n, uniform2(rng), s) ? cell(s.wi) : -1;
+        });
     }
 
     /// Expected samples per cell when `samples` are drawn with the density lightPdf reports: book 3's, or
