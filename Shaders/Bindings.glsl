@@ -29,6 +29,8 @@ layout(binding = kBindingImages) uniform sampler2D images[];
 
 layout(push_constant, scalar) uniform PushBlock { TracePushConstants push; };
 
+#include "Specialization.glsl"
+
 /// The light that primitive `primitive` of a record is (InstanceRecord::firstPrimitiveLight), or kNoIndex.
 uint primitiveLight(InstanceRecord record, uint primitive)
 {

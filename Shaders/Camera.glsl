@@ -19,7 +19,7 @@ struct CameraSample
 Rng rngForCameraSample(uvec2 pixel, uint sampleIndex)
 {
     uint pixelIndex = pixel.y * uniforms.width + pixel.x;
-    return uniforms.sampling == PixelSampling_Sobol ? rngForSobolSample(uniforms.seed, pixelIndex, sampleIndex)
+    return settingSampling() == PixelSampling_Sobol ? rngForSobolSample(uniforms.seed, pixelIndex, sampleIndex)
                                                     : rngForSample(uniforms.seed, pixelIndex, sampleIndex);
 }
 
@@ -29,7 +29,7 @@ CameraSample drawCameraSample(inout Rng rng, uvec2 pixel, uint sampleIndex)
 {
     vec2 jitter = nextFloat2(rng);
     CameraSample cs;
-    if (uniforms.sampling == PixelSampling_Stratified)
+    if (settingSampling() == PixelSampling_Stratified)
     {
         uint n = uniforms.strata;
         vec2 stratum = vec2(float(sampleIndex % n), float(sampleIndex / n));

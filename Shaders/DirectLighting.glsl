@@ -29,13 +29,13 @@ vec3 estimateDirect(vec3 origin, vec3 ns, bool phase, vec3 albedo, bool mis, ino
 {
     float pmf;
     vec3 receiver = phase ? vec3(0.0) : ns; // no horizon in a medium
-    uint picked = selectLight(uniforms.lightSelection, nextFloat(rng), uniforms.emitterCount, origin, receiver,
+    uint picked = selectLight(settingLightSelection(), nextFloat(rng), uniforms.emitterCount, origin, receiver,
                               uniforms.unidirectionalLight == 0u, pmf);
     vec2 u = nextFloat2(rng);
     if (picked == kNoIndex)
         return vec3(0.0); // the light BVH proved that no emitter reaches this point
     LightSample ls;
-    if (!sampleLight(lights[picked], uniforms.lightSampler, origin, receiver, u, ls))
+    if (!sampleLight(lights[picked], settingLightSampler(), origin, receiver, u, ls))
         return vec3(0.0);
     float bsdfPdf = diffusePdf(phase, ns, ls.wi); // f cos = albedo bsdfPdf
     if (!(bsdfPdf > 0.0) || (uniforms.unidirectionalLight != 0u && dot(ls.wi, ls.normal) >= 0.0))

@@ -22,9 +22,9 @@ const float kRayTMax = 3.0e38;
 /// sample is counted like the CPU engine's instead of reaching traversal (undefined for NaN rays).
 vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
 {
-    bool nee = (uniforms.estimator == Estimator_Nee || uniforms.estimator == Estimator_NeeMis) &&
+    bool nee = (settingEstimator() == Estimator_Nee || settingEstimator() == Estimator_NeeMis) &&
                uniforms.emitterCount > 0u;
-    bool mis = uniforms.estimator == Estimator_NeeMis;
+    bool mis = settingEstimator() == Estimator_NeeMis;
     vec3 radiance = vec3(0.0);
     vec3 beta = vec3(1.0);
     // The origin of the current ray and its direction's BSDF pdf, for the MIS weight of the emission it finds
@@ -58,12 +58,12 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
         {
             float weight = 1.0;
             if (previousBsdfPdf > 0.0 && payload.light != kNoIndex)
-                weight = mis ? powerHeuristic(previousBsdfPdf, lightSelectionPmf(uniforms.lightSelection, payload.light,
+                weight = mis ? powerHeuristic(previousBsdfPdf, lightSelectionPmf(settingLightSelection(), payload.light,
                                                                                  uniforms.emitterCount, previousPoint,
                                                                                  previousNormal,
                                                                                  uniforms.unidirectionalLight == 0u) *
                                                                    lightPdf(lights[payload.light],
-                                                                            uniforms.lightSampler, previousPoint,
+                                                                            settingLightSampler(), previousPoint,
                                                                             previousNormal, normalize(direction)))
                              : 0.0;
             radiance += beta * evaluateTexture(m.emissionTexture, hit.uv, hit.position) * weight;

@@ -145,6 +145,13 @@ int main(int argc, char** argv)
     app.add_flag("--validation", validation,
                  "Run with VK_LAYER_KHRONOS_validation and fail (exit 1) if it reports any warning or error "
                  "(always on in Debug builds and with RT_VULKAN_VALIDATION=1)");
+    std::string specialize = "on";
+    app.add_option("--specialize", specialize,
+                   "Headless and --compare: on compiles a pipeline for the render's estimator, light sampler, light "
+                   "selection and pixel sampling, so that the driver drops the code of every other choice "
+                   "(faster); off runs the general pipeline that reads them at run time")
+        ->check(CLI::IsMember({"on", "off"}))
+        ->capture_default_str();
     WindowFlags window;
     addWindowOptions(app, window);
 
@@ -163,8 +170,8 @@ int main(int argc, char** argv)
             c.referencePath = referencePath;
             return rt::app::runComparison(job.scene, job.request, c, [&](rt::EngineKind kind) -> std::unique_ptr<rt::RenderEngine> {
                 if (kind == rt::EngineKind::Gpu)
-                    return std::make_unique<rt::gpu::GpuEngine>(
-                        rt::gpu::GpuEngineOptions{.deviceIndex = device, .validation = validation});
+                    return std::make_unique<rt::gpu::GpuEngine>(rt::gpu::GpuEngineOptions{
+                        .deviceIndex = device, .validation = validation, .specialize = specialize == "on"});
                 return std::make_unique<rt::cpu::CpuEngine>(kind);
             });
         }
@@ -172,7 +179,7 @@ int main(int argc, char** argv)
             return runWindow(options, window, device, validation);
         rt::checkOutputPaths(options);
         const rt::CommandLineRender job = rt::resolveCommandLine(options);
-        rt::gpu::GpuEngine gpu({.deviceIndex = device, .validation = validation});
+        rt::gpu::GpuEngine gpu({.deviceIndex = device, .validation = validation, .specialize = specialize == "on"});
         const int status = rt::runHeadless(gpu, job.scene, job.request, options);
         if (gpu.validationMessages() > 0)
         {

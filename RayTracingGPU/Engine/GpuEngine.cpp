@@ -30,11 +30,12 @@ struct GpuEngine::Impl
     std::uint64_t pathsPerBatch;
     std::unique_ptr<RenderTarget> target;
     TracingDescriptors descriptors; // the scene and the target; empty after setScene
+    shader::RenderUniforms uniforms{}; // the frame's, as in the target's uniform buffer
 
     explicit Impl(const GpuEngineOptions& options)
         : context({options.deviceIndex, options.validation, options.presentation}),
           tracer(context.device(), context.commandPool(),
-                 options.shaderDir.empty() ? executableDir() / "shaders" : options.shaderDir),
+                 options.shaderDir.empty() ? executableDir() / "shaders" : options.shaderDir, options.specialize),
           timestamps(context.device(), 2),
           pathsPerBatch(options.pathsPerBatch > 0 ? options.pathsPerBatch
                         : context.device().properties().type == vk::DeviceType::Cpu ? kPathsPerBatchCpu
@@ -71,7 +72,8 @@ struct GpuEngine::Impl
                 vkCmdResetQueryPool(cmd, timestamps.Handle(), 0, 2);
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps.Handle(), 0);
             }
-            tracer.recordLaunch(cmd, {&descriptors.set, 1}, firstSample, samples, {target->width(), target->height()});
+            tracer.recordLaunch(cmd, {&descriptors.set, 1}, uniforms, firstSample, samples,
+                                {target->width(), target->height()});
             if (timed)
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 1);
             vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
@@ -110,6 +112,8 @@ std::shared_ptr<const vk::ValidationLog> GpuEngine::validationLog() const
 
 const SceneTracer& GpuEngine::tracer() const { return m_impl->tracer; }
 
+void GpuEngine::setSpecialize(bool specialize) { m_impl->tracer.setSpecialize(specialize); }
+
 const Scene* GpuEngine::scene() const { return m_impl->tracer.scene(); }
 
 double GpuEngine::buildSeconds() const { return m_impl->tracer.buildSeconds(); }
@@ -132,7 +136,9 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     if (const auto problem = checkTargetLimits(width, height, targetLimits(e.device())))
         throw DeviceError(*problem);
     e.prepareTarget(width, height);
-    e.target->reset(e.tracer.uniforms(e.tracer.scene()->camera, settings, {width, height}));
+    e.uniforms = e.tracer.uniforms(e.tracer.scene()->camera, settings, {width, height});
+    e.tracer.pipeline().prepare(e.uniforms); // the compilation stays out of the render's time
+    e.target->reset(e.uniforms);
     e.clear();
 }
 

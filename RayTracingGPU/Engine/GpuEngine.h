@@ -24,6 +24,8 @@ struct GpuEngineOptions
     bool validation = false; // Khronos validation layer + counting messenger (see validationWanted())
     std::filesystem::path shaderDir; // empty: executableDir()/shaders, never the working directory
     std::uint64_t pathsPerBatch = 0; // camera paths per dispatch; 0: by device type (kPathsPerBatchGpu/Cpu)
+    /// Compile a pipeline per render settings (PipelineSpecialization.h); false: one general pipeline.
+    bool specialize = true;
     /// The window: the device must present to its surface (GpuContext.h). Headless leaves it empty.
     std::optional<Presentation> presentation;
 };
@@ -73,6 +75,8 @@ public:
     /// The pipeline and the scene on the device, for tracing into images of one's own (the window's
     /// ProgressiveRenderer records its frames with it).
     const SceneTracer& tracer() const;
+    /// GpuEngineOptions::specialize, from the next frame on (pipelines compiled so far are kept).
+    void setSpecialize(bool specialize);
 
 private:
     struct Impl;

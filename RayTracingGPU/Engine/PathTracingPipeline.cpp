@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include <algorithm>
-
 #include "Engine/GpuScene.h"
 #include "RayTracing/RayTracingPipeline.h"
 #include "Shared/HostDevice.h"
@@ -73,21 +71,41 @@ vk::DescriptorSetLayout setLayoutOf(const vk::Device& device, const std::vector<
 } // namespace
 
 PathTracingPipeline::PathTracingPipeline(const vk::Device& device, const std::filesystem::path& shaderDir,
-                                         RayGenVariant variant)
-    : m_maxImages(maxImagesOf(device)), m_bindings(bindingsOf(m_maxImages)), m_setLayout(device, m_bindings),
-      m_costBindings(costBindingsOf(variant)), m_costSetLayout(setLayoutOf(device, m_costBindings)),
-      m_layout(layoutOf(device, m_setLayout, m_costSetLayout)),
-      m_pipeline(createPathTracingPipeline(device, m_layout, shaderDir,
-                                           variant == RayGenVariant::Cost ? "RayGenCost.rgen.spv" : "RayGen.rgen.spv")),
-      m_sbt(device, m_pipeline.Handle(), kMissGroupCount, kHitGroupCount)
+                                         RayGenVariant variant, bool specialize)
+    : m_device(&device), m_specialize(specialize), m_maxImages(maxImagesOf(device)),
+      m_bindings(bindingsOf(m_maxImages)), m_setLayout(device, m_bindings), m_costBindings(costBindingsOf(variant)),
+      m_costSetLayout(setLayoutOf(device, m_costBindings)), m_layout(layoutOf(device, m_setLayout, m_costSetLayout)),
+      m_shaders(device, shaderDir, variant == RayGenVariant::Cost ? "RayGenCost.rgen.spv" : "RayGen.rgen.spv")
 {
 }
 
-void PathTracingPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
-                                        std::uint32_t firstSample, std::uint32_t count, VkExtent2D extent,
-                                        std::uint32_t samplesPerLaunch) const
+PipelineSpecialization PathTracingPipeline::specializationFor(const RenderUniforms& uniforms) const
 {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, m_pipeline.Handle());
+    return m_specialize ? PipelineSpecialization::of(uniforms) : PipelineSpecialization::general();
+}
+
+const PathTracingPipeline::Compiled& PathTracingPipeline::compiled(const RenderUniforms& uniforms) const
+{
+    const PipelineSpecialization key = specializationFor(uniforms);
+    auto it = m_compiled.find(key);
+    if (it == m_compiled.end())
+    {
+        auto c = std::make_unique<Compiled>();
+        c->pipeline = createPathTracingPipeline(*m_device, m_layout, m_shaders, key.constants);
+        c->sbt = ShaderBindingTable(*m_device, c->pipeline.Handle(), kMissGroupCount, kHitGroupCount);
+        it = m_compiled.emplace(key, std::move(c)).first;
+    }
+    return *it->second;
+}
+
+void PathTracingPipeline::prepare(const RenderUniforms& uniforms) const { compiled(uniforms); }
+
+void PathTracingPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
+                                        const RenderUniforms& uniforms, std::uint32_t firstSample,
+                                        std::uint32_t count, VkExtent2D extent, std::uint32_t samplesPerLaunch) const
+{
+    const Compiled& c = compiled(uniforms);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, c.pipeline.Handle());
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, m_layout.Handle(), 0,
                             static_cast<std::uint32_t>(sets.size()), sets.data(), 0, nullptr);
     for (std::uint32_t done = 0; done < count;)
@@ -95,7 +113,7 @@ void PathTracingPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDe
         const std::uint32_t samples = std::min(count - done, std::max(samplesPerLaunch, 1u));
         const TracePushConstants push{firstSample + done, samples};
         vkCmdPushConstants(cmd, m_layout.Handle(), kRayTracingStages, 0, sizeof(push), &push);
-        vkCmdTraceRaysKHR(cmd, &m_sbt.raygen(), &m_sbt.miss(), &m_sbt.hit(), &m_sbt.callable(), extent.width,
+        vkCmdTraceRaysKHR(cmd, &c.sbt.raygen(), &c.sbt.miss(), &c.sbt.hit(), &c.sbt.callable(), extent.width,
                           extent.height, 1);
         // The launch reads and writes its pixels of the accumulation image: order it before the next one.
         vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,

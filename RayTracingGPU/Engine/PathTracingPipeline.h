@@ -1,15 +1,20 @@
 // Everything of the path tracer that does not depend on the scene or the image size: the descriptor set
-// layout of Bindings.glsl, the pipeline layout (push constants: TracePushConstants), the ray-tracing
-// pipeline and its shader binding table. Built once per engine (pipeline compilation is the slow part).
+// layout of Bindings.glsl, the pipeline layout (push constants: TracePushConstants), the shader modules, and
+// one ray-tracing pipeline with its shader binding table per specialisation a render asked for
+// (PipelineSpecialization: compiled on first use, then kept; compilation is the slow part).
 // The Cost variant (the window's heatmap) swaps in the timed ray-generation shader and adds set kSetCost.
 #pragma once
 
 #include "Scene/Scene.h"
 
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <span>
 #include <vector>
 
+#include "Engine/PipelineSpecialization.h"
+#include "RayTracing/RayTracingPipeline.h"
 #include "RayTracing/ShaderBindingTable.h"
 #include "Vulkan/DescriptorSetLayout.h"
 #include "Vulkan/Pipeline.h"
@@ -36,9 +41,10 @@ enum class RayGenVariant
 class PathTracingPipeline final
 {
 public:
-    /// Throws rt::AssetError for a missing shader, rt::DeviceError when the driver rejects the pipeline.
+    /// Loads the shaders; compiles nothing yet. With `specialize` false every render uses the general pipeline.
+    /// Throws rt::AssetError for a missing shader, rt::DeviceError when the driver rejects a module.
     PathTracingPipeline(const vk::Device& device, const std::filesystem::path& shaderDir,
-                        RayGenVariant variant = RayGenVariant::Radiance);
+                        RayGenVariant variant = RayGenVariant::Radiance, bool specialize = true);
     PathTracingPipeline(const PathTracingPipeline&) = delete;
     PathTracingPipeline& operator=(const PathTracingPipeline&) = delete;
     ~PathTracingPipeline() = default;
@@ -49,7 +55,17 @@ public:
     const std::vector<vk::DescriptorBinding>& costBindings() const { return m_costBindings; }
     const vk::DescriptorSetLayout& costSetLayout() const { return m_costSetLayout; }
     const vk::PipelineLayout& layout() const { return m_layout; }
-    VkPipeline Handle() const { return m_pipeline.Handle(); }
+    bool specializes() const { return m_specialize; }
+    /// From the next launch on, specialised pipelines (true) or the general one (false); keeps what is compiled.
+    void setSpecialize(bool specialize) { m_specialize = specialize; }
+    /// The specialisation a render with `uniforms` runs (the general one when this pipeline does not specialise).
+    PipelineSpecialization specializationFor(const shader::RenderUniforms& uniforms) const;
+    /// Compiles the pipeline a render with `uniforms` needs, unless it already exists; recordLaunch calls it
+    /// too, so call it first only to keep the compilation out of a timed span. Not thread-safe.
+    /// Throws rt::DeviceError when the driver rejects the pipeline.
+    void prepare(const shader::RenderUniforms& uniforms) const;
+    /// Pipelines compiled so far.
+    std::size_t compiledCount() const { return m_compiled.size(); }
     /// Size of the variable-count sampler array (the most images a scene may have).
     std::uint32_t maxImages() const { return m_maxImages; }
 
@@ -60,18 +76,29 @@ public:
     /// Records launches over `extent` tracing `count` camera samples per pixel, sample indices from
     /// `firstSample` on, at most `samplesPerLaunch` of them per launch (each thread loops over its samples:
     /// on an H100 that is 1.8x faster than one launch per sample), with `sets` bound from set 0, each launch
-    /// ordered before whatever comes next.
-    void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets, std::uint32_t firstSample,
-                      std::uint32_t count, VkExtent2D extent, std::uint32_t samplesPerLaunch) const;
+    /// ordered before whatever comes next, through the pipeline of `uniforms` (the contents of the uniform
+    /// buffer the sets name), compiled first if need be.
+    void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
+                      const shader::RenderUniforms& uniforms, std::uint32_t firstSample, std::uint32_t count,
+                      VkExtent2D extent, std::uint32_t samplesPerLaunch) const;
 
 private:
+    struct Compiled
+    {
+        vk::Pipeline pipeline;
+        ShaderBindingTable sbt;
+    };
+    const Compiled& compiled(const shader::RenderUniforms& uniforms) const;
+
+    const vk::Device* m_device;
+    bool m_specialize;
     std::uint32_t m_maxImages;
     std::vector<vk::DescriptorBinding> m_bindings;
     vk::DescriptorSetLayout m_setLayout;
     std::vector<vk::DescriptorBinding> m_costBindings;
     vk::DescriptorSetLayout m_costSetLayout;
     vk::PipelineLayout m_layout;
-    vk::Pipeline m_pipeline;
-    ShaderBindingTable m_sbt;
+    PathTracingShaders m_shaders;
+    mutable std::map<PipelineSpecialization, std::unique_ptr<Compiled>> m_compiled;
 };
 } // namespace rt::gpu

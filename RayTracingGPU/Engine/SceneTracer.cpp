@@ -6,8 +6,10 @@
 
 namespace rt::gpu
 {
-SceneTracer::SceneTracer(const vk::Device& device, const vk::CommandPool& pool, std::filesystem::path shaderDir)
-    : m_device(&device), m_pool(&pool), m_shaderDir(std::move(shaderDir)), m_pipeline(device, m_shaderDir)
+SceneTracer::SceneTracer(const vk::Device& device, const vk::CommandPool& pool, std::filesystem::path shaderDir,
+                         bool specialize)
+    : m_device(&device), m_pool(&pool), m_shaderDir(std::move(shaderDir)),
+      m_pipeline(device, m_shaderDir, RayGenVariant::Radiance, specialize)
 {
 }
 
@@ -49,9 +51,11 @@ shader::RenderUniforms SceneTracer::uniforms(const CameraDesc& camera, const Ren
     return makeUniforms(*m_sceneDesc, camera, settings, extent.width, extent.height);
 }
 
-void SceneTracer::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets, std::uint32_t firstSample,
-                               std::uint32_t count, VkExtent2D extent, const PathTracingPipeline* variant) const
+void SceneTracer::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
+                               const shader::RenderUniforms& uniforms, std::uint32_t firstSample, std::uint32_t count,
+                               VkExtent2D extent, const PathTracingPipeline* variant) const
 {
-    (variant ? *variant : m_pipeline).recordLaunch(cmd, sets, firstSample, count, extent, gpuScene().samplesPerLaunch());
+    (variant ? *variant : m_pipeline)
+        .recordLaunch(cmd, sets, uniforms, firstSample, count, extent, gpuScene().samplesPerLaunch());
 }
 } // namespace rt::gpu

@@ -31,9 +31,11 @@ struct TracingDescriptors
 class SceneTracer final
 {
 public:
-    /// Compiles the pipeline from the SPIR-V in `shaderDir`. Throws rt::AssetError (a shader is missing),
-    /// rt::DeviceError (the driver rejects the pipeline).
-    SceneTracer(const vk::Device& device, const vk::CommandPool& pool, std::filesystem::path shaderDir);
+    /// Loads the SPIR-V in `shaderDir`; a render's pipeline is compiled for its settings when it first needs
+    /// it (PathTracingPipeline), or once for all settings with `specialize` false. Throws rt::AssetError (a
+    /// shader is missing), rt::DeviceError (the driver rejects a module).
+    SceneTracer(const vk::Device& device, const vk::CommandPool& pool, std::filesystem::path shaderDir,
+                bool specialize = true);
     SceneTracer(const SceneTracer&) = delete;
     SceneTracer& operator=(const SceneTracer&) = delete;
     ~SceneTracer();
@@ -49,6 +51,8 @@ public:
     const std::filesystem::path& shaderDir() const { return m_shaderDir; }
     /// The pipeline's set layouts: a variant (the window's Cost pipeline) is built against the same ones.
     const PathTracingPipeline& pipeline() const { return m_pipeline; }
+    /// PathTracingPipeline::setSpecialize.
+    void setSpecialize(bool specialize) { m_pipeline.setSpecialize(specialize); }
 
     /// Set 0 for the current scene and `target`. Throws rt::UsageError before setScene.
     TracingDescriptors makeDescriptors(const TargetBindings& target) const;
@@ -56,10 +60,11 @@ public:
     /// light count).
     shader::RenderUniforms uniforms(const CameraDesc& camera, const RenderSettings& settings, VkExtent2D extent) const;
     /// Records `count` samples per pixel of `extent` from `firstSample` on (PathTracingPipeline::recordLaunch,
-    /// with the scene's samples per launch), with `sets` bound from set 0, through `variant` (default: the
-    /// radiance pipeline).
-    void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets, std::uint32_t firstSample,
-                      std::uint32_t count, VkExtent2D extent, const PathTracingPipeline* variant = nullptr) const;
+    /// with the scene's samples per launch), with `sets` bound from set 0, whose uniform buffer holds
+    /// `uniforms`, through `variant` (default: the radiance pipeline).
+    void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
+                      const shader::RenderUniforms& uniforms, std::uint32_t firstSample, std::uint32_t count,
+                      VkExtent2D extent, const PathTracingPipeline* variant = nullptr) const;
 
 private:
     const GpuScene& gpuScene() const;

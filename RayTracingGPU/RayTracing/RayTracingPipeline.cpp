@@ -20,47 +20,65 @@ VkRayTracingShaderGroupCreateInfoKHR group(VkRayTracingShaderGroupTypeKHR type)
     g.intersectionShader = VK_SHADER_UNUSED_KHR;
     return g;
 }
+
+enum StageIndex : std::uint32_t
+{
+    RayGen,
+    Miss,
+    ShadowMiss,
+    TriangleHit,
+    SphereIntersection,
+    SphereHit,
+    MediumIntersection,
+    MediumHit,
+    StageCount
+};
+
+struct Stage
+{
+    const char* file;
+    VkShaderStageFlagBits stage;
+};
+
+constexpr Stage kStages[StageCount] = {
+    {nullptr, VK_SHADER_STAGE_RAYGEN_BIT_KHR}, // the caller's
+    {"Background.rmiss.spv", VK_SHADER_STAGE_MISS_BIT_KHR},
+    {"Shadow.rmiss.spv", VK_SHADER_STAGE_MISS_BIT_KHR},
+    {"Triangle.rchit.spv", VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR},
+    {"Sphere.rint.spv", VK_SHADER_STAGE_INTERSECTION_BIT_KHR},
+    {"Sphere.rchit.spv", VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR},
+    {"Medium.rint.spv", VK_SHADER_STAGE_INTERSECTION_BIT_KHR},
+    {"Medium.rchit.spv", VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR},
+};
 } // namespace
 
-vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::PipelineLayout& layout,
-                                       const std::filesystem::path& shaderDir, const char* rayGenFile)
+PathTracingShaders::PathTracingShaders(const vk::Device& device, const std::filesystem::path& shaderDir,
+                                       const char* rayGenFile)
 {
-    struct Stage
-    {
-        const char* file;
-        VkShaderStageFlagBits stage;
-    };
-    enum StageIndex : std::uint32_t
-    {
-        RayGen,
-        Miss,
-        ShadowMiss,
-        TriangleHit,
-        SphereIntersection,
-        SphereHit,
-        MediumIntersection,
-        MediumHit,
-        StageCount
-    };
-    const Stage stages[StageCount] = {
-        {rayGenFile, VK_SHADER_STAGE_RAYGEN_BIT_KHR},
-        {"Background.rmiss.spv", VK_SHADER_STAGE_MISS_BIT_KHR},
-        {"Shadow.rmiss.spv", VK_SHADER_STAGE_MISS_BIT_KHR},
-        {"Triangle.rchit.spv", VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR},
-        {"Sphere.rint.spv", VK_SHADER_STAGE_INTERSECTION_BIT_KHR},
-        {"Sphere.rchit.spv", VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR},
-        {"Medium.rint.spv", VK_SHADER_STAGE_INTERSECTION_BIT_KHR},
-        {"Medium.rchit.spv", VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR},
-    };
-    std::vector<vk::ShaderModule> modules;
+    for (const Stage& s : kStages)
+        m_modules.emplace_back(device, shaderDir / (s.file ? s.file : rayGenFile));
+}
+
+vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::PipelineLayout& layout,
+                                       const PathTracingShaders& shaders, std::span<const std::uint32_t> constants)
+{
+    std::vector<VkSpecializationMapEntry> entries;
+    for (std::uint32_t id = 0; id < constants.size(); ++id)
+        entries.push_back({id, static_cast<std::uint32_t>(id * sizeof(std::uint32_t)), sizeof(std::uint32_t)});
+    VkSpecializationInfo specialization{};
+    specialization.mapEntryCount = static_cast<std::uint32_t>(entries.size());
+    specialization.pMapEntries = entries.data();
+    specialization.dataSize = constants.size_bytes();
+    specialization.pData = constants.data();
+
     std::vector<VkPipelineShaderStageCreateInfo> stageInfos;
-    for (const Stage& s : stages)
+    for (std::uint32_t i = 0; i < StageCount; ++i)
     {
-        modules.emplace_back(device, shaderDir / s.file);
         VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-        info.stage = s.stage;
-        info.module = modules.back().Handle();
+        info.stage = kStages[i].stage;
+        info.module = shaders.modules()[i].Handle();
         info.pName = "main";
+        info.pSpecializationInfo = constants.empty() ? nullptr : &specialization;
         stageInfos.push_back(info);
     }
 

@@ -8,18 +8,37 @@
 // Maximum recursion depth 1: hit shaders never trace, raygen loops over bounces.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <span>
+#include <vector>
 
 #include "Vulkan/Pipeline.h"
 #include "Vulkan/PipelineLayout.h"
+#include "Vulkan/ShaderModule.h"
 
 namespace rt::gpu
 {
 inline constexpr std::uint32_t kMissGroupCount = 2;
 
-/// Creates the pipeline from the SPIR-V files in `shaderDir`, with `rayGenFile` as group 0. Throws
-/// rt::AssetError for a missing shader, rt::DeviceError when the driver rejects the pipeline.
+/// The SPIR-V modules of the pipeline's stages, loaded once; every specialisation compiles from them.
+class PathTracingShaders final
+{
+public:
+    /// Loads the stages from `shaderDir`, with `rayGenFile` as group 0. Throws rt::AssetError for a missing or
+    /// malformed shader, rt::DeviceError when the driver rejects a module.
+    PathTracingShaders(const vk::Device& device, const std::filesystem::path& shaderDir,
+                       const char* rayGenFile = "RayGen.rgen.spv");
+
+    const std::vector<vk::ShaderModule>& modules() const { return m_modules; }
+
+private:
+    std::vector<vk::ShaderModule> m_modules; // in the order of the stages above
+};
+
+/// Compiles the pipeline from `shaders` with the specialization constants `constants` (constant id i takes
+/// constants[i], in every stage; ids a stage does not declare are ignored). Throws rt::DeviceError when the
+/// driver rejects the pipeline.
 vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::PipelineLayout& layout,
-                                       const std::filesystem::path& shaderDir,
-                                       const char* rayGenFile = "RayGen.rgen.spv");
+                                       const PathTracingShaders& shaders, std::span<const std::uint32_t> constants);
 } // namespace rt::gpu

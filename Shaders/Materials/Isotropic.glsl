@@ -9,7 +9,7 @@
 bool scatterIsotropic(MaterialData m, SurfaceHit hit, inout Rng rng, out ScatterSample s)
 {
     vec3 albedo = evaluateTexture(m.albedoTexture, hit.uv, hit.position);
-    if (uniforms.estimator != Estimator_Mixture || uniforms.lightCount == 0u)
+    if (settingEstimator() != Estimator_Mixture || uniforms.lightCount == 0u)
     {
         s.direction = sampleUniformSphere(nextFloat2(rng));
         s.weight = albedo;

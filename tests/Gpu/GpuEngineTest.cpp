@@ -1,9 +1,11 @@
 // The GPU engine on lavapipe (or any ray-tracing device): known answers, determinism, limits, progress and
 // cancellation, and no validation message along the way.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
 
+#include "Engine/SceneTracer.h"
 #include "Error.h"
 #include "Scene/SceneBuilder.h"
 #include "GpuTestEnvironment.h"
@@ -127,6 +129,42 @@ TEST_F(GpuDeterminism, DispatchSplitDoesNotChangeTheImage)
     s.sampling = PixelSampling::Accumulate;
     const RenderResult passes = renderOnGpu(scene, s);
     EXPECT_EQ(together.image.pixels(), passes.image.pixels());
+}
+
+using GpuSpecialization = GpuEngineTest;
+
+// A pipeline specialised on the render's settings folds the others away: same estimator, same numbers. The
+// images agree to float rounding (a driver may contract or reorder arithmetic differently once the branches
+// are gone); each specialisation compiles once, and random and accumulated sampling share one.
+TEST_F(GpuSpecialization, SpecialisedAndGeneralPipelinesRenderTheSameImage)
+{
+    const Scene scene = makeScene("cornell-box-lights");
+    GpuEngine& engine = *sharedEngine();
+    const std::size_t compiledBefore = engine.tracer().pipeline().compiledCount();
+    RenderSettings s = small(scene, 24, 4, 8);
+    s.estimator = Estimator::NeeMis;
+    s.sampling = PixelSampling::Random;
+    const RenderResult specialised = renderOnGpu(scene, s);
+    s.sampling = PixelSampling::Accumulate; // the same numbers, one sample per dispatch
+    const RenderResult accumulated = renderOnGpu(scene, s);
+    engine.setSpecialize(false);
+    const RenderResult general = renderOnGpu(scene, s);
+    engine.setSpecialize(true);
+    EXPECT_EQ(specialised.image.pixels(), accumulated.image.pixels());
+    double largest = 0.0;
+    for (int y = 0; y < s.height(); ++y)
+        for (int x = 0; x < s.width; ++x)
+            for (int c = 0; c < 3; ++c)
+            {
+                const double a = specialised.image.at(x, y)[c];
+                const double b = general.image.at(x, y)[c];
+                largest = std::max(largest, std::abs(a - b) / std::max(1e-3, std::abs(b)));
+            }
+    EXPECT_LT(largest, 1e-4);
+    // One specialisation and the general pipeline (fewer if an earlier test of this process compiled them).
+    const std::size_t compiled = engine.tracer().pipeline().compiledCount() - compiledBefore;
+    EXPECT_GE(compiled, 1u);
+    EXPECT_LE(compiled, 2u);
 }
 
 using GpuSettings = GpuEngineTest;

@@ -66,7 +66,8 @@ void ProgressiveRenderer::prepare(VkExtent2D extent)
 void ProgressiveRenderer::createCostResources()
 {
     const vk::Device& device = m_engine->context().device();
-    m_costPipeline = std::make_unique<PathTracingPipeline>(device, m_engine->tracer().shaderDir(), RayGenVariant::Cost);
+    m_costPipeline = std::make_unique<PathTracingPipeline>(device, m_engine->tracer().shaderDir(), RayGenVariant::Cost,
+                                                           m_engine->tracer().pipeline().specializes());
     for (std::size_t slot = 0; slot < m_uniforms.size(); ++slot)
     {
         m_costStats.emplace_back(device, sizeof(shader::CostStats), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
@@ -154,10 +155,10 @@ void ProgressiveRenderer::recordSamples(VkCommandBuffer cmd, std::uint32_t slot,
         if (!m_costPipeline)
             createCostResources();
         const VkDescriptorSet sets[] = {m_sets.at(slot).set, m_costSets.at(slot)};
-        m_engine->tracer().recordLaunch(cmd, sets, firstSample, count, size, m_costPipeline.get());
+        m_engine->tracer().recordLaunch(cmd, sets, uniforms, firstSample, count, size, m_costPipeline.get());
     }
     else
-        m_engine->tracer().recordLaunch(cmd, {&m_sets.at(slot).set, 1}, firstSample, count, size);
+        m_engine->tracer().recordLaunch(cmd, {&m_sets.at(slot).set, 1}, uniforms, firstSample, count, size);
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
