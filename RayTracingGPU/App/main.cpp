@@ -10,7 +10,8 @@
 
 #include <spdlog/spdlog.h>
 
-#include "App/Compare.h"
+#include "App/Compare/Compare.h"
+#include "App/Compare/ReferenceCache.h"
 #ifdef RT_GPU_WINDOW
 #include "App/Gui/WindowApp.h"
 #endif
@@ -127,7 +128,7 @@ int main(int argc, char** argv)
     std::string engines = "single,multi,gpu";
     int referenceSpp = 0;
     std::string table;
-    app.add_flag("--compare", compare,
+    CLI::Option* compareFlag = app.add_flag("--compare", compare,
                  "Headless comparison: render --scene at every count of --spp-list on every engine of --engines, "
                  "print time, CPU/GPU ratio and relMSE against a --reference-spp render");
     app.add_option("--spp-list", sppList, "With --compare: sample counts, comma separated")->capture_default_str();
@@ -142,6 +143,46 @@ int main(int argc, char** argv)
                    "instead of rendering a reference")
         ->check(CLI::ExistingFile);
     app.add_option("--table", table, "With --compare: write every figure as JSON here");
+    rt::app::StrategyLists strategyLists;
+    app.add_option("--estimators", strategyLists.estimators,
+                   "With --compare: estimators to compare, comma separated (bsdf, mixture, nee, nee-mis; default: "
+                   "--estimator's); every combination with the lists below is a strategy")
+        ->needs(compareFlag);
+    app.add_option("--light-samplers", strategyLists.lightSamplers,
+                   "With --compare: NEE's light samplers to compare (area, solid-angle, projected)")
+        ->needs(compareFlag);
+    app.add_option("--light-selections", strategyLists.lightSelections,
+                   "With --compare: NEE's light selections to compare (uniform, power, bvh)")
+        ->needs(compareFlag);
+    app.add_option("--samplings", strategyLists.samplings,
+                   "With --compare: pixel samplings to compare (random, stratified, accumulate, sobol)")
+        ->needs(compareFlag);
+    app.add_option("--roulettes", strategyLists.roulettes, "With --compare: Russian roulette settings to compare (on, off)")
+        ->needs(compareFlag);
+    std::string csv;
+    app.add_option("--csv", csv,
+                   "With --compare: one CSV row per engine x strategy x spp (scene, engine, device, strategy, label, "
+                   "spp, wall ms, GPU ms, Mpaths/s, MSE, relMSE, RMSE), each written as its render ends (Ctrl-C keeps "
+                   "them)")
+        ->needs(compareFlag);
+    std::string plot;
+    app.add_option("--plot", plot,
+                   "With --compare and --csv: a PNG of relMSE against time and against spp (log-log, slope -1 "
+                   "drawn) and of the efficiency 1/(relMSE s), drawn by matplotlib (python3-matplotlib)")
+        ->needs(compareFlag);
+    double equalTimeMs = 0.0;
+    app.add_option("--equal-time", equalTimeMs,
+                   "With --compare: render every engine x strategy for this many milliseconds instead of the "
+                   "--spp-list ladder, and write the images with their false-colour error images as one figure to "
+                   "--output FILE.png")
+        ->check(CLI::PositiveNumber)
+        ->needs(compareFlag);
+    std::string referenceCache = rt::app::defaultReferenceCacheDir().string();
+    app.add_option("--reference-cache", referenceCache,
+                   "With --compare: folder of rendered references, re-used when scene, settings, spp, seed and engine "
+                   "match ('off': render the reference every time)")
+        ->capture_default_str()
+        ->needs(compareFlag);
     app.add_flag("--validation", validation,
                  "Run with VK_LAYER_KHRONOS_validation and fail (exit 1) if it reports any warning or error "
                  "(always on in Debug builds and with RT_VULKAN_VALIDATION=1)");
@@ -168,6 +209,14 @@ int main(int argc, char** argv)
             c.referenceSpp = referenceSpp > 0 ? referenceSpp : 4 * *std::max_element(c.spps.begin(), c.spps.end());
             c.json = table;
             c.referencePath = referencePath;
+            c.strategies = rt::app::strategyGrid(strategyLists, job.request.settings);
+            c.csv = csv;
+            c.plot = plot;
+            c.equalTimeMs = equalTimeMs;
+            c.grid = options.output;
+            if (referenceCache != "off")
+                c.referenceCache = referenceCache;
+            rt::app::checkComparison(c);
             return rt::app::runComparison(job.scene, job.request, c, [&](rt::EngineKind kind) -> std::unique_ptr<rt::RenderEngine> {
                 if (kind == rt::EngineKind::Gpu)
                     return std::make_unique<rt::gpu::GpuEngine>(rt::gpu::GpuEngineOptions{

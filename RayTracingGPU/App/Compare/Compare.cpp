@@ -1,0 +1,370 @@
+#include "App/Compare/Compare.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
+
+#include "App/Compare/ConvergenceCsv.h"
+#include "App/Compare/EqualTime.h"
+#include "App/Compare/Measurement.h"
+#include "App/Compare/PythonScript.h"
+#include "App/Compare/ReferenceCache.h"
+#include "Cli/HeadlessRun.h"
+#include "Cli/ValueParsing.h"
+#include "Error.h"
+#include "IO/AtomicFile.h"
+#include "Image/ImageIO.h"
+#include "Image/Metrics.h"
+
+namespace rt::app
+{
+namespace
+{
+std::vector<std::string> split(const std::string& text)
+{
+    std::vector<std::string> parts;
+    std::stringstream in(text);
+    for (std::string part; std::getline(in, part, ',');)
+        parts.push_back(part);
+    return parts;
+}
+
+struct EngineUnderTest
+{
+    EngineKind kind;
+    std::unique_ptr<RenderEngine> engine;
+};
+
+RenderRequest requestFor(const RenderRequest& base, const Strategy& strategy, int spp)
+{
+    RenderRequest r = base;
+    r.settings = strategy.applyTo(base.settings);
+    r.settings.spp = spp;
+    return r;
+}
+
+/// Progress of the whole run on stderr: one line per finished render, with the elapsed time.
+class RunLog
+{
+public:
+    explicit RunLog(std::size_t renders) : m_renders(renders) {}
+    void done(const std::string& what)
+    {
+        ++m_done;
+        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+        std::fprintf(stderr, "[%zu/%zu, %.1f s] %s\n", m_done, m_renders, s, what.c_str());
+    }
+
+private:
+    std::size_t m_renders;
+    std::size_t m_done = 0;
+    std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
+};
+
+/// The reference image: the file given, the cached render of the same scene and settings, or a new render by
+/// the last engine at referenceSpp with seed + 1000 (then cached). nullopt when Ctrl-C stopped it.
+std::optional<Image> obtainReference(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
+                                     EngineUnderTest& last)
+{
+    if (!options.referencePath.empty())
+    {
+        Image reference = readPfm(options.referencePath);
+        if (reference.width() != base.settings.width || reference.height() != base.settings.height())
+            throw UsageError(fmt::format("--reference {} is {}x{}; the comparison renders {}x{}", options.referencePath,
+                                         reference.width(), reference.height(), base.settings.width,
+                                         base.settings.height()));
+        spdlog::info("reference: {}", options.referencePath);
+        return reference;
+    }
+    RenderRequest request = base;
+    request.settings.spp = options.referenceSpp;
+    request.settings.seed += 1000;
+    const ReferenceCache cache(options.referenceCache);
+    if (std::optional<Image> cached = cache.find(scene, request, last.kind))
+    {
+        std::fprintf(stderr, "reference: %d spp on the %s engine, from the cache (%s)\n", options.referenceSpp,
+                     toString(last.kind), options.referenceCache.string().c_str());
+        return cached;
+    }
+    std::fprintf(stderr, "reference: rendering %d spp on the %s engine...\n", options.referenceSpp,
+                 toString(last.kind));
+    Measurement m = measure(*last.engine, request, nullptr);
+    if (m.cancelled)
+        return std::nullopt;
+    std::fprintf(stderr, "reference: %.1f s\n", m.wallMs * 1e-3);
+    const auto stored = cache.store(scene, request, last.kind, m.image);
+    if (!stored.empty())
+        std::fprintf(stderr, "reference: cached as %s\n", stored.string().c_str());
+    return std::move(m.image);
+}
+
+/// The ladder: every engine x strategy x spp against the reference; rows to the CSV as they finish, the table
+/// to stdout and the JSON at the end. Returns false when Ctrl-C stopped it.
+bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
+               std::vector<EngineUnderTest>& engines, const Image& reference, ConvergenceCsv* csv)
+{
+    const std::vector<std::string> labels = distinctLabels(options.strategies);
+    const std::size_t strategyCount = options.strategies.size();
+    // runs[engine][strategy][spp index]
+    std::vector<std::vector<std::vector<Measurement>>> runs(engines.size());
+    RunLog log(engines.size() * strategyCount * options.spps.size());
+    // Each engine runs all its rows back to back after its warm-up: row by row interleaving with 16-thread CPU
+    // renders cost an H100 2-3x (docs/PERFORMANCE.md).
+    for (std::size_t e = 0; e < engines.size(); ++e)
+    {
+        RenderEngine& engine = *engines[e].engine;
+        warmUp(engine, requestFor(base, options.strategies.front(), 4));
+        runs[e].resize(strategyCount);
+        for (std::size_t s = 0; s < strategyCount; ++s)
+            for (const int spp : options.spps)
+            {
+                Measurement m = measure(engine, requestFor(base, options.strategies[s], spp), &reference);
+                if (m.cancelled)
+                    return false;
+                log.done(fmt::format("{} {}, {} spp: {:.1f} ms, relMSE {:.3g}", toString(engines[e].kind), labels[s],
+                                     m.spp, m.ms(), m.error.relMse));
+                if (csv)
+                    csv->append({scene.id, toString(engines[e].kind), engine.deviceName(), options.strategies[s].name(),
+                                 labels[s], m.spp, m.wallMs, m.gpuMs, m.mpathsPerSecond, m.error.mse, m.error.relMse,
+                                 m.error.rmse});
+                runs[e][s].push_back(std::move(m));
+            }
+    }
+
+    const RenderSettings& b = base.settings;
+    const std::string against = options.referencePath.empty() ? fmt::format("{} spp", options.referenceSpp)
+                                                              : options.referencePath;
+    nlohmann::json json;
+    json["scene"] = scene.id;
+    json["width"] = b.width;
+    json["height"] = b.height();
+    json["depth"] = b.depth;
+    json["estimator"] = toString(b.estimator);
+    json["sampling"] = toString(b.sampling);
+    json["light_sampler"] = toString(b.lightSampler);
+    json["light_selection"] = toString(b.lightSelection);
+    json["russian_roulette"] = b.russianRoulette;
+    if (options.referencePath.empty())
+        json["reference_spp"] = options.referenceSpp;
+    else
+        json["reference"] = options.referencePath;
+    json["relmse_epsilon"] = kRelMseEpsilon;
+    for (const EngineUnderTest& e : engines)
+        json["devices"][toString(e.kind)] = e.engine->deviceName();
+    json["rows"] = nlohmann::json::array();
+
+    const bool ratio = engines.size() > 1 && engines.back().kind == EngineKind::Gpu;
+    for (std::size_t s = 0; s < strategyCount; ++s)
+    {
+        const RenderSettings settings = options.strategies[s].applyTo(b);
+        std::printf("\n%s: %dx%d, depth %d, %s estimator (%s light sampler, %s selection, roulette %s), %s "
+                    "sampling; relMSE against %s (epsilon %g)\n",
+                    scene.id.c_str(), b.width, b.height(), b.depth, toString(settings.estimator),
+                    toString(settings.lightSampler), toString(settings.lightSelection),
+                    settings.russianRoulette ? "on" : "off", toString(settings.sampling), against.c_str(),
+                    kRelMseEpsilon);
+        std::string header = fmt::format("{:>6}", "spp");
+        for (const EngineUnderTest& e : engines)
+            header += fmt::format(" | {:>9} {:>9}", fmt::format("{} ms", toString(e.kind)), "relMSE");
+        if (ratio)
+            header += fmt::format(" | {:>10} | {:>11}", "CPU/GPU", "relMSE C-G");
+        std::printf("%s\n%s\n", header.c_str(), std::string(header.size(), '-').c_str());
+        for (std::size_t row = 0; row < options.spps.size(); ++row)
+        {
+            std::string line = fmt::format("{:>6}", runs.front()[s][row].spp);
+            nlohmann::json jrow;
+            jrow["spp"] = runs.front()[s][row].spp;
+            jrow["strategy"] = options.strategies[s].name();
+            const Measurement* gpu = nullptr;
+            const Measurement* cpu = nullptr; // the fastest CPU engine of the row
+            for (std::size_t e = 0; e < engines.size(); ++e)
+            {
+                const Measurement& m = runs[e][s][row];
+                line += fmt::format(" | {:>9.1f} {:>9.2e}", m.ms(), m.error.relMse);
+                jrow[toString(engines[e].kind)] = {{"render_ms", m.wallMs},
+                                                   {"gpu_ms", m.gpuMs},
+                                                   {"mpaths_per_second", m.mpathsPerSecond},
+                                                   {"mse", m.error.mse},
+                                                   {"relmse", m.error.relMse},
+                                                   {"rmse", m.error.rmse}};
+                if (engines[e].kind == EngineKind::Gpu)
+                    gpu = &m;
+                else if (!cpu || m.wallMs < cpu->wallMs)
+                    cpu = &m;
+            }
+            if (ratio && gpu && cpu)
+            {
+                const double between = compareImages(cpu->image, gpu->image).relMse;
+                line += fmt::format(" | {:>9.1f}x | {:>11.2e}", cpu->wallMs / gpu->ms(), between);
+                jrow["cpu_over_gpu"] = cpu->wallMs / gpu->ms();
+                jrow["relmse_cpu_gpu"] = between;
+            }
+            std::printf("%s\n", line.c_str());
+            json["rows"].push_back(jrow);
+        }
+    }
+    std::printf("(GPU ms from timestamp queries around the trace dispatches; CPU ms from the host clock; "
+                "CPU/GPU uses the fastest CPU engine of the row)\n");
+    if (!options.json.empty())
+        writeFileAtomically(options.json, json.dump(2) + "\n");
+    return true;
+}
+
+/// The equal-time comparison: every engine x strategy for options.equalTimeMs, one figure. Returns false when
+/// Ctrl-C stopped it.
+bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
+                  std::vector<EngineUnderTest>& engines, const Image& reference, ConvergenceCsv* csv)
+{
+    const std::vector<std::string> labels = distinctLabels(options.strategies);
+    std::vector<EqualTimeTile> tiles;
+    RunLog log(engines.size() * options.strategies.size());
+    std::string devices;
+    for (EngineUnderTest& e : engines)
+    {
+        devices += (devices.empty() ? "" : ", ") + e.engine->deviceName();
+        warmUp(*e.engine, requestFor(base, options.strategies.front(), 4));
+        for (std::size_t s = 0; s < options.strategies.size(); ++s)
+        {
+            Measurement m = renderForBudget(*e.engine, base, options.strategies[s], options.equalTimeMs, reference);
+            if (m.cancelled)
+                return false;
+            log.done(fmt::format("{} {}: {} spp in {:.1f} ms, relMSE {:.3g}", toString(e.kind), labels[s], m.spp,
+                                 m.ms(), m.error.relMse));
+            if (csv)
+                csv->append({scene.id, toString(e.kind), e.engine->deviceName(), options.strategies[s].name(),
+                             labels[s], m.spp, m.wallMs, m.gpuMs, m.mpathsPerSecond, m.error.mse, m.error.relMse,
+                             m.error.rmse});
+            tiles.push_back({e.kind, labels[s], options.strategies[s], std::move(m)});
+        }
+    }
+    std::printf("\n%s: %dx%d, each strategy for %.0f ms; relMSE against %s\n", scene.id.c_str(), base.settings.width,
+                base.settings.height(), options.equalTimeMs,
+                options.referencePath.empty() ? fmt::format("{} spp", options.referenceSpp).c_str()
+                                              : options.referencePath.c_str());
+    std::printf("%-8s %-36s %8s %10s %10s %12s\n", "engine", "strategy", "spp", "ms", "relMSE", "1/(relMSE s)");
+    for (const EqualTimeTile& t : tiles)
+        std::printf("%-8s %-36s %8d %10.1f %10.3g %12.4g\n", toString(t.engine), t.label.c_str(), t.result.spp,
+                    t.result.ms(), t.result.error.relMse, 1.0 / (t.result.error.relMse * t.result.ms() * 1e-3));
+    if (!options.grid.empty())
+    {
+        writeEqualTimeGrid(options.grid,
+                           {scene.id, devices, options.equalTimeMs,
+                            options.referencePath.empty() ? options.referenceSpp : 0},
+                           reference, tiles);
+        std::printf("wrote %s\n", options.grid.c_str());
+    }
+    return true;
+}
+} // namespace
+
+std::vector<int> parseSppList(const std::string& text)
+{
+    std::vector<int> spps;
+    for (const std::string& part : split(text))
+    {
+        const auto value = parseInteger(part);
+        if (!value || *value < 1 || *value > std::numeric_limits<int>::max())
+            throw UsageError(fmt::format("--spp-list must be positive integers separated by commas (got '{}')", text));
+        spps.push_back(static_cast<int>(*value));
+    }
+    if (spps.empty())
+        throw UsageError("--spp-list is empty");
+    return spps;
+}
+
+std::vector<EngineKind> parseEngineList(const std::string& text)
+{
+    std::vector<EngineKind> engines;
+    for (const std::string& part : split(text))
+    {
+        const auto e = parseEngine(part);
+        if (!e)
+            throw UsageError(fmt::format("--engines takes single, multi and gpu (got '{}')", part));
+        engines.push_back(*e);
+    }
+    if (engines.empty())
+        throw UsageError("--engines is empty");
+    return engines;
+}
+
+void checkComparison(const CompareOptions& options)
+{
+    if (options.strategies.empty())
+        throw UsageError("--compare has no strategy to render");
+    checkOutputPath(options.csv, "--csv", {".csv"});
+    checkOutputPath(options.plot, "--plot", {".png"});
+    checkOutputPath(options.json, "--table", {".json"});
+    checkOutputPath(options.grid, "--output", {".png"});
+    if (!options.plot.empty() && options.csv.empty())
+        throw UsageError("--plot draws the rows of --csv: give --csv FILE.csv too");
+    if (options.equalTimeMs > 0.0 && options.grid.empty())
+        throw UsageError("--equal-time writes its figure to --output FILE.png: give --output too");
+    if (!options.plot.empty())
+    {
+        scriptPath("plot_convergence.py");
+        requireMatplotlib("--plot");
+    }
+    if (!options.grid.empty())
+    {
+        scriptPath("equal_time_grid.py");
+        requireMatplotlib("--equal-time");
+    }
+}
+
+int runComparison(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
+                  const std::function<std::unique_ptr<RenderEngine>(EngineKind)>& makeEngine)
+{
+    checkComparison(options);
+    // One engine of each kind, its acceleration structures built once.
+    std::vector<EngineUnderTest> engines;
+    for (const EngineKind kind : options.engines)
+    {
+        try
+        {
+            auto engine = makeEngine(kind);
+            const double build = engine->setScene(scene);
+            spdlog::info("{} engine on {}: acceleration structures in {:.3f} s", toString(kind), engine->deviceName(),
+                         build);
+            engines.push_back({kind, std::move(engine)});
+        }
+        catch (const DeviceError& e)
+        {
+            spdlog::warn("{} engine left out: {}", toString(kind), e.what());
+        }
+    }
+    if (engines.empty())
+        throw DeviceError("no engine could start");
+
+    InterruptScope interrupt;
+    const std::optional<Image> reference = obtainReference(scene, base, options, engines.back());
+    std::unique_ptr<ConvergenceCsv> csv;
+    bool finished = false;
+    if (reference)
+    {
+        if (!options.csv.empty())
+            csv = std::make_unique<ConvergenceCsv>(options.csv);
+        finished = options.equalTimeMs > 0.0 ? runEqualTime(scene, base, options, engines, *reference, csv.get())
+                                             : runLadder(scene, base, options, engines, *reference, csv.get());
+    }
+    if (!finished)
+    {
+        spdlog::warn("comparison cancelled{}", csv ? fmt::format(": {} keeps the rows finished before", options.csv)
+                                                   : std::string(": nothing written"));
+        return 130;
+    }
+    if (!options.plot.empty())
+    {
+        drawFigure(options.plot, scriptPath("plot_convergence.py"), {options.csv});
+        std::printf("wrote %s\n", options.plot.c_str());
+    }
+    return 0;
+}
+} // namespace rt::app

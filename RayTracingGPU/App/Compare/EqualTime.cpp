@@ -1,0 +1,108 @@
+#include "App/Compare/EqualTime.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <random>
+
+#include <nlohmann/json.hpp>
+#include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
+
+#include "App/Compare/PythonScript.h"
+#include "IO/AtomicFile.h"
+#include "Image/ImageIO.h"
+#include "Image/Metrics.h"
+
+namespace rt::app
+{
+namespace
+{
+constexpr int kCalibrationSpp = 4;
+constexpr double kTolerance = 0.15; // a render this far off its budget is rendered again with a corrected spp
+
+RenderRequest withStrategy(const RenderRequest& base, const Strategy& strategy, int spp)
+{
+    RenderRequest r = base;
+    r.settings = strategy.applyTo(base.settings);
+    r.settings.spp = spp;
+    return r;
+}
+
+/// A fresh folder under the system's temporary directory, removed with its contents at the end of the scope.
+class TemporaryFolder
+{
+public:
+    TemporaryFolder()
+    {
+        std::random_device random;
+        m_path = std::filesystem::temp_directory_path() / fmt::format("ray-tracing-grid-{:08x}", random());
+        std::filesystem::create_directories(m_path);
+    }
+    ~TemporaryFolder()
+    {
+        std::error_code ignored;
+        std::filesystem::remove_all(m_path, ignored);
+    }
+    TemporaryFolder(const TemporaryFolder&) = delete;
+    TemporaryFolder& operator=(const TemporaryFolder&) = delete;
+    const std::filesystem::path& path() const { return m_path; }
+
+private:
+    std::filesystem::path m_path;
+};
+} // namespace
+
+int sppForBudget(double budgetMs, double msPerSample)
+{
+    if (!(msPerSample > 0.0))
+        return INT_MAX;
+    return static_cast<int>(std::clamp(std::floor(budgetMs / msPerSample), 1.0, double(INT_MAX)));
+}
+
+Measurement renderForBudget(RenderEngine& engine, const RenderRequest& base, const Strategy& strategy,
+                            double budgetMs, const Image& reference)
+{
+    const Measurement calibration = measure(engine, withStrategy(base, strategy, kCalibrationSpp), nullptr);
+    if (calibration.cancelled)
+        return calibration;
+    int spp = sppForBudget(budgetMs, calibration.ms() / calibration.spp);
+    Measurement m = measure(engine, withStrategy(base, strategy, spp), &reference);
+    if (!m.cancelled && std::abs(m.ms() - budgetMs) > kTolerance * budgetMs && m.ms() > 0.0)
+    {
+        // The calibration's spp was too few to time well (fixed costs, clocks still rising): once more, at the
+        // rate the full render showed.
+        const int corrected = sppForBudget(budgetMs, m.ms() / m.spp);
+        if (corrected != spp)
+            m = measure(engine, withStrategy(base, strategy, corrected), &reference);
+    }
+    return m;
+}
+
+void writeEqualTimeGrid(const std::filesystem::path& png, const GridCaption& caption, const Image& reference,
+                        const std::vector<EqualTimeTile>& tiles)
+{
+    const std::filesystem::path script = scriptPath("equal_time_grid.py");
+    TemporaryFolder folder;
+    nlohmann::json meta;
+    meta["scene"] = caption.scene;
+    meta["device"] = caption.device;
+    meta["budget_ms"] = caption.budgetMs;
+    meta["epsilon"] = kRelMseEpsilon;
+    meta["reference"] = {{"path", (folder.path() / "reference.pfm").string()}, {"spp", caption.referenceSpp}};
+    writePfm(folder.path() / "reference.pfm", reference);
+    for (std::size_t i = 0; i < tiles.size(); ++i)
+    {
+        const std::filesystem::path pfm = folder.path() / fmt::format("tile-{}.pfm", i);
+        writePfm(pfm, tiles[i].result.image);
+        meta["tiles"].push_back({{"label", fmt::format("{} {}", toString(tiles[i].engine), tiles[i].label)},
+                                 {"spp", tiles[i].result.spp},
+                                 {"ms", tiles[i].result.ms()},
+                                 {"relmse", tiles[i].result.error.relMse},
+                                 {"path", pfm.string()}});
+    }
+    const std::filesystem::path metaPath = folder.path() / "tiles.json";
+    writeFileAtomically(metaPath, meta.dump(2));
+    drawFigure(png, script, {metaPath.string()});
+}
+} // namespace rt::app

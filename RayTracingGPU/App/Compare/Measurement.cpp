@@ -1,0 +1,77 @@
+#include "App/Compare/Measurement.h"
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+
+#include <spdlog/spdlog.h>
+
+#include "Render/RenderDriver.h"
+
+namespace rt::app
+{
+namespace
+{
+std::atomic<RenderControl*> g_control{nullptr};
+std::atomic<bool> g_interrupted{false};
+void (*g_previousHandler)(int) = SIG_DFL;
+
+extern "C" void onCompareInterrupt(int)
+{
+    g_interrupted.store(true);
+    if (RenderControl* c = g_control.load())
+        c->requestCancel();
+}
+} // namespace
+
+InterruptScope::InterruptScope()
+{
+    g_interrupted.store(false);
+    g_previousHandler = std::signal(SIGINT, onCompareInterrupt);
+}
+
+InterruptScope::~InterruptScope()
+{
+    std::signal(SIGINT, g_previousHandler);
+}
+
+bool InterruptScope::interrupted()
+{
+    return g_interrupted.load();
+}
+
+Measurement measure(RenderEngine& engine, const RenderRequest& request, const Image* reference)
+{
+    RenderControl control;
+    if (InterruptScope::interrupted())
+        return {.cancelled = true};
+    g_control.store(&control);
+    RenderResult r = render(engine, request, control);
+    g_control.store(nullptr);
+    Measurement m;
+    m.cancelled = r.stats.cancelled || InterruptScope::interrupted();
+    if (m.cancelled)
+        return m;
+    if (r.stats.nanSamples + r.stats.infSamples > 0)
+        spdlog::warn("{} engine: {} NaN and {} Inf samples", toString(engine.kind()), r.stats.nanSamples,
+                     r.stats.infSamples);
+    m.spp = request.settings.trueSpp();
+    m.wallMs = r.stats.renderSeconds * 1e3;
+    m.gpuMs = r.stats.gpuSeconds >= 0.0 ? r.stats.gpuSeconds * 1e3 : -1.0;
+    m.mpathsPerSecond = r.stats.mpathsPerSecond();
+    if (reference)
+        m.error = compareImages(r.image, *reference);
+    m.image = std::move(r.image);
+    return m;
+}
+
+void warmUp(RenderEngine& engine, const RenderRequest& request)
+{
+    RenderRequest small = request;
+    small.settings.spp = 4;
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < 1000 && std::chrono::steady_clock::now() - start < std::chrono::milliseconds(500); ++i)
+        if (measure(engine, small, nullptr).cancelled)
+            return;
+}
+} // namespace rt::app

@@ -1,0 +1,48 @@
+// One timed render of a comparison and what it measured, with Ctrl-C routed to whichever render is running.
+#pragma once
+
+#include <string>
+
+#include "Image/Image.h"
+#include "Image/Metrics.h"
+#include "Render/RenderControl.h"
+#include "Render/RenderEngine.h"
+#include "Render/RenderRequest.h"
+
+namespace rt::app
+{
+struct Measurement
+{
+    int spp = 0; // true spp
+    double wallMs = 0.0; // host clock around the tracing
+    double gpuMs = -1.0; // GPU timestamps around the trace dispatches; < 0 when the engine has none
+    double mpathsPerSecond = 0.0;
+    bool cancelled = false;
+    ErrorMetrics error; // against the reference, when one was given
+    Image image;
+
+    /// The time a comparison reports: the GPU's own clock where there is one (no host overhead), else the host's.
+    double ms() const { return gpuMs >= 0.0 ? gpuMs : wallMs; }
+};
+
+/// While alive, SIGINT cancels the render in progress and sets interrupted(); the previous handler comes back
+/// at the end of its scope.
+class InterruptScope
+{
+public:
+    InterruptScope();
+    ~InterruptScope();
+    InterruptScope(const InterruptScope&) = delete;
+    InterruptScope& operator=(const InterruptScope&) = delete;
+
+    static bool interrupted();
+};
+
+/// Renders `request` with `engine`, cancellable by the InterruptScope; compares with `reference` unless null.
+/// Warns about NaN and Inf samples (they are left out of the image, and out of the error).
+Measurement measure(RenderEngine& engine, const RenderRequest& request, const Image* reference);
+
+/// Half a second of untimed 4-spp renders: a GPU idle through another engine's turn drops its clocks, and an
+/// H100 then ran its first rows 3-10x slower (docs/PERFORMANCE.md).
+void warmUp(RenderEngine& engine, const RenderRequest& request);
+} // namespace rt::app

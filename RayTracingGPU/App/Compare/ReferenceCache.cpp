@@ -1,0 +1,181 @@
+#include "App/Compare/ReferenceCache.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <type_traits>
+
+#include <nlohmann/json.hpp>
+#include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
+
+#include "Error.h"
+#include "IO/AtomicFile.h"
+#include "Image/ImageIO.h"
+
+namespace rt::app
+{
+namespace
+{
+class Fnv1a
+{
+public:
+    void bytes(const void* data, std::size_t size)
+    {
+        const auto* p = static_cast<const unsigned char*>(data);
+        for (std::size_t i = 0; i < size; ++i)
+            m_hash = (m_hash ^ p[i]) * 0x100000001b3ull;
+    }
+    template <typename T> void value(const T& v)
+    {
+        static_assert(std::is_trivially_copyable_v<T>);
+        bytes(&v, sizeof v);
+    }
+    template <typename T> void vector(const std::vector<T>& v)
+    {
+        value(v.size());
+        if (!v.empty())
+            bytes(v.data(), v.size() * sizeof(T));
+    }
+    void string(const std::string& s)
+    {
+        value(s.size());
+        bytes(s.data(), s.size());
+    }
+    std::uint64_t hash() const { return m_hash; }
+
+private:
+    std::uint64_t m_hash = 0xcbf29ce484222325ull;
+};
+
+std::string hex(std::uint64_t v) { return fmt::format("{:016x}", v); }
+} // namespace
+
+std::filesystem::path defaultReferenceCacheDir()
+{
+    if (const char* dir = std::getenv("RT_REFERENCE_CACHE"))
+        return dir;
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+        return std::filesystem::path(xdg) / "ray-tracing" / "references";
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return std::filesystem::path(home) / ".cache" / "ray-tracing" / "references";
+    return {};
+}
+
+std::uint64_t sceneFingerprint(const Scene& scene)
+{
+    // Field by field where a struct may have padding; whole arrays where HostDevice.h fixes the layout.
+    Fnv1a h;
+    h.string(scene.id);
+    const CameraDesc& c = scene.camera;
+    h.value(c.lookFrom), h.value(c.lookAt), h.value(c.vup), h.value(c.vfovDegrees);
+    h.value(c.defocusAngleDegrees), h.value(c.focusDistance), h.value(c.shutterOpen), h.value(c.shutterClose);
+    h.value(scene.background.type), h.value(scene.background.color0), h.value(scene.background.color1);
+    h.vector(scene.textures);
+    h.vector(scene.materials);
+    for (const ImageData& image : scene.images)
+        h.value(image.width), h.value(image.height), h.vector(image.rgba);
+    for (const MeshData& mesh : scene.meshes)
+        h.vector(mesh.positions), h.vector(mesh.normals), h.vector(mesh.uvs), h.vector(mesh.indices),
+            h.vector(mesh.triangleMaterials);
+    for (const GroupDesc& group : scene.groups)
+    {
+        for (const SphereDesc& s : group.spheres)
+            h.value(s.center0), h.value(s.center1), h.value(s.radius), h.value(s.material);
+        for (const QuadDesc& q : group.quads)
+            h.value(q.q), h.value(q.u), h.value(q.v), h.value(q.material);
+        for (const MeshRef& m : group.meshes)
+            h.value(m.mesh), h.value(m.material);
+        for (const MediumDesc& m : group.media)
+            h.value(m.boundary), h.value(m.center), h.value(m.radius), h.value(m.boxMin), h.value(m.boxMax),
+                h.value(m.density), h.value(m.phaseMaterial);
+        h.value(std::uint32_t{0xFFFFFFFFu}); // the end of a group
+    }
+    for (const InstanceDesc& instance : scene.instances)
+        h.value(instance.group), h.value(instance.worldFromObject.m);
+    h.vector(scene.lights);
+    return h.hash();
+}
+
+std::string ReferenceCache::key(const Scene& scene, const RenderRequest& request, EngineKind engine)
+{
+    const RenderSettings& s = request.settings;
+    nlohmann::json k;
+    k["version"] = 1; // bump when the engines' output changes for the same settings
+    k["scene"] = request.scene.id;
+    k["scene_fingerprint"] = hex(sceneFingerprint(scene));
+    k["engine"] = toString(engine);
+    k["spp"] = s.trueSpp();
+    k["seed"] = s.seed;
+    k["width"] = s.width;
+    k["height"] = s.height();
+    k["depth"] = s.depth;
+    k["sampling"] = toString(s.sampling);
+    k["estimator"] = toString(s.estimator);
+    k["light_sampler"] = toString(s.lightSampler);
+    k["light_selection"] = toString(s.lightSelection);
+    k["russian_roulette"] = s.russianRoulette;
+    k["unidirectional_light"] = s.unidirectionalLight;
+    return k.dump();
+}
+
+std::filesystem::path ReferenceCache::pathFor(const std::string& key, const char* extension) const
+{
+    Fnv1a h;
+    h.string(key);
+    return m_dir / (hex(h.hash()) + extension);
+}
+
+std::optional<Image> ReferenceCache::find(const Scene& scene, const RenderRequest& request, EngineKind engine) const
+{
+    if (m_dir.empty())
+        return std::nullopt;
+    const std::string k = key(scene, request, engine);
+    std::ifstream in(pathFor(k, ".json"));
+    if (!in)
+        return std::nullopt;
+    std::stringstream text;
+    text << in.rdbuf();
+    const nlohmann::json stored = nlohmann::json::parse(text.str(), nullptr, false);
+    if (stored.is_discarded() || !stored.is_object() || !stored.contains("key") ||
+        stored["key"] != nlohmann::json::parse(k))
+        return std::nullopt; // a hash collision or a damaged entry: render anew
+    try
+    {
+        Image image = readPfm(pathFor(k, ".pfm"));
+        if (image.width() != request.settings.width || image.height() != request.settings.height())
+            return std::nullopt;
+        return image;
+    }
+    catch (const AssetError& e)
+    {
+        spdlog::warn("reference cache: {}: rendering it again", e.what());
+        return std::nullopt;
+    }
+}
+
+std::filesystem::path ReferenceCache::store(const Scene& scene, const RenderRequest& request, EngineKind engine,
+                                            const Image& image) const
+{
+    if (m_dir.empty())
+        return {};
+    const std::string k = key(scene, request, engine);
+    try
+    {
+        std::filesystem::create_directories(m_dir);
+        const std::filesystem::path pfm = pathFor(k, ".pfm");
+        writePfm(pfm, image);
+        // The JSON last: an entry without it is never found.
+        writeFileAtomically(pathFor(k, ".json"),
+                            nlohmann::json{{"key", nlohmann::json::parse(k)}, {"image", pfm.filename().string()}}
+                                    .dump(2) +
+                                "\n");
+        return pfm;
+    }
+    catch (const std::exception& e)
+    {
+        spdlog::warn("reference cache: could not store the reference in {}: {}", m_dir.string(), e.what());
+        return {};
+    }
+}
+} // namespace rt::app

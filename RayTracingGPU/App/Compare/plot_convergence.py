@@ -1,0 +1,77 @@
+#!/usr/bin/env python3
+"""Plots a convergence CSV of `ray-tracing-gpu --compare --csv` (ConvergenceCsv.h's columns): relMSE against
+time and against spp on log-log axes, one line per engine x strategy, with the slope -1 that an unbiased
+Monte Carlo estimator follows drawn through each line's first point; and the efficiency 1 / (relMSE x s) of
+each line's largest spp as bars. Time is the GPU's own clock where the engine has one, else the host's.
+
+    plot_convergence.py ROWS.csv FIGURE.png
+"""
+import csv
+import sys
+from collections import OrderedDict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def read_rows(path):
+    series = OrderedDict()
+    scenes, devices = OrderedDict(), OrderedDict()
+    with open(path, newline="") as f:
+        for row in csv.DictReader(f):
+            ms = float(row["gpu_ms"]) if float(row["gpu_ms"]) >= 0 else float(row["wall_ms"])
+            relmse = float(row["relmse"])
+            if ms <= 0 or relmse <= 0:
+                continue  # not on a log axis
+            key = f'{row["engine"]} {row["label"]}'
+            series.setdefault(key, []).append((int(row["spp"]), ms / 1000.0, relmse))
+            scenes[row["scene"]] = True
+            devices[f'{row["engine"]}: {row["device"]}'] = True
+    return series, list(scenes), list(devices)
+
+
+def main(csv_path, png_path):
+    series, scenes, devices = read_rows(csv_path)
+    if not series:
+        sys.exit(f"{csv_path}: no rows to plot")
+    fig, (by_time, by_spp, bars) = plt.subplots(1, 3, figsize=(17, 5.2))
+    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    efficiency = []
+    for i, (key, points) in enumerate(series.items()):
+        points.sort()
+        colour = colours[i % len(colours)]
+        spp = [p[0] for p in points]
+        seconds = [p[1] for p in points]
+        relmse = [p[2] for p in points]
+        by_time.loglog(seconds, relmse, "o-", color=colour, label=key)
+        by_spp.loglog(spp, relmse, "o-", color=colour, label=key)
+        # Slope -1 through the first point: where an unbiased estimator's error goes with more samples.
+        for axis, x in ((by_time, seconds), (by_spp, spp)):
+            axis.loglog([x[0], x[-1]], [relmse[0], relmse[0] * x[0] / x[-1]], ":", color=colour, alpha=0.6)
+        efficiency.append((key, 1.0 / (relmse[-1] * seconds[-1]), spp[-1], colour))
+    by_time.set_xlabel("render time (s)")
+    by_spp.set_xlabel("samples per pixel")
+    for axis in (by_time, by_spp):
+        axis.set_ylabel("relMSE")
+        axis.grid(True, which="both", alpha=0.3)
+    by_time.set_title("relMSE against time (dotted: slope -1)")
+    by_spp.set_title("relMSE against spp (dotted: slope -1)")
+    by_time.legend(fontsize=8)
+    names = [e[0] for e in efficiency]
+    bars.barh(range(len(efficiency)), [e[1] for e in efficiency], color=[e[3] for e in efficiency])
+    bars.set_yticks(range(len(efficiency)))
+    bars.set_yticklabels([f"{n} ({e[2]} spp)" for n, e in zip(names, efficiency)], fontsize=8)
+    bars.invert_yaxis()
+    bars.set_xlabel("efficiency 1 / (relMSE x s), at each line's largest spp")
+    bars.set_title("efficiency (higher is better)")
+    fig.suptitle(f'{", ".join(scenes)} - {"; ".join(devices)}', fontsize=10)
+    fig.tight_layout()
+    fig.savefig(png_path, dpi=110, format="png")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    main(sys.argv[1], sys.argv[2])

@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# Usage: compare.sh RAY_TRACING_GPU
+# ray-tracing-gpu --compare as issue 10 runs it, shrunk for lavapipe: a CSV row per engine x strategy x spp, the
+# plot, relMSE x spp about constant along each line (an unbiased estimator's error falls as 1/spp), the
+# reference re-used from the cache on a second run, the equal-time figure, Ctrl-C keeping the rows written,
+# and one error line with no file for bad input.
+set -eu
+app=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+common=(--compare --quiet --scene cornell-box-lights --width 48 --reference-spp 1024 --reference-cache "$work/cache")
+
+"$app" "${common[@]}" --engines multi,gpu --estimators mixture,nee-mis --spp-list 4,16,64 --csv "$work/c.csv" \
+    --plot "$work/c.png" >"$work/out1.txt" 2>"$work/err1.txt" || { cat "$work/err1.txt"; fail "ladder exited $?"; }
+file "$work/c.png" | grep -q "PNG image data" || fail "no plot"
+grep -q "rendering 1024 spp" "$work/err1.txt" || fail "the first run did not render its reference"
+python3 - "$work/c.csv" <<'PY' || fail "CSV rows"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) == 2 * 2 * 3, len(rows)
+lines = {}
+for r in rows:
+    assert float(r["wall_ms"]) > 0 and float(r["relmse"]) > 0 and float(r["mse"]) > 0, r
+    assert abs(float(r["rmse"]) ** 2 - float(r["mse"])) < 1e-6 * float(r["mse"]) + 1e-12, r
+    lines.setdefault((r["engine"], r["label"]), []).append(int(r["spp"]) * float(r["relmse"]))
+assert set(lines) == {("multi", "mixture"), ("multi", "nee-mis"), ("gpu", "mixture"), ("gpu", "nee-mis")}, lines
+for key, products in lines.items():
+    # relMSE x spp over a 16x range of spp: constant for an unbiased estimator, up to noise and the 1024-spp
+    # reference's own variance (+6 % at 64 spp); a biased or broken line drifts by the factor of the range.
+    assert max(products) / min(products) < 1.6, (key, products)
+mixture = [p for (e, l), ps in lines.items() if l == "mixture" for p in ps]
+nee = [p for (e, l), ps in lines.items() if l == "nee-mis" for p in ps]
+assert max(nee) < min(mixture), "NEE + MIS is less noisy per sample than the mixture on this scene"
+PY
+grep -q "mixture estimator" "$work/out1.txt" && grep -q "nee-mis estimator" "$work/out1.txt" || fail "table"
+
+# The same reference again: from the cache.
+"$app" "${common[@]}" --engines gpu --spp-list 4 >/dev/null 2>"$work/err2.txt"
+grep -q "from the cache" "$work/err2.txt" || { cat "$work/err2.txt"; fail "the reference was not re-used"; }
+
+"$app" "${common[@]}" --engines gpu --estimators mixture,nee-mis --equal-time 300 --output "$work/grid.png" \
+    --csv "$work/e.csv" >"$work/out3.txt" 2>&1 || { cat "$work/out3.txt"; fail "equal time"; }
+file "$work/grid.png" | grep -q "PNG image data" || fail "no equal-time figure"
+[ "$(wc -l <"$work/e.csv")" -eq 3 ] || fail "equal-time CSV rows"
+
+# Ctrl-C in the middle of a ladder: status 130, the rows finished before kept whole, no plot.
+"$app" "${common[@]}" --engines multi --spp-list 1,1,1,1,1,1,1,1,100000 --csv "$work/i.csv" --plot "$work/i.png" \
+    >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 600); do [ "$(cat "$work/i.csv" 2>/dev/null | wc -l)" -ge 9 ] && break; sleep 0.1; done
+sleep 0.5
+kill -INT $pid
+status=0
+wait $pid || status=$?
+[ $status -eq 130 ] || fail "Ctrl-C status $status"
+[ "$(wc -l <"$work/i.csv")" -eq 9 ] || fail "Ctrl-C kept $(wc -l <"$work/i.csv") lines"
+[ ! -e "$work/i.png" ] || fail "a plot after Ctrl-C"
+
+# Bad input: one error line, non-zero status, no file.
+bad() {
+    local out status=0
+    out=$("$app" "$@" 2>&1) || status=$?
+    [ $status -ne 0 ] || fail "accepted: $*"
+    [ "$(grep -c '^error:' <<<"$out")" -eq 1 ] || fail "not one error line for: $* -> $out"
+}
+bad --compare --scene cornell-box-lights --csv "$work/x.txt"
+bad --compare --scene cornell-box-lights --plot "$work/x.png"
+bad --compare --scene cornell-box-lights --estimators mixture,bogus --csv "$work/x.csv"
+bad --compare --scene cornell-box-lights --light-selections nearest
+bad --compare --scene cornell-box-lights --equal-time 100
+bad --compare --scene cornell-box-lights --equal-time -5 --output "$work/x.png"
+bad --scene cornell-box-lights --headless --csv "$work/x.csv"
+[ -z "$(ls "$work" | grep '^x')" ] || fail "a file left behind: $(ls "$work")"
+echo "compare ok"
