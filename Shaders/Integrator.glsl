@@ -72,14 +72,21 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
             break;
 
         previousBsdfPdf = 0.0;
+        // NEE's shadow ray, traced at the end of the vertex: across that trace only the path's own state lives
+        // (the hit, its material and the light sample are dead by then), which the GPU keeps in registers.
+        bool shadowPending = false;
+        vec3 shadowOrigin, shadowDirection, shadowContribution;
+        float shadowDistance;
         bool diffuse = m.type == MaterialType_Lambertian || m.type == MaterialType_Isotropic;
         if (nee && diffuse)
         {
             bool phase = m.type == MaterialType_Isotropic;
             vec3 albedo = evaluateTexture(m.albedoTexture, hit.uv, hit.position);
             // The BSDF ray leaves from this origin too (below): sampleDiffuse keeps to the side of ns.
-            vec3 vertexOrigin = medium ? hit.position : offsetRayOrigin(hit.position, hit.shadingNormal, offsetScale);
-            radiance += beta * estimateDirect(vertexOrigin, hit.shadingNormal, phase, albedo, mis, rng);
+            shadowOrigin = medium ? hit.position : offsetRayOrigin(hit.position, hit.shadingNormal, offsetScale);
+            shadowPending = sampleDirect(shadowOrigin, hit.shadingNormal, phase, albedo, mis, rng, shadowContribution,
+                                         shadowDirection, shadowDistance);
+            shadowContribution *= beta;
             direction = sampleDiffuse(phase, hit.shadingNormal, nextFloat2(rng));
             beta *= albedo;
             previousBsdfPdf = diffusePdf(phase, hit.shadingNormal, direction);
@@ -93,13 +100,13 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
             beta *= s.weight;
             direction = s.direction;
         }
+        bool survives = true;
         if (uniforms.russianRoulette != 0u)
         {
             float survival = rouletteSurvival(beta, segment);
             if (survival < 1.0)
             {
-                if (!(nextFloat(rng) < survival))
-                    break;
+                survives = nextFloat(rng) < survival;
                 beta /= survival;
             }
         }
@@ -107,6 +114,10 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
                         : offsetRayOrigin(hit.position, dot(direction, hit.normal) > 0.0 ? hit.normal : -hit.normal,
                                           offsetScale);
         previousPoint = origin;
+        if (shadowPending && unoccluded(shadowOrigin, shadowDirection, shadowDistance))
+            radiance += shadowContribution;
+        if (!survives)
+            break;
     }
     return radiance;
 }
