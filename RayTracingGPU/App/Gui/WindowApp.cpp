@@ -215,8 +215,10 @@ private:
     {
         try
         {
-            if (!m_state.image.rayTracing || m_accumulatedSpp == 0)
-                throw UsageError("nothing to save: turn ray tracing on and let it accumulate");
+            if (!m_state.image.rayTracing)
+                throw UsageError("nothing to save: the window shows the rasterised preview; turn ray tracing on");
+            if (m_accumulatedSpp == 0)
+                throw UsageError("nothing to save yet: no sample has been traced (save after the first frame)");
             m_presenter.waitIdle();
             const Image image = m_renderer.readImage();
             const std::filesystem::path pfm = writePngWithPfm(png, image);

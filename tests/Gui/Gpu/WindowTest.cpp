@@ -153,6 +153,25 @@ TEST(GpuWindow, ScreenshotShowsPanelAndRayTracedImage)
     EXPECT_LT(image.paletteFraction, 0.5) << "radiance, not the heatmap";
 }
 
+TEST(GpuWindow, SavingWithNothingToSaveSaysWhyAndWritesNothing)
+{
+    const ::rt::test::ScratchDir dir;
+    const std::string png = (dir / "early.png").string();
+    // The first action runs before the first frame has traced a sample: ray tracing is on, so the message
+    // must not ask to turn it on.
+    const AppRun early = runApp(std::string(kWindow) + "--scene rtow-camera-test --frames 1 --actions 'save=" + png + "'");
+    if (const std::string why = unavailable(early); !why.empty())
+        GTEST_SKIP() << "no display-capable Vulkan device: " << why;
+    EXPECT_NE(early.status, 0);
+    EXPECT_NE(early.output.find("no sample has been traced"), std::string::npos) << early.output;
+    EXPECT_EQ(early.output.find("turn ray tracing on"), std::string::npos) << early.output;
+    const AppRun preview =
+        runApp(std::string(kWindow) + "--scene rtow-camera-test --frames 1 --actions 'raytracing=off;save=" + png + "'");
+    EXPECT_NE(preview.status, 0);
+    EXPECT_NE(preview.output.find("rasterised preview; turn ray tracing on"), std::string::npos) << preview.output;
+    EXPECT_FALSE(std::filesystem::exists(png));
+}
+
 TEST(GpuWindow, RasterPreviewShowsTheSameSceneFromTheSameCamera)
 {
     const ::rt::test::ScratchDir dir;
