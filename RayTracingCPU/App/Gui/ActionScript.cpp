@@ -36,7 +36,7 @@ const std::vector<ActionSpec>& specs()
             {"aspect", ActionValue::Real, "A", "aspect ratio width / height", 1e-6},
             {"seed", ActionValue::Integer, "N", "seed of the random streams", 0, 4294967295.0},
             {"count", ActionValue::Integer, "N", "white-spheres' sphere count (-1: the scene's)", -1},
-            {"sampling", ActionValue::Text, "normal|accumulation|stratified|sobol", "pixel sampling (random and accumulate too)",
+            {"sampling", ActionValue::Text, "random|accumulate|stratified|sobol", "pixel sampling (the thesis' normal and accumulation too)",
              0, 1e30, [](const std::string& v) { return sampling(v).has_value(); }},
             {"loop", ActionValue::OnOff, "on|off", "loop rendering: render again with the next seed and average"},
             {"engine", ActionValue::Text, "single|multi|gpu",

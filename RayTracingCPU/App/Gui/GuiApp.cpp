@@ -180,8 +180,9 @@ private:
 
         ImGui::SetNextWindowPos(ImVec2(panelWidth, display.y - timingsHeight));
         ImGui::SetNextWindowSize(ImVec2(display.x - panelWidth, timingsHeight));
+        bool latestTimingVisible = false;
         if (ImGui::Begin("Timings of this session: every engine side by side", nullptr, kPaneFlags))
-            drawTimings(m_session);
+            latestTimingVisible = drawTimings(m_session);
         ImGui::End();
 
         // Where things are, in framebuffer pixels (what a screenshot holds): tests crop the panes with it.
@@ -193,7 +194,8 @@ private:
         const auto& image = m_imageView.drawnRect();
         m_layout = {{"panel", pixels(0.0f, 0.0f, panelWidth, display.y)},
                     {"image", pixels(image[0], image[1], image[2], image[3])},
-                    {"timings", pixels(panelWidth, display.y - timingsHeight, display.x - panelWidth, timingsHeight)}};
+                    {"timings", pixels(panelWidth, display.y - timingsHeight, display.x - panelWidth, timingsHeight)},
+                    {"latest_timing_visible", latestTimingVisible}};
     }
 
     const GuiOptions& m_options;

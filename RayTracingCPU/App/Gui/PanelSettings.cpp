@@ -17,8 +17,8 @@ const char* samplingLabel(PixelSampling sampling)
 {
     switch (sampling)
     {
-    case PixelSampling::Random: return "normal";
-    case PixelSampling::Accumulate: return "accumulation";
+    case PixelSampling::Random: return "random";
+    case PixelSampling::Accumulate: return "accumulate";
     case PixelSampling::Stratified: return "stratified";
     case PixelSampling::Sobol: return "sobol";
     }

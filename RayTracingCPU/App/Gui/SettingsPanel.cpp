@@ -151,8 +151,9 @@ void SettingsPanel::drawRenderingParameters(Session& session)
                 session.setSampling(p);
         ImGui::EndCombo();
     }
-    tooltip("normal: spp jittered samples per pixel in one pass; accumulation: 1-spp passes shown as they "
-            "finish; stratified: floor(sqrt(spp))^2 jittered strata");
+    tooltip("random (the thesis' \"normal\"): spp jittered samples per pixel in one pass; accumulate (the thesis' "
+            "\"accumulation\"): 1-spp passes shown as they finish; stratified: floor(sqrt(spp))^2 jittered strata; "
+            "sobol: Owen-scrambled Sobol points");
     if (ImGui::BeginCombo("Estimator", toString(s.estimator)))
     {
         for (Estimator e : {Estimator::BsdfOnly, Estimator::Mixture, Estimator::Nee, Estimator::NeeMis})

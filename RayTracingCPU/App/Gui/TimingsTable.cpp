@@ -30,6 +30,8 @@ void TimingsTable::record(const RenderStats& stats)
     cell->mpathsPerSecond = stats.mpathsPerSecond();
     cell->renders += 1;
     cell->device = stats.device;
+    m_latest = std::size_t(row - m_rows.begin());
+    ++m_revision;
 }
 
 nlohmann::json TimingsTable::toJson() const

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -55,14 +56,24 @@ class TimingsTable
 public:
     /// Adds a finished render.
     void record(const RenderStats& stats);
-    void clear() { m_rows.clear(); }
+    void clear()
+    {
+        m_rows.clear();
+        ++m_revision;
+    }
     /// In the order their first render finished.
     const std::vector<TimingRow>& rows() const { return m_rows; }
+    /// The row the latest record() went to (rows().size() when empty), and a count that changes with every
+    /// record() and clear(): the window scrolls to that row when the count moved.
+    std::size_t latestRow() const { return m_latest; }
+    std::uint64_t revision() const { return m_revision; }
     /// One object per (row, engine): scene, count, mesh, width, height, spp, depth, sampling, estimator,
     /// russian_roulette, unidirectional_light, engine, seconds, best_seconds, mpaths_per_second, renders, device.
     nlohmann::json toJson() const;
 
 private:
     std::vector<TimingRow> m_rows;
+    std::size_t m_latest = 0;
+    std::uint64_t m_revision = 0;
 };
 } // namespace rt::gui

@@ -1,5 +1,6 @@
 #include "App/Gui/TimingsWindow.h"
 
+#include <cstdint>
 #include <string>
 
 #include <imgui.h>
@@ -22,7 +23,7 @@ std::string speedUp(const TimingRow& row, EngineKind engine)
 }
 } // namespace
 
-void drawTimings(Session& session)
+bool drawTimings(Session& session)
 {
     const TimingsTable& table = session.timings();
     if (ImGui::SmallButton("Clear"))
@@ -33,7 +34,8 @@ void drawTimings(Session& session)
     const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollX |
                                   ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
     if (!ImGui::BeginTable("timings", 10, flags))
-        return;
+        return table.rows().empty();
+    bool latestVisible = table.rows().empty();
     ImGui::TableSetupScrollFreeze(1, 1);
     ImGui::TableSetupColumn("Scene");
     ImGui::TableSetupColumn("Size");
@@ -47,11 +49,18 @@ void drawTimings(Session& session)
     ImGui::TableHeadersRow();
 
     const ImU32 fastest = ImGui::GetColorU32(ImVec4(0.25f, 0.70f, 0.35f, 0.35f));
-    for (const TimingRow& row : table.rows())
+    // A new timing scrolls its row into view once; the user's own scrolling is left alone in between.
+    static std::uint64_t shownRevision = 0;
+    const bool scrollToLatest = table.revision() != shownRevision;
+    shownRevision = table.revision();
+    for (std::size_t index = 0; index < table.rows().size(); ++index)
     {
+        const TimingRow& row = table.rows()[index];
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(row.key.scene.id.c_str());
+        if (index == table.latestRow())
+            latestVisible = ImGui::IsItemVisible();
         ImGui::TableNextColumn();
         ImGui::Text("%dx%d", row.key.width, row.key.height);
         ImGui::TableNextColumn();
@@ -90,7 +99,10 @@ void drawTimings(Session& session)
         for (EngineKind e : {EngineKind::Multi, EngineKind::Gpu})
             if (const std::string s = speedUp(row, e); !s.empty())
                 ImGui::TextUnformatted(s.c_str());
+        if (scrollToLatest && index == table.latestRow())
+            ImGui::SetScrollHereY(1.0f); // the cursor is below the row's cells: the whole row comes into view
     }
     ImGui::EndTable();
+    return latestVisible;
 }
 } // namespace rt::gui

@@ -6,6 +6,7 @@
 
 namespace rt::gui
 {
-/// Draws into the current ImGui window.
-void drawTimings(Session& session);
+/// Draws into the current ImGui window, scrolled to the row of the latest timing when one arrived. Returns
+/// whether that row is on screen (true with no rows): --state-json reports it for the window tests.
+bool drawTimings(Session& session);
 } // namespace rt::gui

@@ -30,6 +30,10 @@ status=0
 check_run stress "$status" "$work/stress.err"
 python3 "$here/window_checks.py" settled "$work/stress.json"
 [ "$(identify -format '%w %h' "$work/stress.png")" = "1040 680" ] || { echo "FAIL: screenshot is not 1040x680"; exit 1; }
+# A dozen timings overflow the table's pane: it must have scrolled to the latest one.
+python3 -c "import json,sys; s=json.load(open(sys.argv[1])); assert len(s['timings']) > 3, 'too few timings'; \
+assert s['layout']['latest_timing_visible'], 'the latest timing is scrolled out of view'" "$work/stress.json" ||
+    { echo "FAIL: timings table"; exit 1; }
 
 # Single and multi core give the same image bit for bit, so the window's image must equal a headless render.
 read -r -a flags <<<"$(python3 "$here/window_checks.py" headless-args "$work/stress.json")"
