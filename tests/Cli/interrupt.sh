@@ -16,8 +16,9 @@ trap '[ -n "$pid" ] && kill -KILL "$pid" 2>/dev/null; rm -rf "$work"' EXIT
 # spdlog's lines go to stdout (for now), the progress line to stderr: look in both.
 started() { cat "$work/stdout" "$work/stderr" 2>/dev/null | grep -q "acceleration structures built"; }
 
-# 2x1 pixels: 2^19 samples per pixel in one batch of a fixed path budget, seconds per row; 64x64: many rows.
-for size in 2 64; do
+# 2x1 pixels: 2^19 samples per pixel in one batch of a fixed path budget, seconds per row; 64x64: many rows;
+# 200x200: one sample per pixel is seconds on lavapipe, so the GPU engine must cut a batch into bands of rows.
+for size in ${SIZES:-2 64 200}; do
     rm -f "$work"/*
     "$app" --headless --scene "$scene" --width "$size" --aspect "$((size == 2 ? 2 : 1))" --spp 2147483647 --russian-roulette off --output "$work/out.png" --hdr "$work/out.pfm" \
         --stats "$work/out.json" >"$work/stdout" 2>"$work/stderr" &
