@@ -99,20 +99,21 @@ private:
             vertex(args);
         else if (keyword == "vn")
         {
-            numbers("normal", args, 3, 3);
+            numbers("normal", args, 3, 3, "3");
             ++m_result.normals;
         }
         else if (keyword == "vt")
         {
-            numbers("texture coordinate", args, 1, 3);
+            numbers("texture coordinate", args, 1, 3, "1 to 3");
             ++m_result.texcoords;
         }
         else if (keyword == "f")
             face(args);
     }
 
+    /// The statement's numbers, `fewest` to `most` of them (`needed` words the rule for the message).
     std::vector<double> numbers(const char* what, const std::vector<std::string>& args, std::size_t fewest,
-                                std::size_t most) const
+                                std::size_t most, const std::string& needed) const
     {
         std::vector<double> values;
         for (const std::string& a : args)
@@ -124,16 +125,16 @@ private:
         }
         if (values.size() < fewest || values.size() > most)
             fail(m_line, fmt::format("a {} with {} number{} ({} needed)", what, values.size(),
-                                     values.size() == 1 ? "" : "s",
-                                     fewest == most ? fmt::format("{}", fewest) : fmt::format("{} to {}", fewest, most)));
+                                     values.size() == 1 ? "" : "s", needed));
         return values;
     }
 
     void vertex(const std::vector<std::string>& args)
     {
-        const std::vector<double> xyz = numbers("vertex", args, 3, 6);
+        const char* needed = "3, 4 with w, or 6 with a colour";
+        const std::vector<double> xyz = numbers("vertex", args, 3, 6, needed);
         if (xyz.size() == 5)
-            fail(m_line, "a vertex with 5 numbers (3, 4 with w, or 6 with a colour needed)");
+            fail(m_line, fmt::format("a vertex with 5 numbers ({} needed)", needed));
         m_result.positions.emplace_back(xyz[0], xyz[1], xyz[2]);
     }
 
