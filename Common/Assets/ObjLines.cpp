@@ -64,19 +64,22 @@ public:
         std::string line;
         for (m_line = 1; std::getline(in, line); ++m_line)
             statement(line);
-        // Positive indices may point forward in the file: checked once every vertex is counted.
-        for (const Pending& p : m_forward)
-            checkPositive(p.line, p.written, p.index, p.kind);
+        // Positive indices may point forward in the file: checked once every vertex is counted, by the largest
+        // of each kind (one per kind kept, not one per face vertex: meshes have millions).
+        for (const Largest& l : m_largest)
+            if (l.line > 0)
+                checkPositive(l.line, l.written, l.index, l.kind);
         return std::move(m_result);
     }
 
 private:
-    struct Pending
+    /// The largest positive index of a kind so far, where it was and how it was written.
+    struct Largest
     {
-        std::size_t line;
+        std::size_t line = 0; // 0: none yet
         std::string written;
-        long long index;
-        char kind; // 'v', 't' or 'n'
+        long long index = 0;
+        char kind = 'v'; // 'v', 't' or 'n'
     };
 
     [[noreturn]] void fail(std::size_t line, const std::string& problem) const
@@ -190,7 +193,9 @@ private:
                                          written, nameOf(kind), countOf(kind)));
             return;
         }
-        m_forward.push_back({m_line, written, value, kind});
+        Largest& largest = m_largest[kind == 'v' ? 0 : kind == 't' ? 1 : 2];
+        if (value > largest.index)
+            largest = {m_line, written, value, kind};
     }
 
     void checkPositive(std::size_t line, const std::string& written, long long value, char kind) const
@@ -203,7 +208,7 @@ private:
     std::filesystem::path m_file;
     std::size_t m_line = 0;
     ObjLines m_result;
-    std::vector<Pending> m_forward;
+    Largest m_largest[3]; // vertex, texture coordinate, normal
 };
 } // namespace
 

@@ -24,6 +24,6 @@ struct ObjLines
 /// `vt` 1 to 3, all of them finite; every `f` has at least 3 vertices, each `v`, `v/t`, `v//n` or `v/t/n` of
 /// integer indices in range (1..count, or -1..-count counting back from the statement). Other statements
 /// are left to tinyobjloader. Throws AssetError "malformed OBJ '<file>': line N: <problem>", quoting an
-/// index as written in the file.
+/// index as written in the file (of positive indices out of range, the largest of its kind).
 ObjLines scanObjLines(const std::filesystem::path& file);
 } // namespace rt
