@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
+#include <new>
 #include <thread>
 
 #include <spdlog/fmt/fmt.h>
@@ -189,6 +190,12 @@ int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>
     {
         std::fprintf(stderr, "error: %s\n", e.what());
         return e.exitCode();
+    }
+    catch (const std::bad_alloc&)
+    {
+        // Past the up-front estimate (Render/MemoryBudget.h), e.g. memory taken by another process meanwhile.
+        std::fprintf(stderr, "error: out of memory (the render needed more than the machine could give)\n");
+        return 1;
     }
     catch (const std::exception& e)
     {
