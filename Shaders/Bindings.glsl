@@ -29,6 +29,10 @@ layout(binding = kBindingImages) uniform sampler2D images[];
 
 layout(push_constant, scalar) uniform PushBlock { TracePushConstants push; };
 
+/// The image pixel of this invocation: a launch covers a band of rows from push.firstRow, so that one
+/// submit of a large image on a slow device stays short (cancellation waits for a submit).
+uvec2 launchPixel() { return gl_LaunchIDEXT.xy + uvec2(0u, push.firstRow); }
+
 #include "Specialization.glsl"
 
 /// The light that primitive `primitive` of a record is (InstanceRecord::firstPrimitiveLight), or kNoIndex.

@@ -1,12 +1,14 @@
 #include "Cli/CommonOptions.h"
 
 #include <cstdio>
+#include <limits>
 
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
 #include "Cli/ValueParsing.h"
 #include "Error.h"
+#include "Render/MemoryBudget.h"
 
 namespace rt
 {
@@ -23,7 +25,7 @@ bool onOffFlag(const std::string& flag, const std::string& value)
 SceneRef CommonOptions::sceneRef() const
 {
     SceneRef ref{.id = scene};
-    ref.options.count = count;
+    ref.options.count = count.value_or(-1);
     if (!mesh.empty())
         ref.options.meshPath = mesh;
     return ref;
@@ -78,7 +80,11 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
     app.add_option("--output", o.output, "Write the tone-mapped sRGB image here (.png)");
     app.add_option("--hdr", o.hdr, "Write the linear radiance image here (.pfm)");
     app.add_option("--stats", o.stats, "Write render statistics as JSON here");
-    app.add_option("--count", o.count, "Object count for scenes that scale (white-spheres: spheres, default 20000; many-lights: lights, default 1000)");
+    app.add_option("--count", o.count,
+                   "Object count for scenes that scale (white-spheres: spheres, default 20000; many-lights: lights, "
+                   "default 1000), at least 1; refused up front when the scene would not fit in the memory "
+                   "available (about 1 KB per object)")
+        ->check(CLI::Range(1, std::numeric_limits<int>::max()));
     app.add_option("--mesh", o.mesh, "OBJ file for the mesh scenes (default: the Stanford bunny in Assets)");
     app.add_flag("--quiet", o.quiet, "No progress line");
 }
@@ -131,8 +137,16 @@ RenderRequest resolveRequest(const CommonOptions& o, const Scene& scene)
 
 CommandLineRender resolveCommandLine(const CommonOptions& options)
 {
+    const std::uint64_t available = availableMemoryBytes();
+    if (options.count)
+        checkMemory(renderBytes(0, std::uint64_t(*options.count)), fmt::format("--count {}", *options.count),
+                    available);
     CommandLineRender r{.scene = buildScene(options.sceneRef())};
     r.request = resolveRequest(options, r.scene);
+    const RenderSettings& s = r.request.settings;
+    const std::uint64_t pixels = std::uint64_t(s.width) * std::uint64_t(s.height());
+    checkMemory(renderBytes(pixels, r.scene.primitiveCount() + r.scene.lights.size()),
+                fmt::format("a {}x{} render of {}", s.width, s.height(), r.scene.id), available);
     return r;
 }
 

@@ -33,7 +33,7 @@ struct CommonOptions
     std::string output;
     std::string hdr;
     std::string stats;
-    int count = -1;
+    std::optional<int> count; // >= 1 (CLI11 checks); empty: the scene's default
     std::string mesh;
     bool quiet = false;
 
@@ -54,7 +54,9 @@ struct CommandLineRender
     RenderRequest request;
 };
 
-/// Builds the scene the flags name and resolves the request. Throws UsageError, SceneError, AssetError.
+/// Builds the scene the flags name and resolves the request. Refuses, before building anything, a request
+/// whose estimated memory (Render/MemoryBudget.h: --count's objects, then the built scene and the image)
+/// exceeds what the machine has available. Throws UsageError, SceneError, AssetError.
 CommandLineRender resolveCommandLine(const CommonOptions& options);
 
 /// One line per catalogue scene: id, title, source.

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
+#include <new>
 #include <thread>
 
 #include <spdlog/fmt/fmt.h>
@@ -14,6 +15,7 @@
 
 #include "Error.h"
 #include "Format.h"
+#include "IO/OutputSet.h"
 #include "Image/ImageIO.h"
 #include "Render/RenderDriver.h"
 
@@ -111,9 +113,7 @@ void checkOutputPath(const std::string& path, const char* flag, std::initializer
             list += (list.empty() ? "" : " or ") + std::string(e);
         throw UsageError(fmt::format("{} '{}' must end in {}", flag, path, list));
     }
-    const std::filesystem::path parent = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
-    if (!std::filesystem::is_directory(parent))
-        throw OutputError(fmt::format("{} '{}': folder '{}' does not exist", flag, path, parent.string()));
+    checkWritable(p, flag);
 }
 
 void checkOutputPaths(const CommonOptions& o)
@@ -147,12 +147,15 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& r
         spdlog::warn("render cancelled after {:.1f} s: no file written", result.stats.renderSeconds);
         return 130;
     }
+    // All or none: a stats file that cannot be written must not leave the PNG behind.
+    OutputSet outputs;
     if (!o.output.empty())
-        writePng(o.output, result.image);
+        outputs.add(o.output, [&](const std::filesystem::path& tmp) { writePng(tmp, result.image); });
     if (!o.hdr.empty())
-        writePfm(o.hdr, result.image);
+        outputs.add(o.hdr, [&](const std::filesystem::path& tmp) { writePfm(tmp, result.image); });
     if (!o.stats.empty())
-        writeStatsJson(o.stats, result.stats);
+        outputs.add(o.stats, [&](const std::filesystem::path& tmp) { writeStatsJson(tmp, result.stats); });
+    outputs.commit();
     const RenderStats& s = result.stats;
     const RenderSettings& settings = request.settings;
     std::printf("%s: %dx%d, %d spp (%s, %s), depth %d, %s engine: render %.3f s, build %.3f s, %.2f Mpaths/s, "
@@ -187,6 +190,12 @@ int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>
     {
         std::fprintf(stderr, "error: %s\n", e.what());
         return e.exitCode();
+    }
+    catch (const std::bad_alloc&)
+    {
+        // Past the up-front estimate (Render/MemoryBudget.h), e.g. memory taken by another process meanwhile.
+        std::fprintf(stderr, "error: out of memory (the render needed more than the machine could give)\n");
+        return 1;
     }
     catch (const std::exception& e)
     {

@@ -11,7 +11,8 @@
 
 namespace rt
 {
-/// Checks, before any work, that `path` (if not empty) ends in one of `extensions` and that its folder exists.
+/// Checks, before any work, that `path` (if not empty) ends in one of `extensions` and can be written
+/// (IO/OutputSet.h's checkWritable: the folder exists and takes a new file, the path is no folder).
 /// Throws UsageError (extension) or OutputError (folder), naming `flag`.
 void checkOutputPath(const std::string& path, const char* flag, std::initializer_list<const char*> extensions);
 
@@ -19,8 +20,9 @@ void checkOutputPath(const std::string& path, const char* flag, std::initializer
 /// Throws UsageError or OutputError.
 void checkOutputPaths(const CommonOptions& options);
 
-/// Renders `request` of `scene` (the scene it names, built) and writes the outputs. Returns the process exit
-/// status: 0, or 130 when cancelled by SIGINT (nothing is written then). Throws rt::Error for failures.
+/// Renders `request` of `scene` (the scene it names, built) and writes the outputs, all or none
+/// (IO/OutputSet.h). Returns the process exit status: 0, or 130 when cancelled by SIGINT (nothing is written
+/// then). Throws rt::Error for failures (OutputError, with no output left behind, when one cannot be written).
 int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& request, const CommonOptions& options);
 
 /// Parses the command line, then runs `body`, turning every rt::Error and CLI11 parse error into one

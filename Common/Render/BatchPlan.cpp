@@ -1,24 +1,29 @@
 #include "Render/BatchPlan.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace rt
 {
-std::uint32_t BatchPlan::samplesIn(std::uint32_t batch, std::uint32_t totalSamples) const
+BatchPlan::BatchPlan(std::uint32_t totalSamples, std::uint64_t pixels, std::uint64_t pathsPerBatch, bool progressive,
+                     double targetSeconds)
+    : m_total(std::max<std::uint32_t>(totalSamples, 1)), m_target(targetSeconds)
 {
-    const std::uint64_t first = std::uint64_t(batch) * samplesPerBatch;
-    if (first >= totalSamples)
-        return 0;
-    return static_cast<std::uint32_t>(std::min<std::uint64_t>(samplesPerBatch, totalSamples - first));
+    const std::uint64_t fit = pathsPerBatch / std::max<std::uint64_t>(pixels, 1);
+    m_max = progressive ? 1u : static_cast<std::uint32_t>(std::clamp<std::uint64_t>(fit, 1, m_total));
 }
 
-BatchPlan planBatches(std::uint32_t totalSamples, std::uint64_t pixels, std::uint64_t pathsPerBatch,
-                      bool progressive)
+std::uint32_t BatchPlan::next(std::uint32_t samplesDone) const
 {
-    BatchPlan plan;
-    const std::uint64_t fit = pathsPerBatch / std::max<std::uint64_t>(pixels, 1);
-    plan.samplesPerBatch = progressive ? 1u : static_cast<std::uint32_t>(std::clamp<std::uint64_t>(fit, 1, totalSamples));
-    plan.batchCount = (totalSamples + plan.samplesPerBatch - 1) / plan.samplesPerBatch;
-    return plan;
+    const std::uint32_t left = samplesDone < m_total ? m_total - samplesDone : 1u;
+    return std::min(m_samples, left);
+}
+
+void BatchPlan::record(std::uint32_t samples, double seconds)
+{
+    samples = std::max<std::uint32_t>(samples, 1);
+    const double grown = 4.0 * samples;
+    const double ideal = seconds > 0.0 ? std::min(grown, samples * m_target / seconds) : grown;
+    m_samples = static_cast<std::uint32_t>(std::clamp(std::floor(ideal), 1.0, double(m_max)));
 }
 } // namespace rt

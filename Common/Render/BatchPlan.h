@@ -1,23 +1,43 @@
 // How the render driver cuts a frame into batches: each batch traces a few samples of every pixel (on the GPU
-// one vkCmdTraceRaysKHR looping over them), few enough that a batch stays well under a second (responsive
-// cancel and progress, no GPU driver watchdog), many enough that the cost of a batch does not matter.
+// one vkCmdTraceRaysKHR looping over them). A batch is the unit of cancellation on the GPU and of progress
+// and previews on both engines, so it must stay short whatever the scene, size and device: a fixed count of
+// paths was 10 s on lavapipe in a heavy scene (issue 13: Ctrl-C took that long). The plan therefore sizes
+// batches by time: it starts with one sample per pixel, measures, and sizes the next batch to take about
+// kBatchTargetSeconds, never above the engine's paths per batch. Any cut gives the same image (each pixel
+// adds its samples in sample order), so sizing by a clock costs no determinism.
 #pragma once
 
 #include <cstdint>
 
 namespace rt
 {
-struct BatchPlan
+/// What a batch aims at, in seconds: the GPU engine cancels between batches, so this bounds Ctrl-C there
+/// (within a second even at a few times this), while the per-batch cost (a submit and wait; the CPU's
+/// parallel loop tail, ~3 ms on 2 cores) stays near a percent. The CPU engine cancels within a batch.
+inline constexpr double kBatchTargetSeconds = 0.25;
+
+class BatchPlan
 {
-    std::uint32_t samplesPerBatch = 1;
-    std::uint32_t batchCount = 1; // the last batch may trace fewer samples
+public:
+    /// `totalSamples` (>= 1) per pixel over `pixels` pixels, at most `pathsPerBatch` paths per batch (but
+    /// at least one sample). `progressive` (accumulate sampling) makes every batch one sample, so that a
+    /// preview can follow each pass.
+    BatchPlan(std::uint32_t totalSamples, std::uint64_t pixels, std::uint64_t pathsPerBatch, bool progressive,
+              double targetSeconds = kBatchTargetSeconds);
 
-    std::uint32_t samplesIn(std::uint32_t batch, std::uint32_t totalSamples) const;
+    /// Samples per pixel of the next batch, given `samplesDone` (< totalSamples) so far: >= 1.
+    std::uint32_t next(std::uint32_t samplesDone) const;
+    /// Reports that a batch of `samples` took `seconds` (wall clock; <= 0 when unmeasured): the next batch
+    /// aims at the target time at that rate, growing at most 4x a batch (one fast batch proves little).
+    void record(std::uint32_t samples, double seconds);
+
+    /// The most samples a batch may hold: the path budget's share of each pixel.
+    std::uint32_t maxSamples() const { return m_max; }
+
+private:
+    std::uint32_t m_total;
+    std::uint32_t m_max;
+    std::uint32_t m_samples = 1; // the next batch's, before the remainder cuts it
+    double m_target;
 };
-
-/// `totalSamples` (>= 1) per pixel over `pixels` pixels, at most `pathsPerBatch` paths per batch (at least
-/// one sample). `progressive` (accumulate sampling) makes every batch one sample, so that a preview can
-/// follow each pass.
-BatchPlan planBatches(std::uint32_t totalSamples, std::uint64_t pixels, std::uint64_t pathsPerBatch,
-                      bool progressive);
 } // namespace rt

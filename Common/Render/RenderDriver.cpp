@@ -34,9 +34,7 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
     const int height = settings.height();
     const auto totalSamples = static_cast<std::uint32_t>(settings.trueSpp());
     const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
-    const BatchPlan plan = planBatches(totalSamples, pixels, engine.pathsPerBatch(),
-                                       settings.sampling == PixelSampling::Accumulate);
-    RT_CHECK_GE(plan.batchCount, 1u);
+    BatchPlan plan(totalSamples, pixels, engine.pathsPerBatch(), settings.sampling == PixelSampling::Accumulate);
     control.begin(pixels * totalSamples); // progress in camera paths, advanced by the engine
 
     std::uint32_t samplesDone = 0;
@@ -45,13 +43,15 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
     double deviceSeconds = 0.0;
     bool deviceTimed = true;
     const Clock::time_point renderStart = Clock::now();
-    for (std::uint32_t batch = 0; batch < plan.batchCount && !control.cancelRequested(); ++batch)
+    while (samplesDone < totalSamples && !control.cancelRequested())
     {
-        const std::uint32_t samples = plan.samplesIn(batch, totalSamples);
+        const std::uint32_t samples = plan.next(samplesDone);
         RT_DCHECK_GT(samples, 0u);
+        const Clock::time_point batchStart = Clock::now();
         const BatchResult traced = engine.traceSamples(samplesDone, samples, control);
         if (!traced.complete)
             break;
+        plan.record(samples, secondsSince(batchStart));
         deviceTimed = deviceTimed && traced.deviceSeconds >= 0.0;
         deviceSeconds += traced.deviceSeconds;
         samplesDone += samples;

@@ -55,8 +55,10 @@ void rtnwCornellWalls(SceneBuilder& b, std::uint32_t group);
 /// The five book-3 walls (normals facing into the box, RTTROYL §12).
 void rtrolCornellWalls(SceneBuilder& b, std::uint32_t group);
 void cornellCamera(Scene& scene);
-/// A mesh placed by an instance: scaled so its height is `height`, centred on `base` in x and z, resting on
-/// y = base.y. Returns the new group.
+/// A mesh loaded by loadObj (so already in MeshFit.h's fit frame: floor centre at the origin, fit height 1)
+/// placed by an instance: scaled by `height`, rotated about y, its floor centre moved to `base`. The fit was
+/// done in double by the loader; this transform is well-conditioned for any mesh the loader accepted.
+/// Returns the new group.
 std::uint32_t placeMesh(SceneBuilder& b, std::uint32_t mesh, std::uint32_t material, const vec3& base, float height,
                         float rotateYDegrees = 0.0f);
 } // namespace rt::scenes

@@ -104,13 +104,10 @@ void cornellCamera(Scene& scene)
 std::uint32_t placeMesh(SceneBuilder& b, std::uint32_t mesh, std::uint32_t material, const vec3& base, float height,
                         float rotateYDegrees)
 {
-    const Aabb box = b.scene().meshes.at(mesh).bounds();
-    const float scale = height / std::max(box.extent().y, 1e-6f);
-    const vec3 anchor(box.centroid().x, box.min.y, box.centroid().z);
-    const std::uint32_t g = b.group(b.scene().meshes[mesh].name);
+    // No division by the mesh's own extent here: in float that re-creates what the loader's double fit avoided.
+    const std::uint32_t g = b.group(b.scene().meshes.at(mesh).name);
     b.mesh(g, mesh, material);
-    b.instance(g, Transform::translate(base) * Transform::rotateY(rotateYDegrees) * Transform::scale(vec3(scale)) *
-                      Transform::translate(-anchor));
+    b.instance(g, Transform::translate(base) * Transform::rotateY(rotateYDegrees) * Transform::scale(vec3(height)));
     return g;
 }
 } // namespace rt::scenes

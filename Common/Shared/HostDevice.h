@@ -281,6 +281,7 @@ struct TracePushConstants
 {
     uint firstSample; // index of the launch's first sample within the whole render (not the dispatch)
     uint sampleCount;
+    uint firstRow; // image row of the launch's row 0: a launch may cover a band of rows (launchPixel())
 };
 
 /// What the shaders need to find one TLAS instance's geometry, at instanceCustomIndex in InstanceRecord[].
@@ -379,7 +380,7 @@ static_assert(sizeof(RenderUniforms) == 176);
 static_assert(sizeof(LightBvhNode) == 48);
 static_assert(offsetof(RenderUniforms, background0) == 96);
 static_assert(offsetof(RenderUniforms, sampling) == 128);
-static_assert(sizeof(TracePushConstants) == 8);
+static_assert(sizeof(TracePushConstants) == 12);
 static_assert(sizeof(InstanceRecord) == 32);
 static_assert(sizeof(SphereRecord) == 32);
 static_assert(offsetof(SphereRecord, center1) == 16);

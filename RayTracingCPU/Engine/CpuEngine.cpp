@@ -106,6 +106,13 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
             vec3 sum = sums.at(x, y);
             for (std::uint32_t s = firstSample; s < firstSample + count; ++s)
             {
+                // Within the pixel too: one pixel of a huge-spp batch can hold seconds of paths (issue 13).
+                // A relaxed load of a flag nobody writes until Ctrl-C costs nothing beside a path.
+                if (control.cancelRequested())
+                {
+                    f.rowStates[y] = RowState::Abandoned;
+                    return;
+                }
                 Rng rng = sobol ? Rng::forSobolSample(seed, pixelIndex, s) : Rng::forSample(seed, pixelIndex, s);
                 const vec2 jitter = rng.next2D();
                 float fx, fy;
@@ -139,10 +146,11 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
         std::for_each(std::execution::seq, f.rowIndices.begin(), f.rowIndices.end(), row);
     else
         std::for_each(std::execution::par, f.rowIndices.begin(), f.rowIndices.end(), row);
-    if (std::find(f.rowStates.begin(), f.rowStates.end(), RowState::Skipped) == f.rowStates.end())
+    if (std::find_if(f.rowStates.begin(), f.rowStates.end(),
+                     [](RowState r) { return r != RowState::Traced; }) == f.rowStates.end())
         return {.complete = true}; // no clock of its own: the driver's host clock is the CPU's
     for (int y = 0; y < f.sum.height(); ++y)
-        if (f.rowStates[y] == RowState::Traced)
+        if (f.rowStates[y] != RowState::Skipped)
         {
             const std::size_t rowStart = std::size_t(y) * std::size_t(width);
             std::copy_n(f.before.data() + rowStart, width, sums.data() + rowStart);

@@ -17,7 +17,8 @@ namespace rt::cpu
 {
 /// Camera paths per batch: 2^20, half a second on one core of the CI kind for the books' Cornell boxes. Each
 /// batch ends with the parallel loop's tail (about 3 ms on 2 cores, docs/PERFORMANCE.md): fewer, larger
-/// batches cost less; progress and cancellation do not wait for a batch (they work per row).
+/// batches cost less; progress does not wait for a batch (it works per row), nor does cancellation (polled
+/// before every sample). The render driver also keeps a batch near kBatchTargetSeconds (Render/BatchPlan.h).
 inline constexpr std::uint64_t kPathsPerBatch = std::uint64_t(1) << 20;
 
 class CpuEngine final : public RenderEngine
@@ -34,8 +35,8 @@ public:
 
     std::uint64_t pathsPerBatch() const override { return kPathsPerBatch; }
     void beginFrame(const RenderSettings& settings) override;
-    /// Polls cancellation before each row and advances `control` after it; a cancelled batch puts back the
-    /// rows it had finished.
+    /// Polls cancellation before each camera sample and advances `control` after each row; a cancelled batch
+    /// puts back the rows it had started.
     BatchResult traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control) override;
     Image estimate(std::uint32_t samples) override;
     SampleTally tally() const override;
@@ -53,7 +54,8 @@ private:
     enum class RowState : std::uint8_t
     {
         Skipped, // the batch was cancelled before the row started
-        Traced
+        Traced,
+        Abandoned // cancelled part way through the row: put back like a traced row of a cancelled batch
     };
 
     struct Frame

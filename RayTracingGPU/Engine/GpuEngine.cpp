@@ -1,11 +1,16 @@
 #include "Engine/GpuEngine.h"
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
 #include "Assets/AssetPaths.h"
 #include "Engine/GpuContext.h"
 #include "Engine/RenderLimits.h"
 #include "Engine/RenderTarget.h"
 #include "Engine/SceneTracer.h"
 #include "Error.h"
+#include "Render/BatchPlan.h"
 #include "Vulkan/Barriers.h"
 #include "Vulkan/CommandBuffer.h"
 #include "Vulkan/QueryPool.h"
@@ -14,6 +19,16 @@ namespace rt::gpu
 {
 namespace
 {
+/// Work (rows x samples per pixel) of the next submit after one of `work` took `seconds`: about
+/// kBatchTargetSeconds' worth, growing at most 4x (BatchPlan's rule, in rows x samples), at least 1.
+/// Counted in rows x samples, not rows, so that a batch of more samples gets fewer rows per submit.
+std::uint64_t nextBandWork(std::uint64_t work, double seconds)
+{
+    const double grown = 4.0 * double(work);
+    const double ideal = seconds > 0.0 ? std::min(grown, double(work) * kBatchTargetSeconds / seconds) : grown;
+    return static_cast<std::uint64_t>(std::clamp(std::floor(ideal), 1.0, 1e15));
+}
+
 TargetLimits targetLimits(const vk::Device& device)
 {
     const vk::DeviceProperties& p = device.properties();
@@ -28,6 +43,8 @@ struct GpuEngine::Impl
     SceneTracer tracer;
     vk::QueryPool timestamps;
     std::uint64_t pathsPerBatch;
+    std::uint64_t bandWork = 1; // rows x samples per pixel of the next submit (nextBandWork)
+    std::uint32_t fixedBandRows = 0; // setBandRows: rows per submit; 0: by time
     std::unique_ptr<RenderTarget> target;
     TracingDescriptors descriptors; // the scene and the target; empty after setScene
     shader::RenderUniforms uniforms{}; // the frame's, as in the target's uniform buffer
@@ -61,19 +78,23 @@ struct GpuEngine::Impl
         descriptors = tracer.makeDescriptors(target->bindings());
     }
 
-    /// Records and runs one dispatch: `samples` samples per pixel from `firstSample` on.
+    /// Records and runs one dispatch: `samples` samples per pixel from `firstSample` on, over `rows` rows
+    /// from `firstRow` on; `snapshot` first copies the accumulation image to the readback buffer.
     /// Returns the GPU seconds of the launches (negative when the queue has no timestamps).
-    double dispatch(std::uint32_t firstSample, std::uint32_t samples)
+    double dispatch(std::uint32_t firstSample, std::uint32_t samples, std::uint32_t firstRow, std::uint32_t rows,
+                    bool snapshot)
     {
         const bool timed = device().properties().timestampValidBits > 0;
         vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) {
+            if (snapshot)
+                target->recordReadback(cmd);
             if (timed)
             {
                 vkCmdResetQueryPool(cmd, timestamps.Handle(), 0, 2);
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps.Handle(), 0);
             }
-            tracer.recordLaunch(cmd, {&descriptors.set, 1}, uniforms, firstSample, samples,
-                                {target->width(), target->height()});
+            tracer.recordLaunch(cmd, {&descriptors.set, 1}, uniforms, firstSample, samples, {target->width(), rows},
+                                nullptr, firstRow);
             if (timed)
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 1);
             vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
@@ -90,6 +111,11 @@ struct GpuEngine::Impl
     void readback()
     {
         vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) { target->recordReadback(cmd); });
+    }
+
+    void restore()
+    {
+        vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) { target->recordRestore(cmd); });
     }
 };
 
@@ -111,6 +137,8 @@ std::shared_ptr<const vk::ValidationLog> GpuEngine::validationLog() const
 }
 
 const SceneTracer& GpuEngine::tracer() const { return m_impl->tracer; }
+
+void GpuEngine::setBandRows(std::uint32_t rows) { m_impl->fixedBandRows = rows; }
 
 void GpuEngine::setSpecialize(bool specialize) { m_impl->tracer.setSpecialize(specialize); }
 
@@ -140,6 +168,7 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     e.tracer.pipeline().prepare(e.uniforms); // the compilation stays out of the render's time
     e.target->reset(e.uniforms);
     e.clear();
+    e.bandWork = std::max(1u, height / 16); // a sixteenth of the image at one sample, then by time
 }
 
 BatchResult GpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control)
@@ -147,9 +176,39 @@ BatchResult GpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
     Impl& e = *m_impl;
     if (!e.target || e.descriptors.set == VK_NULL_HANDLE)
         throw UsageError("GpuEngine::traceSamples called before beginFrame");
-    const double seconds = e.dispatch(firstSample, count);
-    control.advance(std::uint64_t(e.target->width()) * e.target->height() * count);
-    return {.complete = true, .deviceSeconds = seconds};
+    // One submit per band of rows, each about kBatchTargetSeconds: the render driver sizes batches by time
+    // but no smaller than one sample per pixel, which on lavapipe is seconds for a 200x200 image of a heavy
+    // scene. Cancellation is polled between bands; a batch cancelled part way is put back from the snapshot
+    // its first band took (the readback buffer), counters too, as the RenderEngine contract asks.
+    const std::uint32_t height = e.target->height();
+    const std::uint32_t width = e.target->width();
+    const shader::SampleCounters countersBefore = e.target->readCounters();
+    double deviceSeconds = 0.0;
+    bool deviceTimed = true;
+    for (std::uint32_t row = 0; row < height;)
+    {
+        if (control.cancelRequested())
+        {
+            if (row > 0)
+            {
+                e.restore();
+                e.target->writeCounters(countersBefore);
+            }
+            return {.complete = false};
+        }
+        const auto rows = static_cast<std::uint32_t>(
+            std::clamp<std::uint64_t>(e.fixedBandRows > 0 ? e.fixedBandRows : e.bandWork / count, 1, height - row));
+        const bool snapshot = row == 0 && rows < height; // only a batch of several bands can be cut
+        const auto start = std::chrono::steady_clock::now();
+        const double seconds = e.dispatch(firstSample, count, row, rows, snapshot);
+        const double hostSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        deviceTimed = deviceTimed && seconds >= 0.0;
+        deviceSeconds += seconds;
+        control.advance(std::uint64_t(width) * rows * count);
+        row += rows;
+        e.bandWork = nextBandWork(std::uint64_t(rows) * count, hostSeconds);
+    }
+    return {.complete = true, .deviceSeconds = deviceTimed ? deviceSeconds : -1.0};
 }
 
 Image GpuEngine::estimate(std::uint32_t samples)

@@ -1,7 +1,9 @@
 // The Vulkan ray-tracing engine: rt::RenderEngine on a hardware (or software: lavapipe) ray-tracing
 // pipeline. setScene uploads the scene and builds BLASes/TLAS; each batch of the render driver is one
 // dispatch into an RGBA32F accumulation image (each launch loops over its samples per pixel; one sample per
-// launch for scenes with moving spheres), read back for previews and at the end.
+// launch for scenes with moving spheres), read back for previews and at the end. A batch whose one
+// submission would be long is split into bands of rows (about kBatchTargetSeconds each), so that cancel,
+// polled between them, is never far away.
 // docs/GPU.md describes the mapping of the scene, the shader groups and the bindings.
 #pragma once
 
@@ -77,6 +79,9 @@ public:
     const SceneTracer& tracer() const;
     /// GpuEngineOptions::specialize, from the next frame on (pipelines compiled so far are kept).
     void setSpecialize(bool specialize);
+    /// Rows per submission of a batch (at least 1, at most the image's height); 0, the default: sized by
+    /// time, about kBatchTargetSeconds each. Tests fix it to cut a batch into known bands.
+    void setBandRows(std::uint32_t rows);
 
 private:
     struct Impl;

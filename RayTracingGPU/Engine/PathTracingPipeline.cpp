@@ -102,7 +102,8 @@ void PathTracingPipeline::prepare(const RenderUniforms& uniforms) const { compil
 
 void PathTracingPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                                         const RenderUniforms& uniforms, std::uint32_t firstSample,
-                                        std::uint32_t count, VkExtent2D extent, std::uint32_t samplesPerLaunch) const
+                                        std::uint32_t count, VkExtent2D extent, std::uint32_t samplesPerLaunch,
+                                        std::uint32_t firstRow) const
 {
     const Compiled& c = compiled(uniforms);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, c.pipeline.Handle());
@@ -111,7 +112,7 @@ void PathTracingPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDe
     for (std::uint32_t done = 0; done < count;)
     {
         const std::uint32_t samples = std::min(count - done, std::max(samplesPerLaunch, 1u));
-        const TracePushConstants push{firstSample + done, samples};
+        const TracePushConstants push{firstSample + done, samples, firstRow};
         vkCmdPushConstants(cmd, m_layout.Handle(), kRayTracingStages, 0, sizeof(push), &push);
         vkCmdTraceRaysKHR(cmd, &c.sbt.raygen(), &c.sbt.miss(), &c.sbt.hit(), &c.sbt.callable(), extent.width,
                           extent.height, 1);

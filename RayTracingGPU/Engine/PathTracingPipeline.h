@@ -77,10 +77,11 @@ public:
     /// `firstSample` on, at most `samplesPerLaunch` of them per launch (each thread loops over its samples:
     /// on an H100 that is 1.8x faster than one launch per sample), with `sets` bound from set 0, each launch
     /// ordered before whatever comes next, through the pipeline of `uniforms` (the contents of the uniform
-    /// buffer the sets name), compiled first if need be.
+    /// buffer the sets name), compiled first if need be. `extent` may be a band of the image's rows starting
+    /// at row `firstRow` (launchPixel() in Bindings.glsl).
     void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                       const shader::RenderUniforms& uniforms, std::uint32_t firstSample, std::uint32_t count,
-                      VkExtent2D extent, std::uint32_t samplesPerLaunch) const;
+                      VkExtent2D extent, std::uint32_t samplesPerLaunch, std::uint32_t firstRow = 0) const;
 
 private:
     struct Compiled

@@ -12,7 +12,8 @@ RenderTarget::RenderTarget(const vk::Device& device, std::uint32_t width, std::u
     : m_image(device, {width, height}, VK_FORMAT_R32G32B32A32_SFLOAT,
               VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT),
       m_view(device, m_image),
-      m_readback(device, kAccumulationBytesPerPixel * width * height, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+      m_readback(device, kAccumulationBytesPerPixel * width * height,
+                 VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                  vk::MemoryUse::Readback),
       m_uniforms(device, sizeof(shader::RenderUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::Upload),
       m_counters(device, sizeof(shader::SampleCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Readback)
@@ -50,6 +51,29 @@ void RenderTarget::recordReadback(VkCommandBuffer cmd) const
                             VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                             VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
                             VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+}
+
+void RenderTarget::recordRestore(VkCommandBuffer cmd) const
+{
+    // The launches' contents are discarded (UNDEFINED) once they finished writing; back to GENERAL after.
+    vk::imageBarrier(cmd, m_image.Handle(),
+                     {VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                      VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {width(), height(), 1};
+    vkCmdCopyBufferToImage(cmd, m_readback.Handle(), m_image.Handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                           &region);
+    vk::imageBarrier(cmd, m_image.Handle(),
+                     {VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                      VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT});
+}
+
+void RenderTarget::writeCounters(const shader::SampleCounters& counters)
+{
+    std::memcpy(m_counters.mapped(), &counters, sizeof(counters));
 }
 
 Image RenderTarget::readEstimate(std::uint32_t samples) const

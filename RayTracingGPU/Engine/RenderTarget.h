@@ -37,6 +37,11 @@ public:
     void recordClear(VkCommandBuffer cmd) const;
     /// Records the copy of the accumulation image into the readback buffer, after the ray-tracing writes.
     void recordReadback(VkCommandBuffer cmd) const;
+    /// Records the copy of the readback buffer back into the accumulation image: with recordReadback before
+    /// a batch, this puts back the image as the batch found it (a batch cancelled between its bands).
+    void recordRestore(VkCommandBuffer cmd) const;
+    /// Overwrites the NaN/Inf counters (host-visible; call while the device is idle).
+    void writeCounters(const shader::SampleCounters& counters);
     /// The estimate from the readback buffer: sum / `samples`, RGB (call after recordReadback completed).
     Image readEstimate(std::uint32_t samples) const;
 

@@ -53,9 +53,9 @@ shader::RenderUniforms SceneTracer::uniforms(const CameraDesc& camera, const Ren
 
 void SceneTracer::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                                const shader::RenderUniforms& uniforms, std::uint32_t firstSample, std::uint32_t count,
-                               VkExtent2D extent, const PathTracingPipeline* variant) const
+                               VkExtent2D extent, const PathTracingPipeline* variant, std::uint32_t firstRow) const
 {
     (variant ? *variant : m_pipeline)
-        .recordLaunch(cmd, sets, uniforms, firstSample, count, extent, gpuScene().samplesPerLaunch());
+        .recordLaunch(cmd, sets, uniforms, firstSample, count, extent, gpuScene().samplesPerLaunch(), firstRow);
 }
 } // namespace rt::gpu

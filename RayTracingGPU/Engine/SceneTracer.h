@@ -61,10 +61,11 @@ public:
     shader::RenderUniforms uniforms(const CameraDesc& camera, const RenderSettings& settings, VkExtent2D extent) const;
     /// Records `count` samples per pixel of `extent` from `firstSample` on (PathTracingPipeline::recordLaunch,
     /// with the scene's samples per launch), with `sets` bound from set 0, whose uniform buffer holds
-    /// `uniforms`, through `variant` (default: the radiance pipeline).
+    /// `uniforms`, through `variant` (default: the radiance pipeline). `extent` may be a band of rows from
+    /// `firstRow` on.
     void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                       const shader::RenderUniforms& uniforms, std::uint32_t firstSample, std::uint32_t count,
-                      VkExtent2D extent, const PathTracingPipeline* variant = nullptr) const;
+                      VkExtent2D extent, const PathTracingPipeline* variant = nullptr, std::uint32_t firstRow = 0) const;
 
 private:
     const GpuScene& gpuScene() const;

@@ -12,13 +12,15 @@ expect_error() { # name, pattern the error line must contain, args...
     local name=$1 pattern=$2
     shift 2
     local out="$work/out.png"
-    rm -f "$out" "$out.partial"
+    rm -f "$work"/out.*
     # Small defaults for the flags a case does not set itself (a repeated flag is an error of its own).
     local defaults=()
     [[ " $* " == *" --width "* ]] || defaults+=(--width 8)
     [[ " $* " == *" --spp "* ]] || defaults+=(--spp 1)
     [[ " $* " == *" --output "* ]] || defaults+=(--output "$out")
-    "$app" --headless --quiet "${defaults[@]}" "$@" >"$work/stdout" 2>"$work/stderr"
+    # Under a time limit: a check that waits for the render (an unwritable output found only after it, a
+    # huge request swapping) fails here instead of hanging the suite; `timeout` exits 124 with no error line.
+    timeout 60 "$app" --headless --quiet "${defaults[@]}" "$@" >"$work/stdout" 2>"$work/stderr"
     local status=$?
     local lines
     lines=$(grep -c . "$work/stderr")
@@ -54,5 +56,21 @@ expect_error "missing OBJ" "nothere.obj" --scene mesh-in-one-weekend --mesh "$wo
 expect_error "output folder missing" "does not exist" --output "$work/no/such/folder/out.png"
 expect_error "repeated flag" "--spp" --spp 2 --spp 3
 expect_error "output extension" ".png" --output "$work/out.jpg"
+
+# Every output path checked before the render, and all outputs written or none (issue 13). The renders are
+# long (2^31 - 1 spp), so a check made only after rendering times out; the PNG must not be left behind.
+long=(--spp 2147483647)
+mkdir -p "$work/d.json"
+expect_error "stats path is a folder" "is a folder" "${long[@]}" --stats "$work/d.json"
+rmdir "$work/d.json"
+expect_error "hdr in /proc" "/proc" "${long[@]}" --hdr /proc/out.pfm
+expect_error "output in /proc" "/proc" "${long[@]}" --output /proc/out.png
+expect_error "output folder is a file" "is not a folder" "${long[@]}" --output "$0/out.png"
+
+# Huge requests are refused with the figures before anything is built (issue 13); counts must be positive.
+expect_error "negative count" "--count" --scene many-lights --count -3
+expect_error "zero count" "--count" --scene white-spheres --count 0
+expect_error "count beyond memory" "available" --scene many-lights --count 2000000000
+expect_error "image beyond memory" "available" --width 65536
 
 exit $failures

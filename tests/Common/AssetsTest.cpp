@@ -2,6 +2,7 @@
 // malformed file is an AssetError whose one-line message names the file (seed-findings: "image texture
 // failures returned cyan silently").
 #include <gtest/gtest.h>
+#include <spdlog/fmt/fmt.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -10,6 +11,7 @@
 
 #include "Assets/AssetPaths.h"
 #include "Assets/ImageLoader.h"
+#include "Assets/MeshFit.h"
 #include "Assets/ObjLoader.h"
 #include "Error.h"
 #include "Image/ImageIO.h"
@@ -84,6 +86,100 @@ TEST(ObjLoader, AVertexIndexOutOfRangeIsRejected)
     const auto file = dir.write("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\n");
     const std::string message = assetErrorOf([&] { loadObj(file.string()); });
     expectNamesOnOneLine(message, file.string());
+}
+
+TEST(ObjLoader, AnIndexOutOfRangeIsQuotedAsWritten)
+{
+    // tinyobjloader resolves relative indices and subtracts one before it reports: the message must quote
+    // the file's own number and line (issue 13), whichever kind of index it is.
+    const test::ScratchDir dir;
+    const std::string vertices = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    const struct
+    {
+        const char* face;
+        const char* quoted;
+    } cases[] = {{"f 1 2 9\n", "vertex index 9 "},      {"f -1 -2 -7\n", "vertex index -7 "},
+                 {"f 1 2 0\n", "vertex index 0 "},      {"f 1/4 2/1 3/1\n", "texture coordinate index 4 "},
+                 {"f 1//2 2//1 3//1\n", "normal index 2 "}, {"f 1 2 x\n", "vertex index 'x'"}};
+    for (const auto& c : cases)
+    {
+        const auto file = dir.write("index.obj", vertices + "vt 0 0\nvn 0 0 1\n" + c.face);
+        const std::string message = assetErrorOf([&] { loadObj(file.string()); });
+        expectNamesOnOneLine(message, file.string());
+        EXPECT_NE(message.find("line 6"), std::string::npos) << message;
+        EXPECT_NE(message.find(c.quoted), std::string::npos) << c.face << " -> " << message;
+    }
+}
+
+TEST(ObjLoader, ACoordinateThatIsNotAFiniteNumberIsRejectedNamingTheLine)
+{
+    // tinyobjloader reads `nan`, `inf`, an overflowing 1e400 and a missing coordinate as 0 (issue 13).
+    const test::ScratchDir dir;
+    for (const char* line : {"v nan 0 0\n", "v 0 inf 0\n", "v 0 0 -infinity\n", "v 1e400 0 0\n", "v 0 0\n",
+                             "v 0 0 1x\n", "v 1 2 3 4 5\n", "vn 0 nan 1\n", "vn 0 1\n", "vt inf\n", "vt\n"})
+    {
+        const auto file = dir.write("nan.obj", std::string("v 0 0 0\n") + line + "v 1 0 0\nv 0 1 0\nf 1 3 4\n");
+        const std::string message = assetErrorOf([&] { loadObj(file.string()); });
+        expectNamesOnOneLine(message, file.string());
+        EXPECT_NE(message.find("line 2"), std::string::npos) << line << " -> " << message;
+    }
+    // What the format allows still loads: w, a vertex colour, 1- to 3-number texture coordinates, exponents.
+    const auto fine = dir.write("fine.obj", "v 0 0 0 1\nv 1e0 0 0 0.5 0.5 0.5\nv 0 +1. -0e5\nvt 0.5\nvt 0 1 0\n"
+                                            "vn 0 0 1\nf 1/1/1 2/2/1 3/1/1\n");
+    EXPECT_EQ(loadObj(fine.string()).triangleCount(), 1u);
+}
+
+/// An axis-aligned cube of edge `edge` centred at (c, c, c), as OBJ text with %.17g coordinates.
+std::string cubeObj(double c, double edge)
+{
+    std::string text;
+    for (int i = 0; i < 8; ++i)
+        text += fmt::format("v {:.17g} {:.17g} {:.17g}\n", c + ((i & 1) ? 0.5 : -0.5) * edge,
+                            c + ((i & 2) ? 0.5 : -0.5) * edge, c + ((i & 4) ? 0.5 : -0.5) * edge);
+    return text + "f 2 4 8 6\nf 1 5 7 3\nf 3 7 8 4\nf 1 2 6 5\nf 5 6 8 7\nf 1 3 4 2\n";
+}
+
+TEST(ObjLoader, FarHugeAndTinyMeshesLoadFittedToTheSamePlace)
+{
+    // Issue 13: a +-1e7 cube went black on the GPU, a unit cube at 1e7 landed in a different wrong place on
+    // each engine, a 0.5-wide one at 1e7 vanished (float rounds 1e7 +- 0.25 to whole numbers) and a 1e-7 cube
+    // was shrunk. Fitted in double, every one of them is the same unit cube standing on the origin, so both
+    // engines get the same float positions.
+    const test::ScratchDir dir;
+    const MeshData reference = loadObj(dir.write("unit.obj", cubeObj(0.0, 1.0)).string());
+    const Aabb box = reference.bounds();
+    EXPECT_EQ(box.min, vec3(-0.5f, 0.0f, -0.5f));
+    EXPECT_EQ(box.max, vec3(0.5f, 1.0f, 0.5f));
+    const struct
+    {
+        double centre, edge;
+    } cubes[] = {{0.0, 2e7}, {1e7, 1.0}, {1e7, 0.5}, {0.0, 1e-7}, {-3e-9, 2e-9}, {1e300, 1e300}};
+    for (const auto& c : cubes)
+    {
+        const MeshData mesh = loadObj(dir.write("cube.obj", cubeObj(c.centre, c.edge)).string());
+        ASSERT_EQ(mesh.positions.size(), reference.positions.size());
+        for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+            for (int k = 0; k < 3; ++k)
+                ASSERT_NEAR(mesh.positions[i][k], reference.positions[i][k], 1e-6f)
+                    << "cube of edge " << c.edge << " at " << c.centre << ", vertex " << i;
+    }
+}
+
+TEST(ObjLoader, AFlatMeshIsFittedByItsWidthAndAPointIsRefused)
+{
+    const test::ScratchDir dir;
+    const std::string faces = "f 1 2 3\nf 1 3 4\n";
+    const MeshData plate = loadObj(dir.write("plate.obj", "v -4 7 -2\nv 4 7 -2\nv 4 7 2\nv -4 7 2\n" + faces).string());
+    const Aabb box = plate.bounds();
+    EXPECT_EQ(box.min.y, 0.0f);
+    EXPECT_EQ(box.max.y, 0.0f);
+    // Height 0: the fit height is kFlatMeshRatio of the width, 8, so the plate is 1 / kFlatMeshRatio wide.
+    EXPECT_FLOAT_EQ(box.max.x - box.min.x, float(1.0 / kFlatMeshRatio));
+    EXPECT_FLOAT_EQ(box.max.z - box.min.z, float(0.5 / kFlatMeshRatio));
+    const auto point = dir.write("point.obj", "v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n");
+    const std::string message = assetErrorOf([&] { loadObj(point.string()); });
+    expectNamesOnOneLine(message, point.string());
+    EXPECT_NE(message.find("one point"), std::string::npos) << message;
 }
 
 TEST(ObjLoader, AMissingFileNamesThePath)

@@ -1,3 +1,5 @@
+// Render/BatchPlan: batches sized by time (issue 13: a fixed path count made one lavapipe dispatch 10 s, so
+// Ctrl-C waited that long), within the engine's path budget, one sample each for progressive sampling.
 #include <gtest/gtest.h>
 
 #include "Render/BatchPlan.h"
@@ -6,38 +8,57 @@ namespace rt
 {
 namespace
 {
+TEST(BatchPlan, StartsWithOneSampleAndGrowsAtMostFourfold)
+{
+    BatchPlan plan(1000, 64, std::uint64_t(1) << 20, false);
+    EXPECT_EQ(plan.next(0), 1u);
+    plan.record(1, 1e-6); // very fast: the time says 100000 samples, the growth limit 4
+    EXPECT_EQ(plan.next(1), 4u);
+    plan.record(4, 0.0); // unmeasured: grow
+    EXPECT_EQ(plan.next(5), 16u);
+}
+
+TEST(BatchPlan, SizesTheNextBatchToTheTargetTime)
+{
+    BatchPlan plan(1'000'000, 64, std::uint64_t(1) << 30, false, 0.1);
+    plan.record(100, 0.05); // 2000 samples per second: 200 in 0.1 s
+    EXPECT_EQ(plan.next(100), 200u);
+    plan.record(200, 2.0); // a slow batch: shrink at once, to 10
+    EXPECT_EQ(plan.next(300), 10u);
+    plan.record(10, 100.0); // slower than the target at one sample: still one
+    EXPECT_EQ(plan.next(310), 1u);
+}
+
 TEST(BatchPlan, FitsSamplesToThePathBudget)
 {
-    const BatchPlan plan = planBatches(100, 1000, 8000, false);
-    EXPECT_EQ(plan.samplesPerBatch, 8u);
-    EXPECT_EQ(plan.batchCount, 13u);
-    EXPECT_EQ(plan.samplesIn(0, 100), 8u);
-    EXPECT_EQ(plan.samplesIn(12, 100), 4u); // the remainder
-    std::uint32_t total = 0;
-    for (std::uint32_t b = 0; b < plan.batchCount; ++b)
-        total += plan.samplesIn(b, 100);
-    EXPECT_EQ(total, 100u);
+    BatchPlan plan(100, 1000, 8000, false);
+    EXPECT_EQ(plan.maxSamples(), 8u);
+    for (int i = 0; i < 10; ++i)
+        plan.record(plan.next(0), 1e-9);
+    EXPECT_EQ(plan.next(0), 8u);
+    EXPECT_EQ(plan.next(96), 4u); // the remainder
 }
 
 TEST(BatchPlan, AtLeastOneSamplePerBatchForHugeImages)
 {
-    const BatchPlan plan = planBatches(4, 100'000'000, std::uint64_t(1) << 16, false);
-    EXPECT_EQ(plan.samplesPerBatch, 1u);
-    EXPECT_EQ(plan.batchCount, 4u);
+    const BatchPlan plan(4, 100'000'000, std::uint64_t(1) << 16, false);
+    EXPECT_EQ(plan.maxSamples(), 1u);
+    EXPECT_EQ(plan.next(0), 1u);
 }
 
 TEST(BatchPlan, NeverMoreSamplesThanAskedFor)
 {
-    const BatchPlan plan = planBatches(3, 16, std::uint64_t(1) << 24, false);
-    EXPECT_EQ(plan.samplesPerBatch, 3u);
-    EXPECT_EQ(plan.batchCount, 1u);
+    BatchPlan plan(3, 16, std::uint64_t(1) << 24, false);
+    EXPECT_EQ(plan.maxSamples(), 3u);
+    plan.record(1, 1e-9);
+    EXPECT_EQ(plan.next(1), 2u);
 }
 
 TEST(BatchPlan, ProgressiveSamplingIsOneSamplePerBatch)
 {
-    const BatchPlan plan = planBatches(16, 64, std::uint64_t(1) << 24, true);
-    EXPECT_EQ(plan.samplesPerBatch, 1u);
-    EXPECT_EQ(plan.batchCount, 16u);
+    BatchPlan plan(16, 64, std::uint64_t(1) << 24, true);
+    plan.record(1, 1e-9);
+    EXPECT_EQ(plan.next(1), 1u);
 }
 } // namespace
 } // namespace rt

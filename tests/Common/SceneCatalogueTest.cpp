@@ -2,6 +2,7 @@
 // binary, unknown ids are reported with the list of known ones, and the light lists the samplers draw from
 // hold what shared/spec/scenes.md describes.
 #include <gtest/gtest.h>
+#include <spdlog/fmt/fmt.h>
 
 #include <set>
 #include <string>
@@ -9,6 +10,7 @@
 #include "Assets/AssetPaths.h"
 #include "Error.h"
 #include "Scenes/Catalogue.h"
+#include "Support/ScratchDir.h"
 
 namespace rt
 {
@@ -234,6 +236,46 @@ TEST(SceneCatalogue, OptionsReachTheScene)
     catch (const AssetError& e)
     {
         EXPECT_NE(std::string(e.what()).find("meshes/no-such-mesh.obj"), std::string::npos) << e.what();
+    }
+}
+
+/// World-space bounds of every instance of a group that holds a mesh loaded from `meshName`.
+Aabb placedMeshBounds(const Scene& scene, const std::string& meshName)
+{
+    Aabb box;
+    for (const InstanceDesc& inst : scene.instances)
+        for (const MeshRef& ref : scene.groups[inst.group].meshes)
+            if (scene.meshes[ref.mesh].name == meshName)
+                box.expand(inst.worldFromObject.bounds(scene.meshes[ref.mesh].bounds()));
+    return box;
+}
+
+TEST(SceneCatalogue, TheMeshScenesPlaceACubeAlikeWhereverAndHoweverLargeItWasModelled)
+{
+    // Issue 13: a cube of +-1e7, a unit cube at 1e7, a 0.5-wide cube at 1e7 and a 1e-7 cube must land where
+    // the unit cube at the origin lands, in every scene that takes --mesh (both engines build from this).
+    const test::ScratchDir dir;
+    const auto cube = [&](double centre, double edge) {
+        std::string text;
+        for (int i = 0; i < 8; ++i)
+            text += fmt::format("v {:.17g} {:.17g} {:.17g}\n", centre + ((i & 1) ? 0.5 : -0.5) * edge,
+                                centre + ((i & 2) ? 0.5 : -0.5) * edge, centre + ((i & 4) ? 0.5 : -0.5) * edge);
+        return dir.write("cube.obj", text + "f 2 4 8 6\nf 1 5 7 3\nf 3 7 8 4\nf 1 2 6 5\nf 5 6 8 7\nf 1 3 4 2\n").string();
+    };
+    for (const char* id : {"mesh-in-one-weekend", "cornell-box-and-mesh", "triangle-lights"})
+    {
+        const Aabb reference = placedMeshBounds(makeScene(id, {.meshPath = cube(0.0, 1.0)}), "cube.obj");
+        ASSERT_GT(reference.extent().y, 0.0f) << id;
+        const float tolerance = 1e-5f * maxComponent(reference.extent());
+        for (const auto& [centre, edge] : {std::pair{0.0, 2e7}, {1e7, 1.0}, {1e7, 0.5}, {0.0, 1e-7}})
+        {
+            const Aabb placed = placedMeshBounds(makeScene(id, {.meshPath = cube(centre, edge)}), "cube.obj");
+            for (int k = 0; k < 3; ++k)
+            {
+                EXPECT_NEAR(placed.min[k], reference.min[k], tolerance) << id << ": edge " << edge << " at " << centre;
+                EXPECT_NEAR(placed.max[k], reference.max[k], tolerance) << id << ": edge " << edge << " at " << centre;
+            }
+        }
     }
 }
 

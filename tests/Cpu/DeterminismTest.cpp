@@ -68,22 +68,24 @@ TEST(CpuControl, CancelStopsARenderEarlyAndSaysSo)
 }
 TEST(CpuControl, CancelInsideABatchKeepsTheFinishedBatchesOnly)
 {
-    // 256 spp per batch of 2^20 paths at 64x64: a cancel lands inside a batch, whose rows are put back.
+    // Batches are sized by time (Render/BatchPlan.h) and the engine polls the cancel before every sample: a
+    // cancel lands inside a batch, whose rows (finished or abandoned part way) are put back.
     const Scene scene = makeScene("rtrol-cornell-glass");
     cpu::CpuEngine engine(EngineKind::Multi);
     engine.setScene(scene);
     const RenderSettings s = smallSettings(64, 4096, 50, Estimator::Mixture);
     RenderControl control;
-    const std::uint64_t batchPaths = 64ull * 64 * 256;
-    std::thread canceller([&] { // halfway through the second batch, by the engine's per-row progress
-        while (control.done() < batchPaths + batchPaths / 2)
+    const std::uint64_t quarter = 64ull * 64 * 4096 / 4;
+    std::thread canceller([&] { // a quarter of the way, by the engine's per-row progress
+        while (control.done() < quarter)
             std::this_thread::sleep_for(std::chrono::microseconds(200));
         control.requestCancel();
     });
     const RenderResult cancelled = renderWithSettings(engine, s, control);
     canceller.join();
     ASSERT_TRUE(cancelled.stats.cancelled);
-    EXPECT_EQ(cancelled.stats.trueSpp, 256) << "the first batch only";
+    EXPECT_GT(cancelled.stats.trueSpp, 0);
+    EXPECT_LT(cancelled.stats.trueSpp, 4096);
     EXPECT_GE(control.done(), cancelled.stats.paths) << "progress counts the paths traced, abandoned rows too";
     RenderSettings same = s;
     same.spp = cancelled.stats.trueSpp;

@@ -1,0 +1,84 @@
+#include "IO/OutputSet.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <system_error>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "Error.h"
+
+#ifndef _WIN32
+#include <unistd.h>
+#endif
+
+namespace rt
+{
+namespace
+{
+std::filesystem::path pendingPath(const std::filesystem::path& path)
+{
+    std::filesystem::path tmp = path;
+    tmp += ".pending";
+    return tmp;
+}
+
+void removeQuietly(const std::filesystem::path& path)
+{
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+}
+} // namespace
+
+void checkWritable(const std::filesystem::path& path, const char* flag)
+{
+    const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    std::error_code ec;
+    if (!std::filesystem::is_directory(folder, ec))
+        throw OutputError(fmt::format("{} '{}': folder '{}' {}", flag, path.string(), folder.string(),
+                                      std::filesystem::exists(folder, ec) ? "is not a folder" : "does not exist"));
+    if (std::filesystem::is_directory(path, ec))
+        throw OutputError(fmt::format("{} '{}' is a folder, not a file", flag, path.string()));
+#ifndef _WIN32
+    std::string probe = (folder / ".rt-write-probe-XXXXXX").string();
+    const int fd = ::mkstemp(probe.data());
+    if (fd < 0)
+        throw OutputError(fmt::format("{} '{}': cannot create a file in folder '{}': {}", flag, path.string(),
+                                      folder.string(), std::strerror(errno)));
+    ::close(fd);
+    ::unlink(probe.c_str());
+#endif
+}
+
+void OutputSet::add(std::filesystem::path path, Writer write)
+{
+    m_entries.push_back({std::move(path), std::move(write)});
+}
+
+void OutputSet::commit()
+{
+    std::size_t written = 0; // entries whose temporary exists
+    std::size_t placed = 0; // entries renamed into place
+    try
+    {
+        for (; written < m_entries.size(); ++written)
+            m_entries[written].write(pendingPath(m_entries[written].path));
+        for (; placed < m_entries.size(); ++placed)
+        {
+            std::error_code ec;
+            std::filesystem::rename(pendingPath(m_entries[placed].path), m_entries[placed].path, ec);
+            if (ec)
+                throw OutputError(fmt::format("cannot write '{}': {}", m_entries[placed].path.string(), ec.message()));
+        }
+    }
+    catch (...)
+    {
+        for (std::size_t i = 0; i < placed; ++i)
+            removeQuietly(m_entries[i].path);
+        for (std::size_t i = placed; i < m_entries.size() && i <= written; ++i)
+            removeQuietly(pendingPath(m_entries[i].path));
+        throw;
+    }
+}
+} // namespace rt
