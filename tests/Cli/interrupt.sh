@@ -16,6 +16,10 @@ trap '[ -n "$pid" ] && kill -KILL "$pid" 2>/dev/null; rm -rf "$work"' EXIT
 # spdlog's lines go to stdout (for now), the progress line to stderr: look in both.
 started() { cat "$work/stdout" "$work/stderr" 2>/dev/null | grep -q "acceleration structures built"; }
 
+# One tiny render of the same settings first: lavapipe compiles the specialised pipeline in it (Mesa's disk
+# cache keeps it), so that no timed render below spends its settle time compiling, which cannot be interrupted.
+"$app" --headless --quiet --scene "$scene" --width 2 --aspect 2 --spp 1 --russian-roulette off >/dev/null 2>&1 || true
+
 # 2x1 pixels: 2^19 samples per pixel in one batch of a fixed path budget, seconds per row; 64x64: many rows;
 # 200x200: one sample per pixel is seconds on lavapipe, so the GPU engine must cut a batch into bands of rows.
 for size in ${SIZES:-2 64 200}; do
