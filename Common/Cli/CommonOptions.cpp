@@ -1,6 +1,7 @@
 #include "Cli/CommonOptions.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 #include <spdlog/fmt/fmt.h>
@@ -39,7 +40,17 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
     app.add_option("--spp", o.spp, "Samples per pixel (default: the scene's)");
     app.add_option("--depth", o.depth, "Ray segments per path at most, the camera ray included: 1 sees only the emitters (default: the scene's, usually 50)");
     app.add_option("--width", o.width, "Image width in pixels (default: the scene's)");
-    app.add_option("--aspect", o.aspect, "Aspect ratio width/height, e.g. 1 or 1.7778 (default: the scene's)");
+    app.add_option("--aspect", o.aspect, "Aspect ratio width/height, e.g. 1 or 1.7778 (default: the scene's)")
+        ->check([](const std::string& text) -> std::string {
+            // Checked as written, in double: a float reads 1e308 as inf, and the message would quote that.
+            char* end = nullptr;
+            const double value = std::strtod(text.c_str(), &end);
+            if (text.empty() || end != text.c_str() + text.size())
+                return fmt::format("must be a number (got '{}')", text);
+            if (!(value > 0.0) || !(value <= double(std::numeric_limits<float>::max())))
+                return fmt::format("must be a positive number a float can hold (got {})", text);
+            return {};
+        });
     app.add_option("--sampling", o.sampling,
                    "Pixel sampling: random (independent jitter), stratified (floor(sqrt(spp))^2 jittered strata), "
                    "accumulate (progressive 1-spp passes) or sobol (every 2D draw of a sample - pixel, lens, light "
@@ -138,9 +149,18 @@ RenderRequest resolveRequest(const CommonOptions& o, const Scene& scene)
 CommandLineRender resolveCommandLine(const CommonOptions& options)
 {
     const std::uint64_t available = availableMemoryBytes();
-    if (options.count)
+    const SceneInfo* info = findScene(options.scene);
+    const unsigned takes = info ? info->takes : kTakesNothing; // an unknown id fails in buildScene
+    if (options.count && (takes & kTakesCount) == 0u)
+        spdlog::warn("--count is ignored: scene {} has no object count (white-spheres and many-lights have one)",
+                     options.scene);
+    else if (options.count)
         checkMemory(renderBytes(0, std::uint64_t(*options.count)), fmt::format("--count {}", *options.count),
                     available);
+    if (!options.mesh.empty() && (takes & kTakesMesh) == 0u)
+        spdlog::warn("--mesh is ignored: scene {} loads no mesh (mesh-in-one-weekend, cornell-box-and-mesh and "
+                     "triangle-lights do)",
+                     options.scene);
     CommandLineRender r{.scene = buildScene(options.sceneRef())};
     r.request = resolveRequest(options, r.scene);
     const RenderSettings& s = r.request.settings;

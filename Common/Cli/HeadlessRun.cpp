@@ -11,6 +11,7 @@
 #include <thread>
 
 #include <spdlog/fmt/fmt.h>
+#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include "Error.h"
@@ -169,6 +170,10 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& r
 
 int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>& body)
 {
+    // Every log line (info, warnings, errors) on stderr: stdout carries only what a script reads (the summary
+    // line, the tables of --compare, --list-scenes).
+    spdlog::set_default_logger(spdlog::stderr_color_mt("rt"));
+    spdlog::set_pattern("%^%l%$: %v");
     try
     {
         app.parse(argc, argv);

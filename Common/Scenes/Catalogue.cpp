@@ -26,18 +26,18 @@ const std::vector<SceneInfo>& sceneCatalogue()
         {"rtrol-cornell-box", "Book 3 Cornell box", "RTTROYL §12", rtrolCornellBox},
         {"rtrol-cornell-mirror", "Book 3 Cornell box, aluminium box", "RTTROYL §12", rtrolCornellMirror},
         {"rtrol-cornell-glass", "Book 3 final: Cornell box with glass sphere", "RTTROYL §12.5", rtrolCornellGlass},
-        {"white-spheres", "Thesis: white spheres for BVH scaling", "thesis §4.3", whiteSpheres},
+        {"white-spheres", "Thesis: white spheres for BVH scaling", "thesis §4.3", whiteSpheres, kTakesCount},
         {"cornell-box-lights", "Thesis benchmark: Cornell box with 12 lights", "thesis §5.2", cornellBoxLights},
         {"cube-and-spheres", "Thesis GPU app: cube and spheres", "thesis B.2", cubeAndSpheres},
         {"planets-in-one-weekend", "Thesis GPU app: planets in one weekend", "thesis B.2", planetsInOneWeekend},
-        {"mesh-in-one-weekend", "Thesis GPU app: meshes in one weekend", "thesis B.2", meshInOneWeekend},
-        {"cornell-box-and-mesh", "Thesis GPU app: Cornell box and mesh", "thesis B.2", cornellBoxAndMesh},
+        {"mesh-in-one-weekend", "Thesis GPU app: meshes in one weekend", "thesis B.2", meshInOneWeekend, kTakesMesh},
+        {"cornell-box-and-mesh", "Thesis GPU app: Cornell box and mesh", "thesis B.2", cornellBoxAndMesh, kTakesMesh},
         {"furnace", "White furnace: Le / (1 - a) everywhere", "research notes §4.5", furnace},
         {"rect-light-closeup", "Rectangular light upright on a floor, seen near its foot", "scenes.md", rectLightCloseup},
-        {"many-lights", "cornell-box-lights' room with N small lights (--count, default 1000)", "scenes.md", manyLights},
+        {"many-lights", "cornell-box-lights' room with N small lights (--count, default 1000)", "scenes.md", manyLights, kTakesCount},
         {"sphere-light-closeup", "Sphere light just above a floor", "scenes.md", sphereLightCloseup},
         {"triangle-lights", "Cornell box lit by triangles: ceiling halves, a sliver, an emitting mesh",
-         "scenes.md", triangleLights},
+         "scenes.md", triangleLights, kTakesMesh},
     };
     return catalogue;
 }

@@ -18,12 +18,21 @@ struct SceneOptions
     bool operator==(const SceneOptions&) const = default;
 };
 
+/// Which SceneOptions a scene reads (bit flags); it ignores the others, and the command line says so.
+enum SceneTakes : unsigned
+{
+    kTakesNothing = 0u,
+    kTakesCount = 1u, // SceneOptions::count
+    kTakesMesh = 2u, // SceneOptions::meshPath
+};
+
 struct SceneInfo
 {
     std::string id;
     std::string title;
     std::string source; // book chapter or thesis section the scene comes from
     Scene (*build)(const SceneOptions&);
+    unsigned takes = kTakesNothing; // SceneTakes
 };
 
 const std::vector<SceneInfo>& sceneCatalogue();

@@ -39,6 +39,8 @@ expect_error() { # name, pattern the error line must contain, args...
 
 expect_error "unknown scene" "no-such-scene" --scene no-such-scene
 expect_error "zero spp" "samples per pixel" --spp 0
+expect_error "aspect overflowing a float" "got 1e308" --aspect 1e308
+expect_error "aspect not a number" "must be a number" --aspect 1.5x
 expect_error "negative width" "width" --width -5
 expect_error "unknown flag" "--frobnicate" --frobnicate
 expect_error "bad sampling" "sampling" --sampling halton

@@ -13,7 +13,7 @@ work=$(mktemp -d)
 pid=
 trap '[ -n "$pid" ] && kill -KILL "$pid" 2>/dev/null; rm -rf "$work"' EXIT
 
-# spdlog's lines go to stdout (for now), the progress line to stderr: look in both.
+# The log lines and the progress line go to stderr, the summary to stdout: look in both.
 started() { cat "$work/stdout" "$work/stderr" 2>/dev/null | grep -q "acceleration structures built"; }
 
 # One tiny render of the same settings first: lavapipe compiles the specialised pipeline in it (Mesa's disk

@@ -239,6 +239,22 @@ TEST(SceneCatalogue, OptionsReachTheScene)
     }
 }
 
+TEST(SceneCatalogue, SceneInfoSaysWhichOptionsEachSceneReads)
+{
+    // The command line warns that --count or --mesh is ignored from SceneInfo::takes: it must be the truth.
+    // A count of 7 and a one-triangle mesh change exactly the scenes that say they read them.
+    const test::ScratchDir dir;
+    const std::string triangle = dir.write("one.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").string();
+    for (const SceneInfo& info : sceneCatalogue())
+    {
+        const Scene plain = makeScene(info.id, {});
+        const Scene counted = makeScene(info.id, {.count = 7});
+        EXPECT_EQ(counted.primitiveCount() != plain.primitiveCount(), (info.takes & kTakesCount) != 0u) << info.id;
+        const Scene meshed = makeScene(info.id, {.meshPath = triangle});
+        EXPECT_EQ(meshed.primitiveCount() != plain.primitiveCount(), (info.takes & kTakesMesh) != 0u) << info.id;
+    }
+}
+
 /// World-space bounds of every instance of a group that holds a mesh loaded from `meshName`.
 Aabb placedMeshBounds(const Scene& scene, const std::string& meshName)
 {
