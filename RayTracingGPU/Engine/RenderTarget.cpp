@@ -12,6 +12,9 @@ RenderTarget::RenderTarget(const vk::Device& device, std::uint32_t width, std::u
     : m_image(device, {width, height}, VK_FORMAT_R32G32B32A32_SFLOAT,
               VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT),
       m_view(device, m_image),
+      m_compensation(device, {width, height}, VK_FORMAT_R32G32B32A32_SFLOAT,
+                     VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT),
+      m_compensationView(device, m_compensation),
       m_readback(device, kAccumulationBytesPerPixel * width * height, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                  vk::MemoryUse::Readback),
       m_uniforms(device, sizeof(shader::RenderUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::Upload),
@@ -34,11 +37,14 @@ shader::SampleCounters RenderTarget::readCounters() const
 
 void RenderTarget::recordClear(VkCommandBuffer cmd) const
 {
-    vk::imageBarrier(cmd, m_image.Handle(),
-                     {VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
     const VkClearColorValue zero{};
-    vkCmdClearColorImage(cmd, m_image.Handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &vk::kColorRange);
+    for (const VkImage image : {m_image.Handle(), m_compensation.Handle()})
+    {
+        vk::imageBarrier(cmd, image,
+                         {VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                          VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
+        vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &vk::kColorRange);
+    }
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 }

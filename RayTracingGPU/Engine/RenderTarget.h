@@ -1,5 +1,6 @@
 // What a render of one size writes: the RGBA32F accumulation image (rgb: sum of sample radiances, a: sample
-// count), a host-visible copy of it for readback, the per-render uniforms and the NaN/Inf counters.
+// count) and its Kahan compensation image, a host-visible copy of the sum for readback, the per-render
+// uniforms and the NaN/Inf counters.
 #pragma once
 
 #include <cstdint>
@@ -27,13 +28,16 @@ public:
     VkImageView view() const { return m_view.Handle(); }
     const vk::Buffer& uniforms() const { return m_uniforms; }
     const vk::Buffer& counters() const { return m_counters; }
-    TargetBindings bindings() const { return {m_view.Handle(), m_uniforms.Handle(), m_counters.Handle()}; }
+    TargetBindings bindings() const
+    {
+        return {m_view.Handle(), m_compensationView.Handle(), m_uniforms.Handle(), m_counters.Handle()};
+    }
 
     /// Writes the uniforms and zeroes the counters (host-visible memory; call while the device is idle).
     void reset(const shader::RenderUniforms& uniforms);
     shader::SampleCounters readCounters() const;
 
-    /// Records: UNDEFINED -> GENERAL and clear to zero.
+    /// Records: UNDEFINED -> GENERAL and clear to zero, both images.
     void recordClear(VkCommandBuffer cmd) const;
     /// Records the copy of the accumulation image into the readback buffer, after the ray-tracing writes.
     void recordReadback(VkCommandBuffer cmd) const;
@@ -43,6 +47,8 @@ public:
 private:
     vk::Image m_image;
     vk::ImageView m_view;
+    vk::Image m_compensation;
+    vk::ImageView m_compensationView;
     vk::Buffer m_readback;
     vk::Buffer m_uniforms;
     vk::Buffer m_counters;

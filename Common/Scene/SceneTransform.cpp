@@ -1,0 +1,92 @@
+#include "Scene/SceneTransform.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "Error.h"
+#include "Sampling/LightSampling.h"
+#include "Scene/EmitterLight.h"
+#include "Scene/Scene.h"
+
+namespace rt
+{
+namespace
+{
+bool finite(const vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+float maxAbs(const vec3& v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
+
+/// Largest |coordinate| of the scene's bounds and its camera, and the bounds' diagonal.
+struct Reach
+{
+    float farthest = 0.0f;
+    float size = 0.0f;
+};
+
+Reach reach(const Scene& s)
+{
+    const Aabb box = s.bounds();
+    return {std::max({maxAbs(box.min), maxAbs(box.max), maxAbs(s.camera.lookFrom)}), glm::length(box.extent())};
+}
+} // namespace
+
+void transformScene(Scene& s, const SceneTransform& t)
+{
+    if (!finite(t.translation))
+        throw UsageError(fmt::format("--translate-scene must be finite (got {},{},{})", t.translation.x,
+                                     t.translation.y, t.translation.z));
+    if (!(std::isfinite(t.scale) && t.scale > 0.0f))
+        throw UsageError(fmt::format("--scale-scene must be a finite number > 0 (got {})", t.scale));
+    if (t.isIdentity())
+        return;
+    const Reach before = reach(s);
+    const Transform w = t.worldFromScene();
+
+    for (InstanceDesc& inst : s.instances)
+        inst.worldFromObject = w * inst.worldFromObject;
+    s.camera.lookFrom = w.point(s.camera.lookFrom);
+    s.camera.lookAt = w.point(s.camera.lookAt);
+    s.camera.focusDistance *= t.scale; // the defocus angle stays: the lens grows with the focus distance
+    for (GroupDesc& g : s.groups)
+        for (MediumDesc& m : g.media)
+            m.density /= t.scale; // extinction per world unit: the same optical depth along a scaled path
+    for (TextureData& tex : s.textures)
+    {
+        if (tex.type == TextureType::Checker)
+            tex.scale *= t.scale; // cell size, world units
+        else if (tex.type == TextureType::Noise || tex.type == TextureType::Turbulence ||
+                 tex.type == TextureType::Marble)
+            tex.scale /= t.scale; // frequency, per world unit
+    }
+    for (std::size_t i = 0; i < s.lights.size(); ++i)
+    {
+        const LightSource& source = s.lightSources[i];
+        if (source.kind == LightSource::Kind::Target)
+        {
+            s.lights[i] = makeSphereLight(w.point(s.lights[i].p0), s.lights[i].radius * t.scale, kNoIndex);
+            continue;
+        }
+        const auto light = emitterLight(s, source);
+        if (!light)
+            throw UsageError(fmt::format("--scale-scene {}: an emitter of scene '{}' has no area left in float32",
+                                         t.scale, s.id));
+        s.lights[i] = *light;
+    }
+
+    // Refuse rather than render what float32 cannot: the limits are measured (SceneTransform.h).
+    const Reach after = reach(s);
+    if (!(std::isfinite(after.farthest) && after.size >= kMinSceneSize && after.size <= kMaxSceneSize))
+        throw UsageError(fmt::format("--scale-scene {} makes scene '{}' {:g} world units across; float32 renders "
+                                     "it right between {:g} and {:g}",
+                                     t.scale, s.id, after.size, kMinSceneSize, kMaxSceneSize));
+    const float allowed = std::max(kMaxOffsetToSize, before.farthest / before.size);
+    if (after.farthest > allowed * after.size)
+        throw UsageError(fmt::format(
+            "--translate-scene puts scene '{}' (size {:g}) {:g} world units from the origin, {:.0f} times its "
+            "size; float32 renders it right up to {:g} times its size (docs/ROBUSTNESS.md)",
+            s.id, after.size, after.farthest, after.farthest / after.size, allowed));
+    s.validate();
+}
+} // namespace rt
