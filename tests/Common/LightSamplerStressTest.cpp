@@ -120,9 +120,9 @@ TEST_P(StressLightSamplers, DegenerateLightsGiveFiniteSamplesWithPositivePdf)
 
 INSTANTIATE_TEST_SUITE_P(Samplers, StressLightSamplers,
                          ::testing::Values(LightSampler::Area, LightSampler::SolidAngle, LightSampler::Projected),
-                         [](const auto& info) {
-                             return std::string(info.param == LightSampler::Area         ? "Area"
-                                                : info.param == LightSampler::SolidAngle ? "SolidAngle"
+                         [](const auto& param) {
+                             return std::string(param.param == LightSampler::Area         ? "Area"
+                                                : param.param == LightSampler::SolidAngle ? "SolidAngle"
                                                                                          : "Projected");
                          });
 

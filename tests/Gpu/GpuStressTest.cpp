@@ -36,14 +36,14 @@ private:
 
 using GpuStressMovedCornell = GpuStressTest;
 
-// The CPU suite's transforms, on the book 3 box only (its quads and rotated boxes: the triangle BLASes and
+// The CPU suite's transforms (inside the measured limits), on the book 3 box only (its quads and rotated boxes: the triangle BLASes and
 // their TLAS instance transforms), 64 pixels at 8 spp.
 TEST_F(GpuStressMovedCornell, RendersTheSameImageMovedAndScaled)
 {
     const SceneTransform transforms[] = {{vec3(1e4f, -1e4f, 1e4f), 1.0f},
-                                         {vec3(1e5f, 0.0f, -1e5f), 1.0f},
                                          {vec3(0.0f), 1e-3f},
-                                         {vec3(0.0f), 1e3f}};
+                                         {vec3(0.0f), 1e3f},
+                                         {vec3(0.0f, 1e7f, 0.0f), 1e3f}};
     for (const SceneTransform& t : transforms)
     {
         const MovedSceneAgreement a = compareMovedScene(*sharedEngine(), "rtrol-cornell-box", t, 64, 8);
@@ -57,8 +57,8 @@ using GpuStressConvexUnderSky = GpuStressTest;
 
 TEST_F(GpuStressConvexUnderSky, SecondaryRaysNeverReHitTheShapeTheyLeave)
 {
-    const SceneTransform transforms[] = {{}, {vec3(100.0f, -60.0f, 80.0f), 1.0f}, {vec3(0.0f), 1e-3f},
-                                         {vec3(1e6f, 0.0f, 5e5f), 1e4f}};
+    const SceneTransform transforms[] = {{}, {vec3(50.0f, -30.0f, 40.0f), 1.0f}, {vec3(0.0f), 1e-3f},
+                                         {vec3(3e5f, 0.0f, 1e5f), 1e4f}};
     for (const ConvexShape shape : {ConvexShape::Sphere, ConvexShape::Quad, ConvexShape::Triangle})
         for (const SceneTransform& t : transforms)
         {
@@ -76,7 +76,7 @@ using GpuStressGround = GpuStressTest;
 
 TEST_F(GpuStressGround, HugeSphereIsLitAsThePlaneAtItsTop)
 {
-    const GroundPair g = renderGroundSphereAndPlane(*sharedEngine(), {});
+    const GroundPair g = renderGroundSphereAndPlane(*sharedEngine());
     const auto bad = disagreeingBlocks(g.plane, g.sphere, kMaxZ);
     EXPECT_TRUE(bad.empty()) << bad.size() << " blocks, first " << bad.front();
     EXPECT_EQ(g.sphere.nonFiniteSamples + g.plane.nonFiniteSamples, 0u);
@@ -111,8 +111,8 @@ TEST_P(GpuStressLongAccumulation, SumsDoNotDrift)
 }
 
 INSTANTIATE_TEST_SUITE_P(Short, GpuStressLongAccumulation, ::testing::Values(1u << 14),
-                         [](const auto& info) { return "Spp" + std::to_string(info.param); });
+                         [](const auto& param) { return "Spp" + std::to_string(param.param); });
 INSTANTIATE_TEST_SUITE_P(Heavy, GpuStressLongAccumulation, ::testing::Values(1u << 20),
-                         [](const auto& info) { return "Spp" + std::to_string(info.param); });
+                         [](const auto& param) { return "Spp" + std::to_string(param.param); });
 } // namespace
 } // namespace rt::gpu::test

@@ -23,12 +23,14 @@ std::uint64_t nonFinite(const RenderStats& stats) { return stats.nanSamples + st
 } // namespace
 
 MovedSceneAgreement compareMovedScene(RenderEngine& engine, const std::string& sceneId, const SceneTransform& t,
-                                      int width, int spp)
+                                      int width, int spp, FloatLimits limits)
 {
     const Scene original = makeScene(sceneId);
     SceneOptions options;
     options.transform = t;
-    const Scene moved = makeScene(sceneId, options);
+    Scene moved = limits == FloatLimits::Enforce ? makeScene(sceneId, options) : original;
+    if (limits == FloatLimits::Ignore)
+        transformScene(moved, t, limits);
     RenderSettings settings = settingsFor(original, width, spp, 10);
     settings.estimator = original.defaults.estimator;
     const BlockEstimate a = estimateBlocks(engine, original, settings);
@@ -72,7 +74,9 @@ ConvexUnderSky renderConvexUnderSky(RenderEngine& engine, ConvexShape shape, con
     s.camera.vfovDegrees = 45.0f;
     s.camera.focusDistance = 4.0f;
     Scene scene = b.finish();
-    transformScene(scene, t);
+    // The ray offsets must work at any scale, also below the size limit that whole rooms need (a shape
+    // scaled by 1e-3 is 3.5e-3 units across).
+    transformScene(scene, t, FloatLimits::Ignore);
 
     RenderSettings settings = settingsFor(scene, 32, 4, 6);
     settings.estimator = Estimator::BsdfOnly;
@@ -88,9 +92,8 @@ ConvexUnderSky renderConvexUnderSky(RenderEngine& engine, ConvexShape shape, con
     return out;
 }
 
-GroundPair renderGroundSphereAndPlane(RenderEngine& engine, const SceneTransform& t)
+GroundPair renderGroundSphereAndPlane(RenderEngine& engine, float kRadius)
 {
-    constexpr float kRadius = 1e6f;
     const auto build = [&](bool sphere) {
         SceneBuilder b(sphere ? "huge-ground-sphere" : "ground-plane");
         const std::uint32_t w = b.world();
@@ -98,16 +101,16 @@ GroundPair renderGroundSphereAndPlane(RenderEngine& engine, const SceneTransform
         if (sphere)
             b.sphere(w, {0.0f, -kRadius, 0.0f}, kRadius, grey);
         else
-            b.quad(w, {-200.0f, 0.0f, -200.0f}, {0.0f, 0.0f, 400.0f}, {400.0f, 0.0f, 0.0f}, grey); // faces +y
-        b.quad(w, {-0.5f, 2.0f, -0.5f}, {1.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f}, b.diffuseLight(vec3(5.0f))); // faces -y
+            b.quad(w, {-100.0f, 0.0f, -100.0f}, {0.0f, 0.0f, 200.0f}, {200.0f, 0.0f, 0.0f}, grey); // faces +y
+        // High above: the plane's own ray offset (1/65536 of its largest coordinate, 1.5e-3 here) lifts its
+        // shading points, which brightened it by 0.3 % under a light 2 units up; at 20 units, 0.015 %.
+        b.quad(w, {-3.0f, 20.0f, -3.0f}, {6.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 6.0f}, b.diffuseLight(vec3(5.0f))); // faces -y
         Scene& s = b.scene();
         s.camera.lookFrom = {0.0f, 1.5f, 3.0f};
         s.camera.lookAt = vec3(0.0f);
         s.camera.vfovDegrees = 50.0f;
         s.camera.focusDistance = 3.0f;
-        Scene scene = b.finish();
-        transformScene(scene, t);
-        return scene;
+        return b.finish();
     };
     const Scene sphere = build(true);
     const Scene plane = build(false);

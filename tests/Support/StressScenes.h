@@ -21,8 +21,10 @@ struct MovedSceneAgreement
     std::vector<std::string> disagreements;
     std::uint64_t nonFiniteSamples = 0;
 };
+/// With `limits` Enforce the moved scene comes from the catalogue (SceneOptions::transform, as the flags
+/// give it); Ignore moves it past the float32 limits, to show what they prevent.
 MovedSceneAgreement compareMovedScene(RenderEngine& engine, const std::string& sceneId, const SceneTransform& t,
-                                      int width, int spp);
+                                      int width, int spp, FloatLimits limits = FloatLimits::Enforce);
 
 enum class ConvexShape
 {
@@ -44,15 +46,15 @@ struct ConvexUnderSky
 };
 ConvexUnderSky renderConvexUnderSky(RenderEngine& engine, ConvexShape shape, const SceneTransform& t);
 
-/// A 1e6-radius ground sphere and a plane in its place (a large quad at its top), each under one small quad
-/// light, moved by `t`: the block estimates of the two, to compare (at the top, a sphere of that radius is
-/// a plane to within 1e-6 of a unit).
+/// A huge ground sphere and a plane in its place (a large quad at its top), each under one small quad light,
+/// seen from 1.5 units above: the block estimates of the two, to compare (within the 54 units in view, a
+/// sphere of radius 1e6 drops 1.5e-3 below its tangent plane).
 struct GroundPair
 {
     BlockEstimate sphere;
     BlockEstimate plane;
 };
-GroundPair renderGroundSphereAndPlane(RenderEngine& engine, const SceneTransform& t);
+GroundPair renderGroundSphereAndPlane(RenderEngine& engine, float radius = 1e6f);
 
 /// An emitting sphere of radius 1e-3 (radiance 1) `distance` units from the camera on a black background,
 /// seen directly (depth 1) at 32x32 with the sphere's diameter half the image height: pixels whose every
