@@ -1,5 +1,4 @@
-// Closest hit on a sphere: the point re-projected onto the sphere where that is the more exact (object space;
-// Shared/SphereHitPoint.h), the outward normal, the
+// Closest hit on a sphere: the point re-projected onto the sphere (object space), the outward normal, the
 // sphere uv of RTTNW §4.3 and the material.
 #version 460
 #extension GL_EXT_ray_tracing : require
@@ -10,7 +9,6 @@
 #include "Bindings.glsl"
 #include "Geometry/Sphere.glsl"
 #include "Payload.glsl"
-#include "Shared/SphereHitPoint.h"
 
 layout(location = kPayloadPath) rayPayloadInEXT HitPayload payload;
 hitAttributeEXT vec3 hitCenter;
@@ -21,7 +19,7 @@ void main()
     SphereRecord sphere = spheres[record.firstSphere + gl_PrimitiveID];
     vec3 objectPoint = gl_ObjectRayOriginEXT + gl_HitTEXT * gl_ObjectRayDirectionEXT;
     vec3 q = normalize(objectPoint - hitCenter); // outward unit normal, object space
-    objectPoint = sphereHitPoint(gl_ObjectRayOriginEXT, gl_ObjectRayDirectionEXT, gl_HitTEXT, hitCenter, sphere.radius, q);
+    objectPoint = hitCenter + sphere.radius * q;
 
     payload.position = gl_ObjectToWorldEXT * vec4(objectPoint, 1.0);
     payload.normal = normalize(q * mat3(gl_WorldToObjectEXT));

@@ -7,7 +7,6 @@
 #include "Math/RayOffset.h"
 #include "Sampling/LightPower.h"
 #include "Scene/LightLookup.h"
-#include "Shared/SphereHitPoint.h"
 
 namespace rt::cpu
 {
@@ -199,8 +198,7 @@ SurfaceInteraction CpuScene::interaction(const TraceRay& r, const HitRecord& hit
         const vec3 center = s.center0 + r.time * s.velocity;
         const vec3 n = glm::normalize(r.origin + hit.t * r.direction - center);
         si.n = n;
-        // Re-projected onto the surface (o + t d carries error ~ t |d|), unless the sphere is the larger number.
-        si.p = shader::sphereHitPoint(r.origin, r.direction, hit.t, center, s.radius, n);
+        si.p = center + s.radius * n; // re-projected onto the surface: o + t d carries error ~ t |d|
         si.material = s.material;
         si.light = m_sphereLights[ref.index()];
         if (m_materialNeedsUv[s.material]) // acos + atan2 only where an image texture reads them
