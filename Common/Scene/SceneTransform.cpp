@@ -93,7 +93,10 @@ void transformScene(Scene& s, const SceneTransform& t, FloatLimits limits)
         s.validate();
         return;
     }
-    if (!(std::isfinite(after.farthest) && after.size >= kMinSceneSize && after.size <= kMaxSceneSize))
+    // A scene already outside a limit as built may stay where it is, not go farther.
+    const bool tooSmall = after.size < kMinSceneSize && after.size < before.size;
+    const bool tooLarge = after.size > kMaxSceneSize && after.size > before.size;
+    if (!std::isfinite(after.farthest) || tooSmall || tooLarge)
         throw UsageError(fmt::format("--scale-scene {} makes scene '{}' {:g} world units across; float32 renders "
                                      "it right between {:g} and {:g}",
                                      t.scale, s.id, after.size, kMinSceneSize, kMaxSceneSize));
