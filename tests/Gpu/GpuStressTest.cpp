@@ -3,9 +3,13 @@
 // (labels gpu, stress); Heavy/GpuStress* are the long forms (labels gpu, stress, heavy).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "GpuTestEnvironment.h"
+#include "ParityKernel.h"
+#include "Support/DegenerateLights.h"
 #include "Support/StressScenes.h"
 
 namespace rt::gpu::test
@@ -94,6 +98,43 @@ TEST_F(GpuStressTinySphere, IsHitWhereverRaysAimAtIt)
         EXPECT_EQ(c.wrongOutside, 0) << "distance " << distance << ": pixels aimed outside that hit";
         EXPECT_EQ(c.nonFiniteSamples, 0u);
     }
+}
+
+using GpuStressLightSamplers = GpuStressTest;
+
+// The Common suite's degenerate lights (Support/DegenerateLights.h) through the GPU's compilation of
+// Shared/LightSampling.h (Shaders/Tests/Parity.comp, mode kLightSampling), every NEE sampler: each returned
+// sample finite with pdf > 0, and lightPdf of its direction finite and >= 0 (float32 on the GPU).
+TEST_F(GpuStressLightSamplers, DegenerateLightsGiveFiniteSamplesWithPositivePdf)
+{
+    Rng rng(2024);
+    for (const NamedLight& named : degenerateLights())
+        for (const std::uint32_t strategy : {0u, 1u, 2u}) // LightSampler Area, SolidAngle, Projected
+        {
+            std::vector<std::uint32_t> in;
+            for (const Receiver& r : receiversAround(named.light, rng))
+                for (int k = 0; k < 16; ++k)
+                {
+                    const vec2 u = uniform2(rng);
+                    in.insert(in.end(), {0u, bits(r.p.x), bits(r.p.y), bits(r.p.z), bits(u.x), bits(u.y), strategy,
+                                         bits(r.n.x), bits(r.n.y), bits(r.n.z)});
+                }
+            const std::vector<std::uint32_t> out = runParity(kLightSampling, in, {named.light});
+            const std::uint32_t words = kParityLayouts[kLightSampling].outputWords;
+            int returned = 0, bad = 0;
+            for (std::size_t i = 0; i + words <= out.size(); i += words)
+            {
+                if (out[i] == 0u)
+                    continue;
+                ++returned;
+                const float pdf = asFloat(out[i + 4]), pdfAgain = asFloat(out[i + 5]);
+                if (!finite(vec3At(out, i + 1)) || !std::isfinite(pdf) || !(pdf > 0.0f) || !std::isfinite(pdfAgain) ||
+                    pdfAgain < 0.0f)
+                    ++bad;
+            }
+            EXPECT_EQ(bad, 0) << named.name << ", sampler " << strategy << ": bad samples of " << returned;
+            EXPECT_GT(returned, 0) << named.name << ", sampler " << strategy;
+        }
 }
 
 // Random sampling, not 1-spp passes: a dispatch per pass would take hours on lavapipe; the shader adds the
