@@ -1,5 +1,6 @@
 #include "Cli/CommonOptions.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
@@ -21,6 +22,26 @@ bool onOffFlag(const std::string& flag, const std::string& value)
         return *on;
     throw UsageError(fmt::format("{} must be 'on' or 'off' (got '{}')", flag, value));
 }
+
+SceneTransform sceneTransform(const std::string& translate, const std::string& scale)
+{
+    SceneTransform t;
+    if (!translate.empty())
+    {
+        const auto xyz = parseRealTriple(translate);
+        if (!xyz || !std::isfinite((*xyz)[0]) || !std::isfinite((*xyz)[1]) || !std::isfinite((*xyz)[2]))
+            throw UsageError(fmt::format("--translate-scene must be three finite numbers X,Y,Z (got '{}')", translate));
+        t.translation = vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]);
+    }
+    if (!scale.empty())
+    {
+        const auto s = parseReal(scale);
+        if (!s || !std::isfinite(*s) || !(*s > 0.0f))
+            throw UsageError(fmt::format("--scale-scene must be a finite number > 0 (got '{}')", scale));
+        t.scale = *s;
+    }
+    return t;
+}
 } // namespace
 
 SceneRef CommonOptions::sceneRef() const
@@ -29,6 +50,7 @@ SceneRef CommonOptions::sceneRef() const
     ref.options.count = count.value_or(-1);
     if (!mesh.empty())
         ref.options.meshPath = mesh;
+    ref.options.transform = sceneTransform(translateScene, scaleScene);
     return ref;
 }
 
@@ -97,6 +119,13 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
                    "available (about 1 KB per object)")
         ->check(CLI::Range(1, std::numeric_limits<int>::max()));
     app.add_option("--mesh", o.mesh, "OBJ file for the mesh scenes (default: the Stanford bunny in Assets)");
+    app.add_option("--translate-scene", o.translateScene,
+                   "X,Y,Z: move the whole scene and its camera by this vector (world units). The image stays "
+                   "the same in exact arithmetic, so what changes is float32 precision far from the origin: a "
+                   "stress test. Refused past the distance float32 renders right (docs/ROBUSTNESS.md)");
+    app.add_option("--scale-scene", o.scaleScene,
+                   "S > 0: scale the whole scene and its camera by S about the origin (before --translate-scene); "
+                   "media densities scale by 1/S, so the image stays the same: a float32 precision stress test");
     app.add_flag("--quiet", o.quiet, "No progress line");
 }
 

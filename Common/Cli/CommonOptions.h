@@ -35,8 +35,11 @@ struct CommonOptions
     std::string stats;
     std::optional<int> count; // >= 1 (CLI11 checks); empty: the scene's default
     std::string mesh;
+    std::string translateScene; // "X,Y,Z", empty = none
+    std::string scaleScene; // a real > 0, empty = none
     bool quiet = false;
 
+    /// The scene the flags name; throws UsageError for a malformed --translate-scene or --scale-scene.
     SceneRef sceneRef() const;
 };
 

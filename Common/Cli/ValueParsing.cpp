@@ -21,6 +21,23 @@ std::optional<long long> parseInteger(std::string_view text) { return parseWhole
 
 std::optional<float> parseReal(std::string_view text) { return parseWhole<float>(text); }
 
+std::optional<std::array<float, 3>> parseRealTriple(std::string_view text)
+{
+    std::array<float, 3> out{};
+    for (std::size_t i = 0; i < 3; ++i)
+    {
+        const std::size_t comma = text.find(',');
+        if ((i < 2) != (comma != std::string_view::npos))
+            return std::nullopt; // too few or too many values
+        const auto value = parseReal(text.substr(0, comma));
+        if (!value)
+            return std::nullopt;
+        out[i] = *value;
+        text = i < 2 ? text.substr(comma + 1) : std::string_view();
+    }
+    return out;
+}
+
 std::optional<bool> parseOnOff(std::string_view text)
 {
     if (text == "on")

@@ -3,6 +3,7 @@
 // not such a value; callers turn that into their own error naming the flag.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string_view>
 #include <utility>
@@ -13,6 +14,8 @@ std::optional<long long> parseInteger(std::string_view text);
 /// Decimal or scientific notation (std::from_chars); "inf" and "nan" parse, callers that need a finite
 /// value check it.
 std::optional<float> parseReal(std::string_view text);
+/// "X,Y,Z": three parseReal values separated by commas, nothing else.
+std::optional<std::array<float, 3>> parseRealTriple(std::string_view text);
 /// "on" or "off".
 std::optional<bool> parseOnOff(std::string_view text);
 /// "WxH" with two integers, e.g. 1280x800.

@@ -9,7 +9,11 @@ nlohmann::json RenderStats::toJson() const
     nlohmann::json j;
     const RenderSettings& settings = request.settings;
     j["scene"] = request.scene.id;
-    j["scene_options"] = {{"count", request.scene.options.count}, {"mesh", request.scene.options.meshPath}};
+    const SceneTransform& moved = request.scene.options.transform;
+    j["scene_options"] = {{"count", request.scene.options.count},
+                          {"mesh", request.scene.options.meshPath},
+                          {"translate", {moved.translation.x, moved.translation.y, moved.translation.z}},
+                          {"scale", moved.scale}};
     j["engine"] = toString(engine);
     j["device"] = device;
     j["settings"] = {{"spp", settings.spp},

@@ -4,6 +4,7 @@
 
 #include "Assets/ImageLoader.h"
 #include "Error.h"
+#include "Scene/EmitterLight.h"
 #include "Sampling/LightSampling.h"
 
 namespace rt
@@ -191,34 +192,22 @@ Scene SceneBuilder::finish()
         lights.push_back(light);
         sources.push_back(source);
     };
+    const auto addIfLit = [&](LightSource source) {
+        if (const auto light = emitterLight(s, source))
+            add(*light, source);
+    };
     for (std::uint32_t i = 0; i < s.instances.size(); ++i)
     {
         const InstanceDesc& inst = s.instances[i];
         if (inst.group >= s.groups.size())
             break; // validate() reports it
         const GroupDesc& g = s.groups[inst.group];
-        const Transform& m = inst.worldFromObject;
         for (std::uint32_t k = 0; k < g.quads.size(); ++k)
-        {
-            const QuadDesc& q = g.quads[k];
-            const vec3 u = m.vector(q.u), v = m.vector(q.v);
-            if (s.isEmissive(q.material) && lengthSquared(glm::cross(u, v)) > 0.0f)
-                add(makeQuadLight(m.point(q.q), u, v, q.material),
-                    {.kind = LightSource::Kind::Quad, .instance = i, .primitive = k});
-        }
+            if (s.isEmissive(g.quads[k].material))
+                addIfLit({.kind = LightSource::Kind::Quad, .instance = i, .primitive = k});
         for (std::uint32_t k = 0; k < g.spheres.size(); ++k)
-        {
-            const SphereDesc& sp = g.spheres[k];
-            if (!s.isEmissive(sp.material))
-                continue;
-            const auto scale = m.uniformScale();
-            if (!scale || sp.moving())
-                throw SceneError(fmt::format("scene '{}': an emitting sphere in group '{}' is moving or "
-                                             "non-uniformly scaled; the light samplers need a static sphere",
-                                             s.id, g.name));
-            add(makeSphereLight(m.point(sp.center0), sp.radius * *scale, sp.material),
-                {.kind = LightSource::Kind::Sphere, .instance = i, .primitive = k});
-        }
+            if (s.isEmissive(g.spheres[k].material))
+                addIfLit({.kind = LightSource::Kind::Sphere, .instance = i, .primitive = k});
         for (std::uint32_t r = 0; r < g.meshes.size(); ++r)
         {
             const MeshRef& ref = g.meshes[r];
@@ -228,15 +217,8 @@ Scene SceneBuilder::finish()
             for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t)
             {
                 const std::uint32_t mat = mesh.triangleMaterials.empty() ? ref.material : mesh.triangleMaterials[t];
-                if (!s.isEmissive(mat))
-                    continue;
-                const vec3 a = m.point(mesh.positions[mesh.indices[3 * t]]);
-                const vec3 b = m.point(mesh.positions[mesh.indices[3 * t + 1]]);
-                const vec3 c = m.point(mesh.positions[mesh.indices[3 * t + 2]]);
-                // Zero area: no light to sample, and no engine reports a hit on it either.
-                if (lengthSquared(glm::cross(b - a, c - a)) > 0.0f)
-                    add(makeTriangleLight(a, b, c, mat),
-                        {.kind = LightSource::Kind::Triangle, .instance = i, .meshRef = r, .primitive = t});
+                if (s.isEmissive(mat))
+                    addIfLit({.kind = LightSource::Kind::Triangle, .instance = i, .meshRef = r, .primitive = t});
             }
         }
     }

@@ -60,6 +60,8 @@ Scene makeScene(const std::string& id, const SceneOptions& options)
             known += (known.empty() ? "" : ", ") + s.id;
         throw SceneError(fmt::format("unknown scene '{}' (known: {})", id, known));
     }
-    return info->build(options);
+    Scene scene = info->build(options);
+    transformScene(scene, options.transform);
+    return scene;
 }
 } // namespace rt

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "Scene/Scene.h"
+#include "Scene/SceneTransform.h"
 
 namespace rt
 {
@@ -14,6 +15,7 @@ struct SceneOptions
 {
     int count = -1; // number of objects for scenes that scale (white-spheres); < 0 = the scene's default
     std::string meshPath = "meshes/bunny.obj"; // OBJ for the mesh scenes (asset-relative or a real path)
+    SceneTransform transform; // the stress knobs --translate-scene, --scale-scene: applied after building
 
     bool operator==(const SceneOptions&) const = default;
 };
@@ -40,8 +42,8 @@ const std::vector<SceneInfo>& sceneCatalogue();
 /// nullptr if unknown.
 const SceneInfo* findScene(const std::string& id);
 
-/// Builds scene `id`. Throws SceneError naming the id and listing the known ones if unknown, AssetError if a
-/// texture or mesh it needs is missing.
+/// Builds scene `id`, moved by options.transform. Throws SceneError naming the id and listing the known ones
+/// if unknown, AssetError if a texture or mesh it needs is missing, UsageError if the transform is refused.
 Scene makeScene(const std::string& id, const SceneOptions& options = {});
 
 /// The white furnace: the camera inside a closed sphere of Lambertian albedo `albedo` that emits `radiance`

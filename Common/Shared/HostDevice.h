@@ -208,8 +208,9 @@ RT_CONST(uint, kBindingPrimitiveLights, 15u)  // uint[]: per primitive of a reco
 RT_CONST(uint, kBindingLightAlias, 16u)       // AliasEntry[]: the emitters' power alias table
 RT_CONST(uint, kBindingLightBvh, 17u)         // LightBvhNode[]: the emitters' light BVH
 RT_CONST(uint, kBindingLightBvhLeaves, 18u)   // uint[]: per emitter, its leaf in LightBvhNode[] (kNoIndex: no power)
-RT_CONST(uint, kBindingImages, 19u)           // sampler2D[]: the scene's images, 8-bit sRGB
-RT_CONST(uint, kBindingCount, 20u)
+RT_CONST(uint, kBindingCompensation, 19u)     // rgba32f storage image: rgb the Kahan compensation of the sum
+RT_CONST(uint, kBindingImages, 20u)           // sampler2D[]: the scene's images, 8-bit sRGB
+RT_CONST(uint, kBindingCount, 21u)
 
 // Shader binding table: two miss records (traceRayEXT's missIndex; each with its payload location), and per
 // TLAS instance a hit-group record offset.

@@ -80,6 +80,9 @@ inline double clamp(double x, double lo, double hi) { return min(max(x, lo), hi)
 #define RT_PASS(name) name, // passes an RT_ARRAY on to another such function
 #define RT_SHADER_NAMESPACE_BEGIN namespace rt::shader {
 #define RT_SHADER_NAMESPACE_END }
+// Exact-error arithmetic (Shared/SphereQuadratic.h) needs every operation rounded as written: C++ builds with
+// -ffp-contract=off project-wide; GLSL marks such variables `precise` (no fused multiply-add, no reordering).
+#define RT_PRECISE
 #else
 #include "Math/Constants.glsl"
 
@@ -96,6 +99,7 @@ float signNotZero(float x)
 #define RT_PASS(name)
 #define RT_SHADER_NAMESPACE_BEGIN
 #define RT_SHADER_NAMESPACE_END
+#define RT_PRECISE precise
 #endif
 
 #endif

@@ -62,8 +62,10 @@ void CpuEngine::beginFrame(const RenderSettings& settings)
                           .camera = Camera(m_scene->source().camera, width, height),
                           .options = {settings.depth, settings.estimator, settings.lightSampler, settings.lightSelection,
                                     settings.russianRoulette, settings.unidirectionalLight},
-                          .sum = Image(width, height),
-                          .before = Image(width, height),
+                          .sum = std::vector<dvec3>(std::size_t(width) * height, dvec3(0.0)),
+                          .before = std::vector<dvec3>(std::size_t(width) * height, dvec3(0.0)),
+                          .width = width,
+                          .height = height,
                           .rows = std::vector<RowTally>(height),
                           .rowsBefore = std::vector<RowTally>(height),
                           .rowStates = std::vector<RowState>(height),
@@ -76,7 +78,7 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
     if (!m_frame)
         throw UsageError("CpuEngine::traceSamples called before beginFrame");
     Frame& f = *m_frame;
-    const int width = f.sum.width();
+    const int width = f.width;
     const bool stratified = f.settings.sampling == PixelSampling::Stratified;
     const bool sobol = f.settings.sampling == PixelSampling::Sobol;
     const std::uint32_t strata = static_cast<std::uint32_t>(f.settings.strata());
@@ -86,7 +88,7 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
     const Camera camera = f.camera;
     const PathOptions options = f.options;
     const CpuScene& scene = *m_scene;
-    Image& sums = f.sum;
+    std::vector<dvec3>& sums = f.sum;
     std::vector<RowTally>& tallies = f.rows;
     const auto row = [&](int y) {
         if (control.cancelRequested())
@@ -103,7 +105,7 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
         for (int x = 0; x < width; ++x)
         {
             const auto pixelIndex = static_cast<std::uint32_t>(y * width + x);
-            vec3 sum = sums.at(x, y);
+            dvec3 sum = sums[rowStart + std::size_t(x)];
             for (std::uint32_t s = firstSample; s < firstSample + count; ++s)
             {
                 // Within the pixel too: one pixel of a huge-spp batch can hold seconds of paths (issue 13).
@@ -132,13 +134,13 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
                 const float time = rng.nextFloat();
                 const vec3 l = tracePath(scene, options, camera.generateRay(fx, fy, lens, time), rng, t.segments);
                 if (isFinite(l))
-                    sum += l;
+                    sum += dvec3(l);
                 else if (std::isnan(l.x) || std::isnan(l.y) || std::isnan(l.z))
                     ++t.nan;
                 else
                     ++t.inf;
             }
-            sums.at(x, y) = sum;
+            sums[rowStart + std::size_t(x)] = sum;
         }
         control.advance(std::uint64_t(width) * count);
     };
@@ -149,8 +151,8 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
     if (std::find_if(f.rowStates.begin(), f.rowStates.end(),
                      [](RowState r) { return r != RowState::Traced; }) == f.rowStates.end())
         return {.complete = true}; // no clock of its own: the driver's host clock is the CPU's
-    for (int y = 0; y < f.sum.height(); ++y)
-        if (f.rowStates[y] != RowState::Skipped)
+    for (int y = 0; y < f.height; ++y)
+        if (f.rowStates[y] != RowState::Skipped) // traced, or abandoned part way: back to the batch's start
         {
             const std::size_t rowStart = std::size_t(y) * std::size_t(width);
             std::copy_n(f.before.data() + rowStart, width, sums.data() + rowStart);
@@ -163,9 +165,9 @@ Image CpuEngine::estimate(std::uint32_t samples)
 {
     if (!m_frame || samples == 0)
         throw UsageError("CpuEngine::estimate needs a frame with samples");
-    Image image = m_frame->sum;
-    for (vec3& v : image.pixels())
-        v /= float(samples);
+    Image image(m_frame->width, m_frame->height);
+    for (std::size_t i = 0; i < m_frame->sum.size(); ++i)
+        image.pixels()[i] = vec3(m_frame->sum[i] / double(samples));
     return image;
 }
 

@@ -63,8 +63,12 @@ private:
         RenderSettings settings;
         Camera camera;
         PathOptions options;
-        Image sum; // radiance sum of every sample traced so far
-        Image before; // each row of `sum` as the current batch found it: a cancelled batch puts it back
+        // Radiance sum of every sample traced so far, row-major, in double: a float sum of 2^20 samples of 0.1
+        // drifts by 1 % (each addition rounds to the ulp of the sum; tests/Cpu/StressTest.cpp's long run).
+        std::vector<dvec3> sum;
+        std::vector<dvec3> before; // each row of `sum` as the current batch found it: a cancelled batch puts it back
+        int width = 0;
+        int height = 0;
         std::vector<RowTally> rows;
         std::vector<RowTally> rowsBefore;
         std::vector<RowState> rowStates;

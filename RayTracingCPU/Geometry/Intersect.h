@@ -7,6 +7,7 @@
 #include "Geometry/Primitives.h"
 #include "Geometry/TraceRay.h"
 #include "Random/Pcg.h"
+#include "Shared/SphereQuadratic.h"
 
 namespace rt::cpu
 {
@@ -28,7 +29,7 @@ inline bool intersectSphere(const SphereRec& s, const TraceRay& r, float tMin, H
     const float disc = r2 - glm::dot(l, l); // discriminant / a
     if (disc < 0.0f)
         return false;
-    const float c = glm::dot(f, f) - r2;
+    const float c = shader::sphereQuadraticC(f, s.radius); // exact where it cancels: a huge sphere's surface
     const float a = r.directionLength2;
     const float q = -(b + std::copysign(std::sqrt(a * disc), b));
     float t0 = c / q;

@@ -11,6 +11,7 @@ void setLane(SpherePacket& p, int lane, const SphereRec& s, std::uint32_t prim)
     p.vy[lane] = s.velocity.y;
     p.vz[lane] = s.velocity.z;
     p.radius2[lane] = s.radius * s.radius;
+    p.radius[lane] = s.radius;
     p.prim[lane] = prim;
 }
 

@@ -18,6 +18,7 @@ struct alignas(32) SpherePacket
     float cx[kLanes], cy[kLanes], cz[kLanes]; // centre at time 0
     float vx[kLanes], vy[kLanes], vz[kLanes]; // velocity over the shutter
     float radius2[kLanes];
+    float radius[kLanes]; // for c's exact path (Shared/SphereQuadratic.h)
     std::uint32_t prim[kLanes]; // PrimRef bits
 };
 
@@ -90,12 +91,22 @@ inline bool intersectPacket(const SpherePacket& p, const TraceRay& r, float tMin
     const Lanes valid = disc >= Lanes(0.0f);
     if (movemask(valid) == 0)
         return false;
-    const Lanes c = fx * fx + fy * fy + fz * fz - r2;
+    const Lanes ff = fx * fx + fy * fy + fz * fz;
+    Lanes c = ff - r2;
+    // Where c cancels (near a huge sphere's surface), the lanes take sphereQuadraticC's exact path one by one:
+    // rare, and c is then right to a few ulps instead of a few %.
+    if (const int cancelled = movemask(valid & (abs(c) < Lanes(shader::kSphereCancellation) * (ff + r2))))
+    {
+        alignas(32) float exact[kLanes];
+        for (int i = 0; i < kLanes; ++i)
+            exact[i] = (cancelled >> i) & 1 ? shader::sphereQuadraticC(vec3(fx[i], fy[i], fz[i]), p.radius[i]) : c[i];
+        c = Lanes::load(exact);
+    }
     const Lanes q = -(b + copysign(sqrt(max(disc, Lanes(0.0f)) * Lanes(r.directionLength2)), b));
     const Lanes t0 = c / q;
     const Lanes t1 = q * Lanes(r.invDirectionLength2);
     const Lanes tNear = min(t0, t1), tFar = max(t0, t1);
-    const Lanes rootError = Lanes(kSphereRootError) * (fx * fx + fy * fy + fz * fz + r2) / abs(q); // see intersectSphere
+    const Lanes rootError = Lanes(kSphereRootError) * (ff + r2) / abs(q); // see intersectSphere
     const Lanes lo = max(Lanes(tMin), rootError), hi(hit.t);
     const Lanes t = select(tNear > lo, tNear, tFar);
     const Lanes mask = valid & (t > lo) & (t < hi);

@@ -35,6 +35,7 @@ std::vector<vk::DescriptorBinding> bindingsOf(std::uint32_t maxImages)
     };
     add(kBindingTlas, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR);
     add(kBindingAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
+    add(kBindingCompensation, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
     add(kBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
     for (std::uint32_t binding : {kBindingMaterials, kBindingTextures, kBindingLights, kBindingPerlin,
                                   kBindingInstances, kBindingPositions, kBindingUvs, kBindingTriangles,
@@ -133,6 +134,7 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
     tlasInfo.accelerationStructureCount = 1;
     tlasInfo.pAccelerationStructures = &tlas;
     const VkDescriptorImageInfo accumulation{VK_NULL_HANDLE, target.accumulation, VK_IMAGE_LAYOUT_GENERAL};
+    const VkDescriptorImageInfo compensation{VK_NULL_HANDLE, target.compensation, VK_IMAGE_LAYOUT_GENERAL};
 
     const GpuScene::Buffers& buffers = scene.buffers();
     const std::pair<std::uint32_t, const vk::Buffer*> storage[] = {
@@ -163,7 +165,7 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
         imageInfos.push_back({scene.sampler(), view.Handle(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
 
     std::vector<VkWriteDescriptorSet> writes;
-    writes.reserve(std::size(storage) + 5); // write() hands out references into it
+    writes.reserve(std::size(storage) + 6); // write() hands out references into it
     const auto write = [&](std::uint32_t binding, VkDescriptorType type, std::uint32_t count) -> VkWriteDescriptorSet& {
         VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         w.dstSet = set;
@@ -175,6 +177,7 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
     };
     write(kBindingTlas, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1).pNext = &tlasInfo;
     write(kBindingAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1).pImageInfo = &accumulation;
+    write(kBindingCompensation, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1).pImageInfo = &compensation;
     write(kBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1).pBufferInfo = &bufferInfos[0];
     write(kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[1];
     for (std::size_t i = 0; i < std::size(storage); ++i)

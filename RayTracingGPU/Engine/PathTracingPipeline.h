@@ -24,10 +24,12 @@ namespace rt::gpu
 {
 class GpuScene;
 
-/// Where a render writes: bound to kBindingAccumulation, kBindingUniforms and kBindingCounters.
+/// Where a render writes: bound to kBindingAccumulation, kBindingCompensation, kBindingUniforms and
+/// kBindingCounters.
 struct TargetBindings
 {
     VkImageView accumulation = VK_NULL_HANDLE; // rgba32f storage image in GENERAL layout
+    VkImageView compensation = VK_NULL_HANDLE; // rgba32f storage image in GENERAL layout, the sum's Kahan term
     VkBuffer uniforms = VK_NULL_HANDLE; // RenderUniforms
     VkBuffer counters = VK_NULL_HANDLE; // SampleCounters
 };

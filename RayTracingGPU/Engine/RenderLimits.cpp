@@ -11,7 +11,7 @@ std::string gigabytes(std::uint64_t bytes) { return fmt::format("{:.1f} GB", dou
 
 std::uint64_t renderTargetBytes(std::uint32_t width, std::uint32_t height)
 {
-    return kAccumulationBytesPerPixel * std::uint64_t(width) * height;
+    return 2 * kAccumulationBytesPerPixel * std::uint64_t(width) * height; // the sum and its compensation
 }
 
 std::optional<std::string> checkTargetLimits(std::uint32_t width, std::uint32_t height, const TargetLimits& limits)
@@ -26,9 +26,10 @@ std::optional<std::string> checkTargetLimits(std::uint32_t width, std::uint32_t 
     if (needed > limits.deviceLocalBytes)
         add(fmt::format("{} needs {} of device memory; device '{}' has {}", image, gigabytes(needed),
                         limits.deviceName, gigabytes(limits.deviceLocalBytes)));
-    else if (needed > limits.maxAllocationBytes) // fits the heap, but not in one allocation
+    else if (const std::uint64_t oneImage = kAccumulationBytesPerPixel * std::uint64_t(width) * height;
+             oneImage > limits.maxAllocationBytes) // fits the heap, but an image is one allocation
         add(fmt::format("{} needs one allocation of {}; maxMemoryAllocationSize of device '{}' is {}", image,
-                        gigabytes(needed), limits.deviceName, gigabytes(limits.maxAllocationBytes)));
+                        gigabytes(oneImage), limits.deviceName, gigabytes(limits.maxAllocationBytes)));
     if (std::uint64_t(width) * height > limits.maxRayDispatchInvocations)
         add(fmt::format("{} needs {} ray-generation invocations per trace; maxRayDispatchInvocationCount of "
                         "device '{}' is {}",

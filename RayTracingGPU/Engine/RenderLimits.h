@@ -21,7 +21,8 @@ struct TargetLimits
 /// Bytes per pixel of the RGBA32F accumulation image, and of its readback buffer.
 inline constexpr std::uint64_t kAccumulationBytesPerPixel = 16;
 
-/// The device-local memory a width x height render needs: its accumulation image. (The readback copy is
+/// The device-local memory a width x height render needs: its accumulation image and the image of its Kahan
+/// compensation, of the same format. (The readback copy is
 /// host-visible memory, which discrete GPUs take from system RAM.)
 std::uint64_t renderTargetBytes(std::uint32_t width, std::uint32_t height);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <utility>
 
 #include "Engine/RenderLimits.h"
 #include "Vulkan/Barriers.h"
@@ -12,9 +13,15 @@ RenderTarget::RenderTarget(const vk::Device& device, std::uint32_t width, std::u
     : m_image(device, {width, height}, VK_FORMAT_R32G32B32A32_SFLOAT,
               VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT),
       m_view(device, m_image),
+      m_compensation(device, {width, height}, VK_FORMAT_R32G32B32A32_SFLOAT,
+                     VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT),
+      m_compensationView(device, m_compensation),
       m_readback(device, kAccumulationBytesPerPixel * width * height,
                  VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                  vk::MemoryUse::Readback),
+      m_compensationSnapshot(device, kAccumulationBytesPerPixel * width * height,
+                             VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                             vk::MemoryUse::Readback),
       m_uniforms(device, sizeof(shader::RenderUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::Upload),
       m_counters(device, sizeof(shader::SampleCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Readback)
 {
@@ -35,40 +42,49 @@ shader::SampleCounters RenderTarget::readCounters() const
 
 void RenderTarget::recordClear(VkCommandBuffer cmd) const
 {
-    vk::imageBarrier(cmd, m_image.Handle(),
-                     {VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
     const VkClearColorValue zero{};
-    vkCmdClearColorImage(cmd, m_image.Handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &vk::kColorRange);
+    for (const VkImage image : {m_image.Handle(), m_compensation.Handle()})
+    {
+        vk::imageBarrier(cmd, image,
+                         {VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                          VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
+        vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &vk::kColorRange);
+    }
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 }
 
 void RenderTarget::recordReadback(VkCommandBuffer cmd) const
 {
-    // Back to GENERAL afterwards for the next dispatch's storage-image writes.
-    vk::recordImageReadback(cmd, m_image.Handle(), m_image.extent(), m_readback.Handle(), VK_IMAGE_LAYOUT_GENERAL,
-                            VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
-                            VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
-                            VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    // Back to GENERAL afterwards for the next dispatch's storage-image writes. The compensation goes along:
+    // a restore must put back the pair, or the sums after it would differ from an uncancelled render's.
+    for (const auto& [image, buffer] : {std::pair{m_image.Handle(), m_readback.Handle()},
+                                        std::pair{m_compensation.Handle(), m_compensationSnapshot.Handle()}})
+        vk::recordImageReadback(cmd, image, m_image.extent(), buffer, VK_IMAGE_LAYOUT_GENERAL,
+                                VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
+                                VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 }
 
 void RenderTarget::recordRestore(VkCommandBuffer cmd) const
 {
     // The launches' contents are discarded (UNDEFINED) once they finished writing; back to GENERAL after.
-    vk::imageBarrier(cmd, m_image.Handle(),
-                     {VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                      VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {width(), height(), 1};
-    vkCmdCopyBufferToImage(cmd, m_readback.Handle(), m_image.Handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                           &region);
-    vk::imageBarrier(cmd, m_image.Handle(),
-                     {VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                      VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
-                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT});
+    for (const auto& [image, buffer] : {std::pair{m_image.Handle(), m_readback.Handle()},
+                                        std::pair{m_compensation.Handle(), m_compensationSnapshot.Handle()}})
+    {
+        vk::imageBarrier(cmd, image,
+                         {VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                          VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {width(), height(), 1};
+        vkCmdCopyBufferToImage(cmd, buffer, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+        vk::imageBarrier(cmd, image,
+                         {VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                          VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                          VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT});
+    }
 }
 
 void RenderTarget::writeCounters(const shader::SampleCounters& counters)

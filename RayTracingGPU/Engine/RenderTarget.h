@@ -1,5 +1,6 @@
 // What a render of one size writes: the RGBA32F accumulation image (rgb: sum of sample radiances, a: sample
-// count), a host-visible copy of it for readback, the per-render uniforms and the NaN/Inf counters.
+// count) and its Kahan compensation image, a host-visible copy of the sum for readback, the per-render
+// uniforms and the NaN/Inf counters.
 #pragma once
 
 #include <cstdint>
@@ -27,17 +28,21 @@ public:
     VkImageView view() const { return m_view.Handle(); }
     const vk::Buffer& uniforms() const { return m_uniforms; }
     const vk::Buffer& counters() const { return m_counters; }
-    TargetBindings bindings() const { return {m_view.Handle(), m_uniforms.Handle(), m_counters.Handle()}; }
+    TargetBindings bindings() const
+    {
+        return {m_view.Handle(), m_compensationView.Handle(), m_uniforms.Handle(), m_counters.Handle()};
+    }
 
     /// Writes the uniforms and zeroes the counters (host-visible memory; call while the device is idle).
     void reset(const shader::RenderUniforms& uniforms);
     shader::SampleCounters readCounters() const;
 
-    /// Records: UNDEFINED -> GENERAL and clear to zero.
+    /// Records: UNDEFINED -> GENERAL and clear to zero, both images.
     void recordClear(VkCommandBuffer cmd) const;
-    /// Records the copy of the accumulation image into the readback buffer, after the ray-tracing writes.
+    /// Records the copy of the accumulation image into the readback buffer (and of the compensation image into
+    /// its snapshot), after the ray-tracing writes.
     void recordReadback(VkCommandBuffer cmd) const;
-    /// Records the copy of the readback buffer back into the accumulation image: with recordReadback before
+    /// Records the copy of the readback buffer (and the snapshot) back into the two images: with recordReadback before
     /// a batch, this puts back the image as the batch found it (a batch cancelled between its bands).
     void recordRestore(VkCommandBuffer cmd) const;
     /// Overwrites the NaN/Inf counters (host-visible; call while the device is idle).
@@ -48,7 +53,10 @@ public:
 private:
     vk::Image m_image;
     vk::ImageView m_view;
+    vk::Image m_compensation;
+    vk::ImageView m_compensationView;
     vk::Buffer m_readback;
+    vk::Buffer m_compensationSnapshot; // the compensation image at the last readback, for recordRestore
     vk::Buffer m_uniforms;
     vk::Buffer m_counters;
 };

@@ -5,6 +5,7 @@
 #define RT_SPHERE_GLSL
 
 #include "Math/Constants.glsl"
+#include "Shared/SphereQuadratic.h"
 
 // Rounding error of c = f.f - r^2 (with f = o - center rounded too), relative to f.f + r^2:
 // gamma(8) = 8u / (1 - 8u), u = 2^-24 (the error analysis of Pharr, Jakob & Humphreys, PBR 4th ed. §6.8).
@@ -25,7 +26,7 @@ bool sphereRoots(vec3 o, vec3 d, vec3 center, float radius, out SphereRoots root
     float a = dot(d, d);
     float halfB = dot(f, d);
     float r2 = radius * radius;
-    float c = dot(f, f) - r2;
+    float c = sphereQuadraticC(f, radius); // exact where it cancels: near a huge sphere's surface
     vec3 l = f - (halfB / a) * d; // closest approach of the line to the centre, formed before squaring
     float discriminantOverA = r2 - dot(l, l);
     if (discriminantOverA < 0.0)

@@ -58,6 +58,20 @@ expect_error "missing OBJ" "nothere.obj" --scene mesh-in-one-weekend --mesh "$wo
 expect_error "output folder missing" "does not exist" --output "$work/no/such/folder/out.png"
 expect_error "repeated flag" "--spp" --spp 2 --spp 3
 expect_error "output extension" ".png" --output "$work/out.jpg"
+expect_error "translation of two numbers" "--translate-scene" --translate-scene 1,2
+expect_error "translation of four numbers" "--translate-scene" --translate-scene 1,2,3,4
+expect_error "translation not a number" "--translate-scene" --translate-scene 1,x,3
+expect_error "translation with a space" "--translate-scene" --translate-scene "1, 2,3"
+expect_error "translation infinite" "--translate-scene" --translate-scene 0,inf,0
+expect_error "translation not a number (nan)" "--translate-scene" --translate-scene nan,0,0
+expect_error "translation overflows float" "--translate-scene" --translate-scene 1e39,0,0
+expect_error "translation past float32's reach" "times its size" --translate-scene 1e6,0,0
+expect_error "zero scale" "--scale-scene" --scale-scene 0
+expect_error "negative scale" "--scale-scene" --scale-scene -2
+expect_error "infinite scale" "--scale-scene" --scale-scene inf
+expect_error "scale not a number" "--scale-scene" --scale-scene nan
+expect_error "scale malformed" "--scale-scene" --scale-scene 2x
+expect_error "scale too small for float32" "world units across" --scale-scene 1e-6
 
 # Every output path checked before the render, and all outputs written or none (issue 13). The renders are
 # long (2^31 - 1 spp), so a check made only after rendering times out; the PNG must not be left behind.

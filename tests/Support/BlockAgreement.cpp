@@ -13,15 +13,17 @@ BlockEstimate estimateBlocks(RenderEngine& engine, const Scene& scene, RenderSet
 {
     engine.setScene(scene);
     std::vector<Image> images;
+    BlockEstimate b;
     for (int k = 0; k < kAgreementSeeds; ++k)
     {
         settings.seed = 1000u + static_cast<std::uint32_t>(k);
         RenderControl control;
-        images.push_back(renderWithSettings(engine, settings, control).image);
+        RenderResult r = renderWithSettings(engine, settings, control);
+        b.nonFiniteSamples += r.stats.nanSamples + r.stats.infSamples;
+        images.push_back(std::move(r.image));
     }
     const int w = images[0].width();
     const int h = images[0].height();
-    BlockEstimate b;
     b.blocksX = w / kAgreementBlock;
     b.blocksY = h / kAgreementBlock;
     for (int by = 0; by < b.blocksY; ++by)

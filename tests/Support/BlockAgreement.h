@@ -4,6 +4,7 @@
 // Russian roulette on one engine: anything whose expectation must not change.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@ struct BlockEstimate
     std::vector<double> variance; // of `mean`, pooled from the per-pixel spread over seeds
     int blocksX = 0;
     int blocksY = 0;
+    std::uint64_t nonFiniteSamples = 0; // NaN and Inf samples the renders' stats counted (and dropped)
 };
 
 /// Renders `scene` kAgreementSeeds times on `engine` (seeds 1000, 1001, ...) and estimates its blocks.

@@ -43,11 +43,15 @@ void ProgressiveRenderer::prepare(VkExtent2D extent)
     if (current.width != extent.width || current.height != extent.height)
     {
         m_accumulationView = vk::ImageView();
+        m_compensationView = vk::ImageView();
         m_costView = vk::ImageView();
         m_accumulation = vk::Image(device, extent, VK_FORMAT_R32G32B32A32_SFLOAT,
                                    VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                        VK_IMAGE_USAGE_TRANSFER_DST_BIT);
         m_accumulationView = vk::ImageView(device, m_accumulation);
+        m_compensation = vk::Image(device, extent, VK_FORMAT_R32G32B32A32_SFLOAT,
+                                   VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+        m_compensationView = vk::ImageView(device, m_compensation);
         m_cost = vk::Image(device, extent, VK_FORMAT_R32_SFLOAT,
                            VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
         m_costView = vk::ImageView(device, m_cost);
@@ -58,7 +62,7 @@ void ProgressiveRenderer::prepare(VkExtent2D extent)
     m_sets.clear();
     for (const vk::Buffer& uniforms : m_uniforms)
         m_sets.push_back(m_engine->tracer().makeDescriptors(
-            {m_accumulationView.Handle(), uniforms.Handle(), m_counters.Handle()}));
+            {m_accumulationView.Handle(), m_compensationView.Handle(), uniforms.Handle(), m_counters.Handle()}));
     if (m_costPipeline)
         writeCostDescriptors();
 }
@@ -104,9 +108,9 @@ void ProgressiveRenderer::writeCostDescriptors() const
 
 void ProgressiveRenderer::recordClear(VkCommandBuffer cmd)
 {
-    VkImageMemoryBarrier toClear[2]{};
-    const VkImage images[2] = {m_accumulation.Handle(), m_cost.Handle()};
-    for (int i = 0; i < 2; ++i)
+    VkImageMemoryBarrier toClear[3]{};
+    const VkImage images[3] = {m_accumulation.Handle(), m_compensation.Handle(), m_cost.Handle()};
+    for (int i = 0; i < 3; ++i)
     {
         VkImageMemoryBarrier& b = toClear[i];
         b.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
@@ -123,7 +127,7 @@ void ProgressiveRenderer::recordClear(VkCommandBuffer cmd)
     const VkPipelineStageFlags before = m_imagesUndefined ? VkPipelineStageFlags(VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT)
                                                           : kImageStages;
     vkCmdPipelineBarrier(cmd, before,
-                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 2, toClear);
+                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr, 3, toClear);
     const VkClearColorValue zero{};
     for (VkImage image : images)
         vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &vk::kColorRange);

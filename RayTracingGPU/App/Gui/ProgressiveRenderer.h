@@ -86,6 +86,8 @@ private:
     vk::Buffer m_counters; // NaN / Inf samples, shared: only atomics touch it
     vk::Image m_accumulation;
     vk::ImageView m_accumulationView;
+    vk::Image m_compensation; // the Kahan compensation of m_accumulation's sums
+    vk::ImageView m_compensationView;
     vk::Image m_cost;
     vk::ImageView m_costView;
     bool m_imagesUndefined = true; // not cleared since they were created

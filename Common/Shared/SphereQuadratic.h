@@ -1,0 +1,63 @@
+// The constant term c = |f|^2 - r^2 of the ray-sphere quadratic (f = ray origin - centre), written once for
+// both engines (Shared/ShaderLang.h). Near the surface of a huge sphere, |f|^2 and r^2 are nearly equal
+// (a 1e6-radius ground seen from 1.5 units above: both ~1e12, c ~3e6): float's rounding of them (~1e5)
+// put c, and the hit distance with it, a few % off, and the ground's lighting with it (tests/Cpu/StressTest.cpp
+// StressGroundSphere). Where c cancels, it is evaluated with exact products (Dekker's split) and exact
+// sums (Knuth's TwoSum), whose rounding errors are carried and added last: correct to a few ulps of c.
+// (T. J. Dekker, "A floating-point technique for extending the available precision", Numerische Mathematik
+// 18, 1971; D. E. Knuth, TAOCP vol. 2, §4.2.2.) f itself is as exact as o - centre rounds.
+#ifndef RT_SHARED_SPHERE_QUADRATIC_H
+#define RT_SHARED_SPHERE_QUADRATIC_H
+
+#include "Shared/HostDevice.h"
+#include "Shared/ShaderLang.h"
+
+RT_SHADER_NAMESPACE_BEGIN
+
+/// Below this |c| / (|f|^2 + r^2), float's c has lost more than ~1e-4 of itself: take the exact path.
+RT_CONST(float, kSphereCancellation, 1.0f / 1024.0f)
+
+/// a * a = hi + lo exactly (Dekker's product through Veltkamp's split by 2^12 + 1); |a| < 1e34.
+RT_FN vec2 exactSquare(float a)
+{
+    RT_PRECISE float split = 4097.0f * a;
+    RT_PRECISE float hi = split - (split - a);
+    RT_PRECISE float lo = a - hi;
+    RT_PRECISE float p = a * a;
+    RT_PRECISE float e = ((hi * hi - p) + 2.0f * hi * lo) + lo * lo;
+    return vec2(p, e);
+}
+
+/// s + t = sum + error exactly (Knuth's TwoSum): returns (sum, error).
+RT_FN vec2 exactSum(float s, float t)
+{
+    RT_PRECISE float sum = s + t;
+    RT_PRECISE float tPart = sum - s;
+    RT_PRECISE float error = (s - (sum - tPart)) + (t - tPart);
+    return vec2(sum, error);
+}
+
+/// c = dot(f, f) - r * r, to a few ulps of c even where the two terms nearly cancel.
+RT_FN float sphereQuadraticC(vec3 f, float r)
+{
+    const float ff = dot(f, f);
+    const float rr = r * r;
+    const float c = ff - rr;
+    if (abs(c) >= kSphereCancellation * (ff + rr))
+        return c;
+    const vec2 x = exactSquare(f.x);
+    const vec2 y = exactSquare(f.y);
+    const vec2 z = exactSquare(f.z);
+    const vec2 r2 = exactSquare(r);
+    vec2 s = exactSum(x.x, y.x);
+    RT_PRECISE float lost = s.y + x.y + y.y;
+    s = exactSum(s.x, z.x);
+    lost += s.y + z.y;
+    s = exactSum(s.x, -r2.x);
+    lost += s.y - r2.y;
+    return s.x + lost;
+}
+
+RT_SHADER_NAMESPACE_END
+
+#endif
