@@ -1,5 +1,6 @@
 #include "Vulkan/DebugMessenger.h"
 
+#include <cstring>
 #include <utility>
 
 #include <spdlog/spdlog.h>
@@ -16,6 +17,13 @@ VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT 
 {
     auto& log = *static_cast<ValidationLog*>(user);
     const char* message = data && data->pMessage ? data->pMessage : "(no message)";
+    // The loader's own messages (no driver manifest, a driver that failed to load) are about the machine, not
+    // about our use of the API: the app reports a missing device in its own words (DeviceError).
+    if (data && data->pMessageIdName && std::strcmp(data->pMessageIdName, "Loader Message") == 0)
+    {
+        spdlog::debug("Vulkan loader: {}", message);
+        return VK_FALSE;
+    }
     if (severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT)
     {
         log.errors.fetch_add(1);
