@@ -1,6 +1,6 @@
 // The equal-time comparison: each strategy rendered on one engine for the same time budget (its spp found by
-// a short calibration render, corrected once if the render missed the budget by more than 15 %), then one
-// figure of the reference, every image and every error image (scripts/equal_time_grid.py).
+// a short calibration render, corrected up to three times while a render misses the budget by more than
+// 15 %), then one figure of the reference, every image and every error image (scripts/equal_time_grid.py).
 #pragma once
 
 #include <filesystem>
