@@ -14,6 +14,7 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include "Cli/Interrupt.h"
 #include "Error.h"
 #include "Format.h"
 #include "IO/OutputSet.h"
@@ -28,13 +29,6 @@ namespace rt
 {
 namespace
 {
-std::atomic<RenderControl*> g_activeControl{nullptr};
-
-extern "C" void onInterrupt(int)
-{
-    if (RenderControl* c = g_activeControl.load())
-        c->requestCancel();
-}
 
 bool stderrIsTerminal()
 {
@@ -134,15 +128,13 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& r
     spdlog::info("acceleration structures built in {:.3f} s", build);
 
     RenderControl control;
-    g_activeControl = &control;
-    const auto previous = std::signal(SIGINT, onInterrupt);
     RenderResult result;
     {
+        InterruptScope interrupt;
+        InterruptScope::route(&control);
         ProgressPrinter progress(control, !o.quiet);
         result = render(engine, request, control);
     }
-    std::signal(SIGINT, previous);
-    g_activeControl = nullptr;
     if (result.stats.cancelled)
     {
         spdlog::warn("render cancelled after {:.1f} s: no file written", result.stats.renderSeconds);

@@ -18,6 +18,7 @@
 #include "App/Compare/PythonScript.h"
 #include "App/Compare/ReferenceCache.h"
 #include "Cli/HeadlessRun.h"
+#include "Cli/Interrupt.h"
 #include "Cli/ValueParsing.h"
 #include "Error.h"
 #include "IO/AtomicFile.h"

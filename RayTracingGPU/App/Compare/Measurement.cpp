@@ -1,53 +1,22 @@
 #include "App/Compare/Measurement.h"
 
-#include <atomic>
 #include <chrono>
-#include <csignal>
 
 #include <spdlog/spdlog.h>
 
+#include "Cli/Interrupt.h"
 #include "Render/RenderDriver.h"
 
 namespace rt::app
 {
-namespace
-{
-std::atomic<RenderControl*> g_control{nullptr};
-std::atomic<bool> g_interrupted{false};
-void (*g_previousHandler)(int) = SIG_DFL;
-
-extern "C" void onCompareInterrupt(int)
-{
-    g_interrupted.store(true);
-    if (RenderControl* c = g_control.load())
-        c->requestCancel();
-}
-} // namespace
-
-InterruptScope::InterruptScope()
-{
-    g_interrupted.store(false);
-    g_previousHandler = std::signal(SIGINT, onCompareInterrupt);
-}
-
-InterruptScope::~InterruptScope()
-{
-    std::signal(SIGINT, g_previousHandler);
-}
-
-bool InterruptScope::interrupted()
-{
-    return g_interrupted.load();
-}
-
 Measurement measure(RenderEngine& engine, const RenderRequest& request, const Image* reference)
 {
     RenderControl control;
     if (InterruptScope::interrupted())
         return {.cancelled = true};
-    g_control.store(&control);
+    InterruptScope::route(&control);
     RenderResult r = render(engine, request, control);
-    g_control.store(nullptr);
+    InterruptScope::route(nullptr);
     Measurement m;
     m.cancelled = r.stats.cancelled || InterruptScope::interrupted();
     if (m.cancelled)

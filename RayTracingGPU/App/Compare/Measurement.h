@@ -1,4 +1,5 @@
-// One timed render of a comparison and what it measured, with Ctrl-C routed to whichever render is running.
+// One timed render of a comparison and what it measured, with Ctrl-C routed to whichever render is running
+// (Cli/Interrupt.h).
 #pragma once
 
 #include <string>
@@ -25,20 +26,8 @@ struct Measurement
     double ms() const { return gpuMs >= 0.0 ? gpuMs : wallMs; }
 };
 
-/// While alive, SIGINT cancels the render in progress and sets interrupted(); the previous handler comes back
-/// at the end of its scope.
-class InterruptScope
-{
-public:
-    InterruptScope();
-    ~InterruptScope();
-    InterruptScope(const InterruptScope&) = delete;
-    InterruptScope& operator=(const InterruptScope&) = delete;
-
-    static bool interrupted();
-};
-
-/// Renders `request` with `engine`, cancellable by the InterruptScope; compares with `reference` unless null.
+/// Renders `request` with `engine`, cancellable by Ctrl-C while an InterruptScope (Cli/Interrupt.h) lives;
+/// compares with `reference` unless null.
 /// Warns about NaN and Inf samples (they are left out of the image, and out of the error).
 Measurement measure(RenderEngine& engine, const RenderRequest& request, const Image* reference);
 

@@ -1,0 +1,45 @@
+#include "Cli/Interrupt.h"
+
+#include <atomic>
+#include <csignal>
+
+namespace rt
+{
+namespace
+{
+std::atomic<RenderControl*> g_control{nullptr};
+std::atomic<bool> g_interrupted{false};
+void (*g_previousHandler)(int) = SIG_DFL;
+
+extern "C" void onInterrupt(int)
+{
+    g_interrupted.store(true);
+    if (RenderControl* c = g_control.load())
+        c->requestCancel();
+}
+} // namespace
+
+InterruptScope::InterruptScope()
+{
+    g_interrupted.store(false);
+    g_previousHandler = std::signal(SIGINT, onInterrupt);
+}
+
+InterruptScope::~InterruptScope()
+{
+    std::signal(SIGINT, g_previousHandler);
+    g_control.store(nullptr);
+}
+
+void InterruptScope::route(RenderControl* control)
+{
+    g_control.store(control);
+    if (control && g_interrupted.load())
+        control->requestCancel(); // SIGINT came between two renders
+}
+
+bool InterruptScope::interrupted()
+{
+    return g_interrupted.load();
+}
+} // namespace rt
