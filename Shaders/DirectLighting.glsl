@@ -1,5 +1,7 @@
 // Next-event estimation at a diffuse or isotropic vertex: the GLSL twin of estimateDirect in
-// RayTracingCPU/Integrator/PathIntegrator.h, on the shared selection, light sampler and MIS weight.
+// RayTracingCPU/Integrator/PathIntegrator.h, on the shared selection, light sampler and MIS weight, cut in two
+// here: sampleDirect draws the light sample, Integrator.glsl traces its shadow ray (unoccluded) at the end of
+// the vertex.
 // Needs the shadow payload `shadowVisible` (location kPayloadShadow) and the globals of Bindings.glsl.
 #ifndef RT_DIRECT_LIGHTING_GLSL
 #define RT_DIRECT_LIGHTING_GLSL

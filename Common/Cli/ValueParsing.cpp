@@ -38,6 +38,18 @@ std::optional<std::array<float, 3>> parseRealTriple(std::string_view text)
     return out;
 }
 
+std::vector<std::string> splitCommas(std::string_view text)
+{
+    std::vector<std::string> parts;
+    while (!text.empty())
+    {
+        const std::size_t comma = text.find(',');
+        parts.emplace_back(text.substr(0, comma));
+        text = comma == std::string_view::npos ? std::string_view() : text.substr(comma + 1);
+    }
+    return parts;
+}
+
 std::optional<bool> parseOnOff(std::string_view text)
 {
     if (text == "on")

@@ -5,8 +5,10 @@
 
 #include <array>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace rt
 {
@@ -16,6 +18,9 @@ std::optional<long long> parseInteger(std::string_view text);
 std::optional<float> parseReal(std::string_view text);
 /// "X,Y,Z": three parseReal values separated by commas, nothing else.
 std::optional<std::array<float, 3>> parseRealTriple(std::string_view text);
+/// The parts of a comma-separated list ("a,,b" -> a, "", b; a trailing comma adds none; "" -> none), as
+/// std::getline splits them: callers parse and check each.
+std::vector<std::string> splitCommas(std::string_view text);
 /// "on" or "off".
 std::optional<bool> parseOnOff(std::string_view text);
 /// "WxH" with two integers, e.g. 1280x800.

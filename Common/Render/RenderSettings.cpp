@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include <nlohmann/json.hpp>
 #include <spdlog/fmt/fmt.h>
 
 #include "Error.h"
@@ -142,5 +143,20 @@ std::optional<LightSelection> parseLightSelection(const std::string& text)
         if (text == toString(s))
             return s;
     return std::nullopt;
+}
+
+nlohmann::json toJson(const RenderSettings& s)
+{
+    return {{"spp", s.spp},
+            {"depth", s.depth},
+            {"width", s.width},
+            {"aspect", s.aspect},
+            {"sampling", toString(s.sampling)},
+            {"estimator", toString(s.estimator)},
+            {"light_sampler", toString(s.lightSampler)},
+            {"light_selection", toString(s.lightSelection)},
+            {"russian_roulette", s.russianRoulette},
+            {"unidirectional_light", s.unidirectionalLight},
+            {"seed", s.seed}};
 }
 } // namespace rt

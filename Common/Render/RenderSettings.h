@@ -5,6 +5,8 @@
 #include <optional>
 #include <string>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "Shared/HostDevice.h"
 
 namespace rt
@@ -57,4 +59,9 @@ std::optional<PixelSampling> parsePixelSampling(const std::string& text);
 std::optional<Estimator> parseEstimator(const std::string& text);
 std::optional<LightSampler> parseLightSampler(const std::string& text);
 std::optional<LightSelection> parseLightSelection(const std::string& text);
+
+/// Every field, by the command line's names (spp, depth, width, aspect, sampling, estimator, light_sampler,
+/// light_selection, russian_roulette, unidirectional_light, seed): the stats JSON's "settings" and the
+/// reference cache's key.
+nlohmann::json toJson(const RenderSettings& settings);
 } // namespace rt

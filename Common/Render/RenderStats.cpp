@@ -7,7 +7,6 @@ namespace rt
 nlohmann::json RenderStats::toJson() const
 {
     nlohmann::json j;
-    const RenderSettings& settings = request.settings;
     j["scene"] = request.scene.id;
     const SceneTransform& moved = request.scene.options.transform;
     j["scene_options"] = {{"count", request.scene.options.count},
@@ -16,17 +15,7 @@ nlohmann::json RenderStats::toJson() const
                           {"scale", moved.scale}};
     j["engine"] = toString(engine);
     j["device"] = device;
-    j["settings"] = {{"spp", settings.spp},
-                     {"depth", settings.depth},
-                     {"width", settings.width},
-                     {"aspect", settings.aspect},
-                     {"sampling", toString(settings.sampling)},
-                     {"estimator", toString(settings.estimator)},
-                     {"light_sampler", toString(settings.lightSampler)},
-                     {"light_selection", toString(settings.lightSelection)},
-                     {"russian_roulette", settings.russianRoulette},
-                     {"unidirectional_light", settings.unidirectionalLight},
-                     {"seed", settings.seed}};
+    j["settings"] = rt::toJson(request.settings);
     j["width"] = width;
     j["height"] = height;
     j["true_spp"] = trueSpp;

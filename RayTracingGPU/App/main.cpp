@@ -216,7 +216,6 @@ int main(int argc, char** argv)
             c.grid = options.output;
             if (referenceCache != "off")
                 c.referenceCache = referenceCache;
-            rt::app::checkComparison(c);
             return rt::app::runComparison(job.scene, job.request, c, [&](rt::EngineKind kind) -> std::unique_ptr<rt::RenderEngine> {
                 if (kind == rt::EngineKind::Gpu)
                     return std::make_unique<rt::gpu::GpuEngine>(rt::gpu::GpuEngineOptions{

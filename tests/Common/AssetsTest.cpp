@@ -2,7 +2,6 @@
 // malformed file is an AssetError whose one-line message names the file (seed-findings: "image texture
 // failures returned cyan silently").
 #include <gtest/gtest.h>
-#include <spdlog/fmt/fmt.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -15,6 +14,7 @@
 #include "Assets/ObjLoader.h"
 #include "Error.h"
 #include "Image/ImageIO.h"
+#include "Support/CubeObj.h"
 #include "Support/ScratchDir.h"
 
 namespace rt
@@ -129,16 +129,6 @@ TEST(ObjLoader, ACoordinateThatIsNotAFiniteNumberIsRejectedNamingTheLine)
     EXPECT_EQ(loadObj(fine.string()).triangleCount(), 1u);
 }
 
-/// An axis-aligned cube of edge `edge` centred at (c, c, c), as OBJ text with %.17g coordinates.
-std::string cubeObj(double c, double edge)
-{
-    std::string text;
-    for (int i = 0; i < 8; ++i)
-        text += fmt::format("v {:.17g} {:.17g} {:.17g}\n", c + ((i & 1) ? 0.5 : -0.5) * edge,
-                            c + ((i & 2) ? 0.5 : -0.5) * edge, c + ((i & 4) ? 0.5 : -0.5) * edge);
-    return text + "f 2 4 8 6\nf 1 5 7 3\nf 3 7 8 4\nf 1 2 6 5\nf 5 6 8 7\nf 1 3 4 2\n";
-}
-
 TEST(ObjLoader, FarHugeAndTinyMeshesLoadFittedToTheSamePlace)
 {
     // Issue 13: a +-1e7 cube went black on the GPU, a unit cube at 1e7 landed in a different wrong place on
@@ -146,7 +136,7 @@ TEST(ObjLoader, FarHugeAndTinyMeshesLoadFittedToTheSamePlace)
     // was shrunk. Fitted in double, every one of them is the same unit cube standing on the origin, so both
     // engines get the same float positions.
     const test::ScratchDir dir;
-    const MeshData reference = loadObj(dir.write("unit.obj", cubeObj(0.0, 1.0)).string());
+    const MeshData reference = loadObj(dir.write("unit.obj", test::cubeObj(0.0, 1.0)).string());
     const Aabb box = reference.bounds();
     EXPECT_EQ(box.min, vec3(-0.5f, 0.0f, -0.5f));
     EXPECT_EQ(box.max, vec3(0.5f, 1.0f, 0.5f));
@@ -156,7 +146,7 @@ TEST(ObjLoader, FarHugeAndTinyMeshesLoadFittedToTheSamePlace)
     } cubes[] = {{0.0, 2e7}, {1e7, 1.0}, {1e7, 0.5}, {0.0, 1e-7}, {-3e-9, 2e-9}, {1e300, 1e300}};
     for (const auto& c : cubes)
     {
-        const MeshData mesh = loadObj(dir.write("cube.obj", cubeObj(c.centre, c.edge)).string());
+        const MeshData mesh = loadObj(dir.write("cube.obj", test::cubeObj(c.centre, c.edge)).string());
         ASSERT_EQ(mesh.positions.size(), reference.positions.size());
         for (std::size_t i = 0; i < mesh.positions.size(); ++i)
             for (int k = 0; k < 3; ++k)

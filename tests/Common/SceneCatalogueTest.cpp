@@ -2,7 +2,6 @@
 // binary, unknown ids are reported with the list of known ones, and the light lists the samplers draw from
 // hold what shared/spec/scenes.md describes.
 #include <gtest/gtest.h>
-#include <spdlog/fmt/fmt.h>
 
 #include <set>
 #include <string>
@@ -10,6 +9,7 @@
 #include "Assets/AssetPaths.h"
 #include "Error.h"
 #include "Scenes/Catalogue.h"
+#include "Support/CubeObj.h"
 #include "Support/ScratchDir.h"
 
 namespace rt
@@ -272,11 +272,7 @@ TEST(SceneCatalogue, TheMeshScenesPlaceACubeAlikeWhereverAndHoweverLargeItWasMod
     // the unit cube at the origin lands, in every scene that takes --mesh (both engines build from this).
     const test::ScratchDir dir;
     const auto cube = [&](double centre, double edge) {
-        std::string text;
-        for (int i = 0; i < 8; ++i)
-            text += fmt::format("v {:.17g} {:.17g} {:.17g}\n", centre + ((i & 1) ? 0.5 : -0.5) * edge,
-                                centre + ((i & 2) ? 0.5 : -0.5) * edge, centre + ((i & 4) ? 0.5 : -0.5) * edge);
-        return dir.write("cube.obj", text + "f 2 4 8 6\nf 1 5 7 3\nf 3 7 8 4\nf 1 2 6 5\nf 5 6 8 7\nf 1 3 4 2\n").string();
+        return dir.write("cube.obj", test::cubeObj(centre, edge)).string();
     };
     for (const char* id : {"mesh-in-one-weekend", "cornell-box-and-mesh", "triangle-lights"})
     {

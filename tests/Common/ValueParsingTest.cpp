@@ -36,5 +36,16 @@ TEST(ValueParsing, OnOffAndSizes)
     for (const char* bad : {"1280", "1280x", "x800", "1280*800", "12x8x4", "axb"})
         EXPECT_FALSE(parseSize(bad)) << bad;
 }
+
+TEST(ValueParsing, CommaListsKeepEmptyPartsButNotATrailingComma)
+{
+    using Parts = std::vector<std::string>;
+    EXPECT_EQ(splitCommas("10,50,100"), (Parts{"10", "50", "100"}));
+    EXPECT_EQ(splitCommas("a,,b"), (Parts{"a", "", "b"}));
+    EXPECT_EQ(splitCommas(",a"), (Parts{"", "a"}));
+    EXPECT_EQ(splitCommas("a,b,"), (Parts{"a", "b"}));
+    EXPECT_EQ(splitCommas("solo"), (Parts{"solo"}));
+    EXPECT_TRUE(splitCommas("").empty());
+}
 } // namespace
 } // namespace rt

@@ -4,7 +4,6 @@
 #include <ostream>
 
 #include <gtest/gtest.h>
-#include <spdlog/fmt/fmt.h>
 
 #include "Engine/CpuEngine.h"
 #include "GpuTestEnvironment.h"
@@ -12,6 +11,7 @@
 #include "Support/BlockAgreement.h"
 #include "Support/CatalogueCases.h"
 #include "Support/RenderWithSettings.h"
+#include "Support/CubeObj.h"
 #include "Support/ScratchDir.h"
 
 namespace rt::gpu::test
@@ -72,16 +72,6 @@ Image renderOnCpu(cpu::CpuEngine& engine, const Scene& scene, const RenderSettin
     return ::rt::test::renderWithSettings(engine, s, control).image;
 }
 
-/// An axis-aligned cube of edge `edge` centred at (c, c, c), as OBJ text.
-std::string cubeObj(double c, double edge)
-{
-    std::string text;
-    for (int i = 0; i < 8; ++i)
-        text += fmt::format("v {:.17g} {:.17g} {:.17g}\n", c + ((i & 1) ? 0.5 : -0.5) * edge,
-                            c + ((i & 2) ? 0.5 : -0.5) * edge, c + ((i & 4) ? 0.5 : -0.5) * edge);
-    return text + "f 2 4 8 6\nf 1 5 7 3\nf 3 7 8 4\nf 1 2 6 5\nf 5 6 8 7\nf 1 3 4 2\n";
-}
-
 TEST(GpuCpuMeshFit, FarHugeAndTinyMeshesRenderAsTheUnitCubeOnBothEngines)
 {
     // Issue 13: a +-1e7 cube rendered black on the GPU; a 0.5-wide cube at 1e7 vanished; each engine placed a
@@ -93,7 +83,7 @@ TEST(GpuCpuMeshFit, FarHugeAndTinyMeshesRenderAsTheUnitCubeOnBothEngines)
     s.width = 24;
     s.spp = 16;
     s.depth = 8;
-    const Scene unit = makeScene("cornell-box-and-mesh", {.meshPath = dir.write("unit.obj", cubeObj(0.0, 1.0)).string()});
+    const Scene unit = makeScene("cornell-box-and-mesh", {.meshPath = dir.write("unit.obj", ::rt::test::cubeObj(0.0, 1.0)).string()});
     s.aspect = unit.defaults.aspect;
     cpu::CpuEngine cpuEngine(EngineKind::Multi);
     const Image cpuUnit = renderOnCpu(cpuEngine, unit, s);
@@ -101,7 +91,7 @@ TEST(GpuCpuMeshFit, FarHugeAndTinyMeshesRenderAsTheUnitCubeOnBothEngines)
     for (const auto& [centre, edge] : {std::pair{0.0, 2e7}, {1e7, 1.0}, {1e7, 0.5}, {0.0, 1e-7}})
     {
         const Scene far = makeScene("cornell-box-and-mesh",
-                                    {.meshPath = dir.write("cube.obj", cubeObj(centre, edge)).string()});
+                                    {.meshPath = dir.write("cube.obj", ::rt::test::cubeObj(centre, edge)).string()});
         EXPECT_EQ(renderOnCpu(cpuEngine, far, s).pixels(), cpuUnit.pixels())
             << "CPU, edge " << edge << " at " << centre;
         EXPECT_EQ(renderOnGpu(far, s).image.pixels(), gpuUnit.pixels()) << "GPU, edge " << edge << " at " << centre;

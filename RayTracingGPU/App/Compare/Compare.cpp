@@ -6,7 +6,6 @@
 #include <limits>
 #include <memory>
 #include <optional>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 #include <spdlog/fmt/fmt.h>
@@ -29,28 +28,11 @@ namespace rt::app
 {
 namespace
 {
-std::vector<std::string> split(const std::string& text)
-{
-    std::vector<std::string> parts;
-    std::stringstream in(text);
-    for (std::string part; std::getline(in, part, ',');)
-        parts.push_back(part);
-    return parts;
-}
-
 struct EngineUnderTest
 {
     EngineKind kind;
     std::unique_ptr<RenderEngine> engine;
 };
-
-RenderRequest requestFor(const RenderRequest& base, const Strategy& strategy, int spp)
-{
-    RenderRequest r = base;
-    r.settings = strategy.applyTo(base.settings);
-    r.settings.spp = spp;
-    return r;
-}
 
 /// Progress of the whole run on stderr: one line per finished render, with the elapsed time.
 class RunLog
@@ -122,12 +104,12 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
     for (std::size_t e = 0; e < engines.size(); ++e)
     {
         RenderEngine& engine = *engines[e].engine;
-        warmUp(engine, requestFor(base, options.strategies.front(), 4));
+        warmUp(engine, options.strategies.front().request(base, 4));
         runs[e].resize(strategyCount);
         for (std::size_t s = 0; s < strategyCount; ++s)
             for (const int spp : options.spps)
             {
-                Measurement m = measure(engine, requestFor(base, options.strategies[s], spp), &reference);
+                Measurement m = measure(engine, options.strategies[s].request(base, spp), &reference);
                 if (m.cancelled)
                     return false;
                 log.done(fmt::format("{} {}, {} spp: {:.1f} ms, relMSE {:.3g}", toString(engines[e].kind), labels[s],
@@ -231,7 +213,7 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
     for (EngineUnderTest& e : engines)
     {
         devices += (devices.empty() ? "" : ", ") + e.engine->deviceName();
-        warmUp(*e.engine, requestFor(base, options.strategies.front(), 4));
+        warmUp(*e.engine, options.strategies.front().request(base, 4));
         for (std::size_t s = 0; s < options.strategies.size(); ++s)
         {
             Measurement m = renderForBudget(*e.engine, base, options.strategies[s], options.equalTimeMs, reference);
@@ -269,7 +251,7 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
 std::vector<int> parseSppList(const std::string& text)
 {
     std::vector<int> spps;
-    for (const std::string& part : split(text))
+    for (const std::string& part : splitCommas(text))
     {
         const auto value = parseInteger(part);
         if (!value || *value < 1 || *value > std::numeric_limits<int>::max())
@@ -284,7 +266,7 @@ std::vector<int> parseSppList(const std::string& text)
 std::vector<EngineKind> parseEngineList(const std::string& text)
 {
     std::vector<EngineKind> engines;
-    for (const std::string& part : split(text))
+    for (const std::string& part : splitCommas(text))
     {
         const auto e = parseEngine(part);
         if (!e)

@@ -22,14 +22,6 @@ constexpr int kCalibrationSpp = 4;
 constexpr double kTolerance = 0.15; // a render this far off its budget is rendered again with a corrected spp
 constexpr int kCorrections = 3;
 
-RenderRequest withStrategy(const RenderRequest& base, const Strategy& strategy, int spp)
-{
-    RenderRequest r = base;
-    r.settings = strategy.applyTo(base.settings);
-    r.settings.spp = spp;
-    return r;
-}
-
 /// A fresh folder under the system's temporary directory, removed with its contents at the end of the scope.
 class TemporaryFolder
 {
@@ -64,11 +56,11 @@ int sppForBudget(double budgetMs, double msPerSample)
 Measurement renderForBudget(RenderEngine& engine, const RenderRequest& base, const Strategy& strategy,
                             double budgetMs, const Image& reference)
 {
-    const Measurement calibration = measure(engine, withStrategy(base, strategy, kCalibrationSpp), nullptr);
+    const Measurement calibration = measure(engine, strategy.request(base, kCalibrationSpp), nullptr);
     if (calibration.cancelled)
         return calibration;
     int spp = sppForBudget(budgetMs, calibration.ms() / calibration.spp);
-    Measurement m = measure(engine, withStrategy(base, strategy, spp), &reference);
+    Measurement m = measure(engine, strategy.request(base, spp), &reference);
     // The calibration's spp may be too few to time well (fixed costs, clocks still rising), and one render
     // can be slow by itself: render again at the rate the last one showed, until one lands within tolerance.
     for (int attempt = 0; attempt < kCorrections && !m.cancelled && m.ms() > 0.0 &&
@@ -78,7 +70,7 @@ Measurement renderForBudget(RenderEngine& engine, const RenderRequest& base, con
         const int corrected = sppForBudget(budgetMs, m.ms() / m.spp);
         if (corrected == m.spp)
             break;
-        m = measure(engine, withStrategy(base, strategy, corrected), &reference);
+        m = measure(engine, strategy.request(base, corrected), &reference);
     }
     if (!m.cancelled && std::abs(m.ms() - budgetMs) > kTolerance * budgetMs)
         spdlog::warn("{}: {} spp took {:.1f} ms, not the {:.0f} ms asked for (the GPU's speed varied between renders)",

@@ -99,23 +99,12 @@ std::uint64_t sceneFingerprint(const Scene& scene)
 
 std::string ReferenceCache::key(const Scene& scene, const RenderRequest& request, EngineKind engine)
 {
-    const RenderSettings& s = request.settings;
     nlohmann::json k;
-    k["version"] = 1; // bump when the engines' output changes for the same settings
+    k["version"] = 2; // bump when the engines' output changes for the same settings
     k["scene"] = request.scene.id;
     k["scene_fingerprint"] = hex(sceneFingerprint(scene));
     k["engine"] = toString(engine);
-    k["spp"] = s.trueSpp();
-    k["seed"] = s.seed;
-    k["width"] = s.width;
-    k["height"] = s.height();
-    k["depth"] = s.depth;
-    k["sampling"] = toString(s.sampling);
-    k["estimator"] = toString(s.estimator);
-    k["light_sampler"] = toString(s.lightSampler);
-    k["light_selection"] = toString(s.lightSelection);
-    k["russian_roulette"] = s.russianRoulette;
-    k["unidirectional_light"] = s.unidirectionalLight;
+    k["settings"] = toJson(request.settings); // every field, so one added later is part of the key too
     return k.dump();
 }
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <optional>
-#include <sstream>
 
 #include <spdlog/fmt/fmt.h>
 
@@ -20,8 +19,7 @@ std::vector<T> parseList(const std::string& text, const char* flag, const char* 
     if (text.empty())
         return {fallback};
     std::vector<T> values;
-    std::stringstream in(text);
-    for (std::string part; std::getline(in, part, ',');)
+    for (const std::string& part : splitCommas(text))
     {
         const std::optional<T> value = parse(part);
         if (!value)
@@ -49,6 +47,13 @@ RenderSettings Strategy::applyTo(RenderSettings base) const
     base.lightSelection = lightSelection;
     base.sampling = sampling;
     base.russianRoulette = russianRoulette;
+    return base;
+}
+
+RenderRequest Strategy::request(RenderRequest base, int spp) const
+{
+    base.settings = applyTo(base.settings);
+    base.settings.spp = spp;
     return base;
 }
 

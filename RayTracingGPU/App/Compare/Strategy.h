@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "Render/RenderRequest.h"
 #include "Render/RenderSettings.h"
 
 namespace rt::app
@@ -22,6 +23,8 @@ struct Strategy
     static Strategy of(const RenderSettings& settings);
     /// `base` with this strategy's fields.
     RenderSettings applyTo(RenderSettings base) const;
+    /// `base` with this strategy's fields and `spp` samples per pixel: one render of a comparison.
+    RenderRequest request(RenderRequest base, int spp) const;
     /// "nee-mis projected bvh random rr-on": every field, space separated (the CSV's strategy column).
     std::string name() const;
 };
