@@ -25,7 +25,7 @@ packages=(
     libgtest-dev libbenchmark-dev
     libvulkan-dev vulkan-tools vulkan-validationlayers glslc
     libglfw3-dev libimgui-dev xvfb xauth x11-utils imagemagick fonts-dejavu-core hyperfine
-    xplanet-images assimp-testmodels
+    xplanet-images assimp-testmodels libtinygltf-dev
 )
 backports_packages=(mesa-vulkan-drivers)
 

@@ -1,6 +1,7 @@
 #include "Assets/ObjLoader.h"
 
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <utility>
@@ -27,7 +28,7 @@ std::string firstLine(const std::string& text)
 }
 } // namespace
 
-MeshData loadObj(const std::string& path)
+MeshData loadObj(const std::string& path, ObjPlacement placement)
 {
     const std::filesystem::path file = resolveAsset(path, "mesh");
     tinyobj::ObjReaderConfig config;
@@ -67,6 +68,17 @@ MeshData loadObj(const std::string& path)
     }
     if (mesh.indices.empty())
         throw AssetError(fmt::format("malformed OBJ '{}': it holds no triangles", file.string()));
+    if (placement == ObjPlacement::AsWritten)
+    {
+        for (const dvec3& p : lines.positions)
+        {
+            if (glm::any(glm::greaterThan(glm::abs(p), dvec3(std::numeric_limits<float>::max()))))
+                throw AssetError(fmt::format("OBJ '{}': a coordinate of vertex ({}, {}, {}) is beyond float's range",
+                                             file.string(), p.x, p.y, p.z));
+            mesh.positions.push_back(vec3(p));
+        }
+        return mesh;
+    }
     std::string why;
     std::optional<std::vector<vec3>> fitted = fitMesh(lines.positions, why);
     if (!fitted)

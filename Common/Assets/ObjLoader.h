@@ -14,5 +14,12 @@ namespace rt
 /// missing, unparsable, no triangles, a vertex index out of range (as written), a face of fewer than 3
 /// vertices, a vertex of too few coordinates, a coordinate that is not a finite number, or a mesh that
 /// cannot be fitted (every vertex one point).
-MeshData loadObj(const std::string& path);
+/// With ObjPlacement::AsWritten the positions are the file's own, rounded to float (a scene file that places
+/// its meshes itself); a coordinate beyond float's range is then an error too.
+enum class ObjPlacement
+{
+    Fit,
+    AsWritten
+};
+MeshData loadObj(const std::string& path, ObjPlacement placement = ObjPlacement::Fit);
 } // namespace rt

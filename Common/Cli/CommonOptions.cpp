@@ -1,5 +1,6 @@
 #include "Cli/CommonOptions.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -11,6 +12,8 @@
 #include "Cli/ValueParsing.h"
 #include "Error.h"
 #include "Render/MemoryBudget.h"
+#include "SceneFile/JsonSceneWriter.h"
+#include "SceneFile/SceneFile.h"
 
 namespace rt
 {
@@ -51,6 +54,8 @@ SceneRef CommonOptions::sceneRef() const
     if (!mesh.empty())
         ref.options.meshPath = mesh;
     ref.options.transform = sceneTransform(translateScene, scaleScene);
+    if (fresnel)
+        ref.options.fresnel = *fresnel == "exact" ? shader::FresnelModel::Exact : shader::FresnelModel::Schlick;
     return ref;
 }
 
@@ -58,7 +63,16 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
 {
     app.add_flag("--headless", o.headless, "Render without a window, write the files asked for and exit");
     app.add_flag("--list-scenes", o.listScenes, "Print the scene ids with their titles and exit");
-    app.add_option("--scene", o.scene, "Scene id (see --list-scenes)")->capture_default_str();
+    app.add_option("--scene", o.scene,
+                   "Scene id (see --list-scenes), or a scene file: .json (docs/SCENES.md) or glTF 2.0 (.gltf, .glb)")
+        ->capture_default_str();
+    app.add_option("--export-scene", o.exportScene,
+                   "Write the scene (with --count, --mesh, --translate-scene, --scale-scene applied) to this .json "
+                   "file and exit: reading it back with --scene renders the same image bit for bit on the CPU")
+        ->check([](const std::string& path) {
+            return isSceneFilePath(path) && path.ends_with(".json") ? std::string()
+                                                                     : std::string("must name a .json file");
+        });
     app.add_option("--spp", o.spp, "Samples per pixel (default: the scene's)");
     app.add_option("--depth", o.depth, "Ray segments per path at most, the camera ray included: 1 sees only the emitters (default: the scene's, usually 50)");
     app.add_option("--width", o.width, "Image width in pixels (default: the scene's)");
@@ -100,6 +114,11 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
                    "proportion to a bound of what each group of emitters can contribute at the vertex, from its "
                    "power, distance, orientation and the receiver's horizon)")
         ->capture_default_str();
+    app.add_option("--fresnel", o.fresnel,
+                   "The reflectance of every dielectric (glass): schlick (Schlick's approximation, as the books) "
+                   "or exact (the unpolarised Fresnel equations, as pbrt-v4 and Mitsuba); default: each "
+                   "material's own, schlick in the catalogue's scenes")
+        ->check(CLI::IsMember({"schlick", "exact"}));
     app.add_option("--pdf", o.pdf, "The books' name for two estimators: on = --estimator mixture, off = bsdf");
     app.add_option("--russian-roulette", o.russianRoulette,
                    "on: from the third segment, a path whose throughput fell below 1 ends with probability "
@@ -191,6 +210,10 @@ CommandLineRender resolveCommandLine(const CommonOptions& options)
                      "triangle-lights do)",
                      options.scene);
     CommandLineRender r{.scene = buildScene(options.sceneRef())};
+    if (options.fresnel && std::none_of(r.scene.materials.begin(), r.scene.materials.end(), [](const MaterialData& m) {
+            return m.type == MaterialType::Dielectric;
+        }))
+        spdlog::warn("--fresnel is ignored: scene {} has no dielectric", r.scene.id);
     r.request = resolveRequest(options, r.scene);
     const RenderSettings& s = r.request.settings;
     const std::uint64_t pixels = std::uint64_t(s.width) * std::uint64_t(s.height());
@@ -211,9 +234,15 @@ bool runCommonCommands(const CommonOptions& options)
 {
     spdlog::set_pattern("%^%l%$: %v");
     spdlog::set_level(options.quiet ? spdlog::level::warn : spdlog::level::info);
-    if (!options.listScenes)
+    if (options.listScenes)
+    {
+        std::fputs(sceneListing().c_str(), stdout);
+        return true;
+    }
+    if (options.exportScene.empty())
         return false;
-    std::fputs(sceneListing().c_str(), stdout);
+    exportScene(buildScene(options.sceneRef()), options.exportScene);
+    spdlog::info("wrote {}", options.exportScene);
     return true;
 }
 } // namespace rt

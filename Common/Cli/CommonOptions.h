@@ -37,6 +37,8 @@ struct CommonOptions
     std::string mesh;
     std::string translateScene; // "X,Y,Z", empty = none
     std::string scaleScene; // a real > 0, empty = none
+    std::string exportScene; // a .json path, empty = none
+    std::optional<std::string> fresnel; // schlick | exact; empty: each dielectric's own
     bool quiet = false;
 
     /// The scene the flags name; throws UsageError for a malformed --translate-scene or --scale-scene.
@@ -65,7 +67,8 @@ CommandLineRender resolveCommandLine(const CommonOptions& options);
 /// One line per catalogue scene: id, title, source.
 std::string sceneListing();
 
-/// What every command of both apps does first: log level from --quiet, and --list-scenes printed to stdout.
-/// Returns true when the command is done (it was --list-scenes).
+/// What every command of both apps does first: log level from --quiet, --list-scenes printed to stdout, and
+/// --export-scene's file written. Returns true when the command is done (it was one of the two).
+/// Throws what buildScene and exportScene throw.
 bool runCommonCommands(const CommonOptions& options);
 } // namespace rt

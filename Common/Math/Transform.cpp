@@ -22,6 +22,35 @@ Transform Transform::rotateY(float degrees)
     return {m};
 }
 
+Transform Transform::rotateX(float degrees)
+{
+    const float c = std::cos(radians(degrees));
+    const float s = std::sin(radians(degrees));
+    mat4 m(1.0f);
+    m[1][1] = c; // column 1 = image of +y
+    m[1][2] = s;
+    m[2][1] = -s; // column 2 = image of +z
+    m[2][2] = c;
+    return {m};
+}
+
+Transform Transform::rotateZ(float degrees)
+{
+    const float c = std::cos(radians(degrees));
+    const float s = std::sin(radians(degrees));
+    mat4 m(1.0f);
+    m[0][0] = c; // column 0 = image of +x
+    m[0][1] = s;
+    m[1][0] = -s; // column 1 = image of +y
+    m[1][1] = c;
+    return {m};
+}
+
+Transform Transform::rotate(const vec3& axis, float degrees)
+{
+    return {glm::rotate(mat4(1.0f), radians(degrees), glm::normalize(axis))};
+}
+
 Transform Transform::scale(const vec3& s) { return {glm::scale(mat4(1.0f), s)}; }
 
 Transform Transform::inverse() const { return {glm::inverse(m)}; }

@@ -17,6 +17,11 @@ struct Transform
     static Transform translate(const vec3& t);
     /// Rotation about +y by `degrees`, counter-clockwise seen from +y (the books' rotate_y).
     static Transform rotateY(float degrees);
+    /// Rotations about +x and +z, counter-clockwise seen from the positive axis, as rotateY.
+    static Transform rotateX(float degrees);
+    static Transform rotateZ(float degrees);
+    /// Rotation by `degrees` about `axis` (any length > 0), counter-clockwise seen from its tip.
+    static Transform rotate(const vec3& axis, float degrees);
     static Transform scale(const vec3& s);
 
     Transform operator*(const Transform& rhs) const { return {m * rhs.m}; }

@@ -12,7 +12,10 @@ nlohmann::json RenderStats::toJson() const
     j["scene_options"] = {{"count", request.scene.options.count},
                           {"mesh", request.scene.options.meshPath},
                           {"translate", {moved.translation.x, moved.translation.y, moved.translation.z}},
-                          {"scale", moved.scale}};
+                          {"scale", moved.scale},
+                          {"fresnel", !request.scene.options.fresnel ? "scene"
+                                      : *request.scene.options.fresnel == shader::FresnelModel::Exact ? "exact"
+                                                                                                       : "schlick"}};
     j["engine"] = toString(engine);
     j["device"] = device;
     j["settings"] = rt::toJson(request.settings);

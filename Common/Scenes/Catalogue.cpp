@@ -3,6 +3,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "Error.h"
+#include "SceneFile/SceneFile.h"
 #include "Scenes/SceneFactories.h"
 
 namespace rt
@@ -50,18 +51,31 @@ const SceneInfo* findScene(const std::string& id)
     return nullptr;
 }
 
+namespace
+{
+Scene withOptions(Scene scene, const SceneOptions& options)
+{
+    transformScene(scene, options.transform);
+    if (options.fresnel)
+        for (MaterialData& m : scene.materials)
+            if (m.type == MaterialType::Dielectric)
+                m.fresnel = *options.fresnel;
+    return scene;
+}
+} // namespace
+
 Scene makeScene(const std::string& id, const SceneOptions& options)
 {
+    if (isSceneFilePath(id))
+        return withOptions(loadSceneFile(id), options);
     const SceneInfo* info = findScene(id);
     if (!info)
     {
         std::string known;
         for (const SceneInfo& s : sceneCatalogue())
             known += (known.empty() ? "" : ", ") + s.id;
-        throw SceneError(fmt::format("unknown scene '{}' (known: {})", id, known));
+        throw SceneError(fmt::format("unknown scene '{}' (known: {}; or a scene file: .json, .gltf, .glb)", id, known));
     }
-    Scene scene = info->build(options);
-    transformScene(scene, options.transform);
-    return scene;
+    return withOptions(info->build(options), options);
 }
 } // namespace rt

@@ -3,6 +3,7 @@
 // cornell-box-and-mesh) take it from SceneOptions.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@ struct SceneOptions
     int count = -1; // number of objects for scenes that scale (white-spheres); < 0 = the scene's default
     std::string meshPath = "meshes/bunny.obj"; // OBJ for the mesh scenes (asset-relative or a real path)
     SceneTransform transform; // the stress knobs --translate-scene, --scale-scene: applied after building
+    std::optional<shader::FresnelModel> fresnel; // --fresnel: every dielectric's model; empty: the scene's own
 
     bool operator==(const SceneOptions&) const = default;
 };
@@ -42,7 +44,8 @@ const std::vector<SceneInfo>& sceneCatalogue();
 /// nullptr if unknown.
 const SceneInfo* findScene(const std::string& id);
 
-/// Builds scene `id`, moved by options.transform. Throws SceneError naming the id and listing the known ones
+/// Builds scene `id` (a catalogue id, or a scene file: SceneFile/SceneFile.h), moved by options.transform, with
+/// options.fresnel's model on every dielectric if given. Throws SceneError naming the id and listing the known ones
 /// if unknown, AssetError if a texture or mesh it needs is missing, UsageError if the transform is refused.
 Scene makeScene(const std::string& id, const SceneOptions& options = {});
 

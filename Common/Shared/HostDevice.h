@@ -43,10 +43,16 @@ using uint = std::uint32_t;
 RT_ENUM_BEGIN(MaterialType)
 RT_ENUM_VALUE(MaterialType, Lambertian, 0)   // albedo texture; cosine-weighted scattering
 RT_ENUM_VALUE(MaterialType, Metal, 1)        // albedo texture; mirror reflection with `fuzz` sphere around it
-RT_ENUM_VALUE(MaterialType, Dielectric, 2)   // index of refraction `ior`; Fresnel by Schlick's approximation
+RT_ENUM_VALUE(MaterialType, Dielectric, 2)   // index of refraction `ior`; Fresnel reflectance by `fresnel`
 RT_ENUM_VALUE(MaterialType, DiffuseLight, 3) // emission texture only; does not scatter
 RT_ENUM_VALUE(MaterialType, Isotropic, 4)    // phase function of constant media; albedo texture
 RT_ENUM_END(MaterialType)
+
+// A dielectric's Fresnel reflectance (--fresnel; Shared/SpecularScattering.h).
+RT_ENUM_BEGIN(FresnelModel)
+RT_ENUM_VALUE(FresnelModel, Schlick, 0) // Schlick's approximation, as the books compute it
+RT_ENUM_VALUE(FresnelModel, Exact, 1)   // the unpolarised Fresnel equations, as pbrt-v4 and Mitsuba compute it
+RT_ENUM_END(FresnelModel)
 
 RT_ENUM_BEGIN(TextureType)
 RT_ENUM_VALUE(TextureType, Solid, 0)      // color0
@@ -122,7 +128,7 @@ struct MaterialData
     uint emissionTexture; // kNoIndex if the material does not emit
     float fuzz; // Metal: radius of the fuzz sphere around the mirror direction
     float ior; // Dielectric: index of refraction (inside / outside)
-    float pad0;
+    RT_TAG(FresnelModel) fresnel; // Dielectric: how its reflectance is computed
     float pad1;
     float pad2;
 };

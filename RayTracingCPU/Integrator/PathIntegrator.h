@@ -172,7 +172,8 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
             break;
         }
         case MaterialType::Dielectric:
-            wi = shader::sampleDielectric(ray.direction, ns, frontFace ? 1.0f / mat.ior : mat.ior, rng.nextFloat());
+            wi = shader::sampleDielectric(ray.direction, ns, frontFace ? 1.0f / mat.ior : mat.ior, mat.fresnel,
+                                          rng.nextFloat());
             break;
         case MaterialType::Lambertian:
         case MaterialType::Isotropic:

@@ -1,6 +1,6 @@
 // Glass (RTIOW §11), on the shared Shared/SpecularScattering.h: refraction by Snell's law, reflection under
-// total internal reflection or with Schlick's probability. The weight is 1 (clear glass). The random number
-// is drawn before the choice, as the CPU engine draws it.
+// total internal reflection or with the probability of the material's Fresnel model (Schlick's or exact).
+// The weight is 1 (clear glass). The random number is drawn before the choice, as the CPU engine draws it.
 #ifndef RT_DIELECTRIC_GLSL
 #define RT_DIELECTRIC_GLSL
 
@@ -11,7 +11,7 @@
 bool scatterDielectric(MaterialData m, SurfaceHit hit, inout Rng rng, out ScatterSample s)
 {
     float u = nextFloat(rng);
-    s.direction = sampleDielectric(hit.incoming, hit.shadingNormal, hit.frontFace ? 1.0 / m.ior : m.ior, u);
+    s.direction = sampleDielectric(hit.incoming, hit.shadingNormal, hit.frontFace ? 1.0 / m.ior : m.ior, m.fresnel, u);
     s.weight = vec3(1.0);
     return true;
 }

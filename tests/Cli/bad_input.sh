@@ -50,6 +50,7 @@ expect_error "contradicting estimators" "contradicts" --estimator nee --pdf on
 expect_error "bad light sampler" "--light-sampler" --light-sampler cosine
 expect_error "bad light selection" "--light-selection" --light-selection bvh2
 expect_error "bad roulette value" "--russian-roulette" --russian-roulette sometimes
+expect_error "bad Fresnel model" "--fresnel" --fresnel fast
 mkdir -p "$work/empty-assets"
 RT_ASSET_DIR="$work/empty-assets" expect_error "missing texture" "earth.jpg" --scene rtnw-earth
 expect_error "malformed OBJ" "malformed.obj" --scene mesh-in-one-weekend --mesh /usr/share/assimp/models/invalid/malformed.obj
@@ -88,5 +89,28 @@ expect_error "negative count" "--count" --scene many-lights --count -3
 expect_error "zero count" "--count" --scene white-spheres --count 0
 expect_error "count beyond memory" "available" --scene many-lights --count 2000000000
 expect_error "image beyond memory" "available" --width 65536
+
+# Scene files (issue 12): the bad-file tour, one line each with the file and where in it.
+scene_file() { # name, JSON text: writes $work/NAME.json
+    printf '%s\n' "$2" >"$work/$1.json"
+}
+base='"materials": [{"name": "m", "type": "lambertian", "albedo": [0.5, 0.5, 0.5]}]'
+scene_file syntax "{ $base,, }"
+scene_file unknown-key "{ $base, \"shapes\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1, \"material\": \"m\", \"colour\": 1}] }"
+scene_file wrong-type "{ $base, \"shapes\": [{\"type\": \"sphere\", \"center\": \"origin\", \"radius\": 1, \"material\": \"m\"}] }"
+scene_file negative-radius "{ $base, \"shapes\": [{\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": -1, \"material\": \"m\"}] }"
+scene_file zero-quad "{ $base, \"shapes\": [{\"type\": \"quad\", \"q\": [0, 0, 0], \"u\": [1, 0, 0], \"v\": [2, 0, 0], \"material\": \"m\"}] }"
+scene_file missing-mesh "{ $base, \"meshes\": [{\"obj\": \"gone.obj\"}], \"shapes\": [{\"type\": \"mesh\", \"mesh\": 0, \"material\": 0}] }"
+scene_file missing-texture "{ \"textures\": [{\"type\": \"image\", \"path\": \"gone.png\"}] }"
+expect_error "scene file: syntax error" "syntax.json:1:" --scene "$work/syntax.json"
+expect_error "scene file: unknown key" "/shapes/0: unknown key 'colour'" --scene "$work/unknown-key.json"
+expect_error "scene file: wrong type" "/shapes/0/center: expected an array of 3 numbers" --scene "$work/wrong-type.json"
+expect_error "scene file: negative radius" "/shapes/0/radius" --scene "$work/negative-radius.json"
+expect_error "scene file: zero-area quad" "zero area" --scene "$work/zero-quad.json"
+expect_error "scene file: missing mesh" "/meshes/0/obj: mesh 'gone.obj' not found" --scene "$work/missing-mesh.json"
+expect_error "scene file: missing texture" "/textures/0/path: texture 'gone.png' not found" --scene "$work/missing-texture.json"
+expect_error "scene file: none there" "not found" --scene "$work/nothere.json"
+expect_error "export to a non-JSON name" "--export-scene" --export-scene "$work/out.txt"
+expect_error "export into a missing folder" "does not exist" --export-scene "$work/no/such/out.json"
 
 exit $failures

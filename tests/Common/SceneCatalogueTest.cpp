@@ -308,3 +308,24 @@ TEST(SceneCatalogue, FurnaceIsAClosedEmissiveSphere)
 }
 } // namespace
 } // namespace rt
+
+namespace rt
+{
+TEST(SceneCatalogue, FresnelOptionSetsEveryDielectric)
+{
+    const auto models = [](const Scene& s) {
+        std::vector<shader::FresnelModel> out;
+        for (const MaterialData& m : s.materials)
+            if (m.type == MaterialType::Dielectric)
+                out.push_back(m.fresnel);
+        return out;
+    };
+    SceneOptions exact;
+    exact.fresnel = shader::FresnelModel::Exact;
+    const auto books = models(makeScene("rtow-final"));
+    const auto chosen = models(makeScene("rtow-final", exact));
+    ASSERT_FALSE(books.empty());
+    EXPECT_EQ(books, std::vector<shader::FresnelModel>(books.size(), shader::FresnelModel::Schlick));
+    EXPECT_EQ(chosen, std::vector<shader::FresnelModel>(books.size(), shader::FresnelModel::Exact));
+}
+} // namespace rt

@@ -31,19 +31,23 @@ struct AgreementCase
     LightSampler lightSampler = LightSampler::Projected;
     LightSelection lightSelection = LightSelection::Bvh;
     PixelSampling sampling = PixelSampling::Random;
+    bool exactFresnel = false; // --fresnel exact on every dielectric
 };
 
 void PrintTo(const AgreementCase& c, std::ostream* os)
 {
     *os << c.scene << " (" << toString(c.estimator) << ", " << toString(c.lightSampler) << ", "
         << toString(c.lightSelection) << ", " << toString(c.sampling)
-        << (c.russianRoulette ? "" : ", no roulette") << ")";
+        << (c.russianRoulette ? "" : ", no roulette") << (c.exactFresnel ? ", exact Fresnel" : "") << ")";
 }
 
 /// Renders `c` on both engines with `s` (size, spp, depth) and Z-tests every block.
 void expectAgreement(const AgreementCase& c, RenderSettings s, double maxZ)
 {
-    const Scene scene = makeScene(c.scene);
+    SceneOptions options;
+    if (c.exactFresnel)
+        options.fresnel = shader::FresnelModel::Exact;
+    const Scene scene = makeScene(c.scene, options);
     s.aspect = scene.defaults.aspect;
     s.estimator = c.estimator;
     s.russianRoulette = c.russianRoulette;
@@ -160,6 +164,9 @@ std::vector<AgreementCase> cases()
     // intersection shaders.
     for (const char* id : {"cornell-box-lights", "rtnw-final", "sphere-light-closeup"})
         out.push_back({id, Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Bvh, PixelSampling::Sobol});
+    // The exact Fresnel equations (--fresnel exact) through glass and the final scenes' glass spheres.
+    for (const char* id : {"rtrol-cornell-glass", "rtow-final"})
+        out.push_back({id, Estimator::Mixture, true, LightSampler::Projected, LightSelection::Bvh, PixelSampling::Random, true});
     return out;
 }
 
@@ -173,6 +180,8 @@ std::string caseName(const ::testing::TestParamInfo<AgreementCase>& param)
         name += std::string("_") + toString(c.lightSelection);
     if (c.sampling != PixelSampling::Random)
         name += std::string("_") + toString(c.sampling);
+    if (c.exactFresnel)
+        name += "_exact_fresnel";
     if (!c.russianRoulette)
         name += "_no_roulette";
     return ::rt::test::testNameOf(name); // '-' -> '_'

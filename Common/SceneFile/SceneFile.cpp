@@ -1,0 +1,39 @@
+#include "SceneFile/SceneFile.h"
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "Error.h"
+#include "SceneFile/JsonSceneReader.h"
+
+namespace rt
+{
+namespace
+{
+std::string lowerExtension(std::string_view path)
+{
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext;
+}
+} // namespace
+
+bool isSceneFilePath(std::string_view idOrPath)
+{
+    const std::string ext = lowerExtension(idOrPath);
+    return ext == ".json" || ext == ".gltf" || ext == ".glb";
+}
+
+Scene loadSceneFile(const std::filesystem::path& file)
+{
+    if (!std::filesystem::is_regular_file(file))
+        throw SceneError(fmt::format("scene file '{}' not found", file.string()));
+    const std::string ext = lowerExtension(file.string());
+    if (ext == ".json")
+        return readJsonScene(file);
+    throw SceneError(fmt::format("{}: glTF scenes are not supported yet", file.string()));
+}
+} // namespace rt

@@ -1,0 +1,18 @@
+// Scenes from files, beside the built-in catalogue: wherever a scene id is taken, a path ending in .json
+// (this project's format, docs/SCENES.md) or .gltf/.glb (glTF 2.0) names a file instead.
+#pragma once
+
+#include <filesystem>
+#include <string_view>
+
+#include "Scene/Scene.h"
+
+namespace rt
+{
+/// True if `idOrPath` names a scene file by its extension (case-insensitive), whether or not it exists.
+bool isSceneFilePath(std::string_view idOrPath);
+
+/// Reads the scene in `file` by its extension. Throws SceneError (missing, malformed or inconsistent file,
+/// with its location), AssetError (a texture or mesh it names).
+Scene loadSceneFile(const std::filesystem::path& file);
+} // namespace rt
