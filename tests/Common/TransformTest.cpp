@@ -116,5 +116,23 @@ TEST(UniformScale, RejectsNonUniformScalesAndMirrors)
     EXPECT_FALSE(Transform::scale(vec3(-2.0f)).uniformScale().has_value());
     EXPECT_FALSE(Transform::scale(vec3(0.0f)).uniformScale().has_value());
 }
+
+TEST(Transform, AxisRotationsAreRightHandedAndAgreeWithTheGeneralAxisForm)
+{
+    // Counter-clockwise seen from the positive axis: x -> y about z, y -> z about x, z -> x about y.
+    expectNear(Transform::rotateZ(90.0f).point({1, 0, 0}), {0, 1, 0}, 1e-6f);
+    expectNear(Transform::rotateX(90.0f).point({0, 1, 0}), {0, 0, 1}, 1e-6f);
+    expectNear(Transform::rotateY(90.0f).point({0, 0, 1}), {1, 0, 0}, 1e-6f);
+    // The exact sine/cosine forms against glm's Rodrigues form, at angles that are not multiples of 90.
+    const vec3 p(0.3f, -1.7f, 2.2f);
+    for (const float degrees : {-170.0f, -33.3f, 12.5f, 71.0f, 200.0f})
+    {
+        expectNear(Transform::rotateX(degrees).point(p), Transform::rotate({2, 0, 0}, degrees).point(p), 1e-5f);
+        expectNear(Transform::rotateY(degrees).point(p), Transform::rotate({0, 0.5f, 0}, degrees).point(p), 1e-5f);
+        expectNear(Transform::rotateZ(degrees).point(p), Transform::rotate({0, 0, 3}, degrees).point(p), 1e-5f);
+    }
+    EXPECT_TRUE(Transform::rotateX(0.0f).isIdentity());
+    EXPECT_TRUE(Transform::rotateZ(0.0f).isIdentity());
+}
 } // namespace
 } // namespace rt
