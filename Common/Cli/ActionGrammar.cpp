@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 
 #include <spdlog/fmt/fmt.h>
@@ -9,6 +10,7 @@
 #include "Cli/ValueParsing.h"
 #include "Error.h"
 #include "Render/RenderSettings.h"
+#include "SceneFile/SceneFile.h"
 #include "Scenes/Catalogue.h"
 
 namespace rt
@@ -128,8 +130,17 @@ std::string actionScriptHelp(const std::vector<ActionSpec>& specs)
 std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long long sppMinimum)
 {
     return {
-        {"scene", ActionValue::Text, "ID", "switch to a catalogue scene (--list-scenes)", 0, 1e30,
-         [](const std::string& id) { return findScene(id) != nullptr; }},
+        {"scene", ActionValue::Text, "ID|FILE",
+         "switch to a catalogue scene (--list-scenes) or a scene file (.json, .gltf, .glb; reloaded when it changes)",
+         0, 1e30,
+         [](const std::string& id) {
+             return findScene(id) != nullptr || (isSceneFilePath(id) && std::filesystem::is_regular_file(id));
+         }},
+        {"fresnel", ActionValue::Text, "scene|schlick|exact", "every dielectric's reflectance (--fresnel)", 0, 1e30,
+         [](const std::string& v) {
+             std::optional<shader::FresnelModel> model;
+             return parseFresnelOption(v, model);
+         }},
         {"spp", ActionValue::Integer, "N", sppMeaning, double(sppMinimum)},
         {"depth", ActionValue::Integer, "N", "ray segments per path at most", 1},
         {"estimator", ActionValue::Text, "bsdf|mixture|nee|nee-mis", "how paths gather light (--estimator)", 0, 1e30,
@@ -145,6 +156,7 @@ std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long lo
         {"save", ActionValue::Text, "FILE.png", "save the image shown: FILE.png and the linear FILE.pfm", 0, 1e30,
          [](const std::string& path) { return path.size() > 4 && path.ends_with(".png"); }},
         {"frames", ActionValue::Integer, "N", "let N frames pass", 0},
+        {"sleep", ActionValue::Real, "SECONDS", "let SECONDS of wall-clock time pass, drawing frames", 0, 600},
         {"theme", ActionValue::Text, "dark|light", "colour theme of the panel", 0, 1e30,
          [](const std::string& v) { return v == "dark" || v == "light"; }},
         {"font-size", ActionValue::Integer, "PIXELS", "height of the panel's font", 10, 32},

@@ -53,10 +53,10 @@ std::vector<ScriptedAction> parseActionScript(std::string_view script, const std
 /// One line per spec, "  name=PLACEHOLDER   meaning", for --help.
 std::string actionScriptHelp(const std::vector<ActionSpec>& specs);
 
-/// The actions both windows have: scene=ID (a catalogue id), spp=N, depth=N, estimator=NAME, pdf=on|off,
-/// russian-roulette=on|off,
-/// unidirectional-light=on|off, resize=WxH, save=FILE.png, frames=N (let N frames pass), theme=dark|light,
-/// font-size=PIXELS. `sppMeaning` says what spp means in the window (the render's samples per pixel, or
+/// The actions both windows have: scene=ID|FILE (a catalogue id or an existing scene file), fresnel=NAME,
+/// spp=N, depth=N, estimator=NAME, pdf=on|off, russian-roulette=on|off, unidirectional-light=on|off,
+/// resize=WxH, save=FILE.png, frames=N (let N frames pass), sleep=SECONDS (let that much time pass),
+/// theme=dark|light, font-size=PIXELS. `sppMeaning` says what spp means in the window (the render's samples per pixel, or
 /// where accumulation stops).
 std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long long sppMinimum);
 

@@ -14,6 +14,7 @@
 #include "Render/MemoryBudget.h"
 #include "SceneFile/JsonSceneWriter.h"
 #include "SceneFile/SceneFile.h"
+#include "SceneFile/SceneFileWatch.h"
 
 namespace rt
 {
@@ -49,13 +50,13 @@ SceneTransform sceneTransform(const std::string& translate, const std::string& s
 
 SceneRef CommonOptions::sceneRef() const
 {
-    SceneRef ref{.id = scene};
+    SceneRef ref{.id = scene, .fileVersion = sceneFileVersion(scene)};
     ref.options.count = count.value_or(-1);
     if (!mesh.empty())
         ref.options.meshPath = mesh;
     ref.options.transform = sceneTransform(translateScene, scaleScene);
     if (fresnel)
-        ref.options.fresnel = *fresnel == "exact" ? shader::FresnelModel::Exact : shader::FresnelModel::Schlick;
+        parseFresnelOption(*fresnel, ref.options.fresnel); // CLI11 has checked the name
     return ref;
 }
 

@@ -5,6 +5,7 @@
 // timings table) without anyone remembering to add it.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "Render/RenderSettings.h"
@@ -15,8 +16,11 @@ namespace rt
 /// A scene as the catalogue builds it: equal references build equal scenes.
 struct SceneRef
 {
-    std::string id = "cornell-box-lights";
+    std::string id = "cornell-box-lights"; // a catalogue id or a scene file's path (SceneFile.h)
     SceneOptions options;
+    /// For a scene file: the version (sceneFileVersion, SceneFileWatch.h) the request saw; a window that
+    /// notices a newer one changes it, so that every "same scene?" check rebuilds the scene. 0 otherwise.
+    std::int64_t fileVersion = 0;
 
     bool operator==(const SceneRef&) const = default;
 };

@@ -13,9 +13,7 @@ nlohmann::json RenderStats::toJson() const
                           {"mesh", request.scene.options.meshPath},
                           {"translate", {moved.translation.x, moved.translation.y, moved.translation.z}},
                           {"scale", moved.scale},
-                          {"fresnel", !request.scene.options.fresnel ? "scene"
-                                      : *request.scene.options.fresnel == shader::FresnelModel::Exact ? "exact"
-                                                                                                       : "schlick"}};
+                          {"fresnel", fresnelOptionName(request.scene.options.fresnel)}};
     j["engine"] = toString(engine);
     j["device"] = device;
     j["settings"] = rt::toJson(request.settings);

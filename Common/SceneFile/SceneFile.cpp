@@ -27,6 +27,11 @@ bool isSceneFilePath(std::string_view idOrPath)
     return ext == ".json" || ext == ".gltf" || ext == ".glb";
 }
 
+std::string sceneShortName(std::string_view idOrPath)
+{
+    return isSceneFilePath(idOrPath) ? std::filesystem::path(idOrPath).stem().string() : std::string(idOrPath);
+}
+
 Scene loadSceneFile(const std::filesystem::path& file)
 {
     if (!std::filesystem::is_regular_file(file))

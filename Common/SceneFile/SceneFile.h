@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 #include "Scene/Scene.h"
@@ -11,6 +12,10 @@ namespace rt
 {
 /// True if `idOrPath` names a scene file by its extension (case-insensitive), whether or not it exists.
 bool isSceneFilePath(std::string_view idOrPath);
+
+/// A name for output files and window titles: a catalogue id as it is, a scene file's stem
+/// ("scenes/lamp.json" gives "lamp").
+std::string sceneShortName(std::string_view idOrPath);
 
 /// Reads the scene in `file` by its extension. Throws SceneError (missing, malformed or inconsistent file,
 /// with its location), AssetError (a texture or mesh it names).

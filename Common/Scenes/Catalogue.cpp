@@ -51,6 +51,26 @@ const SceneInfo* findScene(const std::string& id)
     return nullptr;
 }
 
+const char* fresnelOptionName(const std::optional<shader::FresnelModel>& fresnel)
+{
+    if (!fresnel)
+        return "scene";
+    return *fresnel == shader::FresnelModel::Exact ? "exact" : "schlick";
+}
+
+bool parseFresnelOption(std::string_view text, std::optional<shader::FresnelModel>& fresnel)
+{
+    if (text == "scene")
+        fresnel.reset();
+    else if (text == "schlick")
+        fresnel = shader::FresnelModel::Schlick;
+    else if (text == "exact")
+        fresnel = shader::FresnelModel::Exact;
+    else
+        return false;
+    return true;
+}
+
 namespace
 {
 Scene withOptions(Scene scene, const SceneOptions& options)

@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "Scene/Scene.h"
@@ -43,6 +44,13 @@ const std::vector<SceneInfo>& sceneCatalogue();
 
 /// nullptr if unknown.
 const SceneInfo* findScene(const std::string& id);
+
+/// The names of SceneOptions::fresnel's values, as --fresnel, the windows' actions and --stats write them:
+/// "scene" (empty: every dielectric keeps its own model), "schlick", "exact".
+const char* fresnelOptionName(const std::optional<shader::FresnelModel>& fresnel);
+
+/// Reads a name fresnelOptionName gives into `fresnel`; false (and `fresnel` untouched) for any other text.
+bool parseFresnelOption(std::string_view text, std::optional<shader::FresnelModel>& fresnel);
 
 /// Builds scene `id` (a catalogue id, or a scene file: SceneFile/SceneFile.h), moved by options.transform, with
 /// options.fresnel's model on every dielectric if given. Throws SceneError naming the id and listing the known ones

@@ -84,6 +84,13 @@ bool ActionScript::run(const Action& a, Session& session, GlWindow& window)
     const std::string& v = a.value;
     if (a.name == "scene")
         return check(session.setScene(v));
+    if (a.name == "fresnel")
+    {
+        std::optional<shader::FresnelModel> model;
+        parseFresnelOption(v, model); // the grammar has checked the name
+        session.setFresnel(model);
+        return true;
+    }
     if (a.name == "spp")
         return check(session.setSpp(int(a.integer())));
     if (a.name == "depth")
@@ -177,6 +184,14 @@ bool ActionScript::run(const Action& a, Session& session, GlWindow& window)
         if (!m_waiting)
             m_framesLeft = int(a.integer());
         return m_framesLeft-- <= 0;
+    }
+    if (a.name == "sleep")
+    {
+        const auto now = std::chrono::steady_clock::now();
+        if (!m_waiting)
+            m_sleepUntil = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                     std::chrono::duration<double>(a.real()));
+        return now >= m_sleepUntil;
     }
     if (a.name == "resize")
     {

@@ -2,6 +2,8 @@
 // the Session command its widget calls; one runs per frame, and the waiting ones hold the script over frames.
 #pragma once
 
+#include <chrono>
+
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -34,6 +36,7 @@ private:
     std::size_t m_next = 0;
     bool m_waiting = false; // the current action has started waiting
     int m_framesLeft = 0;
+    std::chrono::steady_clock::time_point m_sleepUntil{};
     int m_finishedBefore = 0;
     int m_failures = 0;
 };

@@ -7,6 +7,7 @@
 
 #include "Error.h"
 #include "Image/ImageIO.h"
+#include "SceneFile/SceneFile.h"
 
 namespace rt::gui
 {
@@ -18,6 +19,7 @@ nlohmann::json toJson(const RenderRequest& request)
     return {{"scene", request.scene.id},
             {"count", request.scene.options.count},
             {"mesh", request.scene.options.meshPath},
+            {"fresnel", fresnelOptionName(request.scene.options.fresnel)},
             {"spp", r.spp},
             {"true_spp", r.trueSpp()},
             {"depth", r.depth},
@@ -48,6 +50,7 @@ const char* toString(GpuStartup::State state)
 Session::Session(RenderJob& job, const RenderRequest& image, EngineKind engine, bool loop)
     : m_job(job), m_image(image), m_engine(engine), m_loop(loop), m_gpu(job.gpuStatus())
 {
+    m_watch.watch(m_image.scene.id, m_image.scene.fileVersion);
     render(); // the window opens on the command line's render
 }
 
@@ -66,17 +69,24 @@ bool Session::tryImage(const RenderRequest& candidate)
     return true;
 }
 
-bool Session::setScene(const std::string& id)
+bool Session::setScene(const std::string& idOrPath)
 {
-    if (!findScene(id))
+    const bool file = isSceneFilePath(idOrPath);
+    if (file ? !std::filesystem::is_regular_file(idOrPath) : !findScene(idOrPath))
     {
-        note(fmt::format("no scene '{}'", id), true);
+        note(file ? fmt::format("scene file '{}' not found", idOrPath) : fmt::format("no scene '{}'", idOrPath), true);
         return false;
     }
     RenderRequest s = m_image;
-    s.scene.id = id;
-    return tryImage(s);
+    s.scene.id = idOrPath;
+    s.scene.fileVersion = sceneFileVersion(idOrPath);
+    if (!tryImage(s))
+        return false;
+    m_watch.watch(idOrPath, s.scene.fileVersion);
+    return true;
 }
+
+void Session::setFresnel(std::optional<shader::FresnelModel> fresnel) { m_image.scene.options.fresnel = fresnel; }
 
 bool Session::setSpp(int spp)
 {
@@ -203,7 +213,7 @@ std::string Session::suggestedImageName() const
 {
     const RenderRequest& s = m_preview ? m_preview->request.image : m_image;
     const RenderSettings& r = s.settings;
-    return fmt::format("{}_{}x{}_{}spp_{}.png", s.scene.id, r.width, r.height(), m_preview ? m_preview->samples : r.trueSpp(),
+    return fmt::format("{}_{}x{}_{}spp_{}.png", sceneShortName(s.scene.id), r.width, r.height(), m_preview ? m_preview->samples : r.trueSpp(),
                        toString(m_preview ? m_preview->request.engine : m_engine));
 }
 
@@ -216,6 +226,12 @@ void Session::update()
     {
         m_engine = EngineKind::Multi;
         note("the GPU engine is unavailable (" + m_gpu.detail + "): switched to multi core", true);
+    }
+    if (const auto version = m_watch.poll(SceneFileWatch::Clock::now()); version && m_watch.path() == m_image.scene.id)
+    {
+        spdlog::info("{} changed on disk: reloading it", m_image.scene.id);
+        m_image.scene.fileVersion = *version;
+        ++m_sceneReloads;
     }
     if (m_requested != m_image)
         render();
@@ -264,6 +280,7 @@ nlohmann::json Session::stateJson() const
             {"gpu", {{"state", toString(m_gpu.state)}, {"detail", m_gpu.detail}}},
             {"finished_renders", m_finished},
             {"failed_renders", m_failed},
+            {"scene_reloads", m_sceneReloads},
             {"message", m_message}};
 }
 } // namespace rt::gui

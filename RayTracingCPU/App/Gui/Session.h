@@ -14,6 +14,7 @@
 #include "App/Gui/PanelSettings.h"
 #include "App/Gui/RenderJob.h"
 #include "App/Gui/TimingsTable.h"
+#include "SceneFile/SceneFileWatch.h"
 
 namespace rt::gui
 {
@@ -24,7 +25,9 @@ public:
     Session(RenderJob& job, const RenderRequest& image, EngineKind engine, bool loop);
 
     // Image settings. Each returns false, with message(), for a value the engines would refuse.
-    bool setScene(const std::string& id);
+    /// A catalogue id or an existing scene file (.json, .gltf, .glb), which update() then reloads whenever
+    /// it changes on disk; the image on screen stays when the new version fails to load.
+    bool setScene(const std::string& idOrPath);
     bool setSpp(int spp);
     bool setDepth(int depth);
     bool setWidth(int width);
@@ -32,6 +35,8 @@ public:
     bool setSeed(long long seed);
     /// white-spheres' sphere count; negative: the scene's default.
     bool setCount(int count);
+    /// Every dielectric's Fresnel model; empty: each material's own (--fresnel).
+    void setFresnel(std::optional<shader::FresnelModel> fresnel);
     void setSampling(PixelSampling sampling);
     void setEstimator(Estimator estimator);
     void setRussianRoulette(bool on);
@@ -57,8 +62,8 @@ public:
     void setFont(const std::string& font) { m_display.font = font; }
     void setFontSize(float pixels);
 
-    /// Once per frame: starts a render when the image settings differ from the last request's, collects
-    /// the render thread's outcomes and newest preview.
+    /// Once per frame: notices a new version of the scene file, starts a render when the image settings
+    /// differ from the last request's, collects the render thread's outcomes and newest preview.
     void update();
 
     const RenderRequest& image() const { return m_image; }
@@ -87,6 +92,7 @@ private:
 
     RenderJob& m_job;
     RenderRequest m_image;
+    SceneFileWatch m_watch;
     EngineKind m_engine;
     bool m_loop;
     DisplaySettings m_display;
@@ -100,5 +106,6 @@ private:
     TimingsTable m_timings;
     int m_finished = 0;
     int m_failed = 0;
+    int m_sceneReloads = 0; // new versions of the scene file noticed
 };
 } // namespace rt::gui

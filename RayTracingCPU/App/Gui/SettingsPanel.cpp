@@ -99,6 +99,11 @@ void SettingsPanel::drawRenderingParameters(Session& session)
         }
         ImGui::EndCombo();
     }
+    ImGui::InputTextWithHint("##scene-file", "scene file: .json, .gltf, .glb", &m_sceneFile);
+    ImGui::SameLine();
+    if (ImGui::Button("Load") && !m_sceneFile.empty())
+        session.setScene(m_sceneFile);
+    tooltip("render a scene file (docs/SCENES.md); the window renders it again whenever it changes on disk");
     if (ImGui::SmallButton("Scene defaults"))
         session.applySceneDefaults();
     tooltip("the scene's own spp, depth, width, aspect ratio and light mode");
@@ -139,6 +144,18 @@ void SettingsPanel::drawRenderingParameters(Session& session)
         tooltip(spheres ? "number of white spheres (-1: the scene's default, 20000)"
                         : "number of small lights (-1: the scene's default, 1000)");
     }
+
+    const std::optional<shader::FresnelModel> fresnel = request.scene.options.fresnel;
+    if (ImGui::BeginCombo("Fresnel", fresnelOptionName(fresnel)))
+    {
+        for (const auto& choice : {std::optional<shader::FresnelModel>{}, std::optional(shader::FresnelModel::Schlick),
+                                   std::optional(shader::FresnelModel::Exact)})
+            if (ImGui::Selectable(fresnelOptionName(choice), choice == fresnel))
+                session.setFresnel(choice);
+        ImGui::EndCombo();
+    }
+    tooltip("every dielectric's reflectance: scene (each material's own: Schlick in the books' scenes), schlick "
+            "(Schlick's approximation) or exact (the unpolarised Fresnel equations)");
 
     drawEngineChoice(session);
 

@@ -23,6 +23,7 @@ private:
     void drawRenderControls(Session& session);
     void drawSaveImage(Session& session);
 
+    std::string m_sceneFile; // the path typed beside Load
     std::string m_savePath; // follows the suggested name until the user edits it
     bool m_savePathEdited = false;
 };

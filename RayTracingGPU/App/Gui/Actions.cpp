@@ -6,6 +6,7 @@
 
 #include "Cli/ValueParsing.h"
 #include "Error.h"
+#include "Scenes/Catalogue.h"
 
 namespace rt::gpu::gui
 {
@@ -82,10 +83,16 @@ std::vector<Action> parseActions(const std::string& script) { return parseAction
 bool applyAction(const Action& a, Controls& c)
 {
     const std::string& n = a.name;
-    if (n == "frames")
+    if (n == "frames" || n == "sleep")
         return false;
     if (n == "scene")
         c.selectScene(a.value);
+    else if (n == "fresnel")
+    {
+        std::optional<shader::FresnelModel> model;
+        parseFresnelOption(a.value, model); // the grammar has checked the name
+        c.setFresnel(model);
+    }
     else if (n == "spp")
         c.setTargetSpp(int(a.integer()));
     else if (n == "depth")
@@ -142,6 +149,8 @@ bool applyAction(const Action& a, Controls& c)
 }
 
 int waitFrames(const Action& action) { return action.name == "frames" ? int(action.integer()) : 0; }
+
+double waitSeconds(const Action& action) { return action.name == "sleep" ? double(action.real()) : 0.0; }
 
 std::string actionHelp() { return actionScriptHelp(specs()); }
 } // namespace rt::gpu::gui

@@ -6,15 +6,31 @@
 
 #include "App/Gui/CameraController.h"
 #include "Error.h"
+#include "SceneFile/SceneFile.h"
 #include "Scenes/Catalogue.h"
 
 namespace rt::gpu::gui
 {
-void Controls::selectScene(const std::string& id)
+void Controls::selectScene(const std::string& idOrPath)
 {
-    if (!findScene(id))
-        throw SceneError(fmt::format("unknown scene '{}' (--list-scenes lists them)", id));
-    m_state->sceneRequest = id;
+    if (isSceneFilePath(idOrPath))
+    {
+        if (!std::filesystem::is_regular_file(idOrPath))
+            throw SceneError(fmt::format("scene file '{}' not found", idOrPath));
+    }
+    else if (!findScene(idOrPath))
+        throw SceneError(fmt::format("unknown scene '{}' (--list-scenes lists them)", idOrPath));
+    m_state->sceneRequest = idOrPath;
+}
+
+void Controls::setFresnel(std::optional<shader::FresnelModel> fresnel)
+{
+    SceneOptions& options = m_state->image.request.scene.options;
+    if (options.fresnel == fresnel)
+        return;
+    options.fresnel = fresnel;
+    if (!m_state->sceneRequest)
+        m_state->sceneRequest = m_state->image.request.scene.id; // the materials are the scene's: build it again
 }
 
 void Controls::setRayTracing(bool on) { m_state->image.rayTracing = on; }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "App/Gui/WindowState.h"
@@ -18,8 +19,12 @@ class Controls final
 public:
     explicit Controls(WindowState& state) : m_state(&state) {}
 
-    /// Asks for scene `id` (built by the frame loop). Throws rt::SceneError for an id not in the catalogue.
-    void selectScene(const std::string& id);
+    /// Asks for scene `idOrPath` (built by the frame loop): a catalogue id or a scene file (.json, .gltf,
+    /// .glb), which the window then reloads whenever it changes on disk. Throws rt::SceneError for an id not
+    /// in the catalogue or a scene file that does not exist.
+    void selectScene(const std::string& idOrPath);
+    /// Every dielectric's Fresnel model (empty: each material's own); rebuilds the scene when it changes.
+    void setFresnel(std::optional<shader::FresnelModel> fresnel);
     void setRayTracing(bool on);
     void setAccumulate(bool on);
     void setHeatmap(bool on); // stays off without the shader clock (WindowState::costAvailable)

@@ -1,9 +1,12 @@
 #include "App/Gui/Panel.h"
 
+#include <utility>
+
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
 #include "App/Gui/CameraController.h"
+#include "Error.h"
 #include "Image/ImageIO.h"
 #include "Scenes/Catalogue.h"
 #include "Shared/HeatmapPalette.h"
@@ -17,7 +20,7 @@ ImU32 displayColor(const vec3& linear)
     return IM_COL32(linearToSrgb8(linear.x), linearToSrgb8(linear.y), linearToSrgb8(linear.z), 255);
 }
 
-void sceneSection(Controls& controls, const WindowState& state, const PanelInfo& info)
+void sceneSection(Controls& controls, const WindowState& state, const PanelInfo& info, PanelState& panel)
 {
     const SceneInfo* current = findScene(state.image.request.scene.id);
     if (ImGui::BeginCombo("Scene", current ? current->title.c_str() : state.image.request.scene.id.c_str()))
@@ -27,8 +30,44 @@ void sceneSection(Controls& controls, const WindowState& state, const PanelInfo&
                 controls.selectScene(scene.id);
         ImGui::EndCombo();
     }
+    ImGui::InputTextWithHint("##scene-file", "scene file: .json, .gltf, .glb", &panel.sceneFile);
+    ImGui::SameLine();
+    if (ImGui::Button("Load") && !panel.sceneFile.empty())
+    {
+        panel.loadError.clear();
+        try
+        {
+            controls.selectScene(panel.sceneFile);
+        }
+        catch (const Error& e)
+        {
+            panel.loadError = e.what();
+        }
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("A scene file (docs/SCENES.md); the window reloads it whenever it changes on disk");
+    const std::optional<shader::FresnelModel> fresnel = state.image.request.scene.options.fresnel;
+    if (ImGui::BeginCombo("Fresnel", fresnelOptionName(fresnel)))
+    {
+        for (const auto& choice : {std::optional<shader::FresnelModel>{}, std::optional(shader::FresnelModel::Schlick),
+                                   std::optional(shader::FresnelModel::Exact)})
+            if (ImGui::Selectable(fresnelOptionName(choice), choice == fresnel))
+                controls.setFresnel(choice);
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Every dielectric's reflectance: scene (each material's own: Schlick in the books' "
+                          "scenes), schlick (Schlick's approximation) or exact (the unpolarised Fresnel equations)");
+    const ImVec4 warning(1.0f, 0.8f, 0.2f, 1.0f);
     if (!info.building.empty())
-        ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "Building %s...", info.building.c_str());
+        ImGui::TextColored(warning, "Building %s...", info.building.c_str());
+    for (const std::string* error : {&std::as_const(panel.loadError), &info.sceneError})
+        if (!error->empty())
+        {
+            ImGui::PushStyleColor(ImGuiCol_Text, warning);
+            ImGui::TextWrapped("%s", error->c_str());
+            ImGui::PopStyleColor();
+        }
 }
 
 void rayTracingSection(Controls& controls, const WindowState& state)
@@ -177,7 +216,7 @@ void drawPanel(Controls& controls, const WindowState& state, const PanelInfo& in
             controls.setFontScale(scale);
     }
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen))
-        sceneSection(controls, state, info);
+        sceneSection(controls, state, info, panel);
     if (ImGui::CollapsingHeader("Ray tracing", ImGuiTreeNodeFlags_DefaultOpen))
         rayTracingSection(controls, state);
     if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen))

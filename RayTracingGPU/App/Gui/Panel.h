@@ -18,6 +18,7 @@ struct PanelInfo
     std::string device;
     bool costAvailable = false; // the device has the shader clock: the profiler section exists
     std::string building; // the scene being built, empty when none
+    std::string sceneError; // why the last scene build failed (the scene on screen stayed), empty when none
     std::string message; // the last error or saved file
     double framesPerSecond = 0.0;
     double megaSamplesPerSecond = 0.0; // camera samples (paths) per second, in millions
@@ -31,6 +32,8 @@ struct PanelInfo
 struct PanelState
 {
     std::string savePath = "ray-tracing-gpu.png";
+    std::string sceneFile; // the path typed beside Load
+    std::string loadError; // why Load refused the path
 };
 
 void drawPanel(Controls& controls, const WindowState& state, const PanelInfo& info, PanelState& panel);

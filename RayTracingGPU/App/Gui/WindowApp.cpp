@@ -21,6 +21,7 @@
 #include "Engine/SceneTracer.h"
 #include "Error.h"
 #include "Image/ImageIO.h"
+#include "SceneFile/SceneFileWatch.h"
 
 namespace rt::gpu::gui
 {
@@ -63,6 +64,7 @@ public:
         if (options.initial.image.heatmap && !m_state.costAvailable)
             spdlog::warn("the device has no VK_KHR_shader_clock: no heatmap");
         showScene(*m_scene);
+        m_watch.watch(m_state.image.request.scene.id, m_state.image.request.scene.fileVersion);
         spdlog::info("window on '{}': {} images, format {}, present mode {}, shader clock {}",
                      m_engine.deviceName(), m_presenter.imageCount(), static_cast<int>(m_presenter.format()),
                      static_cast<int>(m_presenter.presentMode()), m_state.costAvailable ? "yes" : "no");
@@ -90,6 +92,7 @@ public:
             last = now;
             finishSceneBuild();
             runAutomation();
+            pollSceneFile();
             startSceneBuild();
             applyRequests();
             if (m_window.framebufferSize().width == 0 || m_window.framebufferSize().height == 0)
@@ -139,8 +142,24 @@ private:
             return; // one build at a time; a newer request waits for it
         m_loadingId = *m_state.sceneRequest;
         m_state.sceneRequest.reset();
-        const SceneRef ref{.id = m_loadingId, .options = m_state.image.request.scene.options};
+        // The version is read before the file: an edit saved while it is being read is noticed afterwards.
+        const SceneRef ref{.id = m_loadingId,
+                           .options = m_state.image.request.scene.options,
+                           .fileVersion = sceneFileVersion(m_loadingId)};
+        m_watch.watch(ref.id, ref.fileVersion);
+        m_loadingVersion = ref.fileVersion;
         m_loading = std::async(std::launch::async, [ref] { return buildScene(ref); });
+    }
+
+    /// A new version of the scene file asked for last is built as if selected again; the scene on screen
+    /// stays until it has been built, and stays for good when it fails.
+    void pollSceneFile()
+    {
+        const std::optional<std::int64_t> version = m_watch.poll(Clock::now());
+        if (!version || m_state.sceneRequest)
+            return;
+        spdlog::info("{} changed on disk: reloading it", m_watch.path());
+        m_state.sceneRequest = m_watch.path();
     }
 
     void finishSceneBuild()
@@ -161,11 +180,14 @@ private:
                 throw;
             }
             m_scene = std::move(scene);
+            m_state.image.request.scene.fileVersion = m_loadingVersion;
             m_message.clear();
+            m_sceneError.clear();
         }
         catch (const Error& e)
         {
             m_message = e.what();
+            m_sceneError = e.what();
             if (automated())
                 throw;
             spdlog::error("{}", e.what());
@@ -181,19 +203,25 @@ private:
             --m_waitFrames;
             return;
         }
+        if (Clock::now() < m_sleepUntil)
+            return;
         if (m_nextAction < m_options.actions.size())
         {
             const Action& action = m_options.actions[m_nextAction++];
             spdlog::debug("action {}={}", action.name, action.value);
             if (!applyAction(action, m_controls))
+            {
                 m_waitFrames = waitFrames(action);
+                m_sleepUntil = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                                  std::chrono::duration<double>(waitSeconds(action)));
+            }
         }
     }
 
     bool actionsDone() const
     {
-        return m_nextAction >= m_options.actions.size() && m_waitFrames == 0 && !m_loading.valid() &&
-               !m_state.sceneRequest;
+        return m_nextAction >= m_options.actions.size() && m_waitFrames == 0 && Clock::now() >= m_sleepUntil &&
+               !m_loading.valid() && !m_state.sceneRequest;
     }
 
     void applyRequests()
@@ -241,6 +269,7 @@ private:
         info.device = m_engine.deviceName();
         info.costAvailable = m_state.costAvailable;
         info.building = m_loading.valid() ? m_loadingId : std::string();
+        info.sceneError = m_sceneError;
         info.message = m_message;
         info.framesPerSecond = m_throughput.framesPerSecond();
         info.megaSamplesPerSecond = m_throughput.samplesPerSecond() * 1e-6;
@@ -365,7 +394,10 @@ private:
 
     std::future<Scene> m_loading;
     std::string m_loadingId;
+    std::int64_t m_loadingVersion = 0;
+    SceneFileWatch m_watch; // the scene file asked for last
     std::string m_message;
+    std::string m_sceneError;
     ImageSettings m_traced; // the settings of the samples in the accumulation image
     bool m_needsClear = true; // new images, or a new scene behind them
     std::uint32_t m_nextSample = 0;
@@ -375,6 +407,7 @@ private:
 
     std::size_t m_nextAction = 0;
     int m_waitFrames = 0;
+    Clock::time_point m_sleepUntil{};
     int m_framesAfterActions = 0;
     bool m_done = false;
 };

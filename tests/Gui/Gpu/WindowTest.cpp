@@ -2,11 +2,13 @@
 // with --frames/--screenshot/--actions and the tests look at what it saved. Each test skips, saying why, when
 // there is no display or no Vulkan device that can present to it.
 // RT_GUI_KEEP=<folder> keeps the screenshots for a person to look at.
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <regex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -259,6 +261,66 @@ TEST(GpuWindow, StressSwitchesResizesAndMinimisesWithoutValidationMessages)
     keep(dir / "stress.png");
     EXPECT_EQ(s.width, 480);
     EXPECT_EQ(s.height, 300);
+}
+/// A camera facing a quad light that fills the view, of radiance `rgb`, and a small glass sphere.
+std::string lightScene(const char* rgb)
+{
+    return std::string(R"({"format": "ray-tracing-scene", "version": 1,
+        "camera": {"look_from": [0, 0, 5], "look_at": [0, 0, 0], "vfov": 40},
+        "materials": [{"name": "light", "type": "diffuse_light", "radiance": )") +
+           rgb + R"(},
+                      {"name": "glass", "type": "dielectric", "ior": 1.5}],
+        "shapes": [{"type": "quad", "q": [-10, -10, 0], "u": [20, 0, 0], "v": [0, 20, 0], "material": "light"},
+                   {"type": "sphere", "center": [3, 3, 1], "radius": 0.2, "material": "glass"}]})";
+}
+
+vec3 meanRadiance(const Image& image)
+{
+    vec3 sum(0.0f);
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            sum += image.at(x, y);
+    return sum / float(image.pixelCount());
+}
+
+TEST(GpuWindow, ReloadsTheSceneFileWhenItChangesOnDisk)
+{
+    const ::rt::test::ScratchDir dir;
+    const std::filesystem::path scene = dir.write("lamp.json", lightScene("[1, 0, 0]"));
+    const std::filesystem::path first = dir / "first.png", second = dir / "second.png";
+    // The editor: once the window has saved its first image, the light turns green (written whole, then
+    // renamed, as editors save). The window must notice within its half-second poll and sleep=4 allows
+    // for a slow rebuild on a loaded machine.
+    std::thread editor([&] {
+        for (int i = 0; i < 1200 && !std::filesystem::exists(first); ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        std::this_thread::sleep_for(std::chrono::milliseconds(1100)); // file systems with one-second stamps
+        dir.write("lamp.json.tmp", lightScene("[0, 1, 0]"));
+        std::filesystem::rename(dir / "lamp.json.tmp", scene);
+    });
+    const AppRun run = runApp("--width 64 --aspect 1 --validation --scene rtow-final --depth 4 --frames 1 "
+                              "--actions 'scene=" + scene.string() + ";frames=3;save=" + first.string() +
+                              ";sleep=4;frames=3;save=" + second.string() + ";fresnel=exact;frames=2'");
+    editor.join();
+    if (const std::string why = unavailable(run); !why.empty())
+        GTEST_SKIP() << "no display-capable Vulkan device: " << why;
+    ASSERT_EQ(run.status, 0) << run.output;
+    EXPECT_EQ(run.output.find("Vulkan validation"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("lamp.json changed on disk: reloading it"), std::string::npos) << run.output;
+    const vec3 red = meanRadiance(readPfm(dir / "first.pfm"));
+    const vec3 green = meanRadiance(readPfm(dir / "second.pfm"));
+    EXPECT_GT(red.x, 0.9f);
+    EXPECT_LT(red.y, 0.05f);
+    EXPECT_GT(green.y, 0.9f) << "the window still shows the old file";
+    EXPECT_LT(green.x, 0.05f);
+}
+
+TEST(GpuWindow, MissingSceneFileInAScriptStopsBeforeTheWindowOpens)
+{
+    const ::rt::test::ScratchDir dir;
+    const AppRun run = runApp("--frames 1 --actions 'scene=" + (dir / "absent.json").string() + "'");
+    EXPECT_NE(run.status, 0);
+    EXPECT_NE(run.output.find("absent.json"), std::string::npos) << run.output;
 }
 } // namespace
 } // namespace rt::gpu::gui::test
