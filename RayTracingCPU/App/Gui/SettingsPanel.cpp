@@ -1,5 +1,6 @@
 #include "App/Gui/SettingsPanel.h"
 
+#include <filesystem>
 #include <thread>
 
 #include <imgui.h>
@@ -88,7 +89,9 @@ void SettingsPanel::drawRenderingParameters(Session& session)
     const RenderRequest& request = session.image();
     const RenderSettings& s = request.settings;
     const SceneInfo* current = findScene(request.scene.id);
-    if (ImGui::BeginCombo("Scene", request.scene.id.c_str(), ImGuiComboFlags_HeightLarge))
+    // A scene file by its name: the whole path is in the title bar of the image.
+    const std::string shown = current ? request.scene.id : std::filesystem::path(request.scene.id).filename().string();
+    if (ImGui::BeginCombo("Scene", shown.c_str(), ImGuiComboFlags_HeightLarge))
     {
         for (const SceneInfo& info : sceneCatalogue())
         {

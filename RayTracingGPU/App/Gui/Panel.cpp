@@ -1,5 +1,6 @@
 #include "App/Gui/Panel.h"
 
+#include <filesystem>
 #include <utility>
 
 #include <imgui.h>
@@ -23,7 +24,10 @@ ImU32 displayColor(const vec3& linear)
 void sceneSection(Controls& controls, const WindowState& state, const PanelInfo& info, PanelState& panel)
 {
     const SceneInfo* current = findScene(state.image.request.scene.id);
-    if (ImGui::BeginCombo("Scene", current ? current->title.c_str() : state.image.request.scene.id.c_str()))
+    // A scene file by its name: the whole path is in the window's title.
+    const std::string shown =
+        current ? current->title : std::filesystem::path(state.image.request.scene.id).filename().string();
+    if (ImGui::BeginCombo("Scene", shown.c_str()))
     {
         for (const SceneInfo& scene : sceneCatalogue())
             if (ImGui::Selectable(scene.title.c_str(), scene.id == state.image.request.scene.id))
