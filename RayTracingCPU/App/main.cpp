@@ -19,6 +19,13 @@ int main(int argc, char** argv)
                    "single (std::execution::seq) or multi (std::execution::par on TBB); in the window also gpu "
                    "(the Vulkan engine, when a ray-tracing device exists)")
         ->capture_default_str();
+    std::string specialize = "on";
+    app.add_option("--specialize", specialize,
+                   "Headless: on runs the path loop compiled for the render's estimator and the scene's features "
+                   "(no media code without media, no texture lookups for solid colours); off runs the general "
+                   "loop that tests them at every vertex (the same image bit for bit, for benchmarks)")
+        ->check(CLI::IsMember({"on", "off"}))
+        ->capture_default_str();
 #ifdef RT_WITH_GUI
     rt::gui::GuiOptions gui;
     rt::gui::addGuiOptions(app, gui);
@@ -43,7 +50,7 @@ int main(int argc, char** argv)
             throw rt::UsageError("--engine must be single or multi (got '" + engineName + "')");
         rt::checkOutputPaths(options);
         const rt::CommandLineRender job = rt::resolveCommandLine(options);
-        rt::cpu::CpuEngine cpu(*engine);
+        rt::cpu::CpuEngine cpu(*engine, specialize == "on");
         return rt::runHeadless(cpu, job.scene, job.request, options);
     });
 }

@@ -11,6 +11,7 @@
 #include <unordered_set>
 
 #include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
 
 #include "Error.h"
 
@@ -30,7 +31,7 @@ std::string cpuModel()
 }
 } // namespace
 
-CpuEngine::CpuEngine(EngineKind kind) : m_kind(kind)
+CpuEngine::CpuEngine(EngineKind kind, bool specialize) : m_kind(kind), m_specialize(specialize)
 {
     if (kind != EngineKind::Single && kind != EngineKind::Multi)
         throw UsageError("the CPU engine runs single or multi, not gpu");
@@ -48,6 +49,7 @@ double CpuEngine::setScene(const Scene& scene)
     m_frame.reset();
     m_scene.reset();
     m_scene = std::make_unique<CpuScene>(scene);
+    m_features = featuresOf(scene);
     m_buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return m_buildSeconds;
 }
@@ -62,6 +64,7 @@ void CpuEngine::beginFrame(const RenderSettings& settings)
                           .camera = Camera(m_scene->source().camera, width, height),
                           .options = {settings.depth, settings.estimator, settings.lightSampler, settings.lightSelection,
                                     settings.russianRoulette, settings.unidirectionalLight},
+                          .variant = choosePathVariant(m_features, settings.estimator, m_specialize),
                           .sum = std::vector<dvec3>(std::size_t(width) * height, dvec3(0.0)),
                           .before = std::vector<dvec3>(std::size_t(width) * height, dvec3(0.0)),
                           .width = width,
@@ -71,6 +74,7 @@ void CpuEngine::beginFrame(const RenderSettings& settings)
                           .rowStates = std::vector<RowState>(height),
                           .rowIndices = std::vector<int>(height)});
     std::iota(m_frame->rowIndices.begin(), m_frame->rowIndices.end(), 0);
+    spdlog::debug("CPU path loop: {} (scene: {})", m_frame->variant.describe(), m_features.describe());
 }
 
 BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control)
@@ -87,6 +91,7 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
     // The batch's inputs as locals, read once rather than through the frame in the inner loop.
     const Camera camera = f.camera;
     const PathOptions options = f.options;
+    const TracePathFn trace = f.variant.trace;
     const CpuScene& scene = *m_scene;
     std::vector<dvec3>& sums = f.sum;
     std::vector<RowTally>& tallies = f.rows;
@@ -132,7 +137,7 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
                 if (camera.thinLens)
                     lens = rng.next2D();
                 const float time = rng.nextFloat();
-                const vec3 l = tracePath(scene, options, camera.generateRay(fx, fy, lens, time), rng, t.segments);
+                const vec3 l = trace(scene, options, camera.generateRay(fx, fy, lens, time), rng, t.segments);
                 if (isFinite(l))
                     sum += dvec3(l);
                 else if (std::isnan(l.x) || std::isnan(l.y) || std::isnan(l.z))

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "Integrator/PathIntegrator.h"
+#include "Integrator/PathVariants.h"
 #include "Render/RenderEngine.h"
 #include "Scene/Camera.h"
 #include "Scene/CpuScene.h"
@@ -24,8 +25,9 @@ inline constexpr std::uint64_t kPathsPerBatch = std::uint64_t(1) << 20;
 class CpuEngine final : public RenderEngine
 {
 public:
-    /// `kind` is EngineKind::Single or EngineKind::Multi.
-    explicit CpuEngine(EngineKind kind);
+    /// `kind` is EngineKind::Single or EngineKind::Multi. `specialize`: run the path loop compiled for the
+    /// scene's features and the render's estimator (Integrator/PathVariants.h); false: the general loop.
+    explicit CpuEngine(EngineKind kind, bool specialize = true);
 
     EngineKind kind() const override { return m_kind; }
     std::string deviceName() const override;
@@ -40,6 +42,8 @@ public:
     BatchResult traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control) override;
     Image estimate(std::uint32_t samples) override;
     SampleTally tally() const override;
+    /// The path loop the current frame runs ("general" or what it is specialised for); empty before beginFrame.
+    std::string pathVariant() const { return m_frame ? m_frame->variant.describe() : std::string(); }
 
 private:
     /// Per-row tallies, written by exactly one task at a time: no atomics on the hot path, summed by tally().
@@ -63,6 +67,7 @@ private:
         RenderSettings settings;
         Camera camera;
         PathOptions options;
+        PathVariant variant;
         // Radiance sum of every sample traced so far, row-major, in double: a float sum of 2^20 samples of 0.1
         // drifts by 1 % (each addition rounds to the ulp of the sum; tests/Cpu/StressTest.cpp's long run).
         std::vector<dvec3> sum;
@@ -76,7 +81,9 @@ private:
     };
 
     EngineKind m_kind;
+    bool m_specialize;
     std::unique_ptr<CpuScene> m_scene;
+    SceneFeatures m_features;
     double m_buildSeconds = 0.0;
     std::optional<Frame> m_frame;
 };

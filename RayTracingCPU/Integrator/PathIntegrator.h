@@ -11,6 +11,10 @@
 //    heuristic's weight against NEE's pdf of the same direction (NeeMis); NEE's own sample gets the
 //    complementary weight. After specular vertices and from the camera, emission counts in full.
 // Russian roulette (Shared/RussianRoulette.h) may end any path from its third segment.
+// The loop is a template on PathCode: the general instance reads the estimator from PathOptions and handles
+// media and every texture kind; the others are compiled for one estimator and without media or non-solid
+// textures, for scenes that have none (Integrator/PathVariants.h picks one per render, issue 11). Every
+// instance draws the same random numbers in the same order, so they render the same image bit for bit.
 // The GLSL twin of this loop is Shaders/Integrator.glsl; what they compute per vertex (warps, light
 // samplers, selection, MIS weights, roulette) is shared code in Common/Shared.
 #pragma once
@@ -41,6 +45,25 @@ struct PathOptions
     bool unidirectionalLight = true;
 };
 
+/// What an instance of tracePath is compiled for. A structural type: it is the template's argument.
+struct PathCode
+{
+    bool general = true; // the estimator from PathOptions at run time; media and every texture kind
+    Estimator estimator = Estimator::NeeMis; // when !general
+    bool media = true; // when !general: the scene has participating media (isotropic vertices, medium hits)
+    bool textures = true; // when !general: a material reads a texture other than a solid colour
+};
+
+/// A material's texture at a hit: the solid colour itself when the instance has no other textures.
+template <PathCode C>
+inline vec3 texture(const Scene& scene, std::uint32_t index, const vec2& uv, const vec3& p)
+{
+    if constexpr (!C.general && !C.textures)
+        return scene.textures[index].color0;
+    else
+        return evalTexture(scene, index, uv, p);
+}
+
 /// Solid-angle pdf of the book-3 mixture for direction wi leaving p, given the BSDF strategy's pdf. When wi
 /// was sampled from light `known`, its pdf `knownPdf` (= lightPdf of that light) is reused, not recomputed.
 inline float mixturePdf(const Scene& scene, const vec3& p, const vec3& wi, float bsdfPdf,
@@ -62,11 +85,12 @@ inline float selectionPmf(const CpuScene& cs, const PathOptions& options, std::u
 
 /// Emitted radiance of the light sample `ls` towards its shading point: 0 from a light's back face when
 /// emitters are one-sided.
+template <PathCode C>
 inline vec3 sampledEmission(const Scene& scene, const LightData& light, const LightSample& ls, bool unidirectional)
 {
     if (unidirectional && glm::dot(ls.wi, ls.normal) >= 0.0f)
         return vec3(0.0f);
-    return evalTexture(scene, scene.materials[light.material].emissionTexture, ls.uv, ls.point);
+    return texture<C>(scene, scene.materials[light.material].emissionTexture, ls.uv, ls.point);
 }
 
 /// Next-event estimation at a diffuse or isotropic vertex: one emitter selected (uniformly, by power or by the
@@ -77,6 +101,7 @@ inline vec3 sampledEmission(const Scene& scene, const LightData& light, const Li
 /// Returns f cos Le / (pmf pdf) times the MIS weight (nee-mis: the power heuristic against the BSDF
 /// strategy's pdf of the same direction; nee: 1), or 0 when the point is occluded or faces away. Draws three numbers:
 /// the selection, then the point.
+template <PathCode C>
 inline vec3 estimateDirect(const CpuScene& cs, const PathOptions& options, const vec3& origin, const vec3& ns,
                            bool phase, const vec3& albedo, float time, Rng& rng, std::uint64_t& segments)
 {
@@ -97,12 +122,12 @@ inline vec3 estimateDirect(const CpuScene& cs, const PathOptions& options, const
     const float bsdfPdf = shader::diffusePdf(phase, ns, ls.wi); // f cos = albedo bsdfPdf
     if (!(bsdfPdf > 0.0f))
         return vec3(0.0f);
-    const vec3 le = sampledEmission(scene, light, ls, options.unidirectionalLight);
+    const vec3 le = sampledEmission<C>(scene, light, ls, options.unidirectionalLight);
     if (maxComponent(le) <= 0.0f)
         return vec3(0.0f);
     const float lightPdfTotal = pmf * ls.pdf;
-    const float weight =
-        options.estimator == Estimator::NeeMis ? shader::powerHeuristic(lightPdfTotal, bsdfPdf) : 1.0f;
+    const Estimator estimator = C.general ? options.estimator : C.estimator;
+    const float weight = estimator == Estimator::NeeMis ? shader::powerHeuristic(lightPdfTotal, bsdfPdf) : 1.0f;
     ++segments;
     // The shadow ray stops short of the light's surface by a relative margin far above the rounding of the
     // sampled point and of the light's intersection test.
@@ -112,13 +137,16 @@ inline vec3 estimateDirect(const CpuScene& cs, const PathOptions& options, const
 }
 
 /// Incident radiance along `ray` (linear RGB). `segments` is incremented per ray traced, shadow rays included.
+/// An instance other than the general one must match the scene and options (Integrator/PathVariants.h).
+template <PathCode C = PathCode{}>
 inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, Rng& rng, std::uint64_t& segments)
 {
     const Scene& scene = cs.source();
-    const bool mixture = options.estimator == Estimator::Mixture && !scene.lights.empty();
-    const bool nee = (options.estimator == Estimator::Nee || options.estimator == Estimator::NeeMis) &&
-                     cs.emitterCount() > 0;
-    const bool mis = options.estimator == Estimator::NeeMis;
+    const Estimator estimator = C.general ? options.estimator : C.estimator;
+    const bool mixture = estimator == Estimator::Mixture && !scene.lights.empty();
+    const bool nee = (estimator == Estimator::Nee || estimator == Estimator::NeeMis) && cs.emitterCount() > 0;
+    const bool mis = estimator == Estimator::NeeMis;
+    constexpr bool kMedia = C.general || C.media;
     vec3 radiance(0.0f);
     vec3 throughput(1.0f);
     // The vertex the current ray left, for the MIS weight of the emission it finds: the ray's origin and the
@@ -140,7 +168,8 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
         }
         const SurfaceInteraction si = cs.interaction(r, hit);
         const MaterialData& mat = scene.materials[si.material];
-        const bool frontFace = si.medium || glm::dot(ray.direction, si.n) < 0.0f;
+        const bool inMedium = kMedia && si.medium;
+        const bool frontFace = inMedium || glm::dot(ray.direction, si.n) < 0.0f;
         const vec3 ns = frontFace ? si.n : -si.n;
 
         if (mat.emissionTexture != kNoIndex && (frontFace || !options.unidirectionalLight))
@@ -153,7 +182,7 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
                                                           lightPdf(scene.lights[si.light], options.lightSampler,
                                                                    previousPoint, previousNormal, ray.direction))
                              : 0.0f;
-            radiance += throughput * evalTexture(scene, mat.emissionTexture, si.uv, si.p) * weight;
+            radiance += throughput * texture<C>(scene, mat.emissionTexture, si.uv, si.p) * weight;
         }
         if (segment + 1 == options.depth)
             break; // RTIOW's depth: the next segment would return black
@@ -168,7 +197,7 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
             const vec2 u = rng.next2D();
             if (!shader::sampleFuzzyMirror(ray.direction, ns, mat.fuzz, u, wi))
                 return radiance;
-            throughput *= evalTexture(scene, mat.albedoTexture, si.uv, si.p);
+            throughput *= texture<C>(scene, mat.albedoTexture, si.uv, si.p);
             break;
         }
         case MaterialType::Dielectric:
@@ -178,16 +207,16 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
         case MaterialType::Lambertian:
         case MaterialType::Isotropic:
         {
-            const bool phase = mat.type == MaterialType::Isotropic;
-            const vec3 albedo = evalTexture(scene, mat.albedoTexture, si.uv, si.p);
+            const bool phase = kMedia && mat.type == MaterialType::Isotropic;
+            const vec3 albedo = texture<C>(scene, mat.albedoTexture, si.uv, si.p);
             if (!mixture)
             {
                 if (nee)
                 {
                     // The BSDF ray leaves from this origin too (below): sampleDiffuse keeps to the side of ns.
-                    const vec3 origin = si.medium ? si.p : offsetRayOrigin(si.p, ns, si.offsetScale);
-                    radiance += throughput * estimateDirect(cs, options, origin, ns, phase, albedo, ray.time, rng,
-                                                            segments);
+                    const vec3 origin = inMedium ? si.p : offsetRayOrigin(si.p, ns, si.offsetScale);
+                    radiance += throughput * estimateDirect<C>(cs, options, origin, ns, phase, albedo, ray.time, rng,
+                                                               segments);
                 }
                 const vec2 u = rng.next2D();
                 wi = shader::sampleDiffuse(phase, ns, u);
@@ -233,7 +262,8 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
                 throughput /= survival;
             }
         }
-        const vec3 origin = si.medium ? si.p : offsetRayOrigin(si.p, glm::dot(wi, si.n) > 0.0f ? si.n : -si.n, si.offsetScale);
+        const vec3 origin =
+            inMedium ? si.p : offsetRayOrigin(si.p, glm::dot(wi, si.n) > 0.0f ? si.n : -si.n, si.offsetScale);
         ray = Ray{origin, wi, ray.time};
         previousPoint = origin;
     }
