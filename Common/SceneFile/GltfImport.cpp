@@ -31,7 +31,8 @@ void noteFileWide(const tinygltf::Model& m, GltfNotes& notes)
     if (!m.skins.empty())
         notes.add("skins (meshes in their bind pose)");
     for (const std::string& name : m.extensionsUsed)
-        if (std::find(std::begin(kReadExtensions), std::end(kReadExtensions), name) == std::end(kReadExtensions))
+        if (std::find(std::begin(kReadExtensions), std::end(kReadExtensions), name) == std::end(kReadExtensions) &&
+            !notes.mentions(name))
             notes.add(name);
 }
 } // namespace

@@ -15,6 +15,11 @@ void GltfNotes::add(const std::string& feature, const std::string& where)
         it->places.push_back(where);
 }
 
+bool GltfNotes::mentions(const std::string& word) const
+{
+    return std::any_of(m_entries.begin(), m_entries.end(), [&](const Entry& e) { return e.feature.starts_with(word); });
+}
+
 std::vector<std::string> GltfNotes::features() const
 {
     std::vector<std::string> out;

@@ -16,6 +16,9 @@ public:
     void add(const std::string& feature, const std::string& where = "");
 
     bool empty() const { return m_entries.empty(); }
+    /// Whether a feature noted so far starts with `word` (an extension noted where it was met, with words after
+    /// its name, is not noted again from the file's extensionsUsed).
+    bool mentions(const std::string& word) const;
     /// The features alone, in the order first met.
     std::vector<std::string> features() const;
     /// "normal textures (material 'Floor', material 'Wall'), KHR_texture_transform (material 'Arrow')".
