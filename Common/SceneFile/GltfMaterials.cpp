@@ -84,9 +84,10 @@ std::uint32_t GltfMaterials::material(int index, const std::string& usedAs)
     return made;
 }
 
-bool GltfMaterials::textured(std::uint32_t material) const
+std::optional<GltfWrapModes> GltfMaterials::textured(std::uint32_t material) const
 {
-    return std::find(m_texturedMaterials.begin(), m_texturedMaterials.end(), material) != m_texturedMaterials.end();
+    const auto it = m_texturedMaterials.find(material);
+    return it == m_texturedMaterials.end() ? std::nullopt : std::optional(it->second);
 }
 
 std::uint32_t GltfMaterials::make(int index)
@@ -152,7 +153,8 @@ std::uint32_t GltfMaterials::make(int index)
     const double roughness =
         number(m_doc, pointer + "/pbrMetallicRoughness/roughnessFactor", pbr.roughnessFactor, 0.0, 1.0);
     MaterialData mat{.type = MaterialType::Lambertian, .albedoTexture = kNoIndex, .emissionTexture = kNoIndex};
-    mat.albedoTexture = baseColor(m, pointer + "/pbrMetallicRoughness/baseColorTexture", where, color);
+    std::optional<GltfWrapModes> wrap;
+    mat.albedoTexture = baseColor(m, pointer + "/pbrMetallicRoughness/baseColorTexture", where, color, wrap);
     if (metallic >= 0.5)
     {
         mat.type = MaterialType::Metal;
@@ -161,13 +163,14 @@ std::uint32_t GltfMaterials::make(int index)
     Scene& scene = m_builder.scene();
     scene.materials.push_back(mat);
     const auto made = static_cast<std::uint32_t>(scene.materials.size() - 1);
-    if (scene.textures[mat.albedoTexture].type == TextureType::Image)
-        m_texturedMaterials.push_back(made);
+    if (wrap)
+        m_texturedMaterials.emplace(made, *wrap);
     return made;
 }
 
 std::uint32_t GltfMaterials::baseColor(const tinygltf::Material& m, const std::string& pointer,
-                                       const std::string& where, const vec3& factor)
+                                       const std::string& where, const vec3& factor,
+                                       std::optional<GltfWrapModes>& wrap)
 {
     const tinygltf::TextureInfo& info = m.pbrMetallicRoughness.baseColorTexture;
     if (info.index < 0)
@@ -192,6 +195,17 @@ std::uint32_t GltfMaterials::baseColor(const tinygltf::Material& m, const std::s
         m_notes.add("textures without a PNG or JPEG source (the factor alone)", where);
         return m_builder.solid(factor);
     }
+    if (texture.sampler >= 0)
+    {
+        if (static_cast<std::size_t>(texture.sampler) >= model.samplers.size())
+            m_doc.fail(fmt::format("/textures/{}/sampler", info.index),
+                       fmt::format("sampler {} does not exist (the file has {})", texture.sampler,
+                                   model.samplers.size()));
+        const tinygltf::Sampler& sampler = model.samplers[static_cast<std::size_t>(texture.sampler)];
+        wrap = GltfWrapModes{gltfWrap(sampler.wrapS), gltfWrap(sampler.wrapT)};
+    }
+    else
+        wrap = GltfWrapModes{}; // no sampler: repeat in both directions (§3.8.4)
     const std::array<float, 3> key{factor.r, factor.g, factor.b};
     if (const auto it = m_imageTextures.find({texture.source, key}); it != m_imageTextures.end())
         return it->second;

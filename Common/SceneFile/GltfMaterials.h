@@ -17,11 +17,13 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "Scene/SceneBuilder.h"
 #include "SceneFile/GltfFile.h"
+#include "SceneFile/GltfTexcoords.h"
 
 namespace rt
 {
@@ -39,8 +41,9 @@ public:
     /// base colour image (GltfImages).
     std::uint32_t material(int index, const std::string& usedAs);
 
-    /// Whether the scene's material `material` samples an image through the surface's texture coordinates.
-    bool textured(std::uint32_t material) const;
+    /// Whether the scene's material `material` samples an image through the surface's texture coordinates, and
+    /// if so how its sampler wraps them.
+    std::optional<GltfWrapModes> textured(std::uint32_t material) const;
 
     /// The emitting materials made so far: how many are single-sided, how many double-sided (§3.9.5).
     int singleSidedEmitters() const { return m_singleSidedEmitters; }
@@ -48,16 +51,17 @@ public:
 
 private:
     std::uint32_t make(int index);
-    /// The albedo texture: the factor's colour, or the base colour image times the factor.
+    /// The albedo texture: the factor's colour, or the base colour image times the factor (then `wrap` is set
+    /// to its sampler's wrap modes).
     std::uint32_t baseColor(const tinygltf::Material& m, const std::string& pointer, const std::string& where,
-                            const vec3& factor);
+                            const vec3& factor, std::optional<GltfWrapModes>& wrap);
 
     const GltfDocument& m_doc;
     SceneBuilder& m_builder;
     GltfNotes& m_notes;
     std::map<int, std::uint32_t> m_made; // glTF material (-1: none) -> scene material
     std::map<std::pair<int, std::array<float, 3>>, std::uint32_t> m_imageTextures; // (image, factor) -> texture
-    std::vector<std::uint32_t> m_texturedMaterials;
+    std::map<std::uint32_t, GltfWrapModes> m_texturedMaterials; // scene material -> its texture's wrapping
     int m_singleSidedEmitters = 0;
     int m_doubleSidedEmitters = 0;
 };

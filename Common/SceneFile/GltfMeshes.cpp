@@ -8,6 +8,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "SceneFile/GltfAccessors.h"
+#include "SceneFile/GltfTexcoords.h"
 
 namespace rt
 {
@@ -149,31 +150,31 @@ std::size_t addPrimitive(const GltfDocument& doc, int meshIndex, std::size_t k, 
                 mesh.normals[i] = vec3(w / length);
         }
     }
-    if (const auto uv = p.attributes.find("TEXCOORD_0"); uv != p.attributes.end())
-    {
-        const std::vector<double> st = readGltfAccessor(doc, uv->second, 2, pointer + "/attributes/TEXCOORD_0");
-        if (st.size() / 2 != vertexCount)
-            doc.fail(pointer + "/attributes/TEXCOORD_0",
-                     fmt::format("{} texture coordinates for {} positions", st.size() / 2, vertexCount));
-        mesh.uvs.resize(vertexCount);
-        bool outside = false;
-        for (std::size_t i = 0; i < vertexCount; ++i)
-        {
-            const double s = st[2 * i], t = st[2 * i + 1];
-            if (!std::isfinite(s) || !std::isfinite(t))
-                doc.fail(fmt::format("/accessors/{}", uv->second),
-                         fmt::format("texture coordinate {} is ({}, {}): not finite", i, s, t));
-            constexpr double kSlack = 1e-4; // exporters write 1.0000001 for 1
-            outside = outside || s < -kSlack || s > 1.0 + kSlack || t < -kSlack || t > 1.0 + kSlack;
-            mesh.uvs[i] = vec2(static_cast<float>(s), static_cast<float>(1.0 - t));
-        }
-        if (outside && materials.textured(material))
-            notes.add("texture coordinates outside [0, 1] (clamped, not repeated)", where);
-    }
     if (det < 0.0) // a mirroring transform turns counter-clockwise triangles clockwise
         for (std::size_t t = 0; t < indices.size(); t += 3)
             std::swap(indices[t + 1], indices[t + 2]);
     mesh.indices = std::move(indices);
+    if (const auto uv = p.attributes.find("TEXCOORD_0"); uv != p.attributes.end())
+    {
+        const std::vector<double> flat = readGltfAccessor(doc, uv->second, 2, pointer + "/attributes/TEXCOORD_0");
+        if (flat.size() / 2 != vertexCount)
+            doc.fail(pointer + "/attributes/TEXCOORD_0",
+                     fmt::format("{} texture coordinates for {} positions", flat.size() / 2, vertexCount));
+        std::vector<glm::dvec2> st(vertexCount);
+        for (std::size_t i = 0; i < vertexCount; ++i)
+        {
+            st[i] = {flat[2 * i], flat[2 * i + 1]};
+            if (!std::isfinite(st[i].x) || !std::isfinite(st[i].y))
+                doc.fail(fmt::format("/accessors/{}", uv->second),
+                         fmt::format("texture coordinate {} is ({}, {}): not finite", i, st[i].x, st[i].y));
+        }
+        if (const std::optional<GltfWrapModes> wrap = materials.textured(material))
+            if (wrapTexcoords(mesh, st, *wrap) > 0)
+                notes.add("texture coordinates repeating within a triangle (clamped)", where);
+        mesh.uvs.resize(st.size());
+        for (std::size_t i = 0; i < st.size(); ++i) // glTF's t runs down the image, the engines' v up
+            mesh.uvs[i] = vec2(static_cast<float>(st[i].x), static_cast<float>(1.0 - st[i].y));
+    }
     const std::size_t triangles = mesh.triangleCount();
     builder.mesh(builder.world(), builder.addMesh(std::move(mesh)), material);
     ++summary.primitives;

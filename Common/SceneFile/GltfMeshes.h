@@ -24,13 +24,14 @@ struct GltfMeshSummary
 ///   - modes TRIANGLES (the default), TRIANGLE_STRIP and TRIANGLE_FAN, indexed (unsigned 8, 16 or 32-bit indices)
 ///     or not; POINTS and LINE* primitives are skipped and noted;
 ///   - POSITION (required), NORMAL (carried by the inverse transpose, normalised) and TEXCOORD_0 (v flipped: glTF's
-///     v runs down the image, the engines' up) where present;
+///     v runs down the image, the engines' up; on a textured material each triangle moved into [0, 1] by whole
+///     periods of its sampler's wrapping, GltfTexcoords.h) where present;
 ///   - a node whose transform mirrors (negative determinant) has its triangles' winding reversed (§3.7.2.1), so
 ///     that front faces stay counter-clockwise;
 ///   - a vertex that lands beyond float's range is an error.
 /// Notes what it cannot map: other modes, morph targets, vertex colours, skins, compressed primitives (Draco,
-/// meshopt), zero-length normals (dropped), texture coordinates outside [0, 1] on a textured material (the
-/// engines clamp; glTF's default sampler repeats).
+/// meshopt), zero-length normals (dropped), texture coordinates repeating within one triangle (the engines
+/// clamp).
 /// Throws SceneError naming the value: a mesh or material index out of range, a primitive without POSITION, an
 /// attribute whose count differs from POSITION's, a coordinate that is not finite; and whatever the accessors
 /// throw (GltfAccessors.h).

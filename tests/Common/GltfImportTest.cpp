@@ -436,6 +436,69 @@ TEST(GltfTextures, MetalTakesTheTextureToo)
     EXPECT_EQ(scene.textures.at(m.albedoTexture).type, TextureType::Image);
 }
 
+TEST(GltfTextures, RepeatedAndMirroredCoordinatesAreMovedIntoTheUnitSquarePerTriangle)
+{
+    ScratchDir dir;
+    GltfWriter w;
+    const int image = w.imageDataUri(checkerPng(dir));
+    const int sampler = static_cast<int>(w.json()["samplers"].size());
+    w.json()["samplers"].push_back({{"wrapS", 33648}, {"wrapT", 10497}}); // MIRRORED_REPEAT, REPEAT
+    const int texture = w.texture(image);
+    w.json()["textures"][texture]["sampler"] = sampler;
+    const int mat = w.material({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}, {"metallicFactor", 0}}}});
+    Primitive p = triangle(mat);
+    // Two triangles sharing vertices 1 and 2: the first within one period in s and t, the second spanning two in
+    // s; each moves its corners differently, so the shared vertices are copied.
+    p.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    p.normals.clear();
+    p.uvs = {{5.25, 2.5}, {6, 2.5}, {5, 3}, {4.5, 3}};
+    p.indices = {0, 1, 2, 2, 1, 3};
+    const int mesh = w.mesh({p});
+    w.scene({w.node({{"mesh", mesh}})});
+    const GltfImport imported = readGltf(w.writeGltf(dir.path(), "wrap"));
+    const MeshData& m = imported.scene.meshes.at(0);
+    const auto uv = [&](std::size_t corner) { return m.uvs.at(m.indices.at(corner)); };
+    const auto expectUv = [&](std::size_t corner, float s, float t) { // glTF's (s, t); the mesh holds (s, 1 - t)
+        EXPECT_NEAR(uv(corner).x, s, 1e-6f) << "corner " << corner;
+        EXPECT_NEAR(uv(corner).y, 1.0f - t, 1e-6f) << "corner " << corner;
+    };
+    // First triangle: s in [5, 6], period 5 (odd, mirrored: s -> 6 - s); t in [2, 3], period 2 (t -> t - 2).
+    expectUv(0, 0.75f, 0.5f);
+    expectUv(1, 0.0f, 0.5f);
+    expectUv(2, 1.0f, 1.0f);
+    // Second: s in [4.5, 6] spans two periods: left to the clamp, and noted; t in [2.5, 3] still moves by 2.
+    expectUv(4, 6.0f, 0.5f);
+    expectUv(5, 4.5f, 1.0f);
+    EXPECT_NE(imported.unmapped.find("texture coordinates repeating within a triangle"), std::string::npos);
+    // Every corner keeps its position.
+    EXPECT_EQ(m.positions.at(m.indices[1]), vec3(1, 0, 0));
+    EXPECT_EQ(m.positions.at(m.indices[5]), vec3(1, 1, 0));
+}
+
+TEST(GltfTextures, ClampToEdgeAndUntexturedMaterialsKeepTheirCoordinates)
+{
+    ScratchDir dir;
+    GltfWriter w;
+    const int image = w.imageDataUri(checkerPng(dir));
+    w.json()["samplers"].push_back({{"wrapS", 33071}, {"wrapT", 33071}}); // CLAMP_TO_EDGE
+    const int texture = w.texture(image);
+    w.json()["textures"][texture]["sampler"] = 0;
+    const int clamped = w.material({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}, {"metallicFactor", 0}}}});
+    Primitive a = triangle(clamped);
+    a.uvs = {{3, 3}, {3.5, 3}, {3, 3.5}};
+    Primitive b = a;
+    b.material = -1;
+    const int mesh = w.mesh({a, b});
+    w.scene({w.node({{"mesh", mesh}})});
+    const GltfImport imported = readGltf(w.writeGltf(dir.path(), "clamp"));
+    for (const MeshData& m : imported.scene.meshes)
+    {
+        EXPECT_EQ(m.uvs.size(), 3u) << m.name;
+        EXPECT_EQ(m.uvs.at(1), vec2(3.5f, -2.0f)) << m.name;
+    }
+    EXPECT_EQ(imported.unmapped, "");
+}
+
 TEST(GltfTextures, MissingImageFileIsAnAssetErrorNamingIt)
 {
     ScratchDir dir;
@@ -576,7 +639,7 @@ TEST(GltfWarning, OneLineNamesEachUnmappedFeatureOnce)
     for (const char* feature :
          {"normal textures (material 'Fancy', material 'Other')", "occlusion textures (material 'Fancy')",
           "KHR_materials_clearcoat (material 'Fancy')", "KHR_texture_transform", "LINES primitives (skipped) (mesh 'Thing')",
-          "vertex colours (mesh 'Thing')", "texture coordinates outside [0, 1]", "animations", "EXT_unknown_thing",
+          "vertex colours (mesh 'Thing')", "texture coordinates repeating within a triangle (clamped) (mesh 'Thing')", "animations", "EXT_unknown_thing",
           "lit by a gradient sky"})
         EXPECT_NE(warning.find(feature), std::string::npos) << feature << " in: " << warning;
     // Each feature once, however often met.
