@@ -58,8 +58,9 @@ GltfImport readGltf(const std::filesystem::path& file)
     GltfMaterials materials(doc, builder, notes);
     const GltfMeshSummary meshes = addGltfMeshes(doc, nodes, materials, builder, notes);
     if (meshes.triangles == 0)
-        throw SceneError(fmt::format("{}: the scene has no triangles to render ({} nodes, {} meshes in the file)",
-                                     file.string(), nodes.size(), doc.model.meshes.size()));
+        throw SceneError(fmt::format("{}: the scene has no triangles to render ({} nodes, {} meshes in the file{}{})",
+                                     file.string(), nodes.size(), doc.model.meshes.size(),
+                                     notes.empty() ? "" : "; not mapped: ", notes.list()));
 
     Scene& scene = builder.scene();
     if (const std::optional<GltfCamera> camera = gltfCamera(doc, nodes, notes))
