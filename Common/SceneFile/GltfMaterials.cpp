@@ -211,7 +211,11 @@ std::uint32_t GltfMaterials::baseColor(const tinygltf::Material& m, const std::s
         return it->second;
     ImageData image = readGltfImage(m_doc, texture.source);
     if (factor != vec3(1.0f))
+    {
         image = tintedImage(std::move(image), factor);
+        // No longer the file's texels: a name that is no file (--export-scene writes such images out).
+        image.path = fmt::format("{} x baseColorFactor ({}, {}, {})", image.path, factor.r, factor.g, factor.b);
+    }
     Scene& scene = m_builder.scene();
     TextureData t{};
     t.type = TextureType::Image;

@@ -9,7 +9,10 @@
 #include "Engine/CpuEngine.h"
 #include "RenderTestSupport.h"
 #include "SceneFile/GltfImport.h"
+#include "Image/ImageIO.h"
 #include "SceneFile/JsonSceneReader.h"
+#include "SceneFile/JsonSceneWriter.h"
+#include "SceneFile/SceneFile.h"
 #include "Support/BlockAgreement.h"
 #include "Support/GltfWriter.h"
 #include "Support/ScratchDir.h"
@@ -109,6 +112,43 @@ TEST(CpuGltf, RendersAsTheEquivalentJsonScene)
     for (double m : a.mean)
         sum += m;
     EXPECT_GT(sum / static_cast<double>(a.mean.size()), 0.05);
+}
+TEST(CpuGltf, ExportedAsJsonItReadsBackBitForBit)
+{
+    // Images embedded in a .glb and tinted by their base colour factor are no files of their own: --export-scene
+    // writes them beside the JSON file, and the copy renders the same image bit for bit.
+    ScratchDir dir;
+    const std::vector<unsigned char> rgba = {200, 10, 10, 255, 10, 200, 10, 255, 10, 10, 200, 255, 250, 250, 250, 255};
+    writePng8(dir / "tex.png", 2, 2, rgba);
+    GltfWriter w;
+    const int embedded = w.texture(w.imageInBuffer(GltfWriter::readBytes(dir / "tex.png")));
+    const int external = w.texture(w.imageFile("tex.png"));
+    const auto textured = [&](int texture, std::vector<double> factor) {
+        return w.material({{"pbrMetallicRoughness",
+                            {{"baseColorTexture", {{"index", texture}}}, {"baseColorFactor", factor}, {"metallicFactor", 0}}}});
+    };
+    Primitive a = quad({-2, 0, 0}, {1.5f, 0, 0}, {0, 1.5f, 0}, textured(embedded, {1, 1, 1, 1}));
+    a.uvs = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+    Primitive b = a;
+    b.positions = {{0, 0, 0}, {1.5f, 0, 0}, {1.5f, 1.5f, 0}, {0, 1.5f, 0}};
+    b.material = textured(external, {0.5, 1, 0.5, 1});
+    const int mesh = w.mesh({a, b});
+    w.scene({w.node({{"mesh", mesh}}), w.node({{"camera", w.perspective(1.0, 1.0)}, {"translation", {0, 0.75, 4}}})});
+    const Scene original = readGltf(w.writeGlb(dir.path(), "textured")).scene;
+    ASSERT_EQ(original.images.size(), 2u);
+
+    exportScene(original, dir / "copy.json");
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir / "copy.image0.png")) << "the embedded image, written out";
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir / "copy.image1.png")) << "the tinted file, written out";
+    const Scene copy = loadSceneFile(dir / "copy.json");
+    ASSERT_EQ(copy.images.size(), 2u);
+    for (std::size_t i = 0; i < 2; ++i)
+        EXPECT_EQ(copy.images[i].rgba, original.images[i].rgba) << "image " << i;
+    EXPECT_NE(original.images[1].rgba, rgba) << "the factor tinted the second";
+
+    RenderSettings s = settingsFor(original, 24, 2, 4);
+    s.seed = 5;
+    EXPECT_TRUE(bitIdentical(renderCpu(original, s).image, renderCpu(copy, s).image));
 }
 } // namespace
 } // namespace rt::test
