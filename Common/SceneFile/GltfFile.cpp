@@ -127,8 +127,10 @@ GltfDocument loadGltfFile(const std::filesystem::path& file, GltfNotes& notes)
         throw SceneError(fmt::format("{}: not a valid glTF 2.0 {} file: {}", file.string(), binary ? "binary" : "JSON",
                                      err.empty() ? "tinygltf refused it" : gltfOneLine(err)));
     }
-    if (!warn.empty())
-        notes.add(fmt::format("tinygltf: {}", gltfOneLine(warn)));
+    // tinygltf also reports problems it read past (a value of the wrong type, left at its default) in `err`.
+    for (const std::string& message : {warn, err})
+        if (!gltfOneLine(message).empty())
+            notes.add(fmt::format("tinygltf: {}", gltfOneLine(message)));
     return doc;
 }
 } // namespace rt

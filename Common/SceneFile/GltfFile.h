@@ -22,7 +22,8 @@ struct GltfDocument
 };
 
 /// Reads `file` and the buffers it names (relative URIs from the file's folder; data URIs decoded). Images are
-/// left encoded (SceneFile/GltfImages.h decodes those a material uses). tinygltf's warnings go to `notes`.
+/// left encoded (SceneFile/GltfImages.h decodes those a material uses). tinygltf's warnings, and the errors it
+/// read past (it leaves a value of the wrong type at its default and carries on), go to `notes`.
 /// Logs "reading <file> (N MB)" for a file over 16 MB.
 /// Throws AssetError "<file>: buffer file '<path>' not found" for a missing buffer file, SceneError
 /// "<file>: <tinygltf's error, on one line>" for anything else tinygltf refuses: not glTF, malformed JSON (with

@@ -649,6 +649,18 @@ TEST(GltfWarning, OneLineNamesEachUnmappedFeatureOnce)
     EXPECT_EQ(imported.scene.meshes.size(), 3u) << "the LINES primitive skipped";
 }
 
+TEST(GltfWarning, TinygltfsOwnComplaintsArePassedOn)
+{
+    // tinygltf reads past a textureInfo without its required index (leaving it at -1), saying so in its error text.
+    ScratchDir dir;
+    GltfWriter w;
+    const int mat = w.material({{"normalTexture", {{"scale", 1}}}, {"pbrMetallicRoughness", {{"metallicFactor", 0}}}});
+    const GltfImport imported = readGltf(oneTriangle(dir, mat, w));
+    EXPECT_NE(imported.unmapped.find("tinygltf: 'index' property is missing in NormalTextureInfo."), std::string::npos)
+        << imported.unmapped;
+    EXPECT_EQ(imported.unmapped.find("normal textures"), std::string::npos) << "no index: no normal texture";
+}
+
 // ---- Errors -------------------------------------------------------------------------------------------------
 
 TEST(GltfErrors, MissingFile)
