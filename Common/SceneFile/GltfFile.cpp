@@ -1,7 +1,6 @@
 #include "SceneFile/GltfFile.h"
 
 #include <fstream>
-#include <iterator>
 #include <limits>
 #include <sstream>
 #include <vector>
@@ -62,8 +61,12 @@ std::vector<unsigned char> readBytes(const std::filesystem::path& file)
     std::ifstream in(file, std::ios::binary);
     if (!in)
         throw SceneError(fmt::format("{}: cannot be opened", file.string()));
-    std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad())
+    in.seekg(0, std::ios::end);
+    const std::streamoff size = in.tellg();
+    in.seekg(0, std::ios::beg);
+    std::vector<unsigned char> bytes(size > 0 ? static_cast<std::size_t>(size) : 0);
+    in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    if (size < 0 || in.bad() || in.gcount() != static_cast<std::streamsize>(bytes.size()))
         throw SceneError(fmt::format("{}: cannot be read", file.string()));
     return bytes;
 }
