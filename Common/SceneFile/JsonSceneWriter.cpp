@@ -8,6 +8,7 @@
 #include "Assets/AssetPaths.h"
 #include "Error.h"
 #include "IO/AtomicFile.h"
+#include "Image/ImageIO.h"
 #include "SceneFile/JsonSceneReader.h"
 
 namespace rt
@@ -31,7 +32,8 @@ ojson number(float f) { return exactFloat(f); }
 
 ojson vector(const vec3& v) { return ojson::array({number(v.x), number(v.y), number(v.z)}); }
 
-ojson texture(const TextureData& t, const Scene& scene)
+/// `paths[i]` is where image i is to be found: its own file, or one exportScene wrote beside the scene file.
+ojson texture(const TextureData& t, const Scene& scene, const std::vector<std::string>& paths)
 {
     switch (t.type)
     {
@@ -40,7 +42,7 @@ ojson texture(const TextureData& t, const Scene& scene)
         return {{"type", "checker"}, {"scale", number(t.scale)}, {"even", vector(t.color0)}, {"odd", vector(t.color1)}};
     case TextureType::Image:
     {
-        std::filesystem::path path(scene.images.at(t.image).path);
+        std::filesystem::path path(t.image < paths.size() ? paths[t.image] : scene.images.at(t.image).path);
         const std::filesystem::path relative = path.lexically_proximate(assetRoot());
         if (!relative.empty() && *relative.begin() != "..")
             path = relative; // found through the asset folder wherever the scene file and the checkout are
@@ -213,7 +215,7 @@ void layOut(const ojson& v, int depth, bool expandChildren, std::string& out)
 }
 } // namespace
 
-ojson sceneToJson(const Scene& scene)
+ojson sceneToJson(const Scene& scene, const std::vector<std::string>& imagePaths)
 {
     ojson doc = {{"format", "ray-tracing-scene"}, {"version", kSceneFormatVersion}};
     doc["description"] = fmt::format("scene '{}', written by --export-scene", scene.id);
@@ -222,7 +224,7 @@ ojson sceneToJson(const Scene& scene)
     doc["background"] = background(scene.background);
     doc["textures"] = ojson::array();
     for (const TextureData& t : scene.textures)
-        doc["textures"].push_back(texture(t, scene));
+        doc["textures"].push_back(texture(t, scene, imagePaths));
     doc["materials"] = ojson::array();
     for (const MaterialData& m : scene.materials)
         doc["materials"].push_back(material(m));
@@ -252,8 +254,23 @@ ojson sceneToJson(const Scene& scene)
 
 void exportScene(const Scene& scene, const std::filesystem::path& file)
 {
+    // An image that is no file of its own (a glTF file's embedded image, or one its base colour factor tinted)
+    // is written beside the scene file as a PNG of the texels as held (8-bit sRGB RGBA), which reads back texel
+    // for texel; the document names it relative to itself, where the reader looks first.
+    std::vector<std::string> paths;
+    for (std::size_t i = 0; i < scene.images.size(); ++i)
+    {
+        const ImageData& image = scene.images[i];
+        if (std::filesystem::is_regular_file(image.path))
+        {
+            paths.push_back(image.path);
+            continue;
+        }
+        paths.push_back(fmt::format("{}.image{}.png", file.stem().string(), i));
+        writePng8(file.parent_path() / paths.back(), image.width, image.height, image.rgba);
+    }
     std::string text;
-    layOut(sceneToJson(scene), 0, false, text);
+    layOut(sceneToJson(scene, paths), 0, false, text);
     writeFileAtomically(file, text + "\n");
 }
 } // namespace rt

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -12,12 +14,14 @@
 
 namespace rt
 {
-/// The document for `scene`. Image paths under the asset folder are written relative to it, others as
-/// they are (absolute). Throws SceneError for what the format cannot express (a light that is neither an
-/// emitter of the scene nor a sphere target).
-nlohmann::ordered_json sceneToJson(const Scene& scene);
+/// The document for `scene`. Image paths (`imagePaths[i]` for image i where given, else the image's own) under
+/// the asset folder are written relative to it, others as they are. Throws SceneError for what the format
+/// cannot express (a light that is neither an emitter of the scene nor a sphere target).
+nlohmann::ordered_json sceneToJson(const Scene& scene, const std::vector<std::string>& imagePaths = {});
 
-/// Writes sceneToJson(scene) to `file` atomically (IO/AtomicFile.h). Throws OutputError if it cannot.
+/// Writes sceneToJson(scene) to `file` atomically (IO/AtomicFile.h), and beside it, as `<file's stem>.imageN.png`,
+/// every image that is not a file of its own (a glTF import's embedded or tinted images). Throws OutputError if
+/// it cannot.
 void exportScene(const Scene& scene, const std::filesystem::path& file);
 
 /// The double whose shortest decimal form reads back, through double, as exactly `f` (docs/SCENES.md:

@@ -7,6 +7,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "Error.h"
+#include "SceneFile/GltfImport.h"
 #include "SceneFile/JsonSceneReader.h"
 
 namespace rt
@@ -39,6 +40,6 @@ Scene loadSceneFile(const std::filesystem::path& file)
     const std::string ext = lowerExtension(file.string());
     if (ext == ".json")
         return readJsonScene(file);
-    throw SceneError(fmt::format("{}: glTF scenes are not supported yet", file.string()));
+    return importGltf(file); // .gltf or .glb: GltfFile tells them apart by their first bytes
 }
 } // namespace rt

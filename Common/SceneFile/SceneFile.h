@@ -17,7 +17,8 @@ bool isSceneFilePath(std::string_view idOrPath);
 /// ("scenes/lamp.json" gives "lamp").
 std::string sceneShortName(std::string_view idOrPath);
 
-/// Reads the scene in `file` by its extension. Throws SceneError (missing, malformed or inconsistent file,
-/// with its location), AssetError (a texture or mesh it names).
+/// Reads the scene in `file` by its extension: .json (JsonSceneReader.h), .gltf or .glb (GltfImport.h: what it
+/// could not map is logged as one warning line). Throws SceneError (missing, malformed or inconsistent file,
+/// with its location), AssetError (a texture, mesh, buffer or image file it names).
 Scene loadSceneFile(const std::filesystem::path& file);
 } // namespace rt

@@ -110,6 +110,33 @@ expect_error "scene file: zero-area quad" "zero area" --scene "$work/zero-quad.j
 expect_error "scene file: missing mesh" "/meshes/0/obj: mesh 'gone.obj' not found" --scene "$work/missing-mesh.json"
 expect_error "scene file: missing texture" "/textures/0/path: texture 'gone.png' not found" --scene "$work/missing-texture.json"
 expect_error "scene file: none there" "not found" --scene "$work/nothere.json"
+# glTF files (issue 12): tinygltf's refusal on one line, a missing buffer file, accessors out of range.
+gltf_file() { # name, JSON text after the asset: writes $work/NAME.gltf
+    printf '{"asset": {"version": "2.0"}, %s}\n' "$2" >"$work/$1.gltf"
+}
+# One triangle, its three vertices (36 bytes) in a data URI or in a file; ACCESSOR is spliced in.
+triangle() { # buffer uri, accessor count, POSITION accessor index
+    printf '"scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}], "meshes": [{"primitives": [{"attributes": {"POSITION": %s}}]}], "buffers": [{"uri": "%s", "byteLength": 36}], "bufferViews": [{"buffer": 0, "byteLength": 36}], "accessors": [{"bufferView": 0, "componentType": 5126, "count": %s, "type": "VEC3"}]' \
+        "$3" "$1" "$2"
+}
+vertices="data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"
+printf '{"asset": {"version": "2.0"},, }\n' >"$work/malformed.gltf"
+gltf_file good "$(triangle "$vertices" 3 0)"
+gltf_file missing-bin "$(triangle gone.bin 3 0)"
+gltf_file overrun "$(triangle "$vertices" 4 0)"
+gltf_file no-accessor "$(triangle "$vertices" 3 7)"
+expect_error "glTF: malformed JSON" "malformed.gltf: not a valid glTF 2.0 JSON file" --scene "$work/malformed.gltf"
+expect_error "glTF: missing buffer file" "missing-bin.gltf: buffer file '.*gone.bin' not found" --scene "$work/missing-bin.gltf"
+expect_error "glTF: accessor overrunning its data" "overrun.gltf: /accessors/0: 4 elements of 12 bytes" --scene "$work/overrun.gltf"
+expect_error "glTF: accessor index out of range" "POSITION: accessor 7 does not exist" --scene "$work/no-accessor.gltf"
+printf 'glTF\002\000\000\000' >"$work/cut.glb"
+expect_error "glTF: a cut .glb" "cut.glb: not a valid glTF 2.0 binary file" --scene "$work/cut.glb"
+# The cases above are broken only where they say: unbroken, the triangle renders.
+if ! timeout 60 "$app" --headless --quiet --width 8 --spp 1 --scene "$work/good.gltf" --output "$work/good.png" \
+    >/dev/null 2>"$work/stderr"; then
+    echo "FAIL glTF: the unbroken triangle does not render: $(cat "$work/stderr")"; failures=$((failures + 1))
+fi
+rm -f "$work/good.png"
 expect_error "export to a non-JSON name" "--export-scene" --export-scene "$work/out.txt"
 expect_error "export into a missing folder" "does not exist" --export-scene "$work/no/such/out.json"
 
