@@ -19,5 +19,10 @@ done | sort -u | grep -vE '/(libc|libm|libdl|libpthread|librt|libstdc\+\+|libgcc
 cp /usr/lib/x86_64-linux-gnu/libVkLayer_khronos_validation.so .devcarry/layers/
 sed 's|"library_path": "[^"]*"|"library_path": "./libVkLayer_khronos_validation.so"|' \
     /usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json >.devcarry/layers/VkLayer_khronos_validation.json
+# The glTF models tests/Cli/scene_files.sh renders (Debian's assimp-testmodels; the host has none).
+mkdir -p .devcarry/gltf
+for m in BoxTextured-glTF BoxTextured-glTF-Binary cameras; do
+    cp -r "/usr/share/assimp/models/glTF2/$m" .devcarry/gltf/ 2>/dev/null || true
+done
 (cd .gl && apt-get download libvulkan1 libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2 2>/dev/null)
 du -sh .devcarry .gl

@@ -30,7 +30,7 @@ tests)
         --output "$out/glass.png" --stats "$out/glass.json"
     "$bin/rt_gpu_tests" --gtest_brief=1 --gtest_filter='-Heavy/*' 2>&1 | tail -40
     bash tests/Cli/bad_input.sh "$bin/ray-tracing-gpu" | grep -v "^ok"
-    bash tests/Cli/scene_files.sh "$bin/ray-tracing-gpu" . | grep -v "^ok"
+    RT_GLTF_MODELS=$PWD/.devcarry/gltf bash tests/Cli/scene_files.sh "$bin/ray-tracing-gpu" . | grep -v "^ok"
     ;;
 heavy)
     "$bin/rt_gpu_tests" --gtest_brief=1 --gtest_filter='Heavy/*' 2>&1 | tail -40

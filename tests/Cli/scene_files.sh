@@ -51,7 +51,30 @@ done
 # camera ray sees only emitters and the background, so the unlit model is a black silhouette on the sky that
 # must cover 5 % to 95 % of the image (a camera looking away, or at the model from inside, fails; a sky alone
 # gives about 0.016 of deviation, which is why the first check is not enough on its own).
-models=/usr/share/assimp/models/glTF2
+# pfm_stat spread|sky FILE.pfm: the standard deviation of the sRGB-encoded grey levels (0 to 1, as ImageMagick
+# gives it for the PNG), or the fraction of pixels brighter than 2 % grey (the sky around a black silhouette).
+# Python's standard library only: the NVIDIA host of tests/Bench/device_run.sh has no ImageMagick.
+pfm_stat() {
+    python3 - "$@" <<'PY'
+import struct, sys
+what, path = sys.argv[1], sys.argv[2]
+with open(path, "rb") as f:
+    assert f.readline().strip() == b"PF"
+    w, h = map(int, f.readline().split())
+    scale = float(f.readline())
+    data = struct.unpack(("<" if scale < 0 else ">") + "f" * (3 * w * h), f.read(12 * w * h))
+def srgb(x):
+    x = min(max(x, 0.0), 1.0)
+    return 12.92 * x if x <= 0.0031308 else 1.055 * x ** (1 / 2.4) - 0.055
+grey = [0.2126 * srgb(data[3 * i]) + 0.7152 * srgb(data[3 * i + 1]) + 0.0722 * srgb(data[3 * i + 2]) for i in range(w * h)]
+mean = sum(grey) / len(grey)
+if what == "spread":
+    print((sum((g - mean) ** 2 for g in grey) / len(grey)) ** 0.5)
+else:
+    print(sum(g > 0.02 for g in grey) / len(grey))
+PY
+}
+models=${RT_GLTF_MODELS:-/usr/share/assimp/models/glTF2} # the device run carries its own copy
 for model in BoxTextured-glTF/BoxTextured.gltf BoxTextured-glTF-Binary/BoxTextured.glb cameras/Cameras.gltf; do
     file="$models/$model"
     if [ ! -f "$file" ]; then
@@ -59,16 +82,18 @@ for model in BoxTextured-glTF/BoxTextured.gltf BoxTextured-glTF-Binary/BoxTextur
         continue
     fi
     name=$(basename "$model")
-    run "glTF $model renders" --scene "$file" --width 24 --spp 4 --depth 4 --output "$work/$name.png" || continue
+    run "glTF $model renders" --scene "$file" --width 24 --spp 4 --depth 4 --output "$work/$name.png" \
+        --hdr "$work/$name.pfm" || continue
     [ -s "$work/$name.png" ] || { fail "$model: no PNG"; continue; }
-    spread=$(convert "$work/$name.png" -colorspace Gray -format '%[fx:standard_deviation]' info:)
+    spread=$(pfm_stat spread "$work/$name.pfm")
     python3 -c "import sys; sys.exit(float(sys.argv[1]) <= 0.01)" "$spread" ||
         fail "$model: the image is (nearly) one colour (grey-level deviation $spread)"
     warnings=$(grep -c '^warning:' "$work/stderr")
     [ "$warnings" -eq 1 ] && grep -q "nothing in the file emits: lit by a gradient sky" "$work/stderr" ||
         fail "$model: expected one warning line saying the sky was added, got: $(cat "$work/stderr")"
-    run "glTF $model silhouette" --scene "$file" --width 24 --spp 1 --depth 1 --output "$work/$name-1.png" || continue
-    sky=$(convert "$work/$name-1.png" -colorspace Gray -threshold 2% -format '%[fx:mean]' info:)
+    run "glTF $model silhouette" --scene "$file" --width 24 --spp 1 --depth 1 --output "$work/$name-1.png" \
+        --hdr "$work/$name-1.pfm" || continue
+    sky=$(pfm_stat sky "$work/$name-1.pfm")
     python3 -c "import sys; sys.exit(not 0.05 <= float(sys.argv[1]) <= 0.95)" "$sky" ||
         fail "$model: the model covers $(python3 -c "import sys; print(round(100 * (1 - float(sys.argv[1]))))" "$sky") % of the image"
 done
