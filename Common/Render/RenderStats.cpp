@@ -36,6 +36,8 @@ nlohmann::json RenderStats::toJson() const
     j["inf_samples"] = infSamples;
     j["threads_used"] = threadsUsed;
     j["cancelled"] = cancelled;
+    if (!stageSeconds.empty())
+        j["stage_seconds"] = stageSeconds;
     return j;
 }
 
