@@ -88,6 +88,7 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
     st.infSamples = tally.infSamples;
     st.threadsUsed = tally.threadsUsed;
     st.stageSeconds = engine.stageSeconds();
+    st.frameConfiguration = engine.frameConfiguration();
     st.cancelled = samplesDone < totalSamples; // a cancel during the last batch came too late to matter
     st.wallSeconds = secondsSince(wallStart) + st.buildSeconds; // the build belongs to the render's cost
     return result;

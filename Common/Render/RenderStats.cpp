@@ -38,6 +38,8 @@ nlohmann::json RenderStats::toJson() const
     j["cancelled"] = cancelled;
     if (!stageSeconds.empty())
         j["stage_seconds"] = stageSeconds;
+    if (!frameConfiguration.empty())
+        j["frame_configuration"] = frameConfiguration;
     return j;
 }
 

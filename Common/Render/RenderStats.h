@@ -32,6 +32,7 @@ struct RenderStats
     int threadsUsed = 1;
     bool cancelled = false;
     std::map<std::string, double> stageSeconds; // RenderEngine::stageSeconds (the GPU engine's: docs/GPU.md)
+    std::string frameConfiguration; // RenderEngine::frameConfiguration
 
     double mpathsPerSecond() const { return renderSeconds > 0.0 ? double(paths) / renderSeconds * 1e-6 : 0.0; }
     nlohmann::json toJson() const;

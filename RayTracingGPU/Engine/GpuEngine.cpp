@@ -255,6 +255,14 @@ Image GpuEngine::estimate(std::uint32_t samples)
     return image;
 }
 
+std::string GpuEngine::frameConfiguration() const
+{
+    if (!m_impl->target || !m_impl->tracer.scene())
+        return {};
+    const SceneTracer& t = m_impl->tracer;
+    return "pipeline " + t.pipeline().specializationFor(m_impl->uniforms, t.gpuScene().pipelineScene()).describe();
+}
+
 std::map<std::string, double> GpuEngine::stageSeconds() const
 {
     std::map<std::string, double> stages = m_impl->frameStages;

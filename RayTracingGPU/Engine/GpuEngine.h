@@ -74,6 +74,8 @@ public:
     /// sum to the host: previews and the result) and resolve_host (sum / samples into the image). Device
     /// times are left out on a queue without timestamps.
     std::map<std::string, double> stageSeconds() const override;
+    /// The pipeline of the frame: PipelineSpecialization::describe() ("general", or the constants in words).
+    std::string frameConfiguration() const override;
 
     /// The instance, device and command pool, for work beside rendering (the tests' compute kernels).
     const GpuContext& context() const;
