@@ -34,6 +34,7 @@ print(f"speed-up: {best['off'][0] / best['on'][0]:.2f}x (strategy only {best['of
 stages = best["on"][1].get("stage_seconds", {})
 print("stages of the fastest specialised render (ms): " +
       ", ".join(f"{k} {v * 1e3:.2f}" for k, v in sorted(stages.items())))
+print(best["on"][1].get("frame_configuration", ""))
 print(f"wall {best['on'][1]['wall_seconds'] * 1e3:.1f} ms, render (host) {best['on'][1]['render_seconds'] * 1e3:.1f} ms")
 PY
 echo "relMSE specialised vs general: $(python3 "$(dirname "$0")/pfm_relmse.py" "$out/figure-on.pfm" "$out/figure-off.pfm")"
