@@ -6,7 +6,7 @@
 
 vec3 background(vec3 d)
 {
-    if (uniforms.backgroundType == BackgroundType_Constant)
+    if (!kHasGradientBackground || uniforms.backgroundType == BackgroundType_Constant)
         return uniforms.background0;
     float a = 0.5 * (normalize(d).y + 1.0);
     return mix(uniforms.background0, uniforms.background1, a);

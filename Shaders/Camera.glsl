@@ -15,6 +15,9 @@ struct CameraSample
     float time; // in [shutterOpen, shutterClose)
 };
 
+/// Whether the camera samples its lens (kHasThinLens: the pipeline was compiled for a camera with one).
+bool thinLens() { return kHasThinLens && uniforms.thinLens != 0u; }
+
 /// The numbers of camera sample `sampleIndex` of `pixel`, by the render's pixel sampling.
 Rng rngForCameraSample(uvec2 pixel, uint sampleIndex)
 {
@@ -37,7 +40,7 @@ CameraSample drawCameraSample(inout Rng rng, uvec2 pixel, uint sampleIndex)
     }
     else
         cs.raster = vec2(pixel) + jitter;
-    cs.lens = uniforms.thinLens != 0u ? nextFloat2(rng) : vec2(0.5);
+    cs.lens = thinLens() ? nextFloat2(rng) : vec2(0.5);
     float u = nextFloat(rng);
     cs.time = uniforms.shutterOpen + u * (uniforms.shutterClose - uniforms.shutterOpen);
     return cs;
@@ -49,7 +52,7 @@ void generateRay(CameraSample cs, out vec3 origin, out vec3 direction)
     vec3 target = uniforms.pixel00 + (cs.raster.x - 0.5) * uniforms.pixelDeltaU +
                   (cs.raster.y - 0.5) * uniforms.pixelDeltaV;
     origin = uniforms.cameraCenter;
-    if (uniforms.thinLens != 0u)
+    if (thinLens())
     {
         vec2 d = sampleUniformDiskConcentric(cs.lens);
         origin += d.x * uniforms.defocusDiskU + d.y * uniforms.defocusDiskV;

@@ -44,7 +44,7 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
             break;
         }
         MaterialData m = materials[payload.material];
-        bool medium = (payload.flags & kHitMedium) != 0u;
+        bool medium = kHasMedia && (payload.flags & kHitMedium) != 0u;
         float offsetScale = payload.offsetScale;
         SurfaceHit hit;
         hit.position = payload.position;
@@ -77,10 +77,10 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
         bool shadowPending = false;
         vec3 shadowOrigin, shadowDirection, shadowContribution;
         float shadowDistance;
-        bool diffuse = m.type == MaterialType_Lambertian || m.type == MaterialType_Isotropic;
+        bool phase = kHasIsotropic && m.type == MaterialType_Isotropic;
+        bool diffuse = (kHasLambertian && m.type == MaterialType_Lambertian) || phase;
         if (nee && diffuse)
         {
-            bool phase = m.type == MaterialType_Isotropic;
             vec3 albedo = evaluateTexture(m.albedoTexture, hit.uv, hit.position);
             // The BSDF ray leaves from this origin too (below): sampleDiffuse keeps to the side of ns.
             shadowOrigin = medium ? hit.position : offsetRayOrigin(hit.position, hit.shadingNormal, offsetScale);

@@ -1,7 +1,11 @@
-// The render settings a pipeline may be specialised on (HostDevice.h's kSpecId*): each accessor returns the
-// specialization constant when the engine set one and the uniform when it left kSpecDynamic, so one SPIR-V
-// module serves the specialised pipelines and the general one. Read the settings through these, never through
-// `uniforms` directly. Needs the `uniforms` block of Bindings.glsl.
+// What a path-tracing pipeline is compiled for (HostDevice.h's kSpecId*).
+// The render settings: each accessor returns the specialization constant when the engine set one and the
+// uniform when it left kSpecDynamic, so one SPIR-V module serves the specialised pipelines and the general
+// one. Read the settings through these, never through `uniforms` directly.
+// The scene's features: kHas* are false when the pipeline was compiled for a scene without the feature, and
+// the code behind `if (kHasX)` is then dead, which the driver removes once the constants are known. The
+// general pipeline sets every bit (kSpecDynamic): every feature present, as before specialisation.
+// Needs the `uniforms` block of Bindings.glsl.
 #ifndef RT_SPECIALIZATION_GLSL
 #define RT_SPECIALIZATION_GLSL
 
@@ -9,6 +13,7 @@ layout(constant_id = kSpecIdEstimator) const uint kSpecEstimator = kSpecDynamic;
 layout(constant_id = kSpecIdLightSampler) const uint kSpecLightSampler = kSpecDynamic;
 layout(constant_id = kSpecIdLightSelection) const uint kSpecLightSelection = kSpecDynamic;
 layout(constant_id = kSpecIdSampling) const uint kSpecSampling = kSpecDynamic;
+layout(constant_id = kSpecIdFeatures) const uint kSpecFeatures = kSpecDynamic;
 
 uint settingEstimator() { return kSpecEstimator != kSpecDynamic ? kSpecEstimator : uniforms.estimator; }
 uint settingLightSampler() { return kSpecLightSampler != kSpecDynamic ? kSpecLightSampler : uniforms.lightSampler; }
@@ -17,5 +22,29 @@ uint settingLightSelection()
     return kSpecLightSelection != kSpecDynamic ? kSpecLightSelection : uniforms.lightSelection;
 }
 uint settingSampling() { return kSpecSampling != kSpecDynamic ? kSpecSampling : uniforms.sampling; }
+
+// Specialization-constant expressions (OpSpecConstantOp): constants once the pipeline is compiled.
+const bool kHasSpheres = (kSpecFeatures & kFeatureSpheres) != 0u;
+const bool kHasMedia = (kSpecFeatures & kFeatureMedia) != 0u;
+const bool kHasMotion = (kSpecFeatures & kFeatureMotion) != 0u;
+const bool kHasLambertian = (kSpecFeatures & kFeatureLambertian) != 0u;
+const bool kHasMetal = (kSpecFeatures & kFeatureMetal) != 0u;
+const bool kHasDielectric = (kSpecFeatures & kFeatureDielectric) != 0u;
+const bool kHasIsotropic = (kSpecFeatures & kFeatureIsotropic) != 0u;
+const bool kHasCheckerTextures = (kSpecFeatures & kFeatureCheckerTextures) != 0u;
+const bool kHasImageTextures = (kSpecFeatures & kFeatureImageTextures) != 0u;
+const bool kHasNoiseTextures = (kSpecFeatures & kFeatureNoiseTextures) != 0u;
+const bool kHasSphereLights = (kSpecFeatures & kFeatureSphereLights) != 0u;
+const bool kHasQuadLights = (kSpecFeatures & kFeatureQuadLights) != 0u;
+const bool kHasTriangleLights = (kSpecFeatures & kFeatureTriangleLights) != 0u;
+const bool kHasThinLens = (kSpecFeatures & kFeatureThinLens) != 0u;
+const bool kHasGradientBackground = (kSpecFeatures & kFeatureGradientBackground) != 0u;
+
+// The light shapes the shared light samplers (Shared/LightSampling.h) must handle: there, in C++ and in the
+// shaders that do not include this file (the parity kernel), every shape.
+#ifdef RT_SHARED_LIGHT_SAMPLING_H
+#error "Specialization.glsl (through Bindings.glsl) must come before Shared/LightSampling.h"
+#endif
+#define RT_HAS_LIGHT_SHAPE(Shape) kHas##Shape##Lights
 
 #endif

@@ -87,6 +87,8 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
     st.nanSamples = tally.nanSamples;
     st.infSamples = tally.infSamples;
     st.threadsUsed = tally.threadsUsed;
+    st.stageSeconds = engine.stageSeconds();
+    st.frameConfiguration = engine.frameConfiguration();
     st.cancelled = samplesDone < totalSamples; // a cancel during the last batch came too late to matter
     st.wallSeconds = secondsSince(wallStart) + st.buildSeconds; // the build belongs to the render's cost
     return result;

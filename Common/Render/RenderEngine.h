@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 
 #include "Image/Image.h"
@@ -63,5 +64,11 @@ public:
     /// The accumulator divided by `samples` (> 0): linear radiance, the frame's width x height.
     virtual Image estimate(std::uint32_t samples) = 0;
     virtual SampleTally tally() const = 0;
+    /// The engine's own times of the stages of its last setScene and frame, in seconds, by name (each engine's
+    /// documentation names its stages); empty where the engine has none to tell.
+    virtual std::map<std::string, double> stageSeconds() const { return {}; }
+    /// What the last frame ran on, in words, where an engine has variants (the GPU engine: the specialisation
+    /// of its pipeline); empty otherwise.
+    virtual std::string frameConfiguration() const { return {}; }
 };
 } // namespace rt

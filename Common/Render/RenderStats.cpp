@@ -36,6 +36,10 @@ nlohmann::json RenderStats::toJson() const
     j["inf_samples"] = infSamples;
     j["threads_used"] = threadsUsed;
     j["cancelled"] = cancelled;
+    if (!stageSeconds.empty())
+        j["stage_seconds"] = stageSeconds;
+    if (!frameConfiguration.empty())
+        j["frame_configuration"] = frameConfiguration;
     return j;
 }
 

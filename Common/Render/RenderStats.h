@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -30,6 +31,8 @@ struct RenderStats
     std::uint64_t infSamples = 0; // ... or an infinity
     int threadsUsed = 1;
     bool cancelled = false;
+    std::map<std::string, double> stageSeconds; // RenderEngine::stageSeconds (the GPU engine's: docs/GPU.md)
+    std::string frameConfiguration; // RenderEngine::frameConfiguration
 
     double mpathsPerSecond() const { return renderSeconds > 0.0 ? double(paths) / renderSeconds * 1e-6 : 0.0; }
     nlohmann::json toJson() const;

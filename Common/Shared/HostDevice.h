@@ -224,24 +224,42 @@ RT_CONST(uint, kMissBackground, 0u) // path rays, payload 0 (HitPayload): the ba
 RT_CONST(uint, kMissShadow, 1u)     // shadow rays, payload 1 (uint): 1 = reached the light unoccluded
 RT_CONST(uint, kPayloadPath, 0u)
 RT_CONST(uint, kPayloadShadow, 1u)
-// A procedural BLAS holds its spheres as geometry 0 and its media as geometry 1 (traceRayEXT uses sbtRecordStride 1), so an
-// instance of spheres and media starts at kHitGroupSpheres and reaches kHitGroupMedia through geometry 1.
-RT_CONST(uint, kHitGroupTriangles, 0u)
-RT_CONST(uint, kHitGroupSpheres, 1u)
-RT_CONST(uint, kHitGroupMedia, 2u)
-RT_CONST(uint, kHitGroupCount, 3u)
+// Hit groups: which SBT hit record each kind of geometry takes depends on the kinds a scene has (no sphere group
+// without spheres): RayTracingGPU/RayTracing/HitGroupLayout.h assigns them; the shaders never name a record.
 
-// Specialization constants of the path-tracing pipeline (Shaders/Specialization.glsl): each stands for one
-// RenderUniforms field, so that a pipeline compiled for one estimator, light sampler, light selection and
-// sampling carries only their code (the driver folds the rest away: 1.1x to 5x faster on an H100,
-// docs/PERFORMANCE.md §4.2). The value kSpecDynamic reads the uniform instead: the general pipeline. Only the
-// settings that select large code are here: each specialisation is a compilation (20 s on lavapipe).
+// Specialization constants of the path-tracing pipeline (Shaders/Specialization.glsl). The first four stand
+// each for one RenderUniforms field, so that a pipeline compiled for one estimator, light sampler, light
+// selection and sampling carries only their code (the driver folds the rest away: 1.1x to 5x faster on an H100,
+// docs/PERFORMANCE.md §4.2); the value kSpecDynamic reads the uniform instead: the general pipeline.
+// kSpecIdFeatures is a mask of the kFeature* bits below: what the scene (and the render's camera) uses; the
+// shaders test `if (kHasX)` on it and the driver drops the code of every absent feature. kSpecDynamic (every
+// bit set) is the general pipeline again: every feature present. Each specialisation is a compilation (tens
+// of seconds on lavapipe, well under a second on an H100).
 RT_CONST(uint, kSpecDynamic, 0xFFFFFFFFu)
 RT_CONST(uint, kSpecIdEstimator, 0u)      // RenderUniforms::estimator
 RT_CONST(uint, kSpecIdLightSampler, 1u)   // RenderUniforms::lightSampler
 RT_CONST(uint, kSpecIdLightSelection, 2u) // RenderUniforms::lightSelection
 RT_CONST(uint, kSpecIdSampling, 3u)       // RenderUniforms::sampling
-RT_CONST(uint, kSpecIdCount, 4u)
+RT_CONST(uint, kSpecIdFeatures, 4u)       // kFeature* bits
+RT_CONST(uint, kSpecIdCount, 5u)
+
+// The bits of kSpecIdFeatures (PipelineSpecialization.cpp sets them from rt::SceneFeatures and the uniforms).
+RT_CONST(uint, kFeatureTriangles, 0x1u)          // quads or meshes: Triangle.rchit's hit group
+RT_CONST(uint, kFeatureSpheres, 0x2u)            // Sphere.rint/.rchit's hit group
+RT_CONST(uint, kFeatureMedia, 0x4u)              // Medium.rint/.rchit's hit group, scattering inside media
+RT_CONST(uint, kFeatureMotion, 0x8u)             // a moving sphere: Sphere.rint replays the ray's time
+RT_CONST(uint, kFeatureLambertian, 0x10u)        // materials some primitive uses
+RT_CONST(uint, kFeatureMetal, 0x20u)
+RT_CONST(uint, kFeatureDielectric, 0x40u)
+RT_CONST(uint, kFeatureCheckerTextures, 0x80u)   // textures some used material reads (solid colours always)
+RT_CONST(uint, kFeatureImageTextures, 0x100u)
+RT_CONST(uint, kFeatureNoiseTextures, 0x200u)    // noise, turbulence, marble
+RT_CONST(uint, kFeatureSphereLights, 0x400u)     // shapes in LightData[] (emitters and the mixture's targets)
+RT_CONST(uint, kFeatureQuadLights, 0x800u)
+RT_CONST(uint, kFeatureTriangleLights, 0x1000u)
+RT_CONST(uint, kFeatureThinLens, 0x2000u)        // RenderUniforms::thinLens (the render's camera, not the scene's)
+RT_CONST(uint, kFeatureGradientBackground, 0x4000u) // RenderUniforms::backgroundType
+RT_CONST(uint, kFeatureIsotropic, 0x8000u)       // an isotropic material (media's phase functions)
 
 RT_ENUM_BEGIN(MediumBoundary)
 RT_ENUM_VALUE(MediumBoundary, Sphere, 0) // center, radius

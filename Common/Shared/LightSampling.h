@@ -17,6 +17,15 @@
 #include "Shared/SphericalTriangle.h"
 #include "Shared/Warps.h"
 
+// Whether the code must handle lights of a shape: always in C++; in the shaders a specialization constant
+// (Shaders/Specialization.glsl defines the macro first), false where the pipeline was compiled for a scene
+// without that shape, and the driver then drops that shape's code.
+#ifndef RT_HAS_LIGHT_SHAPE
+#define RT_HAS_LIGHT_SHAPE(Shape) true
+#endif
+/// shape == LightShape::Shape, false at compile time where the pipeline has no light of that shape.
+#define RT_LIGHT_IS(shape, Shape) (RT_HAS_LIGHT_SHAPE(Shape) && (shape) == RT_ENUM(LightShape, Shape))
+
 RT_SHADER_NAMESPACE_BEGIN
 
 struct LightSample
@@ -91,7 +100,7 @@ RT_FN bool onPlanarLight(RT_TAG(LightShape) shape, float alpha, float beta, floa
 {
     if (alpha < -sa || beta < -sb)
         return false;
-    if (shape == RT_ENUM(LightShape, Quad))
+    if (RT_LIGHT_IS(shape, Quad))
         return alpha <= 1.0f + sa && beta <= 1.0f + sb;
     return alpha + beta <= 1.0f + sab;
 }
@@ -127,7 +136,7 @@ RT_FN float planarHit(RT_IN(LightData) light, vec3 p, vec3 wi)
 /// Solid-angle pdf with which sampleLight(light, p, .) produces the unit direction `wi`; 0 if it cannot.
 RT_FN float lightPdf(RT_IN(LightData) light, vec3 p, vec3 wi)
 {
-    if (light.shape == RT_ENUM(LightShape, Sphere))
+    if (RT_LIGHT_IS(light.shape, Sphere))
     {
         float oneMinusCos;
         float cosThetaMax;
@@ -141,6 +150,8 @@ RT_FN float lightPdf(RT_IN(LightData) light, vec3 p, vec3 wi)
         const float area = 4.0f * kPi * light.radius * light.radius;
         return areaToSolidAngle(t * t, abs(dot(n, wi)), area);
     }
+    if (!RT_HAS_LIGHT_SHAPE(Quad) && !RT_HAS_LIGHT_SHAPE(Triangle))
+        return 0.0f; // only spheres: the code below is dead
     const float t = planarHit(light, p, wi);
     if (t < 0.0f)
         return 0.0f;
@@ -161,7 +172,7 @@ RT_FN bool sampleLight(RT_IN(LightData) light, vec3 p, vec2 u, RT_OUT(LightSampl
     ls.distance = 0.0f;
     ls.normal = light.normal;
     ls.uv = vec2(0.0f);
-    if (light.shape == RT_ENUM(LightShape, Sphere))
+    if (RT_LIGHT_IS(light.shape, Sphere))
     {
         float oneMinusCos;
         float cosThetaMax;
@@ -178,16 +189,18 @@ RT_FN bool sampleLight(RT_IN(LightData) light, vec3 p, vec2 u, RT_OUT(LightSampl
         ls.normal = sampleUniformSphere(u);
         ls.point = light.p0 + light.radius * ls.normal;
     }
-    else if (light.shape == RT_ENUM(LightShape, Quad))
+    else if (RT_LIGHT_IS(light.shape, Quad))
     {
         ls.uv = u;
         ls.point = light.p0 + u.x * light.p1 + u.y * light.p2;
     }
-    else
+    else if (RT_HAS_LIGHT_SHAPE(Triangle))
     {
         ls.uv = sampleUniformTriangle(u);
         ls.point = light.p0 + ls.uv.x * light.p1 + ls.uv.y * light.p2; // p1, p2 are edges from p0
     }
+    else
+        return false; // a shape the pipeline has no light of: never reached
     const vec3 w = ls.point - p;
     const float dist2 = lengthSquared(w);
     if (!(dist2 > 0.0f))
@@ -213,7 +226,7 @@ RT_CONST(float, kMaxSphericalTriangle, 6.22f)
 /// A triangle seen from p within the spherical triangle sampler's bounds, set up in `t`.
 RT_FN bool sphericalTriangleApplies(RT_IN(LightData) light, vec3 p, RT_OUT(SphericalTriangle) t)
 {
-    if (light.shape != RT_ENUM(LightShape, Triangle))
+    if (!RT_LIGHT_IS(light.shape, Triangle))
         return false;
     t = makeSphericalTriangle(p, light.p0, light.p1, light.p2);
     return t.solidAngle >= Real(kMinSphericalTriangle) && t.solidAngle <= Real(kMaxSphericalTriangle);
@@ -222,7 +235,7 @@ RT_FN bool sphericalTriangleApplies(RT_IN(LightData) light, vec3 p, RT_OUT(Spher
 /// A quad whose edges are orthogonal (to float precision): what spherical-rectangle sampling needs.
 RT_FN bool isRectangle(RT_IN(LightData) light)
 {
-    return light.shape == RT_ENUM(LightShape, Quad) &&
+    return RT_LIGHT_IS(light.shape, Quad) &&
            abs(dot(light.p1, light.p2)) <= 1e-5f * length(light.p1) * length(light.p2);
 }
 
@@ -346,7 +359,7 @@ RT_FN float lightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3
         const vec2 uv = invertSphericalTriangle(tri, RealVec3(wi));
         return bilinearPdf(uv, w.x, w.y, w.z, w.w) / float(tri.solidAngle);
     }
-    if (strategy == RT_ENUM(LightSampler, Projected) && light.shape == RT_ENUM(LightShape, Sphere))
+    if (strategy == RT_ENUM(LightSampler, Projected) && RT_LIGHT_IS(light.shape, Sphere))
     {
         ProjectedCap cap;
         if (projectedCap(light, p, n, cap))
@@ -359,7 +372,7 @@ RT_FN float lightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3
                                                          : 0.0f;
         }
     }
-    if (strategy == RT_ENUM(LightSampler, Area) && light.shape == RT_ENUM(LightShape, Sphere) &&
+    if (strategy == RT_ENUM(LightSampler, Area) && RT_LIGHT_IS(light.shape, Sphere) &&
         lengthSquared(p - light.p0) > light.radius * light.radius)
     {
         const float t = sphereNearHit(light, p, wi);
@@ -428,7 +441,7 @@ RT_FN bool sampleLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, ve
         ls.pdf = planarHit(light, p, ls.wi) > 0.0f ? warpPdf / float(tri.solidAngle) : 0.0f;
         return ls.pdf > 0.0f;
     }
-    if (strategy == RT_ENUM(LightSampler, Projected) && light.shape == RT_ENUM(LightShape, Sphere))
+    if (strategy == RT_ENUM(LightSampler, Projected) && RT_LIGHT_IS(light.shape, Sphere))
     {
         ProjectedCap cap;
         if (projectedCap(light, p, n, cap))
@@ -449,7 +462,7 @@ RT_FN bool sampleLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, ve
             return ls.pdf > 0.0f;
         }
     }
-    if (strategy == RT_ENUM(LightSampler, Area) && light.shape == RT_ENUM(LightShape, Sphere) &&
+    if (strategy == RT_ENUM(LightSampler, Area) && RT_LIGHT_IS(light.shape, Sphere) &&
         lengthSquared(p - light.p0) > light.radius * light.radius)
     {
         ls.uv = vec2(0.0f);

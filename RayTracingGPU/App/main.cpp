@@ -38,6 +38,14 @@ struct WindowFlags
     std::string heatmap = "off";
 };
 
+/// --specialize's value (checked by CLI11): on, strategy, off.
+rt::gpu::Specialize specializeMode(const std::string& value)
+{
+    return value == "off" ? rt::gpu::Specialize::Off
+           : value == "strategy" ? rt::gpu::Specialize::Strategy
+                                 : rt::gpu::Specialize::Full;
+}
+
 bool onOff(const std::string& value, const char* flag)
 {
     if (const auto on = rt::parseOnOff(value))
@@ -189,9 +197,12 @@ int main(int argc, char** argv)
     std::string specialize = "on";
     app.add_option("--specialize", specialize,
                    "Headless and --compare: on compiles a pipeline for the render's estimator, light sampler, light "
-                   "selection and pixel sampling, so that the driver drops the code of every other choice "
-                   "(faster); off runs the general pipeline that reads them at run time")
-        ->check(CLI::IsMember({"on", "off"}))
+                   "selection and pixel sampling and for the scene's features (geometry kinds, media, motion, "
+                   "materials, texture kinds, light shapes, lens, background), so that the driver drops the code of "
+                   "every other choice and the pipeline holds only the hit groups the scene needs (faster); "
+                   "strategy specialises on the render's settings only; off runs the general pipeline that reads "
+                   "them at run time")
+        ->check(CLI::IsMember({"on", "strategy", "off"}))
         ->capture_default_str();
     WindowFlags window;
     addWindowOptions(app, window);
@@ -219,7 +230,7 @@ int main(int argc, char** argv)
             return rt::app::runComparison(job.scene, job.request, c, [&](rt::EngineKind kind) -> std::unique_ptr<rt::RenderEngine> {
                 if (kind == rt::EngineKind::Gpu)
                     return std::make_unique<rt::gpu::GpuEngine>(rt::gpu::GpuEngineOptions{
-                        .deviceIndex = device, .validation = validation, .specialize = specialize == "on"});
+                        .deviceIndex = device, .validation = validation, .specialize = specializeMode(specialize)});
                 return std::make_unique<rt::cpu::CpuEngine>(kind);
             });
         }
@@ -227,7 +238,7 @@ int main(int argc, char** argv)
             return runWindow(options, window, device, validation);
         rt::checkOutputPaths(options);
         const rt::CommandLineRender job = rt::resolveCommandLine(options);
-        rt::gpu::GpuEngine gpu({.deviceIndex = device, .validation = validation, .specialize = specialize == "on"});
+        rt::gpu::GpuEngine gpu({.deviceIndex = device, .validation = validation, .specialize = specializeMode(specialize)});
         const int status = rt::runHeadless(gpu, job.scene, job.request, options);
         if (gpu.validationMessages() > 0)
         {

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 
 #include "Assets/AssetPaths.h"
 #include "Engine/GpuContext.h"
+#include "Engine/GpuScene.h"
 #include "Engine/RenderLimits.h"
 #include "Engine/RenderTarget.h"
 #include "Engine/SceneTracer.h"
@@ -48,12 +50,13 @@ struct GpuEngine::Impl
     std::unique_ptr<RenderTarget> target;
     TracingDescriptors descriptors; // the scene and the target; empty after setScene
     shader::RenderUniforms uniforms{}; // the frame's, as in the target's uniform buffer
+    std::map<std::string, double> frameStages; // stageSeconds() of the frame
 
     explicit Impl(const GpuEngineOptions& options)
         : context({options.deviceIndex, options.validation, options.presentation}),
           tracer(context.device(), context.commandPool(),
                  options.shaderDir.empty() ? executableDir() / "shaders" : options.shaderDir, options.specialize),
-          timestamps(context.device(), 2),
+          timestamps(context.device(), 4),
           pathsPerBatch(options.pathsPerBatch > 0 ? options.pathsPerBatch
                         : context.device().properties().type == vk::DeviceType::Cpu ? kPathsPerBatchCpu
                                                                                     : kPathsPerBatchGpu)
@@ -103,14 +106,32 @@ struct GpuEngine::Impl
         return timed ? timestamps.secondsBetween(0, device().properties().limits.timestampPeriod) : -1.0;
     }
 
+    /// Records `record` between timestamps 2 and 3, runs it and adds its device seconds to frameStages[stage].
+    void timedSubmit(const char* stage, const std::function<void(VkCommandBuffer)>& record)
+    {
+        const bool timed = device().properties().timestampValidBits > 0;
+        vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) {
+            if (timed)
+            {
+                vkCmdResetQueryPool(cmd, timestamps.Handle(), 2, 2);
+                vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps.Handle(), 2);
+            }
+            record(cmd);
+            if (timed)
+                vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 3);
+        });
+        if (timed)
+            frameStages[stage] += timestamps.secondsBetween(2, device().properties().limits.timestampPeriod);
+    }
+
     void clear()
     {
-        vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) { target->recordClear(cmd); });
+        timedSubmit("clear_gpu", [&](VkCommandBuffer cmd) { target->recordClear(cmd); });
     }
 
     void readback()
     {
-        vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) { target->recordReadback(cmd); });
+        timedSubmit("readback_gpu", [&](VkCommandBuffer cmd) { target->recordReadback(cmd); });
     }
 
     void restore()
@@ -140,7 +161,12 @@ const SceneTracer& GpuEngine::tracer() const { return m_impl->tracer; }
 
 void GpuEngine::setBandRows(std::uint32_t rows) { m_impl->fixedBandRows = rows; }
 
-void GpuEngine::setSpecialize(bool specialize) { m_impl->tracer.setSpecialize(specialize); }
+void GpuEngine::setSpecialize(Specialize specialize) { m_impl->tracer.setSpecialize(specialize); }
+
+const AccelerationStructureBuilds& GpuEngine::accelerationStructureBuilds() const
+{
+    return m_impl->tracer.accelerationStructureBuilds();
+}
 
 const Scene* GpuEngine::scene() const { return m_impl->tracer.scene(); }
 
@@ -165,7 +191,11 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
         throw DeviceError(*problem);
     e.prepareTarget(width, height);
     e.uniforms = e.tracer.uniforms(e.tracer.scene()->camera, settings, {width, height});
-    e.tracer.pipeline().prepare(e.uniforms); // the compilation stays out of the render's time
+    e.frameStages.clear();
+    const auto compileStart = std::chrono::steady_clock::now();
+    e.tracer.prepare(e.uniforms); // the compilation stays out of the render's time
+    e.frameStages["pipeline_host"] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - compileStart).count();
     e.target->reset(e.uniforms);
     e.clear();
     e.bandWork = std::max(1u, height / 16); // a sixteenth of the image at one sample, then by time
@@ -204,6 +234,8 @@ BatchResult GpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
         const double hostSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         deviceTimed = deviceTimed && seconds >= 0.0;
         deviceSeconds += seconds;
+        if (seconds >= 0.0)
+            e.frameStages["trace_gpu"] += seconds;
         control.advance(std::uint64_t(width) * rows * count);
         row += rows;
         e.bandWork = nextBandWork(std::uint64_t(rows) * count, hostSeconds);
@@ -216,7 +248,33 @@ Image GpuEngine::estimate(std::uint32_t samples)
     if (!m_impl->target || m_impl->descriptors.set == VK_NULL_HANDLE)
         throw UsageError("GpuEngine::estimate called before beginFrame");
     m_impl->readback();
-    return m_impl->target->readEstimate(samples);
+    const auto start = std::chrono::steady_clock::now();
+    Image image = m_impl->target->readEstimate(samples);
+    m_impl->frameStages["resolve_host"] +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return image;
+}
+
+std::string GpuEngine::frameConfiguration() const
+{
+    if (!m_impl->target || !m_impl->tracer.scene())
+        return {};
+    const SceneTracer& t = m_impl->tracer;
+    return "pipeline " + t.pipeline().specializationFor(m_impl->uniforms, t.gpuScene().pipelineScene()).describe();
+}
+
+std::map<std::string, double> GpuEngine::stageSeconds() const
+{
+    std::map<std::string, double> stages = m_impl->frameStages;
+    if (!m_impl->tracer.scene())
+        return stages;
+    const GpuScene& scene = m_impl->tracer.gpuScene();
+    stages["upload_host"] = scene.uploadSeconds();
+    if (scene.buildTimes().blasGpuSeconds >= 0.0)
+        stages["blas_build_gpu"] = scene.buildTimes().blasGpuSeconds;
+    if (scene.buildTimes().tlasGpuSeconds >= 0.0)
+        stages["tlas_build_gpu"] = scene.buildTimes().tlasGpuSeconds;
+    return stages;
 }
 
 SampleTally GpuEngine::tally() const

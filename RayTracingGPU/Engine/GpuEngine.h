@@ -9,16 +9,19 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "Engine/GpuContext.h"
+#include "Engine/PipelineSpecialization.h"
 #include "Render/RenderEngine.h"
 
 namespace rt::gpu
 {
 class SceneTracer;
+struct AccelerationStructureBuilds;
 
 struct GpuEngineOptions
 {
@@ -26,8 +29,9 @@ struct GpuEngineOptions
     bool validation = false; // Khronos validation layer + counting messenger (see validationWanted())
     std::filesystem::path shaderDir; // empty: executableDir()/shaders, never the working directory
     std::uint64_t pathsPerBatch = 0; // camera paths per dispatch; 0: by device type (kPathsPerBatchGpu/Cpu)
-    /// Compile a pipeline per render settings (PipelineSpecialization.h); false: one general pipeline.
-    bool specialize = true;
+    /// Compile a pipeline per render settings and scene features (PipelineSpecialization.h), per settings only
+    /// (Strategy), or one general pipeline for everything (Off).
+    Specialize specialize = Specialize::Full;
     /// The window: the device must present to its surface (GpuContext.h). Headless leaves it empty.
     std::optional<Presentation> presentation;
 };
@@ -63,6 +67,15 @@ public:
     /// Reads the accumulation image back (one submission, waited for).
     Image estimate(std::uint32_t samples) override;
     SampleTally tally() const override;
+    /// Where the time went, in seconds: of setScene, upload_host (buffers and images, host clock) and, where
+    /// they were built, blas_build_gpu and tlas_build_gpu (device clock); of the frame, pipeline_host (the
+    /// compilation of a pipeline not cached yet, host clock; lavapipe compiles at the first launch instead,
+    /// inside trace_gpu), clear_gpu, trace_gpu (= RenderStats::gpuSeconds), readback_gpu (every copy of the
+    /// sum to the host: previews and the result) and resolve_host (sum / samples into the image). Device
+    /// times are left out on a queue without timestamps.
+    std::map<std::string, double> stageSeconds() const override;
+    /// The pipeline of the frame: PipelineSpecialization::describe() ("general", or the constants in words).
+    std::string frameConfiguration() const override;
 
     /// The instance, device and command pool, for work beside rendering (the tests' compute kernels).
     const GpuContext& context() const;
@@ -78,7 +91,11 @@ public:
     /// ProgressiveRenderer records its frames with it).
     const SceneTracer& tracer() const;
     /// GpuEngineOptions::specialize, from the next frame on (pipelines compiled so far are kept).
-    void setSpecialize(bool specialize);
+    void setSpecialize(Specialize specialize);
+    /// true: Specialize::Full, false: Specialize::Off.
+    void setSpecialize(bool specialize) { setSpecialize(specialize ? Specialize::Full : Specialize::Off); }
+    /// BLAS and TLAS builds so far: a scene whose geometry equals the last one's builds nothing.
+    const AccelerationStructureBuilds& accelerationStructureBuilds() const;
     /// Rows per submission of a batch (at least 1, at most the image's height); 0, the default: sized by
     /// time, about kBatchTargetSeconds each. Tests fix it to cut a batch into known bands.
     void setBandRows(std::uint32_t rows);

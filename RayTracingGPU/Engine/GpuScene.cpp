@@ -4,6 +4,7 @@
 #include <limits>
 
 #include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
 
 #include "Error.h"
 #include "Sampling/LightBvh.h"
@@ -15,11 +16,15 @@ namespace rt::gpu
 {
 namespace
 {
+using Clock = std::chrono::steady_clock;
+
 constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 // Arrays that acceleration-structure builds read as well as shaders.
 constexpr VkBufferUsageFlags kBuildInput = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                            VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
                                            VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 void checkImageLimits(const vk::Device& device, const Scene& scene, std::uint32_t maxImages)
 {
@@ -36,13 +41,16 @@ void checkImageLimits(const vk::Device& device, const Scene& scene, std::uint32_
 }
 } // namespace
 
-GpuScene::GpuScene(const vk::Device& device, const vk::CommandPool& pool, const Scene& scene, std::uint32_t maxImages)
-    : m_sampler(device),
+GpuScene::GpuScene(const vk::Device& device, const vk::CommandPool& pool, const Scene& scene,
+                   const SceneLayout& layout, std::uint32_t maxImages, std::unique_ptr<GpuGeometry> previous)
+    : m_pipelineScene{featureBitsOf(scene, layout.hitGroups), layout.hitGroups},
       m_samplesPerLaunch(scene.hasMotion() ? 1u : std::numeric_limits<std::uint32_t>::max())
 {
     checkImageLimits(device, scene, maxImages);
-    const SceneLayout layout = layoutScene(scene);
+    const GeometryFingerprint fingerprint = fingerprintOf(layout);
+    const bool keepBlases = previous && previous->fingerprint.blases == fingerprint.blases;
 
+    const Clock::time_point uploadStart = Clock::now();
     vk::UploadBatch upload(device);
     m_buffers.materials = upload.buffer(scene.materials, kStorage);
     m_buffers.textures = upload.buffer(scene.textures, kStorage);
@@ -54,17 +62,25 @@ GpuScene::GpuScene(const vk::Device& device, const vk::CommandPool& pool, const 
     m_buffers.perlin = upload.buffer(&perlinTables(), sizeof(shader::PerlinData), kStorage);
     m_buffers.records = upload.buffer(layout.records, kStorage);
     m_buffers.primitiveLights = upload.buffer(layout.primitiveLights, kStorage);
-    m_buffers.positions = upload.buffer(layout.positions, kBuildInput);
     m_buffers.uvs = upload.buffer(layout.uvs, kStorage);
-    m_buffers.triangles = upload.buffer(layout.triangles, kBuildInput);
     m_buffers.triangleMaterials = upload.buffer(layout.triangleMaterials, kStorage);
     m_buffers.spheres = upload.buffer(layout.spheres, kStorage);
     m_buffers.media = upload.buffer(layout.media, kStorage);
-    m_buffers.aabbs = upload.buffer(layout.aabbs, kBuildInput);
+    if (keepBlases)
+        m_geometry = std::move(previous);
+    else
+    {
+        previous.reset(); // its memory goes before the new geometry's comes
+        m_geometry = std::make_unique<GpuGeometry>();
+        m_geometry->positions = upload.buffer(layout.positions, kBuildInput);
+        m_geometry->triangles = upload.buffer(layout.triangles, kBuildInput);
+        m_geometry->aabbs = upload.buffer(layout.aabbs, kBuildInput);
+    }
 
-    static const ImageData kWhite{"(no image)", 1, 1, {255, 255, 255, 255}};
-    const std::vector<ImageData> fallback{kWhite};
-    for (const ImageData& image : scene.images.empty() ? fallback : scene.images)
+    // Only the scene's own images: without image textures nothing is bound (PathTracingPipeline).
+    if (!scene.images.empty())
+        m_sampler = vk::Sampler(device);
+    for (const ImageData& image : scene.images)
     {
         const VkExtent2D extent{std::uint32_t(image.width), std::uint32_t(image.height)};
         m_images.emplace_back(device, extent, VK_FORMAT_R8G8B8A8_UNORM, // sRGB texels, decoded in ImageTexture.glsl
@@ -73,11 +89,29 @@ GpuScene::GpuScene(const vk::Device& device, const vk::CommandPool& pool, const 
         m_views.emplace_back(device, m_images.back());
     }
     upload.submit(pool);
+    m_uploadSeconds = secondsSince(uploadStart);
 
-    const auto start = std::chrono::steady_clock::now();
-    m_accelerationStructures = buildAccelerationStructures(
-        device, pool, layout,
-        {m_buffers.positions.address(), m_buffers.triangles.address(), m_buffers.aabbs.address()});
-    m_buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const Clock::time_point buildStart = Clock::now();
+    if (!keepBlases)
+    {
+        m_geometry->structures = buildAccelerationStructures(
+            device, pool, layout,
+            {m_geometry->positions.address(), m_geometry->triangles.address(), m_geometry->aabbs.address()},
+            &m_buildTimes);
+        m_reuse = GeometryReuse::Built;
+    }
+    else if (m_geometry->fingerprint.tlas != fingerprint.tlas)
+    {
+        rebuildTlas(device, pool, layout, m_geometry->structures, &m_buildTimes);
+        m_reuse = GeometryReuse::TlasRebuilt;
+    }
+    else
+        m_reuse = GeometryReuse::Reused;
+    m_geometry->fingerprint = fingerprint;
+    m_buildSeconds = m_reuse == GeometryReuse::Reused ? 0.0 : secondsSince(buildStart);
+    spdlog::debug("scene '{}' on the device: acceleration structures {}", scene.id,
+                  m_reuse == GeometryReuse::Built         ? "built"
+                  : m_reuse == GeometryReuse::TlasRebuilt ? "kept (BLASes; TLAS rebuilt)"
+                                                          : "kept");
 }
 } // namespace rt::gpu

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <spdlog/spdlog.h>
+
 #include "Engine/GpuScene.h"
 #include "RayTracing/RayTracingPipeline.h"
 #include "Shared/HostDevice.h"
@@ -72,7 +74,7 @@ vk::DescriptorSetLayout setLayoutOf(const vk::Device& device, const std::vector<
 } // namespace
 
 PathTracingPipeline::PathTracingPipeline(const vk::Device& device, const std::filesystem::path& shaderDir,
-                                         RayGenVariant variant, bool specialize)
+                                         RayGenVariant variant, Specialize specialize)
     : m_device(&device), m_specialize(specialize), m_maxImages(maxImagesOf(device)),
       m_bindings(bindingsOf(m_maxImages)), m_setLayout(device, m_bindings), m_costBindings(costBindingsOf(variant)),
       m_costSetLayout(setLayoutOf(device, m_costBindings)), m_layout(layoutOf(device, m_setLayout, m_costSetLayout)),
@@ -80,33 +82,54 @@ PathTracingPipeline::PathTracingPipeline(const vk::Device& device, const std::fi
 {
 }
 
-PipelineSpecialization PathTracingPipeline::specializationFor(const RenderUniforms& uniforms) const
+PipelineSpecialization PathTracingPipeline::specializationFor(const RenderUniforms& uniforms,
+                                                              const PipelineScene& scene) const
 {
-    return m_specialize ? PipelineSpecialization::of(uniforms) : PipelineSpecialization::general();
+    return PipelineSpecialization::of(m_specialize, uniforms, scene.features);
 }
 
-const PathTracingPipeline::Compiled& PathTracingPipeline::compiled(const RenderUniforms& uniforms) const
+const PathTracingPipeline::Compiled& PathTracingPipeline::compiled(const PipelineSpecialization& key) const
 {
-    const PipelineSpecialization key = specializationFor(uniforms);
     auto it = m_compiled.find(key);
     if (it == m_compiled.end())
     {
         auto c = std::make_unique<Compiled>();
-        c->pipeline = createPathTracingPipeline(*m_device, m_layout, m_shaders, key.constants);
-        c->sbt = ShaderBindingTable(*m_device, c->pipeline.Handle(), kMissGroupCount, kHitGroupCount);
+        c->hitGroups = key.hitGroups();
+        c->pipeline = createPathTracingPipeline(*m_device, m_layout, m_shaders, key.constants, c->hitGroups);
+        spdlog::debug("compiled the path-tracing pipeline {}", key.describe());
         it = m_compiled.emplace(key, std::move(c)).first;
     }
     return *it->second;
 }
 
-void PathTracingPipeline::prepare(const RenderUniforms& uniforms) const { compiled(uniforms); }
+const ShaderBindingTable& PathTracingPipeline::sbtFor(const Compiled& c, const HitGroupLayout& scene) const
+{
+    auto it = c.sbts.find(scene);
+    if (it == c.sbts.end())
+    {
+        const std::vector<std::uint32_t> hitGroups = hitRecordGroups(scene, c.hitGroups, kMissGroupCount);
+        const std::uint32_t groupCount = 1 + kMissGroupCount + c.hitGroups.count();
+        it = c.sbts.emplace(scene, ShaderBindingTable(*m_device, c.pipeline.Handle(), groupCount, kMissGroupCount,
+                                                    hitGroups))
+                 .first;
+    }
+    return it->second;
+}
+
+bool PathTracingPipeline::prepare(const RenderUniforms& uniforms, const PipelineScene& scene) const
+{
+    const std::size_t before = m_compiled.size();
+    sbtFor(compiled(specializationFor(uniforms, scene)), scene.hitGroups);
+    return m_compiled.size() > before;
+}
 
 void PathTracingPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
-                                        const RenderUniforms& uniforms, std::uint32_t firstSample,
-                                        std::uint32_t count, VkExtent2D extent, std::uint32_t samplesPerLaunch,
-                                        std::uint32_t firstRow) const
+                                        const RenderUniforms& uniforms, const PipelineScene& scene,
+                                        std::uint32_t firstSample, std::uint32_t count, VkExtent2D extent,
+                                        std::uint32_t samplesPerLaunch, std::uint32_t firstRow) const
 {
-    const Compiled& c = compiled(uniforms);
+    const Compiled& c = compiled(specializationFor(uniforms, scene));
+    const ShaderBindingTable& sbt = sbtFor(c, scene.hitGroups);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, c.pipeline.Handle());
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, m_layout.Handle(), 0,
                             static_cast<std::uint32_t>(sets.size()), sets.data(), 0, nullptr);
@@ -115,7 +138,7 @@ void PathTracingPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDe
         const std::uint32_t samples = std::min(count - done, std::max(samplesPerLaunch, 1u));
         const TracePushConstants push{firstSample + done, samples, firstRow};
         vkCmdPushConstants(cmd, m_layout.Handle(), kRayTracingStages, 0, sizeof(push), &push);
-        vkCmdTraceRaysKHR(cmd, &c.sbt.raygen(), &c.sbt.miss(), &c.sbt.hit(), &c.sbt.callable(), extent.width,
+        vkCmdTraceRaysKHR(cmd, &sbt.raygen(), &sbt.miss(), &sbt.hit(), &sbt.callable(), extent.width,
                           extent.height, 1);
         // The launch reads and writes its pixels of the accumulation image: order it before the next one.
         vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
@@ -147,9 +170,9 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
         {kBindingLightAlias, &buffers.lightAlias},
         {kBindingLightBvh, &buffers.lightBvh},
         {kBindingLightBvhLeaves, &buffers.lightBvhLeaves},
-        {kBindingPositions, &buffers.positions},
+        {kBindingPositions, &scene.geometry().positions},
         {kBindingUvs, &buffers.uvs},
-        {kBindingTriangles, &buffers.triangles},
+        {kBindingTriangles, &scene.geometry().triangles},
         {kBindingTriangleMaterials, &buffers.triangleMaterials},
         {kBindingSpheres, &buffers.spheres},
         {kBindingMedia, &buffers.media},
@@ -182,8 +205,11 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
     write(kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[1];
     for (std::size_t i = 0; i < std::size(storage); ++i)
         write(storage[i].first, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[i + 2];
-    write(kBindingImages, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, static_cast<std::uint32_t>(imageInfos.size()))
-        .pImageInfo = imageInfos.data();
+    // A scene without images binds none: the binding is partially bound with a variable count, allocated at 0
+    // (no dummy texel needed), and no shader reads it (the general pipeline reads it only at image textures).
+    if (!imageInfos.empty())
+        write(kBindingImages, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, static_cast<std::uint32_t>(imageInfos.size()))
+            .pImageInfo = imageInfos.data();
     vkUpdateDescriptorSets(device.Handle(), static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
 }
 } // namespace rt::gpu

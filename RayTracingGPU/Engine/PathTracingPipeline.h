@@ -1,7 +1,9 @@
-// Everything of the path tracer that does not depend on the scene or the image size: the descriptor set
-// layout of Bindings.glsl, the pipeline layout (push constants: TracePushConstants), the shader modules, and
-// one ray-tracing pipeline with its shader binding table per specialisation a render asked for
-// (PipelineSpecialization: compiled on first use, then kept; compilation is the slow part).
+// Everything of the path tracer that does not depend on the image size: the descriptor set layout of
+// Bindings.glsl, the pipeline layout (push constants: TracePushConstants), the shader modules, and one
+// ray-tracing pipeline per specialisation a render asked for (PipelineSpecialization, the cache key: the
+// render's strategy and the scene's features; compiled on first use, then kept: compilation is the slow
+// part), with one shader binding table per hit-record layout of the scenes it traced (the general pipeline
+// serves scenes of every layout; a specialised one, the layout of its features).
 // The Cost variant (the window's heatmap) swaps in the timed ray-generation shader and adds set kSetCost.
 #pragma once
 
@@ -34,6 +36,13 @@ struct TargetBindings
     VkBuffer counters = VK_NULL_HANDLE; // SampleCounters
 };
 
+/// What a launch needs to know of the scene on the device (GpuScene::pipelineScene()).
+struct PipelineScene
+{
+    std::uint32_t features = shader::kSpecDynamic; // featureBitsOf the scene
+    HitGroupLayout hitGroups = HitGroupLayout::all(); // the hit records its TLAS instances name
+};
+
 enum class RayGenVariant
 {
     Radiance, // RayGen.rgen
@@ -43,10 +52,10 @@ enum class RayGenVariant
 class PathTracingPipeline final
 {
 public:
-    /// Loads the shaders; compiles nothing yet. With `specialize` false every render uses the general pipeline.
+    /// Loads the shaders; compiles nothing yet. With Specialize::Off every render uses the general pipeline.
     /// Throws rt::AssetError for a missing shader, rt::DeviceError when the driver rejects a module.
     PathTracingPipeline(const vk::Device& device, const std::filesystem::path& shaderDir,
-                        RayGenVariant variant = RayGenVariant::Radiance, bool specialize = true);
+                        RayGenVariant variant = RayGenVariant::Radiance, Specialize specialize = Specialize::Full);
     PathTracingPipeline(const PathTracingPipeline&) = delete;
     PathTracingPipeline& operator=(const PathTracingPipeline&) = delete;
     ~PathTracingPipeline() = default;
@@ -57,15 +66,15 @@ public:
     const std::vector<vk::DescriptorBinding>& costBindings() const { return m_costBindings; }
     const vk::DescriptorSetLayout& costSetLayout() const { return m_costSetLayout; }
     const vk::PipelineLayout& layout() const { return m_layout; }
-    bool specializes() const { return m_specialize; }
-    /// From the next launch on, specialised pipelines (true) or the general one (false); keeps what is compiled.
-    void setSpecialize(bool specialize) { m_specialize = specialize; }
-    /// The specialisation a render with `uniforms` runs (the general one when this pipeline does not specialise).
-    PipelineSpecialization specializationFor(const shader::RenderUniforms& uniforms) const;
-    /// Compiles the pipeline a render with `uniforms` needs, unless it already exists; recordLaunch calls it
-    /// too, so call it first only to keep the compilation out of a timed span. Not thread-safe.
-    /// Throws rt::DeviceError when the driver rejects the pipeline.
-    void prepare(const shader::RenderUniforms& uniforms) const;
+    Specialize specializes() const { return m_specialize; }
+    /// From the next launch on, how far pipelines are specialised; keeps what is compiled.
+    void setSpecialize(Specialize specialize) { m_specialize = specialize; }
+    /// The specialisation a render with `uniforms` of `scene` runs (PipelineSpecialization::of).
+    PipelineSpecialization specializationFor(const shader::RenderUniforms& uniforms, const PipelineScene& scene) const;
+    /// Compiles the pipeline a render with `uniforms` of `scene` needs, unless it already exists; recordLaunch
+    /// calls it too, so call it first only to keep the compilation out of a timed span. Returns whether it
+    /// compiled one. Not thread-safe. Throws rt::DeviceError when the driver rejects the pipeline.
+    bool prepare(const shader::RenderUniforms& uniforms, const PipelineScene& scene) const;
     /// Pipelines compiled so far.
     std::size_t compiledCount() const { return m_compiled.size(); }
     /// Size of the variable-count sampler array (the most images a scene may have).
@@ -79,22 +88,25 @@ public:
     /// `firstSample` on, at most `samplesPerLaunch` of them per launch (each thread loops over its samples:
     /// on an H100 that is 1.8x faster than one launch per sample), with `sets` bound from set 0, each launch
     /// ordered before whatever comes next, through the pipeline of `uniforms` (the contents of the uniform
-    /// buffer the sets name), compiled first if need be. `extent` may be a band of the image's rows starting
-    /// at row `firstRow` (launchPixel() in Bindings.glsl).
+    /// buffer the sets name) and `scene` (the scene the sets name), compiled first if need be. `extent` may be
+    /// a band of the image's rows starting at row `firstRow` (launchPixel() in Bindings.glsl).
     void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
-                      const shader::RenderUniforms& uniforms, std::uint32_t firstSample, std::uint32_t count,
-                      VkExtent2D extent, std::uint32_t samplesPerLaunch, std::uint32_t firstRow = 0) const;
+                      const shader::RenderUniforms& uniforms, const PipelineScene& scene, std::uint32_t firstSample,
+                      std::uint32_t count, VkExtent2D extent, std::uint32_t samplesPerLaunch,
+                      std::uint32_t firstRow = 0) const;
 
 private:
     struct Compiled
     {
         vk::Pipeline pipeline;
-        ShaderBindingTable sbt;
+        HitGroupLayout hitGroups; // the pipeline's own
+        mutable std::map<HitGroupLayout, ShaderBindingTable> sbts; // per scene layout: a cache, like m_compiled
     };
-    const Compiled& compiled(const shader::RenderUniforms& uniforms) const;
+    const Compiled& compiled(const PipelineSpecialization& key) const;
+    const ShaderBindingTable& sbtFor(const Compiled& compiled, const HitGroupLayout& scene) const;
 
     const vk::Device* m_device;
-    bool m_specialize;
+    Specialize m_specialize;
     std::uint32_t m_maxImages;
     std::vector<vk::DescriptorBinding> m_bindings;
     vk::DescriptorSetLayout m_setLayout;

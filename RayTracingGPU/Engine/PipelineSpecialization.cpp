@@ -1,8 +1,60 @@
 #include "Engine/PipelineSpecialization.h"
 
+#include "Scene/SceneFeatures.h"
+
 namespace rt::gpu
 {
 using namespace shader;
+
+namespace
+{
+struct FeatureName
+{
+    std::uint32_t bit;
+    const char* name;
+};
+
+constexpr FeatureName kFeatureNames[] = {
+    {kFeatureTriangles, "triangles"},
+    {kFeatureSpheres, "spheres"},
+    {kFeatureMedia, "media"},
+    {kFeatureMotion, "motion"},
+    {kFeatureLambertian, "lambertian"},
+    {kFeatureMetal, "metal"},
+    {kFeatureDielectric, "dielectric"},
+    {kFeatureCheckerTextures, "checker"},
+    {kFeatureImageTextures, "image"},
+    {kFeatureNoiseTextures, "noise"},
+    {kFeatureSphereLights, "sphere-lights"},
+    {kFeatureQuadLights, "quad-lights"},
+    {kFeatureTriangleLights, "triangle-lights"},
+    {kFeatureThinLens, "thin-lens"},
+    {kFeatureGradientBackground, "gradient"},
+    {kFeatureIsotropic, "isotropic"},
+};
+
+/// The bits the render decides, not the scene: a window may open the lens of a pinhole scene's camera.
+std::uint32_t uniformFeatureBits(const RenderUniforms& u)
+{
+    std::uint32_t bits = 0;
+    if (u.thinLens != 0u)
+        bits |= kFeatureThinLens;
+    if (u.backgroundType == BackgroundType::Gradient)
+        bits |= kFeatureGradientBackground;
+    return bits;
+}
+} // namespace
+
+const char* specializeName(Specialize specialize)
+{
+    switch (specialize)
+    {
+    case Specialize::Off: return "off";
+    case Specialize::Strategy: return "strategy";
+    case Specialize::Full: return "on";
+    }
+    return "?";
+}
 
 PipelineSpecialization PipelineSpecialization::general()
 {
@@ -11,7 +63,7 @@ PipelineSpecialization PipelineSpecialization::general()
     return s;
 }
 
-PipelineSpecialization PipelineSpecialization::of(const RenderUniforms& u)
+PipelineSpecialization PipelineSpecialization::strategyOf(const RenderUniforms& u)
 {
     PipelineSpecialization s = general();
     s.constants[kSpecIdEstimator] = static_cast<std::uint32_t>(u.estimator);
@@ -22,7 +74,83 @@ PipelineSpecialization PipelineSpecialization::of(const RenderUniforms& u)
     // Accumulate is random jitter to the shaders (the passes are the host's): one pipeline serves both.
     const PixelSampling sampling = u.sampling == PixelSampling::Accumulate ? PixelSampling::Random : u.sampling;
     s.constants[kSpecIdSampling] = static_cast<std::uint32_t>(sampling);
-    static_assert(kSpecIdCount == 4, "a new constant id needs its uniform here");
+    static_assert(kSpecIdCount == 5, "a new constant id needs its value here");
     return s;
+}
+
+PipelineSpecialization PipelineSpecialization::of(const RenderUniforms& u, std::uint32_t sceneFeatures)
+{
+    PipelineSpecialization s = strategyOf(u);
+    s.constants[kSpecIdFeatures] = (sceneFeatures & ~(kFeatureThinLens | kFeatureGradientBackground)) |
+                                   uniformFeatureBits(u);
+    return s;
+}
+
+PipelineSpecialization PipelineSpecialization::of(Specialize specialize, const RenderUniforms& u,
+                                                  std::uint32_t sceneFeatures)
+{
+    switch (specialize)
+    {
+    case Specialize::Off: return general();
+    case Specialize::Strategy: return strategyOf(u);
+    case Specialize::Full: return of(u, sceneFeatures);
+    }
+    return general();
+}
+
+HitGroupLayout PipelineSpecialization::hitGroups() const
+{
+    return {has(kFeatureTriangles), has(kFeatureSpheres), has(kFeatureMedia)};
+}
+
+std::string PipelineSpecialization::describe() const
+{
+    if (*this == general())
+        return "general";
+    std::string s;
+    const char* names[] = {"estimator", "sampler", "selection", "sampling"};
+    for (std::uint32_t id = 0; id < kSpecIdFeatures; ++id)
+        s += std::string(names[id]) + "=" +
+             (constants[id] == kSpecDynamic ? std::string("any") : std::to_string(constants[id])) + " ";
+    s += "features=";
+    if (features() == kSpecDynamic)
+        return s + "all";
+    bool first = true;
+    for (const FeatureName& f : kFeatureNames)
+        if (has(f.bit))
+        {
+            s += (first ? "" : "+") + std::string(f.name);
+            first = false;
+        }
+    return first ? s + "none" : s;
+}
+
+std::uint32_t featureBitsOf(const Scene& scene, const HitGroupLayout& hitGroups)
+{
+    const SceneFeatures f = featuresOf(scene);
+    std::uint32_t bits = 0;
+    const auto set = [&bits](bool on, std::uint32_t bit) { bits |= on ? bit : 0u; };
+    set(hitGroups.has(HitGroupKind::Triangles), kFeatureTriangles);
+    set(hitGroups.has(HitGroupKind::Spheres), kFeatureSpheres);
+    set(hitGroups.has(HitGroupKind::Media), kFeatureMedia);
+    set(f.motionBlur, kFeatureMotion);
+    set(f.lambertian, kFeatureLambertian);
+    set(f.metal, kFeatureMetal);
+    set(f.dielectric, kFeatureDielectric);
+    // Any isotropic material, used or not (SceneFeatures counts them under media; one on a surface is legal).
+    for (const MaterialData& m : scene.materials)
+        set(m.type == MaterialType::Isotropic, kFeatureIsotropic);
+    set(f.checkerTextures, kFeatureCheckerTextures);
+    set(f.imageTextures, kFeatureImageTextures);
+    set(f.noiseTextures, kFeatureNoiseTextures);
+    // Every light, not only the emitters: the mixture samples the sampling targets too (book 3's glass sphere).
+    for (const LightData& light : scene.lights)
+        switch (light.shape)
+        {
+        case LightShape::Sphere: bits |= kFeatureSphereLights; break;
+        case LightShape::Quad: bits |= kFeatureQuadLights; break;
+        case LightShape::Triangle: bits |= kFeatureTriangleLights; break;
+        }
+    return bits;
 }
 } // namespace rt::gpu

@@ -1,29 +1,66 @@
-// Which render settings a path-tracing pipeline is compiled for: one value per HostDevice.h kSpecId*
-// (estimator, light sampler, light selection, pixel sampling), taken from the render's uniforms, or
-// kSpecDynamic everywhere for the general pipeline that reads them at run time. Specialised, the driver folds
-// away every estimator, sampler and selection the render does not use (1.1x to 5x faster on an H100,
-// docs/PERFORMANCE.md §4.2); the general pipeline is what every render used before, kept for comparison
-// (--specialize off).
+// What a path-tracing pipeline is compiled for: one value per HostDevice.h kSpecId*. The render settings
+// (estimator, light sampler, light selection, pixel sampling) come from the render's uniforms, or stay
+// kSpecDynamic for the general pipeline that reads them at run time. The features (kSpecIdFeatures: a mask
+// of HostDevice.h's kFeature* bits) come from the scene (featureBitsOf: its geometry kinds, media, motion,
+// the materials and texture kinds its primitives use, the shapes of its lights) and from the uniforms (thin
+// lens, gradient background); kSpecDynamic there is every feature. Specialised, the driver folds away every
+// estimator, sampler and selection the render does not use (1.1x to 5x faster on an H100, docs/PERFORMANCE.md
+// §4.2) and the code of every feature the scene lacks, and the pipeline holds only the hit groups of the
+// scene's geometry (hitGroups()). The value is the key of the pipeline cache (PathTracingPipeline): two
+// renders with equal keys share one compilation. The general pipeline is what every render used before
+// specialisation, kept for comparison (--specialize off).
 #pragma once
 
 #include <array>
 #include <compare>
 #include <cstdint>
+#include <string>
 
+#include "RayTracing/HitGroupLayout.h"
+#include "Scene/Scene.h"
 #include "Shared/HostDevice.h"
 
 namespace rt::gpu
 {
+/// How far pipelines are specialised (--specialize).
+enum class Specialize
+{
+    Off, // the general pipeline for every render
+    Strategy, // the render's estimator, light sampler, light selection and pixel sampling; every feature
+    Full // the strategy and the scene's features (the default)
+};
+
+/// "off", "strategy", "on".
+const char* specializeName(Specialize specialize);
+
 struct PipelineSpecialization
 {
-    /// Constant id i's value; kSpecDynamic: the shader reads the uniform.
+    /// Constant id i's value; kSpecDynamic: the shader reads the uniform (for the features: every feature).
     std::array<std::uint32_t, shader::kSpecIdCount> constants{};
 
     /// Every constant kSpecDynamic.
     static PipelineSpecialization general();
-    /// The settings of `uniforms` that have a constant id.
-    static PipelineSpecialization of(const shader::RenderUniforms& uniforms);
+    /// The settings of `uniforms` that have a constant id; every feature.
+    static PipelineSpecialization strategyOf(const shader::RenderUniforms& uniforms);
+    /// strategyOf(uniforms) and the features: `sceneFeatures` (featureBitsOf) with the uniforms' own bits.
+    static PipelineSpecialization of(const shader::RenderUniforms& uniforms, std::uint32_t sceneFeatures);
+    /// What `specialize` asks for a render of `uniforms` on a scene of `sceneFeatures`.
+    static PipelineSpecialization of(Specialize specialize, const shader::RenderUniforms& uniforms,
+                                     std::uint32_t sceneFeatures);
+
+    std::uint32_t features() const { return constants[shader::kSpecIdFeatures]; }
+    bool has(std::uint32_t featureBit) const { return (features() & featureBit) != 0u; }
+    /// The hit groups the pipeline holds: those of the features' geometry kinds (every one for the general
+    /// features).
+    HitGroupLayout hitGroups() const;
+    /// "general", or the constants in words (for logs): "estimator=1 sampler=0 ... features=spheres+metal".
+    std::string describe() const;
 
     auto operator<=>(const PipelineSpecialization&) const = default;
 };
+
+/// The kFeature* bits of what `scene` (valid) uses, but for the render's own (thin lens, gradient
+/// background): SceneFeatures (Scene/SceneFeatures.h), the shapes of every light (emitters and the mixture's
+/// sampling targets), and the geometry kinds of its TLAS instances, `hitGroups` (SceneLayout::hitGroups).
+std::uint32_t featureBitsOf(const Scene& scene, const HitGroupLayout& hitGroups);
 } // namespace rt::gpu

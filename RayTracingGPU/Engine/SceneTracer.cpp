@@ -7,7 +7,7 @@
 namespace rt::gpu
 {
 SceneTracer::SceneTracer(const vk::Device& device, const vk::CommandPool& pool, std::filesystem::path shaderDir,
-                         bool specialize)
+                         Specialize specialize)
     : m_device(&device), m_pool(&pool), m_shaderDir(std::move(shaderDir)),
       m_pipeline(device, m_shaderDir, RayGenVariant::Radiance, specialize)
 {
@@ -18,10 +18,14 @@ SceneTracer::~SceneTracer() = default;
 double SceneTracer::setScene(const Scene& scene)
 {
     scene.validate();
+    const SceneLayout layout = layoutScene(scene);
+    std::unique_ptr<GpuGeometry> previous = m_scene ? m_scene->releaseGeometry() : nullptr;
     m_scene.reset();
     m_sceneDesc = nullptr;
-    m_scene = std::make_unique<GpuScene>(*m_device, *m_pool, scene, m_pipeline.maxImages());
+    m_scene = std::make_unique<GpuScene>(*m_device, *m_pool, scene, layout, m_pipeline.maxImages(), std::move(previous));
     m_sceneDesc = &scene;
+    m_builds.blas += m_scene->geometryReuse() == GeometryReuse::Built ? 1 : 0;
+    m_builds.tlas += m_scene->geometryReuse() != GeometryReuse::Reused ? 1 : 0;
     return m_scene->buildSeconds();
 }
 
@@ -51,11 +55,18 @@ shader::RenderUniforms SceneTracer::uniforms(const CameraDesc& camera, const Ren
     return makeUniforms(*m_sceneDesc, camera, settings, extent.width, extent.height);
 }
 
+bool SceneTracer::prepare(const shader::RenderUniforms& uniforms) const
+{
+    return m_pipeline.prepare(uniforms, gpuScene().pipelineScene());
+}
+
 void SceneTracer::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                                const shader::RenderUniforms& uniforms, std::uint32_t firstSample, std::uint32_t count,
                                VkExtent2D extent, const PathTracingPipeline* variant, std::uint32_t firstRow) const
 {
+    const GpuScene& scene = gpuScene();
     (variant ? *variant : m_pipeline)
-        .recordLaunch(cmd, sets, uniforms, firstSample, count, extent, gpuScene().samplesPerLaunch(), firstRow);
+        .recordLaunch(cmd, sets, uniforms, scene.pipelineScene(), firstSample, count, extent, scene.samplesPerLaunch(),
+                      firstRow);
 }
 } // namespace rt::gpu

@@ -2,7 +2,8 @@
 // (App/Gui/ProgressiveRenderer): the path-tracing pipeline, compiled once, and the scene on the device
 // (GpuScene: BLAS/TLAS, buffers, images). A caller traces into an accumulation image of its own with three
 // calls: a descriptor set naming the scene and its target, the uniforms of a camera and settings, and the
-// launches. It owns no image, and only setScene waits for the device.
+// launches. It owns no image, and only setScene waits for the device. A new scene whose geometry is the
+// last one's keeps its acceleration structures (GpuScene, GeometryFingerprint); the builds are counted.
 #pragma once
 
 #include <cstdint>
@@ -28,31 +29,46 @@ struct TracingDescriptors
     VkDescriptorSet set = VK_NULL_HANDLE;
 };
 
+/// Acceleration-structure builds since the tracer was made: each counts one submission that built every BLAS
+/// of a scene (blas) or its TLAS (tlas). A scene whose geometry was kept adds to neither.
+struct AccelerationStructureBuilds
+{
+    std::uint64_t blas = 0;
+    std::uint64_t tlas = 0;
+};
+
 class SceneTracer final
 {
 public:
-    /// Loads the SPIR-V in `shaderDir`; a render's pipeline is compiled for its settings when it first needs
-    /// it (PathTracingPipeline), or once for all settings with `specialize` false. Throws rt::AssetError (a
+    /// Loads the SPIR-V in `shaderDir`; a render's pipeline is compiled for its settings and scene when it
+    /// first needs it (PathTracingPipeline), or once for all with Specialize::Off. Throws rt::AssetError (a
     /// shader is missing), rt::DeviceError (the driver rejects a module).
     SceneTracer(const vk::Device& device, const vk::CommandPool& pool, std::filesystem::path shaderDir,
-                bool specialize = true);
+                Specialize specialize = Specialize::Full);
     SceneTracer(const SceneTracer&) = delete;
     SceneTracer& operator=(const SceneTracer&) = delete;
     ~SceneTracer();
 
     /// Uploads `scene` (validated first; it must outlive the tracer's use of it) and builds its acceleration
-    /// structures; waits for the device. Descriptor sets made for the previous scene must be dropped first.
-    /// Returns the build time in seconds. Throws rt::SceneError, rt::DeviceError.
+    /// structures, or keeps the last scene's where the geometry is the same; waits for the device. Descriptor
+    /// sets made for the previous scene must be dropped first. Returns the build time in seconds (0 when
+    /// kept). Throws rt::SceneError, rt::DeviceError; the previous scene is gone then.
     double setScene(const Scene& scene);
     /// The scene set last; nullptr before the first.
     const Scene* scene() const { return m_sceneDesc; }
     double buildSeconds() const;
+    /// The scene on the device. Throws rt::UsageError before setScene.
+    const GpuScene& gpuScene() const;
+    const AccelerationStructureBuilds& accelerationStructureBuilds() const { return m_builds; }
 
     const std::filesystem::path& shaderDir() const { return m_shaderDir; }
     /// The pipeline's set layouts: a variant (the window's Cost pipeline) is built against the same ones.
     const PathTracingPipeline& pipeline() const { return m_pipeline; }
     /// PathTracingPipeline::setSpecialize.
-    void setSpecialize(bool specialize) { m_pipeline.setSpecialize(specialize); }
+    void setSpecialize(Specialize specialize) { m_pipeline.setSpecialize(specialize); }
+    /// Compiles the pipeline a render with `uniforms` of the current scene needs (PathTracingPipeline::prepare);
+    /// true when it compiled one.
+    bool prepare(const shader::RenderUniforms& uniforms) const;
 
     /// Set 0 for the current scene and `target`. Throws rt::UsageError before setScene.
     TracingDescriptors makeDescriptors(const TargetBindings& target) const;
@@ -68,13 +84,12 @@ public:
                       VkExtent2D extent, const PathTracingPipeline* variant = nullptr, std::uint32_t firstRow = 0) const;
 
 private:
-    const GpuScene& gpuScene() const;
-
     const vk::Device* m_device;
     const vk::CommandPool* m_pool;
     std::filesystem::path m_shaderDir;
     PathTracingPipeline m_pipeline;
     const Scene* m_sceneDesc = nullptr;
     std::unique_ptr<GpuScene> m_scene;
+    AccelerationStructureBuilds m_builds;
 };
 } // namespace rt::gpu

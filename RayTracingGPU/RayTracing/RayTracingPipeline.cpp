@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "Check.h"
 #include "Shared/HostDevice.h"
 #include "Vulkan/Check.h"
 #include "Vulkan/ShaderModule.h"
@@ -60,7 +61,8 @@ PathTracingShaders::PathTracingShaders(const vk::Device& device, const std::file
 }
 
 vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::PipelineLayout& layout,
-                                       const PathTracingShaders& shaders, std::span<const std::uint32_t> constants)
+                                       const PathTracingShaders& shaders, std::span<const std::uint32_t> constants,
+                                       const HitGroupLayout& hitGroups)
 {
     std::vector<VkSpecializationMapEntry> entries;
     for (std::uint32_t id = 0; id < constants.size(); ++id)
@@ -71,36 +73,46 @@ vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::Pipel
     specialization.dataSize = constants.size_bytes();
     specialization.pData = constants.data();
 
+    // Only the stages of the groups below: a scene without spheres compiles no sphere intersection shader.
     std::vector<VkPipelineShaderStageCreateInfo> stageInfos;
-    for (std::uint32_t i = 0; i < StageCount; ++i)
-    {
+    const auto stage = [&](StageIndex i) {
         VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
         info.stage = kStages[i].stage;
         info.module = shaders.modules()[i].Handle();
         info.pName = "main";
         info.pSpecializationInfo = constants.empty() ? nullptr : &specialization;
         stageInfos.push_back(info);
-    }
+        return static_cast<std::uint32_t>(stageInfos.size() - 1);
+    };
 
     std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
     groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR));
-    groups.back().generalShader = RayGen;
+    groups.back().generalShader = stage(RayGen);
     // Miss groups in the order of the kMiss* constants.
     static_assert(shader::kMissBackground == 0 && shader::kMissShadow == 1 && kMissGroupCount == 2);
     groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR));
-    groups.back().generalShader = Miss;
+    groups.back().generalShader = stage(Miss);
     groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR));
-    groups.back().generalShader = ShadowMiss;
-    // Hit groups in the order of the kHitGroup* constants.
-    static_assert(shader::kHitGroupTriangles == 0 && shader::kHitGroupSpheres == 1 && shader::kHitGroupMedia == 2);
-    groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR));
-    groups.back().closestHitShader = TriangleHit;
-    groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR));
-    groups.back().intersectionShader = SphereIntersection;
-    groups.back().closestHitShader = SphereHit;
-    groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR));
-    groups.back().intersectionShader = MediumIntersection;
-    groups.back().closestHitShader = MediumHit;
+    groups.back().generalShader = stage(ShadowMiss);
+    // Hit groups in the order of HitGroupLayout's records, only those of `hitGroups`.
+    if (hitGroups.has(HitGroupKind::Triangles))
+    {
+        groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR));
+        groups.back().closestHitShader = stage(TriangleHit);
+    }
+    if (hitGroups.has(HitGroupKind::Spheres))
+    {
+        groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR));
+        groups.back().intersectionShader = stage(SphereIntersection);
+        groups.back().closestHitShader = stage(SphereHit);
+    }
+    if (hitGroups.has(HitGroupKind::Media))
+    {
+        groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR));
+        groups.back().intersectionShader = stage(MediumIntersection);
+        groups.back().closestHitShader = stage(MediumHit);
+    }
+    RT_CHECK_EQ(groups.size(), 1 + kMissGroupCount + hitGroups.count());
 
     VkRayTracingPipelineCreateInfoKHR info{VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR};
     info.stageCount = static_cast<std::uint32_t>(stageInfos.size());

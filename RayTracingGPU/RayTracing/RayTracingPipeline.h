@@ -2,9 +2,10 @@
 //   0  raygen   RayGen.rgen         camera samples and the iterative bounce loop (or RayGenCost.rgen: timed)
 //   1  miss     Background.rmiss    constant or gradient background           = kMissBackground
 //   2  miss     Shadow.rmiss        a shadow ray reached its light           = kMissShadow
-//   3  hit      Triangle.rchit      triangle BLASes (meshes, quads)        = kHitGroupTriangles
-//   4  hit      Sphere.rint/.rchit  procedural geometry 0 (spheres)        = kHitGroupSpheres
-//   5  hit      Medium.rint/.rchit  procedural geometry 1 (constant media) = kHitGroupMedia
+//   then the hit groups a HitGroupLayout names, in its order (each only when the layout has it):
+//      hit      Triangle.rchit      triangle BLASes (meshes, quads)          HitGroupKind::Triangles
+//      hit      Sphere.rint/.rchit  procedural geometry 0 (spheres)          HitGroupKind::Spheres
+//      hit      Medium.rint/.rchit  procedural geometry 1 (constant media)   HitGroupKind::Media
 // Maximum recursion depth 1: hit shaders never trace, raygen loops over bounces.
 #pragma once
 
@@ -13,6 +14,7 @@
 #include <span>
 #include <vector>
 
+#include "RayTracing/HitGroupLayout.h"
 #include "Vulkan/Pipeline.h"
 #include "Vulkan/PipelineLayout.h"
 #include "Vulkan/ShaderModule.h"
@@ -37,8 +39,9 @@ private:
 };
 
 /// Compiles the pipeline from `shaders` with the specialization constants `constants` (constant id i takes
-/// constants[i], in every stage; ids a stage does not declare are ignored). Throws rt::DeviceError when the
-/// driver rejects the pipeline.
+/// constants[i], in every stage; ids a stage does not declare are ignored) and the hit groups of `hitGroups`
+/// (with only their stages). Throws rt::DeviceError when the driver rejects the pipeline.
 vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::PipelineLayout& layout,
-                                       const PathTracingShaders& shaders, std::span<const std::uint32_t> constants);
+                                       const PathTracingShaders& shaders, std::span<const std::uint32_t> constants,
+                                       const HitGroupLayout& hitGroups);
 } // namespace rt::gpu

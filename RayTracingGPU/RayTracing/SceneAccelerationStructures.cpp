@@ -1,12 +1,15 @@
 #include "RayTracing/SceneAccelerationStructures.h"
 
 #include <cstring>
+#include <memory>
 
 #include <spdlog/fmt/fmt.h>
 
+#include "Check.h"
 #include "Error.h"
 #include "Vulkan/Barriers.h"
 #include "Vulkan/CommandBuffer.h"
+#include "Vulkan/QueryPool.h"
 
 namespace rt::gpu
 {
@@ -122,10 +125,141 @@ void checkLimits(const vk::Device& device, const SceneLayout& layout)
         throw DeviceError(fmt::format("{} TLAS instances exceed maxInstanceCount {} of device '{}'",
                                       layout.instances.size(), limits.maxInstanceCount, name));
 }
+
+/// The TLAS of `layout`'s instances over `blases`, ready to build: its instance buffer filled, the structure
+/// created, the build info pointing at them (scratch left to the caller).
+struct TlasBuild
+{
+    vk::Buffer instances;
+    AccelerationStructure tlas;
+    std::vector<VkAccelerationStructureGeometryKHR> geometries;
+    VkAccelerationStructureBuildGeometryInfoKHR info{};
+    VkAccelerationStructureBuildRangeInfoKHR range{};
+    VkDeviceSize scratchSize = 0;
+};
+
+std::unique_ptr<TlasBuild> prepareTlas(const vk::Device& device, const SceneLayout& layout,
+                                       const std::vector<AccelerationStructure>& blases)
+{
+    auto t = std::make_unique<TlasBuild>();
+    std::vector<VkAccelerationStructureInstanceKHR> instances;
+    for (const TlasInstanceDesc& d : layout.instances)
+    {
+        VkAccelerationStructureInstanceKHR instance{};
+        instance.transform = toVulkan(d.worldFromObject);
+        instance.instanceCustomIndex = d.record;
+        instance.mask = 0xFF;
+        instance.instanceShaderBindingTableRecordOffset = d.hitGroup;
+        instance.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
+        instance.accelerationStructureReference = blases[d.blas].address();
+        instances.push_back(instance);
+    }
+    const VkDeviceSize instanceBytes = instances.size() * sizeof(VkAccelerationStructureInstanceKHR);
+    t->instances = vk::Buffer(device, instanceBytes,
+                              VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+                                  VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                              vk::MemoryUse::Upload);
+    if (instanceBytes > 0)
+        std::memcpy(t->instances.mapped(), instances.data(), instanceBytes);
+
+    VkAccelerationStructureGeometryKHR geometry{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
+    geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
+    geometry.geometry.instances.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
+    geometry.geometry.instances.data.deviceAddress = t->instances.address();
+    t->geometries = {geometry};
+    const std::vector<std::uint32_t> instanceCount{static_cast<std::uint32_t>(instances.size())};
+    t->info = buildInfo(VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, t->geometries);
+    const VkAccelerationStructureBuildSizesInfoKHR sizes = buildSizes(device, t->info, instanceCount);
+    t->tlas = AccelerationStructure(device, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
+                                    sizes.accelerationStructureSize);
+    t->info.dstAccelerationStructure = t->tlas.Handle();
+    t->range = {instanceCount[0], 0, 0, 0};
+    t->scratchSize = sizes.buildScratchSize;
+    return t;
+}
+
+/// Timestamps 0, 1, 2 around the BLAS and TLAS builds, where the queue has them.
+class BuildTimer
+{
+public:
+    explicit BuildTimer(const vk::Device& device)
+        : m_device(&device), m_timed(device.properties().timestampValidBits > 0)
+    {
+        if (m_timed)
+            m_queries = vk::QueryPool(device, 3);
+    }
+    void reset(VkCommandBuffer cmd) const
+    {
+        if (m_timed)
+            vkCmdResetQueryPool(cmd, m_queries.Handle(), 0, 3);
+    }
+    void mark(VkCommandBuffer cmd, std::uint32_t query) const
+    {
+        if (m_timed)
+            vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, m_queries.Handle(), query);
+    }
+    /// Seconds between marks `first` and `first + 1` (after the submission), or -1 without timestamps.
+    double seconds(std::uint32_t first) const
+    {
+        return m_timed ? m_queries.secondsBetween(first, m_device->properties().limits.timestampPeriod) : -1.0;
+    }
+
+private:
+    const vk::Device* m_device;
+    bool m_timed;
+    vk::QueryPool m_queries;
+};
+
+/// Records the builds of `blasInfos` (if any) and then of the TLAS, one scratch buffer for both, and waits.
+void runBuilds(const vk::Device& device, const vk::CommandPool& pool,
+               std::vector<VkAccelerationStructureBuildGeometryInfoKHR>& blasInfos,
+               const std::vector<const VkAccelerationStructureBuildRangeInfoKHR*>& blasRanges,
+               const std::vector<VkDeviceSize>& scratchOffsets, VkDeviceSize blasScratch, TlasBuild& tlas,
+               AsBuildTimes* times)
+{
+    const VkDeviceSize scratchAlignment =
+        std::max<VkDeviceSize>(device.properties().accelerationStructure.minAccelerationStructureScratchOffsetAlignment, 1);
+    // The TLAS build may reuse the BLAS scratch memory after the barrier between them.
+    VkDeviceAddress scratchBase = 0;
+    const vk::Buffer scratch =
+        scratchBuffer(device, std::max(blasScratch, tlas.scratchSize), scratchAlignment, scratchBase);
+    for (std::size_t i = 0; i < blasInfos.size(); ++i)
+        blasInfos[i].scratchData.deviceAddress = scratchBase + scratchOffsets[i];
+    tlas.info.scratchData.deviceAddress = scratchBase;
+    const VkAccelerationStructureBuildRangeInfoKHR* tlasRanges = &tlas.range;
+
+    const BuildTimer timer(device);
+    vk::submitAndWait(device, pool, [&](VkCommandBuffer cmd) {
+        timer.reset(cmd);
+        timer.mark(cmd, 0);
+        if (!blasInfos.empty())
+        {
+            vkCmdBuildAccelerationStructuresKHR(cmd, static_cast<std::uint32_t>(blasInfos.size()), blasInfos.data(),
+                                                blasRanges.data());
+            vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                              VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,
+                              VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                              VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR |
+                                  VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR);
+        }
+        timer.mark(cmd, 1);
+        vkCmdBuildAccelerationStructuresKHR(cmd, 1, &tlas.info, &tlasRanges);
+        vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                          VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                          VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR);
+        timer.mark(cmd, 2);
+    });
+    if (times)
+    {
+        times->blasGpuSeconds = blasInfos.empty() ? -1.0 : timer.seconds(0);
+        times->tlasGpuSeconds = timer.seconds(1);
+    }
+}
 } // namespace
 
 SceneAccelerationStructures buildAccelerationStructures(const vk::Device& device, const vk::CommandPool& pool,
-                                                        const SceneLayout& layout, const GeometryAddresses& geometry)
+                                                        const SceneLayout& layout, const GeometryAddresses& geometry,
+                                                        AsBuildTimes* times)
 {
     checkLimits(device, layout);
     const VkDeviceSize scratchAlignment =
@@ -150,68 +284,27 @@ SceneAccelerationStructures buildAccelerationStructures(const vk::Device& device
         scratchOffsets.push_back(scratchTotal);
         scratchTotal += alignUp(sizes.buildScratchSize, scratchAlignment);
     }
+    std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> blasRanges;
+    for (const BlasInput& input : inputs)
+        blasRanges.push_back(input.ranges.data());
 
     // Top level: one instance per TlasInstanceDesc; the instance buffer is read by the build directly.
-    std::vector<VkAccelerationStructureInstanceKHR> instances;
-    for (const TlasInstanceDesc& d : layout.instances)
-    {
-        VkAccelerationStructureInstanceKHR instance{};
-        instance.transform = toVulkan(d.worldFromObject);
-        instance.instanceCustomIndex = d.record;
-        instance.mask = 0xFF;
-        instance.instanceShaderBindingTableRecordOffset = d.hitGroup;
-        instance.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
-        instance.accelerationStructureReference = out.blases[d.blas].address();
-        instances.push_back(instance);
-    }
-    const VkDeviceSize instanceBytes = instances.size() * sizeof(VkAccelerationStructureInstanceKHR);
-    out.instances = vk::Buffer(device, instanceBytes,
-                               VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
-                                   VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                               vk::MemoryUse::Upload);
-    if (instanceBytes > 0)
-        std::memcpy(out.instances.mapped(), instances.data(), instanceBytes);
-
-    VkAccelerationStructureGeometryKHR tlasGeometry{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
-    tlasGeometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
-    tlasGeometry.geometry.instances.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
-    tlasGeometry.geometry.instances.data.deviceAddress = out.instances.address();
-    const std::vector<VkAccelerationStructureGeometryKHR> tlasGeometries{tlasGeometry};
-    const std::vector<std::uint32_t> instanceCount{static_cast<std::uint32_t>(instances.size())};
-    VkAccelerationStructureBuildGeometryInfoKHR tlasInfo =
-        buildInfo(VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR, tlasGeometries);
-    const VkAccelerationStructureBuildSizesInfoKHR tlasSizes = buildSizes(device, tlasInfo, instanceCount);
-    out.tlas = AccelerationStructure(device, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
-                                     tlasSizes.accelerationStructureSize);
-    tlasInfo.dstAccelerationStructure = out.tlas.Handle();
-
-    // The TLAS build may reuse the BLAS scratch memory after the barrier between them.
-    VkDeviceAddress scratchBase = 0;
-    const vk::Buffer scratch = scratchBuffer(device, std::max(scratchTotal, tlasSizes.buildScratchSize),
-                                             scratchAlignment, scratchBase);
-    std::vector<const VkAccelerationStructureBuildRangeInfoKHR*> blasRanges;
-    for (std::size_t i = 0; i < blasInfos.size(); ++i)
-    {
-        blasInfos[i].scratchData.deviceAddress = scratchBase + scratchOffsets[i];
-        blasRanges.push_back(inputs[i].ranges.data());
-    }
-    tlasInfo.scratchData.deviceAddress = scratchBase;
-    const VkAccelerationStructureBuildRangeInfoKHR tlasRange{instanceCount[0], 0, 0, 0};
-    const VkAccelerationStructureBuildRangeInfoKHR* tlasRanges = &tlasRange;
-
-    vk::submitAndWait(device, pool, [&](VkCommandBuffer cmd) {
-        if (!blasInfos.empty())
-            vkCmdBuildAccelerationStructuresKHR(cmd, static_cast<std::uint32_t>(blasInfos.size()), blasInfos.data(),
-                                                blasRanges.data());
-        vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-                          VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,
-                          VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-                          VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR | VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR);
-        vkCmdBuildAccelerationStructuresKHR(cmd, 1, &tlasInfo, &tlasRanges);
-        vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-                          VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
-                          VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR);
-    });
+    const std::unique_ptr<TlasBuild> tlas = prepareTlas(device, layout, out.blases);
+    runBuilds(device, pool, blasInfos, blasRanges, scratchOffsets, scratchTotal, *tlas, times);
+    out.instances = std::move(tlas->instances);
+    out.tlas = std::move(tlas->tlas);
     return out;
+}
+
+void rebuildTlas(const vk::Device& device, const vk::CommandPool& pool, const SceneLayout& layout,
+                 SceneAccelerationStructures& structures, AsBuildTimes* times)
+{
+    checkLimits(device, layout);
+    RT_CHECK_EQ(structures.blases.size(), layout.blases.size());
+    std::vector<VkAccelerationStructureBuildGeometryInfoKHR> noBlases;
+    const std::unique_ptr<TlasBuild> tlas = prepareTlas(device, layout, structures.blases);
+    runBuilds(device, pool, noBlases, {}, {}, 0, *tlas, times);
+    structures.instances = std::move(tlas->instances);
+    structures.tlas = std::move(tlas->tlas);
 }
 } // namespace rt::gpu

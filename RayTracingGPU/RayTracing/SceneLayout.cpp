@@ -14,12 +14,6 @@ namespace rt::gpu
 namespace
 {
 using shader::InstanceRecord;
-using shader::kHitGroupMedia;
-using shader::kHitGroupSpheres;
-using shader::kHitGroupTriangles;
-
-// A procedural BLAS's media (geometry 1) reach their hit group through sbtRecordStride 1.
-static_assert(kHitGroupMedia == kHitGroupSpheres + 1);
 
 constexpr std::size_t kMaxCustomIndex = 1u << 24; // VkAccelerationStructureInstanceKHR::instanceCustomIndex
 
@@ -48,7 +42,7 @@ struct Part
     };
     std::uint32_t blas;
     std::uint32_t record;
-    std::uint32_t hitGroup;
+    HitGroupKind hitGroup; // of geometry 0
     Kind kind;
     std::uint32_t meshRef = 0; // Mesh: index into the group's meshes
 };
@@ -68,9 +62,21 @@ public:
             if (added)
                 it->second = partsOf(instance.group);
             for (const Part& part : it->second)
-                m_out.instances.push_back(
-                    {part.blas, instance.worldFromObject.m, recordWithLights(part, i), part.hitGroup});
+                m_out.instances.push_back({.blas = part.blas,
+                                           .worldFromObject = instance.worldFromObject.m,
+                                           .record = recordWithLights(part, i),
+                                           .kind = part.hitGroup});
         }
+        // Hit records for the kinds present only; a procedural instance with spheres reaches its media at
+        // record + 1 (geometry 1), which HitGroupLayout's order gives.
+        bool has[kHitGroupKindCount] = {};
+        for (const TlasInstanceDesc& t : m_out.instances)
+            has[static_cast<std::uint32_t>(t.kind)] = true;
+        for (const BlasDesc& b : m_out.blases)
+            has[static_cast<std::uint32_t>(HitGroupKind::Media)] |= b.sphereCount > 0 && b.mediumCount > 0;
+        m_out.hitGroups = HitGroupLayout(has[0], has[1], has[2]);
+        for (TlasInstanceDesc& t : m_out.instances)
+            t.hitGroup = m_out.hitGroups.record(t.kind);
         if (m_out.instances.size() >= kMaxCustomIndex || m_out.records.size() >= kMaxCustomIndex)
             throw SceneError(fmt::format("scene '{}' needs {} TLAS instances; the GPU engine addresses at most {}",
                                          m_scene.id, m_out.instances.size(), kMaxCustomIndex - 1));
@@ -161,7 +167,7 @@ private:
         blas.vertexCount = u32(m_out.positions.size()) - blas.firstVertex;
         blas.triangleCount = u32(m_out.triangles.size()) - blas.firstTriangle;
         m_out.blases.push_back(blas);
-        return {u32(m_out.blases.size() - 1), addRecord(record), kHitGroupTriangles, Part::Kind::Quads};
+        return {u32(m_out.blases.size() - 1), addRecord(record), HitGroupKind::Triangles, Part::Kind::Quads};
     }
 
     Part meshPart(const MeshRef& ref)
@@ -176,7 +182,7 @@ private:
         auto [recordIt, newRecord] = m_meshRecords.try_emplace({ref.mesh, ref.material});
         if (newRecord)
             recordIt->second = addRecord(record);
-        return {mesh.blas, recordIt->second, kHitGroupTriangles, Part::Kind::Mesh};
+        return {mesh.blas, recordIt->second, HitGroupKind::Triangles, Part::Kind::Mesh};
     }
 
     struct MeshEntry
@@ -247,7 +253,7 @@ private:
         }
         m_out.blases.push_back(blas);
         // Geometry 0 takes the instance's first record: spheres if any, else the media.
-        const std::uint32_t hitGroup = blas.sphereCount > 0 ? kHitGroupSpheres : kHitGroupMedia;
+        const HitGroupKind hitGroup = blas.sphereCount > 0 ? HitGroupKind::Spheres : HitGroupKind::Media;
         return {u32(m_out.blases.size() - 1), addRecord(record), hitGroup, Part::Kind::Procedural};
     }
 

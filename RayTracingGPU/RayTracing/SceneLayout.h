@@ -8,13 +8,16 @@
 //   the spheres + media of a group -> one procedural (AABB) BLAS: geometry 0 = spheres, geometry 1 = media;
 //   scene instance                -> one TLAS instance per BLAS its group uses, with the instance's transform;
 //                                    its record is the group's, or a copy of it where the part holds lights
-//                                    (a run of primitiveLights names them: light indices differ per instance).
+//                                    (a run of primitiveLights names them: light indices differ per instance);
+//                                    its hit record is its geometry kind's in the scene's HitGroupLayout
+//                                    (only the kinds the scene has).
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "Math/Math.h"
+#include "RayTracing/HitGroupLayout.h"
 #include "Scene/Scene.h"
 #include "Shared/HostDevice.h"
 
@@ -53,7 +56,8 @@ struct TlasInstanceDesc
     std::uint32_t blas = 0; // index into SceneLayout::blases
     mat4 worldFromObject{1.0f};
     std::uint32_t record = 0; // instanceCustomIndex: index into SceneLayout::records
-    std::uint32_t hitGroup = 0; // instanceShaderBindingTableRecordOffset (kHitGroup*)
+    HitGroupKind kind = HitGroupKind::Triangles; // of geometry 0
+    std::uint32_t hitGroup = 0; // instanceShaderBindingTableRecordOffset: hitGroups.record(kind)
 };
 
 struct SceneLayout
@@ -69,6 +73,7 @@ struct SceneLayout
     std::vector<std::uint32_t> primitiveLights; // runs that InstanceRecord::firstPrimitiveLight points at
     std::vector<BlasDesc> blases;
     std::vector<TlasInstanceDesc> instances;
+    HitGroupLayout hitGroups; // the kinds of geometry the instances hold: the hit records the SBT needs
 };
 
 /// Lays out `scene` (validated). Throws rt::SceneError when it has more TLAS instances or records than the

@@ -3,6 +3,7 @@
 #include <cstring>
 #include <vector>
 
+#include "Check.h"
 #include "Vulkan/Check.h"
 
 namespace rt::gpu
@@ -26,16 +27,29 @@ SbtLayout computeSbtLayout(std::uint32_t handleSize, std::uint32_t handleAlignme
     return l;
 }
 
-ShaderBindingTable::ShaderBindingTable(const vk::Device& device, VkPipeline pipeline, std::uint32_t missCount,
-                                       std::uint32_t hitCount)
+SbtPlan planSbt(std::uint32_t handleSize, std::uint32_t handleAlignment, std::uint32_t baseAlignment,
+                std::uint32_t missCount, std::span<const std::uint32_t> hitRecordGroups)
+{
+    const auto hitCount = static_cast<std::uint32_t>(hitRecordGroups.size());
+    SbtPlan plan{computeSbtLayout(handleSize, handleAlignment, baseAlignment, missCount, hitCount), {}};
+    plan.copies.push_back({plan.layout.raygen.offset, 0});
+    for (std::uint32_t i = 0; i < missCount; ++i)
+        plan.copies.push_back({plan.layout.miss.offset + i * plan.layout.miss.stride, 1 + i});
+    for (std::uint32_t i = 0; i < hitCount; ++i)
+        plan.copies.push_back({plan.layout.hit.offset + i * plan.layout.hit.stride, hitRecordGroups[i]});
+    return plan;
+}
+
+ShaderBindingTable::ShaderBindingTable(const vk::Device& device, VkPipeline pipeline, std::uint32_t groupCount,
+                                       std::uint32_t missCount, std::span<const std::uint32_t> hitRecordGroups)
 {
     const auto& properties = device.properties().rayTracing;
     const std::uint32_t handleSize = properties.shaderGroupHandleSize;
     const std::uint32_t baseAlignment = properties.shaderGroupBaseAlignment;
-    const SbtLayout layout =
-        computeSbtLayout(handleSize, properties.shaderGroupHandleAlignment, baseAlignment, missCount, hitCount);
+    const SbtPlan plan =
+        planSbt(handleSize, properties.shaderGroupHandleAlignment, baseAlignment, missCount, hitRecordGroups);
+    const SbtLayout& layout = plan.layout;
 
-    const std::uint32_t groupCount = 1 + missCount + hitCount;
     std::vector<std::uint8_t> handles(std::size_t(groupCount) * handleSize);
     vk::check(vkGetRayTracingShaderGroupHandlesKHR(device.Handle(), pipeline, 0, groupCount, handles.size(),
                                                    handles.data()),
@@ -49,18 +63,16 @@ ShaderBindingTable::ShaderBindingTable(const vk::Device& device, VkPipeline pipe
     const VkDeviceAddress base = alignUp(address, baseAlignment);
     auto* bytes = static_cast<std::uint8_t*>(m_buffer.mapped()) + (base - address);
     std::memset(bytes, 0, layout.totalSize);
-
-    const auto copyHandle = [&](std::uint32_t group, VkDeviceSize offset) {
-        std::memcpy(bytes + offset, handles.data() + std::size_t(group) * handleSize, handleSize);
-    };
-    copyHandle(0, layout.raygen.offset);
-    for (std::uint32_t i = 0; i < missCount; ++i)
-        copyHandle(1 + i, layout.miss.offset + i * layout.miss.stride);
-    for (std::uint32_t i = 0; i < hitCount; ++i)
-        copyHandle(1 + missCount + i, layout.hit.offset + i * layout.hit.stride);
+    for (const SbtPlan::Copy& c : plan.copies)
+    {
+        RT_CHECK_LT(c.group, groupCount);
+        std::memcpy(bytes + c.offset, handles.data() + std::size_t(c.group) * handleSize, handleSize);
+    }
 
     m_raygen = {base + layout.raygen.offset, layout.raygen.stride, layout.raygen.size};
     m_miss = {base + layout.miss.offset, layout.miss.stride, layout.miss.size};
-    m_hit = {base + layout.hit.offset, layout.hit.stride, layout.hit.size};
+    // A scene without geometry has no hit record: an empty region (size 0) is what Vulkan asks for then.
+    if (!hitRecordGroups.empty())
+        m_hit = {base + layout.hit.offset, layout.hit.stride, layout.hit.size};
 }
 } // namespace rt::gpu

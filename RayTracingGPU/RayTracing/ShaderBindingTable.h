@@ -1,9 +1,13 @@
 // The shader binding table: raygen, miss and hit-group records laid out with the device's queried handle
 // size, handle alignment and base alignment (32/16/32 on lavapipe, 32/32/64 on NVIDIA: never assumed).
-// The records hold only handles: per-instance data is found through instanceCustomIndex, not the SBT.
+// The records hold only handles: per-instance data is found through instanceCustomIndex, not the SBT. Hit
+// record i holds the handle of whichever pipeline group the scene's HitGroupLayout puts there
+// (hitRecordGroups), so a pipeline with more groups than the scene needs (the general one) serves it too.
 #pragma once
 
 #include <cstdint>
+#include <span>
+#include <vector>
 
 #include "Vulkan/Buffer.h"
 
@@ -29,13 +33,30 @@ struct SbtLayout
 SbtLayout computeSbtLayout(std::uint32_t handleSize, std::uint32_t handleAlignment, std::uint32_t baseAlignment,
                            std::uint32_t missCount, std::uint32_t hitCount);
 
+/// Which shader group's handle goes where, from the aligned base: the layout and one (offset, group) per record.
+struct SbtPlan
+{
+    struct Copy
+    {
+        VkDeviceSize offset = 0;
+        std::uint32_t group = 0; // the pipeline's shader group index
+    };
+    SbtLayout layout;
+    std::vector<Copy> copies;
+};
+
+/// Raygen is group 0, miss record i group 1 + i, hit record i group hitRecordGroups[i]. Pure.
+SbtPlan planSbt(std::uint32_t handleSize, std::uint32_t handleAlignment, std::uint32_t baseAlignment,
+                std::uint32_t missCount, std::span<const std::uint32_t> hitRecordGroups);
+
 class ShaderBindingTable final
 {
 public:
     ShaderBindingTable() = default;
-    /// Fetches the handles of `pipeline`, whose groups are ordered raygen, `missCount` miss groups, then
-    /// `hitCount` hit groups, and writes them into a new buffer.
-    ShaderBindingTable(const vk::Device& device, VkPipeline pipeline, std::uint32_t missCount, std::uint32_t hitCount);
+    /// Fetches the handles of `pipeline`'s `groupCount` groups (raygen first, then the `missCount` miss groups)
+    /// and writes them into a new buffer as planSbt places them: hit record i gets group hitRecordGroups[i].
+    ShaderBindingTable(const vk::Device& device, VkPipeline pipeline, std::uint32_t groupCount,
+                       std::uint32_t missCount, std::span<const std::uint32_t> hitRecordGroups);
     ShaderBindingTable(const ShaderBindingTable&) = delete;
     ShaderBindingTable& operator=(const ShaderBindingTable&) = delete;
     ShaderBindingTable(ShaderBindingTable&&) noexcept = default;

@@ -1,4 +1,5 @@
-// Scattering by material type tag (HostDevice.h MaterialType), the twin of the CPU engine's dispatch.
+// Scattering by material type tag (HostDevice.h MaterialType), the twin of the CPU engine's dispatch. A
+// material the pipeline's scene does not use is dead code (kHas*, Specialization.glsl).
 #ifndef RT_SCATTER_GLSL
 #define RT_SCATTER_GLSL
 
@@ -14,10 +15,22 @@ bool scatter(MaterialData m, SurfaceHit hit, inout Rng rng, out ScatterSample s)
     s.weight = vec3(0.0);
     switch (m.type)
     {
-    case MaterialType_Lambertian: return scatterLambertian(m, hit, rng, s);
-    case MaterialType_Metal: return scatterMetal(m, hit, rng, s);
-    case MaterialType_Dielectric: return scatterDielectric(m, hit, rng, s);
-    case MaterialType_Isotropic: return scatterIsotropic(m, hit, rng, s);
+    case MaterialType_Lambertian:
+        if (kHasLambertian)
+            return scatterLambertian(m, hit, rng, s);
+        break;
+    case MaterialType_Metal:
+        if (kHasMetal)
+            return scatterMetal(m, hit, rng, s);
+        break;
+    case MaterialType_Dielectric:
+        if (kHasDielectric)
+            return scatterDielectric(m, hit, rng, s);
+        break;
+    case MaterialType_Isotropic:
+        if (kHasIsotropic)
+            return scatterIsotropic(m, hit, rng, s);
+        break;
     }
     return false; // DiffuseLight: emits, does not scatter
 }

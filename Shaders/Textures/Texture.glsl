@@ -1,6 +1,7 @@
 // Texture evaluation by type tag, the twin of the CPU engine's textures (HostDevice.h TextureType).
 // p is the world-space point (checker and Perlin textures are solid textures), uv the surface coordinates.
-// Reads the global `textures` (Bindings.glsl).
+// Reads the global `textures` (Bindings.glsl). A texture kind that no material of the pipeline's scene reads
+// is dead code (kHas*, Specialization.glsl): without image textures nothing reads the sampler array.
 #ifndef RT_TEXTURE_GLSL
 #define RT_TEXTURE_GLSL
 
@@ -21,11 +22,26 @@ vec3 evaluateTexture(uint index, vec2 uv, vec3 p)
     switch (t.type)
     {
     case TextureType_Solid: return t.color0;
-    case TextureType_Checker: return checkerTexture(t, p);
-    case TextureType_Image: return imageTexel(t.image, uv);
-    case TextureType_Noise: return vec3(0.5 * (1.0 + perlinNoise(t.scale * p)));
-    case TextureType_Turbulence: return vec3(perlinTurbulence(t.scale * p, 7));
-    case TextureType_Marble: return vec3(0.5 * (1.0 + sin(t.scale * p.z + 10.0 * perlinTurbulence(p, 7))));
+    case TextureType_Checker:
+        if (kHasCheckerTextures)
+            return checkerTexture(t, p);
+        break;
+    case TextureType_Image:
+        if (kHasImageTextures)
+            return imageTexel(t.image, uv);
+        break;
+    case TextureType_Noise:
+        if (kHasNoiseTextures)
+            return vec3(0.5 * (1.0 + perlinNoise(t.scale * p)));
+        break;
+    case TextureType_Turbulence:
+        if (kHasNoiseTextures)
+            return vec3(perlinTurbulence(t.scale * p, 7));
+        break;
+    case TextureType_Marble:
+        if (kHasNoiseTextures)
+            return vec3(0.5 * (1.0 + sin(t.scale * p.z + 10.0 * perlinTurbulence(p, 7))));
+        break;
     }
     return vec3(0.0);
 }

@@ -7,6 +7,9 @@
 #   tests/Bench/device_run.sh heavy    the heavy part: CPU/GPU agreement of every scene at 128 px, 64 spp
 #   tests/Bench/device_run.sh table    thesis Table 5.4 redone: cornell-box-lights 600x600, depth 50
 #   tests/Bench/device_run.sh estimators  the same scene on the GPU with each estimator against one reference
+#   tests/Bench/device_run.sh specialization  issue 11: every scene with the general, strategy-only and
+#                                      strategy + features pipelines (600 px, 256 spp; SPEC_WIDTH, SPEC_SPP,
+#                                      ROUNDS), then the figure: cornell-box-lights 600x600, 1000 spp, mixture
 set -u
 mode=${1:-tests}
 out=${OUT:-/tmp/out}
@@ -50,5 +53,15 @@ estimators)
             --estimator "$e" --spp-list 25,50,100,250,500,1000 --engines gpu --reference "$out/reference.pfm" \
             --table "$out/estimator-$e.json"
     done
+    ;;
+specialization)
+    # Images stay on the machine (about 13 MB a scene); the tables and the stats come back.
+    work=/tmp/specialization
+    mkdir -p "$work" "$out/specialization"
+    ROUNDS=${ROUNDS:-2} bash tests/Bench/specialization.sh "$bin" "$work" "${SPEC_WIDTH:-600}" "${SPEC_SPP:-256}" |
+        tee "$out/specialization.md"
+    cp "$work"/*.json "$out/specialization/"
+    ROUNDS=3 bash tests/Bench/specialization_figure.sh "$bin" "$work/figure" | tee "$out/figure.txt"
+    cp "$work"/figure/*.json "$out/specialization/"
     ;;
 esac

@@ -1,6 +1,7 @@
 // How Common scenes map onto BLASes, TLAS instances and the shaders' records (host only, no device).
 #include <gtest/gtest.h>
 
+#include "RayTracing/GeometryFingerprint.h"
 #include "RayTracing/SceneLayout.h"
 #include "Scene/SceneBuilder.h"
 #include "Scenes/Catalogue.h"
@@ -9,9 +10,6 @@ namespace rt::gpu
 {
 namespace
 {
-using shader::kHitGroupMedia;
-using shader::kHitGroupSpheres;
-using shader::kHitGroupTriangles;
 
 std::size_t countKind(const SceneLayout& l, BlasDesc::Kind kind)
 {
@@ -34,7 +32,9 @@ TEST(SceneLayout, AllSpheresOfAGroupShareOneProceduralBlas)
     EXPECT_EQ(l.blases[0].sphereCount, 50u);
     EXPECT_EQ(l.blases[0].mediumCount, 0u);
     ASSERT_EQ(l.instances.size(), 1u);
-    EXPECT_EQ(l.instances[0].hitGroup, kHitGroupSpheres);
+    EXPECT_EQ(l.instances[0].kind, HitGroupKind::Spheres);
+    EXPECT_EQ(l.hitGroups, HitGroupLayout(false, true, false)) << "spheres only: one hit record";
+    EXPECT_EQ(l.instances[0].hitGroup, 0u);
     EXPECT_EQ(l.spheres.size(), 50u);
     EXPECT_EQ(l.aabbs.size(), 50u);
 }
@@ -81,7 +81,9 @@ TEST(SceneLayout, QuadsBecomeTwoTrianglesWithEdgeUvsAndTheirNormal)
             EXPECT_EQ(l.positions[r.firstVertex + v], expected);
         }
     }
-    EXPECT_EQ(l.instances[0].hitGroup, kHitGroupTriangles);
+    EXPECT_EQ(l.instances[0].kind, HitGroupKind::Triangles);
+    EXPECT_EQ(l.hitGroups, HitGroupLayout(true, false, false));
+    EXPECT_EQ(l.instances[0].hitGroup, 0u);
 }
 
 TEST(SceneLayout, SpheresAndMediaOfAGroupAreTwoGeometriesOfOneBlas)
@@ -95,7 +97,10 @@ TEST(SceneLayout, SpheresAndMediaOfAGroupAreTwoGeometriesOfOneBlas)
     ASSERT_EQ(l.blases.size(), 1u);
     EXPECT_EQ(l.blases[0].sphereCount, 1u);
     EXPECT_EQ(l.blases[0].mediumCount, 2u);
-    EXPECT_EQ(l.instances[0].hitGroup, kHitGroupSpheres); // geometry 1 (media) lands on kHitGroupMedia
+    EXPECT_EQ(l.instances[0].kind, HitGroupKind::Spheres);
+    // Geometry 1 (media) lands on the record after the spheres': the medium group's.
+    EXPECT_EQ(l.hitGroups, HitGroupLayout(false, true, true));
+    EXPECT_EQ(l.instances[0].hitGroup + 1, l.hitGroups.record(HitGroupKind::Media));
     EXPECT_EQ(l.media[1].boundary, shader::MediumBoundary::Box);
     EXPECT_EQ(l.aabbs[l.blases[0].firstMediumAabb + 1].min, vec3(2.0f));
 }
@@ -108,7 +113,9 @@ TEST(SceneLayout, MediaOnlyGroupStartsAtTheMediumHitGroup)
     b.instance(g, Transform::translate(vec3(5.0f)));
     const SceneLayout l = layoutScene(b.finish());
     ASSERT_EQ(l.instances.size(), 1u);
-    EXPECT_EQ(l.instances[0].hitGroup, kHitGroupMedia);
+    EXPECT_EQ(l.instances[0].kind, HitGroupKind::Media);
+    EXPECT_EQ(l.hitGroups, HitGroupLayout(false, false, true)) << "no sphere group without spheres";
+    EXPECT_EQ(l.instances[0].hitGroup, 0u);
     EXPECT_EQ(l.instances[0].worldFromObject, Transform::translate(vec3(5.0f)).m);
 }
 
@@ -149,7 +156,7 @@ TEST(SceneLayout, EachInstanceOfAnEmittingGroupNamesItsOwnLights)
     {
         const shader::InstanceRecord& r = l.records[i.record];
         ASSERT_NE(r.firstPrimitiveLight, kNoIndex);
-        if (i.hitGroup == kHitGroupTriangles)
+        if (i.kind == HitGroupKind::Triangles)
         {
             ASSERT_LE(r.firstPrimitiveLight + 4u, l.primitiveLights.size());
             EXPECT_EQ(l.primitiveLights[r.firstPrimitiveLight], kNoIndex); // the unlit quad, both triangles
@@ -181,7 +188,7 @@ TEST(SceneLayout, MeshBlasIsSharedAcrossMaterials)
     std::vector<std::uint32_t> materials;
     std::vector<std::uint32_t> blases;
     for (const TlasInstanceDesc& i : l.instances)
-        if (i.hitGroup == kHitGroupTriangles)
+        if (i.kind == HitGroupKind::Triangles)
         {
             blases.push_back(i.blas);
             materials.push_back(l.records[i.record].material);
@@ -221,8 +228,15 @@ TEST(SceneLayout, EveryCatalogueSceneIsConsistent)
         {
             ASSERT_LT(i.blas, l.blases.size());
             ASSERT_LT(i.record, l.records.size());
-            EXPECT_LT(i.hitGroup, shader::kHitGroupCount);
+            ASSERT_TRUE(l.hitGroups.has(i.kind));
+            EXPECT_EQ(i.hitGroup, l.hitGroups.record(i.kind));
+            const BlasDesc& b = l.blases[i.blas];
+            if (b.sphereCount > 0 && b.mediumCount > 0) // media are geometry 1: the next record
+                EXPECT_EQ(i.hitGroup + 1, l.hitGroups.record(HitGroupKind::Media));
         }
+        EXPECT_EQ(l.hitGroups.has(HitGroupKind::Spheres), !l.spheres.empty());
+        EXPECT_EQ(l.hitGroups.has(HitGroupKind::Media), !l.media.empty());
+        EXPECT_EQ(l.hitGroups.has(HitGroupKind::Triangles), !l.triangles.empty());
         for (const BlasDesc& b : l.blases)
         {
             EXPECT_LE(b.firstTriangle + b.triangleCount, l.triangles.size());
@@ -245,6 +259,54 @@ TEST(SceneLayout, EveryCatalogueSceneIsConsistent)
         for (std::uint32_t i = 0; i < scene.emitterCount(); ++i)
             EXPECT_EQ(named[i], scene.lights[i].shape == shader::LightShape::Quad ? 2 : 1) << "light " << i;
     }
+}
+TEST(SceneLayout, QuadsAndMediaWithoutSpheresTakeTwoRecords)
+{
+    const SceneLayout l = layoutScene(makeScene("rtnw-cornell-smoke"));
+    EXPECT_EQ(l.hitGroups, HitGroupLayout(true, false, true));
+    for (const TlasInstanceDesc& i : l.instances)
+        EXPECT_EQ(i.hitGroup, i.kind == HitGroupKind::Triangles ? 0u : 1u);
+}
+
+TEST(GeometryFingerprint, SameGeometryWithOtherMaterialsMatches)
+{
+    SceneOptions exact;
+    exact.fresnel = shader::FresnelModel::Exact;
+    SceneOptions schlick;
+    schlick.fresnel = shader::FresnelModel::Schlick;
+    EXPECT_EQ(fingerprintOf(layoutScene(makeScene("rtrol-cornell-glass", exact))),
+              fingerprintOf(layoutScene(makeScene("rtrol-cornell-glass", schlick))));
+
+    // Materials and emission of the same shapes: the records and lights differ, not the acceleration structures.
+    const auto scene = [](vec3 albedo, vec3 radiance) {
+        SceneBuilder b("materials");
+        b.sphere(b.world(), vec3(0.0f), 1.0f, b.lambertian(albedo));
+        b.quad(b.world(), vec3(-1, 2, -1), vec3(2, 0, 0), vec3(0, 0, 2), b.diffuseLight(radiance));
+        return b.finish();
+    };
+    EXPECT_EQ(fingerprintOf(layoutScene(scene(vec3(0.5f), vec3(4.0f)))),
+              fingerprintOf(layoutScene(scene(vec3(0.9f, 0.1f, 0.1f), vec3(1.0f)))));
+}
+
+TEST(GeometryFingerprint, MovedInstancesKeepTheBlasesNotTheTlas)
+{
+    const auto scene = [](float x, float radius) {
+        SceneBuilder b("moved");
+        const std::uint32_t g = b.group("ball");
+        b.sphere(g, vec3(0.0f), radius, b.lambertian(vec3(0.5f)));
+        b.box(g, vec3(1.0f), vec3(2.0f), b.lambertian(vec3(0.5f)));
+        b.instance(g, Transform::translate(vec3(x, 0.0f, 0.0f)));
+        return b.finish();
+    };
+    const GeometryFingerprint a = fingerprintOf(layoutScene(scene(0.0f, 1.0f)));
+    const GeometryFingerprint moved = fingerprintOf(layoutScene(scene(3.0f, 1.0f)));
+    const GeometryFingerprint bigger = fingerprintOf(layoutScene(scene(0.0f, 1.5f)));
+    EXPECT_EQ(a.blases, moved.blases);
+    EXPECT_NE(a.tlas, moved.tlas);
+    EXPECT_NE(a.blases, bigger.blases) << "a sphere's AABB is a build input";
+    EXPECT_NE(a.tlas, bigger.tlas) << "new BLASes need a new TLAS";
+    EXPECT_NE(fingerprintOf(layoutScene(makeScene("rtnw-cornell-box"))),
+              fingerprintOf(layoutScene(makeScene("rtnw-quads"))));
 }
 } // namespace
 } // namespace rt::gpu

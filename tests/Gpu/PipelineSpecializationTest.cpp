@@ -1,0 +1,72 @@
+// The pipeline cache's key (host only): what each --specialize mode keys on, the feature bits of catalogue
+// scenes, and the hit groups a key's pipeline holds.
+#include <gtest/gtest.h>
+
+#include "Engine/PipelineSpecialization.h"
+#include "RayTracing/SceneLayout.h"
+#include "Scenes/Catalogue.h"
+
+namespace rt::gpu
+{
+namespace
+{
+using namespace shader;
+
+std::uint32_t bitsOf(const Scene& scene) { return featureBitsOf(scene, layoutScene(scene).hitGroups); }
+
+RenderUniforms uniformsWith(Estimator estimator, bool thinLens, BackgroundType background)
+{
+    RenderUniforms u{};
+    u.estimator = estimator;
+    u.lightSampler = LightSampler::Projected;
+    u.lightSelection = LightSelection::Bvh;
+    u.sampling = PixelSampling::Accumulate;
+    u.thinLens = thinLens ? 1u : 0u;
+    u.backgroundType = background;
+    return u;
+}
+
+TEST(PipelineSpecialization, ModesKeyOnWhatTheySay)
+{
+    const std::uint32_t scene = kFeatureTriangles | kFeatureLambertian | kFeatureQuadLights | kFeatureThinLens;
+    const RenderUniforms u = uniformsWith(Estimator::NeeMis, false, BackgroundType::Constant);
+    EXPECT_EQ(PipelineSpecialization::of(Specialize::Off, u, scene), PipelineSpecialization::general());
+    const PipelineSpecialization strategy = PipelineSpecialization::of(Specialize::Strategy, u, scene);
+    EXPECT_EQ(strategy.features(), kSpecDynamic) << "every feature";
+    EXPECT_EQ(strategy.constants[kSpecIdLightSelection], std::uint32_t(LightSelection::Bvh));
+    EXPECT_EQ(strategy.constants[kSpecIdSampling], std::uint32_t(PixelSampling::Random)) << "accumulate is random";
+    const PipelineSpecialization full = PipelineSpecialization::of(Specialize::Full, u, scene);
+    EXPECT_EQ(full.features(), kFeatureTriangles | kFeatureLambertian | kFeatureQuadLights)
+        << "the lens is the render camera's, not the scene's";
+    EXPECT_TRUE(PipelineSpecialization::of(uniformsWith(Estimator::NeeMis, true, BackgroundType::Gradient), 0)
+                    .has(kFeatureThinLens | kFeatureGradientBackground));
+    EXPECT_EQ(full.hitGroups(), HitGroupLayout(true, false, false));
+    EXPECT_EQ(PipelineSpecialization::general().hitGroups(), HitGroupLayout::all());
+    EXPECT_EQ(PipelineSpecialization::general().describe(), "general");
+    EXPECT_NE(full.describe().find("features=triangles+lambertian+quad-lights"), std::string::npos) << full.describe();
+    // The mixture samples no light by NEE: one key whatever the sampler and selection.
+    RenderUniforms mixture = uniformsWith(Estimator::Mixture, false, BackgroundType::Constant);
+    const PipelineSpecialization a = PipelineSpecialization::of(mixture, scene);
+    mixture.lightSelection = LightSelection::Uniform;
+    EXPECT_EQ(a, PipelineSpecialization::of(mixture, scene));
+}
+
+TEST(PipelineSpecialization, CatalogueScenesHaveTheirFeatureBits)
+{
+    const std::uint32_t glass = bitsOf(makeScene("rtrol-cornell-glass"));
+    EXPECT_EQ(glass & (kFeatureTriangles | kFeatureSpheres | kFeatureMedia), kFeatureTriangles | kFeatureSpheres);
+    EXPECT_TRUE(glass & kFeatureSphereLights) << "the glass sphere is the mixture's sampling target";
+    EXPECT_TRUE(glass & kFeatureQuadLights);
+    EXPECT_FALSE(glass & (kFeatureTriangleLights | kFeatureMetal | kFeatureIsotropic | kFeatureImageTextures));
+    const std::uint32_t smoke = bitsOf(makeScene("rtnw-cornell-smoke"));
+    EXPECT_TRUE((smoke & kFeatureMedia) && (smoke & kFeatureIsotropic));
+    EXPECT_FALSE(smoke & (kFeatureSpheres | kFeatureMotion));
+    const std::uint32_t earth = bitsOf(makeScene("rtnw-earth"));
+    EXPECT_EQ(earth & (kFeatureImageTextures | kFeatureTriangles), kFeatureImageTextures);
+    EXPECT_TRUE(bitsOf(makeScene("rtnw-motion-blur")) & kFeatureMotion);
+    EXPECT_TRUE(bitsOf(makeScene("triangle-lights")) & kFeatureTriangleLights);
+    EXPECT_EQ(bitsOf(makeScene("rtnw-quads")) & (kFeatureSphereLights | kFeatureQuadLights | kFeatureTriangleLights),
+              0u) << "no light";
+}
+} // namespace
+} // namespace rt::gpu
