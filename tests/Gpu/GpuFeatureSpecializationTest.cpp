@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <limits>
+
 #include <gtest/gtest.h>
 
 #include "Engine/GpuScene.h"
@@ -100,10 +102,35 @@ int differingPixels(const Image& a, const Image& b)
     return n;
 }
 
+/// z of the mean of the pixels' paired differences (a - b, summed over the channels): 0 for identical images,
+/// of order 1 for renders that differ by noise (paths a flipped float comparison sent elsewhere), large for a
+/// systematic difference (code the specialised pipeline left out that the scene needed). Pairing keeps it
+/// exact where the images agree pixel for pixel.
+double pairedZ(const Image& a, const Image& b)
+{
+    double sum = 0.0, sum2 = 0.0;
+    const std::size_t n = a.pixelCount();
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const vec3 d = a.pixels()[i] - b.pixels()[i];
+        const double v = double(d.x) + double(d.y) + double(d.z);
+        sum += v;
+        sum2 += v * v;
+    }
+    const double mean = sum / double(n);
+    const double variance = std::max(0.0, sum2 / double(n) - mean * mean);
+    if (variance == 0.0)
+        return mean == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
+    return mean / std::sqrt(variance / double(n - 1));
+}
+
 // The specialised pipeline leaves out code the scene cannot reach and hit groups it has no geometry for: the
-// same numbers, the same paths. A driver may fold arithmetic differently once branches are gone, and a float
-// comparison that flips (a medium's free flight, a dielectric's reflection choice) sends one path elsewhere:
-// a few pixels may differ by more than round-off, never many (lavapipe: none).
+// same numbers, the same paths (lavapipe: the same image bit for bit). A driver may fold arithmetic
+// differently once branches are gone, and a float comparison that flips (a dielectric's reflection choice)
+// sends a path elsewhere; in a medium, whose free-flight numbers hash the ray's bits, one ulp of a ray gives
+// a new number, so on the H100 half of rtnw-final's pixels differ at 4 spp. The images must then agree
+// within noise: the paired z of their difference under 4 (a scene rendered without a feature it needs is far
+// outside that).
 TEST_P(GpuFeatureSpecialization, SpecialisedAndGeneralPipelinesRenderTheSameImage)
 {
     GpuEngine& engine = *sharedEngine();
@@ -124,14 +151,10 @@ TEST_P(GpuFeatureSpecialization, SpecialisedAndGeneralPipelinesRenderTheSameImag
 
     EXPECT_EQ(specialised.stats.nanSamples + specialised.stats.infSamples, 0u);
     EXPECT_GT(specialised.image.mean().x + specialised.image.mean().y + specialised.image.mean().z, 0.0f);
-    const int pixels = s.width * s.height();
-    const int allowed = std::max(2, pixels / 100);
-    EXPECT_LE(differingPixels(specialised.image, general.image), allowed);
-    EXPECT_LE(differingPixels(strategy.image, general.image), allowed);
-    const vec3 a = specialised.image.mean();
-    const vec3 b = general.image.mean();
-    for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(a[c], b[c], 0.02 * std::max(1e-3f, b[c])) << "channel " << c;
+    EXPECT_LT(std::abs(pairedZ(specialised.image, general.image)), 4.0)
+        << differingPixels(specialised.image, general.image) << " pixels differ beyond round-off";
+    EXPECT_LT(std::abs(pairedZ(strategy.image, general.image)), 4.0)
+        << differingPixels(strategy.image, general.image) << " pixels differ beyond round-off";
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GpuFeatureSpecialization, ::testing::ValuesIn(kFeatureScenes),
