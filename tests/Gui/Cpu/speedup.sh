@@ -3,7 +3,8 @@
 # A measurement, not a test (CTest does not run it): the single -> multi core speed-up of one render, headless
 # and in the window's timings table, REPEATS times each, interleaved so that other load on the machine
 # falls on both alike. Prints each pair of render times and the median speed-ups.
-# Default render: cornell-box-lights, 200x200, 64 spp (about 4 s on one core of the 2-core CI machine).
+# Default render: cornell-box-lights, 200x200, 64 spp (about 4 s on one core of the 2-core CI machine), in a
+# 1280x800 window (WINDOW_SIZE=WxH for another).
 set -eu
 app=$1
 repeats=${2:-3}
@@ -27,7 +28,7 @@ for i in $(seq "$repeats"); do
     echo "headless  run $i: single $s s, multi $m s"
 
     # The launch render is single core; then multi; the window exits once both are in the table.
-    "$app" --no-gpu "${render[@]}" --engine single --actions "wait;engine=multi;render;wait" --frames 1 \
+    "$app" --no-gpu --window-size "${WINDOW_SIZE:-1280x800}" "${render[@]}" --engine single --actions "wait;engine=multi;render;wait" --frames 1 \
         --state-json "$work/w.json" 2>/dev/null
     read -r s m marks < <(python3 - "$work/w.json" <<'EOF'
 import json, sys
