@@ -60,8 +60,6 @@ bool drawTimings(Session& session)
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(row.key.scene.id.c_str());
-        if (index == table.latestRow())
-            latestVisible = ImGui::IsItemVisible();
         ImGui::TableNextColumn();
         ImGui::Text("%dx%d", row.key.width, row.key.height);
         ImGui::TableNextColumn();
@@ -93,6 +91,15 @@ bool drawTimings(Session& session)
             ImGui::Text("%.3f s%s", cell->lastSeconds, disturbed ? " *" : "");
             ImGui::TextDisabled("%.2f Mpaths/s", cell->mpathsPerSecond);
             ImGui::EndGroup();
+            if (index == table.latestRow())
+            {
+                // A timing is the row's tallest cell (two lines): the row is in view when all of it is.
+                const ImDrawList& draw = *ImGui::GetWindowDrawList();
+                latestVisible = ImGui::GetItemRectMin().y >= draw.GetClipRectMin().y &&
+                                ImGui::GetItemRectMax().y <= draw.GetClipRectMax().y;
+                if (scrollToLatest)
+                    ImGui::SetScrollHereY(1.0f); // the cursor is below the two lines: the whole row comes into view
+            }
             if (ImGui::IsItemHovered())
                 ImGui::SetTooltip("best %.3f s of %d render%s\n%s\nthe window drew %d frame%s during it%s",
                                   cell->bestSeconds, cell->renders, cell->renders == 1 ? "" : "s",
@@ -107,8 +114,6 @@ bool drawTimings(Session& session)
         for (EngineKind e : {EngineKind::Multi, EngineKind::Gpu})
             if (const std::string s = speedUp(row, e); !s.empty())
                 ImGui::TextUnformatted(s.c_str());
-        if (scrollToLatest && index == table.latestRow())
-            ImGui::SetScrollHereY(1.0f); // the cursor is below the row's cells: the whole row comes into view
     }
     ImGui::EndTable();
     return latestVisible;
