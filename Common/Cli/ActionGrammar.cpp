@@ -8,6 +8,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "Cli/ValueParsing.h"
+#include "Cli/WindowSize.h"
 #include "Error.h"
 #include "Render/RenderSettings.h"
 #include "SceneFile/SceneFile.h"
@@ -17,7 +18,7 @@ namespace rt
 {
 namespace
 {
-constexpr long long kMaxSize = 16384;
+constexpr long long kMaxSize = kMaxWindowSide; // resize: 0x0 (minimised) up to --window-size's largest
 
 std::string trimmed(std::string_view text)
 {
@@ -154,13 +155,23 @@ std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long lo
         {"unidirectional-light", ActionValue::OnOff, "on|off", "emitters emit from their front face only"},
         {"resize", ActionValue::Size, "WxH", "resize the window (0x0: as a minimised window reports)"},
         {"save", ActionValue::Text, "FILE.png", "save the image shown: FILE.png and the linear FILE.pfm", 0, 1e30,
-         [](const std::string& path) { return path.size() > 4 && path.ends_with(".png"); }},
+         [](const std::string& path) { return saveImagePathProblem(path).empty(); }},
         {"frames", ActionValue::Integer, "N", "let N frames pass", 0},
         {"sleep", ActionValue::Real, "SECONDS", "let SECONDS of wall-clock time pass, drawing frames", 0, 600},
         {"theme", ActionValue::Text, "dark|light", "colour theme of the panel", 0, 1e30,
          [](const std::string& v) { return v == "dark" || v == "light"; }},
-        {"font-size", ActionValue::Integer, "PIXELS", "height of the panel's font", 10, 32},
+        {"font-size", ActionValue::Integer, "PIXELS", "height of the panel's font", kMinFontPixels, kMaxFontPixels},
     };
+}
+
+std::string saveImagePathProblem(const std::string& path)
+{
+    const std::filesystem::path p(path);
+    if (p.extension() == ".png" && !p.stem().empty())
+        return {};
+    return fmt::format("'{}' is not saved: the window writes PNG (sRGB) with the linear PFM beside it, so the "
+                       "name must end in .png{}",
+                       path, p.extension().empty() || p.extension() == ".png" ? "" : " (not " + p.extension().string() + ")");
 }
 
 std::vector<ActionSpec> joinActionSpecs(std::vector<ActionSpec> shared, const std::vector<ActionSpec>& own)

@@ -60,6 +60,15 @@ std::string actionScriptHelp(const std::vector<ActionSpec>& specs);
 /// where accumulation stops).
 std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long long sppMinimum);
 
+/// The panel's font height in both windows, in pixels (font-size=, the panels' sliders): below 10 the
+/// panel's text is unreadable, above 32 the panel no longer fits beside the image.
+inline constexpr int kMinFontPixels = 10;
+inline constexpr int kMaxFontPixels = 32;
+
+/// Why the windows' Save cannot write `path`, or empty when it can: they write PNG (sRGB) with the linear PFM
+/// beside it, so the name must end in .png.
+std::string saveImagePathProblem(const std::string& path);
+
 /// `shared` followed by `own`.
 std::vector<ActionSpec> joinActionSpecs(std::vector<ActionSpec> shared, const std::vector<ActionSpec>& own);
 } // namespace rt

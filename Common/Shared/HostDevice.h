@@ -374,7 +374,8 @@ struct CostStats
     uint buckets[kCostBuckets];
 };
 
-// Descriptor set 0 of the display pass (Display.vert/.frag), which fills the window with the ray tracer's image.
+// Descriptor set 0 of the display pass (Display.vert/.frag), which draws the ray tracer's image into its
+// rectangle of the window (letterboxed beside the panel).
 RT_CONST(uint, kDisplayBindingAccumulation, 0u) // rgba32f storage image: radiance sum, sample count
 RT_CONST(uint, kDisplayBindingCost, 1u)         // r32f storage image: ticks summed (kBindingCost's image)
 
@@ -389,6 +390,8 @@ struct DisplayPushConstants
     uint encodeSrgb; // 1: the swapchain stores what it is given (UNORM), so the shader encodes sRGB
     float costScale; // Cost: ticks per sample shown as the top of the palette
     uint pad;
+    vec2 imageOrigin; // framebuffer pixel of the image rectangle's top-left corner
+    vec2 texelsPerPixel; // image texels per framebuffer pixel, x and y (the letterbox's scale, inverted)
 };
 
 /// The rasterised preview (Preview.vert/.frag): one pipeline draws the scene's triangles (per-vertex world
@@ -414,7 +417,7 @@ static_assert(offsetof(MediumRecord, boxMax) == 32);
 static_assert(offsetof(MediumRecord, phaseMaterial) == 48);
 static_assert(sizeof(SampleCounters) == 8);
 static_assert(sizeof(CostStats) == 4 * (1 + kCostBuckets));
-static_assert(sizeof(DisplayPushConstants) == 16);
+static_assert(sizeof(DisplayPushConstants) == 32 && offsetof(DisplayPushConstants, imageOrigin) == 16);
 static_assert(sizeof(PreviewPushConstants) == 80 && offsetof(PreviewPushConstants, eye) == 64);
 #endif
 // ==== end of the GPU engine section ==========================================================================

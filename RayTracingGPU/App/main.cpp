@@ -17,6 +17,7 @@
 #endif
 #include "Cli/HeadlessRun.h"
 #include "Cli/ValueParsing.h"
+#include "Cli/WindowSize.h"
 #include "Engine/CpuEngine.h"
 #include "Engine/GpuContext.h"
 #include "Engine/GpuEngine.h"
@@ -31,7 +32,9 @@ struct WindowFlags
 {
     std::optional<int> frames;
     std::string screenshot;
+    std::string stateJson;
     std::string actions;
+    std::string windowSize; // empty: the panel and the image side by side
     int samplesPerFrame = 1;
     std::string rayTracing = "on";
     std::string accumulate = "on";
@@ -61,6 +64,13 @@ void addWindowOptions(CLI::App& app, WindowFlags& w)
     frames->check(CLI::PositiveNumber);
     app.add_option("--screenshot", w.screenshot, "Window: save what the window shows in the last frame (.png)")
         ->needs(frames);
+    app.add_option("--state-json", w.stateJson,
+                   "Window: at exit, write the window's and the image's sizes, where the last frame drew the panel "
+                   "and the image, and the panel's message as JSON here");
+    app.add_option("--window-size", w.windowSize,
+                   fmt::format("Window: its size WxH in pixels, each side in [{}, {}] (default: the panel and the "
+                               "image side by side at one pixel per image pixel, cut to the screen)",
+                               rt::kMinWindowSide, rt::kMaxWindowSide));
     app.add_option("--actions", w.actions,
                    "Window: scripted input, one per frame, through the panel's own functions, separated by ';':\n" +
                        rt::gpu::gui::actionHelp());
@@ -81,9 +91,11 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
     if (options.sampling == "stratified")
         spdlog::warn("the window accumulates random samples progressively; --sampling is for --headless");
     rt::checkOutputPaths(options);
-    if (!flags.screenshot.empty() && std::filesystem::path(flags.screenshot).extension() != ".png")
-        throw rt::UsageError(fmt::format("--screenshot must name a .png file (got '{}')", flags.screenshot));
     rt::gpu::gui::WindowOptions w;
+    if (!flags.windowSize.empty())
+        w.windowSize = rt::parseWindowSize(flags.windowSize);
+    rt::checkOutputPath(flags.screenshot, "--screenshot", {".png"});
+    rt::checkOutputPath(flags.stateJson, "--state-json", {".json"});
     w.actions = rt::gpu::gui::parseActions(flags.actions);
     rt::CommandLineRender job = rt::resolveCommandLine(options);
     const rt::RenderSettings& settings = job.request.settings;
@@ -93,7 +105,6 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
     if (settings.sampling != rt::PixelSampling::Sobol)
         image.request.settings.sampling = rt::PixelSampling::Accumulate;
     image.camera = job.scene.camera;
-    image.setSize({settings.width, settings.height()});
     image.rayTracing = onOff(flags.rayTracing, "--raytracing");
     image.accumulate = onOff(flags.accumulate, "--accumulate");
     image.heatmap = onOff(flags.heatmap, "--heatmap");
@@ -103,6 +114,7 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
     w.validation = validation;
     w.frames = flags.frames;
     w.screenshot = flags.screenshot;
+    w.stateJson = flags.stateJson;
     w.savePath = options.output.empty() ? "ray-tracing-gpu.png" : options.output;
     return rt::gpu::gui::runWindow(w, std::move(job.scene));
 }

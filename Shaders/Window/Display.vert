@@ -1,4 +1,5 @@
-// One triangle that covers the viewport; the fragment shader reads the ray tracer's images at its pixel.
+// One triangle that covers the viewport (the image's rectangle); the fragment shader reads the ray tracer's
+// images at its pixel.
 #version 460
 
 void main()

@@ -37,6 +37,35 @@ expect_error() { # name, pattern the error line must contain, args...
     fi
 }
 
+# The window's flags, checked before any window opens: run without --headless and without a display, so that
+# a check that came only after opening the window would fail with "cannot open a window" instead.
+expect_window_error() { # name, pattern the error line must contain, args...
+    local name=$1 pattern=$2
+    shift 2
+    env -u DISPLAY -u WAYLAND_DISPLAY timeout 60 "$app" --width 8 --spp 1 "$@" >"$work/stdout" 2>"$work/stderr"
+    local status=$?
+    if [ "$status" -ne 2 ]; then
+        echo "FAIL $name: exit status $status (usage errors are 2): $(cat "$work/stderr")"; failures=$((failures + 1))
+    elif [ "$(grep -c . "$work/stderr")" -ne 1 ] || ! grep -qi -- "$pattern" "$work/stderr"; then
+        echo "FAIL $name: '$(cat "$work/stderr")' is not one line mentioning '$pattern'"; failures=$((failures + 1))
+    else
+        echo "ok   $name (status $status): $(cat "$work/stderr")"
+    fi
+}
+expect_window_error "window size 0x0" "--window-size 0x0: the width must be from 160 to 16384" --window-size 0x0
+expect_window_error "window size too large" "--window-size 100000x100000: the width must be from 160" \
+    --window-size 100000x100000
+expect_window_error "window size not a size" "--window-size must be WIDTHxHEIGHT.*got 'abc'" --window-size abc
+expect_window_error "window size without x" "--window-size must be WIDTHxHEIGHT.*got '1280'" --window-size 1280
+expect_window_error "window size height too small" "the height must be from 160" --window-size 800x100
+# Values the windows' actions hold to a limit are refused naming it, before the window opens (issue 13).
+expect_window_error "save to a .jpg name" "expected save=FILE.png" --actions "save=x.jpg"
+expect_window_error "font size out of range" "font-size=an integer in \[10, 32\]" --actions "font-size=40"
+if [[ $(basename "$app") == ray-tracing-gpu ]]; then
+    expect_window_error "samples per frame above the cap" "not in range 1 to 256" --samples-per-frame 1000
+    expect_window_error "samples action above the cap" "samples=an integer in \[1, 256\]" --actions "samples=1000"
+fi
+
 expect_error "unknown scene" "no-such-scene" --scene no-such-scene
 expect_error "zero spp" "samples per pixel" --spp 0
 expect_error "aspect overflowing a float" "got 1e308" --aspect 1e308

@@ -1,6 +1,7 @@
 #include "App/Gui/GlWindow.h"
 
 #include <algorithm>
+#include <atomic>
 #include <string>
 
 #include <GLFW/glfw3.h>
@@ -15,10 +16,32 @@ namespace rt::gui
 namespace
 {
 std::string g_lastGlfwError = "unknown GLFW error";
+std::uint64_t g_inputEvents = 0; // GLFW calls the callbacks on the UI thread, inside waitEvents
+std::atomic<bool> g_woken{false}; // set by wake(), from any thread
 
 void onGlfwError(int code, const char* description)
 {
     g_lastGlfwError = std::string(description ? description : "?") + " (GLFW error " + std::to_string(code) + ")";
+}
+
+/// Counts a person's input. Installed before ImGui's backend, which calls them before its own (it chains
+/// the callbacks it finds), and on the cursor's moves, which ImGui 1.86 polls rather than hears. A move
+/// counts only with a button held (a slider dragged): the pointer crossing the window, or the window opening
+/// under it (GLFW reports a move on entering), asks for nothing.
+void countInput(GLFWwindow* window)
+{
+    glfwSetKeyCallback(window, [](GLFWwindow*, int, int, int, int) { ++g_inputEvents; });
+    glfwSetCharCallback(window, [](GLFWwindow*, unsigned int) { ++g_inputEvents; });
+    glfwSetMouseButtonCallback(window, [](GLFWwindow*, int, int, int) { ++g_inputEvents; });
+    glfwSetScrollCallback(window, [](GLFWwindow*, double, double) { ++g_inputEvents; });
+    glfwSetCursorPosCallback(window, [](GLFWwindow* w, double, double) {
+        for (int button = GLFW_MOUSE_BUTTON_1; button <= GLFW_MOUSE_BUTTON_LAST; ++button)
+            if (glfwGetMouseButton(w, button) == GLFW_PRESS)
+            {
+                ++g_inputEvents;
+                return;
+            }
+    });
 }
 } // namespace
 
@@ -50,17 +73,25 @@ GlWindow::ImGuiBackends::~ImGuiBackends()
     ImGui::DestroyContext();
 }
 
-GlWindow::GlWindow(int width, int height, const std::string& title)
+GlWindow::GlWindow(WindowSize size, bool fitToMonitor, const std::string& title)
 {
+    if (fitToMonitor)
+        if (GLFWmonitor* monitor = glfwGetPrimaryMonitor())
+        {
+            WindowSize workArea;
+            glfwGetMonitorWorkarea(monitor, nullptr, nullptr, &workArea.width, &workArea.height);
+            size = fitWindowSize(size, workArea);
+        }
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    m_window.reset(glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr));
+    m_window.reset(glfwCreateWindow(size.width, size.height, title.c_str(), nullptr, nullptr));
     if (!m_window)
         throw Error("cannot open a window: " + g_lastGlfwError);
     glfwMakeContextCurrent(m_window.get());
     glfwSwapInterval(1);
+    countInput(m_window.get());
     m_imgui = std::make_unique<ImGuiBackends>(m_window.get());
 }
 
@@ -85,6 +116,16 @@ void GlWindow::resize(int width, int height)
     // true 0x0 framebuffer (minimised on Windows) is what framebufferSize().empty() guards against.
     glfwSetWindowSize(m_window.get(), std::max(width, 1), std::max(height, 1));
 }
+
+std::uint64_t GlWindow::inputEvents() const { return g_inputEvents; }
+
+void GlWindow::wake()
+{
+    g_woken = true;
+    glfwPostEmptyEvent();
+}
+
+bool GlWindow::takeWake() { return g_woken.exchange(false); }
 
 void GlWindow::beginFrame()
 {

@@ -3,8 +3,11 @@
 // Vulkan device belongs to the GPU engine (GpuStartup.h).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
+
+#include "Cli/WindowSize.h"
 
 struct GLFWwindow;
 
@@ -20,8 +23,10 @@ struct FramebufferSize
 class GlWindow
 {
 public:
-    /// Throws rt::Error when no window can be opened (no display), naming GLFW's reason.
-    GlWindow(int width, int height, const std::string& title);
+    /// Opens a window of `size` (--window-size), or, with `fitToMonitor`, of `size` cut to the primary
+    /// monitor's work area (the default size is made to fit the panes, not the screen). Throws rt::Error when
+    /// no window can be opened (no display), naming GLFW's reason.
+    GlWindow(WindowSize size, bool fitToMonitor, const std::string& title);
     ~GlWindow();
     GlWindow(const GlWindow&) = delete;
     GlWindow& operator=(const GlWindow&) = delete;
@@ -34,6 +39,13 @@ public:
     FramebufferSize framebufferSize() const;
     /// Sizes the window's content area in screen pixels; 0 becomes 1 where the platform has no empty windows.
     void resize(int width, int height);
+    /// Input a person gave so far (keys, characters, mouse buttons, moves and wheel):
+    /// the frame loop tells a redraw it had to make for a person from one it chose to make.
+    std::uint64_t inputEvents() const;
+    /// Wakes waitEvents from another thread (the render thread, when a render ends). Not counted as input.
+    static void wake();
+    /// Whether wake() was called since the last call.
+    static bool takeWake();
 
     /// Between beginFrame and endFrame, ImGui calls build the frame; endFrame draws it into the back buffer
     /// (where a screenshot reads it) and present shows it.

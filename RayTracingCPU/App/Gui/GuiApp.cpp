@@ -9,7 +9,9 @@
 #include <spdlog/spdlog.h>
 
 #include "App/Gui/ActionScript.h"
+#include "App/Gui/FramePacer.h"
 #include "App/Gui/ImageView.h"
+#include "App/Gui/PaneLayout.h"
 #include "App/Gui/RenderJob.h"
 #include "App/Gui/Screenshot.h"
 #include "App/Gui/Session.h"
@@ -41,12 +43,14 @@ std::string describe(const Preview& p)
 class GuiApp
 {
 public:
-    /// `size` and `script`: the options' --window-size and --actions, parsed (and so checked) before.
-    GuiApp(const GuiOptions& options, WindowSize size, std::optional<ActionScript> script, const RenderRequest& initial,
-           std::shared_ptr<const Scene> scene, EngineKind engine)
+    /// `size` and `script`: the options' --window-size and --actions, parsed (and so checked) before;
+    /// `fitToMonitor` for the default size.
+    GuiApp(const GuiOptions& options, WindowSize size, bool fitToMonitor, std::optional<ActionScript> script,
+           const RenderRequest& initial, std::shared_ptr<const Scene> scene, EngineKind engine)
         : m_options(options),
-          m_window(size.width, size.height, "ray-tracing-cpu: light-sampling lab"),
-          m_job({.enabled = !options.noGpu, .validation = options.validation}, initial, std::move(scene)),
+          m_window(size, fitToMonitor, "ray-tracing-cpu: light-sampling lab"),
+          m_job({.enabled = !options.noGpu, .validation = options.validation}, initial, std::move(scene),
+                [] { GlWindow::wake(); }),
           m_session(m_job, initial, engine, false)
     {
         m_session.setFont(availableFonts().front().name);
@@ -59,7 +63,12 @@ public:
         bool screenshotFailed = false;
         while (!m_window.closeRequested())
         {
-            m_window.waitEvents(frameInterval());
+            const bool rendering = m_session.progress().busy;
+            m_window.waitEvents(m_pacer.timeout(rendering, automating(), FramePacer::Clock::now()));
+            const FramePacer::Frame frame = m_pacer.next(rendering, automating(), m_window.inputEvents(),
+                                                         GlWindow::takeWake(), FramePacer::Clock::now());
+            if (frame == FramePacer::Frame::Skip)
+                continue; // the pointer moved over the window during a render: the next paced frame shows it
             m_theme.apply(m_session.display());
             const bool scriptDone = !m_script || m_script->step(m_session, m_window);
             m_session.update();
@@ -71,6 +80,8 @@ public:
                 m_window.beginFrame();
                 drawPanes();
                 m_window.endFrame(m_session.display().dark ? 0.08f : 0.85f);
+                if (rendering || m_session.progress().busy)
+                    m_job.countRedraw(frame == FramePacer::Frame::Input);
             }
             if (m_options.frames > 0)
             {
@@ -90,16 +101,6 @@ public:
 
 private:
     bool automating() const { return m_options.frames > 0 || (m_script && !m_script->done()); }
-
-    /// The longest the loop sleeps when there is no input (input wakes it at once). While a render runs,
-    /// every frame drawn takes CPU time from it, and that time would show in the timings: 10 frames a
-    /// second move the progress bar smoothly enough.
-    double frameInterval() const
-    {
-        if (m_session.progress().busy)
-            return 0.1;
-        return automating() ? 1.0 / 60.0 : 0.25;
-    }
 
     /// The renders started so far have finished (with loop rendering: one has).
     bool settled() const
@@ -147,10 +148,9 @@ private:
     void drawPanes()
     {
         const ImVec2 display = ImGui::GetIO().DisplaySize;
-        const float font = ImGui::GetFontSize();
-        // Sized by the font first, the window second; a window too small for that squeezes every pane.
-        const float panelWidth = std::min(std::max(font * 25.0f, display.x * 0.28f), display.x * 0.5f);
-        const float timingsHeight = std::min(std::clamp(display.y * 0.26f, font * 9.0f, font * 18.0f), display.y * 0.4f);
+        const PaneLayout panes = layoutPanes(display.x, display.y, ImGui::GetFontSize());
+        const float panelWidth = panes.panel.width;
+        const float timingsHeight = panes.timings.height;
 
         ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
         ImGui::SetNextWindowSize(ImVec2(panelWidth, display.y));
@@ -205,6 +205,7 @@ private:
     Theme m_theme;
     SettingsPanel m_panel;
     ImageView m_imageView;
+    FramePacer m_pacer;
     std::optional<ActionScript> m_script;
     nlohmann::json m_layout; // of the last frame drawn, for --state-json
 };
@@ -218,14 +219,19 @@ int runGui(const CommonOptions& options, const std::string& engineName, const Gu
     for (const auto& [flag, value] : {std::pair{"--output", &options.output}, {"--hdr", &options.hdr}, {"--stats", &options.stats}})
         if (!value->empty())
             throw UsageError(std::string(flag) + " is for --headless runs; in the window, use Save image");
-    const WindowSize size = parseWindowSize(gui.windowSize);
+    std::optional<WindowSize> size;
+    if (!gui.windowSize.empty())
+        size = parseWindowSize(gui.windowSize);
     checkGuiOutputPaths(gui);
     std::optional<ActionScript> script; // a typo fails here, before a window opens
     if (!gui.actions.empty())
         script.emplace(gui.actions);
     CommandLineRender job = resolveCommandLine(options);
     const RenderRequest initial = job.request;
-    GuiApp app(gui, size, std::move(script), initial, std::make_shared<const Scene>(std::move(job.scene)), *engine);
+    const RenderSettings& s = initial.settings;
+    const WindowSize fitting = defaultWindowSize(s.width, s.height(), DisplaySettings{}.fontSize);
+    GuiApp app(gui, size.value_or(fitting), !size, std::move(script), initial,
+               std::make_shared<const Scene>(std::move(job.scene)), *engine);
     return app.run();
 }
 } // namespace rt::gui

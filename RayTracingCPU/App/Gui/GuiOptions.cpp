@@ -4,8 +4,9 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "App/Gui/ActionScript.h"
+#include "App/Gui/PaneLayout.h"
 #include "Cli/HeadlessRun.h"
-#include "Cli/ValueParsing.h"
+#include "Cli/WindowSize.h"
 #include "Error.h"
 
 namespace rt::gui
@@ -41,18 +42,13 @@ void addGuiOptions(CLI::App& app, GuiOptions& o)
     app.add_option("--state-json", o.stateJson,
                    "Window: at exit, write the panel's settings, those of the image on screen, the timings table and "
                    "the GPU engine's status as JSON here");
-    app.add_option("--window-size", o.windowSize, "Window size WxH in screen pixels")->capture_default_str();
+    app.add_option("--window-size", o.windowSize,
+                   fmt::format("Window: its size WxH in screen pixels, each side in [{}, {}] (default: the panel, the "
+                               "image at one pixel per pixel and the timings, at least {}x{}, cut to the screen)",
+                               kMinWindowSide, kMaxWindowSide, kMinDefaultWindow.width, kMinDefaultWindow.height));
     app.add_flag("--no-gpu", o.noGpu, "Window: do not start the GPU engine (its entry is greyed out)");
     app.add_flag("--validation", o.validation,
                  "Window: run the GPU engine with VK_LAYER_KHRONOS_validation; exit 1 if it reports anything");
-}
-
-WindowSize parseWindowSize(const std::string& text)
-{
-    const auto s = parseSize(text);
-    if (!s || s->first < 1 || s->second < 1 || s->first > 16384 || s->second > 16384)
-        throw UsageError(fmt::format("--window-size must be WxH, e.g. 1280x800 (got '{}')", text));
-    return {int(s->first), int(s->second)};
 }
 
 void checkGuiOutputPaths(const GuiOptions& o)

@@ -15,7 +15,7 @@ struct GuiOptions
     std::string screenshot; // with frames: save the last frame here (.png)
     std::string actions; // ActionScript
     std::string stateJson; // at exit: panel, image on screen, timings, GPU status
-    std::string windowSize = "1280x800";
+    std::string windowSize; // WxH; empty: the panes around the image at one pixel per pixel (PaneLayout.h)
     bool noGpu = false;
     bool validation = false;
 
@@ -25,13 +25,6 @@ struct GuiOptions
 
 void addGuiOptions(CLI::App& app, GuiOptions& options);
 
-struct WindowSize
-{
-    int width = 0;
-    int height = 0;
-};
-/// Throws UsageError.
-WindowSize parseWindowSize(const std::string& text);
 /// Checks, before the window opens, that --screenshot and --state-json can be written. Throws.
 void checkGuiOutputPaths(const GuiOptions& options);
 } // namespace rt::gui

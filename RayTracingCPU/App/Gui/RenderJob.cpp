@@ -11,9 +11,11 @@ namespace rt::gui
 {
 namespace
 {
-// Previews faster than the window redraws are wasted work on the render thread, and that time is inside
-// the render time the timings table reports: the engines build none more often (RenderControl::previewDue).
-constexpr auto kPreviewInterval = std::chrono::milliseconds(50);
+// Previews faster than the window redraws (FramePacer) are wasted work on the render thread, and that time
+// is inside the render time the timings table reports: the engines build none more often
+// (RenderControl::previewDue).
+constexpr auto kPreviewInterval =
+    std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::duration<double>(FramePacer::kRenderingInterval));
 
 /// The mean of two independent estimates, weighted by their samples per pixel (loop rendering).
 Image combine(const Image& mean, int meanSamples, const Image& estimate, int samples)
@@ -29,8 +31,8 @@ Image combine(const Image& mean, int meanSamples, const Image& estimate, int sam
 } // namespace
 
 RenderJob::RenderJob(const GpuStartup::Options& gpu, const RenderRequest& initial,
-                     std::shared_ptr<const Scene> initialScene)
-    : m_gpu(gpu), m_scene(std::move(initialScene)), m_sceneKey(initial.scene)
+                     std::shared_ptr<const Scene> initialScene, std::function<void()> wakeUi)
+    : m_gpu(gpu), m_scene(std::move(initialScene)), m_sceneKey(initial.scene), m_wakeUi(std::move(wakeUi))
 {
     m_slots[std::size_t(EngineKind::Single)].engine = &m_single;
     m_slots[std::size_t(EngineKind::Multi)].engine = &m_multi;
@@ -132,7 +134,16 @@ void RenderJob::workerLoop()
         m_control.reset();
         m_phase = JobPhase::Idle;
         m_loopIteration = 0;
+        if (m_wakeUi)
+            m_wakeUi();
     }
+}
+
+void RenderJob::countRedraw(bool onInput)
+{
+    m_redraws.fetch_add(1, std::memory_order_relaxed);
+    if (onInput)
+        m_redrawsOnInput.fetch_add(1, std::memory_order_relaxed);
 }
 
 void RenderJob::run(const JobRequest& request, std::shared_ptr<RenderControl> control)
@@ -165,20 +176,24 @@ void RenderJob::run(const JobRequest& request, std::shared_ptr<RenderControl> co
             iterationRequest.settings.seed += static_cast<std::uint32_t>(iteration); // independent streams, wrapping is fine
             setPhase(JobPhase::Rendering, iteration);
             control->setPreviewInterval(kPreviewInterval);
+            m_redraws = 0;
+            m_redrawsOnInput = 0;
             const RenderResult result =
                 render(*engine, iterationRequest, *control, [&](const Image& estimate, int samples) {
                     if (samples <= 0)
                         return;
                     publish(request, combine(mean, meanSamples, estimate, samples), meanSamples + samples, false);
                 });
+            const WindowRedraws redraws{m_redraws.load(), m_redrawsOnInput.load()};
             if (result.stats.cancelled)
             {
-                report({.request = request, .cancelled = true});
+                report({.request = request, .cancelled = true, .redraws = redraws});
                 return;
             }
             mean = combine(mean, meanSamples, result.image, result.stats.trueSpp);
             meanSamples += result.stats.trueSpp;
-            publish(request, mean, meanSamples, true, RenderOutcome{.request = request, .stats = result.stats});
+            publish(request, mean, meanSamples, true,
+                    RenderOutcome{.request = request, .stats = result.stats, .redraws = redraws});
             control = nextIteration();
         }
     }
@@ -237,7 +252,11 @@ void RenderJob::publish(const JobRequest& request, Image estimate, int samples, 
     preview->generation = ++m_generation;
     m_preview = std::move(preview);
     if (outcome)
+    {
         m_outcomes.push_back(std::move(*outcome));
+        if (m_wakeUi)
+            m_wakeUi(); // a loop iteration's timing: the job stays busy
+    }
 }
 
 void RenderJob::report(RenderOutcome outcome)

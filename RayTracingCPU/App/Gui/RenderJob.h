@@ -5,8 +5,10 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -15,6 +17,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "App/Gui/FramePacer.h"
 #include "App/Gui/GpuStartup.h"
 #include "App/Gui/PanelSettings.h"
 #include "Engine/CpuEngine.h"
@@ -68,13 +71,17 @@ struct RenderOutcome
     std::optional<RenderStats> stats; // set when the render ran to the end
     bool cancelled = false;
     std::string error; // set when it failed
+    WindowRedraws redraws; // during this render (loop iteration)
 };
 
 class RenderJob
 {
 public:
     /// `initialScene`, already built from `initial` (the command line's scene), is used rather than built again.
-    RenderJob(const GpuStartup::Options& gpu, const RenderRequest& initial, std::shared_ptr<const Scene> initialScene);
+    /// `wakeUi` is called from the render thread when an outcome arrives or the job falls idle, so that a
+    /// window pacing its frames hears of it at once.
+    RenderJob(const GpuStartup::Options& gpu, const RenderRequest& initial, std::shared_ptr<const Scene> initialScene,
+              std::function<void()> wakeUi = {});
     /// Cancels the render in progress and joins the render thread (and the GPU engine's start).
     ~RenderJob();
     RenderJob(const RenderJob&) = delete;
@@ -98,6 +105,9 @@ public:
     std::optional<SceneDefaults> sceneDefaults(const std::string& sceneId) const;
     GpuStartup::Status gpuStatus() const { return m_gpu.status(); }
     std::uint64_t gpuValidationMessages() const { return m_gpu.validationMessages(); }
+    /// The window drew a frame (`onInput`: for a person's input); counted into the outcome of the render
+    /// in progress. Any thread.
+    void countRedraw(bool onInput);
 
 private:
     struct EngineSlot
@@ -139,6 +149,9 @@ private:
     std::uint64_t m_generation = 0;
     std::vector<RenderOutcome> m_outcomes;
     std::unordered_map<std::string, SceneDefaults> m_sceneDefaults;
+    std::function<void()> m_wakeUi;
+    std::atomic<int> m_redraws{0}; // of the render in progress
+    std::atomic<int> m_redrawsOnInput{0};
 
     std::thread m_worker; // last: starts after everything above exists
 };

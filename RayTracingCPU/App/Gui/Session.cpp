@@ -5,6 +5,7 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
+#include "Cli/ActionGrammar.h"
 #include "Error.h"
 #include "Image/ImageIO.h"
 #include "SceneFile/SceneFile.h"
@@ -33,6 +34,15 @@ nlohmann::json toJson(const RenderRequest& request)
             {"russian_roulette", r.russianRoulette},
             {"unidirectional_light", r.unidirectionalLight},
             {"seed", r.seed}};
+}
+
+std::string duration(double seconds)
+{
+    if (seconds < 0.0)
+        return "?";
+    if (seconds < 60.0)
+        return fmt::format("{:.1f} s", seconds);
+    return fmt::format("{}:{:02}", int(seconds) / 60, int(seconds) % 60);
 }
 
 const char* toString(GpuStartup::State state)
@@ -196,10 +206,21 @@ bool Session::saveImage(const std::filesystem::path& png)
     }
     try
     {
-        if (png.extension() != ".png")
-            throw UsageError(fmt::format("'{}' must end in .png (the .pfm goes beside it)", png.string()));
-        const std::filesystem::path pfm = writePngWithPfm(png, m_preview->linear);
-        note(fmt::format("saved {} and {}", png.string(), pfm.filename().string()), false);
+        if (const std::string problem = saveImagePathProblem(png.string()); !problem.empty())
+            throw UsageError(problem);
+        const Preview& p = *m_preview;
+        const std::filesystem::path pfm = writePngWithPfm(png, p.linear);
+        // The image is written as it is on screen; what it is, the message says.
+        std::string what;
+        if (!p.complete && !p.request.loop)
+            what = fmt::format(": a partial image, {} of {} spp ({})", p.samples, p.request.image.settings.trueSpp(),
+                               m_progress.busy && !imageIsStale() ? "still rendering" : "the render was cancelled");
+        else if (!p.complete)
+            what = fmt::format(": {} spp of loop rendering, the last pass partial", p.samples);
+        if (imageIsStale())
+            what += " (rendered with other settings than the panel's)";
+        note(fmt::format("saved {} and {}{}", png.string(), pfm.filename().string(), what), false);
+        spdlog::info("{}", message());
         return true;
     }
     catch (const Error& e)
@@ -217,7 +238,64 @@ std::string Session::suggestedImageName() const
                        toString(m_preview ? m_preview->request.engine : m_engine));
 }
 
-void Session::setFontSize(float pixels) { m_display.fontSize = std::clamp(pixels, 10.0f, 32.0f); }
+void Session::setFontSize(float pixels)
+{
+    const float kept = std::clamp(pixels, float(kMinFontPixels), float(kMaxFontPixels));
+    if (kept != pixels)
+    {
+        note(fmt::format("font size {:g} px: {} than the {} allowed, {:g} px; using {:g} px", pixels,
+                         pixels > kept ? "more" : "less", pixels > kept ? "largest" : "smallest", kept, kept),
+             false);
+        spdlog::warn("{}", message());
+    }
+    m_display.fontSize = kept;
+}
+
+std::string Session::progressText() const
+{
+    const JobProgress& p = m_progress;
+    switch (p.phase)
+    {
+    case JobPhase::WaitingForGpu: return "waiting for the GPU engine to start...";
+    case JobPhase::BuildingScene: return "building the scene...";
+    case JobPhase::Rendering:
+    {
+        std::string text = fmt::format("{:.0f}%  {} elapsed, ETA {}", p.fraction * 100.0, duration(p.elapsedSeconds),
+                                       duration(p.etaSeconds));
+        if (m_loop)
+            text += fmt::format("  (loop {})", p.loopIteration + 1);
+        return text;
+    }
+    case JobPhase::Idle: break;
+    }
+    if (p.busy)
+        return "starting...";
+    switch (m_lastEnd)
+    {
+    case RenderEnd::None: return "idle";
+    case RenderEnd::Finished: return "done";
+    case RenderEnd::Failed: return "failed";
+    case RenderEnd::Cancelled:
+        if (m_preview && !m_preview->complete && !imageIsStale())
+            return fmt::format("cancelled: {} of {} spp on screen", m_preview->samples,
+                               m_preview->request.image.settings.trueSpp());
+        return "cancelled";
+    }
+    return "?";
+}
+
+float Session::progressFraction() const
+{
+    if (m_progress.phase == JobPhase::Rendering)
+        return float(m_progress.fraction);
+    if (m_progress.busy)
+        return 0.0f;
+    if (m_lastEnd == RenderEnd::Finished)
+        return 1.0f;
+    if (m_lastEnd == RenderEnd::Cancelled && m_preview && !m_preview->complete && !imageIsStale())
+        return std::min(1.0f, float(m_preview->samples) / float(m_preview->request.image.settings.trueSpp()));
+    return 0.0f;
+}
 
 void Session::update()
 {
@@ -241,17 +319,20 @@ void Session::update()
     {
         if (outcome.stats)
         {
-            m_timings.record(*outcome.stats);
+            m_timings.record(*outcome.stats, outcome.redraws);
             ++m_finished;
+            m_lastEnd = RenderEnd::Finished;
             m_lastFinished = std::move(outcome);
         }
         else if (!outcome.error.empty())
         {
             ++m_failed;
+            m_lastEnd = RenderEnd::Failed;
             spdlog::error("render failed: {}", outcome.error);
             note("render failed: " + outcome.error, true);
         }
-        // A cancellation is either the user's (cancel() said so) or a newer request's: nothing to say.
+        else
+            m_lastEnd = RenderEnd::Cancelled; // the user's (cancel() said so) or a newer request's, which ends later
     }
     m_preview = m_job.latestPreview();
 }
@@ -278,6 +359,7 @@ nlohmann::json Session::stateJson() const
             {"image_matches_panel", !imageIsStale()},
             {"timings", m_timings.toJson()},
             {"gpu", {{"state", toString(m_gpu.state)}, {"detail", m_gpu.detail}}},
+            {"progress", progressText()},
             {"finished_renders", m_finished},
             {"failed_renders", m_failed},
             {"scene_reloads", m_sceneReloads},

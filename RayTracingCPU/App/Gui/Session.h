@@ -18,6 +18,15 @@
 
 namespace rt::gui
 {
+/// How the latest render that is not running any more ended.
+enum class RenderEnd
+{
+    None, // none has ended yet
+    Finished,
+    Cancelled, // by Cancel (a newer request's cancellation is followed by that request's end)
+    Failed
+};
+
 class Session
 {
 public:
@@ -52,7 +61,9 @@ public:
     void render();
     void cancel();
 
-    /// Writes the image on screen: `png` (sRGB) and the same name with .pfm (linear radiance).
+    /// Writes the image on screen: `png` (sRGB) and the same name with .pfm (linear radiance). A partial
+    /// image (cancelled, or still rendering) is written as it is, and the message says how many samples it
+    /// holds of how many.
     bool saveImage(const std::filesystem::path& png);
     /// scene_WxH_Nspp_engine.png, from the image on screen.
     std::string suggestedImageName() const;
@@ -60,6 +71,7 @@ public:
 
     void setDark(bool dark) { m_display.dark = dark; }
     void setFont(const std::string& font) { m_display.font = font; }
+    /// Held to [kMinFontPixels, kMaxFontPixels]; a size outside says so, naming the limit.
     void setFontSize(float pixels);
 
     /// Once per frame: notices a new version of the scene file, starts a render when the image settings
@@ -71,6 +83,11 @@ public:
     bool loop() const { return m_loop; }
     const DisplaySettings& display() const { return m_display; }
     const JobProgress& progress() const { return m_progress; }
+    RenderEnd lastEnd() const { return m_lastEnd; }
+    /// The progress bar's line ("37%  1.2 s elapsed, ETA 2.0 s", "done", "cancelled: 12 of 1000 spp on
+    /// screen", ...) and how full it is.
+    std::string progressText() const;
+    float progressFraction() const;
     const GpuStartup::Status& gpu() const { return m_gpu; }
     const std::shared_ptr<const Preview>& preview() const { return m_preview; }
     /// True when the image on screen was rendered with other image settings than the panel shows.
@@ -107,5 +124,6 @@ private:
     int m_finished = 0;
     int m_failed = 0;
     int m_sceneReloads = 0; // new versions of the scene file noticed
+    RenderEnd m_lastEnd = RenderEnd::None;
 };
 } // namespace rt::gui

@@ -8,6 +8,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "App/Gui/Theme.h"
+#include "Cli/ActionGrammar.h"
 #include "Scenes/Catalogue.h"
 
 namespace rt::gui
@@ -34,15 +35,6 @@ void tooltip(const char* text)
 void pushFieldWidth()
 {
     ImGui::PushItemWidth(-(ImGui::CalcTextSize("Samples per pixel").x + ImGui::GetStyle().ItemInnerSpacing.x * 2.0f));
-}
-
-std::string duration(double seconds)
-{
-    if (seconds < 0.0)
-        return "?";
-    if (seconds < 60.0)
-        return fmt::format("{:.1f} s", seconds);
-    return fmt::format("{}:{:02}", int(seconds) / 60, int(seconds) % 60);
 }
 } // namespace
 
@@ -79,7 +71,7 @@ void SettingsPanel::drawUiParameters(Session& session)
         ImGui::EndCombo();
     }
     float size = d.fontSize;
-    ImGui::SliderFloat("Font size", &size, 10.0f, 32.0f, "%.0f px");
+    ImGui::SliderFloat("Font size", &size, float(kMinFontPixels), float(kMaxFontPixels), "%.0f px");
     if (ImGui::IsItemDeactivatedAfterEdit()) // a new atlas per drag step would stutter
         session.setFontSize(size);
 }
@@ -266,24 +258,7 @@ void SettingsPanel::drawRenderControls(Session& session)
         session.cancel();
     ImGui::EndDisabled();
 
-    std::string status;
-    float fraction = 0.0f;
-    switch (p.phase)
-    {
-    case JobPhase::Idle: status = p.busy ? "starting..." : session.lastFinished() ? "done" : "idle"; break;
-    case JobPhase::WaitingForGpu: status = "waiting for the GPU engine to start..."; break;
-    case JobPhase::BuildingScene: status = "building the scene..."; break;
-    case JobPhase::Rendering:
-        fraction = static_cast<float>(p.fraction);
-        status = fmt::format("{:.0f}%  {} elapsed, ETA {}", p.fraction * 100.0, duration(p.elapsedSeconds),
-                             duration(p.etaSeconds));
-        if (session.loop())
-            status += fmt::format("  (loop {})", p.loopIteration + 1);
-        break;
-    }
-    if (!p.busy && session.lastFinished())
-        fraction = 1.0f;
-    ImGui::ProgressBar(fraction, ImVec2(-1.0f, 0.0f), status.c_str());
+    ImGui::ProgressBar(session.progressFraction(), ImVec2(-1.0f, 0.0f), session.progressText().c_str());
 
     if (const auto& last = session.lastFinished())
     {

@@ -4,7 +4,7 @@
 
 namespace rt::gui
 {
-void TimingsTable::record(const RenderStats& stats)
+void TimingsTable::record(const RenderStats& stats, const WindowRedraws& redraws)
 {
     const RenderSettings& s = stats.request.settings;
     const TimingKey key{.scene = stats.request.scene,
@@ -30,6 +30,7 @@ void TimingsTable::record(const RenderStats& stats)
     cell->mpathsPerSecond = stats.mpathsPerSecond();
     cell->renders += 1;
     cell->device = stats.device;
+    cell->redraws = redraws;
     m_latest = std::size_t(row - m_rows.begin());
     ++m_revision;
 }
@@ -58,7 +59,9 @@ nlohmann::json TimingsTable::toJson() const
                                {"best_seconds", cell->bestSeconds},
                                {"mpaths_per_second", cell->mpathsPerSecond},
                                {"renders", cell->renders},
-                               {"device", cell->device}});
+                               {"device", cell->device},
+                               {"window_redraws", cell->redraws.total},
+                               {"window_redraws_on_input", cell->redraws.onInput}});
     return out;
 }
 } // namespace rt::gui

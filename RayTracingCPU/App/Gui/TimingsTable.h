@@ -1,6 +1,8 @@
 // Every render that ran to the end in this run of the app, grouped by the work it did (scene, image size,
 // samples, depth, estimator, sampling, light mode) with one column per engine, so single core, multi core
-// and the GPU sit side by side for the same work. Cancelled renders are not timings and never enter it.
+// and the GPU sit side by side for the same work. Cancelled renders are not timings and never enter it. A
+// timing taken while the window redrew for a person's input (FramePacer.h) is marked: that drawing competed
+// with the render for the CPU.
 #pragma once
 
 #include <array>
@@ -11,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "App/Gui/FramePacer.h"
 #include "App/Gui/PanelSettings.h"
 #include "Render/RenderRequest.h"
 #include "Render/RenderStats.h"
@@ -43,6 +46,7 @@ struct EngineTiming
     double mpathsPerSecond = 0.0; // of the latest
     int renders = 0;
     std::string device;
+    WindowRedraws redraws; // during the latest render
 };
 
 struct TimingRow
@@ -54,8 +58,8 @@ struct TimingRow
 class TimingsTable
 {
 public:
-    /// Adds a finished render.
-    void record(const RenderStats& stats);
+    /// Adds a finished render and the frames the window drew during it.
+    void record(const RenderStats& stats, const WindowRedraws& redraws = {});
     void clear()
     {
         m_rows.clear();
@@ -68,7 +72,8 @@ public:
     std::size_t latestRow() const { return m_latest; }
     std::uint64_t revision() const { return m_revision; }
     /// One object per (row, engine): scene, count, mesh, width, height, spp, depth, sampling, estimator,
-    /// russian_roulette, unidirectional_light, engine, seconds, best_seconds, mpaths_per_second, renders, device.
+    /// russian_roulette, unidirectional_light, engine, seconds, best_seconds, mpaths_per_second, renders, device,
+    /// window_redraws, window_redraws_on_input (of the latest render).
     nlohmann::json toJson() const;
 
 private:

@@ -29,7 +29,8 @@ bool drawTimings(Session& session)
     if (ImGui::SmallButton("Clear"))
         session.clearTimings();
     ImGui::SameLine();
-    ImGui::TextDisabled("tracing time of the latest render and its Mpaths/s; hover a time for the best of n");
+    ImGui::TextDisabled("tracing time of the latest render and its Mpaths/s; hover a time for the best of n; * the "
+                        "window redrew for input during the render (render again untouched for a clean time)");
     // Every column follows its widest cell as timings arrive; a pane too narrow scrolls rather than clips.
     const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollX |
                                   ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
@@ -59,8 +60,6 @@ bool drawTimings(Session& session)
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(row.key.scene.id.c_str());
-        if (index == table.latestRow())
-            latestVisible = ImGui::IsItemVisible();
         ImGui::TableNextColumn();
         ImGui::Text("%dx%d", row.key.width, row.key.height);
         ImGui::TableNextColumn();
@@ -87,20 +86,34 @@ bool drawTimings(Session& session)
             }
             if (e == best)
                 ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, fastest);
+            const bool disturbed = cell->redraws.onInput > 0;
             ImGui::BeginGroup();
-            ImGui::Text("%.3f s", cell->lastSeconds);
+            ImGui::Text("%.3f s%s", cell->lastSeconds, disturbed ? " *" : "");
             ImGui::TextDisabled("%.2f Mpaths/s", cell->mpathsPerSecond);
             ImGui::EndGroup();
+            if (index == table.latestRow())
+            {
+                // A timing is the row's tallest cell (two lines): the row is in view when all of it is.
+                const ImDrawList& draw = *ImGui::GetWindowDrawList();
+                latestVisible = ImGui::GetItemRectMin().y >= draw.GetClipRectMin().y &&
+                                ImGui::GetItemRectMax().y <= draw.GetClipRectMax().y;
+                if (scrollToLatest)
+                    ImGui::SetScrollHereY(1.0f); // the cursor is below the two lines: the whole row comes into view
+            }
             if (ImGui::IsItemHovered())
-                ImGui::SetTooltip("best %.3f s of %d render%s\n%s", cell->bestSeconds, cell->renders,
-                                  cell->renders == 1 ? "" : "s", cell->device.c_str());
+                ImGui::SetTooltip("best %.3f s of %d render%s\n%s\nthe window drew %d frame%s during it%s",
+                                  cell->bestSeconds, cell->renders, cell->renders == 1 ? "" : "s",
+                                  cell->device.c_str(), cell->redraws.total, cell->redraws.total == 1 ? "" : "s",
+                                  disturbed ? fmt::format(", {} for input: their drawing took CPU time from the "
+                                                          "render, which this time includes",
+                                                          cell->redraws.onInput)
+                                                  .c_str()
+                                            : " (paced: every 0.5 s)");
         }
         ImGui::TableNextColumn();
         for (EngineKind e : {EngineKind::Multi, EngineKind::Gpu})
             if (const std::string s = speedUp(row, e); !s.empty())
                 ImGui::TextUnformatted(s.c_str());
-        if (scrollToLatest && index == table.latestRow())
-            ImGui::SetScrollHereY(1.0f); // the cursor is below the row's cells: the whole row comes into view
     }
     ImGui::EndTable();
     return latestVisible;

@@ -1,16 +1,39 @@
 #include "App/Gui/Controls.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
 
 #include "App/Gui/CameraController.h"
+#include "Cli/ActionGrammar.h"
 #include "Error.h"
 #include "SceneFile/SceneFile.h"
 #include "Scenes/Catalogue.h"
 
 namespace rt::gpu::gui
 {
+namespace
+{
+/// `value` held to [low, high]; one outside says so, naming the limit.
+int held(WindowState& state, const char* what, int value, int low, int high, const char* unit)
+{
+    const int kept = std::clamp(value, low, high);
+    if (kept != value)
+    {
+        state.message = fmt::format("{} {}{}: {} than the {} allowed, {}{}; using {}{}", what, value, unit,
+                                    value > high ? "more" : "less", value > high ? "largest" : "smallest", kept,
+                                    unit, kept, unit);
+        spdlog::warn("{}", state.message);
+    }
+    return kept;
+}
+
+float basePixels(const WindowState& state) { return state.display.font == 0 ? kImGuiFontPixels : kPanelFontPixels; }
+} // namespace
+
 void Controls::selectScene(const std::string& idOrPath)
 {
     if (isSceneFilePath(idOrPath))
@@ -38,9 +61,18 @@ void Controls::setAccumulate(bool on) { m_state->image.accumulate = on; }
 void Controls::setHeatmap(bool on) { m_state->image.heatmap = on && m_state->costAvailable; }
 void Controls::setAutoCostScale(bool on) { m_state->display.autoCostScale = on; }
 void Controls::setCostScale(float ticksPerSample) { m_state->display.costScale = std::max(ticksPerSample, 1.0f); }
-void Controls::setSamplesPerFrame(int samples) { m_state->display.samplesPerFrame = std::clamp(samples, 1, kMaxSamplesPerFrame); }
-void Controls::setTargetSpp(int spp) { m_state->display.targetSpp = std::max(spp, 0); }
-void Controls::setDepth(int depth) { m_state->image.request.settings.depth = std::max(depth, 1); }
+void Controls::setSamplesPerFrame(int samples)
+{
+    m_state->display.samplesPerFrame = held(*m_state, "samples per frame", samples, 1, kMaxSamplesPerFrame, "");
+}
+void Controls::setTargetSpp(int spp)
+{
+    m_state->display.targetSpp = held(*m_state, "stop at spp", spp, 0, std::numeric_limits<int>::max(), "");
+}
+void Controls::setDepth(int depth)
+{
+    m_state->image.request.settings.depth = held(*m_state, "depth", depth, 1, std::numeric_limits<int>::max(), "");
+}
 void Controls::setEstimator(Estimator estimator) { m_state->image.request.settings.estimator = estimator; }
 void Controls::setRussianRoulette(bool on) { m_state->image.request.settings.russianRoulette = on; }
 void Controls::setLightSampler(LightSampler sampler) { m_state->image.request.settings.lightSampler = sampler; }
@@ -84,12 +116,24 @@ void Controls::setFont(const std::string& name)
     m_state->display.font = static_cast<int>(found - fonts.begin());
 }
 
-void Controls::setFontScale(float scale) { m_state->display.fontScale = std::clamp(scale, 0.5f, 3.0f); }
-
 void Controls::setFontPixels(int pixels)
 {
-    setFontScale(float(pixels) / (m_state->display.font == 0 ? kImGuiFontPixels : kPanelFontPixels));
+    const int kept = held(*m_state, "font size", pixels, kMinFontPixels, kMaxFontPixels, " px");
+    m_state->display.fontScale = float(kept) / basePixels(*m_state);
 }
-void Controls::save(const std::filesystem::path& png) { m_state->saveRequest = png; }
+
+int Controls::fontPixels() const { return int(std::lround(m_state->display.fontScale * basePixels(*m_state))); }
+
+bool Controls::save(const std::filesystem::path& png)
+{
+    if (const std::string problem = saveImagePathProblem(png.string()); !problem.empty())
+    {
+        m_state->message = problem;
+        spdlog::error("{}", problem);
+        return false;
+    }
+    m_state->saveRequest = png;
+    return true;
+}
 void Controls::resize(Extent size) { m_state->resizeRequest = Extent{std::max(size.width, 0), std::max(size.height, 0)}; }
 } // namespace rt::gpu::gui

@@ -1,6 +1,7 @@
 // Every change the panel's widgets make, and the only way they make it: the scripted actions (Actions.h) call
-// the same functions, so `--actions` exercises exactly what a person clicking does. Values are clamped here,
-// once.
+// the same functions, so `--actions` exercises exactly what a person clicking does. Values are held to their
+// limits here, once, and a value held says so (WindowState::message and the log), naming the limit: the
+// panel's sliders take any number typed into them.
 #pragma once
 
 #include <filesystem>
@@ -12,6 +13,8 @@
 
 namespace rt::gpu::gui
 {
+/// One frame's launches are recorded into one command buffer: more samples make a frame long enough for
+/// the window to stop answering (and some drivers to time the submission out).
 inline constexpr int kMaxSamplesPerFrame = 256;
 
 class Controls final
@@ -51,11 +54,14 @@ public:
     void setDarkStyle(bool dark);
     /// One of WindowState::fonts; throws rt::UsageError naming the others for any other name.
     void setFont(const std::string& name);
-    void setFontScale(float scale);
-    /// The scale at which the current font is `pixels` high (the --actions' font-size, as in the CPU window).
+    /// The scale at which the current font is `pixels` high, `pixels` held to [kMinFontPixels,
+    /// kMaxFontPixels] (the --actions' font-size and the panel's slider, in pixels as in the CPU window).
     void setFontPixels(int pixels);
-    /// Asks for the accumulated image as PNG at `png` and PFM beside it (same name, .pfm).
-    void save(const std::filesystem::path& png);
+    /// The current font's height in pixels at the current scale.
+    int fontPixels() const;
+    /// Asks for the accumulated image as PNG at `png` and PFM beside it (same name, .pfm). Returns false,
+    /// with the reason in WindowState::message, for a name that does not end in .png.
+    bool save(const std::filesystem::path& png);
     /// Asks for a window of `size` (0 x 0: minimised).
     void resize(Extent size);
 

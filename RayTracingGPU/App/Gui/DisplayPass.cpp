@@ -1,5 +1,6 @@
 #include "App/Gui/DisplayPass.h"
 
+#include <cstdint>
 #include <vector>
 
 #include "Vulkan/GraphicsPipeline.h"
@@ -54,10 +55,15 @@ void DisplayPass::setImages(VkImageView accumulation, VkImageView cost) const
     vkUpdateDescriptorSets(m_device->Handle(), 2, writes, 0, nullptr);
 }
 
-void DisplayPass::record(VkCommandBuffer cmd, VkExtent2D extent, const shader::DisplayPushConstants& push) const
+void DisplayPass::record(VkCommandBuffer cmd, const PixelRect& rect, Extent image,
+                         shader::DisplayPushConstants push) const
 {
-    const VkViewport viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, extent};
+    if (rect.empty() || image.width <= 0 || image.height <= 0)
+        return;
+    push.imageOrigin = shader::vec2(float(rect.x), float(rect.y));
+    push.texelsPerPixel = shader::vec2(float(image.width) / float(rect.width), float(image.height) / float(rect.height));
+    const VkViewport viewport{float(rect.x), float(rect.y), float(rect.width), float(rect.height), 0.0f, 1.0f};
+    const VkRect2D scissor{{rect.x, rect.y}, {std::uint32_t(rect.width), std::uint32_t(rect.height)}};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_pipeline.Handle());

@@ -1,10 +1,11 @@
-// Shows the ray tracer's images in the window: one full-screen triangle (Display.vert/.frag) that reads the
-// accumulation image, or the cost image for the heatmap, at the fragment's own pixel (the images are the
-// framebuffer's size), and writes it sRGB-encoded exactly as a PNG from --headless would be.
+// Shows the ray tracer's images in the window: one triangle over the image's rectangle (Display.vert/.frag;
+// WindowLayout.h places it) that reads the accumulation image, or the cost image for the heatmap, at the texel
+// under each fragment, and writes it sRGB-encoded exactly as a PNG from --headless would be.
 #pragma once
 
 #include <filesystem>
 
+#include "App/Gui/WindowLayout.h"
 #include "Shared/HostDevice.h"
 #include "Vulkan/DescriptorPool.h"
 #include "Vulkan/Pipeline.h"
@@ -22,8 +23,9 @@ public:
 
     /// Points the pass at the images (after they are made or remade; no frame may be using the set).
     void setImages(VkImageView accumulation, VkImageView cost) const;
-    /// Records the draw inside the render pass.
-    void record(VkCommandBuffer cmd, VkExtent2D extent, const shader::DisplayPushConstants& push) const;
+    /// Records the draw of an `image`-sized image into `rect` of the framebuffer, inside the render pass; sets
+    /// push's imageOrigin and texelsPerPixel. Nothing for an empty rectangle.
+    void record(VkCommandBuffer cmd, const PixelRect& rect, Extent image, shader::DisplayPushConstants push) const;
 
 private:
     const vk::Device* m_device;

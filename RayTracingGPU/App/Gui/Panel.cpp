@@ -1,5 +1,6 @@
 #include "App/Gui/Panel.h"
 
+#include <cmath>
 #include <filesystem>
 #include <utility>
 
@@ -7,6 +8,7 @@
 #include <imgui_stdlib.h>
 
 #include "App/Gui/CameraController.h"
+#include "Cli/ActionGrammar.h"
 #include "Error.h"
 #include "Image/ImageIO.h"
 #include "Scenes/Catalogue.h"
@@ -181,29 +183,36 @@ void statsSection(const WindowState& state, const PanelInfo& info)
         ImGui::Text("%d / %d spp accumulated", info.accumulatedSpp, state.display.targetSpp);
     else
         ImGui::Text("%d spp accumulated", info.accumulatedSpp);
-    ImGui::Text("%d x %d, depth %d", info.size.width, info.size.height, state.image.request.settings.depth);
+    ImGui::Text("%d x %d image, depth %d", info.image.width, info.image.height, state.image.request.settings.depth);
+    ImGui::TextDisabled("%d x %d window", info.window.width, info.window.height);
     ImGui::TextWrapped("%s", info.device.c_str());
 }
 
-void saveSection(Controls& controls, PanelState& panel, const PanelInfo& info)
+void saveSection(Controls& controls, PanelState& panel, const WindowState& state)
 {
     ImGui::InputText("File (.png)", &panel.savePath);
     if (ImGui::Button("Save image"))
         controls.save(panel.savePath);
     ImGui::SameLine();
     ImGui::TextDisabled("PNG + PFM");
-    if (!info.message.empty())
-        ImGui::TextWrapped("%s", info.message.c_str());
+    if (!state.message.empty())
+        ImGui::TextWrapped("%s", state.message.c_str());
 }
 } // namespace
 
-void drawPanel(Controls& controls, const WindowState& state, const PanelInfo& info, PanelState& panel)
+PixelRect drawPanel(Controls& controls, const WindowState& state, const PanelInfo& info, PanelState& panel,
+                    const PixelRect& column, float framebufferScale)
 {
     const float fontScale = state.display.fontScale;
-    ImGui::SetNextWindowPos({8.0f, 8.0f}, ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize({kPanelWidth * fontScale, 0.0f}, ImGuiCond_Always);
-    ImGui::SetNextWindowSizeConstraints({0.0f, 0.0f}, {1e6f, float(info.size.height) - 16.0f});
-    ImGui::Begin("ray-tracing-gpu", nullptr, ImGuiWindowFlags_NoSavedSettings);
+    // A fixed column: the layout keeps the image beside it, so the panel must not be moved over the image.
+    ImGui::SetNextWindowPos({float(column.x) / framebufferScale, float(column.y) / framebufferScale}, ImGuiCond_Always);
+    ImGui::SetNextWindowSize({float(column.width) / framebufferScale, float(column.height) / framebufferScale},
+                             ImGuiCond_Always);
+    ImGui::Begin("ray-tracing-gpu", nullptr,
+                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_HorizontalScrollbar);
+    const ImVec2 drawnAt = ImGui::GetWindowPos();
+    const ImVec2 drawnSize = ImGui::GetWindowSize();
     ImGui::PushItemWidth(-110.0f * fontScale); // room for the labels right of the widgets
     if (ImGui::CollapsingHeader("UI", ImGuiTreeNodeFlags_DefaultOpen))
     {
@@ -216,8 +225,8 @@ void drawPanel(Controls& controls, const WindowState& state, const PanelInfo& in
                     controls.setFont(state.fonts[i]);
             ImGui::EndCombo();
         }
-        if (float scale = fontScale; ImGui::SliderFloat("Font size", &scale, 0.5f, 3.0f, "%.2fx"))
-            controls.setFontScale(scale);
+        if (int pixels = controls.fontPixels(); ImGui::SliderInt("Font size", &pixels, kMinFontPixels, kMaxFontPixels, "%d px"))
+            controls.setFontPixels(pixels);
     }
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen))
         sceneSection(controls, state, info, panel);
@@ -230,8 +239,10 @@ void drawPanel(Controls& controls, const WindowState& state, const PanelInfo& in
     if (ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen))
         statsSection(state, info);
     if (ImGui::CollapsingHeader("Save", ImGuiTreeNodeFlags_DefaultOpen))
-        saveSection(controls, panel, info);
+        saveSection(controls, panel, state);
     ImGui::PopItemWidth();
     ImGui::End();
+    const auto pixels = [framebufferScale](float v) { return int(std::lround(v * framebufferScale)); };
+    return {pixels(drawnAt.x), pixels(drawnAt.y), pixels(drawnSize.x), pixels(drawnSize.y)};
 }
 } // namespace rt::gpu::gui

@@ -6,10 +6,11 @@
 #include <string>
 
 #include "App/Gui/Controls.h"
+#include "App/Gui/WindowLayout.h"
 
 namespace rt::gpu::gui
 {
-/// Pixels at font scale 1: the panel sits at the window's top left, 8 pixels in, over the image.
+/// The panel column's width in pixels at font scale 1 (WindowLayout.h gives it at most half the window).
 inline constexpr float kPanelWidth = 300.0f;
 
 /// What the panel shows but does not edit.
@@ -19,13 +20,13 @@ struct PanelInfo
     bool costAvailable = false; // the device has the shader clock: the profiler section exists
     std::string building; // the scene being built, empty when none
     std::string sceneError; // why the last scene build failed (the scene on screen stayed), empty when none
-    std::string message; // the last error or saved file
     double framesPerSecond = 0.0;
     double megaSamplesPerSecond = 0.0; // camera samples (paths) per second, in millions
     int accumulatedSpp = 0;
     float costMax = 0.0f; // largest ticks per sample of the last timed frame
     float costScale = 1.0f; // the palette's top in use (automatic or not)
-    Extent size;
+    Extent window; // the framebuffer
+    Extent image; // the image letterboxed in it (Stats)
 };
 
 /// What belongs to the panel alone (text being typed).
@@ -36,5 +37,8 @@ struct PanelState
     std::string loadError; // why Load refused the path
 };
 
-void drawPanel(Controls& controls, const WindowState& state, const PanelInfo& info, PanelState& panel);
+/// Draws the panel into `column` (framebuffer pixels, WindowLayout::panel); `framebufferScale` is ImGui's
+/// framebuffer pixels per window coordinate. Returns the rectangle ImGui drew it in, in framebuffer pixels.
+PixelRect drawPanel(Controls& controls, const WindowState& state, const PanelInfo& info, PanelState& panel,
+                    const PixelRect& column, float framebufferScale);
 } // namespace rt::gpu::gui

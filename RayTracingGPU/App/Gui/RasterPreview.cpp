@@ -93,15 +93,18 @@ void RasterPreview::setScene(const Scene& scene, const vk::CommandPool& pool)
     m_bounds = scene.bounds();
 }
 
-void RasterPreview::record(VkCommandBuffer cmd, const CameraDesc& camera, VkExtent2D extent, bool encodeSrgb) const
+void RasterPreview::record(VkCommandBuffer cmd, const CameraDesc& camera, const PixelRect& rect, float aspect,
+                           bool encodeSrgb) const
 {
-    const VkViewport viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, extent};
+    if (rect.empty())
+        return;
+    const VkViewport viewport{float(rect.x), float(rect.y), float(rect.width), float(rect.height), 0.0f, 1.0f};
+    const VkRect2D scissor{{rect.x, rect.y}, {std::uint32_t(rect.width), std::uint32_t(rect.height)}};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m_pipeline.Handle());
     shader::PreviewPushConstants push{};
-    push.clipFromWorld = clipFromWorld(camera, float(extent.width) / float(extent.height), m_bounds);
+    push.clipFromWorld = clipFromWorld(camera, aspect, m_bounds);
     push.eye = camera.lookFrom;
     push.encodeSrgb = encodeSrgb ? 1u : 0u;
     vkCmdPushConstants(cmd, m_layout.Handle(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 
+#include "App/Gui/WindowLayout.h"
 #include "Math/Aabb.h"
 #include "Scene/Scene.h"
 #include "Vulkan/Buffer.h"
@@ -27,8 +28,10 @@ public:
     /// Uploads `scene`'s preview geometry (waits for the upload; nothing may be drawing the previous one).
     void setScene(const Scene& scene, const vk::CommandPool& pool);
 
-    /// Records the draws inside the render pass, for a viewport of `extent`.
-    void record(VkCommandBuffer cmd, const CameraDesc& camera, VkExtent2D extent, bool encodeSrgb) const;
+    /// Records the draws inside the render pass into `rect` of the framebuffer (the image's rectangle), seen
+    /// by `camera` with the image's `aspect` (width / height). Nothing for an empty rectangle.
+    void record(VkCommandBuffer cmd, const CameraDesc& camera, const PixelRect& rect, float aspect,
+                bool encodeSrgb) const;
 
 private:
     const vk::Device* m_device;

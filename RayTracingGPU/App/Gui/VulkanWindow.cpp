@@ -14,7 +14,7 @@ std::string g_lastGlfwError;
 void onGlfwError(int, const char* description) { g_lastGlfwError = description ? description : "unknown error"; }
 } // namespace
 
-VulkanWindow::VulkanWindow(const std::string& title, Extent size)
+VulkanWindow::VulkanWindow(const std::string& title, WindowSize size, bool fitToMonitor)
 {
     glfwSetErrorCallback(onGlfwError);
     if (!glfwInit())
@@ -26,6 +26,13 @@ VulkanWindow::VulkanWindow(const std::string& title, Extent size)
         throw DeviceError("cannot open a window: GLFW finds no Vulkan loader with a surface extension for this "
                           "display; use --headless");
     }
+    if (fitToMonitor)
+        if (GLFWmonitor* monitor = glfwGetPrimaryMonitor())
+        {
+            WindowSize workArea;
+            glfwGetMonitorWorkarea(monitor, nullptr, nullptr, &workArea.width, &workArea.height);
+            size = fitWindowSize(size, workArea);
+        }
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
     m_window = glfwCreateWindow(size.width, size.height, title.c_str(), nullptr, nullptr);
     if (!m_window)

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "App/Gui/WindowState.h"
+#include "Cli/WindowSize.h"
 #include "Vulkan/Loader.h"
 
 struct GLFWwindow;
@@ -15,9 +16,11 @@ namespace rt::gpu::gui
 class VulkanWindow final
 {
 public:
-    /// Opens a window whose framebuffer is `size`. Throws rt::DeviceError when there is no display or GLFW
-    /// finds no Vulkan (the message says so and suggests --headless).
-    VulkanWindow(const std::string& title, Extent size);
+    /// Opens a window of `size` (--window-size), or, with `fitToMonitor`, of `size` cut to the primary
+    /// monitor's work area (the default size, made to fit the panel and the image, may not fit the screen).
+    /// Throws rt::DeviceError when there is no display or GLFW finds no Vulkan (the message says so and
+    /// suggests --headless).
+    VulkanWindow(const std::string& title, WindowSize size, bool fitToMonitor);
     ~VulkanWindow();
     VulkanWindow(const VulkanWindow&) = delete;
     VulkanWindow& operator=(const VulkanWindow&) = delete;

@@ -5,6 +5,8 @@
 #include <memory>
 
 #include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
 #include "App/Gui/CameraController.h"
@@ -18,8 +20,10 @@
 #include "App/Gui/VulkanWindow.h"
 #include "App/Gui/ProgressiveRenderer.h"
 #include "App/Gui/RasterPreview.h"
+#include "App/Gui/WindowLayout.h"
 #include "Engine/SceneTracer.h"
 #include "Error.h"
+#include "IO/AtomicFile.h"
 #include "Image/ImageIO.h"
 #include "SceneFile/SceneFileWatch.h"
 
@@ -55,6 +59,7 @@ public:
           m_state(options.initial), m_controls(m_state)
     {
         m_panel.savePath = options.savePath;
+        m_drawn.window = window.framebufferSize();
         m_state.costAvailable = m_renderer.costAvailable();
         m_state.fonts = m_imgui.fontNames();
         if (!options.screenshot.empty() && !m_presenter.canScreenshot())
@@ -77,6 +82,7 @@ public:
 
     std::shared_ptr<const vk::ValidationLog> validationLog() const { return m_engine.validationLog(); }
 
+    /// Runs until the window is closed or the automation is done; then writes --state-json.
     void run()
     {
         Clock::time_point last = Clock::now();
@@ -103,6 +109,8 @@ public:
             }
             drawFrame(seconds);
         }
+        if (!m_options.stateJson.empty())
+            writeStateJson();
     }
 
 private:
@@ -121,7 +129,7 @@ private:
     {
         m_engine.setScene(scene);
         m_preview.setScene(scene, m_engine.context().commandPool());
-        prepareImages(m_renderer.extent().width > 0 ? m_renderer.extent() : VkExtent2D{1, 1});
+        prepareImages(m_state.image.extent());
         m_state.image.request.scene.id = scene.id;
         m_state.sceneCamera = scene.camera;
         m_state.image.camera = scene.camera;
@@ -129,9 +137,9 @@ private:
         glfwSetWindowTitle(m_window.handle(), ("ray-tracing-gpu: " + scene.id).c_str());
     }
 
-    void prepareImages(VkExtent2D extent)
+    void prepareImages(Extent extent)
     {
-        m_renderer.prepare(extent);
+        m_renderer.prepare({static_cast<std::uint32_t>(extent.width), static_cast<std::uint32_t>(extent.height)});
         m_display.setImages(m_renderer.accumulationView(), m_renderer.costView());
         m_needsClear = true;
     }
@@ -181,12 +189,12 @@ private:
             }
             m_scene = std::move(scene);
             m_state.image.request.scene.fileVersion = m_loadingVersion;
-            m_message.clear();
+            m_state.message.clear();
             m_sceneError.clear();
         }
         catch (const Error& e)
         {
-            m_message = e.what();
+            m_state.message = e.what();
             m_sceneError = e.what();
             if (automated())
                 throw;
@@ -245,38 +253,41 @@ private:
         {
             if (!m_state.image.rayTracing)
                 throw UsageError("nothing to save: the window shows the rasterised preview; turn ray tracing on");
-            if (m_accumulatedSpp == 0)
-                throw UsageError("nothing to save yet: no sample has been traced (save after the first frame)");
+            // Before the first frame, or before the first frame of new settings (a save in the same frame as
+            // the change): the accumulation image is empty or holds the old settings' samples.
+            if (m_accumulatedSpp == 0 || !(m_state.image == m_traced))
+                throw UsageError("nothing to save yet: no frame rendered yet with the panel's settings (save after "
+                                 "the first frame)");
             m_presenter.waitIdle();
             const Image image = m_renderer.readImage();
             const std::filesystem::path pfm = writePngWithPfm(png, image);
-            m_message = "saved " + png.string() + " and " + pfm.string() + " (" + std::to_string(m_accumulatedSpp) +
-                        " spp)";
-            spdlog::info("{}", m_message);
+            m_state.message = "saved " + png.string() + " and " + pfm.string() + " (" +
+                              std::to_string(m_accumulatedSpp) + " spp)";
+            spdlog::info("{}", m_state.message);
         }
         catch (const Error& e)
         {
-            m_message = e.what();
+            m_state.message = e.what();
             if (automated())
                 throw;
             spdlog::error("{}", e.what());
         }
     }
 
-    PanelInfo panelInfo(Extent size) const
+    PanelInfo panelInfo(Extent window) const
     {
         PanelInfo info;
         info.device = m_engine.deviceName();
         info.costAvailable = m_state.costAvailable;
         info.building = m_loading.valid() ? m_loadingId : std::string();
         info.sceneError = m_sceneError;
-        info.message = m_message;
         info.framesPerSecond = m_throughput.framesPerSecond();
         info.megaSamplesPerSecond = m_throughput.samplesPerSecond() * 1e-6;
         info.accumulatedSpp = static_cast<int>(m_accumulatedSpp);
         info.costMax = m_cost.max;
         info.costScale = costScale();
-        info.size = size;
+        info.window = window;
+        info.image = m_state.image.extent();
         return info;
     }
 
@@ -285,12 +296,24 @@ private:
         return m_state.display.autoCostScale ? std::max(m_cost.high, 1.0f) : m_state.display.costScale;
     }
 
+    /// The layout of a window of `framebuffer` pixels for the panel at the current font scale.
+    WindowLayout layoutFor(Extent framebuffer) const
+    {
+        const float panelPixels = kPanelWidth * m_state.display.fontScale * framebufferScale();
+        return layoutWindow(framebuffer, static_cast<int>(panelPixels), m_state.image.extent());
+    }
+
+    /// Framebuffer pixels per window coordinate (ImGui's coordinates): 1 on X11, 2 on a Retina display.
+    static float framebufferScale() { return std::max(ImGui::GetIO().DisplayFramebufferScale.x, 1e-3f); }
+
     void drawFrame(float seconds)
     {
         const Extent size = m_window.framebufferSize();
         m_imgui.newFrame(m_state.display.darkStyle, m_state.display.font, m_state.display.fontScale);
         applyCameraInput(m_window.handle(), m_controls, m_state.cameraSpeed * seconds);
-        drawPanel(m_controls, m_state, panelInfo(size), m_panel);
+        WindowLayout layout = layoutFor(size);
+        const PixelRect panelDrawn =
+            drawPanel(m_controls, m_state, panelInfo(size), m_panel, layout.panel, framebufferScale());
 
         const std::optional<Frame> frame = m_presenter.beginFrame(size);
         if (!frame)
@@ -298,12 +321,16 @@ private:
             m_imgui.render(VK_NULL_HANDLE);
             return;
         }
-        if (frame->extent.width != m_renderer.extent().width || frame->extent.height != m_renderer.extent().height)
+        const Extent frameExtent{static_cast<int>(frame->extent.width), static_cast<int>(frame->extent.height)};
+        if (!(frameExtent == size))
+            layout.image = layoutFor(frameExtent).image; // the swapchain held to its surface's limits
+        const VkExtent2D traced = m_renderer.extent();
+        if (int(traced.width) != m_state.image.extent().width || int(traced.height) != m_state.image.extent().height)
         {
             m_presenter.waitIdle();
-            prepareImages(frame->extent);
+            prepareImages(m_state.image.extent());
         }
-        m_state.image.setSize({static_cast<int>(frame->extent.width), static_cast<int>(frame->extent.height)});
+        m_drawn = {frameExtent, panelDrawn, layout.image};
         if (const CostSummary cost = m_renderer.takeCostSummary(frame->slot); cost.max > 0.0f)
             m_cost = cost;
 
@@ -318,10 +345,11 @@ private:
             push.mode = m_state.image.heatmap ? shader::DisplayMode::Cost : shader::DisplayMode::Radiance;
             push.encodeSrgb = m_presenter.shaderEncodesSrgb() ? 1u : 0u;
             push.costScale = costScale();
-            m_display.record(cmd, frame->extent, push);
+            m_display.record(cmd, layout.image, m_state.image.extent(), push);
         }
         else
-            m_preview.record(cmd, m_state.image.camera, frame->extent, m_presenter.shaderEncodesSrgb());
+            m_preview.record(cmd, m_state.image.camera, layout.image, m_state.image.request.settings.aspect,
+                             m_presenter.shaderEncodesSrgb());
         m_imgui.render(cmd);
         m_presenter.endRenderPass(*frame);
 
@@ -367,7 +395,26 @@ private:
         // Without accumulation the indices still advance, so each frame shows new noise, not the same frame.
         m_nextSample += count;
         m_accumulatedSpp += count;
-        return std::uint64_t(count) * frame.extent.width * frame.extent.height;
+        const Extent image = m_state.image.extent();
+        return std::uint64_t(count) * std::uint64_t(image.width) * std::uint64_t(image.height);
+    }
+
+    /// --state-json: what the last frame drew where (framebuffer pixels, [x, y, width, height]), for the
+    /// window tests to check the layout against the screenshot.
+    void writeStateJson() const
+    {
+        const auto rect = [](const PixelRect& r) { return nlohmann::json::array({r.x, r.y, r.width, r.height}); };
+        const Extent image = m_state.image.extent();
+        const nlohmann::json state = {
+            {"window", {m_drawn.window.width, m_drawn.window.height}},
+            {"image_size", {image.width, image.height}},
+            {"layout", {{"panel", rect(m_drawn.panel)}, {"image", rect(m_drawn.image)}}},
+            {"ray_tracing", m_state.image.rayTracing},
+            {"accumulated_spp", m_accumulatedSpp},
+            {"samples_per_frame", m_state.display.samplesPerFrame},
+            {"font_pixels", m_controls.fontPixels()},
+            {"message", m_state.message}};
+        writeFileAtomically(m_options.stateJson, state.dump(2) + "\n");
     }
 
     void saveScreenshot()
@@ -391,12 +438,17 @@ private:
     WindowState m_state;
     Controls m_controls;
     PanelState m_panel;
+    struct Drawn
+    {
+        Extent window;
+        PixelRect panel; // as ImGui drew it
+        PixelRect image;
+    } m_drawn; // by the last frame, for --state-json
 
     std::future<Scene> m_loading;
     std::string m_loadingId;
     std::int64_t m_loadingVersion = 0;
     SceneFileWatch m_watch; // the scene file asked for last
-    std::string m_message;
     std::string m_sceneError;
     ImageSettings m_traced; // the settings of the samples in the accumulation image
     bool m_needsClear = true; // new images, or a new scene behind them
@@ -417,7 +469,10 @@ int runWindow(const WindowOptions& options, Scene scene)
 {
     std::shared_ptr<const vk::ValidationLog> log;
     {
-        VulkanWindow window("ray-tracing-gpu", options.initial.image.size);
+        const bool defaultSize = !options.windowSize;
+        const WindowSize size = defaultSize ? defaultWindowSize(options.initial.image.extent(), int(kPanelWidth))
+                                            : *options.windowSize;
+        VulkanWindow window("ray-tracing-gpu", size, defaultSize);
         WindowApp app(options, window, std::move(scene));
         log = app.validationLog();
         app.run();

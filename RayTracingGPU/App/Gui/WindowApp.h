@@ -3,8 +3,9 @@
 //
 // A frame: wait for its slot, acquire a swapchain image; with ray tracing on, clear the accumulation image if
 // the image settings changed (or every frame without accumulation) and trace a few samples per pixel into it;
-// then one render pass: the display pass (radiance or heatmap) or the rasterised preview, and the panel;
-// present. Scenes are built on a worker thread while the old one stays on screen; only the upload and the
+// then one render pass: the display pass (radiance or heatmap) or the rasterised preview, letterboxed beside
+// the panel's column (WindowLayout.h), and the panel; present. The image has the settings' size, whatever the
+// window's. Scenes are built on a worker thread while the old one stays on screen; only the upload and the
 // acceleration-structure build wait for the device.
 #pragma once
 
@@ -15,6 +16,7 @@
 
 #include "App/Gui/Actions.h"
 #include "App/Gui/WindowState.h"
+#include "Cli/WindowSize.h"
 #include "Engine/GpuEngine.h"
 #include "Scenes/Catalogue.h"
 
@@ -22,11 +24,13 @@ namespace rt::gpu::gui
 {
 struct WindowOptions
 {
-    WindowState initial; // settings from the command line; image.request names `scene`, image.size the window's
+    WindowState initial; // settings from the command line; image.request names `scene` and the image's size
+    std::optional<WindowSize> windowSize; // --window-size; none: the panel and the image side by side, 1:1
     std::optional<int> deviceIndex;
     bool validation = false;
     std::optional<int> frames; // run this many frames after the actions, then stop
     std::filesystem::path screenshot; // with frames: what the window shows in the last frame, as PNG
+    std::filesystem::path stateJson; // at exit: the window's and the image's sizes, the layout drawn, the message
     std::vector<Action> actions;
     std::string savePath; // the panel's initial file name for Save image
 };

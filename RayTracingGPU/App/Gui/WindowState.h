@@ -16,7 +16,7 @@ namespace rt::gpu::gui
 {
 struct Extent
 {
-    int width = 0; // pixels of the window's framebuffer, which is the image's size
+    int width = 0; // pixels: of the window's framebuffer, or of the ray-traced image
     int height = 0;
 
     bool operator==(const Extent&) const = default;
@@ -24,29 +24,20 @@ struct Extent
 
 struct ImageSettings
 {
-    /// The scene on the device (id and options) and the settings of its samples: depth, estimator, emitter
-    /// sidedness, seed. The window traces progressively (sampling: accumulate) and its image is the
-    /// framebuffer: width and aspect follow `size` (withSize); the samples to stop at are DisplaySettings'.
+    /// The scene on the device (id and options) and the settings of its samples: size, depth, estimator,
+    /// emitter sidedness, seed. The window traces progressively (sampling: accumulate); the samples to stop at
+    /// are DisplaySettings'. The image keeps its size whatever the window's: the window letterboxes it
+    /// (WindowLayout.h).
     RenderRequest request;
     CameraDesc camera; // the interactive camera: the scene's, moved, turned and zoomed
-    Extent size;
     bool rayTracing = true; // off: the rasterised preview
     bool accumulate = true; // off: every frame starts a new image of samplesPerFrame samples
     bool heatmap = false; // cost per pixel instead of radiance (needs the shader clock)
 
     bool operator==(const ImageSettings&) const = default;
 
-    /// These settings for an image of `extent`: size, and the request's width and aspect (a 0 x 0 window
-    /// keeps the request's).
-    void setSize(Extent extent)
-    {
-        size = extent;
-        if (extent.width > 0 && extent.height > 0)
-        {
-            request.settings.width = extent.width;
-            request.settings.aspect = float(extent.width) / float(extent.height);
-        }
-    }
+    /// The image's size in pixels: the request's width and height.
+    Extent extent() const { return {request.settings.width, request.settings.height()}; }
 };
 
 /// Pixel height of the panel's fonts at fontScale 1: WindowState::fonts[0] is ImGui's own, the others are
@@ -77,5 +68,7 @@ struct WindowState
     std::optional<std::string> sceneRequest; // to be built, then shown
     std::optional<std::filesystem::path> saveRequest; // PNG path; the PFM goes beside it
     std::optional<Extent> resizeRequest; // 0 x 0: minimised
+    /// The panel's last line for the user: an error, a saved file, a value held to its limit. Empty: none.
+    std::string message;
 };
 } // namespace rt::gpu::gui

@@ -4,6 +4,7 @@
 
 #include "App/Gui/Actions.h"
 #include "App/Gui/CameraController.h"
+#include "Cli/ActionGrammar.h"
 #include "Error.h"
 #include "Scenes/Catalogue.h"
 
@@ -54,6 +55,67 @@ TEST(WindowActions, BadNamesAndValuesAreUsageErrorsNamingThem)
             EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
         }
     }
+}
+
+TEST(WindowActions, ValuesOutOfRangeAreRefusedNamingTheLimit)
+{
+    // Issue 13 item 7: samples=1000 was capped to 256 and a font size out of range taken without a word.
+    const auto error = [](const std::string& script) {
+        try
+        {
+            parseActions(script);
+        }
+        catch (const UsageError& e)
+        {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    EXPECT_NE(error("samples=1000").find("[1, 256]"), std::string::npos) << error("samples=1000");
+    EXPECT_NE(error("samples=257").find("[1, 256]"), std::string::npos);
+    EXPECT_NE(error("font-size=9").find("[10, 32]"), std::string::npos) << error("font-size=9");
+    EXPECT_NE(error("font-size=33").find("[10, 32]"), std::string::npos);
+    for (const char* name : {"save=x.jpg", "save=x.PNG", "save=x", "save=.png", "save=x.pfm"})
+        EXPECT_NE(error(name).find("FILE.png"), std::string::npos) << name << ": " << error(name);
+    EXPECT_EQ(error("samples=256;font-size=10;font-size=32;save=x.png"), "accepted");
+}
+
+TEST(WindowControls, ValuesHeldToTheirLimitsSaySoNamingTheLimit)
+{
+    // The panel's sliders take any number typed into them (Ctrl+click): Controls holds it and says so.
+    WindowState state = cornellState();
+    Controls controls(state);
+    controls.setSamplesPerFrame(1000);
+    EXPECT_EQ(state.display.samplesPerFrame, kMaxSamplesPerFrame);
+    EXPECT_NE(state.message.find("samples per frame 1000"), std::string::npos) << state.message;
+    EXPECT_NE(state.message.find("largest allowed, 256"), std::string::npos) << state.message;
+    state.message.clear();
+    controls.setSamplesPerFrame(64);
+    EXPECT_EQ(state.display.samplesPerFrame, 64);
+    EXPECT_TRUE(state.message.empty()) << "a value in range says nothing";
+    controls.setFontPixels(4);
+    EXPECT_EQ(controls.fontPixels(), kMinFontPixels);
+    EXPECT_NE(state.message.find("smallest allowed, 10 px"), std::string::npos) << state.message;
+    controls.setFontPixels(100);
+    EXPECT_EQ(controls.fontPixels(), kMaxFontPixels);
+    EXPECT_NE(state.message.find("largest allowed, 32 px"), std::string::npos) << state.message;
+    controls.setDepth(0);
+    EXPECT_EQ(state.image.request.settings.depth, 1);
+    EXPECT_NE(state.message.find("depth 0"), std::string::npos) << state.message;
+}
+
+TEST(WindowControls, SaveRefusesNamesItWouldNotWriteAsNamed)
+{
+    // Issue 13 item 7: the panel's file box took x.jpg and wrote PNG bytes under that name.
+    WindowState state = cornellState();
+    Controls controls(state);
+    EXPECT_FALSE(controls.save("x.jpg"));
+    EXPECT_FALSE(state.saveRequest);
+    EXPECT_NE(state.message.find("'x.jpg' is not saved"), std::string::npos) << state.message;
+    EXPECT_NE(state.message.find("must end in .png (not .jpg)"), std::string::npos) << state.message;
+    EXPECT_FALSE(controls.save("noextension"));
+    EXPECT_TRUE(controls.save("dir/x.png"));
+    EXPECT_EQ(state.saveRequest, std::filesystem::path("dir/x.png"));
 }
 
 TEST(WindowActions, EachActionChangesItsSetting)

@@ -6,9 +6,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <regex>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -16,6 +18,9 @@
 
 #ifndef _WIN32 // the app runs through a POSIX shell (Support/AppProcess.h)
 
+#include <nlohmann/json.hpp>
+
+#include "App/Gui/WindowLayout.h"
 #include "Image/ImageIO.h"
 #include "Support/AppProcess.h"
 #include "Support/ScratchDir.h"
@@ -123,36 +128,129 @@ Region region(const Screenshot& s, int x0, int y0, int x1, int y1)
     return r;
 }
 
-// 640 x 400 windows: the panel covers x in [8, 308) (kPanelWidth), the image shows right of it.
-constexpr const char* kWindow = "--width 640 --aspect 1.6 --validation ";
-const int kPanel[4] = {16, 40, 300, 380};
-const int kImage[4] = {320, 10, 630, 390};
-
-Region panelOf(const Screenshot& s) { return region(s, kPanel[0], kPanel[1], kPanel[2], kPanel[3]); }
-Region imageOf(const Screenshot& s) { return region(s, kImage[0], kImage[1], kImage[2], kImage[3]); }
-
-void expectPanel(const Screenshot& s)
+/// What --state-json says the last frame drew where (framebuffer pixels).
+struct Layout
 {
-    const Region panel = panelOf(s);
+    Extent window;
+    Extent image; // the image's own size
+    PixelRect panel;
+    PixelRect imageRect; // where it was drawn
+    std::string message;
+
+    explicit Layout(const std::filesystem::path& json)
+    {
+        std::ifstream in(json);
+        const nlohmann::json state = nlohmann::json::parse(in);
+        const auto rect = [](const nlohmann::json& r) { return PixelRect{r[0], r[1], r[2], r[3]}; };
+        window = {state["window"][0], state["window"][1]};
+        image = {state["image_size"][0], state["image_size"][1]};
+        panel = rect(state["layout"]["panel"]);
+        imageRect = rect(state["layout"]["image"]);
+        message = state["message"];
+    }
+};
+
+// A 640 x 400 image: the default window holds the panel (kPanelWidth) and the image side by side.
+constexpr const char* kWindow = "--width 640 --aspect 1.6 --validation ";
+
+/// The panel below its title bar, and the image a few pixels in from its edges (nearest-neighbour edges).
+Region panelOf(const Screenshot& s, const Layout& l)
+{
+    return region(s, l.panel.x + 8, l.panel.y + 30, l.panel.x + l.panel.width - 8, l.panel.y + l.panel.height - 8);
+}
+Region imageOf(const Screenshot& s, const Layout& l)
+{
+    const PixelRect& r = l.imageRect;
+    return region(s, r.x + 2, r.y + 2, r.x + r.width - 2, r.y + r.height - 2);
+}
+
+void expectPanel(const Screenshot& s, const Layout& l)
+{
+    const Region panel = panelOf(s, l);
     EXPECT_GT(panel.distinctColors, 8u) << "text, widgets and frames";
     EXPECT_GT(panel.stddevLuma, 10.0);
+}
+
+/// The panel a full-height column at the left, the image beside it, inside the window, its aspect kept.
+void expectLetterboxed(const Layout& l)
+{
+    EXPECT_EQ(l.panel.x, 0);
+    EXPECT_EQ(l.panel.y, 0);
+    EXPECT_EQ(l.panel.height, l.window.height);
+    ASSERT_FALSE(l.imageRect.empty());
+    EXPECT_FALSE(overlaps(l.panel, l.imageRect)) << "the image is under the panel";
+    EXPECT_GE(l.imageRect.x, l.panel.x + l.panel.width);
+    EXPECT_LE(l.imageRect.x + l.imageRect.width, l.window.width);
+    EXPECT_LE(l.imageRect.y + l.imageRect.height, l.window.height);
+    EXPECT_NEAR(double(l.imageRect.width) / l.imageRect.height, double(l.image.width) / l.image.height,
+                2.0 / l.imageRect.height);
+}
+
+std::string stateJsonArgument(const ::rt::test::ScratchDir& dir)
+{
+    return " --state-json '" + (dir / "state.json").string() + "'";
 }
 
 TEST(GpuWindow, ScreenshotShowsPanelAndRayTracedImage)
 {
     const ::rt::test::ScratchDir dir;
     RT_RUN_WINDOW(run, std::string(kWindow) + "--scene cornell-box-lights --frames 8 --screenshot '" +
-                           (dir / "shot.png").string() + "'");
+                           (dir / "shot.png").string() + "'" + stateJsonArgument(dir));
     const Screenshot s(dir / "shot.png");
+    const Layout layout(dir / "state.json");
     keep(dir / "shot.png");
-    ASSERT_EQ(s.width, 640);
-    ASSERT_EQ(s.height, 400);
-    expectPanel(s);
-    const Region image = imageOf(s);
+    EXPECT_EQ(layout.window, (Extent{956, 600})) << "the panel and the 640 x 400 image side by side, 1:1";
+    ASSERT_EQ(s.width, layout.window.width);
+    ASSERT_EQ(s.height, layout.window.height);
+    expectLetterboxed(layout);
+    EXPECT_EQ(layout.imageRect.width, 640);
+    expectPanel(s, layout);
+    const Region image = imageOf(s, layout);
     EXPECT_GT(image.meanLuma, 20.0) << "not blank";
     EXPECT_GT(image.stddevLuma, 20.0);
     EXPECT_GT(image.redFraction, 0.03) << "the red wall of the Cornell box";
     EXPECT_LT(image.paletteFraction, 0.5) << "radiance, not the heatmap";
+}
+
+TEST(GpuWindow, PanelIsAColumnAndTheImageIsLetterboxedBesideIt)
+{
+    // Issue 13 item 7: the window was the image's size, so at 120 x 120 the panel covered the image and at
+    // 600 x 600 it hid half of it. Now: a small image in the default window, a large one in a small window.
+    const ::rt::test::ScratchDir dir;
+    for (const auto& [name, arguments, magnified] :
+         {std::tuple{"small", std::string("--width 120"), true},
+          std::tuple{"large", std::string("--width 600 --window-size 640x400"), false}})
+    {
+        SCOPED_TRACE(name);
+        const std::filesystem::path shot = dir / (std::string(name) + ".png");
+        RT_RUN_WINDOW(run, "--validation --scene cornell-box-lights " + arguments + " --frames 4 --screenshot '" +
+                               shot.string() + "'" + stateJsonArgument(dir));
+        const Screenshot s(shot);
+        const Layout layout(dir / "state.json");
+        keep(shot);
+        ASSERT_EQ(s.width, layout.window.width);
+        ASSERT_EQ(s.height, layout.window.height);
+        expectLetterboxed(layout);
+        if (magnified)
+            EXPECT_GT(layout.imageRect.width, 120) << "a small image fills the space beside the panel";
+        else
+            EXPECT_EQ(layout.window, (Extent{640, 400}));
+        expectPanel(s, layout);
+        const Region image = imageOf(s, layout);
+        EXPECT_GT(image.meanLuma, 20.0) << "the image is drawn where the layout says";
+        EXPECT_GT(image.redFraction, 0.03) << "the red wall of the Cornell box";
+        // The bars beside the letterboxed image are the cleared background, not the image.
+        const PixelRect& r = layout.imageRect;
+        const int barLeft = layout.panel.width + 1;
+        if (r.x - barLeft >= 4)
+        {
+            EXPECT_LT(region(s, barLeft, 0, r.x - 1, s.height).meanLuma, 5.0) << "left bar";
+        }
+        if (r.y >= 4)
+        {
+            EXPECT_LT(region(s, r.x, 0, r.x + r.width, r.y - 1).meanLuma, 5.0) << "top bar";
+        }
+    }
 }
 
 TEST(GpuWindow, SavingWithNothingToSaveSaysWhyAndWritesNothing)
@@ -165,7 +263,7 @@ TEST(GpuWindow, SavingWithNothingToSaveSaysWhyAndWritesNothing)
     if (const std::string why = unavailable(early); !why.empty())
         GTEST_SKIP() << "no display-capable Vulkan device: " << why;
     EXPECT_NE(early.status, 0);
-    EXPECT_NE(early.output.find("no sample has been traced"), std::string::npos) << early.output;
+    EXPECT_NE(early.output.find("no frame rendered yet"), std::string::npos) << early.output;
     EXPECT_EQ(early.output.find("turn ray tracing on"), std::string::npos) << early.output;
     const AppRun preview =
         runApp(std::string(kWindow) + "--scene rtow-camera-test --frames 1 --actions 'raytracing=off;save=" + png + "'");
@@ -178,11 +276,13 @@ TEST(GpuWindow, RasterPreviewShowsTheSameSceneFromTheSameCamera)
 {
     const ::rt::test::ScratchDir dir;
     RT_RUN_WINDOW(run, std::string(kWindow) + "--scene cornell-box-lights --raytracing off --frames 2 --screenshot '" +
-                           (dir / "preview.png").string() + "'");
+                           (dir / "preview.png").string() + "'" + stateJsonArgument(dir));
     const Screenshot s(dir / "preview.png");
+    const Layout layout(dir / "state.json");
     keep(dir / "preview.png");
-    expectPanel(s);
-    const Region image = imageOf(s);
+    expectLetterboxed(layout);
+    expectPanel(s, layout);
+    const Region image = imageOf(s, layout);
     EXPECT_GT(image.meanLuma, 20.0);
     EXPECT_GT(image.redFraction, 0.03) << "the red wall, where the ray tracer shows it";
     EXPECT_LT(image.distinctColors, 2000u) << "flat shading, no noise";
@@ -192,13 +292,14 @@ TEST(GpuWindow, HeatmapShowsCostPerPixel)
 {
     const ::rt::test::ScratchDir dir;
     RT_RUN_WINDOW(run, std::string(kWindow) + "--scene cornell-box-lights --heatmap on --frames 4 --screenshot '" +
-                           (dir / "heatmap.png").string() + "'");
+                           (dir / "heatmap.png").string() + "'" + stateJsonArgument(dir));
     if (run.output.find("no VK_KHR_shader_clock") != std::string::npos)
         GTEST_SKIP() << "the device has no shader clock: the heatmap is hidden, as it should be";
     const Screenshot s(dir / "heatmap.png");
+    const Layout layout(dir / "state.json");
     keep(dir / "heatmap.png");
-    expectPanel(s);
-    const Region image = imageOf(s);
+    expectPanel(s, layout);
+    const Region image = imageOf(s, layout);
     EXPECT_GT(image.paletteFraction, 0.9) << "heatmap colours only";
     EXPECT_GT(image.distinctColors, 4u) << "cost varies over the image";
 }
