@@ -93,7 +93,11 @@ PipelineSpecialization PipelineSpecialization::of(Specialize specialize, const R
     {
     case Specialize::Off: return general();
     case Specialize::Strategy: return strategyOf(u);
-    case Specialize::Full: return of(u, sceneFeatures);
+    case Specialize::Full:
+        // Measured on the H100 (docs/PERFORMANCE.md §4.3): with any explicit feature mask, even one with every
+        // bit set, book 3's mixture renders cornell-box-lights 1.23-1.32x slower than with the mask left
+        // dynamic, while NEE + MIS renders it 1.46x faster. So the mixture keys on its strategy alone.
+        return u.estimator == Estimator::Mixture ? strategyOf(u) : of(u, sceneFeatures);
     }
     return general();
 }

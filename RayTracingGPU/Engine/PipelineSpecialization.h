@@ -27,7 +27,7 @@ enum class Specialize
 {
     Off, // the general pipeline for every render
     Strategy, // the render's estimator, light sampler, light selection and pixel sampling; every feature
-    Full // the strategy and the scene's features (the default)
+    Full // the strategy and the scene's features (the default); the mixture's strategy alone (measured faster)
 };
 
 /// "off", "strategy", "on".
