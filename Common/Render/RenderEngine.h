@@ -68,7 +68,7 @@ public:
     /// documentation names its stages); empty where the engine has none to tell.
     virtual std::map<std::string, double> stageSeconds() const { return {}; }
     /// What the last frame ran on, in words, where an engine has variants (the GPU engine: the specialisation
-    /// of its pipeline); empty otherwise.
+    /// of its pipeline; the CPU engine: its path loop); empty otherwise.
     virtual std::string frameConfiguration() const { return {}; }
 };
 } // namespace rt

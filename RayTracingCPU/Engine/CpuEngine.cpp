@@ -74,7 +74,14 @@ void CpuEngine::beginFrame(const RenderSettings& settings)
                           .rowStates = std::vector<RowState>(height),
                           .rowIndices = std::vector<int>(height)});
     std::iota(m_frame->rowIndices.begin(), m_frame->rowIndices.end(), 0);
-    spdlog::info("CPU path loop: {} (scene: {})", m_frame->variant.describe(), m_features.describe());
+    spdlog::debug("CPU {}", frameConfiguration());
+}
+
+std::string CpuEngine::frameConfiguration() const
+{
+    if (!m_frame)
+        return {};
+    return fmt::format("path loop: {} (scene: {})", m_frame->variant.describe(), m_features.describe());
 }
 
 BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control)

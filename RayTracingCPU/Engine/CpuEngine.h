@@ -42,7 +42,10 @@ public:
     BatchResult traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control) override;
     Image estimate(std::uint32_t samples) override;
     SampleTally tally() const override;
-    /// The path loop the current frame runs ("general" or what it is specialised for); empty before beginFrame.
+    /// The path loop the current frame runs ("path loop: general" or what it is specialised for, and the
+    /// scene's features); empty before beginFrame. --stats' frame_configuration.
+    std::string frameConfiguration() const override;
+    /// The path loop alone: "general" or e.g. "nee-mis, no media, solid colours only".
     std::string pathVariant() const { return m_frame ? m_frame->variant.describe() : std::string(); }
 
 private:

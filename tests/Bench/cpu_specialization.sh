@@ -27,7 +27,7 @@ for scene in "${scenes[@]}"; do
             best[$mode]=$(python3 -c "print(min(float('$s'), float('${best[$mode]:-inf}')))")
         done
     done
-    loop=$(sed -n 's/.*CPU path loop: \(.*\) (scene:.*/\1/p' "$out/$scene-on.log" | head -1)
+    loop=$(python3 -c "import json, re; c = json.load(open('$out/$scene-on.json'))['frame_configuration']; print(re.sub(r'^path loop: (.*) \(scene:.*', r'\1', c))")
     same=$(cmp -s "$out/$scene-on.pfm" "$out/$scene-off.pfm" && echo yes || echo NO)
     python3 -c "print(f'| $scene | {${best[off]}:.3f} | {${best[on]}:.3f} | {${best[off]} / ${best[on]}:.2f}x | $loop | $same |')"
     unset best

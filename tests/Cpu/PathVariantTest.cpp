@@ -62,6 +62,14 @@ TEST(CpuPathVariants, TheChoiceFollowsTheScenesFeaturesAndTheEstimator)
     EXPECT_FALSE(earth.code.media);
     EXPECT_NE(earth.trace, v.trace);
 
+    // --stats says which loop ran (frame_configuration).
+    const Scene earthScene = makeScene("rtnw-earth"); // the engine keeps a pointer to it
+    cpu::CpuEngine engine(EngineKind::Single);
+    engine.setScene(earthScene);
+    RenderControl control;
+    const RenderResult r = renderWithSettings(engine, smallSettings(8, 1, 4, Estimator::Mixture), control);
+    EXPECT_EQ(r.stats.frameConfiguration, "path loop: mixture, no media, textures (scene: spheres lambertian image-textures)");
+
     const cpu::PathVariant general = cpu::choosePathVariant(smoke, Estimator::Nee, false);
     EXPECT_TRUE(general.code.general);
     EXPECT_EQ(general.describe(), "general");
