@@ -19,6 +19,13 @@ done | sort -u | grep -vE '/(libc|libm|libdl|libpthread|librt|libstdc\+\+|libgcc
 cp /usr/lib/x86_64-linux-gnu/libVkLayer_khronos_validation.so .devcarry/layers/
 sed 's|"library_path": "[^"]*"|"library_path": "./libVkLayer_khronos_validation.so"|' \
     /usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json >.devcarry/layers/VkLayer_khronos_validation.json
+# A baseline build for tests/Bench/gpu_ab.sh (device_run.sh ab): BASELINE_BIN, a bin folder of another build
+# (its ray-tracing-gpu, shaders and assets; the same shared libraries).
+if [ -n "${BASELINE_BIN:-}" ]; then
+    mkdir -p .devcarry/baseline
+    cp -rL "$BASELINE_BIN/ray-tracing-gpu" "$BASELINE_BIN/shaders" "$BASELINE_BIN/Assets" .devcarry/baseline/
+    strip .devcarry/baseline/ray-tracing-gpu
+fi
 # The glTF models tests/Cli/scene_files.sh renders (Debian's assimp-testmodels; the host has none).
 mkdir -p .devcarry/gltf
 for m in BoxTextured-glTF BoxTextured-glTF-Binary cameras; do

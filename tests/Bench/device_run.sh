@@ -10,6 +10,8 @@
 #   tests/Bench/device_run.sh specialization  issue 11: every scene with the general, strategy-only and
 #                                      strategy + features pipelines (600 px, 256 spp; SPEC_WIDTH, SPEC_SPP,
 #                                      ROUNDS), then the figure: cornell-box-lights 600x600, 1000 spp, mixture
+#   tests/Bench/device_run.sh ab [RENDERS_FILE]  the baseline build (.devcarry/baseline, BASELINE_BIN of
+#                                      device_carry.sh) against this one, render by render (gpu_ab.sh)
 set -u
 mode=${1:-tests}
 out=${OUT:-/tmp/out}
@@ -63,5 +65,9 @@ specialization)
     cp "$work"/*.json "$out/specialization/"
     ROUNDS=3 bash tests/Bench/specialization_figure.sh "$bin" "$work/figure" | tee "$out/figure.txt"
     cp "$work"/figure/*.json "$out/specialization/"
+    ;;
+ab)
+    ROUNDS=${ROUNDS:-3} bash tests/Bench/gpu_ab.sh .devcarry/baseline "$bin" /tmp/ab ${2:-} | tee "$out/ab.txt"
+    cp /tmp/ab/*.json "$out/" 2>/dev/null
     ;;
 esac

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Two builds of ray-tracing-gpu side by side in one run: each render of the list with build A, then build B,
+# for ROUNDS rounds (alternating, so that a drift of the machine hits both), then per render the fastest GPU
+# time (`gpu_seconds` of --stats) of each, their ratio A/B, and the relMSE between the two images (round-off
+# when B changes only the speed).
+#   tests/Bench/gpu_ab.sh A_BIN_DIR B_BIN_DIR OUT_DIR [RENDERS_FILE]
+# RENDERS_FILE: one render per line, "NAME ARGS..." (ray-tracing-gpu flags after --headless); `#` comments.
+# Without it, issue 11's figure and issue 9's defaults (below). ROUNDS (default 3).
+set -eu
+a=$1 b=$2 out=$3 renders=${4:-}
+rounds=${ROUNDS:-3}
+mkdir -p "$out"
+if [ -z "$renders" ]; then
+    renders=$out/renders.txt
+    cat >"$renders" <<'EOF'
+cbl-mixture --scene cornell-box-lights --width 600 --spp 1000 --estimator mixture
+cbl-defaults --scene cornell-box-lights --width 600 --spp 1000
+glass-mixture --scene rtrol-cornell-glass --width 600 --spp 1000
+many-lights-bvh --scene many-lights --width 600 --spp 256
+many-lights-uniform --scene many-lights --width 600 --spp 256 --light-selection uniform
+EOF
+fi
+grep -v '^\s*\(#\|$\)' "$renders" | while read -r name args; do
+    for ((r = 1; r <= rounds; ++r)); do
+        for side in a b; do
+            dir=$a
+            [ "$side" = b ] && dir=$b
+            # shellcheck disable=SC2086 # the render's flags split on spaces
+            "$dir/ray-tracing-gpu" --headless --quiet $args --hdr "$out/$name-$side.pfm" \
+                --stats "$out/$name-$side-$r.json" >/dev/null
+        done
+    done
+    python3 - "$out" "$name" "$rounds" <<'PY'
+import json, sys
+out, name, rounds = sys.argv[1], sys.argv[2], int(sys.argv[3])
+best = {s: min(json.load(open(f"{out}/{name}-{s}-{r}.json"))["gpu_seconds"] * 1e3 for r in range(1, rounds + 1))
+        for s in "ab"}
+print(f"{name:>22}: A {best['a']:9.1f} ms  B {best['b']:9.1f} ms  A/B {best['a'] / best['b']:.2f}x", end="")
+PY
+    echo "  relMSE $(python3 "$(dirname "$0")/pfm_relmse.py" "$out/$name-b.pfm" "$out/$name-a.pfm")"
+done
