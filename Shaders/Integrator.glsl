@@ -57,12 +57,14 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
         if (m.emissionTexture != kNoIndex && (uniforms.unidirectionalLight == 0u || hit.frontFace))
         {
             float weight = 1.0;
-            if (previousBsdfPdf > 0.0 && payload.light != kNoIndex)
-                weight = mis ? powerHeuristic(previousBsdfPdf, lightSelectionPmf(settingLightSelection(), payload.light,
+            uint light = previousBsdfPdf > 0.0 && payload.lightSlot != kNoIndex ? primitiveLights[payload.lightSlot]
+                                                                                : kNoIndex;
+            if (light != kNoIndex)
+                weight = mis ? powerHeuristic(previousBsdfPdf, lightSelectionPmf(settingLightSelection(), light,
                                                                                  uniforms.emitterCount, previousPoint,
                                                                                  previousNormal,
                                                                                  uniforms.unidirectionalLight == 0u) *
-                                                                   lightPdf(lights[payload.light],
+                                                                   lightPdf(lights[light],
                                                                             settingLightSampler(), previousPoint,
                                                                             previousNormal, normalize(direction)))
                              : 0.0;

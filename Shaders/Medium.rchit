@@ -17,7 +17,7 @@ void main()
     payload.normal = vec3(1.0, 0.0, 0.0); // arbitrary: a medium has no surface
     payload.uv = vec2(0.0);
     payload.material = medium.phaseMaterial;
-    payload.light = kNoIndex;
+    payload.lightSlot = kNoIndex;
     payload.flags = kHitMedium;
     payload.offsetScale = 1.0; // unused: a scattering event inside a medium is not offset
 }

@@ -14,7 +14,7 @@ struct HitPayload
     vec2 uv;
     float offsetScale; // offsetRayOrigin's scale: the largest |vertex coordinate| of a triangle, else 1
     vec3 background; // radiance of the background on a miss
-    uint light; // index into LightData[] when the hit primitive is a light, else kNoIndex
+    uint lightSlot; // primitiveLightSlot of the hit primitive: primitiveLights[lightSlot] is its light, if any
 };
 
 #endif

@@ -25,7 +25,7 @@ void main()
     payload.normal = normalize(q * mat3(gl_WorldToObjectEXT));
     payload.uv = sphereUv(q);
     payload.material = sphere.material;
-    payload.light = primitiveLight(record, uint(gl_PrimitiveID));
+    payload.lightSlot = primitiveLightSlot(record, uint(gl_PrimitiveID));
     payload.flags = 0u;
     payload.offsetScale = 1.0; // our own sphere test: its error scales with p (RayOffset.glsl)
 }

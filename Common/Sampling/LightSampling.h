@@ -18,6 +18,16 @@ using shader::LightSample;
 using shader::lightPdf;
 using shader::sampleLight;
 
+/// Sets the lengths of a quad or triangle light that planarHit's slack reads (LightData::p0Length and the
+/// duals'), from its p0, dualU and dualV; call it after setting or changing those.
+inline void setPlanarSlackLengths(LightData& l)
+{
+    l.p0Length = glm::length(l.p0);
+    l.dualULength = glm::length(l.dualU);
+    l.dualVLength = glm::length(l.dualV);
+    l.dualSumLength = glm::length(l.dualU + l.dualV);
+}
+
 /// A quad light: the parallelogram q + a u + b v (a, b in [0, 1]), front along u x v.
 inline LightData makeQuadLight(const vec3& q, const vec3& u, const vec3& v, std::uint32_t material)
 {
@@ -33,6 +43,7 @@ inline LightData makeQuadLight(const vec3& q, const vec3& u, const vec3& v, std:
     const PlaneDuals duals = planeDuals(u, v);
     l.dualU = duals.ua;
     l.dualV = duals.vb;
+    setPlanarSlackLengths(l);
     return l;
 }
 

@@ -177,6 +177,13 @@ struct LightData
     // kept here so a pdf evaluation needs no cross product.
     vec3 dualU;
     vec3 dualV;
+    // Quad / Triangle: |p0|, |dualU|, |dualV| and |dualU + dualV|, the lengths planarHit's rounding slack
+    // scales with, computed once (setPlanarSlackLengths) instead of by every pdf evaluation that misses the
+    // light: they were a tenth of the H100's time of book 3's mixture on cornell-box-lights.
+    float p0Length;
+    float dualULength;
+    float dualVLength;
+    float dualSumLength;
 };
 
 // Perlin noise tables (RTTNW §5): 256 random unit gradients and three permutations of 0..255, generated
@@ -311,10 +318,12 @@ struct TracePushConstants
 
 /// What the shaders need to find one TLAS instance's geometry, at instanceCustomIndex in InstanceRecord[].
 /// Indices are into the global arrays of the bindings above; kNoIndex where the instance has none.
+RT_CONST(uint, kQuadUvs, 0xFFFFFFFEu) // InstanceRecord::firstUv of quads: no uv buffer (Shared/QuadUv.h)
+
 struct InstanceRecord
 {
     uint firstVertex; // triangles: first vertex (positions, and uvs when firstUv != kNoIndex)
-    uint firstUv; // triangles: first vertex uv, or kNoIndex: the uv is the barycentrics (b1, b2)
+    uint firstUv; // triangles: first vertex uv; kNoIndex: the uv is the barycentrics (b1, b2); kQuadUvs: quadUv
     uint firstTriangle; // triangles: gl_PrimitiveID 0 is this triangle
     uint firstTriangleMaterial; // triangles: per-triangle materials start here, or kNoIndex: use `material`
     uint material; // triangles: material of every triangle without a per-triangle one
@@ -426,7 +435,7 @@ static_assert(sizeof(PreviewPushConstants) == 80 && offsetof(PreviewPushConstant
 static_assert(sizeof(PerlinData) == 256 * 12 + 3 * 256 * 4);
 static_assert(sizeof(TextureData) == 40);
 static_assert(sizeof(MaterialData) == 32);
-static_assert(sizeof(LightData) == 88);
+static_assert(sizeof(LightData) == 104);
 static_assert(sizeof(AliasEntry) == 12);
 static_assert(offsetof(LightData, p0) == 16);
 static_assert(offsetof(TextureData, color0) == 16);

@@ -144,7 +144,7 @@ private:
     }
 
     /// Quad Q + a u + b v as triangles (Q, Q+u, Q+u+v) and (Q, Q+u+v, Q+v): both face along u x v, and the
-    /// vertex uvs (a, b) interpolate to the quad's edge coordinates.
+    /// hit shader computes the quad's edge coordinates (a, b) from the triangle's parity (Shared/QuadUv.h).
     Part quadPart(const GroupDesc& group)
     {
         BlasDesc blas{.kind = BlasDesc::Kind::Triangles,
@@ -152,14 +152,13 @@ private:
                       .firstTriangle = u32(m_out.triangles.size())};
         InstanceRecord record = emptyRecord();
         record.firstVertex = blas.firstVertex;
-        record.firstUv = u32(m_out.uvs.size());
+        record.firstUv = shader::kQuadUvs;
         record.firstTriangle = blas.firstTriangle;
         record.firstTriangleMaterial = u32(m_out.triangleMaterials.size());
         for (const QuadDesc& q : group.quads)
         {
             const std::uint32_t base = u32(m_out.positions.size()) - blas.firstVertex;
             m_out.positions.insert(m_out.positions.end(), {q.q, q.q + q.u, q.q + q.u + q.v, q.q + q.v});
-            m_out.uvs.insert(m_out.uvs.end(), {vec2(0, 0), vec2(1, 0), vec2(1, 1), vec2(0, 1)});
             m_out.triangles.push_back({base, base + 1, base + 2});
             m_out.triangles.push_back({base, base + 2, base + 3});
             m_out.triangleMaterials.insert(m_out.triangleMaterials.end(), {q.material, q.material});

@@ -4,7 +4,9 @@
 # time (`gpu_seconds` of --stats) of each, their ratio A/B, and the relMSE between the two images (round-off
 # when B changes only the speed).
 #   tests/Bench/gpu_ab.sh A_BIN_DIR B_BIN_DIR OUT_DIR [RENDERS_FILE]
-# RENDERS_FILE: one render per line, "NAME ARGS..." (ray-tracing-gpu flags after --headless); `#` comments.
+# RENDERS_FILE: one render per line, "NAME ARGS..." (ray-tracing-gpu flags after --headless), or
+# "NAME A_ARGS || B_ARGS" where the builds name a setting differently (an old build without --estimator, say);
+# `#` comments.
 # Without it, issue 11's figure and issue 9's defaults (below). ROUNDS (default 3).
 set -eu
 a=$1 b=$2 out=$3 renders=${4:-}
@@ -21,12 +23,14 @@ many-lights-uniform --scene many-lights --width 600 --spp 256 --light-selection 
 EOF
 fi
 grep -v '^\s*\(#\|$\)' "$renders" | while read -r name args; do
+    args_a=${args%%||*}
+    args_b=${args#*||}
     for ((r = 1; r <= rounds; ++r)); do
         for side in a b; do
-            dir=$a
-            [ "$side" = b ] && dir=$b
+            dir=$a flags=$args_a
+            [ "$side" = b ] && dir=$b flags=$args_b
             # shellcheck disable=SC2086 # the render's flags split on spaces
-            "$dir/ray-tracing-gpu" --headless --quiet $args --hdr "$out/$name-$side.pfm" \
+            "$dir/ray-tracing-gpu" --headless --quiet $flags --hdr "$out/$name-$side.pfm" \
                 --stats "$out/$name-$side-$r.json" >/dev/null
         done
     done

@@ -3,6 +3,7 @@
 
 #include "RayTracing/GeometryFingerprint.h"
 #include "RayTracing/SceneLayout.h"
+#include "Shared/QuadUv.h"
 #include "Scene/SceneBuilder.h"
 #include "Scenes/Catalogue.h"
 
@@ -64,8 +65,9 @@ TEST(SceneLayout, QuadsBecomeTwoTrianglesWithEdgeUvsAndTheirNormal)
     EXPECT_EQ(l.blases[0].vertexCount, 8u);
     EXPECT_EQ(l.triangleMaterials, (std::vector<std::uint32_t>{red, red, blue, blue}));
     const shader::InstanceRecord& r = l.records[l.instances[0].record];
-    ASSERT_NE(r.firstUv, kNoIndex);
-    // Every triangle faces along u x v, and its vertex uvs are the edge coordinates of its corners.
+    ASSERT_EQ(r.firstUv, shader::kQuadUvs);
+    // Every triangle faces along u x v, and the hit shader's uv (quadUv) at each corner is the corner's edge
+    // coordinates: corner k of a triangle has barycentrics (b1, b2) = (0, 0), (1, 0), (0, 1).
     const vec3 quadNormal = glm::normalize(glm::cross(vec3(2, 0, 0), vec3(0, 0, -3)));
     for (int t = 0; t < 2; ++t)
     {
@@ -74,11 +76,13 @@ TEST(SceneLayout, QuadsBecomeTwoTrianglesWithEdgeUvsAndTheirNormal)
         const vec3 p1 = l.positions[r.firstVertex + tri.y];
         const vec3 p2 = l.positions[r.firstVertex + tri.z];
         EXPECT_GT(glm::dot(glm::normalize(glm::cross(p1 - p0, p2 - p0)), quadNormal), 0.999f);
-        for (std::uint32_t v : {tri.x, tri.y, tri.z})
+        const vec2 corners[3] = {vec2(0, 0), vec2(1, 0), vec2(0, 1)};
+        const std::uint32_t vertices[3] = {tri.x, tri.y, tri.z};
+        for (int k = 0; k < 3; ++k)
         {
-            const vec2 uv = l.uvs[r.firstUv + v];
+            const vec2 uv = shader::quadUv(std::uint32_t(t), corners[k].x, corners[k].y);
             const vec3 expected = vec3(1, 2, 3) + uv.x * vec3(2, 0, 0) + uv.y * vec3(0, 0, -3);
-            EXPECT_EQ(l.positions[r.firstVertex + v], expected);
+            EXPECT_EQ(l.positions[r.firstVertex + vertices[k]], expected) << "triangle " << t << " corner " << k;
         }
     }
     EXPECT_EQ(l.instances[0].kind, HitGroupKind::Triangles);

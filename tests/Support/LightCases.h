@@ -26,6 +26,7 @@ inline LightData makeQuadLight(const vec3& q, const vec3& u, const vec3& v)
     const dvec3 w = n / glm::dot(n, n);
     l.dualU = vec3(glm::cross(dvec3(v), w));
     l.dualV = vec3(glm::cross(w, dvec3(u)));
+    setPlanarSlackLengths(l);
     return l;
 }
 
