@@ -3,7 +3,8 @@
 // Per segment: trace; on a miss add the background; on a hit add the emission (front face only with
 // unidirectional lights; MIS-weighted after a NEE vertex), stop on the last segment, else scatter: NEE and a
 // diffuse direction at diffuse vertices with nee / nee-mis, else by the material (BSDF only, or the book-3
-// mixture over the light list); then Russian roulette, and continue from an offset origin.
+// mixture over the light list); then Russian roulette (ending the path at once, or after the next hit's
+// emission: rouletteAfterNextHit), and continue from an offset origin.
 // Needs the payloads `payload` (location kPayloadPath) and `shadowVisible` (kPayloadShadow) and the globals of
 // Bindings.glsl.
 #ifndef RT_INTEGRATOR_GLSL
@@ -25,6 +26,11 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
     bool nee = (settingEstimator() == Estimator_Nee || settingEstimator() == Estimator_NeeMis) &&
                uniforms.emitterCount > 0u;
     bool mis = settingEstimator() == Estimator_NeeMis;
+    bool lateRoulette = rouletteAfterNextHit(settingEstimator());
+    // A roulette decided at the last vertex, applied once this segment's emission is gathered
+    // (rouletteAfterNextHit): end the path, or scale the throughput by 1 / pendingSurvival.
+    bool rouletteEnds = false;
+    float pendingSurvival = 1.0;
     vec3 radiance = vec3(0.0);
     vec3 beta = vec3(1.0);
     // The origin of the current ray and its direction's BSDF pdf, for the MIS weight of the emission it finds
@@ -70,8 +76,13 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
                              : 0.0;
             radiance += beta * evaluateTexture(m.emissionTexture, hit.uv, hit.position) * weight;
         }
-        if (segment + 1u == uniforms.depth)
+        if (segment + 1u == uniforms.depth || rouletteEnds)
             break;
+        if (pendingSurvival < 1.0)
+        {
+            beta /= pendingSurvival;
+            pendingSurvival = 1.0;
+        }
 
         previousBsdfPdf = 0.0;
         // NEE's shadow ray, traced at the end of the vertex: across that trace only the path's own state lives
@@ -109,7 +120,14 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
             if (survival < 1.0)
             {
                 survives = nextFloat(rng) < survival;
-                beta /= survival;
+                if (lateRoulette)
+                {
+                    rouletteEnds = !survives;
+                    pendingSurvival = survival;
+                    survives = true;
+                }
+                else
+                    beta /= survival;
             }
         }
         origin = medium ? hit.position

@@ -123,8 +123,8 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
     app.add_option("--pdf", o.pdf, "The books' name for two estimators: on = --estimator mixture, off = bsdf");
     app.add_option("--russian-roulette", o.russianRoulette,
                    "on: from the third segment, a path whose throughput fell below 1 ends with probability "
-                   "1 - throughput and the survivors are scaled up (unbiased, pbrt-v4's rule); off: paths run "
-                   "to --depth")
+                   "1 - throughput and the survivors are scaled up (unbiased, pbrt-v4's rule; with bsdf and "
+                   "mixture a path ends after the light its last direction finds); off: paths run to --depth")
         ->capture_default_str();
     app.add_option("--unidirectional-light", o.unidirectionalLight,
                    "on: emitters emit from their front face only; off: from both faces (default: the scene's)");

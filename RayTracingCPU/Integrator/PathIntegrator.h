@@ -10,7 +10,8 @@
 //    Emission a BSDF ray finds after such a vertex counts 0 (Nee: NEE already did) or with the power
 //    heuristic's weight against NEE's pdf of the same direction (NeeMis); NEE's own sample gets the
 //    complementary weight. After specular vertices and from the camera, emission counts in full.
-// Russian roulette (Shared/RussianRoulette.h) may end any path from its third segment.
+// Russian roulette (Shared/RussianRoulette.h) may end any path from its third segment: drawn after scattering,
+// it ends the path at once (NEE estimators, pbrt-v4) or after the next hit's emission (rouletteAfterNextHit).
 // The loop is a template on PathCode: the general instance reads the estimator from PathOptions and handles
 // media and every texture kind; the others are compiled for one estimator and without media or non-solid
 // textures, for scenes that have none (Integrator/PathVariants.h picks one per render, issue 11). Every
@@ -146,7 +147,12 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
     const bool mixture = estimator == Estimator::Mixture && !scene.lights.empty();
     const bool nee = (estimator == Estimator::Nee || estimator == Estimator::NeeMis) && cs.emitterCount() > 0;
     const bool mis = estimator == Estimator::NeeMis;
+    const bool rouletteAfterNextHit = shader::rouletteAfterNextHit(estimator);
     constexpr bool kMedia = C.general || C.media;
+    // A roulette decided at the last vertex, applied once this segment's emission is gathered
+    // (rouletteAfterNextHit): end the path, or scale the throughput by 1 / pendingSurvival.
+    bool rouletteEnds = false;
+    float pendingSurvival = 1.0f;
     vec3 radiance(0.0f);
     vec3 throughput(1.0f);
     // The vertex the current ray left, for the MIS weight of the emission it finds: the ray's origin and the
@@ -186,6 +192,13 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
         }
         if (segment + 1 == options.depth)
             break; // RTIOW's depth: the next segment would return black
+        if (rouletteEnds)
+            break;
+        if (pendingSurvival < 1.0f)
+        {
+            throughput /= pendingSurvival;
+            pendingSurvival = 1.0f;
+        }
 
         vec3 wi;
         previousBsdfPdf = 0.0f;
@@ -257,9 +270,16 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
             const float survival = shader::rouletteSurvival(throughput, static_cast<std::uint32_t>(segment));
             if (survival < 1.0f)
             {
-                if (!(rng.nextFloat() < survival))
+                const bool survives = rng.nextFloat() < survival;
+                if (rouletteAfterNextHit)
+                {
+                    rouletteEnds = !survives;
+                    pendingSurvival = survival;
+                }
+                else if (!survives)
                     return radiance;
-                throughput /= survival;
+                else
+                    throughput /= survival;
             }
         }
         const vec3 origin =

@@ -10,6 +10,7 @@
 #include "Scenes/Catalogue.h"
 #include "Support/BlockAgreement.h"
 #include "Support/CatalogueCases.h"
+#include "Support/RenderWithSettings.h"
 
 namespace rt::test
 {
@@ -78,6 +79,59 @@ TEST_P(CpuEstimatorAgreement, EveryEstimatorMatchesNeeMis)
                           << toString(v.lightSelection) << ", " << toString(v.sampling)
                           << (v.russianRoulette ? "" : ", without roulette") << "): " << f;
     }
+}
+
+// Book 3's mixture aims half its diffuse bounces at a light, with a small throughput exactly there. A roulette
+// played before that direction is traced ends most of those paths and scales up the few that find the light.
+// Played after the next hit's emission instead (Shared/RussianRoulette.h, rouletteAfterNextHit), it costs the
+// mixture little noise. The statistic is the relMSE one render would have: per pixel and channel, the variance
+// over 8 seeds over (mean^2 + 0.01). At 32 px, 16 spp it came out at 1.0x the noise without roulette with
+// the late roulette and 2.1x with pbrt-v4's placement (measured by making rouletteAfterNextHit false).
+// Both are unbiased: the agreement test above.
+TEST(CpuRoulette, MixtureKeepsTheLightItsLastDirectionFinds)
+{
+    const Scene scene = makeScene("cornell-box-lights");
+    RenderSettings s;
+    s.width = 32;
+    s.aspect = scene.defaults.aspect;
+    s.spp = 16;
+    s.depth = 50;
+    s.estimator = Estimator::Mixture;
+    cpu::CpuEngine engine(EngineKind::Multi);
+    engine.setScene(scene);
+    const auto noise = [&](bool roulette) {
+        constexpr int kSeeds = 8;
+        RenderSettings settings = s;
+        settings.russianRoulette = roulette;
+        std::vector<Image> images;
+        for (int k = 0; k < kSeeds; ++k)
+        {
+            settings.seed = 2000u + static_cast<std::uint32_t>(k);
+            RenderControl control;
+            images.push_back(renderWithSettings(engine, settings, control).image);
+        }
+        double sum = 0.0;
+        for (int y = 0; y < images[0].height(); ++y)
+            for (int x = 0; x < images[0].width(); ++x)
+                for (int c = 0; c < 3; ++c)
+                {
+                    double m = 0.0;
+                    double m2 = 0.0;
+                    for (const Image& image : images)
+                    {
+                        m += image.at(x, y)[c];
+                        m2 += double(image.at(x, y)[c]) * image.at(x, y)[c];
+                    }
+                    m /= kSeeds;
+                    const double variance = std::max(0.0, m2 / kSeeds - m * m) * kSeeds / (kSeeds - 1);
+                    sum += variance / (m * m + 0.01);
+                }
+        return sum / (3.0 * images[0].width() * images[0].height());
+    };
+    const double withRoulette = noise(true);
+    const double without = noise(false);
+    EXPECT_LT(withRoulette, 1.4 * without) << "relMSE-like noise with roulette " << withRoulette << ", without "
+                                           << without;
 }
 
 INSTANTIATE_TEST_SUITE_P(AllScenes, CpuEstimatorAgreement, ::testing::ValuesIn(catalogueIds()),
