@@ -4,7 +4,8 @@
 //
 // Mapping (docs/GPU.md has the picture):
 //   mesh                          -> one triangle BLAS, shared by every group and instance that uses it;
-//   the quads of a group          -> one triangle BLAS (two triangles per quad, vertex uvs = edge coordinates);
+//   the quads of a group          -> one triangle BLAS (two triangles per quad; no uvs: kQuadUvs, whose
+//                                    edge coordinates the hit shader takes from Shared/QuadUv.h);
 //   the spheres + media of a group -> one procedural (AABB) BLAS: geometry 0 = spheres, geometry 1 = media;
 //   scene instance                -> one TLAS instance per BLAS its group uses, with the instance's transform;
 //                                    its record is the group's, or a copy of it where the part holds lights
