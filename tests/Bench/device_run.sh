@@ -68,6 +68,7 @@ specialization)
     ;;
 ab)
     ROUNDS=${ROUNDS:-3} bash tests/Bench/gpu_ab.sh .devcarry/baseline "$bin" /tmp/ab ${2:-} | tee "$out/ab.txt"
-    cp /tmp/ab/*.json "$out/" 2>/dev/null
+    # One archive of every render's stats: the device tool brings back a limited number of files.
+    tar -czf "$out/ab-stats.tar.gz" -C /tmp/ab --wildcards '*.json' 2>/dev/null
     ;;
 esac
