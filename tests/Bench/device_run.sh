@@ -69,6 +69,6 @@ specialization)
 ab)
     ROUNDS=${ROUNDS:-3} bash tests/Bench/gpu_ab.sh .devcarry/baseline "$bin" /tmp/ab ${2:-} | tee "$out/ab.txt"
     # One archive of every render's stats: the device tool brings back a limited number of files.
-    tar -czf "$out/ab-stats.tar.gz" -C /tmp/ab --wildcards '*.json' 2>/dev/null
+    (cd /tmp/ab && tar -czf "$out/ab-stats.tar.gz" ./*.json)
     ;;
 esac
