@@ -28,8 +28,7 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
     bool mis = settingEstimator() == Estimator_NeeMis;
     bool lateRoulette = rouletteAfterNextHit(settingEstimator());
     // A roulette decided at the last vertex, applied once this segment's emission is gathered
-    // (rouletteAfterNextHit): end the path, or scale the throughput by 1 / pendingSurvival.
-    bool rouletteEnds = false;
+    // (rouletteAfterNextHit): 0 ends the path, else the throughput is scaled by 1 / pendingSurvival.
     float pendingSurvival = 1.0;
     vec3 radiance = vec3(0.0);
     vec3 beta = vec3(1.0);
@@ -76,7 +75,7 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
                              : 0.0;
             radiance += beta * evaluateTexture(m.emissionTexture, hit.uv, hit.position) * weight;
         }
-        if (segment + 1u == uniforms.depth || rouletteEnds)
+        if (segment + 1u == uniforms.depth || pendingSurvival == 0.0)
             break;
         if (pendingSurvival < 1.0)
         {
@@ -122,9 +121,8 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
                 survives = nextFloat(rng) < survival;
                 if (lateRoulette)
                 {
-                    rouletteEnds = !survives;
-                    pendingSurvival = survival;
-                    survives = true;
+                    pendingSurvival = survives ? survival : 0.0;
+                    survives = true; // it ends after the next hit, above
                 }
                 else
                     beta /= survival;

@@ -178,8 +178,8 @@ struct LightData
     vec3 dualU;
     vec3 dualV;
     // Quad / Triangle: |p0|, |dualU|, |dualV| and |dualU + dualV|, the lengths planarHit's rounding slack
-    // scales with, computed once (setPlanarSlackLengths) instead of by every pdf evaluation that misses the
-    // light: they were a tenth of the H100's time of book 3's mixture on cornell-box-lights.
+    // scales with, computed once (setPlanarSlackLengths), so that planarHit can test its slack bounds on every
+    // call without four square roots (docs/PERFORMANCE.md §6.2).
     float p0Length;
     float dualULength;
     float dualVLength;

@@ -150,8 +150,7 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
     const bool rouletteAfterNextHit = shader::rouletteAfterNextHit(estimator);
     constexpr bool kMedia = C.general || C.media;
     // A roulette decided at the last vertex, applied once this segment's emission is gathered
-    // (rouletteAfterNextHit): end the path, or scale the throughput by 1 / pendingSurvival.
-    bool rouletteEnds = false;
+    // (rouletteAfterNextHit): 0 ends the path, else the throughput is scaled by 1 / pendingSurvival.
     float pendingSurvival = 1.0f;
     vec3 radiance(0.0f);
     vec3 throughput(1.0f);
@@ -192,7 +191,7 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
         }
         if (segment + 1 == options.depth)
             break; // RTIOW's depth: the next segment would return black
-        if (rouletteEnds)
+        if (pendingSurvival == 0.0f)
             break;
         if (pendingSurvival < 1.0f)
         {
@@ -272,10 +271,7 @@ inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, R
             {
                 const bool survives = rng.nextFloat() < survival;
                 if (rouletteAfterNextHit)
-                {
-                    rouletteEnds = !survives;
-                    pendingSurvival = survival;
-                }
+                    pendingSurvival = survives ? survival : 0.0f;
                 else if (!survives)
                     return radiance;
                 else
