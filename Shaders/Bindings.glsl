@@ -25,6 +25,10 @@ layout(binding = kBindingPrimitiveLights, scalar) readonly buffer PrimitiveLight
 layout(binding = kBindingLightAlias, scalar) readonly buffer LightAliasBlock { AliasEntry lightAlias[]; };
 layout(binding = kBindingLightBvh, scalar) readonly buffer LightBvhBlock { LightBvhNode lightBvh[]; };
 layout(binding = kBindingLightBvhLeaves, scalar) readonly buffer LightBvhLeafBlock { uint lightBvhLeaves[]; };
+layout(binding = kBindingMixtureLights, scalar) uniform MixtureLightBlock
+{
+    LightData mixtureLights[kMixtureUniformLights];
+};
 // rgb: what the float sum above lost to rounding (Kahan), to subtract from the next sample; a: unused.
 layout(binding = kBindingCompensation, rgba32f) uniform image2D compensation;
 layout(binding = kBindingImages) uniform sampler2D images[];

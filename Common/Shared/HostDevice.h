@@ -222,8 +222,13 @@ RT_CONST(uint, kBindingLightAlias, 16u)       // AliasEntry[]: the emitters' pow
 RT_CONST(uint, kBindingLightBvh, 17u)         // LightBvhNode[]: the emitters' light BVH
 RT_CONST(uint, kBindingLightBvhLeaves, 18u)   // uint[]: per emitter, its leaf in LightBvhNode[] (kNoIndex: no power)
 RT_CONST(uint, kBindingCompensation, 19u)     // rgba32f storage image: rgb the Kahan compensation of the sum
-RT_CONST(uint, kBindingImages, 20u)           // sampler2D[]: the scene's images, 8-bit sRGB
-RT_CONST(uint, kBindingCount, 21u)
+RT_CONST(uint, kBindingMixtureLights, 20u)    // uniform LightData[kMixtureUniformLights]: the first lights again
+RT_CONST(uint, kBindingImages, 21u)           // sampler2D[]: the scene's images, 8-bit sRGB
+RT_CONST(uint, kBindingCount, 22u)
+// The mixture's pdf reads every light at every vertex, all threads the same light at once: from a uniform
+// buffer (a GPU's constant cache, which broadcasts) when the scene has at most this many. 64 x 104 bytes fit
+// in the 16 KiB that Vulkan guarantees for a uniform buffer range.
+RT_CONST(uint, kMixtureUniformLights, 64u)
 
 // Shader binding table: two miss records (traceRayEXT's missIndex; each with its payload location), and per
 // TLAS instance a hit-group record offset.

@@ -1,5 +1,6 @@
 #include "Engine/GpuScene.h"
 
+#include <algorithm>
 #include <chrono>
 #include <limits>
 
@@ -39,6 +40,14 @@ void checkImageLimits(const vk::Device& device, const Scene& scene, std::uint32_
                                           image.path, image.width, image.height, p.limits.maxImageDimension2D,
                                           p.name));
 }
+/// The uniform block of kBindingMixtureLights: the scene's first kMixtureUniformLights lights, zeros after them
+/// (the block's whole declared size is bound).
+std::vector<LightData> mixtureLightsOf(const Scene& scene)
+{
+    std::vector<LightData> lights(shader::kMixtureUniformLights, LightData{});
+    std::copy_n(scene.lights.begin(), std::min<std::size_t>(scene.lights.size(), lights.size()), lights.begin());
+    return lights;
+}
 } // namespace
 
 GpuScene::GpuScene(const vk::Device& device, const vk::CommandPool& pool, const Scene& scene,
@@ -55,6 +64,7 @@ GpuScene::GpuScene(const vk::Device& device, const vk::CommandPool& pool, const 
     m_buffers.materials = upload.buffer(scene.materials, kStorage);
     m_buffers.textures = upload.buffer(scene.textures, kStorage);
     m_buffers.lights = upload.buffer(scene.lights, kStorage);
+    m_buffers.mixtureLights = upload.buffer(mixtureLightsOf(scene), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     m_buffers.lightAlias = upload.buffer(lightAliasTable(scene), kStorage);
     const LightBvh lightBvh = buildLightBvh(scene);
     m_buffers.lightBvh = upload.buffer(lightBvh.nodes, kStorage);

@@ -69,7 +69,7 @@ public:
 
     struct Buffers
     {
-        vk::Buffer materials, textures, lights, lightAlias, lightBvh, lightBvhLeaves, perlin, records,
+        vk::Buffer materials, textures, lights, mixtureLights, lightAlias, lightBvh, lightBvhLeaves, perlin, records,
             primitiveLights, uvs, triangleMaterials, spheres, media;
     };
     const Buffers& buffers() const { return m_buffers; }

@@ -39,6 +39,7 @@ std::vector<vk::DescriptorBinding> bindingsOf(std::uint32_t maxImages)
     add(kBindingAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
     add(kBindingCompensation, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
     add(kBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
+    add(kBindingMixtureLights, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
     for (std::uint32_t binding : {kBindingMaterials, kBindingTextures, kBindingLights, kBindingPerlin,
                                   kBindingInstances, kBindingPositions, kBindingUvs, kBindingTriangles,
                                   kBindingTriangleMaterials, kBindingSpheres, kBindingMedia, kBindingCounters,
@@ -178,9 +179,10 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
         {kBindingMedia, &buffers.media},
     };
     std::vector<VkDescriptorBufferInfo> bufferInfos;
-    bufferInfos.reserve(std::size(storage) + 2);
+    bufferInfos.reserve(std::size(storage) + 3);
     bufferInfos.push_back({target.uniforms, 0, VK_WHOLE_SIZE});
     bufferInfos.push_back({target.counters, 0, VK_WHOLE_SIZE});
+    bufferInfos.push_back({buffers.mixtureLights.Handle(), 0, VK_WHOLE_SIZE});
     for (const auto& [binding, buffer] : storage)
         bufferInfos.push_back({buffer->Handle(), 0, VK_WHOLE_SIZE});
     std::vector<VkDescriptorImageInfo> imageInfos;
@@ -203,8 +205,9 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
     write(kBindingCompensation, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1).pImageInfo = &compensation;
     write(kBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1).pBufferInfo = &bufferInfos[0];
     write(kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[1];
+    write(kBindingMixtureLights, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1).pBufferInfo = &bufferInfos[2];
     for (std::size_t i = 0; i < std::size(storage); ++i)
-        write(storage[i].first, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[i + 2];
+        write(storage[i].first, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[i + 3];
     // A scene without images binds none: the binding is partially bound with a variable count, allocated at 0
     // (no dummy texel needed), and no shader reads it (the general pipeline reads it only at image textures).
     if (!imageInfos.empty())

@@ -2,7 +2,7 @@
 // scene's list uniformly and sample a direction towards it; weight by the BSDF pdf over the mixture pdf
 // 1/2 bsdfPdf + 1/2 mean_j lightPdf_j (one-sample MIS, balance heuristic). No shadow ray: the next segment
 // finds what the direction hits. The twin of RayTracingCPU/Integrator/PathIntegrator.h.
-// Reads the globals `uniforms` and `lights` (Bindings.glsl).
+// Reads the globals `uniforms`, `lights` and `mixtureLights` (Bindings.glsl).
 #ifndef RT_MIXTURE_GLSL
 #define RT_MIXTURE_GLSL
 
@@ -39,8 +39,12 @@ bool scatterMixture(bool uniformSphere, vec3 p, vec3 ns, vec3 albedo, inout Rng 
     }
     float scatteringPdf = uniformSphere ? uniformSpherePdf() : cosineHemispherePdf(dot(ns, wi));
     float lightPdfSum = 0.0;
-    for (uint j = 0u; j < uniforms.lightCount; ++j)
-        lightPdfSum += j == picked ? pickedPdf : lightPdf(lights[j], p, wi);
+    if (uniforms.lightCount <= kMixtureUniformLights)
+        for (uint j = 0u; j < uniforms.lightCount; ++j)
+            lightPdfSum += j == picked ? pickedPdf : lightPdf(mixtureLights[j], p, wi);
+    else
+        for (uint j = 0u; j < uniforms.lightCount; ++j)
+            lightPdfSum += j == picked ? pickedPdf : lightPdf(lights[j], p, wi);
     float pdf = 0.5 * scatteringPdf + 0.5 * lightPdfSum / float(uniforms.lightCount);
     if (!(scatteringPdf > 0.0) || !(pdf > 0.0))
         return false;
