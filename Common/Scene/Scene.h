@@ -106,7 +106,8 @@ struct GroupDesc
     bool empty() const { return spheres.empty() && quads.empty() && meshes.empty() && media.empty(); }
 };
 
-/// A group placed in the world. Any invertible affine transform for quads, meshes and media; groups with
+/// A group placed in the world. Any invertible affine transform that keeps handedness (determinant > 0) for
+/// quads and meshes (a mirror would turn their faces inward), any invertible one for media; groups with
 /// spheres need a similarity (rotation, uniform scale, translation): an ellipsoid is not a sphere.
 struct InstanceDesc
 {

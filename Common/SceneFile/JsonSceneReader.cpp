@@ -371,6 +371,10 @@ private:
         if (!scene().groups[group].spheres.empty() && !t.uniformScale())
             i["transform"].fail("the group has spheres, which only a rotation, uniform scale and translation keep "
                                 "spheres");
+        const GroupDesc& g = scene().groups[group];
+        if ((!g.quads.empty() || !g.meshes.empty()) && glm::determinant(mat3(t.m)) < 0.0f)
+            i["transform"].fail("the transform mirrors (negative determinant), which would turn the group's quads' and "
+                                "triangles' faces inward: mirror the geometry itself instead");
         m_builder.instance(group, t);
     }
 

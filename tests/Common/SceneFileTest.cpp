@@ -151,6 +151,7 @@ TEST(SceneFile, ErrorsNameTheValueAndWhatWasExpected)
         {replaced(smallSceneWith("{\"scale\": 2}", "{\"scale\": [1, 2, 1]}"), "\"material\": \"mirror\"}",
                   "\"material\": \"mirror\"}, {\"type\": \"sphere\", \"center\": [0, 0, 0], \"radius\": 1, \"material\": 0}"),
          "/instances/0/transform: the group has spheres"},
+        {smallSceneWith("{\"scale\": 2}", "{\"scale\": [2, -2, 2]}"), "/instances/0/transform: the transform mirrors"},
         {smallSceneWith("\"depth\": 8", "\"depth\": 8.5"), "/render/depth: expected an integer"},
         {smallSceneWith("\"estimator\": \"nee\"", "\"estimator\": \"path\""), "expected one of 'bsdf', 'mixture'"},
         {smallSceneWith("\"name\": \"red\"", "\"name\": \"floor\""),

@@ -148,6 +148,23 @@ TEST(SceneValidation, RejectsAMeshIndexOutOfRange)
     EXPECT_NE(message.find("'minimal'"), std::string::npos) << "the scene is named: " << message;
 }
 
+TEST(SceneValidation, RejectsAMeshGroupUnderAMirror)
+{
+    // A mirror would turn the triangle's normal (the edges' cross product) to its back: refused by name.
+    for (const Transform& t : {Transform::scale({-1, 1, 1}), Transform::rotateY(30.0f) * Transform::scale({1, 1, -2})})
+    {
+        Scene s = minimalScene();
+        s.instances[1].worldFromObject = t;
+        const std::string message = sceneErrorOf([&] { s.validate(); });
+        EXPECT_NE(message.find("'shapes'"), std::string::npos) << message;
+        EXPECT_NE(message.find("mirroring"), std::string::npos) << message;
+    }
+    // Two mirrors make a rotation: fine.
+    Scene s = minimalScene();
+    s.instances[1].worldFromObject = Transform::scale({-1, -1, 1});
+    EXPECT_NO_THROW(s.validate());
+}
+
 TEST(SceneValidation, RejectsOtherBrokenReferences)
 {
     const auto expectRejected = [](const char* what, auto&& breakIt) {
