@@ -32,6 +32,18 @@ RT_FN uint nestedUniformScramble(uint x, uint seed)
     return bitfieldReverse(laineKarrasPermutation(bitfieldReverse(x), seed));
 }
 
+/// sobolDimension1(i) with its bits reversed (bit j is output bit j's weight 2^-(j+1)): what a scramble,
+/// which works on reversed bits, takes without reversing twice.
+RT_FN uint sobolDimension1Reversed(uint i)
+{
+    i ^= (i >> 1u) & 0x55555555u;
+    i ^= (i >> 2u) & 0x33333333u;
+    i ^= (i >> 4u) & 0x0F0F0F0Fu;
+    i ^= (i >> 8u) & 0x00FF00FFu;
+    i ^= (i >> 16u) & 0x0000FFFFu;
+    return i;
+}
+
 /// Sobol dimension 1 of index i as a 32-bit fixed-point number. Its generator matrix is Pascal's triangle mod 2
 /// (primitive polynomial x + 1: direction numbers v_k = v_{k-1} ^ (v_{k-1} >> 1), v_0 = 2^31), so by Lucas'
 /// theorem output bit j (weight 2^-(j+1)) is the XOR of the index bits k whose binary digits include j's: a
@@ -39,12 +51,7 @@ RT_FN uint nestedUniformScramble(uint x, uint seed)
 /// the index's 32 bits. Dimension 0 is bitfieldReverse(i), van der Corput's.
 RT_FN uint sobolDimension1(uint i)
 {
-    i ^= (i >> 1u) & 0x55555555u;
-    i ^= (i >> 2u) & 0x33333333u;
-    i ^= (i >> 4u) & 0x0F0F0F0Fu;
-    i ^= (i >> 8u) & 0x00FF00FFu;
-    i ^= (i >> 16u) & 0x0000FFFFu;
-    return bitfieldReverse(i);
+    return bitfieldReverse(sobolDimension1Reversed(i));
 }
 
 /// The top 24 bits of a 32-bit fixed-point number in [0, 1): exactly representable, never 1.
@@ -59,8 +66,10 @@ RT_FN float fixedPointToUnitFloat(uint x)
 RT_FN vec2 owenScrambledSobol2D(uint index, uint shuffleSeed, uint xSeed, uint ySeed)
 {
     const uint i = nestedUniformScramble(index, shuffleSeed);
-    const uint x = nestedUniformScramble(bitfieldReverse(i), xSeed);
-    const uint y = nestedUniformScramble(sobolDimension1(i), ySeed);
+    // nestedUniformScramble(bitfieldReverse(i), xSeed) and nestedUniformScramble(sobolDimension1(i), ySeed),
+    // with the two reversals that cancel left out (half of a draw's bit reversals; the same bits).
+    const uint x = bitfieldReverse(laineKarrasPermutation(i, xSeed));
+    const uint y = bitfieldReverse(laineKarrasPermutation(sobolDimension1Reversed(i), ySeed));
     return vec2(fixedPointToUnitFloat(x), fixedPointToUnitFloat(y));
 }
 

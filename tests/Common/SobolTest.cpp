@@ -1,5 +1,6 @@
 // Owen-scrambled Sobol points (Shared/Sobol.h) and the camera-sample streams built on them (Rng::
-// forSobolSample): the fast dimension-1 generator equals the direction-number recurrence; every power-of-two
+// forSobolSample): the fast dimension-1 generator equals the direction-number recurrence, and a draw is the
+// definition's bit for bit; every power-of-two
 // prefix of a draw's points over a pixel's samples is a (0, m, 2)-net (one point in every elementary interval),
 // whatever the scramble; the points are uniform over many pixels (chi-square); and distinct draws of a sample
 // are uncorrelated.
@@ -50,6 +51,28 @@ TEST(Sobol, BitfieldReverseReversesBits)
     EXPECT_EQ(shader::bitfieldReverse(0x80000000u), 1u);
     EXPECT_EQ(shader::bitfieldReverse(0x0000F00Du), 0xB00F0000u);
     EXPECT_EQ(shader::bitfieldReverse(0xFFFFFFFFu), 0xFFFFFFFFu);
+}
+
+TEST(Sobol, DrawIsBurleysScrambleOfSobolsFirstTwoDimensions)
+{
+    // owenScrambledSobol2D leaves out reversals that cancel: its points must be, bit for bit, those of the
+    // definition (Burley 2020, listing 2): the shuffled index's Sobol dimensions 0 (the reversed index) and 1,
+    // each through nestedUniformScramble.
+    Rng seeds(pcgHash(17));
+    for (std::uint32_t k = 0; k < 20000; ++k)
+    {
+        const std::uint32_t index = k < 10000 ? k : seeds.nextUint();
+        const std::uint32_t shuffle = seeds.nextUint();
+        const std::uint32_t xSeed = seeds.nextUint();
+        const std::uint32_t ySeed = seeds.nextUint();
+        const std::uint32_t i = shader::nestedUniformScramble(index, shuffle);
+        const vec2 expected(
+            shader::fixedPointToUnitFloat(shader::nestedUniformScramble(shader::bitfieldReverse(i), xSeed)),
+            shader::fixedPointToUnitFloat(shader::nestedUniformScramble(sobolDimension1Reference(i), ySeed)));
+        const vec2 point = shader::owenScrambledSobol2D(index, shuffle, xSeed, ySeed);
+        ASSERT_EQ(point.x, expected.x) << "index " << index;
+        ASSERT_EQ(point.y, expected.y) << "index " << index;
+    }
 }
 
 /// True when the points hold exactly one point in each 2^-a x 2^-(m-a) elementary interval, every a.
