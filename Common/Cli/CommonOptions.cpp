@@ -74,9 +74,9 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
             return isSceneFilePath(path) && path.ends_with(".json") ? std::string()
                                                                      : std::string("must name a .json file");
         });
-    app.add_option("--spp", o.spp, "Samples per pixel (default: the scene's)");
+    app.add_option("--spp", o.spp, "Samples per pixel, 1 to 16777216 (default: the scene's)");
     app.add_option("--depth", o.depth, "Ray segments per path at most, the camera ray included: 1 sees only the emitters (default: the scene's, usually 50)");
-    app.add_option("--width", o.width, "Image width in pixels (default: the scene's)");
+    app.add_option("--width", o.width, "Image width in pixels, 1 to 65536 (default: the scene's)");
     app.add_option("--aspect", o.aspect, "Aspect ratio width/height, e.g. 1 or 1.7778 (default: the scene's)")
         ->check([](const std::string& text) -> std::string {
             // Checked as written, in double: a float reads 1e308 as inf, and the message would quote that.

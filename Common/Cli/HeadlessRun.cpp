@@ -1,12 +1,14 @@
 #include "Cli/HeadlessRun.h"
 
 #include <atomic>
+#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <condition_variable>
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
+#include <set>
 #include <new>
 #include <thread>
 
@@ -98,9 +100,12 @@ void checkOutputPath(const std::string& path, const char* flag, std::initializer
     if (path.empty())
         return;
     const std::filesystem::path p(path);
+    std::string extension = p.extension().string();
+    for (char& c : extension)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     bool known = false;
     for (const char* e : extensions)
-        known |= p.extension() == e;
+        known |= extension == e; // OUT.PNG is a PNG too
     if (!known)
     {
         std::string list;
@@ -151,12 +156,16 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& r
     outputs.commit();
     const RenderStats& s = result.stats;
     const RenderSettings& settings = request.settings;
+    std::string written;
+    for (const std::string& file : {o.output, o.hdr, o.stats})
+        if (!file.empty())
+            written += (written.empty() ? ", wrote " : ", ") + file;
     std::printf("%s: %dx%d, %d spp (%s, %s), depth %d, %s engine: render %.3f s, build %.3f s, %.2f Mpaths/s, "
-                "NaN %llu, Inf %llu%s%s\n",
+                "NaN %llu, Inf %llu%s\n",
                 request.scene.id.c_str(), s.width, s.height, s.trueSpp, toString(settings.sampling), toString(settings.estimator),
                 settings.depth, toString(s.engine), s.renderSeconds, s.buildSeconds, s.mpathsPerSecond(),
                 static_cast<unsigned long long>(s.nanSamples), static_cast<unsigned long long>(s.infSamples),
-                o.output.empty() ? "" : ", wrote ", o.output.c_str());
+                written.c_str());
     return 0;
 }
 
@@ -166,6 +175,22 @@ int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>
     // line, the tables of --compare, --list-scenes).
     spdlog::set_default_logger(spdlog::stderr_color_mt("rt"));
     spdlog::set_pattern("%^%l%$: %v");
+    // A flag of one value given twice is refused (which one was meant?), in words rather than CLI11's "At Most 1
+    // required but received 2".
+    std::set<std::string> seen;
+    for (int i = 1; i < argc; ++i)
+    {
+        const std::string token = argv[i];
+        if (token.rfind("--", 0) != 0)
+            continue;
+        const std::string name = token.substr(0, token.find('='));
+        const CLI::Option* option = app.get_option_no_throw(name);
+        if (option && option->get_items_expected_max() <= 1 && !seen.insert(name).second)
+        {
+            std::fprintf(stderr, "error: %s is given more than once: give it once (see --help)\n", name.c_str());
+            return 2;
+        }
+    }
     try
     {
         app.parse(argc, argv);

@@ -11,6 +11,10 @@ namespace rt
 /// the path (missing folder, write failure, rename failure).
 void writeAtomically(const std::filesystem::path& path, const std::function<bool(const std::filesystem::path&)>& write);
 
+/// Where writing `path` must land: the file a symbolic link points to (followed to its end), so that the
+/// rename of writeAtomically and OutputSet replaces the target and keeps the link; `path` itself otherwise.
+std::filesystem::path outputTarget(const std::filesystem::path& path);
+
 /// writeAtomically for a text or binary blob.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 } // namespace rt

@@ -8,6 +8,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "Error.h"
+#include "IO/AtomicFile.h"
 
 #ifndef _WIN32
 #include <unistd.h>
@@ -53,7 +54,7 @@ void checkWritable(const std::filesystem::path& path, const char* flag)
 
 void OutputSet::add(std::filesystem::path path, Writer write)
 {
-    m_entries.push_back({std::move(path), std::move(write)});
+    m_entries.push_back({outputTarget(path), std::move(write)});
 }
 
 void OutputSet::commit()
@@ -63,7 +64,22 @@ void OutputSet::commit()
     try
     {
         for (; written < m_entries.size(); ++written)
-            m_entries[written].write(pendingPath(m_entries[written].path));
+        {
+            const std::filesystem::path& path = m_entries[written].path;
+            try
+            {
+                m_entries[written].write(pendingPath(path));
+            }
+            catch (const OutputError& e)
+            {
+                // The writer names the file it was given, ours: the user named the one without ".pending".
+                std::string message = e.what();
+                const std::string pending = pendingPath(path).string();
+                for (std::size_t at = message.find(pending); at != std::string::npos; at = message.find(pending, at))
+                    message.replace(at, pending.size(), path.string());
+                throw OutputError(message);
+            }
+        }
         for (; placed < m_entries.size(); ++placed)
         {
             std::error_code ec;

@@ -27,8 +27,8 @@ int RenderSettings::trueSpp() const
 void RenderSettings::validate() const
 {
     constexpr int kMaxDimension = 1 << 16;
-    if (spp < 1)
-        throw UsageError(fmt::format("samples per pixel must be at least 1 (got {})", spp));
+    if (spp < 1 || spp > kMaxSpp)
+        throw UsageError(fmt::format("samples per pixel must be in [1, {}] (got {})", kMaxSpp, spp));
     if (depth < 1)
         throw UsageError(fmt::format("depth must be at least 1 (got {})", depth));
     if (width < 1 || width > kMaxDimension)

@@ -23,6 +23,10 @@ enum class EngineKind
     Gpu // Vulkan ray tracing
 };
 
+/// The most samples per pixel a render takes: the GPU counts a pixel's samples in a float channel, exact up
+/// to 2^24 (scene files have the same bound).
+inline constexpr int kMaxSpp = 1 << 24;
+
 struct RenderSettings
 {
     int spp = 100; // samples per pixel asked for (stratified rounds down to a square: see trueSpp())

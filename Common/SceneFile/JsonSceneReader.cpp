@@ -11,6 +11,7 @@
 #include "Assets/AssetPaths.h"
 #include "Assets/ImageLoader.h"
 #include "Assets/ObjLoader.h"
+#include "Render/RenderSettings.h"
 #include "Error.h"
 #include "Scene/SceneBuilder.h"
 #include "SceneFile/JsonMeshes.h"
@@ -199,7 +200,7 @@ private:
         r.allowOnly({"spp", "depth", "width", "aspect", "unidirectional_light", "estimator"});
         SceneDefaults& d = scene().defaults;
         if (r.has("spp"))
-            d.spp = static_cast<int>(r["spp"].integer(1, 1 << 24));
+            d.spp = static_cast<int>(r["spp"].integer(1, kMaxSpp));
         if (r.has("depth"))
             d.depth = static_cast<int>(r["depth"].integer(1, 100000));
         if (r.has("width"))

@@ -1,5 +1,6 @@
 #include "Engine/PipelineSpecialization.h"
 
+#include "Render/RenderSettings.h"
 #include "Scene/SceneFeatures.h"
 
 namespace rt::gpu
@@ -111,11 +112,16 @@ std::string PipelineSpecialization::describe() const
 {
     if (*this == general())
         return "general";
-    std::string s;
-    const char* names[] = {"estimator", "sampler", "selection", "sampling"};
-    for (std::uint32_t id = 0; id < kSpecIdFeatures; ++id)
-        s += std::string(names[id]) + "=" +
-             (constants[id] == kSpecDynamic ? std::string("any") : std::to_string(constants[id])) + " ";
+    // By the command line's names; "any": read from the uniforms at run time.
+    const auto value = [this](std::uint32_t id, auto name) -> std::string {
+        return constants[id] == kSpecDynamic ? "any" : name(constants[id]);
+    };
+    std::string s = "estimator=" + value(kSpecIdEstimator, [](std::uint32_t v) { return toString(Estimator(v)); }) +
+                    " sampler=" + value(kSpecIdLightSampler, [](std::uint32_t v) { return toString(LightSampler(v)); }) +
+                    " selection=" +
+                    value(kSpecIdLightSelection, [](std::uint32_t v) { return toString(LightSelection(v)); }) +
+                    " sampling=" + value(kSpecIdSampling, [](std::uint32_t v) { return toString(PixelSampling(v)); }) +
+                    " ";
     s += "features=";
     if (features() == kSpecDynamic)
         return s + "all";

@@ -1,8 +1,11 @@
-// IO/OutputSet: a render's outputs are written all or none, and a path that cannot be written is found
-// before the render (issue 13: a stats path that was a folder failed after the PNG was written).
+// IO/OutputSet: a render's outputs are written all or none, a failure names the user's file and its reason,
+// a symbolic link is written through, and a path that cannot be written is found before the render (issue 13:
+// a stats path that was a folder failed after the PNG was written).
 #include <gtest/gtest.h>
 #include <spdlog/fmt/fmt.h>
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <string>
 
@@ -57,6 +60,50 @@ TEST(OutputSet, AFailingFileLeavesNoneOfTheSetBehind)
     EXPECT_THROW(set.commit(), OutputError);
     EXPECT_FALSE(std::filesystem::exists(dir / "a.png"));
     EXPECT_EQ(filesIn(dir.path()), 1u); // the folder alone
+}
+
+TEST(OutputSet, AWriteThatFailsNamesTheUsersFileAndTheReason)
+{
+    // The writer fails on the temporary it is given, with the C library's reason; the message names the file
+    // the user asked for, not the temporary (a full disk read "cannot write 'out.pfm.pending'").
+    const test::ScratchDir dir;
+    OutputSet set;
+    set.add(dir / "out.pfm", [](const std::filesystem::path& tmp) {
+        writeAtomically(tmp, [](const std::filesystem::path&) {
+            errno = ENOSPC;
+            return false;
+        });
+    });
+    try
+    {
+        set.commit();
+        ADD_FAILURE() << "the failed write was not reported";
+    }
+    catch (const OutputError& e)
+    {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("'" + (dir / "out.pfm").string() + "'"), std::string::npos) << message;
+        EXPECT_EQ(message.find(".pending"), std::string::npos) << message;
+        EXPECT_NE(message.find(std::strerror(ENOSPC)), std::string::npos) << message;
+    }
+    EXPECT_EQ(filesIn(dir.path()), 0u);
+}
+
+TEST(OutputSet, WritesThroughASymbolicLink)
+{
+    // The rename lands on the link's target: the link stays a link and the target holds the new bytes.
+    const test::ScratchDir dir;
+    writeFileAtomically(dir / "target.json", "old");
+    std::filesystem::create_symlink("target.json", dir / "link.json");
+    OutputSet set;
+    set.add(dir / "link.json", [](const std::filesystem::path& tmp) { writeFileAtomically(tmp, "new"); });
+    set.commit();
+    EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.json"));
+    EXPECT_EQ(std::filesystem::file_size(dir / "target.json"), 3u);
+    writeFileAtomically(dir / "link.json", "newest");
+    EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.json"));
+    EXPECT_EQ(std::filesystem::file_size(dir / "target.json"), 6u);
+    EXPECT_EQ(filesIn(dir.path()), 2u); // no temporary left
 }
 
 TEST(OutputSet, CheckWritableRefusesAFolderAMissingFolderAndAnUnwritableOne)
