@@ -12,6 +12,8 @@
 #                                      ROUNDS), then the figure: cornell-box-lights 600x600, 1000 spp, mixture
 #   tests/Bench/device_run.sh ab [RENDERS_FILE]  the baseline build (.devcarry/baseline, BASELINE_BIN of
 #                                      device_carry.sh) against this one, render by render (gpu_ab.sh)
+#   tests/Bench/device_run.sh bars     issue 9's efficiency bars in one run: cornell-box-lights (mixture
+#                                      against nee-mis) and many-lights (light selections), by --compare
 set -u
 mode=${1:-tests}
 out=${OUT:-/tmp/out}
@@ -65,6 +67,14 @@ specialization)
     cp "$work"/*.json "$out/specialization/"
     ROUNDS=3 bash tests/Bench/specialization_figure.sh "$bin" "$work/figure" | tee "$out/figure.txt"
     cp "$work"/figure/*.json "$out/specialization/"
+    ;;
+bars)
+    "$bin/ray-tracing-gpu" --compare --quiet --scene cornell-box-lights --width 600 --engines gpu \
+        --reference-spp 16384 --estimators mixture,nee-mis --roulettes off,on --samplings random,sobol \
+        --spp-list 256,1024 --csv "$out/cbl.csv" --table "$out/cbl.json"
+    "$bin/ray-tracing-gpu" --compare --quiet --scene many-lights --width 600 --engines gpu --reference-spp 4096 \
+        --estimators nee-mis --light-selections uniform,power,bvh --samplings random,sobol --spp-list 64,256 \
+        --csv "$out/ml.csv" --table "$out/ml.json"
     ;;
 ab)
     ROUNDS=${ROUNDS:-3} bash tests/Bench/gpu_ab.sh .devcarry/baseline "$bin" /tmp/ab ${2:-} | tee "$out/ab.txt"
