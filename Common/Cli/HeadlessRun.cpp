@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
-#include <set>
 #include <new>
+#include <set>
 #include <thread>
 
 #include <spdlog/fmt/fmt.h>
