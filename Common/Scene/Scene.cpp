@@ -173,21 +173,20 @@ void Scene::validate() const
     for (const InstanceDesc& inst : instances)
     {
         require(inst.group < groups.size(), id, fmt::format("instance of missing group {}", inst.group));
+        const GroupDesc& g = groups[inst.group];
         const float det = glm::determinant(mat3(inst.worldFromObject.m));
         require(det != 0.0f, id, "an instance transform is singular");
+        // A sphere under a non-uniform scale is an ellipsoid: neither engine's sphere test covers it.
+        require(g.spheres.empty() || inst.worldFromObject.uniformScale().has_value(), id,
+                fmt::format("group '{}' holds spheres and is instanced with a non-uniform scale or a mirror",
+                            g.name));
         // A mirror reverses the winding of the group's quads and triangles: their world-space normals (u x v,
         // the edges' cross product) would point inward, turning glass inside out and lights away on both
         // engines. glTF import bakes its transforms and swaps the winding itself; instances cannot.
-        require(det > 0.0f || !groups[inst.group].spheres.empty() || (groups[inst.group].quads.empty() &&
-                                                                       groups[inst.group].meshes.empty()),
-                id,
+        require(det > 0.0f || (g.quads.empty() && g.meshes.empty()), id,
                 fmt::format("group '{}' is instanced with a mirroring transform (negative determinant), which would "
                             "turn its quads' and triangles' faces inward: mirror the geometry itself instead",
-                            groups[inst.group].name));
-        // A sphere under a non-uniform scale is an ellipsoid: neither engine's sphere test covers it.
-        require(groups[inst.group].spheres.empty() || inst.worldFromObject.uniformScale().has_value(), id,
-                fmt::format("group '{}' holds spheres and is instanced with a non-uniform scale or a mirror",
-                            groups[inst.group].name));
+                            g.name));
     }
     for (const LightData& l : lights)
         require(l.material == kNoIndex || materialOk(l.material), id, "a light refers to a missing material");

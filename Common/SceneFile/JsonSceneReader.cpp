@@ -369,10 +369,10 @@ private:
         i.allowOnly({"group", "transform"});
         const std::uint32_t group = m_groupNames.resolve(i["group"], scene().groups.size());
         const Transform t = i.has("transform") ? readTransform(i["transform"]) : Transform::identity();
-        if (!scene().groups[group].spheres.empty() && !t.uniformScale())
+        const GroupDesc& g = scene().groups[group];
+        if (!g.spheres.empty() && !t.uniformScale())
             i["transform"].fail("the group has spheres, which only a rotation, uniform scale and translation keep "
                                 "spheres");
-        const GroupDesc& g = scene().groups[group];
         if ((!g.quads.empty() || !g.meshes.empty()) && glm::determinant(mat3(t.m)) < 0.0f)
             i["transform"].fail("the transform mirrors (negative determinant), which would turn the group's quads' and "
                                 "triangles' faces inward: mirror the geometry itself instead");
