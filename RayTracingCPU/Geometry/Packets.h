@@ -93,16 +93,24 @@ inline bool intersectPacket(const SpherePacket& p, const TraceRay& r, float tMin
         return false;
     const Lanes ff = fx * fx + fy * fy + fz * fz;
     Lanes c = ff - r2;
-    // Where c cancels (near a huge sphere's surface), the lanes take sphereQuadraticC's exact path one by one:
-    // rare, and c is then right to a few ulps instead of a few %.
-    if (const int cancelled = movemask(valid & (abs(c) < Lanes(shader::kSphereCancellation) * (ff + r2))))
+    const Lanes q = -(b + copysign(sqrt(max(disc, Lanes(0.0f)) * Lanes(r.directionLength2)), b));
+    // Where c cancels (near a huge sphere's surface), the lanes take sphereQuadraticC's exact path one by one,
+    // and c is then right to a few ulps instead of a few %. c enters only the near root c / q, and a lane
+    // needs it only where that root can lie ahead: where c's sign is unsure (|c| within kSphereRootError's
+    // bound of its rounding) or matches q's. A ray leaving a sphere's surface (glass: every refraction) has a
+    // c that cancels but a sure sign opposite to q's, so its near root is behind it with either c, and the
+    // hit is the same bit for bit without the exact path.
+    const Lanes zero(0.0f);
+    const Lanes surelyBehind = (abs(c) > Lanes(kSphereRootError) * (ff + r2)) &
+                               (((c > zero) & (q < zero)) | ((c < zero) & (q > zero)));
+    if (const int cancelled =
+            movemask(andNot(surelyBehind, valid & (abs(c) < Lanes(shader::kSphereCancellation) * (ff + r2)))))
     {
         alignas(32) float exact[kLanes];
         for (int i = 0; i < kLanes; ++i)
             exact[i] = (cancelled >> i) & 1 ? shader::sphereQuadraticC(vec3(fx[i], fy[i], fz[i]), p.radius[i]) : c[i];
         c = Lanes::load(exact);
     }
-    const Lanes q = -(b + copysign(sqrt(max(disc, Lanes(0.0f)) * Lanes(r.directionLength2)), b));
     const Lanes t0 = c / q;
     const Lanes t1 = q * Lanes(r.invDirectionLength2);
     const Lanes tNear = min(t0, t1), tFar = max(t0, t1);

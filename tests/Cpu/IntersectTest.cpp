@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "Engine/CpuEngine.h"
+#include "Geometry/Packets.h"
+#include "Math/RayOffset.h"
 #include "Random/Pcg.h"
 #include "Sampling/Warps.h"
 #include "Scene/CpuScene.h"
@@ -70,6 +72,39 @@ TEST(Intersect, HugeGroundSphereIsHitWhereItIs)
     const CpuScene cs(scene);
     const HitRecord hit = closest(cs, Ray{vec3(0.0f, 2.0f, 0.0f), vec3(0.0f, -1.0f, 0.0f), 0.0f});
     EXPECT_NEAR(hit.t, 2.0f, 2e-4f);
+}
+
+TEST(Intersect, SpherePacketFindsTheHitsOfTheExactQuadratic)
+{
+    // The packet test takes c = |f|^2 - r^2 exactly only where its near root can lie ahead of the ray; the
+    // scalar test always does where c cancels. Rays leaving a sphere's surface to either side, in every
+    // direction, from small to huge spheres (where c cancels for all of them): the same hits bit for bit.
+    Rng rng(11);
+    int cancelling = 0;
+    for (const float radius : {1.0f, 90.0f, 1000.0f, 1e6f})
+    {
+        const SphereRec sphere{vec3(0.3f, -radius, 2.0f), radius, vec3(0.0f), 0, 0};
+        SpherePacket packet;
+        setLane(packet, 0, sphere, 7);
+        padPacket(packet, 1);
+        for (int i = 0; i < 20000; ++i)
+        {
+            const vec3 n = sampleUniformSphere(rng.next2D());
+            const vec3 onSurface = sphere.center0 + radius * n;
+            const vec3 origin = offsetRayOrigin(onSurface, i % 2 ? n : -n, radius);
+            const TraceRay ray(Ray{origin, sampleUniformSphere(rng.next2D()), 0.0f}, {false, false, false});
+            const vec3 f = origin - sphere.center0;
+            cancelling += std::fabs(glm::dot(f, f) - radius * radius) <
+                          shader::kSphereCancellation * (glm::dot(f, f) + radius * radius);
+            HitRecord fromPacket{kInfinity, kNoIndex, 0.0f, 0.0f};
+            HitRecord fromScalar{kInfinity, kNoIndex, 0.0f, 0.0f};
+            const bool packetHit = intersectPacket(packet, ray, 0.0f, fromPacket);
+            const bool scalarHit = intersectSphere(sphere, ray, 0.0f, fromScalar, 7);
+            ASSERT_EQ(packetHit, scalarHit) << "radius " << radius << ", ray " << i;
+            ASSERT_EQ(fromPacket.t, fromScalar.t) << "radius " << radius << ", ray " << i;
+        }
+    }
+    EXPECT_GT(cancelling, 70000); // the rays this is about: c cancels for nearly all of them
 }
 
 TEST(Intersect, DegenerateTriangleIsNeverHit)
