@@ -17,6 +17,11 @@ RT_SHADER_NAMESPACE_BEGIN
 /// Below this |c| / (|f|^2 + r^2), float's c has lost more than ~1e-4 of itself: take the exact path.
 RT_CONST(float, kSphereCancellation, 1.0f / 1024.0f)
 
+/// gamma(8) = 8u / (1 - 8u), u = 2^-24: the rounding error of float's c = f.f - r^2 (with f = o - centre
+/// rounded too), relative to f.f + r^2 (Pharr, Jakob & Humphreys, PBR 4th ed. §6.8). A root nearer 0 than
+/// this error over |q| cannot be told from 0; a float c larger than it has a sure sign.
+RT_CONST(float, kSphereRootError, 4.7684e-7f)
+
 /// a * a = hi + lo exactly (Dekker's product through Veltkamp's split by 2^12 + 1); |a| < 1e34.
 RT_FN vec2 exactSquare(float a)
 {
@@ -56,6 +61,21 @@ RT_FN float sphereQuadraticC(vec3 f, float r)
     s = exactSum(s.x, -r2.x);
     lost += s.y - r2.y;
     return s.x + lost;
+}
+
+/// c for the near root c / q of the ray-sphere quadratic (q = -(b + sign(b) sqrt(a disc)), the far root q / a
+/// needs no c): sphereQuadraticC's exact path only where the near root can lie ahead of the ray, that is
+/// where c's sign is unsure or matches q's. A ray leaving a sphere's surface (every refraction through glass)
+/// has a c that cancels but a sure sign opposite to q's: its near root is behind it with either c, and the
+/// roots it yields decide the same hit bit for bit.
+RT_FN float sphereQuadraticCForNearRoot(vec3 f, float r, float q)
+{
+    const float ff = dot(f, f);
+    const float rr = r * r;
+    const float c = ff - rr;
+    const bool oppositeSigns = (c > 0.0f && q < 0.0f) || (c < 0.0f && q > 0.0f);
+    const bool surelyBehind = abs(c) > kSphereRootError * (ff + rr) && oppositeSigns;
+    return surelyBehind ? c : sphereQuadraticC(f, r);
 }
 
 RT_SHADER_NAMESPACE_END

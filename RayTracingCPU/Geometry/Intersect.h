@@ -11,9 +11,7 @@
 
 namespace rt::cpu
 {
-/// gamma(8) = 8u / (1 - 8u), u = 2^-24: the relative rounding error bound of the sphere's c = f.f - r^2 (Pharr,
-/// Jakob & Humphreys, PBR 4th ed. §6.8). Shared with Shaders/Geometry/Sphere.glsl.
-inline constexpr float kSphereRootError = 4.7684e-7f;
+using shader::kSphereRootError;
 
 /// Sphere at the ray's time. Hearn & Baker's discriminant (the closest approach l is formed before squaring)
 /// with Press et al.'s stable roots: Haines, Günther & Akenine-Möller, "Precision Improvements for Ray/Sphere

@@ -94,12 +94,9 @@ inline bool intersectPacket(const SpherePacket& p, const TraceRay& r, float tMin
     const Lanes ff = fx * fx + fy * fy + fz * fz;
     Lanes c = ff - r2;
     const Lanes q = -(b + copysign(sqrt(max(disc, Lanes(0.0f)) * Lanes(r.directionLength2)), b));
-    // Where c cancels (near a huge sphere's surface), the lanes take sphereQuadraticC's exact path one by one,
-    // and c is then right to a few ulps instead of a few %. c enters only the near root c / q, and a lane
-    // needs it only where that root can lie ahead: where c's sign is unsure (|c| within kSphereRootError's
-    // bound of its rounding) or matches q's. A ray leaving a sphere's surface (glass: every refraction) has a
-    // c that cancels but a sure sign opposite to q's, so its near root is behind it with either c, and the
-    // hit is the same bit for bit without the exact path.
+    // Where c cancels (near a huge sphere's surface) and the near root c / q may lie ahead, the lanes take
+    // sphereQuadraticC's exact path one by one: sphereQuadraticCForNearRoot's rule, lane by lane (a ray
+    // leaving a sphere's surface, as every refraction through glass, needs no exact c).
     const Lanes zero(0.0f);
     const Lanes surelyBehind = (abs(c) > Lanes(kSphereRootError) * (ff + r2)) &
                                (((c > zero) & (q < zero)) | ((c < zero) & (q > zero)));

@@ -7,10 +7,6 @@
 #include "Math/Constants.glsl"
 #include "Shared/SphereQuadratic.h"
 
-// Rounding error of c = f.f - r^2 (with f = o - center rounded too), relative to f.f + r^2:
-// gamma(8) = 8u / (1 - 8u), u = 2^-24 (the error analysis of Pharr, Jakob & Humphreys, PBR 4th ed. §6.8).
-const float kSphereRootError = 4.7684e-7;
-
 struct SphereRoots
 {
     float t0; // t0 <= t1
@@ -26,7 +22,6 @@ bool sphereRoots(vec3 o, vec3 d, vec3 center, float radius, out SphereRoots root
     float a = dot(d, d);
     float halfB = dot(f, d);
     float r2 = radius * radius;
-    float c = sphereQuadraticC(f, radius); // exact where it cancels: near a huge sphere's surface
     vec3 l = f - (halfB / a) * d; // closest approach of the line to the centre, formed before squaring
     float discriminantOverA = r2 - dot(l, l);
     if (discriminantOverA < 0.0)
@@ -34,6 +29,7 @@ bool sphereRoots(vec3 o, vec3 d, vec3 center, float radius, out SphereRoots root
     float q = -(halfB + (halfB >= 0.0 ? 1.0 : -1.0) * sqrt(a * discriminantOverA));
     if (q == 0.0)
         return false; // the origin is on the sphere and the line only grazes it
+    float c = sphereQuadraticCForNearRoot(f, radius, q); // exact where it cancels and the near root may be ahead
     float r0 = c / q;
     float r1 = q / a;
     roots.t0 = min(r0, r1);

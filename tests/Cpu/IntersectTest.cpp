@@ -76,8 +76,8 @@ TEST(Intersect, HugeGroundSphereIsHitWhereItIs)
 
 TEST(Intersect, SpherePacketFindsTheHitsOfTheExactQuadratic)
 {
-    // The packet test takes c = |f|^2 - r^2 exactly only where its near root can lie ahead of the ray; the
-    // scalar test always does where c cancels. Rays leaving a sphere's surface to either side, in every
+    // The packet test (and the GPU's, through sphereQuadraticCForNearRoot) takes c = |f|^2 - r^2 exactly only
+    // where its near root can lie ahead of the ray; the scalar test always does where c cancels. Rays leaving a sphere's surface to either side, in every
     // direction, from small to huge spheres (where c cancels for all of them): the same hits bit for bit.
     Rng rng(11);
     int cancelling = 0;
@@ -102,7 +102,17 @@ TEST(Intersect, SpherePacketFindsTheHitsOfTheExactQuadratic)
             const bool scalarHit = intersectSphere(sphere, ray, 0.0f, fromScalar, 7);
             ASSERT_EQ(packetHit, scalarHit) << "radius " << radius << ", ray " << i;
             ASSERT_EQ(fromPacket.t, fromScalar.t) << "radius " << radius << ", ray " << i;
-        }
+            // The shared rule the GPU's sphere test uses: the exact c, or a near root behind the ray with both.
+            const float b = glm::dot(f, ray.direction);
+            const vec3 l = f - b * ray.direction;
+            const float disc = radius * radius - glm::dot(l, l);
+            if (disc < 0.0f)
+                continue;
+            const float q = -(b + std::copysign(std::sqrt(disc), b));
+            const float cRule = shader::sphereQuadraticCForNearRoot(f, radius, q);
+            const float cExact = shader::sphereQuadraticC(f, radius);
+            ASSERT_TRUE(cRule == cExact || (cRule / q < 0.0f && cExact / q < 0.0f))
+                << "radius " << radius << ", ray " << i << ": c " << cRule << " against " << cExact << ", q " << q;
     }
     EXPECT_GT(cancelling, 70000); // the rays this is about: c cancels for nearly all of them
 }
