@@ -113,6 +113,7 @@ TEST(Intersect, SpherePacketFindsTheHitsOfTheExactQuadratic)
             const float cExact = shader::sphereQuadraticC(f, radius);
             ASSERT_TRUE(cRule == cExact || (cRule / q < 0.0f && cExact / q < 0.0f))
                 << "radius " << radius << ", ray " << i << ": c " << cRule << " against " << cExact << ", q " << q;
+        }
     }
     EXPECT_GT(cancelling, 70000); // the rays this is about: c cancels for nearly all of them
 }
