@@ -64,6 +64,36 @@ inline int nearestLane(Lanes mask, Lanes t)
     return std::countr_zero(static_cast<unsigned>(movemask(masked == horizontalMin(masked)) & bits));
 }
 
+/// sphereQuadraticC's exact path (Shared/SphereQuadratic.h: Dekker's products, Knuth's sums) in every lane at
+/// once: the same operations in the same order, so the same bits as the scalar function.
+inline Lanes exactSphereC(Lanes fx, Lanes fy, Lanes fz, Lanes radius)
+{
+    struct Pair
+    {
+        Lanes value, error;
+    };
+    const auto square = [](Lanes a) {
+        const Lanes split = Lanes(4097.0f) * a;
+        const Lanes hi = split - (split - a);
+        const Lanes lo = a - hi;
+        const Lanes p = a * a;
+        return Pair{p, ((hi * hi - p) + Lanes(2.0f) * hi * lo) + lo * lo};
+    };
+    const auto sum = [](Lanes s, Lanes t) {
+        const Lanes total = s + t;
+        const Lanes tPart = total - s;
+        return Pair{total, (s - (total - tPart)) + (t - tPart)};
+    };
+    const Pair x = square(fx), y = square(fy), z = square(fz), r2 = square(radius);
+    Pair s = sum(x.value, y.value);
+    Lanes lost = s.error + x.error + y.error;
+    s = sum(s.value, z.value);
+    lost = lost + (s.error + z.error);
+    s = sum(s.value, -r2.value);
+    lost = lost + (s.error - r2.error);
+    return s.value + lost;
+}
+
 /// Records the nearest lane of `t` among `mask` in `hit`; true if there was one.
 inline bool takeNearest(Lanes mask, Lanes t, Lanes b1, Lanes b2, const std::uint32_t prim[kLanes], HitRecord& hit)
 {
@@ -100,14 +130,9 @@ inline bool intersectPacket(const SpherePacket& p, const TraceRay& r, float tMin
     const Lanes zero(0.0f);
     const Lanes surelyBehind = (abs(c) > Lanes(kSphereRootError) * (ff + r2)) &
                                (((c > zero) & (q < zero)) | ((c < zero) & (q > zero)));
-    if (const int cancelled =
-            movemask(andNot(surelyBehind, valid & (abs(c) < Lanes(shader::kSphereCancellation) * (ff + r2)))))
-    {
-        alignas(32) float exact[kLanes];
-        for (int i = 0; i < kLanes; ++i)
-            exact[i] = (cancelled >> i) & 1 ? shader::sphereQuadraticC(vec3(fx[i], fy[i], fz[i]), p.radius[i]) : c[i];
-        c = Lanes::load(exact);
-    }
+    const Lanes cancelled = andNot(surelyBehind, valid & (abs(c) < Lanes(shader::kSphereCancellation) * (ff + r2)));
+    if (movemask(cancelled))
+        c = select(cancelled, detail::exactSphereC(fx, fy, fz, Lanes::load(p.radius)), c);
     const Lanes t0 = c / q;
     const Lanes t1 = q * Lanes(r.invDirectionLength2);
     const Lanes tNear = min(t0, t1), tFar = max(t0, t1);
