@@ -124,9 +124,9 @@ inline bool intersectPacket(const SpherePacket& p, const TraceRay& r, float tMin
     const Lanes ff = fx * fx + fy * fy + fz * fz;
     Lanes c = ff - r2;
     const Lanes q = -(b + copysign(sqrt(max(disc, Lanes(0.0f)) * Lanes(r.directionLength2)), b));
-    // Where c cancels (near a huge sphere's surface) and the near root c / q may lie ahead, the lanes take
-    // sphereQuadraticC's exact path one by one: sphereQuadraticCForNearRoot's rule, lane by lane (a ray
-    // leaving a sphere's surface, as every refraction through glass, needs no exact c).
+    // Where c cancels (near a huge sphere's surface) and the near root c / q may lie ahead, those lanes take
+    // the exact c: sphereQuadraticCForNearRoot's rule, lane by lane (a ray leaving a sphere's surface, as
+    // every refraction through glass, needs no exact c).
     const Lanes zero(0.0f);
     const Lanes surelyBehind = (abs(c) > Lanes(kSphereRootError) * (ff + r2)) &
                                (((c > zero) & (q < zero)) | ((c < zero) & (q > zero)));
