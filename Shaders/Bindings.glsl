@@ -1,12 +1,15 @@
-// Descriptor set 0 of the ray-tracing pipeline, as HostDevice.h numbers it. Every stage includes this one
-// declaration; the engine makes every binding visible to every ray-tracing stage.
-// Needs GL_EXT_ray_tracing, GL_EXT_scalar_block_layout and GL_EXT_nonuniform_qualifier.
+// Descriptor set 0 of the path tracer, as HostDevice.h numbers it. Every stage includes this one declaration;
+// the engine makes every binding visible to every ray-tracing stage and to the wavefront's compute kernels.
+// Needs GL_EXT_scalar_block_layout and GL_EXT_nonuniform_qualifier, and GL_EXT_ray_tracing in a ray-tracing
+// stage; a compute kernel defines RT_COMPUTE_KERNEL first (it sees neither the TLAS nor a launch).
 #ifndef RT_BINDINGS_GLSL
 #define RT_BINDINGS_GLSL
 
 #include "Shared/HostDevice.h"
 
+#ifndef RT_COMPUTE_KERNEL
 layout(binding = kBindingTlas) uniform accelerationStructureEXT tlas;
+#endif
 layout(binding = kBindingAccumulation, rgba32f) uniform image2D accumulation; // rgb: radiance sum, a: samples
 layout(binding = kBindingUniforms, scalar) uniform UniformBlock { RenderUniforms uniforms; };
 layout(binding = kBindingMaterials, scalar) readonly buffer MaterialBlock { MaterialData materials[]; };
@@ -32,14 +35,40 @@ layout(binding = kBindingMixtureLights, scalar) uniform MixtureLightBlock
 // rgb: what the float sum above lost to rounding (Kahan), to subtract from the next sample; a: unused.
 layout(binding = kBindingCompensation, rgba32f) uniform image2D compensation;
 layout(binding = kBindingImages) uniform sampler2D images[];
+layout(binding = kBindingWavePaths, scalar) buffer WavePathBlock { WavePath wavePaths[]; };
+layout(binding = kBindingWaveQueues, scalar) buffer WaveQueueBlock { uint waveQueues[]; };
+layout(binding = kBindingWaveCounters, scalar) buffer WaveCounterBlock { WaveCounters waveCounters; };
 
 layout(push_constant, scalar) uniform PushBlock { TracePushConstants push; };
 
-/// The image pixel of this invocation: a launch covers a band of rows from push.firstRow, so that one
-/// submit of a large image on a slow device stays short (cancellation waits for a submit).
+#include "Specialization.glsl"
+
+#ifndef RT_COMPUTE_KERNEL
+/// The image pixel of this invocation of the megakernel (RayGen.rgen): a launch covers a band of rows from
+/// push.firstRow, so that one submit of a large image on a slow device stays short (cancellation waits for a
+/// submit).
 uvec2 launchPixel() { return gl_LaunchIDEXT.xy + uvec2(0u, push.firstRow); }
 
-#include "Specialization.glsl"
+/// The pixel and the sample index of the path whose ray this invocation traces, for the intersection shaders,
+/// which cannot read the payload: in the wavefront, the path of the launch's queue entry; in the megakernel,
+/// the launch's pixel and first sample (a scene whose intersection shaders need the sample, a moving one, is
+/// traced there one sample per launch).
+uvec2 tracedPixel()
+{
+    if (kWavefront)
+    {
+        uint pixel = wavePaths[waveQueues[push.waveQueue * push.waveCapacity + gl_LaunchIDEXT.x]].pixel;
+        return uvec2(pixel % uniforms.width, pixel / uniforms.width);
+    }
+    return launchPixel();
+}
+uint tracedSample()
+{
+    if (kWavefront)
+        return wavePaths[waveQueues[push.waveQueue * push.waveCapacity + gl_LaunchIDEXT.x]].sampleIndex;
+    return push.firstSample;
+}
+#endif
 
 /// Where primitiveLights[] says which light primitive `primitive` of a record is (its entry may be kNoIndex),
 /// or kNoIndex when no primitive of the record is a light (InstanceRecord::firstPrimitiveLight). Hit shaders

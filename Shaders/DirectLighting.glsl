@@ -1,8 +1,8 @@
 // Next-event estimation at a diffuse or isotropic vertex: the GLSL twin of estimateDirect in
 // RayTracingCPU/Integrator/PathIntegrator.h, on the shared selection, light sampler and MIS weight, cut in two
-// here: sampleDirect draws the light sample, Integrator.glsl traces its shadow ray (unoccluded) at the end of
-// the vertex.
-// Needs the shadow payload `shadowVisible` (location kPayloadShadow) and the globals of Bindings.glsl.
+// here: sampleDirect draws the light sample, the integrator traces its shadow ray (Rays.glsl) once the
+// vertex is done with: the megakernel at the end of the vertex, the wavefront in a launch of its own.
+// Needs the globals of Bindings.glsl.
 #ifndef RT_DIRECT_LIGHTING_GLSL
 #define RT_DIRECT_LIGHTING_GLSL
 
@@ -13,22 +13,11 @@
 #include "Shared/Mis.h"
 #include "Textures/Texture.glsl"
 
-/// True when nothing lies between origin and origin + tMax direction: a shadow ray that stops at the first
-/// hit and runs no closest-hit shader, with a payload of one word; only its miss shader (Shadow.rmiss) sets
-/// it. A medium on the way stops it with the probability 1 - transmittance, as on the CPU.
-bool unoccluded(vec3 origin, vec3 direction, float tMax)
-{
-    shadowVisible = 0u;
-    traceRayEXT(tlas, gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT,
-                0xFF, 0, 1, kMissShadow, origin, 0.0, direction, tMax, int(kPayloadShadow));
-    return shadowVisible != 0u;
-}
-
 /// A light sample for next-event estimation seen from `origin`, where the vertex's rays leave (the hit point
 /// offset to the side of the shading normal ns; the point itself in a medium): false when it contributes
 /// nothing; else `contribution` = f cos Le / (pmf pdf) x the MIS weight, valid if the shadow ray (origin,
 /// shadowDirection, shadowDistance) is unoccluded. The caller traces that ray once the vertex is done with
-/// (Integrator.glsl), so that little state lives across the trace. Draws three numbers: the selection, then
+/// (Rays.glsl), so that little state lives across the trace. Draws three numbers: the selection, then
 /// the point.
 bool sampleDirect(vec3 origin, vec3 ns, bool phase, vec3 albedo, bool mis, inout Rng rng, out vec3 contribution,
                   out vec3 shadowDirection, out float shadowDistance)

@@ -14,6 +14,9 @@ layout(constant_id = kSpecIdLightSampler) const uint kSpecLightSampler = kSpecDy
 layout(constant_id = kSpecIdLightSelection) const uint kSpecLightSelection = kSpecDynamic;
 layout(constant_id = kSpecIdSampling) const uint kSpecSampling = kSpecDynamic;
 layout(constant_id = kSpecIdFeatures) const uint kSpecFeatures = kSpecDynamic;
+// Not a render setting: 1 in the wavefront integrator's pipelines, 0 in the megakernel's.
+layout(constant_id = kSpecIdWavefront) const uint kSpecWavefront = 0u;
+const bool kWavefront = kSpecWavefront != 0u;
 
 uint settingEstimator() { return kSpecEstimator != kSpecDynamic ? kSpecEstimator : uniforms.estimator; }
 uint settingLightSampler() { return kSpecLightSampler != kSpecDynamic ? kSpecLightSampler : uniforms.lightSampler; }

@@ -223,12 +223,23 @@ RT_CONST(uint, kBindingLightBvh, 17u)         // LightBvhNode[]: the emitters' l
 RT_CONST(uint, kBindingLightBvhLeaves, 18u)   // uint[]: per emitter, its leaf in LightBvhNode[] (kNoIndex: no power)
 RT_CONST(uint, kBindingCompensation, 19u)     // rgba32f storage image: rgb the Kahan compensation of the sum
 RT_CONST(uint, kBindingMixtureLights, 20u)    // uniform LightData[kMixtureUniformLights]: the first lights again
-RT_CONST(uint, kBindingImages, 21u)           // sampler2D[]: the scene's images, 8-bit sRGB
-RT_CONST(uint, kBindingCount, 22u)
+RT_CONST(uint, kBindingWavePaths, 21u)        // WavePath[]: the wavefront integrator's paths (Shaders/Wavefront/)
+RT_CONST(uint, kBindingWaveQueues, 22u)       // uint[kWaveQueueCount * capacity]: its queues of path indices
+RT_CONST(uint, kBindingWaveCounters, 23u)     // WaveCounters: its queue lengths and indirect launch sizes
+RT_CONST(uint, kBindingImages, 24u)           // sampler2D[]: the scene's images, 8-bit sRGB
+RT_CONST(uint, kBindingCount, 25u)
 // The mixture's pdf reads every light at every vertex, all threads the same light at once: from a uniform
 // buffer (a GPU's constant cache, which broadcasts) when the scene has at most this many. 64 x 104 bytes fit
 // in the 16 KiB that Vulkan guarantees for a uniform buffer range.
 RT_CONST(uint, kMixtureUniformLights, 64u)
+
+// The wavefront integrator (Shaders/Wavefront/, RayTracingGPU/Engine/WavefrontPipeline.h): a launch's paths
+// live in WavePath[] between its kernels; queue 0 and 1 hold the paths to extend at even and odd segments,
+// queue kWaveShadowQueue those with a shadow ray to trace. The compute kernels run kWaveGroupSize threads per
+// workgroup.
+RT_CONST(uint, kWaveQueueCount, 3u)
+RT_CONST(uint, kWaveShadowQueue, 2u)
+RT_CONST(uint, kWaveGroupSize, 64u)
 
 // Shader binding table: two miss records (traceRayEXT's missIndex; each with its payload location), and per
 // TLAS instance a hit-group record offset.
@@ -254,6 +265,9 @@ RT_CONST(uint, kSpecIdLightSelection, 2u) // RenderUniforms::lightSelection
 RT_CONST(uint, kSpecIdSampling, 3u)       // RenderUniforms::sampling
 RT_CONST(uint, kSpecIdFeatures, 4u)       // kFeature* bits
 RT_CONST(uint, kSpecIdCount, 5u)
+// Set by the pipeline's kind, not by the render (not in PipelineSpecialization's key): 1 in the wavefront
+// integrator's pipelines, where the intersection shaders find their path's pixel and sample in the queues.
+RT_CONST(uint, kSpecIdWavefront, 5u)
 
 // The bits of kSpecIdFeatures (PipelineSpecialization.cpp sets them from rt::SceneFeatures and the uniforms).
 RT_CONST(uint, kFeatureTriangles, 0x1u)          // quads or meshes: Triangle.rchit's hit group
@@ -319,6 +333,73 @@ struct TracePushConstants
     uint firstSample; // index of the launch's first sample within the whole render (not the dispatch)
     uint sampleCount;
     uint firstRow; // image row of the launch's row 0: a launch may cover a band of rows (launchPixel())
+    // The wavefront integrator's (0 for the megakernel's RayGen.rgen): a wave is sampleCount samples of each
+    // of wavePixelCount pixels from pixel index (y * width + x) wavePixelBegin on, path p = pixel offset *
+    // sampleCount + sample offset; waveSegment is the segment a kernel extends or shades, waveQueue the queue
+    // a ray-tracing launch reads (its intersection shaders find their path through it), waveCapacity the
+    // paths each queue holds.
+    uint wavePixelBegin;
+    uint wavePixelCount;
+    uint waveSegment;
+    uint waveQueue;
+    uint waveCapacity;
+};
+
+/// What a traced path ray brings back (the payload at kPayloadPath; WavePath::hit in the wavefront). The hit
+/// shaders describe the hit; all shading (textures, materials, the estimator) happens after the trace.
+struct HitPayload
+{
+    vec3 position; // world-space hit point, computed accurately (barycentrics, re-projection)
+    uint material; // kNoIndex: the ray missed
+    vec3 normal; // world-space unit geometric normal, outward (arbitrary inside a medium)
+    uint flags; // kHitMedium
+    vec2 uv;
+    float offsetScale; // offsetRayOrigin's scale: the largest |vertex coordinate| of a triangle, else 1
+    vec3 background; // radiance of the background on a miss
+    uint lightSlot; // primitiveLightSlot of the hit primitive: primitiveLights[lightSlot] is its light, if any
+};
+RT_CONST(uint, kHitMedium, 1u) // HitPayload::flags: scattered inside a constant medium (frontFace, origin = position)
+
+/// One path of a wavefront wave between its kernels: the loop state of PathVertex.glsl's PathState, which
+/// camera sample it is, the hit its last ray found and the shadow ray its last vertex left to trace.
+struct WavePath
+{
+    vec3 origin; // the next ray
+    uint pixel; // y * width + x
+    vec3 direction;
+    uint sampleIndex;
+    vec3 radiance; // gathered so far
+    float pendingSurvival;
+    vec3 beta; // throughput
+    float previousBsdfPdf;
+    vec3 previousPoint;
+    uint rngState;
+    vec3 previousNormal;
+    uint rngSobolSeed;
+    uint rngDimension;
+    uint rngSobol; // 1: Owen-scrambled Sobol draws
+    uint pad0;
+    uint pad1;
+    vec3 shadowOrigin;
+    float shadowDistance;
+    vec3 shadowDirection;
+    uint pad2;
+    vec3 shadowContribution; // added to radiance when the shadow ray is unoccluded
+    uint pad3;
+    HitPayload hit;
+};
+
+/// The wavefront's queue lengths, laid out as the indirect launches read them (VkTraceRaysIndirectCommandKHR,
+/// VkDispatchIndirectCommand): Prepare.comp turns what a shade kernel pushed into the next launches' sizes.
+struct WaveCounters
+{
+    uvec4 extendRays; // x: the paths to extend (queue waveSegment & 1), y = z = 1; w unused
+    uvec4 shadeGroups; // x: workgroups of the shade kernel over them, y = z = 1
+    uvec4 shadowRays; // x: the shadow rays to trace (queue kWaveShadowQueue), y = z = 1
+    uint pushed; // paths the shade kernel queued for the next segment
+    uint shadowsPushed; // shadow rays it queued
+    uint pad0;
+    uint pad1;
 };
 
 /// What the shaders need to find one TLAS instance's geometry, at instanceCustomIndex in InstanceRecord[].
@@ -422,7 +503,10 @@ static_assert(sizeof(RenderUniforms) == 176);
 static_assert(sizeof(LightBvhNode) == 48);
 static_assert(offsetof(RenderUniforms, background0) == 96);
 static_assert(offsetof(RenderUniforms, sampling) == 128);
-static_assert(sizeof(TracePushConstants) == 12);
+static_assert(sizeof(TracePushConstants) == 32);
+static_assert(sizeof(HitPayload) == 60);
+static_assert(sizeof(WavePath) == 160 + sizeof(HitPayload));
+static_assert(sizeof(WaveCounters) == 64 && offsetof(WaveCounters, shadowRays) == 32);
 static_assert(sizeof(InstanceRecord) == 32);
 static_assert(sizeof(SphereRecord) == 32);
 static_assert(offsetof(SphereRecord, center1) == 16);

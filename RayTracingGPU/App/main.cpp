@@ -218,6 +218,13 @@ int main(int argc, char** argv)
                    "them at run time")
         ->check(CLI::IsMember({"on", "strategy", "off"}))
         ->capture_default_str();
+    std::string integrator = "megakernel";
+    app.add_option("--integrator", integrator,
+                   "GPU: megakernel runs each camera sample's whole path in one ray-tracing invocation; wavefront "
+                   "runs kernels per segment over waves of paths (path rays, shading in a compute kernel, shadow "
+                   "rays), the same estimator and the same image within noise (docs/GPU.md)")
+        ->check(CLI::IsMember({"megakernel", "wavefront"}))
+        ->capture_default_str();
     WindowFlags window;
     addWindowOptions(app, window);
 
@@ -244,7 +251,8 @@ int main(int argc, char** argv)
             return rt::app::runComparison(job.scene, job.request, c, [&](rt::EngineKind kind) -> std::unique_ptr<rt::RenderEngine> {
                 if (kind == rt::EngineKind::Gpu)
                     return std::make_unique<rt::gpu::GpuEngine>(rt::gpu::GpuEngineOptions{
-                        .deviceIndex = device, .validation = validation, .specialize = specializeMode(specialize)});
+                        .deviceIndex = device, .validation = validation, .specialize = specializeMode(specialize),
+                        .integrator = *rt::gpu::parseIntegrator(integrator)});
                 return std::make_unique<rt::cpu::CpuEngine>(kind);
             });
         }
@@ -252,7 +260,8 @@ int main(int argc, char** argv)
             return runWindow(options, window, device, validation);
         rt::checkOutputPaths(options);
         const rt::CommandLineRender job = rt::resolveCommandLine(options);
-        rt::gpu::GpuEngine gpu({.deviceIndex = device, .validation = validation, .specialize = specializeMode(specialize)});
+        rt::gpu::GpuEngine gpu({.deviceIndex = device, .validation = validation, .specialize = specializeMode(specialize),
+                        .integrator = *rt::gpu::parseIntegrator(integrator)});
         const int status = rt::runHeadless(gpu, job.scene, job.request, options);
         if (gpu.validationMessages() > 0)
         {

@@ -55,7 +55,8 @@ struct GpuEngine::Impl
     explicit Impl(const GpuEngineOptions& options)
         : context({options.deviceIndex, options.validation, options.presentation}),
           tracer(context.device(), context.commandPool(),
-                 options.shaderDir.empty() ? executableDir() / "shaders" : options.shaderDir, options.specialize),
+                 options.shaderDir.empty() ? executableDir() / "shaders" : options.shaderDir, options.specialize,
+                 options.integrator),
           timestamps(context.device(), 4),
           pathsPerBatch(options.pathsPerBatch > 0 ? options.pathsPerBatch
                         : context.device().properties().type == vk::DeviceType::Cpu ? kPathsPerBatchCpu
@@ -162,6 +163,12 @@ const SceneTracer& GpuEngine::tracer() const { return m_impl->tracer; }
 void GpuEngine::setBandRows(std::uint32_t rows) { m_impl->fixedBandRows = rows; }
 
 void GpuEngine::setSpecialize(Specialize specialize) { m_impl->tracer.setSpecialize(specialize); }
+
+void GpuEngine::setIntegrator(GpuIntegrator integrator, std::uint32_t waveCapacity)
+{
+    m_impl->descriptors = {}; // they name the old wave buffers
+    m_impl->tracer.setIntegrator(integrator, waveCapacity);
+}
 
 const AccelerationStructureBuilds& GpuEngine::accelerationStructureBuilds() const
 {

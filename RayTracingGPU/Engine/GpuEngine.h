@@ -15,6 +15,7 @@
 #include <string>
 
 #include "Engine/GpuContext.h"
+#include "Engine/GpuIntegrator.h"
 #include "Engine/PipelineSpecialization.h"
 #include "Render/RenderEngine.h"
 
@@ -32,6 +33,8 @@ struct GpuEngineOptions
     /// Compile a pipeline per render settings and scene features (PipelineSpecialization.h), per settings only
     /// (Strategy), or one general pipeline for everything (Off).
     Specialize specialize = Specialize::Full;
+    /// How a launch runs the estimator (GpuIntegrator.h).
+    GpuIntegrator integrator = GpuIntegrator::Megakernel;
     /// The window: the device must present to its surface (GpuContext.h). Headless leaves it empty.
     std::optional<Presentation> presentation;
 };
@@ -92,6 +95,9 @@ public:
     const SceneTracer& tracer() const;
     /// GpuEngineOptions::specialize, from the next frame on (pipelines compiled so far are kept).
     void setSpecialize(Specialize specialize);
+    /// GpuEngineOptions::integrator, from the next frame on, with waves of `waveCapacity` paths (0: by the
+    /// device; SceneTracer::setIntegrator).
+    void setIntegrator(GpuIntegrator integrator, std::uint32_t waveCapacity = 0);
     /// true: Specialize::Full, false: Specialize::Off.
     void setSpecialize(bool specialize) { setSpecialize(specialize ? Specialize::Full : Specialize::Off); }
     /// BLAS and TLAS builds so far: a scene whose geometry equals the last one's builds nothing.

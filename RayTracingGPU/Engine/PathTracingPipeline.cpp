@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include "Engine/GpuScene.h"
+#include "Engine/WaveBuffers.h"
 #include "RayTracing/RayTracingPipeline.h"
 #include "Shared/HostDevice.h"
 #include "Vulkan/Barriers.h"
@@ -15,9 +16,6 @@ namespace
 {
 using namespace shader;
 
-constexpr VkShaderStageFlags kRayTracingStages = VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR |
-                                                 VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR |
-                                                 VK_SHADER_STAGE_INTERSECTION_BIT_KHR;
 
 // A scene with more images than this is refused; real scenes have a handful.
 constexpr std::uint32_t kImageArrayCap = 1024;
@@ -33,17 +31,18 @@ std::vector<vk::DescriptorBinding> bindingsOf(std::uint32_t maxImages)
     std::vector<vk::DescriptorBinding> b;
     const auto add = [&](std::uint32_t binding, VkDescriptorType type, std::uint32_t count = 1,
                          VkDescriptorBindingFlags flags = 0) {
-        b.push_back({binding, type, count, kRayTracingStages, flags});
+        b.push_back({binding, type, count, kPathTracerStages, flags});
     };
     add(kBindingTlas, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR);
     add(kBindingAccumulation, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
     add(kBindingCompensation, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
     add(kBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
     add(kBindingMixtureLights, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER);
-    for (std::uint32_t binding : {kBindingMaterials, kBindingTextures, kBindingLights, kBindingPerlin,
-                                  kBindingInstances, kBindingPositions, kBindingUvs, kBindingTriangles,
-                                  kBindingTriangleMaterials, kBindingSpheres, kBindingMedia, kBindingCounters,
-                                  kBindingPrimitiveLights, kBindingLightAlias, kBindingLightBvh, kBindingLightBvhLeaves})
+    for (std::uint32_t binding :
+         {kBindingMaterials, kBindingTextures, kBindingLights, kBindingPerlin, kBindingInstances, kBindingPositions,
+          kBindingUvs, kBindingTriangles, kBindingTriangleMaterials, kBindingSpheres, kBindingMedia, kBindingCounters,
+          kBindingPrimitiveLights, kBindingLightAlias, kBindingLightBvh, kBindingLightBvhLeaves, kBindingWavePaths,
+          kBindingWaveQueues, kBindingWaveCounters})
         add(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     add(kBindingImages, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, maxImages,
         VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT | VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT);
@@ -65,7 +64,7 @@ vk::PipelineLayout layoutOf(const vk::Device& device, const vk::DescriptorSetLay
     if (costSet.Handle() != VK_NULL_HANDLE)
         sets.push_back(costSet.Handle());
     static_assert(kSetCost == 1);
-    return vk::PipelineLayout(device, sets, sizeof(TracePushConstants), kRayTracingStages);
+    return vk::PipelineLayout(device, sets, sizeof(TracePushConstants), kPathTracerStages);
 }
 
 vk::DescriptorSetLayout setLayoutOf(const vk::Device& device, const std::vector<vk::DescriptorBinding>& bindings)
@@ -138,7 +137,7 @@ void PathTracingPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDe
     {
         const std::uint32_t samples = std::min(count - done, std::max(samplesPerLaunch, 1u));
         const TracePushConstants push{firstSample + done, samples, firstRow};
-        vkCmdPushConstants(cmd, m_layout.Handle(), kRayTracingStages, 0, sizeof(push), &push);
+        vkCmdPushConstants(cmd, m_layout.Handle(), kPathTracerStages, 0, sizeof(push), &push);
         vkCmdTraceRaysKHR(cmd, &sbt.raygen(), &sbt.miss(), &sbt.hit(), &sbt.callable(), extent.width,
                           extent.height, 1);
         // The launch reads and writes its pixels of the accumulation image: order it before the next one.
@@ -150,7 +149,7 @@ void PathTracingPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDe
 }
 
 void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescriptorSet set, const GpuScene& scene,
-                                           const TargetBindings& target) const
+                                           const TargetBindings& target, const WaveBuffers& waves) const
 {
     const VkAccelerationStructureKHR tlas = scene.tlas();
     VkWriteDescriptorSetAccelerationStructureKHR tlasInfo{
@@ -177,6 +176,9 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
         {kBindingTriangleMaterials, &buffers.triangleMaterials},
         {kBindingSpheres, &buffers.spheres},
         {kBindingMedia, &buffers.media},
+        {kBindingWavePaths, &waves.paths()},
+        {kBindingWaveQueues, &waves.queues()},
+        {kBindingWaveCounters, &waves.counters()},
     };
     std::vector<VkDescriptorBufferInfo> bufferInfos;
     bufferInfos.reserve(std::size(storage) + 3);

@@ -25,6 +25,13 @@
 namespace rt::gpu
 {
 class GpuScene;
+class WaveBuffers;
+
+/// Every stage of the path tracer: the ray-tracing stages and the wavefront's compute kernels. Set 0 and the
+/// push constants are visible to all of them.
+inline constexpr VkShaderStageFlags kPathTracerStages =
+    VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_MISS_BIT_KHR | VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR |
+    VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_COMPUTE_BIT;
 
 /// Where a render writes: bound to kBindingAccumulation, kBindingCompensation, kBindingUniforms and
 /// kBindingCounters.
@@ -80,9 +87,9 @@ public:
     /// Size of the variable-count sampler array (the most images a scene may have).
     std::uint32_t maxImages() const { return m_maxImages; }
 
-    /// Points every binding of `set` at the resources of `scene` and `target`.
+    /// Points every binding of `set` at the resources of `scene`, `target` and `waves`.
     void writeDescriptors(const vk::Device& device, VkDescriptorSet set, const GpuScene& scene,
-                          const TargetBindings& target) const;
+                          const TargetBindings& target, const WaveBuffers& waves) const;
 
     /// Records launches over `extent` tracing `count` camera samples per pixel, sample indices from
     /// `firstSample` on, at most `samplesPerLaunch` of them per launch (each thread loops over its samples:

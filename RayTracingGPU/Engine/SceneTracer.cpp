@@ -2,15 +2,35 @@
 
 #include "Engine/GpuScene.h"
 #include "Engine/Uniforms.h"
+#include "Engine/WavefrontPipeline.h"
 #include "Error.h"
 
 namespace rt::gpu
 {
 SceneTracer::SceneTracer(const vk::Device& device, const vk::CommandPool& pool, std::filesystem::path shaderDir,
-                         Specialize specialize)
+                         Specialize specialize, GpuIntegrator integrator)
     : m_device(&device), m_pool(&pool), m_shaderDir(std::move(shaderDir)),
-      m_pipeline(device, m_shaderDir, RayGenVariant::Radiance, specialize)
+      m_pipeline(device, m_shaderDir, RayGenVariant::Radiance, specialize), m_integrator(GpuIntegrator::Megakernel),
+      m_waves(device, 1)
 {
+    setIntegrator(integrator);
+}
+
+void SceneTracer::setIntegrator(GpuIntegrator integrator, std::uint32_t waveCapacity)
+{
+    const vk::DeviceProperties& p = m_device->properties();
+    const std::uint32_t capacity =
+        integrator == GpuIntegrator::Megakernel ? 1u
+        : waveCapacity > 0                      ? waveCapacity
+                                                : waveCapacityFor(p.type == vk::DeviceType::Cpu, p.deviceLocalHeapSize);
+    if (capacity != m_waves.capacity())
+    {
+        m_waves = WaveBuffers(*m_device, 1); // the old ones go first: both may not fit at once
+        m_waves = WaveBuffers(*m_device, capacity);
+    }
+    if (integrator == GpuIntegrator::Wavefront && !m_wavefront)
+        m_wavefront = std::make_unique<WavefrontPipeline>(*m_device, m_shaderDir, m_pipeline);
+    m_integrator = integrator;
 }
 
 SceneTracer::~SceneTracer() = default;
@@ -44,7 +64,7 @@ TracingDescriptors SceneTracer::makeDescriptors(const TargetBindings& target) co
     const auto imageCount = static_cast<std::uint32_t>(scene.imageViews().size());
     TracingDescriptors d{vk::DescriptorPool(*m_device, m_pipeline.bindings(), imageCount)};
     d.set = d.pool.allocate(m_pipeline.setLayout(), imageCount);
-    m_pipeline.writeDescriptors(*m_device, d.set, scene, target);
+    m_pipeline.writeDescriptors(*m_device, d.set, scene, target, m_waves);
     return d;
 }
 
@@ -57,6 +77,8 @@ shader::RenderUniforms SceneTracer::uniforms(const CameraDesc& camera, const Ren
 
 bool SceneTracer::prepare(const shader::RenderUniforms& uniforms) const
 {
+    if (m_integrator == GpuIntegrator::Wavefront)
+        return m_wavefront->prepare(uniforms, gpuScene().pipelineScene());
     return m_pipeline.prepare(uniforms, gpuScene().pipelineScene());
 }
 
@@ -65,6 +87,12 @@ void SceneTracer::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptor
                                VkExtent2D extent, const PathTracingPipeline* variant, std::uint32_t firstRow) const
 {
     const GpuScene& scene = gpuScene();
+    if (m_integrator == GpuIntegrator::Wavefront && !variant)
+    {
+        m_wavefront->recordLaunch(cmd, sets, uniforms, scene.pipelineScene(), firstSample, count, extent, firstRow,
+                                  m_waves);
+        return;
+    }
     (variant ? *variant : m_pipeline)
         .recordLaunch(cmd, sets, uniforms, scene.pipelineScene(), firstSample, count, extent, scene.samplesPerLaunch(),
                       firstRow);

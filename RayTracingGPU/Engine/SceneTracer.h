@@ -11,7 +11,9 @@
 #include <memory>
 #include <span>
 
+#include "Engine/GpuIntegrator.h"
 #include "Engine/PathTracingPipeline.h"
+#include "Engine/WaveBuffers.h"
 #include "Render/RenderSettings.h"
 #include "Scene/Scene.h"
 #include "Shared/HostDevice.h"
@@ -21,6 +23,7 @@
 namespace rt::gpu
 {
 class GpuScene;
+class WavefrontPipeline;
 
 /// A descriptor set of the pipeline's set 0 and the pool it lives in (freed together).
 struct TracingDescriptors
@@ -41,10 +44,11 @@ class SceneTracer final
 {
 public:
     /// Loads the SPIR-V in `shaderDir`; a render's pipeline is compiled for its settings and scene when it
-    /// first needs it (PathTracingPipeline), or once for all with Specialize::Off. Throws rt::AssetError (a
-    /// shader is missing), rt::DeviceError (the driver rejects a module).
+    /// first needs it (PathTracingPipeline), or once for all with Specialize::Off. Launches run `integrator`
+    /// (the wavefront's memory is allocated here). Throws rt::AssetError (a shader is missing),
+    /// rt::DeviceError (the driver rejects a module, or the wavefront's memory does not fit).
     SceneTracer(const vk::Device& device, const vk::CommandPool& pool, std::filesystem::path shaderDir,
-                Specialize specialize = Specialize::Full);
+                Specialize specialize = Specialize::Full, GpuIntegrator integrator = GpuIntegrator::Megakernel);
     SceneTracer(const SceneTracer&) = delete;
     SceneTracer& operator=(const SceneTracer&) = delete;
     ~SceneTracer();
@@ -66,6 +70,13 @@ public:
     const PathTracingPipeline& pipeline() const { return m_pipeline; }
     /// PathTracingPipeline::setSpecialize.
     void setSpecialize(Specialize specialize) { m_pipeline.setSpecialize(specialize); }
+    GpuIntegrator integrator() const { return m_integrator; }
+    /// From the next launch on, runs `integrator`, with waves of `waveCapacity` paths (0: waveCapacityFor the
+    /// device). Descriptor sets made before must be dropped and made again: they name the old wave buffers.
+    /// Throws rt::DeviceError when the wave buffers do not fit.
+    void setIntegrator(GpuIntegrator integrator, std::uint32_t waveCapacity = 0);
+    /// Paths per wave of the wavefront integrator (1 while the tracer runs the megakernel).
+    std::uint32_t waveCapacity() const { return m_waves.capacity(); }
     /// Compiles the pipeline a render with `uniforms` of the current scene needs (PathTracingPipeline::prepare);
     /// true when it compiled one.
     bool prepare(const shader::RenderUniforms& uniforms) const;
@@ -75,9 +86,9 @@ public:
     /// The uniforms of an image of `extent` seen by `camera` with `settings` (the current scene's background,
     /// light count).
     shader::RenderUniforms uniforms(const CameraDesc& camera, const RenderSettings& settings, VkExtent2D extent) const;
-    /// Records `count` samples per pixel of `extent` from `firstSample` on (PathTracingPipeline::recordLaunch,
-    /// with the scene's samples per launch), with `sets` bound from set 0, whose uniform buffer holds
-    /// `uniforms`, through `variant` (default: the radiance pipeline). `extent` may be a band of rows from
+    /// Records `count` samples per pixel of `extent` from `firstSample` on, with `sets` bound from set 0, whose
+    /// uniform buffer holds `uniforms`, through `variant` (a megakernel: PathTracingPipeline::recordLaunch, with
+    /// the scene's samples per launch) or else the tracer's integrator. `extent` may be a band of rows from
     /// `firstRow` on.
     void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                       const shader::RenderUniforms& uniforms, std::uint32_t firstSample, std::uint32_t count,
@@ -88,6 +99,9 @@ private:
     const vk::CommandPool* m_pool;
     std::filesystem::path m_shaderDir;
     PathTracingPipeline m_pipeline;
+    GpuIntegrator m_integrator;
+    WaveBuffers m_waves; // one path's worth for the megakernel: the descriptors name them either way
+    std::unique_ptr<WavefrontPipeline> m_wavefront; // the wavefront integrator's, else null
     const Scene* m_sceneDesc = nullptr;
     std::unique_ptr<GpuScene> m_scene;
     AccelerationStructureBuilds m_builds;

@@ -6,6 +6,7 @@
 #include "Shared/HostDevice.h"
 #include "Vulkan/Check.h"
 #include "Vulkan/ShaderModule.h"
+#include "Vulkan/Specialization.h"
 
 namespace rt::gpu
 {
@@ -54,36 +55,37 @@ constexpr Stage kStages[StageCount] = {
 } // namespace
 
 PathTracingShaders::PathTracingShaders(const vk::Device& device, const std::filesystem::path& shaderDir,
-                                       const char* rayGenFile)
+                                       const char* rayGenFile, const char* secondRayGenFile)
 {
     for (const Stage& s : kStages)
         m_modules.emplace_back(device, shaderDir / (s.file ? s.file : rayGenFile));
+    if (secondRayGenFile)
+        m_secondRayGen = vk::ShaderModule(device, shaderDir / secondRayGenFile);
+}
+
+std::uint32_t secondRayGenGroup(const HitGroupLayout& hitGroups)
+{
+    return 1 + kMissGroupCount + hitGroups.count();
 }
 
 vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::PipelineLayout& layout,
                                        const PathTracingShaders& shaders, std::span<const std::uint32_t> constants,
                                        const HitGroupLayout& hitGroups)
 {
-    std::vector<VkSpecializationMapEntry> entries;
-    for (std::uint32_t id = 0; id < constants.size(); ++id)
-        entries.push_back({id, static_cast<std::uint32_t>(id * sizeof(std::uint32_t)), sizeof(std::uint32_t)});
-    VkSpecializationInfo specialization{};
-    specialization.mapEntryCount = static_cast<std::uint32_t>(entries.size());
-    specialization.pMapEntries = entries.data();
-    specialization.dataSize = constants.size_bytes();
-    specialization.pData = constants.data();
+    const vk::Specialization specialization(constants);
 
     // Only the stages of the groups below: a scene without spheres compiles no sphere intersection shader.
     std::vector<VkPipelineShaderStageCreateInfo> stageInfos;
-    const auto stage = [&](StageIndex i) {
+    const auto addStage = [&](VkShaderStageFlagBits stage, const vk::ShaderModule& module) {
         VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-        info.stage = kStages[i].stage;
-        info.module = shaders.modules()[i].Handle();
+        info.stage = stage;
+        info.module = module.Handle();
         info.pName = "main";
-        info.pSpecializationInfo = constants.empty() ? nullptr : &specialization;
+        info.pSpecializationInfo = specialization.info();
         stageInfos.push_back(info);
         return static_cast<std::uint32_t>(stageInfos.size() - 1);
     };
+    const auto stage = [&](StageIndex i) { return addStage(kStages[i].stage, shaders.modules()[i]); };
 
     std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
     groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR));
@@ -112,7 +114,12 @@ vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::Pipel
         groups.back().intersectionShader = stage(MediumIntersection);
         groups.back().closestHitShader = stage(MediumHit);
     }
-    RT_CHECK_EQ(groups.size(), 1 + kMissGroupCount + hitGroups.count());
+    RT_CHECK_EQ(groups.size(), secondRayGenGroup(hitGroups));
+    if (shaders.secondRayGen().Handle() != VK_NULL_HANDLE)
+    {
+        groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR));
+        groups.back().generalShader = addStage(VK_SHADER_STAGE_RAYGEN_BIT_KHR, shaders.secondRayGen());
+    }
 
     VkRayTracingPipelineCreateInfoKHR info{VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR};
     info.stageCount = static_cast<std::uint32_t>(stageInfos.size());

@@ -1,11 +1,13 @@
-// The path tracer's ray-tracing pipeline. Shader groups, in SBT order:
-//   0  raygen   RayGen.rgen         camera samples and the iterative bounce loop (or RayGenCost.rgen: timed)
+// The path tracer's ray-tracing pipelines. Shader groups, in SBT order:
+//   0  raygen   RayGen.rgen         the megakernel: camera samples and the iterative bounce loop (or
+//                                   RayGenCost.rgen: timed; or Wavefront/Extend.rgen: the wavefront's path rays)
 //   1  miss     Background.rmiss    constant or gradient background           = kMissBackground
 //   2  miss     Shadow.rmiss        a shadow ray reached its light           = kMissShadow
 //   then the hit groups a HitGroupLayout names, in its order (each only when the layout has it):
 //      hit      Triangle.rchit      triangle BLASes (meshes, quads)          HitGroupKind::Triangles
 //      hit      Sphere.rint/.rchit  procedural geometry 0 (spheres)          HitGroupKind::Spheres
 //      hit      Medium.rint/.rchit  procedural geometry 1 (constant media)   HitGroupKind::Media
+//   last, in the wavefront's pipeline: a second raygen, Wavefront/Shadow.rgen (its shadow rays)
 // Maximum recursion depth 1: hit shaders never trace, raygen loops over bounces.
 #pragma once
 
@@ -27,16 +29,24 @@ inline constexpr std::uint32_t kMissGroupCount = 2;
 class PathTracingShaders final
 {
 public:
-    /// Loads the stages from `shaderDir`, with `rayGenFile` as group 0. Throws rt::AssetError for a missing or
-    /// malformed shader, rt::DeviceError when the driver rejects a module.
+    /// Loads the stages from `shaderDir`, with `rayGenFile` as group 0 and `secondRayGenFile`, if any, as the
+    /// last group. Throws rt::AssetError for a missing or malformed shader, rt::DeviceError when the driver
+    /// rejects a module.
     PathTracingShaders(const vk::Device& device, const std::filesystem::path& shaderDir,
-                       const char* rayGenFile = "RayGen.rgen.spv");
+                       const char* rayGenFile = "RayGen.rgen.spv", const char* secondRayGenFile = nullptr);
 
     const std::vector<vk::ShaderModule>& modules() const { return m_modules; }
+    /// The second raygen's module; a null handle when there is none.
+    const vk::ShaderModule& secondRayGen() const { return m_secondRayGen; }
 
 private:
     std::vector<vk::ShaderModule> m_modules; // in the order of the stages above
+    vk::ShaderModule m_secondRayGen;
 };
+
+/// The shader group of the second raygen of a pipeline with `hitGroups` (after the first raygen, the miss
+/// groups and the hit groups).
+std::uint32_t secondRayGenGroup(const HitGroupLayout& hitGroups);
 
 /// Compiles the pipeline from `shaders` with the specialization constants `constants` (constant id i takes
 /// constants[i], in every stage; ids a stage does not declare are ignored) and the hit groups of `hitGroups`

@@ -28,11 +28,11 @@ SbtLayout computeSbtLayout(std::uint32_t handleSize, std::uint32_t handleAlignme
 }
 
 SbtPlan planSbt(std::uint32_t handleSize, std::uint32_t handleAlignment, std::uint32_t baseAlignment,
-                std::uint32_t missCount, std::span<const std::uint32_t> hitRecordGroups)
+                std::uint32_t missCount, std::span<const std::uint32_t> hitRecordGroups, std::uint32_t rayGenGroup)
 {
     const auto hitCount = static_cast<std::uint32_t>(hitRecordGroups.size());
     SbtPlan plan{computeSbtLayout(handleSize, handleAlignment, baseAlignment, missCount, hitCount), {}};
-    plan.copies.push_back({plan.layout.raygen.offset, 0});
+    plan.copies.push_back({plan.layout.raygen.offset, rayGenGroup});
     for (std::uint32_t i = 0; i < missCount; ++i)
         plan.copies.push_back({plan.layout.miss.offset + i * plan.layout.miss.stride, 1 + i});
     for (std::uint32_t i = 0; i < hitCount; ++i)
@@ -41,13 +41,15 @@ SbtPlan planSbt(std::uint32_t handleSize, std::uint32_t handleAlignment, std::ui
 }
 
 ShaderBindingTable::ShaderBindingTable(const vk::Device& device, VkPipeline pipeline, std::uint32_t groupCount,
-                                       std::uint32_t missCount, std::span<const std::uint32_t> hitRecordGroups)
+                                       std::uint32_t missCount, std::span<const std::uint32_t> hitRecordGroups,
+                                       std::uint32_t rayGenGroup)
 {
     const auto& properties = device.properties().rayTracing;
     const std::uint32_t handleSize = properties.shaderGroupHandleSize;
     const std::uint32_t baseAlignment = properties.shaderGroupBaseAlignment;
     const SbtPlan plan =
-        planSbt(handleSize, properties.shaderGroupHandleAlignment, baseAlignment, missCount, hitRecordGroups);
+        planSbt(handleSize, properties.shaderGroupHandleAlignment, baseAlignment, missCount, hitRecordGroups,
+                rayGenGroup);
     const SbtLayout& layout = plan.layout;
 
     std::vector<std::uint8_t> handles(std::size_t(groupCount) * handleSize);

@@ -45,18 +45,21 @@ struct SbtPlan
     std::vector<Copy> copies;
 };
 
-/// Raygen is group 0, miss record i group 1 + i, hit record i group hitRecordGroups[i]. Pure.
+/// Raygen is group `rayGenGroup`, miss record i group 1 + i, hit record i group hitRecordGroups[i]. Pure.
 SbtPlan planSbt(std::uint32_t handleSize, std::uint32_t handleAlignment, std::uint32_t baseAlignment,
-                std::uint32_t missCount, std::span<const std::uint32_t> hitRecordGroups);
+                std::uint32_t missCount, std::span<const std::uint32_t> hitRecordGroups,
+                std::uint32_t rayGenGroup = 0);
 
 class ShaderBindingTable final
 {
 public:
     ShaderBindingTable() = default;
     /// Fetches the handles of `pipeline`'s `groupCount` groups (raygen first, then the `missCount` miss groups)
-    /// and writes them into a new buffer as planSbt places them: hit record i gets group hitRecordGroups[i].
+    /// and writes them into a new buffer as planSbt places them: the raygen record gets group `rayGenGroup`
+    /// (a pipeline may have a second raygen), hit record i group hitRecordGroups[i].
     ShaderBindingTable(const vk::Device& device, VkPipeline pipeline, std::uint32_t groupCount,
-                       std::uint32_t missCount, std::span<const std::uint32_t> hitRecordGroups);
+                       std::uint32_t missCount, std::span<const std::uint32_t> hitRecordGroups,
+                       std::uint32_t rayGenGroup = 0);
     ShaderBindingTable(const ShaderBindingTable&) = delete;
     ShaderBindingTable& operator=(const ShaderBindingTable&) = delete;
     ShaderBindingTable(ShaderBindingTable&&) noexcept = default;

@@ -42,6 +42,7 @@ Device::Device(const PhysicalDevice& physical, bool presentation)
     as.pNext = &v12;
     VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
     rt.rayTracingPipeline = VK_TRUE;
+    rt.rayTracingPipelineTraceRaysIndirect = VK_TRUE;
     rt.pNext = &as;
     VkPhysicalDeviceShaderClockFeaturesKHR clock{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_CLOCK_FEATURES_KHR};
     clock.shaderSubgroupClock = VK_TRUE;

@@ -15,6 +15,7 @@ struct DeviceFeatures
 {
     bool accelerationStructure = false;
     bool rayTracingPipeline = false;
+    bool rayTracingPipelineTraceRaysIndirect = false; // the wavefront integrator's launches
     bool bufferDeviceAddress = false;
     bool runtimeDescriptorArray = false;
     bool shaderSampledImageArrayNonUniformIndexing = false;
@@ -37,6 +38,8 @@ inline constexpr FeatureRequirement kRequiredFeatures[] = {
     {"VkPhysicalDeviceAccelerationStructureFeaturesKHR", "accelerationStructure",
      &DeviceFeatures::accelerationStructure},
     {"VkPhysicalDeviceRayTracingPipelineFeaturesKHR", "rayTracingPipeline", &DeviceFeatures::rayTracingPipeline},
+    {"VkPhysicalDeviceRayTracingPipelineFeaturesKHR", "rayTracingPipelineTraceRaysIndirect",
+     &DeviceFeatures::rayTracingPipelineTraceRaysIndirect},
     {"VkPhysicalDeviceVulkan12Features", "bufferDeviceAddress", &DeviceFeatures::bufferDeviceAddress},
     {"VkPhysicalDeviceVulkan12Features", "runtimeDescriptorArray", &DeviceFeatures::runtimeDescriptorArray},
     {"VkPhysicalDeviceVulkan12Features", "shaderSampledImageArrayNonUniformIndexing",

@@ -69,6 +69,8 @@
     X(vkCmdBindDescriptorSets)                                                                                 \
     X(vkCmdPushConstants)                                                                                      \
     X(vkCmdDispatch)                                                                                           \
+    X(vkCmdDispatchIndirect)                                                                                   \
+    X(vkCmdFillBuffer)                                                                                         \
     X(vkCmdWriteTimestamp)                                                                                     \
     X(vkCmdResetQueryPool)                                                                                     \
     X(vkCreateQueryPool)                                                                                       \
@@ -94,6 +96,7 @@
     X(vkCreateRayTracingPipelinesKHR)                                                                          \
     X(vkGetRayTracingShaderGroupHandlesKHR)                                                                    \
     X(vkCmdTraceRaysKHR)                                                                                       \
+    X(vkCmdTraceRaysIndirectKHR)                                                                               \
     X(vkResetFences)                                                                                           \
     X(vkResetCommandBuffer)                                                                                    \
     X(vkCreateSemaphore)                                                                                       \

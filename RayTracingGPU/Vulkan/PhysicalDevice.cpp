@@ -69,6 +69,7 @@ DeviceFeatures queryFeatures(VkPhysicalDevice device, std::uint32_t apiVersion, 
     vkGetPhysicalDeviceFeatures2(device, &features);
     f.accelerationStructure = as.accelerationStructure;
     f.rayTracingPipeline = rt.rayTracingPipeline;
+    f.rayTracingPipelineTraceRaysIndirect = rt.rayTracingPipelineTraceRaysIndirect;
     f.bufferDeviceAddress = v12.bufferDeviceAddress;
     f.runtimeDescriptorArray = v12.runtimeDescriptorArray;
     f.shaderSampledImageArrayNonUniformIndexing = v12.shaderSampledImageArrayNonUniformIndexing;

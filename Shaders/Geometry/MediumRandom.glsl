@@ -1,6 +1,6 @@
 // The uniform number that decides where a ray scatters inside a constant medium. An intersection shader
 // cannot read the payload (the path's Rng), so the number is a PCG hash of what the shader can see: the
-// launch (pixel), the ray in object space (bits of origin and direction: distinct per path segment, and per
+// path's pixel (tracedPixel()), the ray in object space (bits of origin and direction: distinct per path segment, and per
 // sample, whose camera rays differ by their jitter), the instance and primitive. Deterministic: an
 // implementation may run an intersection shader more than once per ray and primitive, and must get the same
 // answer each time. Not the sample index: the shader sees only the first sample of its launch

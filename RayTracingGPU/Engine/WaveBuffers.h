@@ -1,0 +1,36 @@
+// The wavefront integrator's memory (HostDevice.h WavePath, WaveCounters; Shaders/Wavefront/): the state of
+// `capacity` paths, kWaveQueueCount queues of as many path indices, and the counters its indirect launches
+// read. Bound at kBindingWavePaths, kBindingWaveQueues and kBindingWaveCounters of every descriptor set the
+// tracer makes (a megakernel-only tracer binds buffers of one path).
+#pragma once
+
+#include <cstdint>
+
+#include "Vulkan/Buffer.h"
+
+namespace rt::gpu
+{
+/// Paths a wave holds on a device with `deviceLocalBytes` of device-local memory: 4 M (about 1 GiB) on a GPU
+/// with 16 GiB or more, less on smaller ones, 64 K on a CPU device (lavapipe), where the kernels are short.
+std::uint32_t waveCapacityFor(bool cpuDevice, std::uint64_t deviceLocalBytes);
+
+class WaveBuffers final
+{
+public:
+    /// Throws rt::DeviceError when the device cannot allocate them.
+    WaveBuffers(const vk::Device& device, std::uint32_t capacity);
+    WaveBuffers(WaveBuffers&&) noexcept = default;
+    WaveBuffers& operator=(WaveBuffers&&) noexcept = default;
+
+    std::uint32_t capacity() const { return m_capacity; }
+    const vk::Buffer& paths() const { return m_paths; }
+    const vk::Buffer& queues() const { return m_queues; }
+    const vk::Buffer& counters() const { return m_counters; }
+
+private:
+    std::uint32_t m_capacity;
+    vk::Buffer m_paths;
+    vk::Buffer m_queues;
+    vk::Buffer m_counters;
+};
+} // namespace rt::gpu

@@ -1,0 +1,21 @@
+// One invocation between the wavefront's kernels: the paths and shadow rays the last kernel queued become
+// the sizes of the next indirect launches (WaveCounters), and the counts start again from 0.
+#version 460
+#extension GL_EXT_scalar_block_layout : require
+#extension GL_EXT_nonuniform_qualifier : require
+#extension GL_GOOGLE_include_directive : require
+
+#define RT_COMPUTE_KERNEL
+#include "Bindings.glsl"
+
+layout(local_size_x = 1) in;
+
+void main()
+{
+    uint paths = waveCounters.pushed;
+    waveCounters.extendRays = uvec4(paths, 1u, 1u, 0u);
+    waveCounters.shadeGroups = uvec4((paths + kWaveGroupSize - 1u) / kWaveGroupSize, 1u, 1u, 0u);
+    waveCounters.shadowRays = uvec4(waveCounters.shadowsPushed, 1u, 1u, 0u);
+    waveCounters.pushed = 0u;
+    waveCounters.shadowsPushed = 0u;
+}

@@ -1,0 +1,46 @@
+// The wavefront's vertices: one invocation per path extended at segment push.waveSegment, shaded by
+// PathVertex.glsl, the megakernel's own vertex; a path that goes on is queued for the next segment, a shadow
+// ray for Shadow.rgen.
+#version 460
+#extension GL_EXT_scalar_block_layout : require
+#extension GL_EXT_nonuniform_qualifier : require
+#extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_ballot : require
+
+#define RT_COMPUTE_KERNEL
+#include "Bindings.glsl"
+#include "PathVertex.glsl"
+#include "Wavefront/QueueAppend.glsl"
+#include "Wavefront/WavePath.glsl"
+
+layout(local_size_x = kWaveGroupSize) in;
+
+void main()
+{
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= waveCounters.extendRays.x)
+        return;
+    uint p = waveQueueEntry(push.waveSegment & 1u, i);
+    PathState path = loadPath(p);
+    ShadowRay shadow;
+    bool goesOn = shadePathVertex(path, push.waveSegment, wavePaths[p].hit, shadow);
+    if (goesOn && !(isFiniteVec(path.origin) && isFiniteVec(path.direction)))
+    {
+        path.radiance = vec3(uintBitsToFloat(0x7FC00000u)); // a quiet NaN, as the megakernel returns
+        goesOn = false;
+    }
+    storePath(p, path);
+    if (shadow.pending)
+    {
+        wavePaths[p].shadowOrigin = shadow.origin;
+        wavePaths[p].shadowDirection = shadow.direction;
+        wavePaths[p].shadowDistance = shadow.distance;
+        wavePaths[p].shadowContribution = shadow.contribution;
+    }
+    uint shadowSlot = queueSlot(shadow.pending, kCounterShadowsPushed);
+    if (shadow.pending)
+        setWaveQueueEntry(kWaveShadowQueue, shadowSlot, p);
+    uint slot = queueSlot(goesOn, kCounterPushed);
+    if (goesOn)
+        setWaveQueueEntry((push.waveSegment + 1u) & 1u, slot, p);
+}
