@@ -35,7 +35,7 @@ layout(binding = kBindingMixtureLights, scalar) uniform MixtureLightBlock
 // rgb: what the float sum above lost to rounding (Kahan), to subtract from the next sample; a: unused.
 layout(binding = kBindingCompensation, rgba32f) uniform image2D compensation;
 layout(binding = kBindingImages) uniform sampler2D images[];
-layout(binding = kBindingWavePaths, scalar) buffer WavePathBlock { WavePath wavePaths[]; };
+layout(binding = kBindingWavePaths, std430) buffer WavePathBlock { uvec4 waveFields[]; };
 layout(binding = kBindingWaveQueues, scalar) buffer WaveQueueBlock { uint waveQueues[]; };
 layout(binding = kBindingWaveCounters, scalar) buffer WaveCounterBlock { WaveCounters waveCounters; };
 
@@ -53,11 +53,12 @@ uvec2 launchPixel() { return gl_LaunchIDEXT.xy + uvec2(0u, push.firstRow); }
 /// which cannot read the payload: in the wavefront, the path of the launch's queue entry; in the megakernel,
 /// the launch's pixel and first sample (a scene whose intersection shaders need the sample, a moving one, is
 /// traced there one sample per launch).
+uint tracedWavePath() { return waveQueues[push.waveQueue * push.waveCapacity + gl_LaunchIDEXT.x]; }
 uvec2 tracedPixel()
 {
     if (kWavefront)
     {
-        uint pixel = wavePaths[waveQueues[push.waveQueue * push.waveCapacity + gl_LaunchIDEXT.x]].pixel;
+        uint pixel = waveFields[kWaveOriginPixel * push.waveCapacity + tracedWavePath()].w;
         return uvec2(pixel % uniforms.width, pixel / uniforms.width);
     }
     return launchPixel();
@@ -65,7 +66,7 @@ uvec2 tracedPixel()
 uint tracedSample()
 {
     if (kWavefront)
-        return wavePaths[waveQueues[push.waveQueue * push.waveCapacity + gl_LaunchIDEXT.x]].sampleIndex;
+        return waveFields[kWaveDirectionSample * push.waveCapacity + tracedWavePath()].w;
     return push.firstSample;
 }
 #endif

@@ -17,7 +17,7 @@
 #include "RayOffset.glsl"
 #include "Shared/RussianRoulette.h"
 
-/// What a path carries from one vertex to the next (WavePath holds it between the wavefront's kernels).
+/// What a path carries from one vertex to the next (the kWave* fields hold it between the wavefront's kernels).
 struct PathState
 {
     vec3 origin; // the ray to trace next

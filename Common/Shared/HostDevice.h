@@ -223,7 +223,7 @@ RT_CONST(uint, kBindingLightBvh, 17u)         // LightBvhNode[]: the emitters' l
 RT_CONST(uint, kBindingLightBvhLeaves, 18u)   // uint[]: per emitter, its leaf in LightBvhNode[] (kNoIndex: no power)
 RT_CONST(uint, kBindingCompensation, 19u)     // rgba32f storage image: rgb the Kahan compensation of the sum
 RT_CONST(uint, kBindingMixtureLights, 20u)    // uniform LightData[kMixtureUniformLights]: the first lights again
-RT_CONST(uint, kBindingWavePaths, 21u)        // WavePath[]: the wavefront integrator's paths (Shaders/Wavefront/)
+RT_CONST(uint, kBindingWavePaths, 21u)        // uvec4[kWaveFieldCount * capacity]: the wavefront's paths
 RT_CONST(uint, kBindingWaveQueues, 22u)       // uint[kWaveQueueCount * capacity]: its queues of path indices
 RT_CONST(uint, kBindingWaveCounters, 23u)     // WaveCounters: its queue lengths and indirect launch sizes
 RT_CONST(uint, kBindingImages, 24u)           // sampler2D[]: the scene's images, 8-bit sRGB
@@ -234,7 +234,7 @@ RT_CONST(uint, kBindingCount, 25u)
 RT_CONST(uint, kMixtureUniformLights, 64u)
 
 // The wavefront integrator (Shaders/Wavefront/, RayTracingGPU/Engine/WavefrontPipeline.h): a launch's paths
-// live in WavePath[] between its kernels; queue 0 and 1 hold the paths to extend at even and odd segments,
+// live in the kWave* fields between its kernels; queue 0 and 1 hold the paths to extend at even and odd segments,
 // queue kWaveShadowQueue those with a shadow ray to trace. The compute kernels run kWaveGroupSize threads per
 // workgroup.
 RT_CONST(uint, kWaveQueueCount, 3u)
@@ -345,7 +345,7 @@ struct TracePushConstants
     uint waveCapacity;
 };
 
-/// What a traced path ray brings back (the payload at kPayloadPath; WavePath::hit in the wavefront). The hit
+/// What a traced path ray brings back (the payload at kPayloadPath; the kWaveHit* fields in the wavefront). The hit
 /// shaders describe the hit; all shading (textures, materials, the estimator) happens after the trace.
 struct HitPayload
 {
@@ -360,34 +360,23 @@ struct HitPayload
 };
 RT_CONST(uint, kHitMedium, 1u) // HitPayload::flags: scattered inside a constant medium (frontFace, origin = position)
 
-/// One path of a wavefront wave between its kernels: the loop state of PathVertex.glsl's PathState, which
-/// camera sample it is, the hit its last ray found and the shadow ray its last vertex left to trace.
-struct WavePath
-{
-    vec3 origin; // the next ray
-    uint pixel; // y * width + x
-    vec3 direction;
-    uint sampleIndex;
-    vec3 radiance; // gathered so far
-    float pendingSurvival;
-    vec3 beta; // throughput
-    float previousBsdfPdf;
-    vec3 previousPoint;
-    uint rngState;
-    vec3 previousNormal;
-    uint rngSobolSeed;
-    uint rngDimension;
-    uint rngSobol; // 1: Owen-scrambled Sobol draws
-    uint pad0;
-    uint pad1;
-    vec3 shadowOrigin;
-    float shadowDistance;
-    vec3 shadowDirection;
-    uint pad2;
-    vec3 shadowContribution; // added to radiance when the shadow ray is unoccluded
-    uint pad3;
-    HitPayload hit;
-};
+// A wavefront wave's paths between its kernels, stored field by field (structure of arrays): field f of path
+// p is the uvec4 at f * capacity + p of kBindingWavePaths, so that a subgroup's loads and stores of one field
+// are contiguous (a structure per path cost the H100 3x the megakernel's whole render in scattered accesses).
+// Floats are stored as their bits. The fields (Shaders/Wavefront/WavePath.glsl reads and writes them):
+RT_CONST(uint, kWaveOriginPixel, 0u)     // xyz: the next ray's origin; w: pixel index y * width + x
+RT_CONST(uint, kWaveDirectionSample, 1u) // xyz: the next ray's direction; w: the camera sample's index
+RT_CONST(uint, kWaveRadiance, 2u)        // xyz: radiance gathered so far; w: pendingSurvival
+RT_CONST(uint, kWaveBeta, 3u)            // xyz: throughput; w: previousBsdfPdf
+RT_CONST(uint, kWaveNormalRng, 4u)       // xyz: previousNormal; w: the random generator's state
+RT_CONST(uint, kWaveSobol, 5u)           // x: the Sobol seed, y: 2D draws made (Owen-scrambled Sobol sampling only)
+RT_CONST(uint, kWaveShadowOrigin, 6u)    // xyz: the shadow ray's origin; w: its length
+RT_CONST(uint, kWaveShadowDirection, 7u) // xyz: its direction
+RT_CONST(uint, kWaveShadowLight, 8u)     // xyz: its contribution, added to the radiance when unoccluded
+RT_CONST(uint, kWaveHitPoint, 9u)        // the hit: xyz its position (on a miss, the background); w material
+RT_CONST(uint, kWaveHitNormal, 10u)      // xyz: its geometric normal; w: flags
+RT_CONST(uint, kWaveHitSurface, 11u)     // xy: uv; z: offsetScale; w: lightSlot
+RT_CONST(uint, kWaveFieldCount, 12u)
 
 /// The wavefront's queue lengths, laid out as the indirect launches read them (VkTraceRaysIndirectCommandKHR,
 /// VkDispatchIndirectCommand): Prepare.comp turns what a shade kernel pushed into the next launches' sizes.
@@ -505,7 +494,6 @@ static_assert(offsetof(RenderUniforms, background0) == 96);
 static_assert(offsetof(RenderUniforms, sampling) == 128);
 static_assert(sizeof(TracePushConstants) == 32);
 static_assert(sizeof(HitPayload) == 60);
-static_assert(sizeof(WavePath) == 160 + sizeof(HitPayload));
 static_assert(sizeof(WaveCounters) == 64 && offsetof(WaveCounters, shadowRays) == 32);
 static_assert(sizeof(InstanceRecord) == 32);
 static_assert(sizeof(SphereRecord) == 32);

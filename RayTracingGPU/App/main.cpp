@@ -225,6 +225,11 @@ int main(int argc, char** argv)
                    "rays), the same estimator and the same image within noise (docs/GPU.md)")
         ->check(CLI::IsMember({"megakernel", "wavefront"}))
         ->capture_default_str();
+    std::uint32_t wavePaths = 0;
+    app.add_option("--wave-paths", wavePaths,
+                   "GPU, --integrator wavefront: paths traced at once (each holds 220 bytes of state); 0: by the "
+                   "device (4 M on a GPU of 16 GiB or more, 64 K on a CPU device)")
+        ->check(CLI::Range(0u, 1u << 26));
     WindowFlags window;
     addWindowOptions(app, window);
 
@@ -252,7 +257,8 @@ int main(int argc, char** argv)
                 if (kind == rt::EngineKind::Gpu)
                     return std::make_unique<rt::gpu::GpuEngine>(rt::gpu::GpuEngineOptions{
                         .deviceIndex = device, .validation = validation, .specialize = specializeMode(specialize),
-                        .integrator = *rt::gpu::parseIntegrator(integrator)});
+                        .integrator = *rt::gpu::parseIntegrator(integrator),
+                        .wavePaths = wavePaths});
                 return std::make_unique<rt::cpu::CpuEngine>(kind);
             });
         }
@@ -261,7 +267,8 @@ int main(int argc, char** argv)
         rt::checkOutputPaths(options);
         const rt::CommandLineRender job = rt::resolveCommandLine(options);
         rt::gpu::GpuEngine gpu({.deviceIndex = device, .validation = validation, .specialize = specializeMode(specialize),
-                        .integrator = *rt::gpu::parseIntegrator(integrator)});
+                        .integrator = *rt::gpu::parseIntegrator(integrator),
+                        .wavePaths = wavePaths});
         const int status = rt::runHeadless(gpu, job.scene, job.request, options);
         if (gpu.validationMessages() > 0)
         {

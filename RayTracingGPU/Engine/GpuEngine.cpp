@@ -11,6 +11,7 @@
 #include "Engine/RenderLimits.h"
 #include "Engine/RenderTarget.h"
 #include "Engine/SceneTracer.h"
+#include "Engine/WaveStageTimer.h"
 #include "Error.h"
 #include "Render/BatchPlan.h"
 #include "Vulkan/Barriers.h"
@@ -51,6 +52,7 @@ struct GpuEngine::Impl
     TracingDescriptors descriptors; // the scene and the target; empty after setScene
     shader::RenderUniforms uniforms{}; // the frame's, as in the target's uniform buffer
     std::map<std::string, double> frameStages; // stageSeconds() of the frame
+    std::unique_ptr<WaveStageTimer> waveTimer; // made at the first wavefront launch on a device with timestamps
 
     explicit Impl(const GpuEngineOptions& options)
         : context({options.deviceIndex, options.validation, options.presentation}),
@@ -62,6 +64,8 @@ struct GpuEngine::Impl
                         : context.device().properties().type == vk::DeviceType::Cpu ? kPathsPerBatchCpu
                                                                                     : kPathsPerBatchGpu)
     {
+        if (options.wavePaths > 0)
+            tracer.setIntegrator(options.integrator, options.wavePaths);
     }
 
     const vk::Device& device() const { return context.device(); }
@@ -89,6 +93,9 @@ struct GpuEngine::Impl
                     bool snapshot)
     {
         const bool timed = device().properties().timestampValidBits > 0;
+        if (timed && tracer.integrator() == GpuIntegrator::Wavefront && !waveTimer)
+            waveTimer = std::make_unique<WaveStageTimer>(device());
+        WaveStageTimer* stageTimer = tracer.integrator() == GpuIntegrator::Wavefront ? waveTimer.get() : nullptr;
         vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) {
             if (snapshot)
                 target->recordReadback(cmd);
@@ -97,13 +104,17 @@ struct GpuEngine::Impl
                 vkCmdResetQueryPool(cmd, timestamps.Handle(), 0, 2);
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps.Handle(), 0);
             }
+            if (stageTimer)
+                stageTimer->begin(cmd);
             tracer.recordLaunch(cmd, {&descriptors.set, 1}, uniforms, firstSample, samples, {target->width(), rows},
-                                nullptr, firstRow);
+                                nullptr, firstRow, stageTimer);
             if (timed)
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 1);
             vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                               VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT); // the NaN/Inf counters
         });
+        if (stageTimer)
+            stageTimer->addTo(frameStages);
         return timed ? timestamps.secondsBetween(0, device().properties().limits.timestampPeriod) : -1.0;
     }
 

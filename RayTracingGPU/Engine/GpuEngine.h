@@ -35,6 +35,8 @@ struct GpuEngineOptions
     Specialize specialize = Specialize::Full;
     /// How a launch runs the estimator (GpuIntegrator.h).
     GpuIntegrator integrator = GpuIntegrator::Megakernel;
+    /// The wavefront's paths per wave; 0: by the device (waveCapacityFor).
+    std::uint32_t wavePaths = 0;
     /// The window: the device must present to its surface (GpuContext.h). Headless leaves it empty.
     std::optional<Presentation> presentation;
 };

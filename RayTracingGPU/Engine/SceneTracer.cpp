@@ -84,13 +84,14 @@ bool SceneTracer::prepare(const shader::RenderUniforms& uniforms) const
 
 void SceneTracer::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                                const shader::RenderUniforms& uniforms, std::uint32_t firstSample, std::uint32_t count,
-                               VkExtent2D extent, const PathTracingPipeline* variant, std::uint32_t firstRow) const
+                               VkExtent2D extent, const PathTracingPipeline* variant, std::uint32_t firstRow,
+                               WaveStageTimer* timer) const
 {
     const GpuScene& scene = gpuScene();
     if (m_integrator == GpuIntegrator::Wavefront && !variant)
     {
         m_wavefront->recordLaunch(cmd, sets, uniforms, scene.pipelineScene(), firstSample, count, extent, firstRow,
-                                  m_waves);
+                                  m_waves, timer);
         return;
     }
     (variant ? *variant : m_pipeline)

@@ -24,6 +24,7 @@ namespace rt::gpu
 {
 class GpuScene;
 class WavefrontPipeline;
+class WaveStageTimer;
 
 /// A descriptor set of the pipeline's set 0 and the pool it lives in (freed together).
 struct TracingDescriptors
@@ -89,10 +90,11 @@ public:
     /// Records `count` samples per pixel of `extent` from `firstSample` on, with `sets` bound from set 0, whose
     /// uniform buffer holds `uniforms`, through `variant` (a megakernel: PathTracingPipeline::recordLaunch, with
     /// the scene's samples per launch) or else the tracer's integrator. `extent` may be a band of rows from
-    /// `firstRow` on.
+    /// `firstRow` on. `timer` (begun by the caller) times the wavefront's kernels.
     void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                       const shader::RenderUniforms& uniforms, std::uint32_t firstSample, std::uint32_t count,
-                      VkExtent2D extent, const PathTracingPipeline* variant = nullptr, std::uint32_t firstRow = 0) const;
+                      VkExtent2D extent, const PathTracingPipeline* variant = nullptr, std::uint32_t firstRow = 0,
+                      WaveStageTimer* timer = nullptr) const;
 
 private:
     const vk::Device* m_device;

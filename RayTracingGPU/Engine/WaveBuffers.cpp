@@ -6,20 +6,25 @@
 
 namespace rt::gpu
 {
+namespace
+{
+constexpr std::uint64_t kPathBytes = shader::kWaveFieldCount * 16; // a uvec4 per field
+} // namespace
+
 std::uint32_t waveCapacityFor(bool cpuDevice, std::uint64_t deviceLocalBytes)
 {
     if (cpuDevice)
         return std::uint32_t(1) << 16;
     // A sixteenth of the device's memory at most: the scene and the images keep the rest.
     std::uint32_t capacity = std::uint32_t(1) << 22;
-    while (capacity > (1u << 16) && std::uint64_t(capacity) * sizeof(shader::WavePath) > deviceLocalBytes / 16)
+    while (capacity > (1u << 16) && std::uint64_t(capacity) * kPathBytes > deviceLocalBytes / 16)
         capacity /= 2;
     return capacity;
 }
 
 WaveBuffers::WaveBuffers(const vk::Device& device, std::uint32_t capacity)
     : m_capacity(std::max(capacity, 1u)),
-      m_paths(device, VkDeviceSize(m_capacity) * sizeof(shader::WavePath), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+      m_paths(device, VkDeviceSize(m_capacity) * kPathBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
               vk::MemoryUse::DeviceLocal),
       m_queues(device, VkDeviceSize(m_capacity) * shader::kWaveQueueCount * sizeof(std::uint32_t),
                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::DeviceLocal),

@@ -1,4 +1,4 @@
-// The wavefront integrator's memory (HostDevice.h WavePath, WaveCounters; Shaders/Wavefront/): the state of
+// The wavefront integrator's memory (HostDevice.h kWave* fields, WaveCounters; Shaders/Wavefront/): the state of
 // `capacity` paths, kWaveQueueCount queues of as many path indices, and the counters its indirect launches
 // read. Bound at kBindingWavePaths, kBindingWaveQueues and kBindingWaveCounters of every descriptor set the
 // tracer makes (a megakernel-only tracer binds buffers of one path).
@@ -10,7 +10,7 @@
 
 namespace rt::gpu
 {
-/// Paths a wave holds on a device with `deviceLocalBytes` of device-local memory: 4 M (about 1 GiB) on a GPU
+/// Paths a wave holds on a device with `deviceLocalBytes` of device-local memory: 4 M (768 MiB) on a GPU
 /// with 16 GiB or more, less on smaller ones, 64 K on a CPU device (lavapipe), where the kernels are short.
 std::uint32_t waveCapacityFor(bool cpuDevice, std::uint64_t deviceLocalBytes);
 

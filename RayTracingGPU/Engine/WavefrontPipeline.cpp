@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include "Engine/WaveBuffers.h"
+#include "Engine/WaveStageTimer.h"
 #include "Shared/HostDevice.h"
 #include "Vulkan/Barriers.h"
 #include "Vulkan/ComputePipeline.h"
@@ -27,19 +28,14 @@ std::array<std::uint32_t, kSpecIdWavefront + 1> wavefrontConstants(const Pipelin
     return constants;
 }
 
-/// Orders every kernel's and transfer's writes before every later kernel's reads and writes and the indirect
-/// launches' reads of their sizes.
+/// Orders a kernel's writes before the later kernels' reads and writes and the indirect launches' reads of
+/// their sizes.
 void waveBarrier(VkCommandBuffer cmd)
 {
-    vk::memoryBarrier(cmd,
-                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR |
-                          VK_PIPELINE_STAGE_TRANSFER_BIT,
-                      VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR |
-                          VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
-                          VK_PIPELINE_STAGE_HOST_BIT,
-                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT |
-                          VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
+    constexpr VkPipelineStageFlags kKernels =
+        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR;
+    vk::memoryBarrier(cmd, kKernels, VK_ACCESS_SHADER_WRITE_BIT, kKernels | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT);
 }
 
 std::uint32_t groupsFor(std::uint64_t invocations)
@@ -127,7 +123,7 @@ bool WavefrontPipeline::prepare(const RenderUniforms& uniforms, const PipelineSc
 void WavefrontPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                                      const RenderUniforms& uniforms, const PipelineScene& scene,
                                      std::uint32_t firstSample, std::uint32_t count, VkExtent2D extent,
-                                     std::uint32_t firstRow, const WaveBuffers& waves) const
+                                     std::uint32_t firstRow, const WaveBuffers& waves, WaveStageTimer* timer) const
 {
     const Compiled& c = compiled(m_layout->specializationFor(uniforms, scene));
     const Tables& tables = tablesFor(c, scene.hitGroups);
@@ -150,18 +146,23 @@ void WavefrontPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDesc
     const auto pushConstants = [&] {
         vkCmdPushConstants(cmd, layout, kPathTracerStages, 0, sizeof(push), &push);
     };
-    const auto dispatch = [&](const vk::Pipeline& pipeline, std::uint32_t groups) {
+    const auto ordered = [&](WaveStage stage) {
+        waveBarrier(cmd);
+        if (timer)
+            timer->mark(cmd, stage);
+    };
+    const auto dispatch = [&](WaveStage stage, const vk::Pipeline& pipeline, std::uint32_t groups) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.Handle());
         pushConstants();
         vkCmdDispatch(cmd, groups, 1, 1);
-        waveBarrier(cmd);
+        ordered(stage);
     };
-    const auto trace = [&](const ShaderBindingTable& sbt, std::size_t sizeOffset) {
+    const auto trace = [&](WaveStage stage, const ShaderBindingTable& sbt, std::size_t sizeOffset) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, c.rayTracing.Handle());
         pushConstants();
         vkCmdTraceRaysIndirectKHR(cmd, &sbt.raygen(), &sbt.miss(), &sbt.hit(), &sbt.callable(),
                                   countersAddress + sizeOffset);
-        waveBarrier(cmd);
+        ordered(stage);
     };
 
     // Samples outside, pixels inside: every wave of a pixel's earlier samples is summed before a later one.
@@ -179,28 +180,36 @@ void WavefrontPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDesc
             push.waveSegment = 0;
             push.waveQueue = 0;
             vkCmdFillBuffer(cmd, counters, 0, VK_WHOLE_SIZE, 0);
-            waveBarrier(cmd);
-            dispatch(c.generate, groupsFor(std::uint64_t(push.wavePixelCount) * samples));
-            dispatch(c.prepare, 1);
+            vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                              VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                              VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+            dispatch(WaveStage::Generate, c.generate, groupsFor(std::uint64_t(push.wavePixelCount) * samples));
+            dispatch(WaveStage::Prepare, c.prepare, 1);
             for (std::uint32_t segment = 0; segment < uniforms.depth; ++segment)
             {
                 push.waveSegment = segment;
                 push.waveQueue = segment & 1u;
-                trace(tables.extend, offsetof(WaveCounters, extendRays));
+                trace(WaveStage::Extend, tables.extend, offsetof(WaveCounters, extendRays));
                 vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, c.shade.Handle());
                 pushConstants();
                 vkCmdDispatchIndirect(cmd, counters, offsetof(WaveCounters, shadeGroups));
-                waveBarrier(cmd);
-                dispatch(c.prepare, 1);
+                ordered(WaveStage::Shade);
+                dispatch(WaveStage::Prepare, c.prepare, 1);
                 if (nee)
                 {
                     push.waveQueue = kWaveShadowQueue;
-                    trace(tables.shadow, offsetof(WaveCounters, shadowRays));
+                    trace(WaveStage::Shadow, tables.shadow, offsetof(WaveCounters, shadowRays));
                 }
             }
-            dispatch(c.accumulate, groupsFor(push.wavePixelCount));
+            dispatch(WaveStage::Accumulate, c.accumulate, groupsFor(push.wavePixelCount));
         }
         done += samples;
     }
+    // The sums and the NaN/Inf counters, for whatever the caller records next (a readback, the next launch).
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR |
+                          VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT |
+                          VK_ACCESS_HOST_READ_BIT);
 }
 } // namespace rt::gpu

@@ -23,6 +23,7 @@
 namespace rt::gpu
 {
 class WaveBuffers;
+class WaveStageTimer;
 
 class WavefrontPipeline final
 {
@@ -44,10 +45,11 @@ public:
     /// indices from `firstSample` on, as waves of at most waves.capacity() paths: each sample of a pixel
     /// after the one before, added to the accumulation images in sample order. `sets` (set 0 naming `waves`)
     /// are bound for both bind points; `uniforms` are those of its uniform buffer. Everything recorded is
-    /// ordered before what comes next.
+    /// ordered before what comes next. With `timer`, a timestamp follows each kernel (begun by the caller).
     void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                       const shader::RenderUniforms& uniforms, const PipelineScene& scene, std::uint32_t firstSample,
-                      std::uint32_t count, VkExtent2D extent, std::uint32_t firstRow, const WaveBuffers& waves) const;
+                      std::uint32_t count, VkExtent2D extent, std::uint32_t firstRow, const WaveBuffers& waves,
+                      WaveStageTimer* timer = nullptr) const;
 
 private:
     struct Compiled;

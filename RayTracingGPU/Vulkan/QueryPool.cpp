@@ -22,4 +22,14 @@ double QueryPool::secondsBetween(std::uint32_t first, float nanosecondsPerTick) 
           "vkGetQueryPoolResults");
     return ticks[1] >= ticks[0] ? double(ticks[1] - ticks[0]) * double(nanosecondsPerTick) * 1e-9 : 0.0;
 }
+
+std::vector<std::uint64_t> QueryPool::ticks(std::uint32_t first, std::uint32_t count) const
+{
+    std::vector<std::uint64_t> ticks(count);
+    if (count > 0)
+        check(vkGetQueryPoolResults(m_pool.device(), m_pool.get(), first, count, ticks.size() * sizeof(std::uint64_t),
+                                    ticks.data(), sizeof(std::uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+              "vkGetQueryPoolResults");
+    return ticks;
+}
 } // namespace rt::vk

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "Vulkan/Device.h"
 #include "Vulkan/DeviceHandle.h"
@@ -21,6 +22,8 @@ public:
     /// Seconds between timestamps `first` and `first + 1`, both written and finished.
     /// `nanosecondsPerTick` is VkPhysicalDeviceLimits::timestampPeriod.
     double secondsBetween(std::uint32_t first, float nanosecondsPerTick) const;
+    /// The ticks of timestamps `first` .. `first + count - 1`, all written and finished.
+    std::vector<std::uint64_t> ticks(std::uint32_t first, std::uint32_t count) const;
 
 private:
     DeviceHandle<VkQueryPool, &vkDestroyQueryPool> m_pool;

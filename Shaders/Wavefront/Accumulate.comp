@@ -21,7 +21,7 @@ void main()
     vec4 sum = imageLoad(accumulation, texel);
     vec3 lost = imageLoad(compensation, texel).rgb;
     for (uint s = 0u; s < push.sampleCount; ++s)
-        addCameraSample(sum, lost, wavePaths[q * push.sampleCount + s].radiance);
+        addCameraSample(sum, lost, uintBitsToFloat(waveFields[kWaveRadiance * push.waveCapacity + q * push.sampleCount + s].xyz));
     imageStore(accumulation, texel, sum);
     imageStore(compensation, texel, vec4(lost, 0.0));
 }

@@ -33,9 +33,7 @@ void main()
     bool finite = isFiniteVec(origin) && isFiniteVec(direction);
     if (!finite)
         path.radiance = vec3(uintBitsToFloat(0x7FC00000u)); // a quiet NaN, as the megakernel returns
-    wavePaths[p].pixel = pixelIndex;
-    wavePaths[p].sampleIndex = sampleIndex;
-    storePath(p, path);
+    storePath(p, path, pixelIndex, sampleIndex);
     uint slot = queueSlot(finite, kCounterPushed);
     if (finite)
         setWaveQueueEntry(0u, slot, p);

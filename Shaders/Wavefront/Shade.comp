@@ -22,20 +22,21 @@ void main()
         return;
     uint p = waveQueueEntry(push.waveSegment & 1u, i);
     PathState path = loadPath(p);
+    uint pixel = waveField(kWaveOriginPixel, p).w;
+    uint sampleIndex = waveField(kWaveDirectionSample, p).w;
     ShadowRay shadow;
-    bool goesOn = shadePathVertex(path, push.waveSegment, wavePaths[p].hit, shadow);
+    bool goesOn = shadePathVertex(path, push.waveSegment, loadHit(p), shadow);
     if (goesOn && !(isFiniteVec(path.origin) && isFiniteVec(path.direction)))
     {
         path.radiance = vec3(uintBitsToFloat(0x7FC00000u)); // a quiet NaN, as the megakernel returns
         goesOn = false;
     }
-    storePath(p, path);
+    storePath(p, path, pixel, sampleIndex);
     if (shadow.pending)
     {
-        wavePaths[p].shadowOrigin = shadow.origin;
-        wavePaths[p].shadowDirection = shadow.direction;
-        wavePaths[p].shadowDistance = shadow.distance;
-        wavePaths[p].shadowContribution = shadow.contribution;
+        setWaveField(kWaveShadowOrigin, p, packWaveField(shadow.origin, shadow.distance));
+        setWaveField(kWaveShadowDirection, p, packWaveField(shadow.direction, 0u));
+        setWaveField(kWaveShadowLight, p, packWaveField(shadow.contribution, 0u));
     }
     uint shadowSlot = queueSlot(shadow.pending, kCounterShadowsPushed);
     if (shadow.pending)
