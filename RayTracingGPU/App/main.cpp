@@ -227,8 +227,8 @@ int main(int argc, char** argv)
         ->capture_default_str();
     std::uint32_t wavePaths = 0;
     app.add_option("--wave-paths", wavePaths,
-                   "GPU, --integrator wavefront: paths traced at once (each holds 220 bytes of state); 0: by the "
-                   "device (4 M on a GPU of 16 GiB or more, 64 K on a CPU device)")
+                   "GPU, --integrator wavefront: paths traced at once (each holds 204 bytes of state); 0: by the "
+                   "device (16 M on a GPU of 48 GiB or more, 64 K on a CPU device)")
         ->check(CLI::Range(0u, 1u << 26));
     WindowFlags window;
     addWindowOptions(app, window);

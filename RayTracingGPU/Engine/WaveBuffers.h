@@ -10,8 +10,8 @@
 
 namespace rt::gpu
 {
-/// Paths a wave holds on a device with `deviceLocalBytes` of device-local memory: 4 M (768 MiB) on a GPU
-/// with 16 GiB or more, less on smaller ones, 64 K on a CPU device (lavapipe), where the kernels are short.
+/// Paths a wave holds on a device with `deviceLocalBytes` of device-local memory: 16 M (3 GiB) on a GPU with
+/// 48 GiB or more, less on smaller ones, 64 K on a CPU device (lavapipe), where the kernels are short.
 std::uint32_t waveCapacityFor(bool cpuDevice, std::uint64_t deviceLocalBytes);
 
 class WaveBuffers final
