@@ -278,7 +278,8 @@ std::string GpuEngine::frameConfiguration() const
     if (!m_impl->target || !m_impl->tracer.scene())
         return {};
     const SceneTracer& t = m_impl->tracer;
-    return "pipeline " + t.pipeline().specializationFor(m_impl->uniforms, t.gpuScene().pipelineScene()).describe();
+    return "pipeline " + t.pipeline().specializationFor(m_impl->uniforms, t.gpuScene().pipelineScene()).describe() +
+           ", integrator " + integratorName(t.integrator());
 }
 
 std::map<std::string, double> GpuEngine::stageSeconds() const

@@ -16,6 +16,7 @@
 #include "Scene/SceneBuilder.h"
 #include "Scenes/Catalogue.h"
 #include "Support/CatalogueCases.h"
+#include "Support/PairedDifference.h"
 #include "Support/SmallSettings.h"
 
 namespace rt::gpu::test
@@ -23,6 +24,8 @@ namespace rt::gpu::test
 namespace
 {
 using namespace shader;
+using ::rt::test::differingPixels;
+using ::rt::test::pairedZ;
 
 // Together: media, motion, every texture kind, every material, every light shape (emitters and the mixture's
 // sphere target), meshes, spheres and quads, thin lens, both backgrounds, and each estimator family.
@@ -82,47 +85,6 @@ protected:
 private:
     std::uint64_t m_messagesBefore = 0;
 };
-
-/// Pixels where a and b differ by more than round-off (relative 1e-4).
-int differingPixels(const Image& a, const Image& b)
-{
-    int n = 0;
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x)
-        {
-            double largest = 0.0;
-            for (int c = 0; c < 3; ++c)
-            {
-                const double u = a.at(x, y)[c];
-                const double v = b.at(x, y)[c];
-                largest = std::max(largest, std::abs(u - v) / std::max(1e-3, std::abs(v)));
-            }
-            n += largest > 1e-4 ? 1 : 0;
-        }
-    return n;
-}
-
-/// z of the mean of the pixels' paired differences (a - b, summed over the channels): 0 for identical images,
-/// of order 1 for renders that differ by noise (paths a flipped float comparison sent elsewhere), large for a
-/// systematic difference (code the specialised pipeline left out that the scene needed). Pairing keeps it
-/// exact where the images agree pixel for pixel.
-double pairedZ(const Image& a, const Image& b)
-{
-    double sum = 0.0, sum2 = 0.0;
-    const std::size_t n = a.pixelCount();
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        const vec3 d = a.pixels()[i] - b.pixels()[i];
-        const double v = double(d.x) + double(d.y) + double(d.z);
-        sum += v;
-        sum2 += v * v;
-    }
-    const double mean = sum / double(n);
-    const double variance = std::max(0.0, sum2 / double(n) - mean * mean);
-    if (variance == 0.0)
-        return mean == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
-    return mean / std::sqrt(variance / double(n - 1));
-}
 
 // The specialised pipeline leaves out code the scene cannot reach and hit groups it has no geometry for: the
 // same numbers, the same paths (lavapipe: the same image bit for bit). A driver may fold arithmetic

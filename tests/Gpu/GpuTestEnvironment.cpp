@@ -1,5 +1,6 @@
 #include "GpuTestEnvironment.h"
 
+#include <cstdlib>
 #include <memory>
 
 #include "Error.h"
@@ -20,7 +21,8 @@ Shared& shared()
         Shared out;
         try
         {
-            out.engine = std::make_unique<GpuEngine>(GpuEngineOptions{.validation = true});
+            out.engine =
+                std::make_unique<GpuEngine>(GpuEngineOptions{.validation = true, .integrator = suiteIntegrator()});
         }
         catch (const DeviceError& e)
         {
@@ -31,6 +33,16 @@ Shared& shared()
     return s;
 }
 } // namespace
+
+GpuIntegrator suiteIntegrator()
+{
+    const char* name = std::getenv("RT_GPU_INTEGRATOR");
+    if (!name || !*name)
+        return GpuIntegrator::Megakernel;
+    if (const auto integrator = parseIntegrator(name))
+        return *integrator;
+    throw UsageError(std::string("RT_GPU_INTEGRATOR must be megakernel or wavefront (got '") + name + "')");
+}
 
 GpuEngine* sharedEngine() { return shared().engine.get(); }
 

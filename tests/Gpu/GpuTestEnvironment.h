@@ -14,6 +14,10 @@
 
 namespace rt::gpu::test
 {
+/// The integrator the suite's shared engine runs: RT_GPU_INTEGRATOR (megakernel or wavefront), megakernel
+/// when unset, so that one suite checks either on any device (tests/Bench/device_run.sh runs both).
+GpuIntegrator suiteIntegrator();
+
 /// The shared engine, or nullptr when none could be created (see engineError()).
 GpuEngine* sharedEngine();
 const std::string& engineError();
