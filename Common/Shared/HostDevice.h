@@ -387,8 +387,8 @@ struct WaveCounters
     uvec4 shadowRays; // x: the shadow rays to trace (queue kWaveShadowQueue), y = z = 1
     uint pushed; // paths the shade kernel queued for the next segment
     uint shadowsPushed; // shadow rays it queued
+    uint segments; // segments the wave's paths have needed so far: 1 + the last one whose queue was not empty
     uint pad0;
-    uint pad1;
 };
 
 /// What the shaders need to find one TLAS instance's geometry, at instanceCustomIndex in InstanceRecord[].

@@ -12,6 +12,7 @@
 #include "Engine/RenderTarget.h"
 #include "Engine/SceneTracer.h"
 #include "Engine/WaveStageTimer.h"
+#include "Engine/WavefrontPipeline.h"
 #include "Error.h"
 #include "Render/BatchPlan.h"
 #include "Vulkan/Barriers.h"
@@ -22,6 +23,12 @@ namespace rt::gpu
 {
 namespace
 {
+/// Segments of a wave the wavefront first records, before it knows how many its paths need (then as many as
+/// the frame's last wave needed), and the segments of each further submission while paths remain: the launches
+/// of a segment whose queue is empty cost the H100 about 25 us each.
+constexpr std::uint32_t kFirstWaveSegments = 8;
+constexpr std::uint32_t kWaveSegmentChunk = 8;
+
 /// Work (rows x samples per pixel) of the next submit after one of `work` took `seconds`: about
 /// kBatchTargetSeconds' worth, growing at most 4x (BatchPlan's rule, in rows x samples), at least 1.
 /// Counted in rows x samples, not rows, so that a batch of more samples gets fewer rows per submit.
@@ -53,6 +60,7 @@ struct GpuEngine::Impl
     shader::RenderUniforms uniforms{}; // the frame's, as in the target's uniform buffer
     std::map<std::string, double> frameStages; // stageSeconds() of the frame
     std::unique_ptr<WaveStageTimer> waveTimer; // made at the first wavefront launch on a device with timestamps
+    std::uint32_t waveSegments = kFirstWaveSegments; // the wavefront's first submission per wave: its segments
 
     explicit Impl(const GpuEngineOptions& options)
         : context({options.deviceIndex, options.validation, options.presentation}),
@@ -92,10 +100,9 @@ struct GpuEngine::Impl
     double dispatch(std::uint32_t firstSample, std::uint32_t samples, std::uint32_t firstRow, std::uint32_t rows,
                     bool snapshot)
     {
+        if (tracer.integrator() == GpuIntegrator::Wavefront)
+            return dispatchWaves(firstSample, samples, firstRow, rows, snapshot);
         const bool timed = device().properties().timestampValidBits > 0;
-        if (timed && tracer.integrator() == GpuIntegrator::Wavefront && !waveTimer)
-            waveTimer = std::make_unique<WaveStageTimer>(device());
-        WaveStageTimer* stageTimer = tracer.integrator() == GpuIntegrator::Wavefront ? waveTimer.get() : nullptr;
         vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) {
             if (snapshot)
                 target->recordReadback(cmd);
@@ -104,18 +111,78 @@ struct GpuEngine::Impl
                 vkCmdResetQueryPool(cmd, timestamps.Handle(), 0, 2);
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps.Handle(), 0);
             }
-            if (stageTimer)
-                stageTimer->begin(cmd);
             tracer.recordLaunch(cmd, {&descriptors.set, 1}, uniforms, firstSample, samples, {target->width(), rows},
-                                nullptr, firstRow, stageTimer);
+                                nullptr, firstRow);
             if (timed)
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 1);
             vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                               VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT); // the NaN/Inf counters
         });
-        if (stageTimer)
-            stageTimer->addTo(frameStages);
         return timed ? timestamps.secondsBetween(0, device().properties().limits.timestampPeriod) : -1.0;
+    }
+
+    /// dispatch() on the wavefront integrator: a submission per wave (its sums recorded in the next one), with
+    /// the segments its paths are expected to need, then more while its queue is not empty: no launches over
+    /// the empty queues of the segments after its longest path. The image is the one recordLaunch gives.
+    double dispatchWaves(std::uint32_t firstSample, std::uint32_t samples, std::uint32_t firstRow, std::uint32_t rows,
+                         bool snapshot)
+    {
+        const bool timed = device().properties().timestampValidBits > 0;
+        if (timed && !waveTimer)
+            waveTimer = std::make_unique<WaveStageTimer>(device());
+        const WaveBuffers& buffers = tracer.waves();
+        const PipelineScene& scene = tracer.gpuScene().pipelineScene();
+        double seconds = 0.0;
+        bool first = true;
+        const auto submit = [&](const std::function<void(WavefrontPipeline::Recorder&)>& record) {
+            vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) {
+                if (first && snapshot)
+                    target->recordReadback(cmd);
+                first = false;
+                if (timed)
+                {
+                    vkCmdResetQueryPool(cmd, timestamps.Handle(), 0, 2);
+                    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps.Handle(), 0);
+                    waveTimer->begin(cmd);
+                }
+                WavefrontPipeline::Recorder recorder(*tracer.wavefront(), cmd, {&descriptors.set, 1}, uniforms, scene,
+                                                     firstRow, buffers, waveTimer.get());
+                record(recorder);
+                buffers.recordCountersReadback(cmd);
+                if (timed)
+                    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 1);
+            });
+            if (timed)
+            {
+                waveTimer->addTo(frameStages);
+                seconds += timestamps.secondsBetween(0, device().properties().limits.timestampPeriod);
+            }
+        };
+        const std::uint32_t depth = uniforms.depth;
+        const std::vector<Wave> waves = planWaves(firstSample, samples, {target->width(), rows}, firstRow,
+                                                  buffers.capacity());
+        const Wave* unfinished = nullptr; // the wave whose sums the next submission records first
+        for (const Wave& wave : waves)
+        {
+            std::uint32_t last = std::min(depth, waveSegments);
+            submit([&](WavefrontPipeline::Recorder& r) {
+                if (unfinished)
+                    r.finish(*unfinished);
+                r.start(wave);
+                r.segments(wave, 0, last);
+            });
+            unfinished = &wave;
+            while (last < depth && buffers.readCounters().extendRays.x > 0)
+            {
+                const std::uint32_t next = std::min(depth, last + kWaveSegmentChunk);
+                submit([&](WavefrontPipeline::Recorder& r) { r.segments(wave, last, next); });
+                last = next;
+            }
+            waveSegments = std::max(buffers.readCounters().segments, 1u);
+        }
+        if (unfinished)
+            submit([&](WavefrontPipeline::Recorder& r) { r.finish(*unfinished); });
+        return timed ? seconds : -1.0;
     }
 
     /// Records `record` between timestamps 2 and 3, runs it and adds its device seconds to frameStages[stage].
@@ -217,6 +284,7 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     e.target->reset(e.uniforms);
     e.clear();
     e.bandWork = std::max(1u, height / 16); // a sixteenth of the image at one sample, then by time
+    e.waveSegments = kFirstWaveSegments;
 }
 
 BatchResult GpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control)

@@ -84,14 +84,13 @@ bool SceneTracer::prepare(const shader::RenderUniforms& uniforms) const
 
 void SceneTracer::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                                const shader::RenderUniforms& uniforms, std::uint32_t firstSample, std::uint32_t count,
-                               VkExtent2D extent, const PathTracingPipeline* variant, std::uint32_t firstRow,
-                               WaveStageTimer* timer) const
+                               VkExtent2D extent, const PathTracingPipeline* variant, std::uint32_t firstRow) const
 {
     const GpuScene& scene = gpuScene();
     if (m_integrator == GpuIntegrator::Wavefront && !variant)
     {
         m_wavefront->recordLaunch(cmd, sets, uniforms, scene.pipelineScene(), firstSample, count, extent, firstRow,
-                                  m_waves, timer);
+                                  m_waves);
         return;
     }
     (variant ? *variant : m_pipeline)

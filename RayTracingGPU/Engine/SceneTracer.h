@@ -24,7 +24,6 @@ namespace rt::gpu
 {
 class GpuScene;
 class WavefrontPipeline;
-class WaveStageTimer;
 
 /// A descriptor set of the pipeline's set 0 and the pool it lives in (freed together).
 struct TracingDescriptors
@@ -78,6 +77,10 @@ public:
     void setIntegrator(GpuIntegrator integrator, std::uint32_t waveCapacity = 0);
     /// Paths per wave of the wavefront integrator (1 while the tracer runs the megakernel).
     std::uint32_t waveCapacity() const { return m_waves.capacity(); }
+    /// The wavefront integrator's pipelines (null until it first runs) and memory, for a caller that records
+    /// its waves itself (GpuEngine: a submission per wave, stopping once its queues are empty).
+    const WavefrontPipeline* wavefront() const { return m_wavefront.get(); }
+    const WaveBuffers& waves() const { return m_waves; }
     /// Compiles the pipeline a render with `uniforms` of the current scene needs (PathTracingPipeline::prepare);
     /// true when it compiled one.
     bool prepare(const shader::RenderUniforms& uniforms) const;
@@ -90,11 +93,11 @@ public:
     /// Records `count` samples per pixel of `extent` from `firstSample` on, with `sets` bound from set 0, whose
     /// uniform buffer holds `uniforms`, through `variant` (a megakernel: PathTracingPipeline::recordLaunch, with
     /// the scene's samples per launch) or else the tracer's integrator. `extent` may be a band of rows from
-    /// `firstRow` on. `timer` (begun by the caller) times the wavefront's kernels.
+    /// `firstRow` on. The wavefront records every wave to the render's depth (GpuEngine submits its waves
+    /// itself, stopping where their queues empty).
     void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                       const shader::RenderUniforms& uniforms, std::uint32_t firstSample, std::uint32_t count,
-                      VkExtent2D extent, const PathTracingPipeline* variant = nullptr, std::uint32_t firstRow = 0,
-                      WaveStageTimer* timer = nullptr) const;
+                      VkExtent2D extent, const PathTracingPipeline* variant = nullptr, std::uint32_t firstRow = 0) const;
 
 private:
     const vk::Device* m_device;

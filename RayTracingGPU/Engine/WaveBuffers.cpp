@@ -1,8 +1,10 @@
 #include "Engine/WaveBuffers.h"
 
 #include <algorithm>
+#include <cstring>
 
 #include "Shared/HostDevice.h"
+#include "Vulkan/Barriers.h"
 
 namespace rt::gpu
 {
@@ -33,8 +35,27 @@ WaveBuffers::WaveBuffers(const vk::Device& device, std::uint32_t capacity)
                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::DeviceLocal),
       m_counters(device, sizeof(shader::WaveCounters),
                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
-                     VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                 vk::MemoryUse::DeviceLocal)
+                     VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                     VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                 vk::MemoryUse::DeviceLocal),
+      m_countersReadback(device, sizeof(shader::WaveCounters), VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback)
 {
+}
+
+void WaveBuffers::recordCountersReadback(VkCommandBuffer cmd) const
+{
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                      VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    const VkBufferCopy region{0, 0, sizeof(shader::WaveCounters)};
+    vkCmdCopyBuffer(cmd, m_counters.Handle(), m_countersReadback.Handle(), 1, &region);
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                      VK_ACCESS_HOST_READ_BIT);
+}
+
+shader::WaveCounters WaveBuffers::readCounters() const
+{
+    shader::WaveCounters c;
+    std::memcpy(&c, m_countersReadback.mapped(), sizeof(c));
+    return c;
 }
 } // namespace rt::gpu

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 
+#include "Shared/HostDevice.h"
 #include "Vulkan/Buffer.h"
 
 namespace rt::gpu
@@ -27,10 +28,16 @@ public:
     const vk::Buffer& queues() const { return m_queues; }
     const vk::Buffer& counters() const { return m_counters; }
 
+    /// Records the copy of the counters to the host (after the kernels' writes), for readCounters once the
+    /// submission is done.
+    void recordCountersReadback(VkCommandBuffer cmd) const;
+    shader::WaveCounters readCounters() const;
+
 private:
     std::uint32_t m_capacity;
     vk::Buffer m_paths;
     vk::Buffer m_queues;
     vk::Buffer m_counters;
+    vk::Buffer m_countersReadback;
 };
 } // namespace rt::gpu

@@ -120,96 +120,138 @@ bool WavefrontPipeline::prepare(const RenderUniforms& uniforms, const PipelineSc
     return m_compiled.size() > before;
 }
 
+std::vector<Wave> planWaves(std::uint32_t firstSample, std::uint32_t count, VkExtent2D extent,
+                            std::uint32_t firstRow, std::uint32_t capacity)
+{
+    std::vector<Wave> waves;
+    const std::uint64_t pixels = std::uint64_t(extent.width) * extent.height;
+    const std::uint64_t firstPixel = std::uint64_t(firstRow) * extent.width;
+    const std::uint32_t samplesPerWave = std::min(count, std::max(capacity, 1u));
+    // Samples outside, pixels inside: every wave of a pixel's earlier samples comes before a later one.
+    for (std::uint32_t done = 0; done < count;)
+    {
+        const std::uint32_t samples = std::min(samplesPerWave, count - done);
+        const std::uint64_t pixelsPerWave = std::max(capacity, 1u) / samples;
+        for (std::uint64_t pixel = 0; pixel < pixels; pixel += pixelsPerWave)
+            waves.push_back({firstSample + done, samples, static_cast<std::uint32_t>(firstPixel + pixel),
+                             static_cast<std::uint32_t>(std::min(pixelsPerWave, pixels - pixel))});
+        done += samples;
+    }
+    return waves;
+}
+
+WavefrontPipeline::Recorder::Recorder(const WavefrontPipeline& pipeline, VkCommandBuffer cmd,
+                                      std::span<const VkDescriptorSet> sets, const RenderUniforms& uniforms,
+                                      const PipelineScene& scene, std::uint32_t firstRow, const WaveBuffers& waves,
+                                      WaveStageTimer* timer)
+    : m_cmd(cmd), m_compiled(&pipeline.compiled(pipeline.m_layout->specializationFor(uniforms, scene))),
+      m_tables(&pipeline.tablesFor(*m_compiled, scene.hitGroups)),
+      m_layout(pipeline.m_layout->layout().Handle()), m_waves(&waves), m_timer(timer),
+      m_nee((uniforms.estimator == Estimator::Nee || uniforms.estimator == Estimator::NeeMis) &&
+            uniforms.emitterCount > 0)
+{
+    const auto setCount = static_cast<std::uint32_t>(sets.size());
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_layout, 0, setCount, sets.data(), 0, nullptr);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, m_layout, 0, setCount, sets.data(), 0,
+                            nullptr);
+    m_push.firstRow = firstRow;
+    m_push.waveCapacity = waves.capacity();
+}
+
+void WavefrontPipeline::Recorder::pushConstants() const
+{
+    vkCmdPushConstants(m_cmd, m_layout, kPathTracerStages, 0, sizeof(m_push), &m_push);
+}
+
+void WavefrontPipeline::Recorder::ordered(WaveStage stage) const
+{
+    waveBarrier(m_cmd);
+    if (m_timer)
+        m_timer->mark(m_cmd, stage);
+}
+
+void WavefrontPipeline::Recorder::dispatch(WaveStage stage, const vk::Pipeline& pipeline, std::uint32_t groups) const
+{
+    vkCmdBindPipeline(m_cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.Handle());
+    pushConstants();
+    vkCmdDispatch(m_cmd, groups, 1, 1);
+    ordered(stage);
+}
+
+void WavefrontPipeline::Recorder::trace(WaveStage stage, const ShaderBindingTable& sbt, std::size_t sizeOffset) const
+{
+    vkCmdBindPipeline(m_cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, m_compiled->rayTracing.Handle());
+    pushConstants();
+    vkCmdTraceRaysIndirectKHR(m_cmd, &sbt.raygen(), &sbt.miss(), &sbt.hit(), &sbt.callable(),
+                              m_waves->counters().address() + sizeOffset);
+    ordered(stage);
+}
+
+void WavefrontPipeline::Recorder::use(const Wave& wave)
+{
+    m_push.firstSample = wave.firstSample;
+    m_push.sampleCount = wave.samples;
+    m_push.wavePixelBegin = wave.pixelBegin;
+    m_push.wavePixelCount = wave.pixelCount;
+}
+
+void WavefrontPipeline::Recorder::start(const Wave& wave)
+{
+    use(wave);
+    m_push.waveSegment = 0; // Prepare: the queue it sizes is segment 0's
+    m_push.waveQueue = 0;
+    vkCmdFillBuffer(m_cmd, m_waves->counters().Handle(), 0, VK_WHOLE_SIZE, 0);
+    vk::memoryBarrier(m_cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    dispatch(WaveStage::Generate, m_compiled->generate, groupsFor(std::uint64_t(wave.pixelCount) * wave.samples));
+    dispatch(WaveStage::Prepare, m_compiled->prepare, 1);
+}
+
+void WavefrontPipeline::Recorder::segments(const Wave& wave, std::uint32_t first, std::uint32_t last)
+{
+    use(wave);
+    for (std::uint32_t segment = first; segment < last; ++segment)
+    {
+        m_push.waveSegment = segment;
+        m_push.waveQueue = segment & 1u;
+        trace(WaveStage::Extend, m_tables->extend, offsetof(WaveCounters, extendRays));
+        vkCmdBindPipeline(m_cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m_compiled->shade.Handle());
+        pushConstants();
+        vkCmdDispatchIndirect(m_cmd, m_waves->counters().Handle(), offsetof(WaveCounters, shadeGroups));
+        ordered(WaveStage::Shade);
+        m_push.waveSegment = segment + 1; // Prepare: the queue it sizes is the next segment's
+        dispatch(WaveStage::Prepare, m_compiled->prepare, 1);
+        if (m_nee)
+        {
+            m_push.waveQueue = kWaveShadowQueue;
+            trace(WaveStage::Shadow, m_tables->shadow, offsetof(WaveCounters, shadowRays));
+        }
+    }
+}
+
+void WavefrontPipeline::Recorder::finish(const Wave& wave)
+{
+    use(wave);
+    dispatch(WaveStage::Accumulate, m_compiled->accumulate, groupsFor(wave.pixelCount));
+    // The sums and the NaN/Inf counters, for whatever the caller records next (a readback, the next launch).
+    vk::memoryBarrier(m_cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR |
+                          VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT |
+                          VK_ACCESS_HOST_READ_BIT);
+}
+
 void WavefrontPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                                      const RenderUniforms& uniforms, const PipelineScene& scene,
                                      std::uint32_t firstSample, std::uint32_t count, VkExtent2D extent,
                                      std::uint32_t firstRow, const WaveBuffers& waves, WaveStageTimer* timer) const
 {
-    const Compiled& c = compiled(m_layout->specializationFor(uniforms, scene));
-    const Tables& tables = tablesFor(c, scene.hitGroups);
-    const VkPipelineLayout layout = m_layout->layout().Handle();
-    const auto setCount = static_cast<std::uint32_t>(sets.size());
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, setCount, sets.data(), 0, nullptr);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, layout, 0, setCount, sets.data(), 0,
-                            nullptr);
-    const VkBuffer counters = waves.counters().Handle();
-    const VkDeviceAddress countersAddress = waves.counters().address();
-    const bool nee = (uniforms.estimator == Estimator::Nee || uniforms.estimator == Estimator::NeeMis) &&
-                     uniforms.emitterCount > 0;
-    const std::uint32_t capacity = waves.capacity();
-    const std::uint64_t pixels = std::uint64_t(extent.width) * extent.height;
-    const std::uint64_t firstPixel = std::uint64_t(firstRow) * extent.width;
-
-    TracePushConstants push{};
-    push.firstRow = firstRow;
-    push.waveCapacity = capacity;
-    const auto pushConstants = [&] {
-        vkCmdPushConstants(cmd, layout, kPathTracerStages, 0, sizeof(push), &push);
-    };
-    const auto ordered = [&](WaveStage stage) {
-        waveBarrier(cmd);
-        if (timer)
-            timer->mark(cmd, stage);
-    };
-    const auto dispatch = [&](WaveStage stage, const vk::Pipeline& pipeline, std::uint32_t groups) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.Handle());
-        pushConstants();
-        vkCmdDispatch(cmd, groups, 1, 1);
-        ordered(stage);
-    };
-    const auto trace = [&](WaveStage stage, const ShaderBindingTable& sbt, std::size_t sizeOffset) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, c.rayTracing.Handle());
-        pushConstants();
-        vkCmdTraceRaysIndirectKHR(cmd, &sbt.raygen(), &sbt.miss(), &sbt.hit(), &sbt.callable(),
-                                  countersAddress + sizeOffset);
-        ordered(stage);
-    };
-
-    // Samples outside, pixels inside: every wave of a pixel's earlier samples is summed before a later one.
-    const std::uint32_t samplesPerWave = std::min(count, capacity);
-    for (std::uint32_t done = 0; done < count;)
+    Recorder recorder(*this, cmd, sets, uniforms, scene, firstRow, waves, timer);
+    for (const Wave& wave : planWaves(firstSample, count, extent, firstRow, waves.capacity()))
     {
-        const std::uint32_t samples = std::min(samplesPerWave, count - done);
-        const std::uint64_t pixelsPerWave = capacity / samples;
-        for (std::uint64_t pixel = 0; pixel < pixels; pixel += pixelsPerWave)
-        {
-            push.firstSample = firstSample + done;
-            push.sampleCount = samples;
-            push.wavePixelBegin = static_cast<std::uint32_t>(firstPixel + pixel);
-            push.wavePixelCount = static_cast<std::uint32_t>(std::min(pixelsPerWave, pixels - pixel));
-            push.waveSegment = 0;
-            push.waveQueue = 0;
-            vkCmdFillBuffer(cmd, counters, 0, VK_WHOLE_SIZE, 0);
-            vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                              VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                              VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-            dispatch(WaveStage::Generate, c.generate, groupsFor(std::uint64_t(push.wavePixelCount) * samples));
-            dispatch(WaveStage::Prepare, c.prepare, 1);
-            for (std::uint32_t segment = 0; segment < uniforms.depth; ++segment)
-            {
-                push.waveSegment = segment;
-                push.waveQueue = segment & 1u;
-                trace(WaveStage::Extend, tables.extend, offsetof(WaveCounters, extendRays));
-                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, c.shade.Handle());
-                pushConstants();
-                vkCmdDispatchIndirect(cmd, counters, offsetof(WaveCounters, shadeGroups));
-                ordered(WaveStage::Shade);
-                dispatch(WaveStage::Prepare, c.prepare, 1);
-                if (nee)
-                {
-                    push.waveQueue = kWaveShadowQueue;
-                    trace(WaveStage::Shadow, tables.shadow, offsetof(WaveCounters, shadowRays));
-                }
-            }
-            dispatch(WaveStage::Accumulate, c.accumulate, groupsFor(push.wavePixelCount));
-        }
-        done += samples;
+        recorder.start(wave);
+        recorder.segments(wave, 0, uniforms.depth);
+        recorder.finish(wave);
     }
-    // The sums and the NaN/Inf counters, for whatever the caller records next (a readback, the next launch).
-    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR |
-                          VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
-                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT |
-                          VK_ACCESS_HOST_READ_BIT);
 }
 } // namespace rt::gpu

@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <span>
+#include <vector>
 
 #include "Engine/PathTracingPipeline.h"
 #include "RayTracing/RayTracingPipeline.h"
@@ -24,9 +25,28 @@ namespace rt::gpu
 {
 class WaveBuffers;
 class WaveStageTimer;
+enum class WaveStage;
+
+/// One wave of a launch: `samples` camera samples from `firstSample` on of each pixel (index y * width + x) of
+/// [pixelBegin, pixelBegin + pixelCount).
+struct Wave
+{
+    std::uint32_t firstSample = 0;
+    std::uint32_t samples = 0;
+    std::uint32_t pixelBegin = 0;
+    std::uint32_t pixelCount = 0;
+};
+
+/// The waves of `count` samples per pixel from `firstSample` on over `extent` (rows from `firstRow` on), at
+/// most `capacity` paths each, in the order they must run: a pixel's earlier samples first. Pure.
+std::vector<Wave> planWaves(std::uint32_t firstSample, std::uint32_t count, VkExtent2D extent, std::uint32_t firstRow,
+                            std::uint32_t capacity);
 
 class WavefrontPipeline final
 {
+    struct Compiled;
+    struct Tables;
+
 public:
     /// Loads the shaders; compiles nothing yet. `layout` (which must outlive this) gives the descriptor set
     /// layout, the pipeline layout and the specialisation of a render. Throws rt::AssetError for a missing
@@ -41,9 +61,45 @@ public:
     /// compiled them. Throws rt::DeviceError when the driver rejects one.
     bool prepare(const shader::RenderUniforms& uniforms, const PipelineScene& scene) const;
 
+    /// Records a launch's waves into one command buffer, a wave at a time: start, its segments (all of them,
+    /// or in chunks over several submissions, stopping once the caller sees the queues empty: the engine's
+    /// headless batches), finish. Binds `sets` for both bind points (set 0, naming `waves`); `uniforms` are
+    /// those of its uniform buffer. With `timer`, a timestamp follows each kernel (begun by the caller).
+    class Recorder final
+    {
+    public:
+        Recorder(const WavefrontPipeline& pipeline, VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
+                 const shader::RenderUniforms& uniforms, const PipelineScene& scene, std::uint32_t firstRow,
+                 const WaveBuffers& waves, WaveStageTimer* timer = nullptr);
+
+        /// The counters reset, the camera rays of `wave` and its first queue.
+        void start(const Wave& wave);
+        /// Segments [first, last) of `wave`: path rays, vertices, the next queue's size, shadow rays.
+        void segments(const Wave& wave, std::uint32_t first, std::uint32_t last);
+        /// The sums of `wave`'s pixels, ordered before whatever comes next.
+        void finish(const Wave& wave);
+
+    private:
+        void use(const Wave& wave);
+        void pushConstants() const;
+        void ordered(WaveStage stage) const;
+        void dispatch(WaveStage stage, const vk::Pipeline& pipeline, std::uint32_t groups) const;
+        void trace(WaveStage stage, const ShaderBindingTable& sbt, std::size_t sizeOffset) const;
+
+        VkCommandBuffer m_cmd;
+        const WavefrontPipeline::Compiled* m_compiled;
+        const WavefrontPipeline::Tables* m_tables;
+        VkPipelineLayout m_layout;
+        const WaveBuffers* m_waves;
+        WaveStageTimer* m_timer;
+        bool m_nee;
+        shader::TracePushConstants m_push{};
+    };
+
     /// Records `count` camera samples per pixel of `extent` (a band of rows from `firstRow` on), sample
-    /// indices from `firstSample` on, as waves of at most waves.capacity() paths: each sample of a pixel
-    /// after the one before, added to the accumulation images in sample order. `sets` (set 0 naming `waves`)
+    /// indices from `firstSample` on, as waves of at most waves.capacity() paths (planWaves), each traced to
+    /// the render's depth: each sample of a pixel after the one before, added to the accumulation images in
+    /// sample order. `sets` (set 0 naming `waves`)
     /// are bound for both bind points; `uniforms` are those of its uniform buffer. Everything recorded is
     /// ordered before what comes next. With `timer`, a timestamp follows each kernel (begun by the caller).
     void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
@@ -52,9 +108,7 @@ public:
                       WaveStageTimer* timer = nullptr) const;
 
 private:
-    struct Compiled;
     const Compiled& compiled(const PipelineSpecialization& key) const;
-    struct Tables;
     const Tables& tablesFor(const Compiled& compiled, const HitGroupLayout& scene) const;
 
     const vk::Device* m_device;

@@ -1,5 +1,6 @@
 // One invocation between the wavefront's kernels: the paths and shadow rays the last kernel queued become
-// the sizes of the next indirect launches (WaveCounters), and the counts start again from 0.
+// the sizes of the next indirect launches (WaveCounters), and the counts start again from 0. The paths are
+// those of segment push.waveSegment.
 #version 460
 #extension GL_EXT_scalar_block_layout : require
 #extension GL_EXT_nonuniform_qualifier : require
@@ -18,4 +19,6 @@ void main()
     waveCounters.shadowRays = uvec4(waveCounters.shadowsPushed, 1u, 1u, 0u);
     waveCounters.pushed = 0u;
     waveCounters.shadowsPushed = 0u;
+    if (paths > 0u)
+        waveCounters.segments = push.waveSegment + 1u;
 }
