@@ -100,7 +100,7 @@ struct GpuEngine::Impl
     double dispatch(std::uint32_t firstSample, std::uint32_t samples, std::uint32_t firstRow, std::uint32_t rows,
                     bool snapshot)
     {
-        if (tracer.integrator() == GpuIntegrator::Wavefront)
+        if (tracer.integratorFor(uniforms) == GpuIntegrator::Wavefront)
             return dispatchWaves(firstSample, samples, firstRow, rows, snapshot);
         const bool timed = device().properties().timestampValidBits > 0;
         vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) {
@@ -347,7 +347,7 @@ std::string GpuEngine::frameConfiguration() const
         return {};
     const SceneTracer& t = m_impl->tracer;
     return "pipeline " + t.pipeline().specializationFor(m_impl->uniforms, t.gpuScene().pipelineScene()).describe() +
-           ", integrator " + integratorName(t.integrator());
+           ", integrator " + integratorName(t.integratorFor(m_impl->uniforms));
 }
 
 std::map<std::string, double> GpuEngine::stageSeconds() const

@@ -34,7 +34,7 @@ struct GpuEngineOptions
     /// (Strategy), or one general pipeline for everything (Off).
     Specialize specialize = Specialize::Full;
     /// How a launch runs the estimator (GpuIntegrator.h).
-    GpuIntegrator integrator = GpuIntegrator::Megakernel;
+    GpuIntegrator integrator = GpuIntegrator::Auto;
     /// The wavefront's paths per wave; 0: by the device (waveCapacityFor).
     std::uint32_t wavePaths = 0;
     /// The window: the device must present to its surface (GpuContext.h). Headless leaves it empty.

@@ -1,32 +1,41 @@
 // How the GPU engine runs the path-tracing estimator: one ray-tracing invocation per camera sample looping
 // over its segments (the megakernel, RayGen.rgen), or kernels per segment over a wave of paths
-// (WavefrontPipeline.h). Both compute the same estimator with the same shading code (PathVertex.glsl).
+// (WavefrontPipeline.h). Both compute the same estimator with the same shading code (PathVertex.glsl); which
+// is faster depends on the render (docs/PERFORMANCE.md §8), and `auto` picks by a rule measured on the H100.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string_view>
+
+#include "Shared/HostDevice.h"
 
 namespace rt::gpu
 {
 enum class GpuIntegrator
 {
+    Auto,
     Megakernel,
     Wavefront,
 };
 
-/// --integrator's names: "megakernel", "wavefront".
-constexpr const char* integratorName(GpuIntegrator integrator)
-{
-    return integrator == GpuIntegrator::Wavefront ? "wavefront" : "megakernel";
-}
+/// --integrator's names: "auto", "megakernel", "wavefront".
+const char* integratorName(GpuIntegrator integrator);
 
 /// The integrator a name gives, or nothing for an unknown name.
-constexpr std::optional<GpuIntegrator> parseIntegrator(std::string_view name)
-{
-    if (name == "megakernel")
-        return GpuIntegrator::Megakernel;
-    if (name == "wavefront")
-        return GpuIntegrator::Wavefront;
-    return std::nullopt;
-}
+std::optional<GpuIntegrator> parseIntegrator(std::string_view name);
+
+/// Scenes with at least this many traced primitives run the wavefront under `auto`: their traversal calls
+/// many intersection shaders, each dearer in the megakernel, whose raygen keeps the path's state across it
+/// (rtow-final's 485 spheres: 1.29x on the H100).
+inline constexpr std::uint64_t kWavefrontPrimitives = 256;
+
+/// What `setting` runs for a render with `uniforms` of a scene of `primitives` traced primitives (TLAS
+/// instances' triangles, spheres and media, counted per instance). Auto: the megakernel on a CPU device
+/// (lavapipe, where the wavefront's extra launches only cost); else the wavefront where a vertex evaluates
+/// several lights (NEE over at least two emitters, book 3's mixture over at least two lights: the shading the
+/// megakernel runs slowest) or the scene has kWavefrontPrimitives or more; else the megakernel, which is
+/// faster for light scenes (the wavefront moves a path's state through memory at every segment). Pure.
+GpuIntegrator resolveIntegrator(GpuIntegrator setting, bool cpuDevice, const shader::RenderUniforms& uniforms,
+                                std::uint64_t primitives);
 } // namespace rt::gpu

@@ -40,6 +40,17 @@ void checkImageLimits(const vk::Device& device, const Scene& scene, std::uint32_
                                           image.path, image.width, image.height, p.limits.maxImageDimension2D,
                                           p.name));
 }
+std::uint64_t tracedPrimitivesOf(const SceneLayout& layout)
+{
+    std::uint64_t n = 0;
+    for (const TlasInstanceDesc& instance : layout.instances)
+    {
+        const BlasDesc& blas = layout.blases[instance.blas];
+        n += std::uint64_t(blas.triangleCount) + blas.sphereCount + blas.mediumCount;
+    }
+    return n;
+}
+
 /// The uniform block of kBindingMixtureLights: the scene's first kMixtureUniformLights lights, zeros after them
 /// (the block's whole declared size is bound).
 std::vector<LightData> mixtureLightsOf(const Scene& scene)
@@ -52,7 +63,7 @@ std::vector<LightData> mixtureLightsOf(const Scene& scene)
 
 GpuScene::GpuScene(const vk::Device& device, const vk::CommandPool& pool, const Scene& scene,
                    const SceneLayout& layout, std::uint32_t maxImages, std::unique_ptr<GpuGeometry> previous)
-    : m_pipelineScene{featureBitsOf(scene, layout.hitGroups), layout.hitGroups},
+    : m_pipelineScene{featureBitsOf(scene, layout.hitGroups), layout.hitGroups, tracedPrimitivesOf(layout)},
       m_samplesPerLaunch(scene.hasMotion() ? 1u : std::numeric_limits<std::uint32_t>::max())
 {
     checkImageLimits(device, scene, maxImages);

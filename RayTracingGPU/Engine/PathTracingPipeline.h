@@ -48,6 +48,7 @@ struct PipelineScene
 {
     std::uint32_t features = shader::kSpecDynamic; // featureBitsOf the scene
     HitGroupLayout hitGroups = HitGroupLayout::all(); // the hit records its TLAS instances name
+    std::uint64_t tracedPrimitives = 0; // per TLAS instance, its BLAS's triangles, spheres and media, summed
 };
 
 enum class RayGenVariant

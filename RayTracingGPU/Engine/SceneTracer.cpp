@@ -19,18 +19,25 @@ SceneTracer::SceneTracer(const vk::Device& device, const vk::CommandPool& pool, 
 void SceneTracer::setIntegrator(GpuIntegrator integrator, std::uint32_t waveCapacity)
 {
     const vk::DeviceProperties& p = m_device->properties();
-    const std::uint32_t capacity =
-        integrator == GpuIntegrator::Megakernel ? 1u
-        : waveCapacity > 0                      ? waveCapacity
-                                                : waveCapacityFor(p.type == vk::DeviceType::Cpu, p.deviceLocalHeapSize);
+    const bool cpuDevice = p.type == vk::DeviceType::Cpu;
+    const bool mayRunWaves = integrator == GpuIntegrator::Wavefront || (integrator == GpuIntegrator::Auto && !cpuDevice);
+    const std::uint32_t capacity = !mayRunWaves   ? 1u
+                                   : waveCapacity ? waveCapacity
+                                                  : waveCapacityFor(cpuDevice, p.deviceLocalHeapSize);
     if (capacity != m_waves.capacity())
     {
         m_waves = WaveBuffers(*m_device, 1); // the old ones go first: both may not fit at once
         m_waves = WaveBuffers(*m_device, capacity);
     }
-    if (integrator == GpuIntegrator::Wavefront && !m_wavefront)
+    if (mayRunWaves && !m_wavefront)
         m_wavefront = std::make_unique<WavefrontPipeline>(*m_device, m_shaderDir, m_pipeline);
     m_integrator = integrator;
+}
+
+GpuIntegrator SceneTracer::integratorFor(const shader::RenderUniforms& uniforms) const
+{
+    return resolveIntegrator(m_integrator, m_device->properties().type == vk::DeviceType::Cpu, uniforms,
+                             gpuScene().pipelineScene().tracedPrimitives);
 }
 
 SceneTracer::~SceneTracer() = default;
@@ -77,7 +84,7 @@ shader::RenderUniforms SceneTracer::uniforms(const CameraDesc& camera, const Ren
 
 bool SceneTracer::prepare(const shader::RenderUniforms& uniforms) const
 {
-    if (m_integrator == GpuIntegrator::Wavefront)
+    if (integratorFor(uniforms) == GpuIntegrator::Wavefront)
         return m_wavefront->prepare(uniforms, gpuScene().pipelineScene());
     return m_pipeline.prepare(uniforms, gpuScene().pipelineScene());
 }
@@ -87,7 +94,7 @@ void SceneTracer::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptor
                                VkExtent2D extent, const PathTracingPipeline* variant, std::uint32_t firstRow) const
 {
     const GpuScene& scene = gpuScene();
-    if (m_integrator == GpuIntegrator::Wavefront && !variant)
+    if (!variant && integratorFor(uniforms) == GpuIntegrator::Wavefront)
     {
         m_wavefront->recordLaunch(cmd, sets, uniforms, scene.pipelineScene(), firstSample, count, extent, firstRow,
                                   m_waves);

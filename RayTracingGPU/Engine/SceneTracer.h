@@ -48,7 +48,7 @@ public:
     /// (the wavefront's memory is allocated here). Throws rt::AssetError (a shader is missing),
     /// rt::DeviceError (the driver rejects a module, or the wavefront's memory does not fit).
     SceneTracer(const vk::Device& device, const vk::CommandPool& pool, std::filesystem::path shaderDir,
-                Specialize specialize = Specialize::Full, GpuIntegrator integrator = GpuIntegrator::Megakernel);
+                Specialize specialize = Specialize::Full, GpuIntegrator integrator = GpuIntegrator::Auto);
     SceneTracer(const SceneTracer&) = delete;
     SceneTracer& operator=(const SceneTracer&) = delete;
     ~SceneTracer();
@@ -70,12 +70,15 @@ public:
     const PathTracingPipeline& pipeline() const { return m_pipeline; }
     /// PathTracingPipeline::setSpecialize.
     void setSpecialize(Specialize specialize) { m_pipeline.setSpecialize(specialize); }
+    /// The integrator setting (GpuIntegrator::Auto resolves per render: integratorFor).
     GpuIntegrator integrator() const { return m_integrator; }
+    /// What a render with `uniforms` of the current scene runs (resolveIntegrator).
+    GpuIntegrator integratorFor(const shader::RenderUniforms& uniforms) const;
     /// From the next launch on, runs `integrator`, with waves of `waveCapacity` paths (0: waveCapacityFor the
     /// device). Descriptor sets made before must be dropped and made again: they name the old wave buffers.
     /// Throws rt::DeviceError when the wave buffers do not fit.
     void setIntegrator(GpuIntegrator integrator, std::uint32_t waveCapacity = 0);
-    /// Paths per wave of the wavefront integrator (1 while the tracer runs the megakernel).
+    /// Paths per wave of the wavefront integrator (1 where the tracer never runs it).
     std::uint32_t waveCapacity() const { return m_waves.capacity(); }
     /// The wavefront integrator's pipelines (null until it first runs) and memory, for a caller that records
     /// its waves itself (GpuEngine: a submission per wave, stopping once its queues are empty).

@@ -14,6 +14,9 @@
 #                                      device_carry.sh) against this one, render by render (gpu_ab.sh)
 #   tests/Bench/device_run.sh bars     issue 9's efficiency bars in one run: cornell-box-lights (mixture
 #                                      against nee-mis) and many-lights (light selections), by --compare
+#                                      (INTEGRATOR: the GPU integrator, default the app's)
+#   tests/Bench/device_run.sh integrators  the megakernel against the wavefront, render by render
+#                                      (tests/Bench/renders/integrators.txt)
 set -u
 mode=${1:-tests}
 out=${OUT:-/tmp/out}
@@ -68,11 +71,19 @@ specialization)
     ROUNDS=3 bash tests/Bench/specialization_figure.sh "$bin" "$work/figure" | tee "$out/figure.txt"
     cp "$work"/figure/*.json "$out/specialization/"
     ;;
+integrators)
+    ROUNDS=${ROUNDS:-2} bash tests/Bench/gpu_ab.sh "$bin" "$bin" /tmp/ab tests/Bench/renders/integrators.txt |
+        tee "$out/integrators.txt"
+    (cd /tmp/ab && tar -czf "$out/integrators-stats.tar.gz" ./*.json)
+    ;;
 bars)
-    "$bin/ray-tracing-gpu" --compare --quiet --scene cornell-box-lights --width 600 --engines gpu \
+    integrator=${INTEGRATOR:+--integrator $INTEGRATOR}
+    # shellcheck disable=SC2086 # $integrator is empty or two words
+    "$bin/ray-tracing-gpu" --compare --quiet $integrator --scene cornell-box-lights --width 600 --engines gpu \
         --reference-spp 16384 --estimators mixture,nee-mis --roulettes off,on --samplings random,sobol \
         --spp-list 256,1024 --csv "$out/cbl.csv" --table "$out/cbl.json"
-    "$bin/ray-tracing-gpu" --compare --quiet --scene many-lights --width 600 --engines gpu --reference-spp 4096 \
+    # shellcheck disable=SC2086
+    "$bin/ray-tracing-gpu" --compare --quiet $integrator --scene many-lights --width 600 --engines gpu --reference-spp 4096 \
         --estimators nee-mis --light-selections uniform,power,bvh --samplings random,sobol --spp-list 64,256 \
         --csv "$out/ml.csv" --table "$out/ml.json"
     ;;

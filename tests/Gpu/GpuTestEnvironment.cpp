@@ -38,7 +38,7 @@ GpuIntegrator suiteIntegrator()
 {
     const char* name = std::getenv("RT_GPU_INTEGRATOR");
     if (!name || !*name)
-        return GpuIntegrator::Megakernel;
+        return GpuIntegrator::Auto;
     if (const auto integrator = parseIntegrator(name))
         return *integrator;
     throw UsageError(std::string("RT_GPU_INTEGRATOR must be megakernel or wavefront (got '") + name + "')");

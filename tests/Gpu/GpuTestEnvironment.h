@@ -14,8 +14,8 @@
 
 namespace rt::gpu::test
 {
-/// The integrator the suite's shared engine runs: RT_GPU_INTEGRATOR (megakernel or wavefront), megakernel
-/// when unset, so that one suite checks either on any device (tests/Bench/device_run.sh runs both).
+/// The integrator the suite's shared engine runs: RT_GPU_INTEGRATOR (auto, megakernel or wavefront), the
+/// app's default (auto) when unset, so that one suite checks either integrator on any device.
 GpuIntegrator suiteIntegrator();
 
 /// The shared engine, or nullptr when none could be created (see engineError()).

@@ -40,6 +40,7 @@ GpuEngineOptions engineOptions(const WindowOptions& options, const VulkanWindow&
     GpuEngineOptions e;
     e.deviceIndex = options.deviceIndex;
     e.validation = options.validation;
+    e.integrator = options.integrator;
     e.presentation = Presentation{VulkanWindow::requiredInstanceExtensions(),
                                   [&window](VkInstance instance) { return window.createSurface(instance); }};
     return e;

@@ -28,6 +28,7 @@ struct WindowOptions
     std::optional<WindowSize> windowSize; // --window-size; none: the panel and the image side by side, 1:1
     std::optional<int> deviceIndex;
     bool validation = false;
+    GpuIntegrator integrator = GpuIntegrator::Auto; // --integrator
     std::optional<int> frames; // run this many frames after the actions, then stop
     std::filesystem::path screenshot; // with frames: what the window shows in the last frame, as PNG
     std::filesystem::path stateJson; // at exit: the window's and the image's sizes, the layout drawn, the message

@@ -1,0 +1,62 @@
+// The GPU integrator a render runs (RayTracingGPU/Engine/GpuIntegrator.h): names, and auto's rule.
+#include <gtest/gtest.h>
+
+#include "Engine/GpuIntegrator.h"
+
+namespace rt::gpu::test
+{
+namespace
+{
+using shader::Estimator;
+
+shader::RenderUniforms render(Estimator estimator, std::uint32_t lights, std::uint32_t emitters)
+{
+    shader::RenderUniforms u{};
+    u.estimator = estimator;
+    u.lightCount = lights;
+    u.emitterCount = emitters;
+    return u;
+}
+
+TEST(IntegratorName, NamesRoundTrip)
+{
+    for (const GpuIntegrator i : {GpuIntegrator::Auto, GpuIntegrator::Megakernel, GpuIntegrator::Wavefront})
+        EXPECT_EQ(parseIntegrator(integratorName(i)), i);
+    EXPECT_FALSE(parseIntegrator("wave"));
+    EXPECT_FALSE(parseIntegrator(""));
+}
+
+TEST(IntegratorChoice, AnExplicitChoiceStands)
+{
+    const auto u = render(Estimator::NeeMis, 12, 12);
+    EXPECT_EQ(resolveIntegrator(GpuIntegrator::Megakernel, false, u, 1u << 20), GpuIntegrator::Megakernel);
+    EXPECT_EQ(resolveIntegrator(GpuIntegrator::Wavefront, true, render(Estimator::BsdfOnly, 0, 0), 1),
+              GpuIntegrator::Wavefront);
+}
+
+// The rule, on the catalogue's cases measured on the H100 (docs/PERFORMANCE.md §8).
+TEST(IntegratorChoice, AutoTakesTheWavefrontWhereAVertexEvaluatesSeveralLightsOrTheSceneIsLarge)
+{
+    const auto autoFor = [](const shader::RenderUniforms& u, std::uint64_t primitives) {
+        return resolveIntegrator(GpuIntegrator::Auto, false, u, primitives);
+    };
+    EXPECT_EQ(autoFor(render(Estimator::NeeMis, 12, 12), 20), GpuIntegrator::Wavefront); // cornell-box-lights
+    EXPECT_EQ(autoFor(render(Estimator::Nee, 2, 2), 20), GpuIntegrator::Wavefront);
+    EXPECT_EQ(autoFor(render(Estimator::Mixture, 12, 12), 20), GpuIntegrator::Wavefront);
+    EXPECT_EQ(autoFor(render(Estimator::Mixture, 2, 1), 20), GpuIntegrator::Wavefront); // rtrol-cornell-glass
+    EXPECT_EQ(autoFor(render(Estimator::NeeMis, 1, 1), 3), GpuIntegrator::Megakernel); // sphere-light-closeup
+    EXPECT_EQ(autoFor(render(Estimator::NeeMis, 2, 1), 3), GpuIntegrator::Megakernel); // one emitter
+    EXPECT_EQ(autoFor(render(Estimator::Mixture, 1, 1), 17), GpuIntegrator::Megakernel); // rtrol-cornell-box
+    EXPECT_EQ(autoFor(render(Estimator::BsdfOnly, 12, 12), 20), GpuIntegrator::Megakernel);
+    EXPECT_EQ(autoFor(render(Estimator::Mixture, 0, 0), kWavefrontPrimitives - 1), GpuIntegrator::Megakernel);
+    EXPECT_EQ(autoFor(render(Estimator::Mixture, 0, 0), kWavefrontPrimitives), GpuIntegrator::Wavefront);
+    EXPECT_EQ(autoFor(render(Estimator::BsdfOnly, 0, 0), 485), GpuIntegrator::Wavefront); // rtow-final
+}
+
+TEST(IntegratorChoice, AutoRunsTheMegakernelOnACpuDevice)
+{
+    EXPECT_EQ(resolveIntegrator(GpuIntegrator::Auto, true, render(Estimator::NeeMis, 12, 12), 1u << 20),
+              GpuIntegrator::Megakernel);
+}
+} // namespace
+} // namespace rt::gpu::test
