@@ -5,6 +5,9 @@
 #include "Engine/WavefrontPipeline.h"
 #include "Error.h"
 
+#include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
+
 namespace rt::gpu
 {
 SceneTracer::SceneTracer(const vk::Device& device, const vk::CommandPool& pool, std::filesystem::path shaderDir,
@@ -20,22 +23,57 @@ void SceneTracer::setIntegrator(GpuIntegrator integrator, std::uint32_t waveCapa
 {
     const vk::DeviceProperties& p = m_device->properties();
     const bool cpuDevice = p.type == vk::DeviceType::Cpu;
-    const bool mayRunWaves = integrator == GpuIntegrator::Wavefront || (integrator == GpuIntegrator::Auto && !cpuDevice);
-    const std::uint32_t capacity = !mayRunWaves   ? 1u
-                                   : waveCapacity ? waveCapacity
-                                                  : waveCapacityFor(cpuDevice, p.deviceLocalHeapSize);
+    const std::string shortfall = m_device->wavefrontShortfall();
+    if (integrator == GpuIntegrator::Wavefront && !shortfall.empty())
+        throw DeviceError(fmt::format("the wavefront integrator needs what device '{}' lacks: {}", p.name, shortfall));
+    // Auto runs the megakernel alone where the wavefront cannot run or would be slower everywhere (a CPU device).
+    const bool mayRunWaves = integrator == GpuIntegrator::Wavefront ||
+                             (integrator == GpuIntegrator::Auto && !cpuDevice && shortfall.empty());
+    std::uint32_t capacity = !mayRunWaves   ? 1u
+                             : waveCapacity ? waveCapacity
+                                            : waveCapacityFor(cpuDevice, p.deviceLocalHeapSize);
+    m_integrator = GpuIntegrator::Megakernel;
+    m_wavesReady = false;
     if (capacity != m_waves.capacity())
     {
         m_waves = WaveBuffers(*m_device, 1); // the old ones go first: both may not fit at once
-        m_waves = WaveBuffers(*m_device, capacity);
+        // Where the device cannot give that much memory, waves of half as many paths, down to 64 K; auto then
+        // falls back to the megakernel alone, an explicit wavefront fails.
+        while (capacity > 1)
+        {
+            try
+            {
+                m_waves = WaveBuffers(*m_device, capacity);
+                break;
+            }
+            catch (const DeviceError& e)
+            {
+                if (waveCapacity == 0 && capacity > (1u << 16))
+                {
+                    capacity /= 2;
+                    continue;
+                }
+                if (integrator == GpuIntegrator::Wavefront)
+                    throw;
+                spdlog::warn("the wavefront integrator's memory does not fit ({}): running the megakernel", e.what());
+                integrator = GpuIntegrator::Megakernel;
+                capacity = 1;
+            }
+        }
     }
-    if (mayRunWaves && !m_wavefront)
-        m_wavefront = std::make_unique<WavefrontPipeline>(*m_device, m_shaderDir, m_pipeline);
+    if (integrator != GpuIntegrator::Megakernel && mayRunWaves)
+    {
+        if (!m_wavefront)
+            m_wavefront = std::make_unique<WavefrontPipeline>(*m_device, m_shaderDir, m_pipeline);
+        m_wavesReady = true;
+    }
     m_integrator = integrator;
 }
 
 GpuIntegrator SceneTracer::integratorFor(const shader::RenderUniforms& uniforms) const
 {
+    if (!m_wavesReady)
+        return GpuIntegrator::Megakernel;
     return resolveIntegrator(m_integrator, m_device->properties().type == vk::DeviceType::Cpu, uniforms,
                              gpuScene().pipelineScene().tracedPrimitives);
 }

@@ -75,8 +75,11 @@ public:
     /// What a render with `uniforms` of the current scene runs (resolveIntegrator).
     GpuIntegrator integratorFor(const shader::RenderUniforms& uniforms) const;
     /// From the next launch on, runs `integrator`, with waves of `waveCapacity` paths (0: waveCapacityFor the
-    /// device). Descriptor sets made before must be dropped and made again: they name the old wave buffers.
-    /// Throws rt::DeviceError when the wave buffers do not fit.
+    /// device, halved while the device cannot allocate them, down to 64 K). Auto runs the megakernel alone on
+    /// a CPU device, on a device without what the wavefront needs (vk::Device::wavefrontShortfall) and where
+    /// its memory does not fit (saying so). Descriptor sets made before must be dropped and made again: they
+    /// name the old wave buffers. Throws rt::DeviceError for an explicit wavefront the device cannot run,
+    /// naming what it lacks, or whose memory does not fit.
     void setIntegrator(GpuIntegrator integrator, std::uint32_t waveCapacity = 0);
     /// Paths per wave of the wavefront integrator (1 where the tracer never runs it).
     std::uint32_t waveCapacity() const { return m_waves.capacity(); }
@@ -109,7 +112,8 @@ private:
     PathTracingPipeline m_pipeline;
     GpuIntegrator m_integrator;
     WaveBuffers m_waves; // one path's worth for the megakernel: the descriptors name them either way
-    std::unique_ptr<WavefrontPipeline> m_wavefront; // the wavefront integrator's, else null
+    std::unique_ptr<WavefrontPipeline> m_wavefront; // made the first time the wavefront may run, then kept
+    bool m_wavesReady = false; // the wavefront may run: the device has what it needs and its memory
     const Scene* m_sceneDesc = nullptr;
     std::unique_ptr<GpuScene> m_scene;
     AccelerationStructureBuilds m_builds;

@@ -19,7 +19,8 @@ std::atomic<int> g_liveDevices{0};
 
 Device::Device(const PhysicalDevice& physical, bool presentation)
     : m_physical(physical.handle), m_queueFamily(physical.queueFamily), m_properties(queryProperties(physical)),
-      m_shaderClock(physical.candidate.features.shaderSubgroupClock)
+      m_shaderClock(physical.candidate.features.shaderSubgroupClock),
+      m_traceRaysIndirect(physical.candidate.features.rayTracingPipelineTraceRaysIndirect)
 {
     if (g_liveDevices.load() > 0)
         throw DeviceError("a Vulkan device already exists in this process; the engine drives one device at a time");
@@ -42,7 +43,7 @@ Device::Device(const PhysicalDevice& physical, bool presentation)
     as.pNext = &v12;
     VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
     rt.rayTracingPipeline = VK_TRUE;
-    rt.rayTracingPipelineTraceRaysIndirect = VK_TRUE;
+    rt.rayTracingPipelineTraceRaysIndirect = m_traceRaysIndirect ? VK_TRUE : VK_FALSE;
     rt.pNext = &as;
     VkPhysicalDeviceShaderClockFeaturesKHR clock{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_CLOCK_FEATURES_KHR};
     clock.shaderSubgroupClock = VK_TRUE;
@@ -72,10 +73,21 @@ Device::Device(const PhysicalDevice& physical, bool presentation)
 
 Device::~Device() { destroy(); }
 
+std::string Device::wavefrontShortfall() const
+{
+    std::string missing;
+    if (!m_traceRaysIndirect)
+        missing = "feature VkPhysicalDeviceRayTracingPipelineFeaturesKHR::rayTracingPipelineTraceRaysIndirect";
+    if (!m_properties.subgroupBallotInCompute)
+        missing += std::string(missing.empty() ? "" : ", ") + "subgroup ballot operations in compute shaders";
+    return missing;
+}
+
 Device::Device(Device&& other) noexcept
     : m_device(std::exchange(other.m_device, VK_NULL_HANDLE)), m_physical(other.m_physical),
       m_queue(std::exchange(other.m_queue, VK_NULL_HANDLE)), m_queueFamily(other.m_queueFamily),
-      m_properties(other.m_properties), m_shaderClock(other.m_shaderClock)
+      m_properties(other.m_properties), m_shaderClock(other.m_shaderClock),
+      m_traceRaysIndirect(other.m_traceRaysIndirect)
 {
 }
 
@@ -90,6 +102,7 @@ Device& Device::operator=(Device&& other) noexcept
         m_queueFamily = other.m_queueFamily;
         m_properties = other.m_properties;
         m_shaderClock = other.m_shaderClock;
+        m_traceRaysIndirect = other.m_traceRaysIndirect;
     }
     return *this;
 }

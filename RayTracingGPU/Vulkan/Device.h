@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "Vulkan/Loader.h"
@@ -31,6 +32,10 @@ public:
     const DeviceProperties& properties() const { return m_properties; }
     /// VK_KHR_shader_clock with shaderSubgroupClock is enabled (clockARB in shaders).
     bool shaderClock() const { return m_shaderClock; }
+    /// What the wavefront integrator needs and this device lacks ("" when nothing): indirect ray-tracing
+    /// launches (rayTracingPipelineTraceRaysIndirect, enabled when present) and subgroup ballots in compute
+    /// shaders.
+    std::string wavefrontShortfall() const;
 
     /// Index of a memory type allowed by `typeBits` with all of `required`. Throws rt::DeviceError if none.
     std::uint32_t findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFlags required) const;
@@ -46,5 +51,6 @@ private:
     std::uint32_t m_queueFamily = 0;
     DeviceProperties m_properties;
     bool m_shaderClock = false;
+    bool m_traceRaysIndirect = false;
 };
 } // namespace rt::vk

@@ -15,7 +15,6 @@ struct DeviceFeatures
 {
     bool accelerationStructure = false;
     bool rayTracingPipeline = false;
-    bool rayTracingPipelineTraceRaysIndirect = false; // the wavefront integrator's launches
     bool bufferDeviceAddress = false;
     bool runtimeDescriptorArray = false;
     bool shaderSampledImageArrayNonUniformIndexing = false;
@@ -24,6 +23,8 @@ struct DeviceFeatures
     bool scalarBlockLayout = false;
     // Optional: the window's heatmap of per-pixel cost (clockARB), hidden without it.
     bool shaderSubgroupClock = false; // VkPhysicalDeviceShaderClockFeaturesKHR, needs kShaderClockExtension
+    // Optional: the wavefront integrator's indirect ray-tracing launches (the megakernel runs without it).
+    bool rayTracingPipelineTraceRaysIndirect = false;
 };
 
 /// One feature the engine needs: where Vulkan reports it and where DeviceFeatures keeps it.
@@ -38,8 +39,6 @@ inline constexpr FeatureRequirement kRequiredFeatures[] = {
     {"VkPhysicalDeviceAccelerationStructureFeaturesKHR", "accelerationStructure",
      &DeviceFeatures::accelerationStructure},
     {"VkPhysicalDeviceRayTracingPipelineFeaturesKHR", "rayTracingPipeline", &DeviceFeatures::rayTracingPipeline},
-    {"VkPhysicalDeviceRayTracingPipelineFeaturesKHR", "rayTracingPipelineTraceRaysIndirect",
-     &DeviceFeatures::rayTracingPipelineTraceRaysIndirect},
     {"VkPhysicalDeviceVulkan12Features", "bufferDeviceAddress", &DeviceFeatures::bufferDeviceAddress},
     {"VkPhysicalDeviceVulkan12Features", "runtimeDescriptorArray", &DeviceFeatures::runtimeDescriptorArray},
     {"VkPhysicalDeviceVulkan12Features", "shaderSampledImageArrayNonUniformIndexing",

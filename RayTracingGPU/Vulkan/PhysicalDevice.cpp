@@ -147,7 +147,9 @@ std::vector<PhysicalDevice> enumeratePhysicalDevices(VkInstance instance, VkSurf
 DeviceProperties queryProperties(const PhysicalDevice& device)
 {
     DeviceProperties p;
+    VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
     VkPhysicalDeviceMaintenance3Properties maintenance3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+    maintenance3.pNext = &subgroup;
     p.rayTracing.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_PROPERTIES_KHR;
     p.rayTracing.pNext = &maintenance3;
     p.accelerationStructure.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR;
@@ -162,6 +164,8 @@ DeviceProperties queryProperties(const PhysicalDevice& device)
     p.type = toDeviceType(properties.properties.deviceType);
     p.limits = properties.properties.limits;
     p.maxMemoryAllocationSize = maintenance3.maxMemoryAllocationSize;
+    p.subgroupBallotInCompute = (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) &&
+                                (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_BALLOT_BIT);
 
     vkGetPhysicalDeviceMemoryProperties(device.handle, &p.memory);
     for (std::uint32_t i = 0; i < p.memory.memoryHeapCount; ++i)

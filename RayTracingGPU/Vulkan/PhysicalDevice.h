@@ -33,6 +33,7 @@ struct DeviceProperties
     VkDeviceSize maxMemoryAllocationSize = 0; // VkPhysicalDeviceMaintenance3Properties
     VkDeviceSize deviceLocalHeapSize = 0; // the largest DEVICE_LOCAL heap
     std::uint32_t timestampValidBits = 0; // of the queue family in use; 0: no timestamps
+    bool subgroupBallotInCompute = false; // VkPhysicalDeviceSubgroupProperties: ballot ops in compute shaders
 };
 
 DeviceProperties queryProperties(const PhysicalDevice& device);
