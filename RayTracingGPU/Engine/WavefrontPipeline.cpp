@@ -244,9 +244,9 @@ void WavefrontPipeline::Recorder::finish(const Wave& wave)
 void WavefrontPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                                      const RenderUniforms& uniforms, const PipelineScene& scene,
                                      std::uint32_t firstSample, std::uint32_t count, VkExtent2D extent,
-                                     std::uint32_t firstRow, const WaveBuffers& waves, WaveStageTimer* timer) const
+                                     std::uint32_t firstRow, const WaveBuffers& waves) const
 {
-    Recorder recorder(*this, cmd, sets, uniforms, scene, firstRow, waves, timer);
+    Recorder recorder(*this, cmd, sets, uniforms, scene, firstRow, waves);
     for (const Wave& wave : planWaves(firstSample, count, extent, firstRow, waves.capacity()))
     {
         recorder.start(wave);

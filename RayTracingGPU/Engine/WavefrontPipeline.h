@@ -101,11 +101,10 @@ public:
     /// the render's depth: each sample of a pixel after the one before, added to the accumulation images in
     /// sample order. `sets` (set 0 naming `waves`)
     /// are bound for both bind points; `uniforms` are those of its uniform buffer. Everything recorded is
-    /// ordered before what comes next. With `timer`, a timestamp follows each kernel (begun by the caller).
+    /// ordered before what comes next.
     void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                       const shader::RenderUniforms& uniforms, const PipelineScene& scene, std::uint32_t firstSample,
-                      std::uint32_t count, VkExtent2D extent, std::uint32_t firstRow, const WaveBuffers& waves,
-                      WaveStageTimer* timer = nullptr) const;
+                      std::uint32_t count, VkExtent2D extent, std::uint32_t firstRow, const WaveBuffers& waves) const;
 
 private:
     const Compiled& compiled(const PipelineSpecialization& key) const;

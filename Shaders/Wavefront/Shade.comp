@@ -31,7 +31,10 @@ void main()
         path.radiance = vec3(uintBitsToFloat(0x7FC00000u)); // a quiet NaN, as the megakernel returns
         goesOn = false;
     }
-    storePath(p, path, pixel, sampleIndex);
+    if (goesOn)
+        storePath(p, path, pixel, sampleIndex);
+    else // only its radiance is read again: by Shadow.rgen and Accumulate.comp
+        setWaveField(kWaveRadiance, p, packWaveField(path.radiance, path.pendingSurvival));
     if (shadow.pending)
     {
         setWaveField(kWaveShadowOrigin, p, packWaveField(shadow.origin, shadow.distance));
