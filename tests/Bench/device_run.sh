@@ -15,8 +15,8 @@
 #   tests/Bench/device_run.sh bars     issue 9's efficiency bars in one run: cornell-box-lights (mixture
 #                                      against nee-mis) and many-lights (light selections), by --compare
 #                                      (INTEGRATOR: the GPU integrator, default the app's)
-#   tests/Bench/device_run.sh integrators  the megakernel against the wavefront, render by render
-#                                      (tests/Bench/renders/integrators.txt)
+#   tests/Bench/device_run.sh integrators [RENDERS_FILE]  the megakernel against the wavefront, render by
+#                                      render (default tests/Bench/renders/integrators.txt)
 set -u
 mode=${1:-tests}
 out=${OUT:-/tmp/out}
@@ -72,7 +72,7 @@ specialization)
     cp "$work"/figure/*.json "$out/specialization/"
     ;;
 integrators)
-    ROUNDS=${ROUNDS:-2} bash tests/Bench/gpu_ab.sh "$bin" "$bin" /tmp/ab tests/Bench/renders/integrators.txt |
+    ROUNDS=${ROUNDS:-2} bash tests/Bench/gpu_ab.sh "$bin" "$bin" /tmp/ab "${2:-tests/Bench/renders/integrators.txt}" |
         tee "$out/integrators.txt"
     (cd /tmp/ab && tar -czf "$out/integrators-stats.tar.gz" ./*.json)
     ;;
