@@ -66,14 +66,12 @@ struct GpuEngine::Impl
         : context({options.deviceIndex, options.validation, options.presentation}),
           tracer(context.device(), context.commandPool(),
                  options.shaderDir.empty() ? executableDir() / "shaders" : options.shaderDir, options.specialize,
-                 options.integrator),
+                 options.integrator, options.wavePaths),
           timestamps(context.device(), 4),
           pathsPerBatch(options.pathsPerBatch > 0 ? options.pathsPerBatch
                         : context.device().properties().type == vk::DeviceType::Cpu ? kPathsPerBatchCpu
                                                                                     : kPathsPerBatchGpu)
     {
-        if (options.wavePaths > 0)
-            tracer.setIntegrator(options.integrator, options.wavePaths);
     }
 
     const vk::Device& device() const { return context.device(); }

@@ -11,12 +11,12 @@
 namespace rt::gpu
 {
 SceneTracer::SceneTracer(const vk::Device& device, const vk::CommandPool& pool, std::filesystem::path shaderDir,
-                         Specialize specialize, GpuIntegrator integrator)
+                         Specialize specialize, GpuIntegrator integrator, std::uint32_t waveCapacity)
     : m_device(&device), m_pool(&pool), m_shaderDir(std::move(shaderDir)),
       m_pipeline(device, m_shaderDir, RayGenVariant::Radiance, specialize), m_integrator(GpuIntegrator::Megakernel),
       m_waves(device, 1)
 {
-    setIntegrator(integrator);
+    setIntegrator(integrator, waveCapacity);
 }
 
 void SceneTracer::setIntegrator(GpuIntegrator integrator, std::uint32_t waveCapacity)

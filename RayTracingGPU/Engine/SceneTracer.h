@@ -45,10 +45,12 @@ class SceneTracer final
 public:
     /// Loads the SPIR-V in `shaderDir`; a render's pipeline is compiled for its settings and scene when it
     /// first needs it (PathTracingPipeline), or once for all with Specialize::Off. Launches run `integrator`
-    /// (the wavefront's memory is allocated here). Throws rt::AssetError (a shader is missing),
-    /// rt::DeviceError (the driver rejects a module, or the wavefront's memory does not fit).
+    /// with waves of `waveCapacity` paths (setIntegrator; the wavefront's memory is allocated here). Throws
+    /// rt::AssetError (a shader is missing), rt::DeviceError (the driver rejects a module, or an explicit
+    /// wavefront cannot run: setIntegrator).
     SceneTracer(const vk::Device& device, const vk::CommandPool& pool, std::filesystem::path shaderDir,
-                Specialize specialize = Specialize::Full, GpuIntegrator integrator = GpuIntegrator::Auto);
+                Specialize specialize = Specialize::Full, GpuIntegrator integrator = GpuIntegrator::Auto,
+                std::uint32_t waveCapacity = 0);
     SceneTracer(const SceneTracer&) = delete;
     SceneTracer& operator=(const SceneTracer&) = delete;
     ~SceneTracer();

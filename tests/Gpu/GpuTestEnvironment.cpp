@@ -1,9 +1,12 @@
 #include "GpuTestEnvironment.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <memory>
 
 #include "Error.h"
+#include "Scenes/Catalogue.h"
 
 namespace rt::gpu::test
 {
@@ -47,6 +50,29 @@ GpuIntegrator suiteIntegrator()
 GpuEngine* sharedEngine() { return shared().engine.get(); }
 
 const std::string& engineError() { return shared().error; }
+
+void expectFurnaceOnGpu(float albedo, float radiance, Estimator estimator, int spp)
+{
+    const Scene scene = makeFurnace(albedo, radiance);
+    RenderSettings s;
+    s.width = 32;
+    s.aspect = 1.0f;
+    s.spp = spp;
+    s.depth = 50;
+    s.estimator = estimator;
+    s.unidirectionalLight = false;
+    const RenderResult r = renderOnGpu(scene, s);
+    const double expected = radiance * (1.0 - std::pow(double(albedo), s.depth)) / (1.0 - albedo);
+    EXPECT_EQ(r.stats.nanSamples + r.stats.infSamples, 0u);
+    for (int channel = 0; channel < 3; ++channel)
+    {
+        const MeanAndError m = pixelStatistics(r.image, channel);
+        // BSDF-only sampling has zero variance here: only rounding separates it from the expectation.
+        const double tolerance = std::max(3.0 * m.standardError, 1e-5 * expected);
+        EXPECT_NEAR(m.mean, expected, tolerance) << toString(estimator) << ", channel " << channel
+                                                 << ", standard error " << m.standardError;
+    }
+}
 
 RenderResult renderOnGpu(const Scene& scene, const RenderSettings& settings)
 {

@@ -25,6 +25,11 @@ const std::string& engineError();
 /// Renders `scene` with `settings` on the shared engine (setScene first).
 RenderResult renderOnGpu(const Scene& scene, const RenderSettings& settings);
 
+/// Renders the furnace (a closed sphere of albedo `albedo` emitting `radiance` inside) at 32 px, `spp`, depth
+/// 50 with `estimator` on the shared engine and expects every channel's pixel mean at Le / (1 - a) (minus the
+/// a^depth tail) within 3 standard errors (1e-5 relative where the estimator has no variance).
+void expectFurnaceOnGpu(float albedo, float radiance, Estimator estimator, int spp);
+
 using ::rt::test::MeanAndError;
 using ::rt::test::pixelStatistics;
 using ::rt::test::renderWithSettings;

@@ -138,29 +138,11 @@ TEST_F(GpuWavefront, TheWaveSizeDoesNotChangeTheImage)
     }
 }
 
-/// The furnace (a closed sphere of albedo a emitting Le inside) converges to Le / (1 - a) in every pixel.
-void expectFurnace(float albedo, float radiance, Estimator estimator)
-{
-    const Scene scene = makeFurnace(albedo, radiance);
-    RenderSettings s = ::rt::test::settingsFor(scene, 16, 16, 50);
-    s.aspect = 1.0f;
-    s.estimator = estimator;
-    s.unidirectionalLight = false;
-    const RenderResult r = renderOnGpu(scene, s);
-    const double expected = radiance * (1.0 - std::pow(double(albedo), s.depth)) / (1.0 - albedo);
-    EXPECT_EQ(r.stats.nanSamples + r.stats.infSamples, 0u);
-    for (int channel = 0; channel < 3; ++channel)
-    {
-        const MeanAndError m = pixelStatistics(r.image, channel);
-        EXPECT_NEAR(m.mean, expected, std::max(3.0 * m.standardError, 1e-5 * expected))
-            << toString(estimator) << ", channel " << channel << ", standard error " << m.standardError;
-    }
-}
-
+// The furnace converges to Le / (1 - a) in every pixel (GpuFurnace.* on the suite's integrator).
 TEST_F(GpuWavefront, TheFurnaceGivesLeOverOneMinusAlbedo)
 {
-    expectFurnace(0.8f, 0.25f, Estimator::NeeMis);
-    expectFurnace(0.5f, 0.5f, Estimator::Mixture);
+    expectFurnaceOnGpu(0.8f, 0.25f, Estimator::NeeMis, 16);
+    expectFurnaceOnGpu(0.5f, 0.5f, Estimator::Mixture, 16);
 }
 
 // The estimator against the other engine, block by block (tests/Support/BlockAgreement.h).
