@@ -66,6 +66,10 @@ if [[ $(basename "$app") == ray-tracing-gpu ]]; then
     expect_window_error "samples action above the cap" "samples=an integer in \[1, 256\]" --actions "samples=1000"
 fi
 
+if [[ $(basename "$app") == ray-tracing-gpu ]]; then
+    expect_error "unknown integrator" "--integrator" --integrator wave
+    expect_error "wave size beyond its range" "--wave-paths" --wave-paths 100000000
+fi
 expect_error "unknown scene" "no-such-scene" --scene no-such-scene
 expect_error "zero spp" "samples per pixel" --spp 0
 expect_error "spp beyond 2^24" "samples per pixel" --spp 16777217
