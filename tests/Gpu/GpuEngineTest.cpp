@@ -5,8 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <thread>
-
 #include "Engine/SceneTracer.h"
 #include "Error.h"
 #include "Scene/SceneBuilder.h"
@@ -237,29 +235,9 @@ TEST_F(GpuProgress, CancelInsideABandedBatchPutsTheBatchBack)
 {
     // A batch of many submissions (bands of rows: issue 13, one sample of a large image is seconds on
     // lavapipe) polls the cancel between them; the bands it had traced are undone, so the image is a complete
-    // render of its true spp, bit for bit, and the NaN/Inf counters are those of that render.
-    const Scene scene = makeScene("rtnw-cornell-smoke");
-    sharedEngine()->setScene(scene);
-    sharedEngine()->setBandRows(2); // 32 submissions per batch
-    const RenderSettings s = small(scene, 64, 100000, 8);
-    RenderControl control;
-    const std::uint64_t pixels = 64ull * 64;
-    std::thread canceller([&] { // a few bands into a batch after the first
-        while (control.done() < pixels + 64 * 6)
-            std::this_thread::yield();
-        control.requestCancel();
-    });
-    const RenderResult cancelled = renderWithSettings(*sharedEngine(), s, control);
-    canceller.join();
-    sharedEngine()->setBandRows(0);
-    ASSERT_TRUE(cancelled.stats.cancelled);
-    ASSERT_GE(cancelled.stats.trueSpp, 1);
-    EXPECT_GT(control.done(), cancelled.stats.paths) << "the cancel landed inside a batch: bands were undone";
-    RenderSettings same = s;
-    same.spp = cancelled.stats.trueSpp;
-    const RenderResult clean = renderOnGpu(scene, same);
-    EXPECT_EQ(cancelled.image.pixels(), clean.image.pixels());
-    EXPECT_EQ(cancelled.stats.nanSamples, clean.stats.nanSamples);
+    // render of its true spp, bit for bit, and the NaN/Inf counters are those of that render (32 submissions
+    // per batch).
+    expectCancelInsideABandedBatchPutsTheBatchBack("rtnw-cornell-smoke", 64);
 }
 
 TEST_F(GpuProgress, CancelStopsBetweenDispatchesWithTheEstimateSoFar)

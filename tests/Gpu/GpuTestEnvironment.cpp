@@ -4,9 +4,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <memory>
+#include <thread>
 
 #include "Error.h"
 #include "Scenes/Catalogue.h"
+#include "Support/SmallSettings.h"
 
 namespace rt::gpu::test
 {
@@ -72,6 +74,32 @@ void expectFurnaceOnGpu(float albedo, float radiance, Estimator estimator, int s
         EXPECT_NEAR(m.mean, expected, tolerance) << toString(estimator) << ", channel " << channel
                                                  << ", standard error " << m.standardError;
     }
+}
+
+void expectCancelInsideABandedBatchPutsTheBatchBack(const std::string& sceneId, int width)
+{
+    const Scene scene = makeScene(sceneId);
+    sharedEngine()->setScene(scene);
+    sharedEngine()->setBandRows(2);
+    const RenderSettings s = ::rt::test::settingsFor(scene, width, 100000, 8);
+    RenderControl control;
+    const std::uint64_t pixels = std::uint64_t(s.width) * std::uint64_t(s.height());
+    std::thread canceller([&] { // a few bands into a batch after the first
+        while (control.done() < pixels + std::uint64_t(s.width) * 6)
+            std::this_thread::yield();
+        control.requestCancel();
+    });
+    const RenderResult cancelled = renderWithSettings(*sharedEngine(), s, control);
+    canceller.join();
+    sharedEngine()->setBandRows(0);
+    ASSERT_TRUE(cancelled.stats.cancelled);
+    ASSERT_GE(cancelled.stats.trueSpp, 1);
+    EXPECT_GT(control.done(), cancelled.stats.paths) << "the cancel landed inside a batch: bands were undone";
+    RenderSettings same = s;
+    same.spp = cancelled.stats.trueSpp;
+    const RenderResult clean = renderOnGpu(scene, same);
+    EXPECT_EQ(cancelled.image.pixels(), clean.image.pixels());
+    EXPECT_EQ(cancelled.stats.nanSamples, clean.stats.nanSamples);
 }
 
 RenderResult renderOnGpu(const Scene& scene, const RenderSettings& settings)

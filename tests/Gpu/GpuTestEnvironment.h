@@ -30,6 +30,11 @@ RenderResult renderOnGpu(const Scene& scene, const RenderSettings& settings);
 /// a^depth tail) within 3 standard errors (1e-5 relative where the estimator has no variance).
 void expectFurnaceOnGpu(float albedo, float radiance, Estimator estimator, int spp);
 
+/// Renders `sceneId` at `width` px, depth 8, in bands of two rows per submission on the shared engine, cancels
+/// a few bands into the second batch and expects the batch put back: the image a clean render of the true spp
+/// gives, bit for bit, and its NaN/Inf counters (GpuEngine's snapshot).
+void expectCancelInsideABandedBatchPutsTheBatchBack(const std::string& sceneId, int width);
+
 using ::rt::test::MeanAndError;
 using ::rt::test::pixelStatistics;
 using ::rt::test::renderWithSettings;

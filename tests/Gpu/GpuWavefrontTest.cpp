@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -162,25 +161,7 @@ TEST_F(GpuWavefront, AgreesWithTheCpuEngine)
 // traces the bands: the image is a complete render of its true spp, bit for bit.
 TEST_F(GpuWavefront, CancelInsideABandedBatchPutsTheBatchBack)
 {
-    const Scene scene = makeScene("cornell-box-lights");
-    sharedEngine()->setScene(scene);
-    sharedEngine()->setBandRows(2);
-    const RenderSettings s = ::rt::test::settingsFor(scene, 32, 100000, 8);
-    RenderControl control;
-    const std::uint64_t pixels = 32ull * 32;
-    std::thread canceller([&] {
-        while (control.done() < pixels + 32 * 6)
-            std::this_thread::yield();
-        control.requestCancel();
-    });
-    const RenderResult cancelled = renderWithSettings(*sharedEngine(), s, control);
-    canceller.join();
-    sharedEngine()->setBandRows(0);
-    ASSERT_TRUE(cancelled.stats.cancelled);
-    ASSERT_GE(cancelled.stats.trueSpp, 1);
-    RenderSettings same = s;
-    same.spp = cancelled.stats.trueSpp;
-    EXPECT_EQ(cancelled.image.pixels(), renderOnGpu(scene, same).image.pixels());
+    expectCancelInsideABandedBatchPutsTheBatchBack("cornell-box-lights", 32);
 }
 
 // Each kernel's GPU time is in the stats (a timestamp after every kernel), within the launches' own total.
