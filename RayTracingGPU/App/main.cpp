@@ -231,7 +231,7 @@ int main(int argc, char** argv)
         ->capture_default_str();
     std::uint32_t wavePaths = 0;
     app.add_option("--wave-paths", wavePaths,
-                   "GPU, --integrator wavefront: paths traced at once (each holds 204 bytes of state); 0: by the "
+                   "GPU, wherever the wavefront runs: paths traced at once (each holds 204 bytes of state); 0: by the "
                    "device (16 M on a GPU of 48 GiB or more, 64 K on a CPU device)")
         ->check(CLI::Range(0u, 1u << 26));
     WindowFlags window;
@@ -241,6 +241,14 @@ int main(int argc, char** argv)
         if (rt::runCommonCommands(options))
             return 0;
         validation = validation || rt::gpu::validationWanted();
+        // The headless engine's and --compare's (the window adds its presentation to the device and integrator).
+        const auto engineOptions = [&] {
+            return rt::gpu::GpuEngineOptions{.deviceIndex = device,
+                                             .validation = validation,
+                                             .specialize = specializeMode(specialize),
+                                             .integrator = *rt::gpu::parseIntegrator(integrator), // checked by CLI11
+                                             .wavePaths = wavePaths};
+        };
         if (compare)
         {
             const rt::CommandLineRender job = rt::resolveCommandLine(options);
@@ -259,20 +267,15 @@ int main(int argc, char** argv)
                 c.referenceCache = referenceCache;
             return rt::app::runComparison(job.scene, job.request, c, [&](rt::EngineKind kind) -> std::unique_ptr<rt::RenderEngine> {
                 if (kind == rt::EngineKind::Gpu)
-                    return std::make_unique<rt::gpu::GpuEngine>(rt::gpu::GpuEngineOptions{
-                        .deviceIndex = device, .validation = validation, .specialize = specializeMode(specialize),
-                        .integrator = *rt::gpu::parseIntegrator(integrator),
-                        .wavePaths = wavePaths});
+                    return std::make_unique<rt::gpu::GpuEngine>(engineOptions());
                 return std::make_unique<rt::cpu::CpuEngine>(kind);
             });
         }
         if (!options.headless)
-            return runWindow(options, window, device, validation, *rt::gpu::parseIntegrator(integrator));
+            return runWindow(options, window, device, validation, engineOptions().integrator);
         rt::checkOutputPaths(options);
         const rt::CommandLineRender job = rt::resolveCommandLine(options);
-        rt::gpu::GpuEngine gpu({.deviceIndex = device, .validation = validation, .specialize = specializeMode(specialize),
-                        .integrator = *rt::gpu::parseIntegrator(integrator),
-                        .wavePaths = wavePaths});
+        rt::gpu::GpuEngine gpu(engineOptions());
         const int status = rt::runHeadless(gpu, job.scene, job.request, options);
         if (gpu.validationMessages() > 0)
         {
