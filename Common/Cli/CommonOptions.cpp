@@ -92,8 +92,8 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
                    "Pixel sampling: random (independent jitter), stratified (floor(sqrt(spp))^2 jittered strata), "
                    "accumulate (progressive 1-spp passes) or sobol (every 2D draw of a sample - pixel, lens, light "
                    "point, BSDF direction - an Owen-scrambled Sobol point over the pixel's samples, Burley 2020: "
-                   "stratified at every power-of-two spp)")
-        ->capture_default_str();
+                   "stratified at every power-of-two spp). Default: the scene's: sobol, or random for the books' "
+                   "scenes");
     app.add_option("--estimator", o.estimator,
                    "How a path gathers light (default: the scene's: nee-mis, or mixture for the books' scenes). "
                    "bsdf: follow sampled BSDF directions only (books 1-2); mixture: book 3's one-sample mix of "
@@ -157,11 +157,14 @@ RenderRequest resolveRequest(const CommonOptions& o, const Scene& scene)
     s.depth = o.depth.value_or(s.depth);
     s.width = o.width.value_or(s.width);
     s.aspect = o.aspect.value_or(s.aspect);
-    const auto sampling = parsePixelSampling(o.sampling);
-    if (!sampling)
-        throw UsageError(
-            fmt::format("--sampling must be random, stratified, accumulate or sobol (got '{}')", o.sampling));
-    s.sampling = *sampling;
+    if (o.sampling)
+    {
+        const auto sampling = parsePixelSampling(*o.sampling);
+        if (!sampling)
+            throw UsageError(
+                fmt::format("--sampling must be random, stratified, accumulate or sobol (got '{}')", *o.sampling));
+        s.sampling = *sampling;
+    }
     if (o.estimator)
     {
         const auto estimator = parseEstimator(*o.estimator);

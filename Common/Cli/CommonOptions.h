@@ -22,7 +22,7 @@ struct CommonOptions
     std::optional<int> depth;
     std::optional<int> width;
     std::optional<float> aspect;
-    std::string sampling = "random";
+    std::optional<std::string> sampling;
     std::optional<std::string> estimator;
     std::optional<std::string> pdf;
     std::string russianRoulette = "on";

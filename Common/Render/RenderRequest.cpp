@@ -12,6 +12,7 @@ void applySceneDefaults(RenderSettings& settings, const SceneDefaults& defaults)
     settings.aspect = defaults.aspect;
     settings.unidirectionalLight = defaults.unidirectionalLight;
     settings.estimator = defaults.estimator;
+    settings.sampling = defaults.sampling;
 }
 
 RenderRequest defaultRequest(const SceneRef& ref, const Scene& scene)

@@ -25,6 +25,7 @@ namespace rt
 {
 using shader::BackgroundType;
 using shader::Estimator;
+using shader::PixelSampling;
 using shader::kNoIndex;
 using shader::LightData;
 using shader::MaterialData;
@@ -141,6 +142,10 @@ struct SceneDefaults
     bool unidirectionalLight = true; // emitters emit from their front side only (RTTROYL §12.4)
     // This project's scenes use NEE + MIS; the books' keep book 3's mixture, so a render compares with theirs.
     shader::Estimator estimator = shader::Estimator::NeeMis;
+    // This project's scenes draw Owen-scrambled Sobol samples, which keep the spherical samplers' stratification
+    // (the largest gain after the projected samplers, docs/PERFORMANCE.md §4.1; pbrt-v4's default sampler is a
+    // Sobol one too); the books' keep independent random samples.
+    shader::PixelSampling sampling = shader::PixelSampling::Sobol;
 };
 
 /// The primitive a light of Scene::lights was made from, so that a hit on it can name its light (the

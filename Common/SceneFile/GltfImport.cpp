@@ -72,6 +72,7 @@ GltfImport readGltf(const std::filesystem::path& file)
     else
         scene.camera = gltfFramingCamera(meshes.boundsMin, meshes.boundsMax);
     scene.defaults.estimator = Estimator::NeeMis;
+    scene.defaults.sampling = PixelSampling::Sobol;
     scene.defaults.unidirectionalLight = materials.doubleSidedEmitters() == 0;
     if (materials.doubleSidedEmitters() > 0 && materials.singleSidedEmitters() > 0)
         notes.add("single-sided emitters beside double-sided ones (all emit from both sides)");

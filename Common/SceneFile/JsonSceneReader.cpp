@@ -197,7 +197,7 @@ private:
 
     void readRender(const JsonNode& r)
     {
-        r.allowOnly({"spp", "depth", "width", "aspect", "unidirectional_light", "estimator"});
+        r.allowOnly({"spp", "depth", "width", "aspect", "unidirectional_light", "estimator", "sampling"});
         SceneDefaults& d = scene().defaults;
         if (r.has("spp"))
             d.spp = static_cast<int>(r["spp"].integer(1, kMaxSpp));
@@ -213,6 +213,8 @@ private:
             d.unidirectionalLight = r["unidirectional_light"].boolean();
         if (r.has("estimator"))
             d.estimator = static_cast<Estimator>(r["estimator"].choice({"bsdf", "mixture", "nee", "nee-mis"}));
+        if (r.has("sampling"))
+            d.sampling = static_cast<PixelSampling>(r["sampling"].choice({"random", "stratified", "accumulate", "sobol"}));
     }
 
     void readBackground(const JsonNode& b)

@@ -20,7 +20,7 @@ Scene rtowDefault(const SceneOptions&)
     s.camera.vfovDegrees = 20.0f;
     s.camera.defocusAngleDegrees = 10.0f;
     s.camera.focusDistance = 3.4f;
-    s.defaults = {.spp = 100, .depth = 50, .width = 600, .aspect = 16.0f / 9.0f, .unidirectionalLight = false, .estimator = Estimator::Mixture};
+    s.defaults = {.spp = 100, .depth = 50, .width = 600, .aspect = 16.0f / 9.0f, .unidirectionalLight = false, .estimator = Estimator::Mixture, .sampling = PixelSampling::Random};
     setGradientSky(s);
     return b.finish();
 }
@@ -36,7 +36,7 @@ Scene rtowCameraTest(const SceneOptions&)
     s.camera.lookFrom = {0.0f, 0.0f, 0.0f};
     s.camera.lookAt = {0.0f, 0.0f, -1.0f};
     s.camera.vfovDegrees = 90.0f;
-    s.defaults = {.spp = 100, .depth = 50, .width = 600, .aspect = 16.0f / 9.0f, .unidirectionalLight = false, .estimator = Estimator::Mixture};
+    s.defaults = {.spp = 100, .depth = 50, .width = 600, .aspect = 16.0f / 9.0f, .unidirectionalLight = false, .estimator = Estimator::Mixture, .sampling = PixelSampling::Random};
     setGradientSky(s);
     return b.finish();
 }
@@ -52,7 +52,7 @@ Scene rtowFinal(const SceneOptions&)
     b.sphere(w, {4.0f, 1.0f, 0.0f}, 1.0f, b.metal({0.7f, 0.6f, 0.5f}, 0.0f));
     Scene& s = b.scene();
     finalSceneCamera(s, 0.6f);
-    s.defaults = {.spp = 100, .depth = 50, .width = 600, .aspect = 16.0f / 9.0f, .unidirectionalLight = false, .estimator = Estimator::Mixture};
+    s.defaults = {.spp = 100, .depth = 50, .width = 600, .aspect = 16.0f / 9.0f, .unidirectionalLight = false, .estimator = Estimator::Mixture, .sampling = PixelSampling::Random};
     setGradientSky(s);
     return b.finish();
 }

@@ -6,8 +6,8 @@ namespace rt::scenes
 {
 namespace
 {
-constexpr SceneDefaults kWide{.spp = 100, .depth = 50, .width = 600, .aspect = 16.0f / 9.0f, .unidirectionalLight = false, .estimator = Estimator::Mixture};
-constexpr SceneDefaults kSquare{.spp = 100, .depth = 50, .width = 600, .aspect = 1.0f, .unidirectionalLight = false, .estimator = Estimator::Mixture};
+constexpr SceneDefaults kWide{.spp = 100, .depth = 50, .width = 600, .aspect = 16.0f / 9.0f, .unidirectionalLight = false, .estimator = Estimator::Mixture, .sampling = PixelSampling::Random};
+constexpr SceneDefaults kSquare{.spp = 100, .depth = 50, .width = 600, .aspect = 1.0f, .unidirectionalLight = false, .estimator = Estimator::Mixture, .sampling = PixelSampling::Random};
 
 /// RTTNW §5's two marble spheres: the ground (radius 1000) and one of radius 2 on it.
 void marbleGroundAndSphere(SceneBuilder& b, std::uint32_t group)

@@ -5,7 +5,7 @@ namespace rt::scenes
 {
 namespace
 {
-constexpr SceneDefaults kBook3{.spp = 100, .depth = 50, .width = 600, .aspect = 1.0f, .unidirectionalLight = true, .estimator = Estimator::Mixture};
+constexpr SceneDefaults kBook3{.spp = 100, .depth = 50, .width = 600, .aspect = 1.0f, .unidirectionalLight = true, .estimator = Estimator::Mixture, .sampling = PixelSampling::Random};
 
 /// Walls, the ceiling light (faces down) and the tall box with `tallMaterial`; returns the world group.
 std::uint32_t book3Box(SceneBuilder& b, std::uint32_t tallMaterial)

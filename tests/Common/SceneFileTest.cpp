@@ -24,7 +24,8 @@ const char* kSmallScene = R"({
   "version": 1,
   "camera": {"look_from": [0, 1, 5], "look_at": [0, 1, 0], "vfov": 40, "defocus_angle": 0.5, "focus_distance": 5,
              "shutter": [0, 0.5]},
-  "render": {"spp": 16, "depth": 8, "width": 64, "aspect": 2, "unidirectional_light": false, "estimator": "nee"},
+  "render": {"spp": 16, "depth": 8, "width": 64, "aspect": 2, "unidirectional_light": false, "estimator": "nee",
+             "sampling": "stratified"},
   "background": {"type": "constant", "color": [0.1, 0.2, 0.3]},
   "textures": [{"name": "check", "type": "checker", "scale": 0.25, "even": [1, 1, 1], "odd": [0, 0, 0]}],
   "materials": [
@@ -92,6 +93,7 @@ TEST(SceneFile, ReadsEveryPartOfTheSmallScene)
     EXPECT_FLOAT_EQ(s.defaults.aspect, 2.0f);
     EXPECT_FALSE(s.defaults.unidirectionalLight);
     EXPECT_EQ(s.defaults.estimator, Estimator::Nee);
+    EXPECT_EQ(s.defaults.sampling, PixelSampling::Stratified);
     EXPECT_EQ(s.background.color0, vec3(0.1f, 0.2f, 0.3f));
     EXPECT_EQ(s.background.color1, s.background.color0);
     // The world group ("shapes") comes first and is placed once with the identity; "blocks" after it.
@@ -154,6 +156,7 @@ TEST(SceneFile, ErrorsNameTheValueAndWhatWasExpected)
         {smallSceneWith("{\"scale\": 2}", "{\"scale\": [2, -2, 2]}"), "/instances/0/transform: the transform mirrors"},
         {smallSceneWith("\"depth\": 8", "\"depth\": 8.5"), "/render/depth: expected an integer"},
         {smallSceneWith("\"estimator\": \"nee\"", "\"estimator\": \"path\""), "expected one of 'bsdf', 'mixture'"},
+        {smallSceneWith("\"sampling\": \"stratified\"", "\"sampling\": \"halton\""), "expected one of 'random', 'stratified'"},
         {smallSceneWith("\"name\": \"red\"", "\"name\": \"floor\""),
          "/shapes/0/material: more than one material is named 'floor': refer to it by its index"},
         {smallSceneWith("\"density\": 0.5,", "\"density\": 0.5, \"albedo\": [1, 1, 1],"), "one of the two"},

@@ -152,6 +152,20 @@ TEST(ResolveRequest, EstimatorComesFromTheSceneUnlessNamed)
     EXPECT_EQ(resolveRequest(options, makeScene("cornell-box-lights")).settings.estimator, Estimator::Mixture);
 }
 
+TEST(ResolveRequest, SamplingComesFromTheSceneUnlessNamed)
+{
+    // The project's scenes draw Owen-scrambled Sobol samples, the books' the independent ones of their code.
+    CommonOptions options;
+    EXPECT_EQ(resolveRequest(options, makeScene("cornell-box-lights")).settings.sampling, PixelSampling::Sobol);
+    EXPECT_EQ(resolveRequest(options, makeScene("many-lights")).settings.sampling, PixelSampling::Sobol);
+    for (const char* book : {"rtow-final", "rtnw-final", "rtrol-cornell-glass"})
+        EXPECT_EQ(resolveRequest(options, makeScene(book)).settings.sampling, PixelSampling::Random) << book;
+    options.sampling = "random";
+    EXPECT_EQ(resolveRequest(options, makeScene("cornell-box-lights")).settings.sampling, PixelSampling::Random);
+    options.sampling = "sobol";
+    EXPECT_EQ(resolveRequest(options, makeScene("rtrol-cornell-glass")).settings.sampling, PixelSampling::Sobol);
+}
+
 TEST(ResolveRequest, BadFlagsAreUsageErrors)
 {
     const Scene scene = makeScene("rtow-camera-test");

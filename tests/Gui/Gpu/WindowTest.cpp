@@ -309,14 +309,15 @@ TEST(GpuWindow, AccumulatedImageMatchesTheSettingsShown)
     // Scene switch and depth change while accumulating; then the window's image must be the headless render of
     // the settings it shows, sample for sample (same device, same streams: bit for bit here). A scene switch
     // keeps the window's render settings: the estimator stays cornell-box-lights' nee-mis (rtnw-quads' own
-    // default is book 3's mixture, whose roulette ends paths after the next hit instead).
+    // default is book 3's mixture, whose roulette ends paths after the next hit instead), and so do its
+    // Sobol samples (rtnw-quads' own default is random).
     const ::rt::test::ScratchDir dir;
     RT_RUN_WINDOW(run, "--width 320 --aspect 1.6 --validation --scene cornell-box-lights --spp 4 --seed 7 --frames 1 "
                        "--actions 'frames=2;scene=rtnw-quads;frames=1;depth=5;frames=8;save=" +
                            (dir / "window.png").string() + "'");
     EXPECT_NE(run.output.find("(4 spp)"), std::string::npos) << run.output;
     const AppRun headless = runApp("--headless --quiet --scene rtnw-quads --width 320 --aspect 1.6 --spp 4 --seed 7 "
-                                   "--depth 5 --estimator nee-mis --sampling accumulate --hdr '" +
+                                   "--depth 5 --estimator nee-mis --sampling sobol --hdr '" +
                                    (dir / "headless.pfm").string() + "'");
     ASSERT_EQ(headless.status, 0) << headless.output;
     const Image window = readPfm(dir / "window.pfm");
