@@ -226,7 +226,8 @@ int main(int argc, char** argv)
                    "runs kernels per segment over waves of paths (path rays, shading in a compute kernel, shadow "
                    "rays): the same estimator, the same image within noise, up to 3.5x faster on NEE renders "
                    "(docs/PERFORMANCE.md); auto takes the wavefront on a GPU where a vertex evaluates two lights "
-                   "or more (nee, nee-mis, mixture) or the scene has 256 primitives or more, else the megakernel")
+                   "or more (nee, nee-mis: from 2^20 camera paths; mixture) or the scene has 256 primitives or "
+                   "more (from 2^24 paths), else the megakernel")
         ->check(CLI::IsMember({"auto", "megakernel", "wavefront"}))
         ->capture_default_str();
     std::uint32_t wavePaths = 0;

@@ -58,6 +58,7 @@ struct GpuEngine::Impl
     std::unique_ptr<RenderTarget> target;
     TracingDescriptors descriptors; // the scene and the target; empty after setScene
     shader::RenderUniforms uniforms{}; // the frame's, as in the target's uniform buffer
+    GpuIntegrator integrator = GpuIntegrator::Megakernel; // the frame's (SceneTracer::integratorFor)
     std::map<std::string, double> frameStages; // stageSeconds() of the frame
     std::unique_ptr<WaveStageTimer> waveTimer; // made at the first wavefront launch on a device with timestamps
     std::uint32_t waveSegments = kFirstWaveSegments; // the wavefront's first submission per wave: its segments
@@ -98,7 +99,7 @@ struct GpuEngine::Impl
     double dispatch(std::uint32_t firstSample, std::uint32_t samples, std::uint32_t firstRow, std::uint32_t rows,
                     bool snapshot)
     {
-        if (tracer.integratorFor(uniforms) == GpuIntegrator::Wavefront)
+        if (integrator == GpuIntegrator::Wavefront)
             return dispatchWaves(firstSample, samples, firstRow, rows, snapshot);
         const bool timed = device().properties().timestampValidBits > 0;
         vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) {
@@ -109,8 +110,8 @@ struct GpuEngine::Impl
                 vkCmdResetQueryPool(cmd, timestamps.Handle(), 0, 2);
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps.Handle(), 0);
             }
-            tracer.recordLaunch(cmd, {&descriptors.set, 1}, uniforms, firstSample, samples, {target->width(), rows},
-                                nullptr, firstRow);
+            tracer.recordLaunch(cmd, {&descriptors.set, 1}, uniforms, integrator, firstSample, samples,
+                                {target->width(), rows}, nullptr, firstRow);
             if (timed)
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 1);
             vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
@@ -276,7 +277,8 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     e.uniforms = e.tracer.uniforms(e.tracer.scene()->camera, settings, {width, height});
     e.frameStages.clear();
     const auto compileStart = std::chrono::steady_clock::now();
-    e.tracer.prepare(e.uniforms); // the compilation stays out of the render's time
+    e.integrator = e.tracer.integratorFor(e.uniforms, std::uint64_t(width) * height * settings.trueSpp());
+    e.tracer.prepare(e.uniforms, e.integrator); // the compilation stays out of the render's time
     e.frameStages["pipeline_host"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - compileStart).count();
     e.target->reset(e.uniforms);
@@ -345,7 +347,7 @@ std::string GpuEngine::frameConfiguration() const
         return {};
     const SceneTracer& t = m_impl->tracer;
     return "pipeline " + t.pipeline().specializationFor(m_impl->uniforms, t.gpuScene().pipelineScene()).describe() +
-           ", integrator " + integratorName(t.integratorFor(m_impl->uniforms));
+           ", integrator " + integratorName(m_impl->integrator);
 }
 
 std::map<std::string, double> GpuEngine::stageSeconds() const

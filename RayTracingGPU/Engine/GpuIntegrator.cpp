@@ -22,7 +22,7 @@ std::optional<GpuIntegrator> parseIntegrator(std::string_view name)
 }
 
 GpuIntegrator resolveIntegrator(GpuIntegrator setting, bool cpuDevice, const shader::RenderUniforms& uniforms,
-                                std::uint64_t primitives)
+                                std::uint64_t primitives, std::uint64_t paths)
 {
     if (setting != GpuIntegrator::Auto)
         return setting;
@@ -30,8 +30,10 @@ GpuIntegrator resolveIntegrator(GpuIntegrator setting, bool cpuDevice, const sha
         return GpuIntegrator::Megakernel;
     using shader::Estimator;
     const bool nee = uniforms.estimator == Estimator::Nee || uniforms.estimator == Estimator::NeeMis;
-    const bool severalLights = (nee && uniforms.emitterCount >= 2) ||
-                               (uniforms.estimator == Estimator::Mixture && uniforms.lightCount >= 2);
-    return severalLights || primitives >= kWavefrontPrimitives ? GpuIntegrator::Wavefront : GpuIntegrator::Megakernel;
+    if (nee && uniforms.emitterCount >= 2)
+        return paths >= kWavefrontMinPathsNee ? GpuIntegrator::Wavefront : GpuIntegrator::Megakernel;
+    const bool heavy = (uniforms.estimator == Estimator::Mixture && uniforms.lightCount >= 2) ||
+                       primitives >= kWavefrontPrimitives;
+    return heavy && paths >= kWavefrontMinPaths ? GpuIntegrator::Wavefront : GpuIntegrator::Megakernel;
 }
 } // namespace rt::gpu

@@ -30,12 +30,23 @@ std::optional<GpuIntegrator> parseIntegrator(std::string_view name);
 /// (rtow-final's 485 spheres: 1.29x on the H100).
 inline constexpr std::uint64_t kWavefrontPrimitives = 256;
 
-/// What `setting` runs for a render with `uniforms` of a scene of `primitives` traced primitives (TLAS
-/// instances' triangles, spheres and media, counted per instance). Auto: the megakernel on a CPU device
-/// (lavapipe, where the wavefront's extra launches only cost); else the wavefront where a vertex evaluates
-/// several lights (NEE over at least two emitters, book 3's mixture over at least two lights: the shading the
-/// megakernel runs slowest) or the scene has kWavefrontPrimitives or more; else the megakernel, which is
-/// faster for light scenes (the wavefront moves a path's state through memory at every segment). Pure.
+/// Under auto, a render of fewer camera paths than these runs the megakernel: each of the wavefront's
+/// segments costs a few launches whatever their size, which a small render does not repay (H100,
+/// docs/PERFORMANCE.md §8.5). NEE with several emitters gains the most from the wavefront (cornell-box-lights:
+/// 0.71x the megakernel at 0.36 M paths, 1.11x at 1.4 M); the mixture and large scenes need more paths
+/// (cornell-box-lights' mixture 0.92x at 7.2 M, 1.02x at 10.8 M; rtrol-cornell-glass 0.88x at 11.5 M, 1.03x at
+/// 23 M; rtow-final 0.80x at 6.5 M, 1.29x at 52 M).
+inline constexpr std::uint64_t kWavefrontMinPathsNee = std::uint64_t(1) << 20;
+inline constexpr std::uint64_t kWavefrontMinPaths = std::uint64_t(1) << 24;
+
+/// What `setting` runs for a render of `paths` camera paths (the headless render's width x height x spp; a
+/// window frame's) with `uniforms`, of a scene of `primitives` traced primitives (TLAS instances'
+/// triangles, spheres and media, counted per instance). Auto: the megakernel on a CPU device (lavapipe, where
+/// the wavefront's extra launches only cost); else the wavefront where a vertex evaluates several lights (NEE
+/// over at least two emitters, from kWavefrontMinPathsNee paths; book 3's mixture over at least two lights:
+/// the shading the megakernel runs slowest) or the scene has kWavefrontPrimitives or more, from
+/// kWavefrontMinPaths paths; else the megakernel, which is faster for light scenes and small renders (the
+/// wavefront moves a path's state through memory at every segment). Pure.
 GpuIntegrator resolveIntegrator(GpuIntegrator setting, bool cpuDevice, const shader::RenderUniforms& uniforms,
-                                std::uint64_t primitives);
+                                std::uint64_t primitives, std::uint64_t paths);
 } // namespace rt::gpu

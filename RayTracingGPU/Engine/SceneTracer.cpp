@@ -70,12 +70,12 @@ void SceneTracer::setIntegrator(GpuIntegrator integrator, std::uint32_t waveCapa
     m_integrator = integrator;
 }
 
-GpuIntegrator SceneTracer::integratorFor(const shader::RenderUniforms& uniforms) const
+GpuIntegrator SceneTracer::integratorFor(const shader::RenderUniforms& uniforms, std::uint64_t paths) const
 {
     if (!m_wavesReady)
         return GpuIntegrator::Megakernel;
     return resolveIntegrator(m_integrator, m_device->properties().type == vk::DeviceType::Cpu, uniforms,
-                             gpuScene().pipelineScene().tracedPrimitives);
+                             gpuScene().pipelineScene().tracedPrimitives, paths);
 }
 
 SceneTracer::~SceneTracer() = default;
@@ -120,19 +120,20 @@ shader::RenderUniforms SceneTracer::uniforms(const CameraDesc& camera, const Ren
     return makeUniforms(*m_sceneDesc, camera, settings, extent.width, extent.height);
 }
 
-bool SceneTracer::prepare(const shader::RenderUniforms& uniforms) const
+bool SceneTracer::prepare(const shader::RenderUniforms& uniforms, GpuIntegrator integrator) const
 {
-    if (integratorFor(uniforms) == GpuIntegrator::Wavefront)
+    if (integrator == GpuIntegrator::Wavefront)
         return m_wavefront->prepare(uniforms, gpuScene().pipelineScene());
     return m_pipeline.prepare(uniforms, gpuScene().pipelineScene());
 }
 
 void SceneTracer::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
-                               const shader::RenderUniforms& uniforms, std::uint32_t firstSample, std::uint32_t count,
-                               VkExtent2D extent, const PathTracingPipeline* variant, std::uint32_t firstRow) const
+                               const shader::RenderUniforms& uniforms, GpuIntegrator integrator,
+                               std::uint32_t firstSample, std::uint32_t count, VkExtent2D extent,
+                               const PathTracingPipeline* variant, std::uint32_t firstRow) const
 {
     const GpuScene& scene = gpuScene();
-    if (!variant && integratorFor(uniforms) == GpuIntegrator::Wavefront)
+    if (!variant && integrator == GpuIntegrator::Wavefront)
     {
         m_wavefront->recordLaunch(cmd, sets, uniforms, scene.pipelineScene(), firstSample, count, extent, firstRow,
                                   m_waves);

@@ -74,8 +74,9 @@ public:
     void setSpecialize(Specialize specialize) { m_pipeline.setSpecialize(specialize); }
     /// The integrator setting (GpuIntegrator::Auto resolves per render: integratorFor).
     GpuIntegrator integrator() const { return m_integrator; }
-    /// What a render with `uniforms` of the current scene runs (resolveIntegrator).
-    GpuIntegrator integratorFor(const shader::RenderUniforms& uniforms) const;
+    /// What a render of `paths` camera paths with `uniforms` of the current scene runs (resolveIntegrator):
+    /// decided once per render, so that its image does not depend on how it is cut into batches.
+    GpuIntegrator integratorFor(const shader::RenderUniforms& uniforms, std::uint64_t paths) const;
     /// From the next launch on, runs `integrator`, with waves of `waveCapacity` paths (0: waveCapacityFor the
     /// device, halved while the device cannot allocate them, down to 64 K). Auto runs the megakernel alone on
     /// a CPU device, on a device without what the wavefront needs (vk::Device::wavefrontShortfall) and where
@@ -89,9 +90,9 @@ public:
     /// its waves itself (GpuEngine: a submission per wave, stopping once its queues are empty).
     const WavefrontPipeline* wavefront() const { return m_wavefront.get(); }
     const WaveBuffers& waves() const { return m_waves; }
-    /// Compiles the pipeline a render with `uniforms` of the current scene needs (PathTracingPipeline::prepare);
-    /// true when it compiled one.
-    bool prepare(const shader::RenderUniforms& uniforms) const;
+    /// Compiles the pipeline a render with `uniforms` of the current scene needs on `integrator`
+    /// (integratorFor; PathTracingPipeline::prepare); true when it compiled one.
+    bool prepare(const shader::RenderUniforms& uniforms, GpuIntegrator integrator) const;
 
     /// Set 0 for the current scene and `target`. Throws rt::UsageError before setScene.
     TracingDescriptors makeDescriptors(const TargetBindings& target) const;
@@ -100,12 +101,13 @@ public:
     shader::RenderUniforms uniforms(const CameraDesc& camera, const RenderSettings& settings, VkExtent2D extent) const;
     /// Records `count` samples per pixel of `extent` from `firstSample` on, with `sets` bound from set 0, whose
     /// uniform buffer holds `uniforms`, through `variant` (a megakernel: PathTracingPipeline::recordLaunch, with
-    /// the scene's samples per launch) or else the tracer's integrator. `extent` may be a band of rows from
-    /// `firstRow` on. The wavefront records every wave to the render's depth (GpuEngine submits its waves
-    /// itself, stopping where their queues empty).
+    /// the scene's samples per launch) or else `integrator` (integratorFor: Megakernel or Wavefront). `extent`
+    /// may be a band of rows from `firstRow` on. The wavefront records every wave to the render's depth
+    /// (GpuEngine submits its waves itself, stopping where their queues empty).
     void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
-                      const shader::RenderUniforms& uniforms, std::uint32_t firstSample, std::uint32_t count,
-                      VkExtent2D extent, const PathTracingPipeline* variant = nullptr, std::uint32_t firstRow = 0) const;
+                      const shader::RenderUniforms& uniforms, GpuIntegrator integrator, std::uint32_t firstSample,
+                      std::uint32_t count, VkExtent2D extent, const PathTracingPipeline* variant = nullptr,
+                      std::uint32_t firstRow = 0) const;
 
 private:
     const vk::Device* m_device;

@@ -5,7 +5,7 @@
 # tests/Bench/device_carry.sh (figures in docs/PERFORMANCE.md).
 #   tests/Bench/device_run.sh tests    the GPU test suite (but its heavy part) and the apps' smoke tests
 #   tests/Bench/device_run.sh heavy    the heavy part: CPU/GPU agreement of every scene at 128 px, 64 spp
-#   tests/Bench/device_run.sh table    thesis Table 5.4 redone: cornell-box-lights 600x600, depth 50
+#   tests/Bench/device_run.sh table    thesis Table 5.4 redone: cornell-box-lights 600x600, depth 50, mixture
 #   tests/Bench/device_run.sh estimators  the same scene on the GPU with each estimator against one reference
 #   tests/Bench/device_run.sh specialization  issue 11: every scene with the general, strategy-only and
 #                                      strategy + features pipelines (600 px, 256 spp; SPEC_WIDTH, SPEC_SPP,
@@ -46,9 +46,10 @@ heavy)
     "$bin/rt_gpu_tests" --gtest_brief=1 --gtest_filter='Heavy/*' 2>&1 | tail -40
     ;;
 table)
+    # The thesis' estimator (book 3's mixture) with the random samples of the table's first runs.
     "$bin/ray-tracing-gpu" --compare --quiet --scene cornell-box-lights --width 600 --depth 50 \
-        --spp-list 10,50,100,250,500,1000,2000,5000 --engines multi,gpu --reference-spp 20000 \
-        --table "$out/table.json"
+        --estimator mixture --sampling random --spp-list 10,50,100,250,500,1000,2000,5000 --engines multi,gpu \
+        --reference-spp 20000 --table "$out/table.json"
     ;;
 estimators)
     # One reference for every estimator (nee-mis, the least noisy, at 50,000 spp), then each estimator's

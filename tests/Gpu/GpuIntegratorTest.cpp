@@ -9,6 +9,9 @@ namespace
 {
 using shader::Estimator;
 
+/// A render of 600x600 pixels at 256 spp, the catalogue benchmark's.
+constexpr std::uint64_t kBigRender = 600ull * 600 * 256;
+
 shader::RenderUniforms render(Estimator estimator, std::uint32_t lights, std::uint32_t emitters)
 {
     shader::RenderUniforms u{};
@@ -29,16 +32,16 @@ TEST(IntegratorName, NamesRoundTrip)
 TEST(IntegratorChoice, AnExplicitChoiceStands)
 {
     const auto u = render(Estimator::NeeMis, 12, 12);
-    EXPECT_EQ(resolveIntegrator(GpuIntegrator::Megakernel, false, u, 1u << 20), GpuIntegrator::Megakernel);
-    EXPECT_EQ(resolveIntegrator(GpuIntegrator::Wavefront, true, render(Estimator::BsdfOnly, 0, 0), 1),
+    EXPECT_EQ(resolveIntegrator(GpuIntegrator::Megakernel, false, u, 1u << 20, kBigRender), GpuIntegrator::Megakernel);
+    EXPECT_EQ(resolveIntegrator(GpuIntegrator::Wavefront, true, render(Estimator::BsdfOnly, 0, 0), 1, 1),
               GpuIntegrator::Wavefront);
 }
 
-// The rule, on the catalogue's cases measured on the H100 (docs/PERFORMANCE.md §8).
+// The rule, on the catalogue's cases measured on the H100 (docs/PERFORMANCE.md §8), at 600x600 and 256 spp.
 TEST(IntegratorChoice, AutoTakesTheWavefrontWhereAVertexEvaluatesSeveralLightsOrTheSceneIsLarge)
 {
     const auto autoFor = [](const shader::RenderUniforms& u, std::uint64_t primitives) {
-        return resolveIntegrator(GpuIntegrator::Auto, false, u, primitives);
+        return resolveIntegrator(GpuIntegrator::Auto, false, u, primitives, kBigRender);
     };
     EXPECT_EQ(autoFor(render(Estimator::NeeMis, 12, 12), 20), GpuIntegrator::Wavefront); // cornell-box-lights
     EXPECT_EQ(autoFor(render(Estimator::Nee, 2, 2), 20), GpuIntegrator::Wavefront);
@@ -53,9 +56,29 @@ TEST(IntegratorChoice, AutoTakesTheWavefrontWhereAVertexEvaluatesSeveralLightsOr
     EXPECT_EQ(autoFor(render(Estimator::BsdfOnly, 0, 0), 485), GpuIntegrator::Wavefront); // rtow-final
 }
 
+// Small renders (previews, the window's frames) run the megakernel: its launches cost less than the wavefront's
+// per segment (docs/PERFORMANCE.md §8.5); NEE over several emitters gains from the wavefront soonest.
+TEST(IntegratorChoice, AutoRunsTheMegakernelForSmallRenders)
+{
+    const auto autoFor = [](const shader::RenderUniforms& u, std::uint64_t primitives, std::uint64_t paths) {
+        return resolveIntegrator(GpuIntegrator::Auto, false, u, primitives, paths);
+    };
+    const shader::RenderUniforms nee = render(Estimator::NeeMis, 12, 12); // cornell-box-lights
+    EXPECT_EQ(autoFor(nee, 20, 600 * 600), GpuIntegrator::Megakernel); // one sample per pixel
+    EXPECT_EQ(autoFor(nee, 20, kWavefrontMinPathsNee - 1), GpuIntegrator::Megakernel);
+    EXPECT_EQ(autoFor(nee, 20, kWavefrontMinPathsNee), GpuIntegrator::Wavefront);
+    EXPECT_EQ(autoFor(nee, 20, 600 * 600 * 4), GpuIntegrator::Wavefront);
+    const shader::RenderUniforms mixture = render(Estimator::Mixture, 12, 12);
+    EXPECT_EQ(autoFor(mixture, 20, 600 * 600 * 10), GpuIntegrator::Megakernel); // the thesis table's first row
+    EXPECT_EQ(autoFor(mixture, 20, kWavefrontMinPaths - 1), GpuIntegrator::Megakernel);
+    EXPECT_EQ(autoFor(mixture, 20, kWavefrontMinPaths), GpuIntegrator::Wavefront);
+    EXPECT_EQ(autoFor(render(Estimator::BsdfOnly, 0, 0), 485, 600 * 338 * 32), GpuIntegrator::Megakernel); // rtow-final
+    EXPECT_EQ(autoFor(render(Estimator::BsdfOnly, 0, 0), 485, 600 * 338 * 256), GpuIntegrator::Wavefront);
+}
+
 TEST(IntegratorChoice, AutoRunsTheMegakernelOnACpuDevice)
 {
-    EXPECT_EQ(resolveIntegrator(GpuIntegrator::Auto, true, render(Estimator::NeeMis, 12, 12), 1u << 20),
+    EXPECT_EQ(resolveIntegrator(GpuIntegrator::Auto, true, render(Estimator::NeeMis, 12, 12), 1u << 20, kBigRender),
               GpuIntegrator::Megakernel);
 }
 } // namespace

@@ -159,10 +159,18 @@ void ProgressiveRenderer::recordSamples(VkCommandBuffer cmd, std::uint32_t slot,
         if (!m_costPipeline)
             createCostResources();
         const VkDescriptorSet sets[] = {m_sets.at(slot).set, m_costSets.at(slot)};
-        m_engine->tracer().recordLaunch(cmd, sets, uniforms, firstSample, count, size, m_costPipeline.get());
+        m_engine->tracer().recordLaunch(cmd, sets, uniforms, GpuIntegrator::Megakernel, firstSample, count, size,
+                                        m_costPipeline.get());
     }
     else
-        m_engine->tracer().recordLaunch(cmd, {&m_sets.at(slot).set, 1}, uniforms, firstSample, count, size);
+    {
+        // Decided per frame: a frame of a few samples runs the megakernel under auto (the wavefront's fixed
+        // cost per segment would dominate it).
+        const GpuIntegrator integrator =
+            m_engine->tracer().integratorFor(uniforms, std::uint64_t(size.width) * size.height * count);
+        m_engine->tracer().recordLaunch(cmd, {&m_sets.at(slot).set, 1}, uniforms, integrator, firstSample, count,
+                                        size);
+    }
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
