@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <optional>
 
 #include <nlohmann/json.hpp>
@@ -100,8 +101,13 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
     std::vector<std::vector<std::vector<Measurement>>> runs(engines.size());
     RunLog log(engines.size() * strategyCount * options.spps.size());
     // Each engine runs all its rows back to back after its warm-up: row by row interleaving with 16-thread CPU
-    // renders cost an H100 2-3x (docs/PERFORMANCE.md).
-    for (std::size_t e = 0; e < engines.size(); ++e)
+    // renders cost an H100 2-3x, and the GPU's rows after all the CPU's rows were still up to 5x slower at
+    // 10-250 spp (docs/PERFORMANCE.md §2), so the GPU's rows come first.
+    std::vector<std::size_t> order(engines.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_partition(order.begin(), order.end(),
+                          [&](std::size_t e) { return engines[e].kind == EngineKind::Gpu; });
+    for (const std::size_t e : order)
     {
         RenderEngine& engine = *engines[e].engine;
         warmUp(engine, options.strategies.front().request(base, 4));
