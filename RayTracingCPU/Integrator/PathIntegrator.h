@@ -109,20 +109,19 @@ inline vec3 sampledEmission(const Scene& scene, const LightData& light, const Li
 /// from there too, so both strategies see one geometry and their MIS weights sum to 1 for every direction
 /// (sampled from the unoffset point, a sphere light's silhouette shifted between them: +0.05 % on a test).
 /// Returns f cos Le / (pmf pdf) times the MIS weight (nee-mis: the power heuristic against the BSDF
-/// strategy's pdf of the same direction; nee: 1), or 0 when the point is occluded or faces away. Draws three numbers:
-/// the selection, then the point.
+/// strategy's pdf of the same direction; nee: 1), or 0 when the point is occluded or faces away. Takes the
+/// vertex's first three numbers: uSelect for the selection, u for the point.
 template <PathCode C>
 inline vec3 estimateDirect(const CpuScene& cs, const PathOptions& options, const vec3& origin, const vec3& ns,
-                           bool phase, const vec3& albedo, float time, Rng& rng, std::uint64_t& segments)
+                           bool phase, const vec3& albedo, float time, float uSelect, vec2 u, Rng& rng,
+                           std::uint64_t& segments)
 {
     const Scene& scene = cs.source();
     const std::uint32_t emitters = cs.emitterCount();
     float pmf;
     const vec3 receiver = phase ? vec3(0.0f) : ns; // no horizon in a medium
-    const std::uint32_t picked = shader::selectLight(cs.lightAlias(), cs.lightBvh(), options.lightSelection,
-                                                     rng.nextFloat(), emitters, origin, receiver,
-                                                     !options.unidirectionalLight, pmf);
-    const vec2 u = rng.next2D();
+    const std::uint32_t picked = shader::selectLight(cs.lightAlias(), cs.lightBvh(), options.lightSelection, uSelect,
+                                                     emitters, origin, receiver, !options.unidirectionalLight, pmf);
     if (picked == kNoIndex)
         return vec3(0.0f); // the light BVH proved that no emitter reaches this point
     const LightData& light = scene.lights[picked];
@@ -232,14 +231,18 @@ RT_FLATTEN inline vec3 tracePath(const CpuScene& cs, const PathOptions& options,
             const vec3 albedo = texture<C>(scene, mat.albedoTexture, si.uv, si.p);
             if (!mixture)
             {
+                // NEE's three numbers and the direction's two, drawn in that order before any of them is used:
+                // independent draws the CPU overlaps (a Sobol draw is a chain of about 60 cycles).
+                const float uSelect = nee ? rng.nextFloat() : 0.0f;
+                const vec2 uLight = nee ? rng.next2D() : vec2(0.0f);
+                const vec2 u = rng.next2D();
                 if (nee)
                 {
                     // The BSDF ray leaves from this origin too (below): sampleDiffuse keeps to the side of ns.
                     const vec3 origin = inMedium ? si.p : offsetRayOrigin(si.p, ns, si.offsetScale);
-                    radiance += throughput * estimateDirect<C>(cs, options, origin, ns, phase, albedo, ray.time, rng,
-                                                               segments);
+                    radiance += throughput * estimateDirect<C>(cs, options, origin, ns, phase, albedo, ray.time,
+                                                               uSelect, uLight, rng, segments);
                 }
-                const vec2 u = rng.next2D();
                 wi = shader::sampleDiffuse(phase, ns, u);
                 throughput *= albedo;
                 if (nee)
