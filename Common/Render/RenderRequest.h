@@ -36,7 +36,7 @@ struct RenderRequest
 /// Builds the scene `ref` names. Throws SceneError (unknown id), AssetError (missing mesh or texture).
 Scene buildScene(const SceneRef& ref);
 
-/// `settings` with a scene's own defaults: spp, depth, width, aspect, emitter sidedness.
+/// `settings` with a scene's own defaults: spp, depth, width, aspect, emitter sidedness, estimator, pixel sampling.
 void applySceneDefaults(RenderSettings& settings, const SceneDefaults& defaults);
 
 /// The request for `ref` with the built scene's own defaults (applySceneDefaults); the rest are

@@ -47,6 +47,8 @@ RT_FN float lightBvhImportance(RT_IN(LightBvhNode) node, vec3 p, vec3 n, bool tw
     // inside the bounding sphere alike) cost many-lights 12 % of its relMSE; pbrt-v4 floors it at half the
     // diagonal's length, which depends on the scene's units.
     const float importance = node.power / max(distance2, 0.1f * node.radius2);
+    if (!(importance > 0.0f))
+        return 0.0f; // no power, or a distance beyond float's range (its reciprocal below would be 0)
     // p inside the sphere: directions to it fill the sphere of directions, and both cosines bound to 1.
     if (distance2 <= node.radius2)
         return importance;

@@ -89,8 +89,6 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
 {
     if (!options.hdr.empty() || !options.stats.empty())
         spdlog::warn("--hdr and --stats are for --headless; the window's Save writes the PFM beside the PNG");
-    if (options.sampling == "stratified")
-        spdlog::warn("the window accumulates random samples progressively; --sampling is for --headless");
     rt::checkOutputPaths(options);
     rt::gpu::gui::WindowOptions w;
     if (!flags.windowSize.empty())
@@ -103,6 +101,9 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
     rt::gpu::gui::ImageSettings& image = w.initial.image;
     image.request = job.request;
     // The window traces progressively: random jitter per pass, or Sobol's points (indexed by the sample).
+    if (settings.sampling == rt::PixelSampling::Stratified)
+        spdlog::warn("the window accumulates random or Sobol samples progressively; stratified sampling is for "
+                     "--headless");
     if (settings.sampling != rt::PixelSampling::Sobol)
         image.request.settings.sampling = rt::PixelSampling::Accumulate;
     image.camera = job.scene.camera;
@@ -225,9 +226,9 @@ int main(int argc, char** argv)
                    "GPU: megakernel runs each camera sample's whole path in one ray-tracing invocation; wavefront "
                    "runs kernels per segment over waves of paths (path rays, shading in a compute kernel, shadow "
                    "rays): the same estimator, the same image within noise, up to 3.5x faster on NEE renders "
-                   "(docs/PERFORMANCE.md); auto takes the wavefront on a GPU where a vertex evaluates two lights "
-                   "or more (nee, nee-mis: from 2^20 camera paths; mixture) or the scene has 256 primitives or "
-                   "more (from 2^24 paths), else the megakernel")
+                   "(docs/PERFORMANCE.md); auto takes the wavefront on a GPU for nee and nee-mis over two emitters "
+                   "or more from 2^20 camera paths (width x height x spp), for the mixture over two lights or more "
+                   "and for scenes of 256 primitives or more from 2^24 paths, else the megakernel")
         ->check(CLI::IsMember({"auto", "megakernel", "wavefront"}))
         ->capture_default_str();
     std::uint32_t wavePaths = 0;

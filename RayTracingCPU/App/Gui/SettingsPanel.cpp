@@ -101,7 +101,7 @@ void SettingsPanel::drawRenderingParameters(Session& session)
     tooltip("render a scene file (docs/SCENES.md); the window renders it again whenever it changes on disk");
     if (ImGui::SmallButton("Scene defaults"))
         session.applySceneDefaults();
-    tooltip("the scene's own spp, depth, width, aspect ratio and light mode");
+    tooltip("the scene's own spp, depth, width, aspect ratio, light mode, estimator and pixel sampling");
     if (current)
     {
         ImGui::SameLine();

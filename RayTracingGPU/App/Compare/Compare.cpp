@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <numeric>
@@ -90,6 +91,18 @@ std::optional<Image> obtainReference(const Scene& scene, const RenderRequest& ba
     return std::move(m.image);
 }
 
+/// The order in which the engines run their renders: the GPU's first. After the CPU's rows of a long table
+/// (200 s of 16-thread renders) the H100's rows at 10-250 spp were 1.7-5.6x slower than a GPU-only run
+/// (docs/PERFORMANCE.md §2).
+std::vector<std::size_t> measurementOrder(const std::vector<EngineUnderTest>& engines)
+{
+    std::vector<std::size_t> order(engines.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_partition(order.begin(), order.end(),
+                          [&](std::size_t e) { return engines[e].kind == EngineKind::Gpu; });
+    return order;
+}
+
 /// The ladder: every engine x strategy x spp against the reference; rows to the CSV as they finish, the table
 /// to stdout and the JSON at the end. Returns false when Ctrl-C stopped it.
 bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
@@ -101,13 +114,8 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
     std::vector<std::vector<std::vector<Measurement>>> runs(engines.size());
     RunLog log(engines.size() * strategyCount * options.spps.size());
     // Each engine runs all its rows back to back after its warm-up: row by row interleaving with 16-thread CPU
-    // renders cost an H100 2-3x, and the GPU's rows after all the CPU's rows were still up to 5x slower at
-    // 10-250 spp (docs/PERFORMANCE.md §2), so the GPU's rows come first.
-    std::vector<std::size_t> order(engines.size());
-    std::iota(order.begin(), order.end(), std::size_t(0));
-    std::stable_partition(order.begin(), order.end(),
-                          [&](std::size_t e) { return engines[e].kind == EngineKind::Gpu; });
-    for (const std::size_t e : order)
+    // renders cost an H100 2-3x (docs/PERFORMANCE.md).
+    for (const std::size_t e : measurementOrder(engines))
     {
         RenderEngine& engine = *engines[e].engine;
         warmUp(engine, options.strategies.front().request(base, 4));
@@ -207,18 +215,20 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
     return true;
 }
 
-/// The equal-time comparison: every engine x strategy for options.equalTimeMs, one figure. Returns false when
-/// Ctrl-C stopped it.
+/// The equal-time comparison: every engine x strategy for options.equalTimeMs, one figure (tiles in the
+/// engines' order). Returns false when Ctrl-C stopped it.
 bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
                   std::vector<EngineUnderTest>& engines, const Image& reference, ConvergenceCsv* csv)
 {
     const std::vector<std::string> labels = distinctLabels(options.strategies);
-    std::vector<EqualTimeTile> tiles;
+    std::vector<std::vector<EqualTimeTile>> tilesOf(engines.size());
     RunLog log(engines.size() * options.strategies.size());
     std::string devices;
-    for (EngineUnderTest& e : engines)
-    {
+    for (const EngineUnderTest& e : engines)
         devices += (devices.empty() ? "" : ", ") + e.engine->deviceName();
+    for (const std::size_t index : measurementOrder(engines))
+    {
+        EngineUnderTest& e = engines[index];
         warmUp(*e.engine, options.strategies.front().request(base, 4));
         for (std::size_t s = 0; s < options.strategies.size(); ++s)
         {
@@ -231,9 +241,12 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
                 csv->append({scene.id, toString(e.kind), e.engine->deviceName(), options.strategies[s].name(),
                              labels[s], m.spp, m.wallMs, m.gpuMs, m.mpathsPerSecond, m.error.mse, m.error.relMse,
                              m.error.rmse});
-            tiles.push_back({e.kind, labels[s], options.strategies[s], std::move(m)});
+            tilesOf[index].push_back({e.kind, labels[s], options.strategies[s], std::move(m)});
         }
     }
+    std::vector<EqualTimeTile> tiles;
+    for (std::vector<EqualTimeTile>& engineTiles : tilesOf)
+        std::move(engineTiles.begin(), engineTiles.end(), std::back_inserter(tiles));
     std::printf("\n%s: %dx%d, each strategy for %.0f ms; relMSE against %s\n", scene.id.c_str(), base.settings.width,
                 base.settings.height(), options.equalTimeMs,
                 options.referencePath.empty() ? fmt::format("{} spp", options.referenceSpp).c_str()

@@ -164,10 +164,11 @@ void ProgressiveRenderer::recordSamples(VkCommandBuffer cmd, std::uint32_t slot,
     }
     else
     {
-        // Decided per frame: a frame of a few samples runs the megakernel under auto (the wavefront's fixed
-        // cost per segment would dominate it).
+        // Decided by the accumulation's stop, as the headless render of its spp decides (the two integrators'
+        // images differ by noise on a GPU): a window image of N spp stays that render's.
+        const auto stop = static_cast<std::uint64_t>(std::max<std::int64_t>(settings.spp, count));
         const GpuIntegrator integrator =
-            m_engine->tracer().integratorFor(uniforms, std::uint64_t(size.width) * size.height * count);
+            m_engine->tracer().integratorFor(uniforms, std::uint64_t(size.width) * size.height * stop);
         m_engine->tracer().recordLaunch(cmd, {&m_sets.at(slot).set, 1}, uniforms, integrator, firstSample, count,
                                         size);
     }
