@@ -9,6 +9,7 @@
 #include "Error.h"
 #include "IO/AtomicFile.h"
 #include "Image/ImageIO.h"
+#include "Render/RenderSettings.h"
 #include "SceneFile/JsonSceneReader.h"
 
 namespace rt
@@ -170,15 +171,13 @@ ojson camera(const CameraDesc& c)
 
 ojson render(const SceneDefaults& d)
 {
-    static constexpr const char* kEstimators[] = {"bsdf", "mixture", "nee", "nee-mis"};
-    static constexpr const char* kSamplings[] = {"random", "stratified", "accumulate", "sobol"};
     return {{"spp", d.spp},
             {"depth", d.depth},
             {"width", d.width},
             {"aspect", number(d.aspect)},
             {"unidirectional_light", d.unidirectionalLight},
-            {"estimator", kEstimators[static_cast<unsigned>(d.estimator)]},
-            {"sampling", kSamplings[static_cast<unsigned>(d.sampling)]}};
+            {"estimator", toString(d.estimator)},
+            {"sampling", toString(d.sampling)}};
 }
 
 ojson background(const Background& b)
