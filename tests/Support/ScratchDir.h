@@ -1,6 +1,7 @@
 // A fresh folder per test for files the tests write, removed afterwards.
 #pragma once
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -18,8 +19,11 @@ public:
     ScratchDir()
     {
         const testing::TestInfo* info = testing::UnitTest::GetInstance()->current_test_info();
-        const std::string name = std::string("rt_tests-") + std::to_string(::getpid()) + "-" +
-                                 (info ? std::string(info->test_suite_name()) + "." + info->name() : "global");
+        std::string name = std::string("rt_tests-") + std::to_string(::getpid()) + "-" +
+                           (info ? std::string(info->test_suite_name()) + "." + info->name() : "global");
+        // A parameterised test's names hold '/' (AllScenes/Suite.Test/scene): one folder, not nested ones
+        // whose parents the destructor would leave behind.
+        std::replace(name.begin(), name.end(), '/', '_');
         m_path = std::filesystem::temp_directory_path() / name;
         std::filesystem::remove_all(m_path);
         std::filesystem::create_directories(m_path);
