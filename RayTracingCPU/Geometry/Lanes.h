@@ -1,5 +1,5 @@
 // A vector of floats processed together, as wide as the build's instruction set allows: 8 lanes with AVX
-// (RT_X86_LEVEL=x86-64-v3), 4 with SSE (the default x86-64-v2 build), 4 plain-loop lanes elsewhere. Just the operations the packet
+// (x86-64-v3 and v4 builds, RT_X86_LEVEL), 4 with SSE (x86-64-v2), 4 plain-loop lanes elsewhere. Just the operations the packet
 // tests need; comparisons give lane masks (all bits set where true).
 #pragma once
 
