@@ -2,7 +2,8 @@
 // form, so one ray is tested against all of them at once with no per-primitive branches (the layout of
 // Embree's quad4/triangle4 leaves: Wald et al., "Embree: A Kernel Framework for Efficient CPU Ray
 // Tracing", ACM TOG 33(4), 2014). The tests are the scalar ones of Intersect.h, lane by lane.
-// Unused lanes repeat lane 0, so they report the same hit as lane 0 and need no masking.
+// Unused lanes hold NaN, which fails every test's comparisons: they never hit and need no masking, and a
+// packet's hits are its primitives' alone (a lone sphere's hit is one lane, found without a horizontal min).
 #pragma once
 
 #include <cstdint>
@@ -41,7 +42,8 @@ struct alignas(32) TrianglePacket
 void setLane(SpherePacket& p, int lane, const SphereRec& s, std::uint32_t prim);
 void setLane(QuadPacket& p, int lane, const QuadRec& q, std::uint32_t prim);
 void setLane(TrianglePacket& p, int lane, const TriangleRec& t, std::uint32_t prim);
-/// Fills lanes [used, kLanes) with copies of lane 0.
+/// Fills lanes [used, kLanes) with a quiet NaN in every member (prim included: never read, as such a lane
+/// never hits).
 template <typename Packet>
 void padPacket(Packet& p, int used)
 {
@@ -49,7 +51,7 @@ void padPacket(Packet& p, int used)
     auto* words = reinterpret_cast<std::uint32_t*>(&p);
     for (std::size_t word = 0; word < sizeof(Packet) / 4; word += kLanes)
         for (int lane = used; lane < kLanes; ++lane)
-            words[word + lane] = words[word];
+            words[word + lane] = 0x7FC00000u;
 }
 
 namespace detail
@@ -60,6 +62,8 @@ inline int nearestLane(Lanes mask, Lanes t)
     const int bits = movemask(mask);
     if (bits == 0)
         return -1;
+    if ((bits & (bits - 1)) == 0) // one lane hit: the common case in a leaf of walls or of one sphere
+        return std::countr_zero(static_cast<unsigned>(bits));
     const Lanes masked = select(mask, t, Lanes(kInfinity));
     return std::countr_zero(static_cast<unsigned>(movemask(masked == horizontalMin(masked)) & bits));
 }

@@ -44,14 +44,15 @@ Aabb quadBounds(const QuadRec& q, const vec3& u, const vec3& v)
     return Aabb(box.min - pad, box.max + pad);
 }
 
-vec2 sphereUv(const vec3& q)
+} // namespace
+
+vec2 CpuScene::sphereUv(const vec3& q)
 {
     // RTTNW §4.3: theta from -y, phi around y from -x.
     const float theta = std::acos(std::clamp(-q.y, -1.0f, 1.0f));
     const float phi = std::atan2(-q.z, q.x) + kPi;
     return {phi * kInv2Pi, theta * kInvPi};
 }
-} // namespace
 
 CpuScene::CpuScene(const Scene& scene)
     : m_scene(&scene), m_lightAlias(lightAliasTable(scene)), m_lightBvh(buildLightBvh(scene)), m_emitterCount(scene.emitterCount())
@@ -184,64 +185,5 @@ void CpuScene::buildLeafPackets(const std::vector<PrimRef>& refs)
         node.offset = firstPacket;
         node.count = static_cast<std::uint16_t>(m_leafPackets.size() - firstPacket);
     }
-}
-
-SurfaceInteraction CpuScene::interaction(const TraceRay& r, const HitRecord& hit) const
-{
-    SurfaceInteraction si{};
-    const PrimRef ref{hit.prim};
-    switch (ref.type())
-    {
-    case PrimType::Sphere:
-    {
-        const SphereRec& s = m_spheres[ref.index()];
-        const vec3 center = s.center0 + r.time * s.velocity;
-        const vec3 n = glm::normalize(r.origin + hit.t * r.direction - center);
-        si.n = n;
-        si.p = center + s.radius * n; // re-projected onto the surface: o + t d carries error ~ t |d|
-        si.material = s.material;
-        si.light = m_sphereLights[ref.index()];
-        if (m_materialNeedsUv[s.material]) // acos + atan2 only where an image texture reads them
-            si.uv = sphereUv(s.uvFrame ? m_uvFrames[s.uvFrame] * n : n);
-        break;
-    }
-    case PrimType::Quad:
-    {
-        const QuadRec& q = m_quads[ref.index()];
-        si.p = r.origin + hit.t * r.direction;
-        si.n = q.normal;
-        si.uv = {hit.b1, hit.b2};
-        si.material = q.material;
-        si.light = m_quadLights[ref.index()];
-        si.offsetScale = q.offsetScale;
-        break;
-    }
-    case PrimType::Triangle:
-    {
-        const TriangleRec& tri = m_triangles[ref.index()];
-        const float b0 = 1.0f - hit.b1 - hit.b2;
-        si.p = b0 * tri.p0 + hit.b1 * tri.p1 + hit.b2 * tri.p2; // from barycentrics: accurate (RTG ch. 6)
-        si.n = glm::normalize(glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0));
-        const MeshData& mesh = m_scene->meshes[tri.mesh];
-        if (mesh.uvs.empty())
-            si.uv = {hit.b1, hit.b2};
-        else
-        {
-            const std::uint32_t* idx = &mesh.indices[3 * tri.triangle];
-            si.uv = b0 * mesh.uvs[idx[0]] + hit.b1 * mesh.uvs[idx[1]] + hit.b2 * mesh.uvs[idx[2]];
-        }
-        si.material = tri.material;
-        si.light = m_triangleLights[ref.index()];
-        si.offsetScale = tri.offsetScale;
-        break;
-    }
-    case PrimType::Medium:
-        si.p = r.origin + hit.t * r.direction;
-        si.n = vec3(1.0f, 0.0f, 0.0f);
-        si.material = m_media[ref.index()].material;
-        si.medium = true;
-        break;
-    }
-    return si;
 }
 } // namespace rt::cpu

@@ -80,10 +80,71 @@ public:
         return hit.prim != kNoIndex;
     }
 
-    /// Position, normal, uv and material of a hit found by intersect().
-    SurfaceInteraction interaction(const TraceRay& r, const HitRecord& hit) const;
+    /// Position, normal, uv and material of a hit found by intersect(). Inline, so that the path loops compile
+    /// it into themselves: out of line it returned its record through memory.
+    SurfaceInteraction interaction(const TraceRay& r, const HitRecord& hit) const
+    {
+        SurfaceInteraction si{};
+        const PrimRef ref{hit.prim};
+        switch (ref.type())
+        {
+        case PrimType::Sphere:
+        {
+            const SphereRec& s = m_spheres[ref.index()];
+            const vec3 center = s.center0 + r.time * s.velocity;
+            const vec3 n = glm::normalize(r.origin + hit.t * r.direction - center);
+            si.n = n;
+            si.p = center + s.radius * n; // re-projected onto the surface: o + t d carries error ~ t |d|
+            si.material = s.material;
+            si.light = m_sphereLights[ref.index()];
+            if (m_materialNeedsUv[s.material]) // acos + atan2 only where an image texture reads them
+                si.uv = sphereUv(s.uvFrame ? m_uvFrames[s.uvFrame] * n : n);
+            break;
+        }
+        case PrimType::Quad:
+        {
+            const QuadRec& q = m_quads[ref.index()];
+            si.p = r.origin + hit.t * r.direction;
+            si.n = q.normal;
+            si.uv = {hit.b1, hit.b2};
+            si.material = q.material;
+            si.light = m_quadLights[ref.index()];
+            si.offsetScale = q.offsetScale;
+            break;
+        }
+        case PrimType::Triangle:
+        {
+            const TriangleRec& tri = m_triangles[ref.index()];
+            const float b0 = 1.0f - hit.b1 - hit.b2;
+            si.p = b0 * tri.p0 + hit.b1 * tri.p1 + hit.b2 * tri.p2; // from barycentrics: accurate (RTG ch. 6)
+            si.n = glm::normalize(glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0));
+            const MeshData& mesh = m_scene->meshes[tri.mesh];
+            if (mesh.uvs.empty())
+                si.uv = {hit.b1, hit.b2};
+            else
+            {
+                const std::uint32_t* idx = &mesh.indices[3 * tri.triangle];
+                si.uv = b0 * mesh.uvs[idx[0]] + hit.b1 * mesh.uvs[idx[1]] + hit.b2 * mesh.uvs[idx[2]];
+            }
+            si.material = tri.material;
+            si.light = m_triangleLights[ref.index()];
+            si.offsetScale = tri.offsetScale;
+            break;
+        }
+        case PrimType::Medium:
+            si.p = r.origin + hit.t * r.direction;
+            si.n = vec3(1.0f, 0.0f, 0.0f);
+            si.material = m_media[ref.index()].material;
+            si.medium = true;
+            break;
+        }
+        return si;
+    }
 
 private:
+    /// (u, v) of the unit sphere's point q (RTTNW §4.3): acos and atan2, out of line.
+    static vec2 sphereUv(const vec3& q);
+
     void intersectLeafPacket(PrimRef ref, const TraceRay& r, float tMin, HitRecord& hit, Rng& rng) const
     {
         switch (ref.type())
