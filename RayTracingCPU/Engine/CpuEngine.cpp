@@ -64,7 +64,7 @@ void CpuEngine::beginFrame(const RenderSettings& settings)
                           .camera = Camera(m_scene->source().camera, width, height),
                           .options = {settings.depth, settings.estimator, settings.lightSampler, settings.lightSelection,
                                     settings.russianRoulette, settings.unidirectionalLight},
-                          .variant = choosePathVariant(m_features, settings.estimator, m_specialize),
+                          .variant = choosePathVariant(m_features, settings.estimator, m_specialize, m_scene->tracesRayLanes()),
                           .sum = std::vector<dvec3>(std::size_t(width) * height, dvec3(0.0)),
                           .before = std::vector<dvec3>(std::size_t(width) * height, dvec3(0.0)),
                           .width = width,
@@ -102,6 +102,38 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
     const CpuScene& scene = *m_scene;
     std::vector<dvec3>& sums = f.sum;
     std::vector<RowTally>& tallies = f.rows;
+    const TracePathsFn traceLanes = f.variant.traceLanes;
+    // Camera sample s of pixel (x, y): its random stream and its first ray.
+    const auto cameraSample = [&](int x, int y, std::uint32_t s) {
+        const auto pixelIndex = static_cast<std::uint32_t>(y * width + x);
+        PathJob job{{}, sobol ? Rng::forSobolSample(seed, pixelIndex, s) : Rng::forSample(seed, pixelIndex, s)};
+        const vec2 jitter = job.rng.next2D();
+        float fx, fy;
+        if (stratified)
+        {
+            fx = float(x) + (float(s % strata) + jitter.x) * invStrata; // stratum (s % n, s / n)
+            fy = float(y) + (float(s / strata) + jitter.y) * invStrata;
+        }
+        else
+        {
+            fx = float(x) + jitter.x;
+            fy = float(y) + jitter.y;
+        }
+        vec2 lens(0.0f);
+        if (camera.thinLens)
+            lens = job.rng.next2D();
+        const float time = job.rng.nextFloat();
+        job.ray = camera.generateRay(fx, fy, lens, time);
+        return job;
+    };
+    const auto accumulate = [](dvec3& sum, const vec3& l, RowTally& t) {
+        if (isFinite(l))
+            sum += dvec3(l);
+        else if (std::isnan(l.x) || std::isnan(l.y) || std::isnan(l.z))
+            ++t.nan;
+        else
+            ++t.inf;
+    };
     const auto row = [&](int y) {
         if (control.cancelRequested())
         {
@@ -114,9 +146,36 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
         f.rowsBefore[y] = tallies[y];
         RowTally& t = tallies[y];
         t.thread = std::hash<std::thread::id>{}(std::this_thread::get_id());
+        if (traceLanes)
+        {
+            // The row's samples in (pixel, sample) order, in chunks of jobs traced kLanes at a time; each pixel
+            // still adds its samples in sample order.
+            constexpr std::uint32_t kChunk = 256;
+            PathJob jobs[kChunk];
+            vec3 radiance[kChunk];
+            const std::uint64_t total = std::uint64_t(width) * count;
+            for (std::uint64_t first = 0; first < total; first += kChunk)
+            {
+                if (control.cancelRequested())
+                {
+                    f.rowStates[y] = RowState::Abandoned;
+                    return;
+                }
+                const auto n = static_cast<std::uint32_t>(std::min<std::uint64_t>(kChunk, total - first));
+                for (std::uint32_t i = 0; i < n; ++i)
+                {
+                    const std::uint64_t j = first + i;
+                    jobs[i] = cameraSample(int(j / count), y, firstSample + std::uint32_t(j % count));
+                }
+                traceLanes(scene, options, std::span<PathJob>(jobs, n), radiance, t.segments);
+                for (std::uint32_t i = 0; i < n; ++i)
+                    accumulate(sums[rowStart + std::size_t((first + i) / count)], radiance[i], t);
+            }
+            control.advance(total);
+            return;
+        }
         for (int x = 0; x < width; ++x)
         {
-            const auto pixelIndex = static_cast<std::uint32_t>(y * width + x);
             dvec3 sum = sums[rowStart + std::size_t(x)];
             for (std::uint32_t s = firstSample; s < firstSample + count; ++s)
             {
@@ -127,30 +186,8 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
                     f.rowStates[y] = RowState::Abandoned;
                     return;
                 }
-                Rng rng = sobol ? Rng::forSobolSample(seed, pixelIndex, s) : Rng::forSample(seed, pixelIndex, s);
-                const vec2 jitter = rng.next2D();
-                float fx, fy;
-                if (stratified)
-                {
-                    fx = float(x) + (float(s % strata) + jitter.x) * invStrata; // stratum (s % n, s / n)
-                    fy = float(y) + (float(s / strata) + jitter.y) * invStrata;
-                }
-                else
-                {
-                    fx = float(x) + jitter.x;
-                    fy = float(y) + jitter.y;
-                }
-                vec2 lens(0.0f);
-                if (camera.thinLens)
-                    lens = rng.next2D();
-                const float time = rng.nextFloat();
-                const vec3 l = trace(scene, options, camera.generateRay(fx, fy, lens, time), rng, t.segments);
-                if (isFinite(l))
-                    sum += dvec3(l);
-                else if (std::isnan(l.x) || std::isnan(l.y) || std::isnan(l.z))
-                    ++t.nan;
-                else
-                    ++t.inf;
+                PathJob job = cameraSample(x, y, s);
+                accumulate(sum, trace(scene, options, job.ray, job.rng, t.segments), t);
             }
             sums[rowStart + std::size_t(x)] = sum;
         }

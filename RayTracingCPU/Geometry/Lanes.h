@@ -28,6 +28,7 @@ struct Lanes
     Lanes(__m256 x) : v(x) {}
     explicit Lanes(float x) : v(_mm256_set1_ps(x)) {}
     static Lanes load(const float* p) { return _mm256_load_ps(p); }
+    void storeTo(float* p) const { _mm256_store_ps(p, v); } // p aligned to 32 bytes
 
     friend Lanes operator+(Lanes a, Lanes b) { return _mm256_add_ps(a.v, b.v); }
     friend Lanes operator-(Lanes a, Lanes b) { return _mm256_sub_ps(a.v, b.v); }
@@ -80,6 +81,7 @@ struct Lanes
     Lanes(__m128 x) : v(x) {}
     explicit Lanes(float x) : v(_mm_set1_ps(x)) {}
     static Lanes load(const float* p) { return _mm_load_ps(p); }
+    void storeTo(float* p) const { _mm_store_ps(p, v); } // p aligned to 16 bytes
 
     friend Lanes operator+(Lanes a, Lanes b) { return _mm_add_ps(a.v, b.v); }
     friend Lanes operator-(Lanes a, Lanes b) { return _mm_sub_ps(a.v, b.v); }
@@ -127,6 +129,11 @@ struct Lanes
     Lanes() = default;
     explicit Lanes(float x) : v{x, x, x, x} {}
     static Lanes load(const float* p) { return Lanes::map([&](int i) { return p[i]; }); }
+    void storeTo(float* p) const
+    {
+        for (int i = 0; i < 4; ++i)
+            p[i] = v[i];
+    }
     template <typename Fn>
     static Lanes map(Fn&& fn)
     {

@@ -145,10 +145,30 @@ inline vec3 estimateDirect(const CpuScene& cs, const PathOptions& options, const
     return albedo * le * (weight * bsdfPdf / lightPdfTotal);
 }
 
-/// Incident radiance along `ray` (linear RGB). `segments` is incremented per ray traced, shadow rays included.
-/// An instance other than the general one must match the scene and options (Integrator/PathVariants.h).
-template <PathCode C = PathCode{}>
-RT_FLATTEN inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, Rng& rng, std::uint64_t& segments)
+/// One camera path between two of its segments: what the loop carries from one ray to the next.
+struct PathState
+{
+    Ray ray; // the segment to trace next
+    vec3 radiance = vec3(0.0f); // gathered so far (linear RGB)
+    vec3 throughput = vec3(1.0f);
+    // The vertex the current ray left, for the MIS weight of the emission it finds: the ray's origin and the
+    // BSDF strategy's solid-angle pdf of its direction; 0 when NEE did not run there (the camera, a specular
+    // vertex), so the emission counts in full.
+    vec3 previousPoint = vec3(0.0f);
+    vec3 previousNormal = vec3(0.0f); // its receiver normal for the projected samplers (0 in a medium)
+    float previousBsdfPdf = 0.0f;
+    // A roulette decided at the last vertex, applied once this segment's emission is gathered
+    // (rouletteAfterNextHit): 0 ends the path, else the throughput is scaled by 1 / pendingSurvival.
+    float pendingSurvival = 1.0f;
+    int segment = 0; // segments traced before path.ray
+};
+
+/// What the path does with the hit of its segment path.ray (`found` false: the ray left the scene): gathers
+/// the emission there, scatters, and sets path.ray to the next segment. Returns false when the path ends
+/// (path.radiance is then its estimate). `segments` counts the shadow rays it traces.
+template <PathCode C>
+inline bool continuePath(const CpuScene& cs, const PathOptions& options, PathState& path, bool found,
+                         const HitRecord& hit, Rng& rng, std::uint64_t& segments)
 {
     const Scene& scene = cs.source();
     const Estimator estimator = C.general ? options.estimator : C.estimator;
@@ -157,144 +177,147 @@ RT_FLATTEN inline vec3 tracePath(const CpuScene& cs, const PathOptions& options,
     const bool mis = estimator == Estimator::NeeMis;
     const bool rouletteAfterNextHit = shader::rouletteAfterNextHit(estimator);
     constexpr bool kMedia = C.general || C.media;
-    // A roulette decided at the last vertex, applied once this segment's emission is gathered
-    // (rouletteAfterNextHit): 0 ends the path, else the throughput is scaled by 1 / pendingSurvival.
-    float pendingSurvival = 1.0f;
-    vec3 radiance(0.0f);
-    vec3 throughput(1.0f);
-    // The vertex the current ray left, for the MIS weight of the emission it finds: the ray's origin and the
-    // BSDF strategy's solid-angle pdf of its direction; 0 when NEE did not run there (the camera, a specular
-    // vertex), so the emission counts in full.
-    vec3 previousPoint(0.0f);
-    vec3 previousNormal(0.0f); // its receiver normal for the projected samplers (0 in a medium)
-    float previousBsdfPdf = 0.0f;
-    const TraceRay::Needs needs = cs.rayNeeds();
-    for (int segment = 0; segment < options.depth; ++segment)
+    const Ray ray = path.ray;
+    vec3& throughput = path.throughput;
+    if (!found)
     {
-        const TraceRay r(ray, needs);
-        HitRecord hit;
-        ++segments;
-        if (!cs.intersect(r, 0.0f, kInfinity, hit, rng))
-        {
-            radiance += throughput * backgroundRadiance(scene.background, ray.direction);
-            break;
-        }
-        const SurfaceInteraction si = cs.interaction(r, hit);
-        const MaterialData& mat = scene.materials[si.material];
-        const bool inMedium = kMedia && si.medium;
-        const bool frontFace = inMedium || glm::dot(ray.direction, si.n) < 0.0f;
-        const vec3 ns = frontFace ? si.n : -si.n;
-
-        if (mat.emissionTexture != kNoIndex && (frontFace || !options.unidirectionalLight))
-        {
-            float weight = 1.0f;
-            if (previousBsdfPdf > 0.0f && si.light != kNoIndex)
-                weight = mis ? shader::powerHeuristic(previousBsdfPdf,
-                                                      selectionPmf(cs, options, si.light, previousPoint,
-                                                                   previousNormal) *
-                                                          lightPdf(scene.lights[si.light], options.lightSampler,
-                                                                   previousPoint, previousNormal, ray.direction))
-                             : 0.0f;
-            radiance += throughput * texture<C>(scene, mat.emissionTexture, si.uv, si.p) * weight;
-        }
-        if (segment + 1 == options.depth)
-            break; // RTIOW's depth: the next segment would return black
-        if (pendingSurvival == 0.0f)
-            break;
-        if (pendingSurvival < 1.0f)
-        {
-            throughput /= pendingSurvival;
-            pendingSurvival = 1.0f;
-        }
-
-        vec3 wi;
-        previousBsdfPdf = 0.0f;
-        switch (mat.type)
-        {
-        case MaterialType::DiffuseLight: return radiance;
-        case MaterialType::Metal:
-        {
-            const vec2 u = rng.next2D();
-            if (!shader::sampleFuzzyMirror(ray.direction, ns, mat.fuzz, u, wi))
-                return radiance;
-            throughput *= texture<C>(scene, mat.albedoTexture, si.uv, si.p);
-            break;
-        }
-        case MaterialType::Dielectric:
-            wi = shader::sampleDielectric(ray.direction, ns, frontFace ? 1.0f / mat.ior : mat.ior, mat.fresnel,
-                                          rng.nextFloat());
-            break;
-        case MaterialType::Lambertian:
-        case MaterialType::Isotropic:
-        {
-            const bool phase = kMedia && mat.type == MaterialType::Isotropic;
-            const vec3 albedo = texture<C>(scene, mat.albedoTexture, si.uv, si.p);
-            if (!mixture)
-            {
-                // NEE's three numbers and the direction's two, drawn in that order before any of them is used:
-                // independent draws the CPU overlaps (a Sobol draw is a chain of about 60 cycles).
-                const float uSelect = nee ? rng.nextFloat() : 0.0f;
-                const vec2 uLight = nee ? rng.next2D() : vec2(0.0f);
-                const vec2 u = rng.next2D();
-                if (nee)
-                {
-                    // The BSDF ray leaves from this origin too (below): sampleDiffuse keeps to the side of ns.
-                    const vec3 origin = inMedium ? si.p : offsetRayOrigin(si.p, ns, si.offsetScale);
-                    radiance += throughput * estimateDirect<C>(cs, options, origin, ns, phase, albedo, ray.time,
-                                                               uSelect, uLight, rng, segments);
-                }
-                wi = shader::sampleDiffuse(phase, ns, u);
-                throughput *= albedo;
-                if (nee)
-                {
-                    previousBsdfPdf = shader::diffusePdf(phase, ns, wi);
-                    previousNormal = phase ? vec3(0.0f) : ns;
-                }
-                break;
-            }
-            const float choice = rng.nextFloat();
-            const vec2 u = rng.next2D();
-            std::size_t sampled = std::size_t(-1);
-            float sampledPdf = 0.0f;
-            if (choice < 0.5f)
-                wi = shader::sampleDiffuse(phase, ns, u);
-            else
-            {
-                const auto n = static_cast<float>(scene.lights.size());
-                sampled = static_cast<std::size_t>(minf((2.0f * choice - 1.0f) * n, n - 1.0f)); // the choice's bits
-                LightSample ls;
-                if (!sampleLight(scene.lights[sampled], si.p, u, ls))
-                    return radiance;
-                wi = ls.wi;
-                sampledPdf = ls.pdf;
-            }
-            const float scatteringPdf = shader::diffusePdf(phase, ns, wi);
-            const float pdf = mixturePdf(scene, si.p, wi, scatteringPdf, sampled, sampledPdf);
-            if (!(scatteringPdf > 0.0f) || !(pdf > 0.0f))
-                return radiance;
-            throughput *= albedo * (scatteringPdf / pdf);
-            break;
-        }
-        }
-        if (options.russianRoulette)
-        {
-            const float survival = shader::rouletteSurvival(throughput, static_cast<std::uint32_t>(segment));
-            if (survival < 1.0f)
-            {
-                const bool survives = rng.nextFloat() < survival;
-                if (rouletteAfterNextHit)
-                    pendingSurvival = survives ? survival : 0.0f;
-                else if (!survives)
-                    return radiance;
-                else
-                    throughput /= survival;
-            }
-        }
-        const vec3 origin =
-            inMedium ? si.p : offsetRayOrigin(si.p, glm::dot(wi, si.n) > 0.0f ? si.n : -si.n, si.offsetScale);
-        ray = Ray{origin, wi, ray.time};
-        previousPoint = origin;
+        path.radiance += throughput * backgroundRadiance(scene.background, ray.direction);
+        return false;
     }
-    return radiance;
+    const SurfaceInteraction si = cs.interaction(ray, hit);
+    const MaterialData& mat = scene.materials[si.material];
+    const bool inMedium = kMedia && si.medium;
+    const bool frontFace = inMedium || glm::dot(ray.direction, si.n) < 0.0f;
+    const vec3 ns = frontFace ? si.n : -si.n;
+
+    if (mat.emissionTexture != kNoIndex && (frontFace || !options.unidirectionalLight))
+    {
+        float weight = 1.0f;
+        if (path.previousBsdfPdf > 0.0f && si.light != kNoIndex)
+            weight = mis ? shader::powerHeuristic(path.previousBsdfPdf,
+                                                  selectionPmf(cs, options, si.light, path.previousPoint,
+                                                               path.previousNormal) *
+                                                      lightPdf(scene.lights[si.light], options.lightSampler,
+                                                               path.previousPoint, path.previousNormal, ray.direction))
+                         : 0.0f;
+        path.radiance += throughput * texture<C>(scene, mat.emissionTexture, si.uv, si.p) * weight;
+    }
+    if (path.segment + 1 == options.depth)
+        return false; // RTIOW's depth: the next segment would return black
+    if (path.pendingSurvival == 0.0f)
+        return false;
+    if (path.pendingSurvival < 1.0f)
+    {
+        throughput /= path.pendingSurvival;
+        path.pendingSurvival = 1.0f;
+    }
+
+    vec3 wi;
+    path.previousBsdfPdf = 0.0f;
+    switch (mat.type)
+    {
+    case MaterialType::DiffuseLight: return false;
+    case MaterialType::Metal:
+    {
+        const vec2 u = rng.next2D();
+        if (!shader::sampleFuzzyMirror(ray.direction, ns, mat.fuzz, u, wi))
+            return false;
+        throughput *= texture<C>(scene, mat.albedoTexture, si.uv, si.p);
+        break;
+    }
+    case MaterialType::Dielectric:
+        wi = shader::sampleDielectric(ray.direction, ns, frontFace ? 1.0f / mat.ior : mat.ior, mat.fresnel,
+                                      rng.nextFloat());
+        break;
+    case MaterialType::Lambertian:
+    case MaterialType::Isotropic:
+    {
+        const bool phase = kMedia && mat.type == MaterialType::Isotropic;
+        const vec3 albedo = texture<C>(scene, mat.albedoTexture, si.uv, si.p);
+        if (!mixture)
+        {
+            // NEE's three numbers and the direction's two, drawn in that order before any of them is used:
+            // independent draws the CPU overlaps (a Sobol draw is a chain of about 60 cycles).
+            const float uSelect = nee ? rng.nextFloat() : 0.0f;
+            const vec2 uLight = nee ? rng.next2D() : vec2(0.0f);
+            const vec2 u = rng.next2D();
+            if (nee)
+            {
+                // The BSDF ray leaves from this origin too (below): sampleDiffuse keeps to the side of ns.
+                const vec3 origin = inMedium ? si.p : offsetRayOrigin(si.p, ns, si.offsetScale);
+                path.radiance += throughput * estimateDirect<C>(cs, options, origin, ns, phase, albedo, ray.time,
+                                                                uSelect, uLight, rng, segments);
+            }
+            wi = shader::sampleDiffuse(phase, ns, u);
+            throughput *= albedo;
+            if (nee)
+            {
+                path.previousBsdfPdf = shader::diffusePdf(phase, ns, wi);
+                path.previousNormal = phase ? vec3(0.0f) : ns;
+            }
+            break;
+        }
+        const float choice = rng.nextFloat();
+        const vec2 u = rng.next2D();
+        std::size_t sampled = std::size_t(-1);
+        float sampledPdf = 0.0f;
+        if (choice < 0.5f)
+            wi = shader::sampleDiffuse(phase, ns, u);
+        else
+        {
+            const auto n = static_cast<float>(scene.lights.size());
+            sampled = static_cast<std::size_t>(minf((2.0f * choice - 1.0f) * n, n - 1.0f)); // the choice's bits
+            LightSample ls;
+            if (!sampleLight(scene.lights[sampled], si.p, u, ls))
+                return false;
+            wi = ls.wi;
+            sampledPdf = ls.pdf;
+        }
+        const float scatteringPdf = shader::diffusePdf(phase, ns, wi);
+        const float pdf = mixturePdf(scene, si.p, wi, scatteringPdf, sampled, sampledPdf);
+        if (!(scatteringPdf > 0.0f) || !(pdf > 0.0f))
+            return false;
+        throughput *= albedo * (scatteringPdf / pdf);
+        break;
+    }
+    }
+    if (options.russianRoulette)
+    {
+        const float survival = shader::rouletteSurvival(throughput, static_cast<std::uint32_t>(path.segment));
+        if (survival < 1.0f)
+        {
+            const bool survives = rng.nextFloat() < survival;
+            if (rouletteAfterNextHit)
+                path.pendingSurvival = survives ? survival : 0.0f;
+            else if (!survives)
+                return false;
+            else
+                throughput /= survival;
+        }
+    }
+    const vec3 origin =
+        inMedium ? si.p : offsetRayOrigin(si.p, glm::dot(wi, si.n) > 0.0f ? si.n : -si.n, si.offsetScale);
+    path.ray = Ray{origin, wi, ray.time};
+    path.previousPoint = origin;
+    return ++path.segment < options.depth;
+}
+
+/// Incident radiance along `ray` (linear RGB). `segments` is incremented per ray traced, shadow rays included.
+/// An instance other than the general one must match the scene and options (Integrator/PathVariants.h).
+template <PathCode C = PathCode{}>
+RT_FLATTEN inline vec3 tracePath(const CpuScene& cs, const PathOptions& options, Ray ray, Rng& rng, std::uint64_t& segments)
+{
+    PathState path{ray};
+    if (options.depth <= 0)
+        return path.radiance;
+    const TraceRay::Needs needs = cs.rayNeeds();
+    for (;;)
+    {
+        HitRecord hit{};
+        ++segments;
+        const bool found = cs.intersect(TraceRay(path.ray, needs), 0.0f, kInfinity, hit, rng);
+        if (!continuePath<C>(cs, options, path, found, hit, rng, segments))
+            return path.radiance;
+    }
 }
 } // namespace rt::cpu

@@ -1,26 +1,36 @@
 // Which compiled instance of the path loop a render runs (issue 11: "chosen once per render, not tested per
 // ray"). The scene's features (Scene/SceneFeatures.h) and the render's estimator pick one of the 16
 // specialised instances of tracePath: one per estimator, with or without media, with or without non-solid
-// textures. --specialize off keeps the general instance, the baseline of tests/Bench/cpu_specialization.sh.
+// textures; most run kLanes paths at a time (Integrator/PathStream.h), whose rays a scene that is one leaf of
+// quads and spheres tests together. --specialize off keeps the general instance, one path at a time, the baseline of
+// tests/Bench/cpu_specialization.sh.
 #pragma once
 
 #include <string>
 
 #include "Integrator/PathIntegrator.h"
+#include "Integrator/PathStream.h"
 #include "Scene/SceneFeatures.h"
 
 namespace rt::cpu
 {
 using TracePathFn = vec3 (*)(const CpuScene&, const PathOptions&, Ray, Rng&, std::uint64_t&);
+using TracePathsFn = void (*)(const CpuScene&, const PathOptions&, std::span<PathJob>, vec3*, std::uint64_t&);
 
 struct PathVariant
 {
     TracePathFn trace = nullptr;
     PathCode code; // what `trace` was compiled for
-    /// "general", or e.g. "nee-mis, no media, solid colours only", for logs.
+    /// The same instance tracing kLanes paths at a time (Integrator/PathStream.h) where that is faster; else
+    /// nullptr.
+    TracePathsFn traceLanes = nullptr;
+    bool rayLanes = false; // traceLanes tests the paths' rays together (CpuScene::tracesRayLanes)
+    /// "general", or e.g. "nee-mis, no media, solid colours only, 8 rays at a time", for logs.
     std::string describe() const;
 };
 
-/// The instance for `features` and `estimator`: the general one when `specialize` is false.
-PathVariant choosePathVariant(const SceneFeatures& features, Estimator estimator, bool specialize);
+/// The instance for `features` and `estimator`: the general one, one path at a time, when `specialize` is
+/// false. `rayLanes`: the scene's rays can be tested kLanes at a time (CpuScene::tracesRayLanes).
+PathVariant choosePathVariant(const SceneFeatures& features, Estimator estimator, bool specialize,
+                              bool rayLanes = false);
 } // namespace rt::cpu

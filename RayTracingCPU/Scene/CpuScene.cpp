@@ -165,21 +165,28 @@ void CpuScene::buildLeafPackets(const std::vector<PrimRef>& refs)
             const PrimRef ref = refs[m_bvh.order[slot]];
             byType[static_cast<int>(ref.type())].push_back(ref.bits);
         }
-        const auto emit = [&](PrimType type, auto& packets, const auto& records) {
+        const bool root = &node == &m_bvh.nodes.front();
+        const auto emit = [&](PrimType type, auto& packets, const auto& records, std::vector<LaneOf>& rootLanes) {
             const std::vector<std::uint32_t>& prims = byType[static_cast<int>(type)];
             for (std::size_t i = 0; i < prims.size(); i += kLanes)
             {
                 auto& packet = packets.emplace_back();
+                const auto index = static_cast<std::uint32_t>(packets.size() - 1);
                 const int used = static_cast<int>(std::min<std::size_t>(kLanes, prims.size() - i));
                 for (int lane = 0; lane < used; ++lane)
+                {
                     setLane(packet, lane, records[PrimRef{prims[i + lane]}.index()], prims[i + lane]);
+                    if (root)
+                        rootLanes.push_back({index, lane});
+                }
                 padPacket(packet, used);
-                m_leafPackets.push_back(PrimRef::make(type, static_cast<std::uint32_t>(packets.size() - 1)));
+                m_leafPackets.push_back(PrimRef::make(type, index));
             }
         };
-        emit(PrimType::Quad, m_quadPackets, m_quads);
-        emit(PrimType::Sphere, m_spherePackets, m_spheres);
-        emit(PrimType::Triangle, m_trianglePackets, m_triangles);
+        std::vector<LaneOf> noLanes;
+        emit(PrimType::Quad, m_quadPackets, m_quads, m_leafQuads);
+        emit(PrimType::Sphere, m_spherePackets, m_spheres, m_leafSpheres);
+        emit(PrimType::Triangle, m_trianglePackets, m_triangles, noLanes);
         for (std::uint32_t bits : byType[static_cast<int>(PrimType::Medium)])
             m_leafPackets.push_back(PrimRef{bits});
         node.offset = firstPacket;

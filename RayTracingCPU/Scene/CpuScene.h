@@ -8,6 +8,7 @@
 #include "Accel/Bvh4.h"
 #include "Geometry/Intersect.h"
 #include "Geometry/Packets.h"
+#include "Geometry/RayPackets.h"
 #include "Geometry/Primitives.h"
 #include "Sampling/LightBvh.h"
 #include "Scene/Scene.h"
@@ -61,6 +62,20 @@ public:
         return hit.prim != kNoIndex;
     }
 
+    /// Whether intersect(RayLanes) serves the scene: it is one BVH leaf of quads and spheres (no triangles, whose
+    /// packet test hands some rays to a scalar test, and no media, which draw random numbers).
+    bool tracesRayLanes() const { return m_bvh4.rootIsLeaf && m_triangles.empty() && m_media.empty(); }
+
+    /// The closest hit of each lane's ray in (tMin, hits.t), as intersect() finds it for that ray alone, bit for
+    /// bit. Precondition: tracesRayLanes().
+    void intersect(const RayLanes& r, float tMin, RayHits& hits) const
+    {
+        for (const LaneOf& q : m_leafQuads)
+            intersectRays(m_quadPackets[q.packet], q.lane, r, tMin, hits);
+        for (const LaneOf& s : m_leafSpheres)
+            intersectRays(m_spherePackets[s.packet], s.lane, r, tMin, hits);
+    }
+
     /// True when something lies along r in (tMin, tMax): a shadow ray. Stops at the first hit found. A medium
     /// the ray crosses occludes it with the probability that a particle stops it (1 - transmittance), so the
     /// visibility it returns is an unbiased estimate of the transmittance (RTTNW §9's distance sampling).
@@ -83,6 +98,10 @@ public:
     /// Position, normal, uv and material of a hit found by intersect(). Inline, so that the path loops compile
     /// it into themselves: out of line it returned its record through memory.
     SurfaceInteraction interaction(const TraceRay& r, const HitRecord& hit) const
+    {
+        return interaction(Ray{r.origin, r.direction, r.time}, hit);
+    }
+    SurfaceInteraction interaction(const Ray& r, const HitRecord& hit) const
     {
         SurfaceInteraction si{};
         const PrimRef ref{hit.prim};
@@ -186,6 +205,14 @@ private:
     // What traversal reads: per leaf, a run of packet references (type + index into the packet arrays; for
     // media the index of the medium itself).
     std::vector<PrimRef> m_leafPackets;
+    // The primitives of a scene that is one leaf, in the order its packets test them: quads, then spheres.
+    struct LaneOf
+    {
+        std::uint32_t packet;
+        int lane;
+    };
+    std::vector<LaneOf> m_leafQuads;
+    std::vector<LaneOf> m_leafSpheres;
     std::vector<SpherePacket> m_spherePackets;
     std::vector<QuadPacket> m_quadPackets;
     std::vector<TrianglePacket> m_trianglePackets;

@@ -4,6 +4,8 @@
 // (media, a texture) would differ here.
 #include <gtest/gtest.h>
 
+#include <spdlog/fmt/fmt.h>
+
 #include "Integrator/PathVariants.h"
 #include "RenderTestSupport.h"
 #include "Render/RenderDriver.h"
@@ -68,7 +70,19 @@ TEST(CpuPathVariants, TheChoiceFollowsTheScenesFeaturesAndTheEstimator)
     engine.setScene(earthScene);
     RenderControl control;
     const RenderResult r = renderWithSettings(engine, smallSettings(8, 1, 4, Estimator::Mixture), control);
-    EXPECT_EQ(r.stats.frameConfiguration, "path loop: mixture, no media, textures (scene: spheres lambertian image-textures)");
+    EXPECT_EQ(r.stats.frameConfiguration,
+              fmt::format("path loop: mixture, no media, textures, {} rays at a time (scene: spheres lambertian "
+                          "image-textures)",
+                          cpu::kLanes));
+
+    // kLanes paths at a time where that was measured faster: with ray lanes in a scene of one leaf, interleaved
+    // for the estimators without shadow rays elsewhere; NEE in a BVH one path at a time, as is the general loop.
+    const SceneFeatures lights = featuresOf(makeScene("cornell-box-lights"));
+    EXPECT_NE(cpu::choosePathVariant(lights, Estimator::Mixture, true, false).traceLanes, nullptr);
+    EXPECT_EQ(cpu::choosePathVariant(lights, Estimator::NeeMis, true, false).traceLanes, nullptr);
+    EXPECT_NE(cpu::choosePathVariant(lights, Estimator::NeeMis, true, true).traceLanes, nullptr);
+    EXPECT_EQ(cpu::choosePathVariant(lights, Estimator::Mixture, false, true).traceLanes, nullptr);
+    EXPECT_EQ(cpu::choosePathVariant(smoke, Estimator::Mixture, true, true).traceLanes, nullptr); // media
 
     const cpu::PathVariant general = cpu::choosePathVariant(smoke, Estimator::Nee, false);
     EXPECT_TRUE(general.code.general);

@@ -1,0 +1,181 @@
+// Paths traced kLanes at a time (Integrator/PathStream.h, Geometry/RayPackets.h) against one at a time: the
+// rays of a lane must find the hits each finds alone, and a job's path the radiance tracePath gives it, bit for
+// bit, whatever the number of jobs and the depth. A lane that mixed up two paths' random streams, a hit
+// recorded from the wrong lane or primitive order, or a path ended early would differ here.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <vector>
+
+#include "Integrator/PathStream.h"
+#include "Integrator/PathVariants.h"
+#include "Random/Pcg.h"
+#include "Sampling/Warps.h"
+#include "Scene/CpuScene.h"
+#include "Scene/SceneBuilder.h"
+#include "Scene/SceneFeatures.h"
+#include "Scenes/Catalogue.h"
+
+namespace rt::test
+{
+namespace
+{
+using namespace rt::cpu;
+
+bool sameBits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool sameBits(const vec3& a, const vec3& b) { return sameBits(a.x, b.x) && sameBits(a.y, b.y) && sameBits(a.z, b.z); }
+
+/// One leaf with every case of the lane tests: a moving sphere (time lanes), a radius-1e5 ground whose
+/// quadratic cancels near its surface (the exact c), a tilted quad and two spheres of equal radius.
+Scene oneLeafOfEveryCase()
+{
+    SceneBuilder b("lanes");
+    const std::uint32_t w = b.world();
+    const std::uint32_t m = b.lambertian(vec3(0.5f));
+    b.sphere(w, vec3(0.0f, -1e5f, 0.0f), 1e5f, m);
+    b.movingSphere(w, vec3(-1.0f, 1.0f, 0.0f), vec3(-1.0f, 1.5f, 0.0f), 0.5f, m);
+    b.sphere(w, vec3(1.0f, 1.0f, 0.0f), 0.5f, m);
+    b.sphere(w, vec3(1.0f, 1.0f, 2.0f), 0.5f, m);
+    b.quad(w, vec3(-2.0f, 0.0f, -2.0f), vec3(4.0f, 0.0f, 0.0f), vec3(0.0f, 3.0f, -1.0f), m);
+    b.quad(w, vec3(-2.0f, 0.5f, 3.0f), vec3(4.0f, 0.0f, 0.0f), vec3(0.0f, 0.0f, -0.5f), b.diffuseLight(vec3(4.0f)));
+    return b.finish();
+}
+
+/// `count` rays from points spread over `lo`..`hi` in every direction, some leaving surfaces (origin on the
+/// ground's top), at times in [0, 1).
+std::vector<Ray> spreadRays(const vec3& lo, const vec3& hi, int count)
+{
+    Rng rng(5);
+    std::vector<Ray> rays;
+    for (int i = 0; i < count; ++i)
+    {
+        vec3 o = lo + (hi - lo) * vec3(rng.nextFloat(), rng.nextFloat(), rng.nextFloat());
+        if (i % 4 == 0)
+            o.y = 1e-3f * rng.nextFloat(); // just above the huge sphere, where its c cancels
+        rays.push_back(Ray{o, sampleUniformSphere(rng.next2D()) * (0.5f + rng.nextFloat()), rng.nextFloat()});
+    }
+    return rays;
+}
+
+void expectLanesFindTheScalarHits(const CpuScene& cs, const std::vector<Ray>& rays, const char* name)
+{
+    ASSERT_TRUE(cs.tracesRayLanes()) << name;
+    int hits = 0;
+    for (std::size_t first = 0; first + kLanes <= rays.size(); first += kLanes)
+    {
+        RayLanes lanes;
+        for (int l = 0; l < kLanes; ++l)
+            lanes.set(l, TraceRay(rays[first + l], cs.rayNeeds()));
+        RayHits nearest(kInfinity);
+        cs.intersect(lanes, 0.0f, nearest);
+        HitRecord fromLanes[kLanes];
+        nearest.store(fromLanes);
+        for (int l = 0; l < kLanes; ++l)
+        {
+            Rng rng(1);
+            HitRecord alone{};
+            const bool found = cs.intersect(TraceRay(rays[first + l], cs.rayNeeds()), 0.0f, kInfinity, alone, rng);
+            const HitRecord& h = fromLanes[l];
+            ASSERT_EQ(h.prim, found ? alone.prim : kNoIndex) << name << ", ray " << first + l;
+            if (!found)
+                continue;
+            ++hits;
+            ASSERT_TRUE(sameBits(h.t, alone.t) && sameBits(h.b1, alone.b1) && sameBits(h.b2, alone.b2))
+                << name << ", ray " << first + l << ": t " << h.t << " against " << alone.t;
+        }
+    }
+    EXPECT_GT(hits, int(rays.size()) / 4) << name; // the rays do meet the scene
+}
+
+TEST(RayLanes, EveryLaneFindsTheHitItsRayFindsAlone)
+{
+    const Scene lanes = oneLeafOfEveryCase();
+    expectLanesFindTheScalarHits(CpuScene(lanes), spreadRays(vec3(-3.0f, 0.0f, -3.0f), vec3(3.0f, 3.0f, 3.0f), 8000),
+                                 "every case");
+    const Scene glass = makeScene("rtrol-cornell-glass");
+    expectLanesFindTheScalarHits(CpuScene(glass), spreadRays(vec3(1.0f), vec3(554.0f), 8000), "rtrol-cornell-glass");
+    const Scene closeup = makeScene("rect-light-closeup");
+    expectLanesFindTheScalarHits(CpuScene(closeup), spreadRays(vec3(-5.0f), vec3(5.0f), 8000), "rect-light-closeup");
+}
+
+TEST(RayLanes, OnlyScenesOfOneLeafWithoutTrianglesOrMediaTestRaysInLanes)
+{
+    EXPECT_TRUE(CpuScene(makeScene("rtrol-cornell-glass")).tracesRayLanes());
+    const Scene boxLights = makeScene("cornell-box-lights"); // a BVH
+    EXPECT_FALSE(CpuScene(boxLights).tracesRayLanes());
+    const Scene triangles = makeScene("cube-and-spheres"); // one leaf, with triangles
+    EXPECT_FALSE(CpuScene(triangles).tracesRayLanes());
+    const Scene smoke = makeScene("rtnw-cornell-smoke"); // one leaf, with a medium
+    EXPECT_FALSE(CpuScene(smoke).tracesRayLanes());
+}
+
+/// Jobs of camera-like rays: from `eye` towards points of the box lo..hi.
+std::vector<PathJob> jobsToward(const vec3& eye, const vec3& lo, const vec3& hi, int count)
+{
+    Rng pick(9);
+    std::vector<PathJob> jobs;
+    for (int i = 0; i < count; ++i)
+    {
+        const vec3 target = lo + (hi - lo) * vec3(pick.nextFloat(), pick.nextFloat(), pick.nextFloat());
+        jobs.push_back({Ray{eye, target - eye, pick.nextFloat()}, Rng::forSample(3, std::uint32_t(i), 7)});
+    }
+    return jobs;
+}
+
+void expectTracePathsIsTracePath(const Scene& scene, Estimator estimator, std::vector<PathJob> jobs, int depth,
+                                 const char* name)
+{
+    const CpuScene cs(scene);
+    const PathVariant variant = choosePathVariant(featuresOf(scene), estimator, true, cs.tracesRayLanes());
+    ASSERT_NE(variant.traceLanes, nullptr) << name;
+    PathOptions options;
+    options.depth = depth;
+    options.estimator = estimator;
+    std::vector<vec3> radiance(jobs.size(), vec3(-1.0f));
+    std::uint64_t laneSegments = 0;
+    std::vector<PathJob> copy = jobs;
+    variant.traceLanes(cs, options, copy, radiance.data(), laneSegments);
+    std::uint64_t segments = 0;
+    bool light = false;
+    for (std::size_t i = 0; i < jobs.size(); ++i)
+    {
+        const vec3 alone = variant.trace(cs, options, jobs[i].ray, jobs[i].rng, segments);
+        ASSERT_TRUE(sameBits(radiance[i], alone))
+            << name << ", depth " << depth << ", " << jobs.size() << " jobs: job " << i << " (" << radiance[i].x
+            << " against " << alone.x << ")";
+        light |= maxComponent(alone) > 0.0f;
+    }
+    EXPECT_EQ(laneSegments, segments) << name;
+    if (depth > 1 && jobs.size() > 50)
+    {
+        EXPECT_TRUE(light) << name << ": no path found light, the comparison proves little";
+    }
+}
+
+TEST(PathStream, EveryJobGetsTheRadianceOfItsPathTracedAlone)
+{
+    const Scene glass = makeScene("rtrol-cornell-glass"); // ray lanes, the mixture
+    const Scene closeup = makeScene("rect-light-closeup"); // ray lanes, NEE + MIS with shadow rays
+    const Scene spheres = makeScene("rtow-final"); // a BVH: paths interleaved
+    const Scene lanes = oneLeafOfEveryCase();
+    for (const int count : {1, kLanes - 1, kLanes + 1, 300})
+        for (const int depth : {0, 1, 50})
+        {
+            expectTracePathsIsTracePath(glass, Estimator::Mixture,
+                                        jobsToward(vec3(278.0f, 278.0f, -800.0f), vec3(0.0f), vec3(555.0f), count),
+                                        depth, "rtrol-cornell-glass");
+            expectTracePathsIsTracePath(closeup, Estimator::NeeMis,
+                                        jobsToward(closeup.camera.lookFrom, vec3(-2.0f), vec3(2.0f), count), depth,
+                                        "rect-light-closeup");
+            expectTracePathsIsTracePath(spheres, Estimator::BsdfOnly,
+                                        jobsToward(spheres.camera.lookFrom, vec3(-10.0f, 0.0f, -10.0f),
+                                                   vec3(10.0f, 2.0f, 10.0f), count),
+                                        depth, "rtow-final");
+            expectTracePathsIsTracePath(lanes, Estimator::Mixture,
+                                        jobsToward(vec3(0.0f, 1.5f, 6.0f), vec3(-2.0f, 0.0f, -2.0f),
+                                                   vec3(2.0f, 2.0f, 2.0f), count),
+                                        depth, "every case");
+        }
+}
+} // namespace
+} // namespace rt::test
