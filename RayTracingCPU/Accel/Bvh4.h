@@ -5,6 +5,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "Accel/Bvh.h"
@@ -60,7 +61,7 @@ inline void traverse(const Bvh4& bvh, const TraceRay& r, const float& tMax, Leaf
         std::uint32_t ref; // interior node index or leafRef
         float tNear; // where the ray enters the child's box: skipped on pop if a hit is already nearer
     };
-    Entry stack[512]; // 4-wide depth < 96 (see the binary builder) and at most 4 pushes per level
+    Entry stack[512]; // 4-wide depth < 96 (see the binary builder), at most 3 entries left per level, 4 written
     int top = 0;
     std::uint32_t index = 0;
     const Bvh4Node* nodes = bvh.nodes.data();
@@ -134,8 +135,10 @@ inline void traverse(const Bvh4& bvh, const TraceRay& r, const float& tMax, Leaf
                         hits[k] = hits[k - 1];
                     hits[k] = e;
                 } while (mask);
-                for (int k = 0; k < n; ++k)
-                    stack[top++] = hits[k];
+                // All four entries in one store, then the n that count: a copy of n entries compiled to
+                // `rep movsq`, whose start-up cost took 2-7 % of a render (perf, rtnw-final).
+                std::memcpy(stack + top, hits, sizeof hits);
+                top += n;
             }
         }
         // Pop: leaves are tested as they come off the stack, children behind the nearest hit are dropped.

@@ -1,9 +1,8 @@
-// Camera paths traced kLanes at a time: each step finds the lanes' next hits, then continues each path on its
-// own with tracePath's loop body (continuePath), and a lane whose path ends takes the next job. In a scene that
-// is one BVH leaf of quads and spheres (CpuScene::tracesRayLanes) the step tests the lanes' rays together
-// (Geometry/RayPackets.h: the rays in the lanes, each primitive once); elsewhere each lane's ray traverses the
-// BVH on its own, and the gain is the paths' shading interleaved. Shadow rays stay scalar. Every path draws
-// its own random stream in its own order, so each job's radiance is tracePath's, bit for bit.
+// Camera paths traced kLanes at a time in a scene that is one BVH leaf of quads and spheres
+// (CpuScene::tracesRayLanes): each step tests the lanes' rays together (Geometry/RayPackets.h: the rays in the
+// lanes, each primitive once), then continues each path on its own with tracePath's loop body (continuePath),
+// and a lane whose path ends takes the next job. Shadow rays stay scalar. Every path draws its own random
+// stream in its own order, so each job's radiance is tracePath's, bit for bit.
 #pragma once
 
 #include <cstdint>
@@ -21,8 +20,8 @@ struct PathJob
 };
 
 /// Traces every job's path and writes job i's radiance (linear RGB) to radiance[i]. `segments` is incremented
-/// per ray traced, shadow rays included. Precondition: the scene has no media; C matches the scene and options
-/// as tracePath's must.
+/// per ray traced, shadow rays included. Precondition: cs.tracesRayLanes(); C matches the scene and options as
+/// tracePath's must.
 template <PathCode C = PathCode{}>
 RT_FLATTEN inline void tracePaths(const CpuScene& cs, const PathOptions& options, std::span<PathJob> jobs,
                                   vec3* radiance, std::uint64_t& segments)
@@ -31,7 +30,6 @@ RT_FLATTEN inline void tracePaths(const CpuScene& cs, const PathOptions& options
     int jobOf[kLanes]; // -1: the lane has no path
     RayLanes rays;
     const TraceRay::Needs needs = cs.rayNeeds();
-    const bool rayLanes = cs.tracesRayLanes();
     std::size_t next = 0;
     int active = 0;
     const auto start = [&](int lane) {
@@ -56,19 +54,9 @@ RT_FLATTEN inline void tracePaths(const CpuScene& cs, const PathOptions& options
     HitRecord hits[kLanes];
     while (active > 0)
     {
-        if (rayLanes)
-        {
-            RayHits nearest(kInfinity);
-            cs.intersect(rays, 0.0f, nearest);
-            nearest.store(hits);
-        }
-        else
-            for (int lane = 0; lane < kLanes; ++lane)
-                if (jobOf[lane] >= 0)
-                {
-                    hits[lane] = HitRecord{};
-                    cs.intersect(TraceRay(paths[lane].ray, needs), 0.0f, kInfinity, hits[lane], jobs[jobOf[lane]].rng);
-                }
+        RayHits nearest(kInfinity);
+        cs.intersect(rays, 0.0f, nearest);
+        nearest.store(hits);
         for (int lane = 0; lane < kLanes; ++lane)
         {
             const int job = jobOf[lane];

@@ -10,17 +10,14 @@ template <Estimator E, bool Media, bool Textures>
 PathVariant instance(bool rayLanes)
 {
     constexpr PathCode code{.general = false, .estimator = E, .media = Media, .textures = Textures};
-    // kLanes paths at a time: with ray lanes wherever the scene allows them (book 3's scene 1.15x), and else
-    // for the estimators without shadow rays (the sphere scenes of books 1-2 1.01-1.04x, where one path at a
-    // time lost 4-7 % to this loop's split into continuePath). NEE's renders of scenes with a BVH were 1-3 %
-    // slower interleaved and run one path at a time (docs/PERFORMANCE.md §1).
-    constexpr bool kNeeEstimator = E == Estimator::Nee || E == Estimator::NeeMis;
-    if constexpr (Media)
-        return {&tracePath<code>, code}; // a medium's intersection draws random numbers: one path at a time
-    else if (rayLanes || !kNeeEstimator)
-        return {&tracePath<code>, code, &tracePaths<code>, rayLanes};
-    else
-        return {&tracePath<code>, code};
+    // kLanes paths at a time where their rays are tested together (book 3's scene 1.15x). Paths merely
+    // interleaved over a BVH, each ray traversing it alone, were 0.92x (rtrol-cornell-mirror) to 1.04x
+    // (rtow-final) one path at a time: not kept (docs/PERFORMANCE.md §1). A medium's intersection draws random
+    // numbers, so media scenes never test rays in lanes.
+    if constexpr (!Media)
+        if (rayLanes)
+            return {&tracePath<code>, code, &tracePaths<code>};
+    return {&tracePath<code>, code};
 }
 
 template <Estimator E>
@@ -38,9 +35,7 @@ std::string PathVariant::describe() const
         return "general";
     return fmt::format("{}, {}, {}{}", toString(code.estimator), code.media ? "media" : "no media",
                        code.textures ? "textures" : "solid colours only",
-                       !traceLanes ? std::string()
-                       : rayLanes  ? fmt::format(", {} rays at a time", kLanes)
-                                   : fmt::format(", {} paths interleaved", kLanes));
+                       traceLanes ? fmt::format(", {} rays at a time", kLanes) : std::string());
 }
 
 PathVariant choosePathVariant(const SceneFeatures& features, Estimator estimator, bool specialize, bool rayLanes)

@@ -1,9 +1,9 @@
 // Which compiled instance of the path loop a render runs (issue 11: "chosen once per render, not tested per
 // ray"). The scene's features (Scene/SceneFeatures.h) and the render's estimator pick one of the 16
 // specialised instances of tracePath: one per estimator, with or without media, with or without non-solid
-// textures; most run kLanes paths at a time (Integrator/PathStream.h), whose rays a scene that is one leaf of
-// quads and spheres tests together. --specialize off keeps the general instance, one path at a time, the baseline of
-// tests/Bench/cpu_specialization.sh.
+// textures. In a scene that is one BVH leaf of quads and spheres they run kLanes paths at a time, their rays
+// tested together (Integrator/PathStream.h). --specialize off keeps the general instance, one path at a time,
+// the baseline of tests/Bench/cpu_specialization.sh.
 #pragma once
 
 #include <string>
@@ -21,10 +21,9 @@ struct PathVariant
 {
     TracePathFn trace = nullptr;
     PathCode code; // what `trace` was compiled for
-    /// The same instance tracing kLanes paths at a time (Integrator/PathStream.h) where that is faster; else
-    /// nullptr.
+    /// The same instance tracing kLanes paths at a time, their rays tested together (Integrator/PathStream.h),
+    /// where the scene allows it; else nullptr.
     TracePathsFn traceLanes = nullptr;
-    bool rayLanes = false; // traceLanes tests the paths' rays together (CpuScene::tracesRayLanes)
     /// "general", or e.g. "nee-mis, no media, solid colours only, 8 rays at a time", for logs.
     std::string describe() const;
 };

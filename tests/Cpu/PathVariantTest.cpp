@@ -75,14 +75,18 @@ TEST(CpuPathVariants, TheChoiceFollowsTheScenesFeaturesAndTheEstimator)
                           "image-textures)",
                           cpu::kLanes));
 
-    // kLanes paths at a time where that was measured faster: with ray lanes in a scene of one leaf, interleaved
-    // for the estimators without shadow rays elsewhere; NEE in a BVH one path at a time, as is the general loop.
+    // kLanes paths at a time only where the scene's rays can be tested in lanes, for every estimator; never
+    // in the general loop nor with media.
     const SceneFeatures lights = featuresOf(makeScene("cornell-box-lights"));
-    EXPECT_NE(cpu::choosePathVariant(lights, Estimator::Mixture, true, false).traceLanes, nullptr);
-    EXPECT_EQ(cpu::choosePathVariant(lights, Estimator::NeeMis, true, false).traceLanes, nullptr);
-    EXPECT_NE(cpu::choosePathVariant(lights, Estimator::NeeMis, true, true).traceLanes, nullptr);
-    EXPECT_EQ(cpu::choosePathVariant(lights, Estimator::Mixture, false, true).traceLanes, nullptr);
-    EXPECT_EQ(cpu::choosePathVariant(smoke, Estimator::Mixture, true, true).traceLanes, nullptr); // media
+    for (const Estimator e : {Estimator::BsdfOnly, Estimator::Mixture, Estimator::Nee, Estimator::NeeMis})
+    {
+        EXPECT_NE(cpu::choosePathVariant(lights, e, true, true).traceLanes, nullptr);
+        EXPECT_EQ(cpu::choosePathVariant(lights, e, true, false).traceLanes, nullptr);
+        EXPECT_EQ(cpu::choosePathVariant(lights, e, false, true).traceLanes, nullptr);
+        EXPECT_EQ(cpu::choosePathVariant(smoke, e, true, true).traceLanes, nullptr); // media
+    }
+    EXPECT_EQ(cpu::choosePathVariant(lights, Estimator::Mixture, true, false).describe(),
+              "mixture, no media, solid colours only");
 
     const cpu::PathVariant general = cpu::choosePathVariant(smoke, Estimator::Nee, false);
     EXPECT_TRUE(general.code.general);
