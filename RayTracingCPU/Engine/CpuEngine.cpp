@@ -104,7 +104,7 @@ void CpuEngine::beginFrame(const RenderSettings& settings)
                                     settings.russianRoulette, settings.unidirectionalLight},
                           .variant = choosePathVariant(m_features, settings.estimator, m_specialize, m_scene->tracesRayLanes()),
                           .sum = std::vector<dvec3>(std::size_t(width) * height, dvec3(0.0)),
-                          .before = std::vector<dvec3>(std::size_t(width) * height, dvec3(0.0)),
+                          .before = std::make_unique_for_overwrite<dvec3[]>(std::size_t(width) * height),
                           .width = width,
                           .height = height,
                           .rows = std::vector<RowTally>(height),
@@ -158,7 +158,7 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
         }
         f.rowStates[y] = RowState::Traced;
         const std::size_t rowStart = std::size_t(y) * std::size_t(width);
-        std::copy_n(sums.data() + rowStart, width, f.before.data() + rowStart);
+        std::copy_n(sums.data() + rowStart, width, f.before.get() + rowStart);
         f.rowsBefore[y] = tallies[y];
         RowTally& t = tallies[y];
         t.thread = std::hash<std::thread::id>{}(std::this_thread::get_id());
@@ -220,7 +220,7 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
         if (f.rowStates[y] != RowState::Skipped) // traced, or abandoned part way: back to the batch's start
         {
             const std::size_t rowStart = std::size_t(y) * std::size_t(width);
-            std::copy_n(f.before.data() + rowStart, width, sums.data() + rowStart);
+            std::copy_n(f.before.get() + rowStart, width, sums.data() + rowStart);
             tallies[y] = f.rowsBefore[y];
         }
     return {.complete = false};
