@@ -18,6 +18,16 @@ namespace rt
 {
 namespace
 {
+// stb's PNG encoder at its lowest effort (a shorter match search; stb clamps levels below 5 to 5) and one row
+// filter (Sub) instead of trying all five per row: a 600x600 16-spp render encodes in 56 ms instead of 84,
+// 1 % smaller, a textured one 1 % larger (one core of the CI kind). The encoding runs on one thread after the
+// render, so on two cores it was a tenth of book 3's render.
+[[maybe_unused]] const bool kPngSettings = [] {
+    stbi_write_png_compression_level = 5;
+    stbi_write_force_png_filter = 1;
+    return true;
+}();
+
 float srgbEncode(float linear)
 {
     return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
