@@ -18,7 +18,7 @@ if "%VCPKG_ROOT%"=="" (
     exit /b 1
 )
 
-"%VCPKG_ROOT%\vcpkg.exe" install --triplet x64-windows glm spdlog stb tinyobjloader tinygltf tbb cli11 nlohmann-json ^
+"%VCPKG_ROOT%\vcpkg.exe" install --triplet x64-windows glm spdlog stb tinyobjloader tinygltf tbb cli11 nlohmann-json zlib ^
     gtest benchmark vulkan || exit /b 1
 
 rem The windows compile Dear ImGui's backends from Debian's libimgui-dev sources (CMakeLists.txt), which vcpkg

@@ -21,7 +21,7 @@ JOBS=${JOBS:-$(nproc)}
 # ray tracing) must be 25.x, from bookworm-backports: bookworm's own 22.x has no ray tracing.
 packages=(
     cmake g++ make pkg-config file python3 python3-matplotlib
-    libglm-dev libspdlog-dev libstb-dev libtinyobjloader-dev libtbb-dev libcli11-dev nlohmann-json3-dev
+    libglm-dev libspdlog-dev libstb-dev libtinyobjloader-dev libtbb-dev libcli11-dev nlohmann-json3-dev zlib1g-dev
     libgtest-dev libbenchmark-dev
     libvulkan-dev vulkan-tools vulkan-validationlayers glslc
     libglfw3-dev libimgui-dev xvfb xauth x11-utils imagemagick fonts-dejavu-core hyperfine
