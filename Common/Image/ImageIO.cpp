@@ -41,7 +41,6 @@ unsigned char* deflateForPng(unsigned char* data, int length, int* outLength, in
 #if defined(__GNUC__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function" // the writers of other formats
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
 #endif
 #include <stb_image_write.h>
 #if defined(__GNUC__)

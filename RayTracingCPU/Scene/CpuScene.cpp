@@ -166,7 +166,8 @@ void CpuScene::buildLeafPackets(const std::vector<PrimRef>& refs)
             byType[static_cast<int>(ref.type())].push_back(ref.bits);
         }
         const bool root = &node == &m_bvh.nodes.front();
-        const auto emit = [&](PrimType type, auto& packets, const auto& records, std::vector<LaneOf>& rootLanes) {
+        // rootLanes: where a scene of one leaf lists its primitives for the ray-lane test (none for triangles).
+        const auto emit = [&](PrimType type, auto& packets, const auto& records, std::vector<LaneOf>* rootLanes) {
             const std::vector<std::uint32_t>& prims = byType[static_cast<int>(type)];
             for (std::size_t i = 0; i < prims.size(); i += kLanes)
             {
@@ -176,17 +177,16 @@ void CpuScene::buildLeafPackets(const std::vector<PrimRef>& refs)
                 for (int lane = 0; lane < used; ++lane)
                 {
                     setLane(packet, lane, records[PrimRef{prims[i + lane]}.index()], prims[i + lane]);
-                    if (root)
-                        rootLanes.push_back({index, lane});
+                    if (root && rootLanes)
+                        rootLanes->push_back({index, lane});
                 }
                 padPacket(packet, used);
                 m_leafPackets.push_back(PrimRef::make(type, index));
             }
         };
-        std::vector<LaneOf> noLanes;
-        emit(PrimType::Quad, m_quadPackets, m_quads, m_leafQuads);
-        emit(PrimType::Sphere, m_spherePackets, m_spheres, m_leafSpheres);
-        emit(PrimType::Triangle, m_trianglePackets, m_triangles, noLanes);
+        emit(PrimType::Quad, m_quadPackets, m_quads, &m_leafQuads);
+        emit(PrimType::Sphere, m_spherePackets, m_spheres, &m_leafSpheres);
+        emit(PrimType::Triangle, m_trianglePackets, m_triangles, nullptr);
         for (std::uint32_t bits : byType[static_cast<int>(PrimType::Medium)])
             m_leafPackets.push_back(PrimRef{bits});
         node.offset = firstPacket;

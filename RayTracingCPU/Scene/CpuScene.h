@@ -70,10 +70,11 @@ public:
     /// bit. Precondition: tracesRayLanes().
     void intersect(const RayLanes& r, float tMin, RayHits& hits) const
     {
+        const RayLaneView rays = r.view();
         for (const LaneOf& q : m_leafQuads)
-            intersectRays(m_quadPackets[q.packet], q.lane, r, tMin, hits);
+            intersectRays(m_quadPackets[q.packet], q.lane, rays, tMin, hits);
         for (const LaneOf& s : m_leafSpheres)
-            intersectRays(m_spherePackets[s.packet], s.lane, r, tMin, hits);
+            intersectRays(m_spherePackets[s.packet], s.lane, rays, tMin, hits);
     }
 
     /// True when something lies along r in (tMin, tMax): a shadow ray. Stops at the first hit found. A medium
