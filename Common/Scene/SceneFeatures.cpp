@@ -103,8 +103,11 @@ std::string SceneFeatures::describe() const
 {
     std::string s;
     const auto add = [&s](bool on, const char* word) {
-        if (on)
-            s += (s.empty() ? "" : " ") + std::string(word);
+        if (!on)
+            return;
+        if (!s.empty())
+            s += ' ';
+        s += word;
     };
     add(spheres, "spheres");
     add(quads, "quads");

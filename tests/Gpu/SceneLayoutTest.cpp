@@ -236,7 +236,9 @@ TEST(SceneLayout, EveryCatalogueSceneIsConsistent)
             EXPECT_EQ(i.hitGroup, l.hitGroups.record(i.kind));
             const BlasDesc& b = l.blases[i.blas];
             if (b.sphereCount > 0 && b.mediumCount > 0) // media are geometry 1: the next record
+            {
                 EXPECT_EQ(i.hitGroup + 1, l.hitGroups.record(HitGroupKind::Media));
+            }
         }
         EXPECT_EQ(l.hitGroups.has(HitGroupKind::Spheres), !l.spheres.empty());
         EXPECT_EQ(l.hitGroups.has(HitGroupKind::Media), !l.media.empty());
