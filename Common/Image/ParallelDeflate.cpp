@@ -1,0 +1,110 @@
+#include "Image/ParallelDeflate.h"
+
+#include <algorithm>
+#include <exception>
+#include <thread>
+
+#include <zlib.h>
+
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
+namespace rt
+{
+int usableCores()
+{
+#if defined(__linux__)
+    cpu_set_t set;
+    if (sched_getaffinity(0, sizeof(set), &set) == 0)
+        return std::max(1, CPU_COUNT(&set));
+#endif
+    return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+void runInParallel(int parts, const std::function<void(int part)>& work)
+{
+    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(parts));
+    const auto guarded = [&](int part) {
+        try
+        {
+            work(part);
+        }
+        catch (...)
+        {
+            errors[static_cast<std::size_t>(part)] = std::current_exception();
+        }
+    };
+    {
+        std::vector<std::jthread> threads;
+        for (int part = 0; part + 1 < parts; ++part)
+            threads.emplace_back(guarded, part);
+        guarded(parts - 1);
+    }
+    for (const std::exception_ptr& e : errors)
+        if (e)
+            std::rethrow_exception(e);
+}
+
+namespace
+{
+/// One piece as raw deflate data: ended by a sync flush unless it is the last (then a final block).
+bool deflatePiece(const unsigned char* data, std::size_t length, int level, bool last, std::vector<unsigned char>& out)
+{
+    z_stream s{};
+    if (deflateInit2(&s, level, Z_DEFLATED, -MAX_WBITS, 8, Z_DEFAULT_STRATEGY) != Z_OK)
+        return false;
+    // deflateBound covers the data and a final block; a sync flush adds an empty stored block (5 bytes).
+    out.resize(deflateBound(&s, static_cast<uLong>(length)) + 16);
+    s.next_in = const_cast<unsigned char*>(data);
+    s.avail_in = static_cast<uInt>(length);
+    s.next_out = out.data();
+    s.avail_out = static_cast<uInt>(out.size());
+    const int result = deflate(&s, last ? Z_FINISH : Z_SYNC_FLUSH);
+    const bool done = last ? result == Z_STREAM_END : result == Z_OK && s.avail_in == 0 && s.avail_out > 0;
+    out.resize(s.total_out);
+    deflateEnd(&s);
+    return done;
+}
+} // namespace
+
+std::vector<unsigned char> deflateInParts(const unsigned char* data, std::size_t length, int level, int parts)
+{
+    // Pieces below 64 KiB gain less from a thread than they lose to their own dictionaries.
+    constexpr std::size_t kMinPiece = 64 * 1024;
+    parts = static_cast<int>(std::clamp<std::size_t>(length / kMinPiece, 1, static_cast<std::size_t>(std::max(parts, 1))));
+    const std::size_t step = length / static_cast<std::size_t>(parts);
+    std::vector<std::vector<unsigned char>> pieces(static_cast<std::size_t>(parts));
+    std::vector<char> ok(static_cast<std::size_t>(parts), 0);
+    std::vector<uLong> adlers(static_cast<std::size_t>(parts));
+    runInParallel(parts, [&](int part) {
+        const std::size_t begin = step * static_cast<std::size_t>(part);
+        const std::size_t end = part + 1 == parts ? length : begin + step;
+        const auto i = static_cast<std::size_t>(part);
+        ok[i] = deflatePiece(data + begin, end - begin, level, part + 1 == parts, pieces[i]);
+        adlers[i] = adler32(adler32(0L, Z_NULL, 0), data + begin, static_cast<uInt>(end - begin));
+    });
+    if (std::find(ok.begin(), ok.end(), 0) != ok.end())
+        return {};
+    // The zlib header: deflate with a 32 KiB window (CMF 0x78), and FLG's level field and check bits.
+    const int levelField = level <= 1 ? 0 : level <= 5 ? 1 : level == 6 || level == Z_DEFAULT_COMPRESSION ? 2 : 3;
+    const unsigned cmf = 0x78;
+    unsigned flg = static_cast<unsigned>(levelField) << 6;
+    flg += (31 - (cmf * 256 + flg) % 31) % 31;
+    std::vector<unsigned char> stream{static_cast<unsigned char>(cmf), static_cast<unsigned char>(flg)};
+    uLong adler = adlers[0];
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+    {
+        stream.insert(stream.end(), pieces[i].begin(), pieces[i].end());
+        if (i > 0)
+        {
+            const std::size_t begin = step * i;
+            const std::size_t end = i + 1 == pieces.size() ? length : begin + step;
+            adler = adler32_combine(adler, adlers[i], static_cast<z_off_t>(end - begin));
+        }
+    }
+    for (int shift = 24; shift >= 0; shift -= 8)
+        stream.push_back(static_cast<unsigned char>((adler >> shift) & 0xff));
+    return stream;
+}
+} // namespace rt

@@ -1,0 +1,25 @@
+// A zlib stream (RFC 1950) compressed in pieces on several threads, as pigz does: each piece is a raw deflate
+// stream of its own (RFC 1951), the pieces but the last end with a sync flush (byte-aligned, not final), and
+// the adler-32 of the whole closes the stream. Any inflater reads it as one stream. The PNG of a render is
+// written after the render, while every other core waits: compressed in pieces it keeps the cores busy
+// (docs/PERFORMANCE.md §1).
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+namespace rt
+{
+/// The number of cores this process may run on (its affinity mask on Linux, else the hardware's threads), at
+/// least 1.
+int usableCores();
+
+/// Runs work(part) for part in [0, parts) on parts threads (the calling thread takes the last) and returns when
+/// all have. Precondition: parts >= 1. An exception thrown by a part is rethrown here.
+void runInParallel(int parts, const std::function<void(int part)>& work);
+
+/// `data` (length bytes) as a zlib stream at compression level `level` (0-9), compressed in `parts` pieces of
+/// equal length on as many threads (parts >= 1; fewer when the data is shorter). Empty on a zlib failure.
+std::vector<unsigned char> deflateInParts(const unsigned char* data, std::size_t length, int level, int parts);
+} // namespace rt
