@@ -159,7 +159,8 @@ int main(int argc, char** argv)
         ->capture_default_str();
     app.add_option("--reference-spp", referenceSpp,
                    "With --compare: spp of the reference image (default: 4x the largest count), rendered by the "
-                   "last engine with seed + 1000");
+                   "last engine in two halves (seeds + 1000 and + 2000) whose difference gives the reference's own "
+                   "relMSE");
     std::string referencePath;
     app.add_option("--reference", referencePath,
                    "With --compare: a linear PFM of the same size (e.g. a long --hdr render) to measure against "

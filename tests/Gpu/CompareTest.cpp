@@ -100,10 +100,11 @@ TEST(ReferenceCache, FindsOnlyTheReferenceOfTheSameSceneSettingsAndEngine)
             image.at(x, y) = vec3(float(x), float(y), 0.25f);
 
     EXPECT_FALSE(cache.find(scene, request, EngineKind::Gpu));
-    ASSERT_FALSE(cache.store(scene, request, EngineKind::Gpu, image).empty());
+    ASSERT_FALSE(cache.store(scene, request, EngineKind::Gpu, {image, 3.5e-4}).empty());
     const auto found = cache.find(scene, request, EngineKind::Gpu);
     ASSERT_TRUE(found);
-    EXPECT_EQ(found->at(7, 3), image.at(7, 3));
+    EXPECT_EQ(found->mean.at(7, 3), image.at(7, 3));
+    EXPECT_EQ(found->ownRelMse, 3.5e-4) << "the reference's own error comes back with it";
 
     EXPECT_FALSE(cache.find(scene, request, EngineKind::Multi)) << "another engine";
     RenderRequest otherSeed = request;
@@ -142,12 +143,12 @@ TEST(ConvergenceCsv, WritesTheHeaderAndQuotesFieldsWithCommas)
     {
         ConvergenceCsv csv(path);
         csv.append({"cornell-box-lights", "gpu", "llvmpipe (LLVM 15.0.7, 256 bits)", "nee-mis projected bvh random rr-on",
-                    "nee-mis", 16, 12.5, 3.25, 1.5, 0.01, 0.02, 0.1});
+                    "nee-mis", 16, 12.5, 3.25, 1.5, 0.01, 0.02, 0.1, 0.00125});
     }
     const std::string text = readAll(path);
     EXPECT_EQ(text.substr(0, text.find('\n')), ConvergenceCsv::header());
     EXPECT_NE(text.find(",\"llvmpipe (LLVM 15.0.7, 256 bits)\",nee-mis projected bvh random rr-on,nee-mis,16,12.5000,"
-                        "3.2500,1.5000,0.01,0.02,0.1\n"),
+                        "3.2500,1.5000,0.01,0.02,0.1,0.00125\n"),
               std::string::npos)
         << text;
     EXPECT_THROW(ConvergenceCsv(dir / "missing" / "rows.csv"), OutputError);

@@ -54,10 +54,21 @@ private:
     std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
 };
 
+/// What every relMSE of a comparison is measured against.
+struct Reference
+{
+    Image image;
+    std::optional<double> ownRelMse; // the reference's own noise in every relMSE (none known for a file)
+    std::string description; // "4096 spp" or the file's path
+    int spp = 0; // both halves together; 0 for a file
+};
+
 /// The reference image: the file given, the cached render of the same scene and settings, or a new render by
-/// the last engine at referenceSpp with seed + 1000 (then cached). nullopt when Ctrl-C stopped it.
-std::optional<Image> obtainReference(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
-                                     EngineUnderTest& last)
+/// the last engine at referenceSpp in two halves of independent seeds (seed + 1000 and seed + 2000), whose
+/// mean is the reference and whose difference tells its own error (Image/Metrics.h), then cached. nullopt
+/// when Ctrl-C stopped it.
+std::optional<Reference> obtainReference(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
+                                         EngineUnderTest& last)
 {
     if (!options.referencePath.empty())
     {
@@ -67,28 +78,61 @@ std::optional<Image> obtainReference(const Scene& scene, const RenderRequest& ba
                                          reference.width(), reference.height(), base.settings.width,
                                          base.settings.height()));
         spdlog::info("reference: {}", options.referencePath);
-        return reference;
+        return Reference{std::move(reference), std::nullopt, options.referencePath, 0};
     }
+    const int halfSpp = std::max(1, (options.referenceSpp + 1) / 2);
+    const std::string description = fmt::format("{} spp", 2 * halfSpp);
     RenderRequest request = base;
     request.settings.spp = options.referenceSpp;
     request.settings.seed += 1000;
     const ReferenceCache cache(options.referenceCache);
-    if (std::optional<Image> cached = cache.find(scene, request, last.kind))
+    if (std::optional<TwoHalfReference> cached = cache.find(scene, request, last.kind))
     {
-        std::fprintf(stderr, "reference: %d spp on the %s engine, from the cache (%s)\n", options.referenceSpp,
+        std::fprintf(stderr, "reference: %s on the %s engine, from the cache (%s)\n", description.c_str(),
                      toString(last.kind), options.referenceCache.string().c_str());
-        return cached;
+        return Reference{std::move(cached->mean), cached->ownRelMse, description, 2 * halfSpp};
     }
-    std::fprintf(stderr, "reference: rendering %d spp on the %s engine...\n", options.referenceSpp,
-                 toString(last.kind));
-    Measurement m = measure(*last.engine, request, nullptr);
-    if (m.cancelled)
+    std::fprintf(stderr, "reference: rendering 2 x %d spp on the %s engine...\n", halfSpp, toString(last.kind));
+    RenderRequest half = request;
+    half.settings.spp = halfSpp;
+    Measurement a = measure(*last.engine, half, nullptr);
+    if (a.cancelled)
         return std::nullopt;
-    std::fprintf(stderr, "reference: %.1f s\n", m.wallMs * 1e-3);
-    const auto stored = cache.store(scene, request, last.kind, m.image);
+    half.settings.seed += 1000;
+    Measurement b = measure(*last.engine, half, nullptr);
+    if (b.cancelled)
+        return std::nullopt;
+    const TwoHalfReference combined = combineReferenceHalves(a.image, b.image);
+    std::fprintf(stderr, "reference: %.1f s; its own relMSE %.3g (from its halves)\n", (a.wallMs + b.wallMs) * 1e-3,
+                 combined.ownRelMse);
+    const auto stored = cache.store(scene, request, last.kind, combined);
     if (!stored.empty())
         std::fprintf(stderr, "reference: cached as %s\n", stored.string().c_str());
-    return std::move(m.image);
+    return Reference{combined.mean, combined.ownRelMse, description, 2 * halfSpp};
+}
+
+/// Rows whose relMSE is less than 3x the reference's own carry a third or more of the reference's noise: one
+/// warning naming how many and the smallest.
+void warnNearReferenceNoise(const Reference& reference, const std::vector<double>& relMses)
+{
+    if (!reference.ownRelMse)
+        return;
+    const double floor = *reference.ownRelMse;
+    const auto near = std::count_if(relMses.begin(), relMses.end(), [&](double e) { return e < 3.0 * floor; });
+    if (near == 0)
+        return;
+    spdlog::warn("{} of {} renders have a relMSE below 3x the reference's own ({:.3g}; the smallest {:.3g}): a "
+                 "third or more of their error is the reference's noise; raise --reference-spp",
+                 near, relMses.size(), floor, *std::min_element(relMses.begin(), relMses.end()));
+}
+
+/// "relMSE against 4096 spp (epsilon 0.01; the reference's own relMSE 3.4e-04 is part of every value)".
+std::string againstReference(const Reference& reference)
+{
+    std::string text = fmt::format("relMSE against {} (epsilon {:g}", reference.description, kRelMseEpsilon);
+    if (reference.ownRelMse)
+        text += fmt::format("; the reference's own relMSE {:.2e} is part of every value", *reference.ownRelMse);
+    return text + ")";
 }
 
 /// The order in which the engines run their renders: the GPU's first. After the CPU's rows of a long table
@@ -106,7 +150,7 @@ std::vector<std::size_t> measurementOrder(const std::vector<EngineUnderTest>& en
 /// The ladder: every engine x strategy x spp against the reference; rows to the CSV as they finish, the table
 /// to stdout and the JSON at the end. Returns false when Ctrl-C stopped it.
 bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
-               std::vector<EngineUnderTest>& engines, const Image& reference, ConvergenceCsv* csv)
+               std::vector<EngineUnderTest>& engines, const Reference& reference, ConvergenceCsv* csv)
 {
     const std::vector<std::string> labels = distinctLabels(options.strategies);
     const std::size_t strategyCount = options.strategies.size();
@@ -123,7 +167,7 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
         for (std::size_t s = 0; s < strategyCount; ++s)
             for (const int spp : options.spps)
             {
-                Measurement m = measure(engine, options.strategies[s].request(base, spp), &reference);
+                Measurement m = measure(engine, options.strategies[s].request(base, spp), &reference.image);
                 if (m.cancelled)
                     return false;
                 log.done(fmt::format("{} {}, {} spp: {:.1f} ms, relMSE {:.3g}", toString(engines[e].kind), labels[s],
@@ -131,14 +175,12 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
                 if (csv)
                     csv->append({scene.id, toString(engines[e].kind), engine.deviceName(), options.strategies[s].name(),
                                  labels[s], m.spp, m.wallMs, m.gpuMs, m.mpathsPerSecond, m.error.mse, m.error.relMse,
-                                 m.error.rmse});
+                                 m.error.rmse, reference.ownRelMse.value_or(-1.0)});
                 runs[e][s].push_back(std::move(m));
             }
     }
 
     const RenderSettings& b = base.settings;
-    const std::string against = options.referencePath.empty() ? fmt::format("{} spp", options.referenceSpp)
-                                                              : options.referencePath;
     nlohmann::json json;
     json["scene"] = scene.id;
     json["width"] = b.width;
@@ -150,10 +192,11 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
     json["light_selection"] = toString(b.lightSelection);
     json["russian_roulette"] = b.russianRoulette;
     if (options.referencePath.empty())
-        json["reference_spp"] = options.referenceSpp;
+        json["reference_spp"] = reference.spp;
     else
         json["reference"] = options.referencePath;
     json["relmse_epsilon"] = kRelMseEpsilon;
+    json["reference_relmse"] = reference.ownRelMse ? nlohmann::json(*reference.ownRelMse) : nlohmann::json();
     for (const EngineUnderTest& e : engines)
         json["devices"][toString(e.kind)] = e.engine->deviceName();
     json["rows"] = nlohmann::json::array();
@@ -163,11 +206,11 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
     {
         const RenderSettings settings = options.strategies[s].applyTo(b);
         std::printf("\n%s: %dx%d, depth %d, %s estimator (%s light sampler, %s selection, roulette %s), %s "
-                    "sampling; relMSE against %s (epsilon %g)\n",
+                    "sampling; %s\n",
                     scene.id.c_str(), b.width, b.height(), b.depth, toString(settings.estimator),
                     toString(settings.lightSampler), toString(settings.lightSelection),
-                    settings.russianRoulette ? "on" : "off", toString(settings.sampling), against.c_str(),
-                    kRelMseEpsilon);
+                    settings.russianRoulette ? "on" : "off", toString(settings.sampling),
+                    againstReference(reference).c_str());
         std::string header = fmt::format("{:>6}", "spp");
         for (const EngineUnderTest& e : engines)
             header += fmt::format(" | {:>9} {:>9}", fmt::format("{} ms", toString(e.kind)), "relMSE");
@@ -210,6 +253,12 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
     }
     std::printf("(GPU ms from timestamp queries around the trace dispatches; CPU ms from the host clock; "
                 "CPU/GPU uses the fastest CPU engine of the row)\n");
+    std::vector<double> relMses;
+    for (const auto& engineRuns : runs)
+        for (const auto& strategyRuns : engineRuns)
+            for (const Measurement& m : strategyRuns)
+                relMses.push_back(m.error.relMse);
+    warnNearReferenceNoise(reference, relMses);
     if (!options.json.empty())
         writeFileAtomically(options.json, json.dump(2) + "\n");
     return true;
@@ -218,7 +267,7 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
 /// The equal-time comparison: every engine x strategy for options.equalTimeMs, one figure (tiles in the
 /// engines' order). Returns false when Ctrl-C stopped it.
 bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
-                  std::vector<EngineUnderTest>& engines, const Image& reference, ConvergenceCsv* csv)
+                  std::vector<EngineUnderTest>& engines, const Reference& reference, ConvergenceCsv* csv)
 {
     const std::vector<std::string> labels = distinctLabels(options.strategies);
     std::vector<std::vector<EqualTimeTile>> tilesOf(engines.size());
@@ -232,7 +281,8 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
         warmUp(*e.engine, options.strategies.front().request(base, 4));
         for (std::size_t s = 0; s < options.strategies.size(); ++s)
         {
-            Measurement m = renderForBudget(*e.engine, base, options.strategies[s], options.equalTimeMs, reference);
+            Measurement m =
+                renderForBudget(*e.engine, base, options.strategies[s], options.equalTimeMs, reference.image);
             if (m.cancelled)
                 return false;
             log.done(fmt::format("{} {}: {} spp in {:.1f} ms, relMSE {:.3g}", toString(e.kind), labels[s], m.spp,
@@ -240,17 +290,15 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
             if (csv)
                 csv->append({scene.id, toString(e.kind), e.engine->deviceName(), options.strategies[s].name(),
                              labels[s], m.spp, m.wallMs, m.gpuMs, m.mpathsPerSecond, m.error.mse, m.error.relMse,
-                             m.error.rmse});
+                             m.error.rmse, reference.ownRelMse.value_or(-1.0)});
             tilesOf[index].push_back({e.kind, labels[s], options.strategies[s], std::move(m)});
         }
     }
     std::vector<EqualTimeTile> tiles;
     for (std::vector<EqualTimeTile>& engineTiles : tilesOf)
         std::move(engineTiles.begin(), engineTiles.end(), std::back_inserter(tiles));
-    std::printf("\n%s: %dx%d, each strategy for %.0f ms; relMSE against %s\n", scene.id.c_str(), base.settings.width,
-                base.settings.height(), options.equalTimeMs,
-                options.referencePath.empty() ? fmt::format("{} spp", options.referenceSpp).c_str()
-                                              : options.referencePath.c_str());
+    std::printf("\n%s: %dx%d, each strategy for %.0f ms; %s\n", scene.id.c_str(), base.settings.width,
+                base.settings.height(), options.equalTimeMs, againstReference(reference).c_str());
     std::printf("%-8s %-36s %8s %10s %10s %12s\n", "engine", "strategy", "spp", "ms", "relMSE", "1/(relMSE s)");
     for (const EqualTimeTile& t : tiles)
         std::printf("%-8s %-36s %8d %10.1f %10.3g %12.4g\n", toString(t.engine), t.label.c_str(), t.result.spp,
@@ -258,11 +306,14 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
     if (!options.grid.empty())
     {
         writeEqualTimeGrid(options.grid,
-                           {scene.id, devices, options.equalTimeMs,
-                            options.referencePath.empty() ? options.referenceSpp : 0},
-                           reference, tiles);
+                           {scene.id, devices, options.equalTimeMs, reference.spp},
+                           reference.image, tiles);
         std::printf("wrote %s\n", options.grid.c_str());
     }
+    std::vector<double> relMses;
+    for (const EqualTimeTile& t : tiles)
+        relMses.push_back(t.result.error.relMse);
+    warnNearReferenceNoise(reference, relMses);
     return true;
 }
 } // namespace
@@ -346,7 +397,7 @@ int runComparison(const Scene& scene, const RenderRequest& base, const CompareOp
         throw DeviceError("no engine could start");
 
     InterruptScope interrupt;
-    const std::optional<Image> reference = obtainReference(scene, base, options, engines.back());
+    const std::optional<Reference> reference = obtainReference(scene, base, options, engines.back());
     std::unique_ptr<ConvergenceCsv> csv;
     bool finished = false;
     if (reference)

@@ -23,6 +23,7 @@ struct ConvergenceRow
     double mse = 0.0; // against the reference, mean over pixels and RGB
     double relMse = 0.0; // mean (I - R)^2 / (R^2 + kRelMseEpsilon)
     double rmse = 0.0;
+    double referenceRelMse = -1.0; // the reference's own relMSE, part of relMse (Image/Metrics.h); < 0: unknown
 };
 
 class ConvergenceCsv

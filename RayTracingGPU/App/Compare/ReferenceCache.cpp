@@ -100,7 +100,7 @@ std::uint64_t sceneFingerprint(const Scene& scene)
 std::string ReferenceCache::key(const Scene& scene, const RenderRequest& request, EngineKind engine)
 {
     nlohmann::json k;
-    k["version"] = 2; // bump when the engines' output changes for the same settings
+    k["version"] = 3; // bump when the engines' output changes for the same settings (3: two halves)
     k["scene"] = request.scene.id;
     k["scene_fingerprint"] = hex(sceneFingerprint(scene));
     k["engine"] = toString(engine);
@@ -115,7 +115,7 @@ std::filesystem::path ReferenceCache::pathFor(const std::string& key, const char
     return m_dir / (hex(h.hash()) + extension);
 }
 
-std::optional<Image> ReferenceCache::find(const Scene& scene, const RenderRequest& request, EngineKind engine) const
+std::optional<TwoHalfReference> ReferenceCache::find(const Scene& scene, const RenderRequest& request, EngineKind engine) const
 {
     if (m_dir.empty())
         return std::nullopt;
@@ -127,14 +127,15 @@ std::optional<Image> ReferenceCache::find(const Scene& scene, const RenderReques
     text << in.rdbuf();
     const nlohmann::json stored = nlohmann::json::parse(text.str(), nullptr, false);
     if (stored.is_discarded() || !stored.is_object() || !stored.contains("key") ||
-        stored["key"] != nlohmann::json::parse(k))
+        stored["key"] != nlohmann::json::parse(k) || !stored.contains("own_relmse") ||
+        !stored["own_relmse"].is_number())
         return std::nullopt; // a hash collision or a damaged entry: render anew
     try
     {
         Image image = readPfm(pathFor(k, ".pfm"));
         if (image.width() != request.settings.width || image.height() != request.settings.height())
             return std::nullopt;
-        return image;
+        return TwoHalfReference{std::move(image), stored["own_relmse"].get<double>()};
     }
     catch (const AssetError& e)
     {
@@ -144,7 +145,7 @@ std::optional<Image> ReferenceCache::find(const Scene& scene, const RenderReques
 }
 
 std::filesystem::path ReferenceCache::store(const Scene& scene, const RenderRequest& request, EngineKind engine,
-                                            const Image& image) const
+                                            const TwoHalfReference& reference) const
 {
     if (m_dir.empty())
         return {};
@@ -153,10 +154,12 @@ std::filesystem::path ReferenceCache::store(const Scene& scene, const RenderRequ
     {
         std::filesystem::create_directories(m_dir);
         const std::filesystem::path pfm = pathFor(k, ".pfm");
-        writePfm(pfm, image);
+        writePfm(pfm, reference.mean);
         // The JSON last: an entry without it is never found.
         writeFileAtomically(pathFor(k, ".json"),
-                            nlohmann::json{{"key", nlohmann::json::parse(k)}, {"image", pfm.filename().string()}}
+                            nlohmann::json{{"key", nlohmann::json::parse(k)},
+                                           {"image", pfm.filename().string()},
+                                           {"own_relmse", reference.ownRelMse}}
                                     .dump(2) +
                                 "\n");
         return pfm;

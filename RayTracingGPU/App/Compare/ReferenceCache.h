@@ -1,8 +1,9 @@
 // The reference images of --compare, kept on disk between runs: a reference at thousands of spp costs more
 // than the whole ladder it measures, and a user tries many ladders against one scene. An entry is a linear PFM
-// and a JSON file of what made it (scene id, a fingerprint of the built scene, engine, every render setting,
-// spp, seed); a lookup re-uses an entry only when all of that matches, so a changed scene, flag or seed
-// renders a new reference.
+// (the mean of the reference's two halves, Image/Metrics.h) and a JSON file of what made it (scene id, a
+// fingerprint of the built scene, engine, every render setting, spp, seed) with the reference's own relMSE; a
+// lookup re-uses an entry only when all of that matches, so a changed scene, flag or seed renders a new
+// reference.
 #pragma once
 
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "Image/Image.h"
+#include "Image/Metrics.h"
 #include "Render/RenderRequest.h"
 #include "Render/RenderSettings.h"
 #include "Scene/Scene.h"
@@ -30,11 +32,11 @@ public:
     explicit ReferenceCache(std::filesystem::path dir) : m_dir(std::move(dir)) {}
 
     /// The cached reference rendered for exactly (scene, request, engine), or nullopt.
-    std::optional<Image> find(const Scene& scene, const RenderRequest& request, EngineKind engine) const;
-    /// Stores `image` as that reference (atomically; a failure to write is reported, not thrown: the
+    std::optional<TwoHalfReference> find(const Scene& scene, const RenderRequest& request, EngineKind engine) const;
+    /// Stores `reference` as that reference (atomically; a failure to write is reported, not thrown: the
     /// comparison does not depend on the cache). Returns the PFM's path, empty when not stored.
     std::filesystem::path store(const Scene& scene, const RenderRequest& request, EngineKind engine,
-                                const Image& image) const;
+                                const TwoHalfReference& reference) const;
 
     /// The JSON text that identifies an entry (the key a lookup compares whole).
     static std::string key(const Scene& scene, const RenderRequest& request, EngineKind engine);

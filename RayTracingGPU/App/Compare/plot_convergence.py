@@ -2,7 +2,9 @@
 """Plots a convergence CSV of `ray-tracing-gpu --compare --csv` (ConvergenceCsv.h's columns): relMSE against
 time and against spp on log-log axes, one line per engine x strategy, with the slope -1 that an unbiased
 Monte Carlo estimator follows drawn through each line's first point; and the efficiency 1 / (relMSE x s) of
-each line's largest spp as bars. Time is the GPU's own clock where the engine has one, else the host's.
+each line's largest spp as bars. Time is the GPU's own clock where the engine has one, else the host's. A
+dashed grey line marks the reference's own relMSE (its `reference_relmse` column, when known): part of every
+value, so lines that come near it flatten out there.
 
     plot_convergence.py ROWS.csv FIGURE.png
 """
@@ -19,8 +21,11 @@ import matplotlib.pyplot as plt  # noqa: E402
 def read_rows(path):
     series = OrderedDict()
     scenes, devices = OrderedDict(), OrderedDict()
+    floors = set()
     with open(path, newline="") as f:
         for row in csv.DictReader(f):
+            if float(row.get("reference_relmse") or -1) > 0:
+                floors.add(float(row["reference_relmse"]))
             ms = float(row["gpu_ms"]) if float(row["gpu_ms"]) >= 0 else float(row["wall_ms"])
             relmse = float(row["relmse"])
             if ms <= 0 or relmse <= 0:
@@ -29,11 +34,11 @@ def read_rows(path):
             series.setdefault(key, []).append((int(row["spp"]), ms / 1000.0, relmse))
             scenes[row["scene"]] = True
             devices[f'{row["engine"]}: {row["device"]}'] = True
-    return series, list(scenes), list(devices)
+    return series, list(scenes), list(devices), sorted(floors)
 
 
 def main(csv_path, png_path):
-    series, scenes, devices = read_rows(csv_path)
+    series, scenes, devices, floors = read_rows(csv_path)
     if not series:
         sys.exit(f"{csv_path}: no rows to plot")
     fig, (by_time, by_spp, bars) = plt.subplots(1, 3, figsize=(17, 5.2))
@@ -54,6 +59,9 @@ def main(csv_path, png_path):
     by_time.set_xlabel("render time (s)")
     by_spp.set_xlabel("samples per pixel")
     for axis in (by_time, by_spp):
+        for j, floor in enumerate(floors):
+            axis.axhline(floor, linestyle="--", color="grey", linewidth=1,
+                         label="the reference's own relMSE" if j == 0 else None)
         axis.set_ylabel("relMSE")
         axis.grid(True, which="both", alpha=0.3)
     by_time.set_title("relMSE against time (dotted: slope -1)")
