@@ -4,7 +4,7 @@ time and against spp on log-log axes, one line per engine x strategy, with the s
 Monte Carlo estimator follows drawn through each line's first point; and the efficiency 1 / (relMSE x s) of
 each line's largest spp as bars. Time is the GPU's own clock where the engine has one, else the host's. A
 dashed grey line marks the reference's own relMSE (its `reference_relmse` column, when known): part of every
-value, so lines that come near it flatten out there.
+value, so lines that come near it flatten out there; the efficiency bars take it out.
 
     plot_convergence.py ROWS.csv FIGURE.png
 """
@@ -55,7 +55,9 @@ def main(csv_path, png_path):
         # Slope -1 through the first point: where an unbiased estimator's error goes with more samples.
         for axis, x in ((by_time, seconds), (by_spp, spp)):
             axis.loglog([x[0], x[-1]], [relmse[0], relmse[0] * x[0] / x[-1]], ":", color=colour, alpha=0.6)
-        efficiency.append((key, 1.0 / (relmse[-1] * seconds[-1]), spp[-1], colour))
+        # The reference's own error is part of every relMSE: the bars leave it out where it is known.
+        own = relmse[-1] - (floors[0] if floors else 0.0)
+        efficiency.append((key, 1.0 / (max(own, 1e-12) * seconds[-1]), spp[-1], colour))
     by_time.set_xlabel("render time (s)")
     by_spp.set_xlabel("samples per pixel")
     for axis in (by_time, by_spp):
@@ -72,7 +74,8 @@ def main(csv_path, png_path):
     bars.set_yticks(range(len(efficiency)))
     bars.set_yticklabels([f"{n} ({e[2]} spp)" for n, e in zip(names, efficiency)], fontsize=8)
     bars.invert_yaxis()
-    bars.set_xlabel("efficiency 1 / (relMSE x s), at each line's largest spp")
+    bars.set_xlabel("efficiency 1 / (relMSE x s), at each line's largest spp"
+                    + ("\n(the reference's own relMSE taken out)" if floors else ""))
     bars.set_title("efficiency (higher is better)")
     fig.suptitle(f'{", ".join(scenes)} - {"; ".join(devices)}', fontsize=10)
     fig.tight_layout()
