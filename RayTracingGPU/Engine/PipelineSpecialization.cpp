@@ -129,7 +129,9 @@ std::string PipelineSpecialization::describe() const
     for (const FeatureName& f : kFeatureNames)
         if (has(f.bit))
         {
-            s += (first ? "" : "+") + std::string(f.name);
+            if (!first)
+                s += '+';
+            s += f.name;
             first = false;
         }
     return first ? s + "none" : s;

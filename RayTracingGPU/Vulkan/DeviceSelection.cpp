@@ -106,7 +106,11 @@ std::string describeDevices(const std::vector<DeviceCandidate>& candidates, cons
 {
     std::string out;
     for (const DeviceCandidate& c : candidates)
-        out += (out.empty() ? "" : "\n") + describe(judge(c, requirements));
+    {
+        if (!out.empty())
+            out += '\n';
+        out += describe(judge(c, requirements));
+    }
     return out;
 }
 } // namespace rt::vk
