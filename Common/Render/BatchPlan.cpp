@@ -22,7 +22,7 @@ std::uint32_t BatchPlan::next(std::uint32_t samplesDone) const
 void BatchPlan::record(std::uint32_t samples, double seconds)
 {
     samples = std::max<std::uint32_t>(samples, 1);
-    const double grown = 4.0 * samples;
+    const double grown = kBatchGrowthLimit * samples;
     const double ideal = seconds > 0.0 ? std::min(grown, samples * m_target / seconds) : grown;
     m_samples = static_cast<std::uint32_t>(std::clamp(std::floor(ideal), 1.0, double(m_max)));
 }

@@ -16,6 +16,14 @@ namespace rt
 /// parallel loop tail, ~3 ms on 2 cores) stays near a percent. The CPU engine cancels within a batch.
 inline constexpr double kBatchTargetSeconds = 0.25;
 
+/// How much a batch may grow on the next, a bound on what one measurement is trusted with. The target time
+/// bounds every batch anyway; this only keeps a first batch measured in microseconds from sizing the second to
+/// the whole render. It was 4: a 256-spp render then took five submissions (1, 4, 16, 64, 171 spp), each
+/// waited for and each ending in the tail of its slowest paths, which cost the H100's light renders of 10-100
+/// ms up to 1.2x (rtnw-checker-spheres 600x600: 57.1 ms of GPU time, 47.3 with three submissions of 1, 64 and
+/// 191 spp; docs/PERFORMANCE.md §8.6).
+inline constexpr double kBatchGrowthLimit = 64.0;
+
 class BatchPlan
 {
 public:
@@ -28,7 +36,7 @@ public:
     /// Samples per pixel of the next batch, given `samplesDone` (< totalSamples) so far: >= 1.
     std::uint32_t next(std::uint32_t samplesDone) const;
     /// Reports that a batch of `samples` took `seconds` (wall clock; <= 0 when unmeasured): the next batch
-    /// aims at the target time at that rate, growing at most 4x a batch (one fast batch proves little).
+    /// aims at the target time at that rate, growing at most kBatchGrowthLimit times.
     void record(std::uint32_t samples, double seconds);
 
     /// The most samples a batch may hold: the path budget's share of each pixel.

@@ -30,11 +30,12 @@ constexpr std::uint32_t kFirstWaveSegments = 8;
 constexpr std::uint32_t kWaveSegmentChunk = 8;
 
 /// Work (rows x samples per pixel) of the next submit after one of `work` took `seconds`: about
-/// kBatchTargetSeconds' worth, growing at most 4x (BatchPlan's rule, in rows x samples), at least 1.
+/// kBatchTargetSeconds' worth, growing at most kBatchGrowthLimit times (BatchPlan's rule, in rows x samples), at
+/// least 1.
 /// Counted in rows x samples, not rows, so that a batch of more samples gets fewer rows per submit.
 std::uint64_t nextBandWork(std::uint64_t work, double seconds)
 {
-    const double grown = 4.0 * double(work);
+    const double grown = kBatchGrowthLimit * double(work);
     const double ideal = seconds > 0.0 ? std::min(grown, double(work) * kBatchTargetSeconds / seconds) : grown;
     return static_cast<std::uint64_t>(std::clamp(std::floor(ideal), 1.0, 1e15));
 }

@@ -8,14 +8,16 @@ namespace rt
 {
 namespace
 {
-TEST(BatchPlan, StartsWithOneSampleAndGrowsAtMostFourfold)
+TEST(BatchPlan, StartsWithOneSampleAndGrowsAtMostByTheLimit)
 {
-    BatchPlan plan(1000, 64, std::uint64_t(1) << 20, false);
+    static_assert(kBatchGrowthLimit == 64.0, "the expectations below are for a limit of 64");
+    BatchPlan plan(10000, 64, std::uint64_t(1) << 30, false);
     EXPECT_EQ(plan.next(0), 1u);
-    plan.record(1, 1e-6); // very fast: the time says 100000 samples, the growth limit 4
-    EXPECT_EQ(plan.next(1), 4u);
-    plan.record(4, 0.0); // unmeasured: grow
-    EXPECT_EQ(plan.next(5), 16u);
+    plan.record(1, 1e-6); // very fast: the time says 250000 samples, the growth limit 64
+    EXPECT_EQ(plan.next(1), 64u);
+    plan.record(64, 0.0); // unmeasured: grow
+    EXPECT_EQ(plan.next(65), 4096u);
+    EXPECT_EQ(plan.next(9000), 1000u) << "the remainder";
 }
 
 TEST(BatchPlan, SizesTheNextBatchToTheTargetTime)
