@@ -18,10 +18,10 @@ inline constexpr double kBatchTargetSeconds = 0.25;
 
 /// How much a batch may grow on the next, a bound on what one measurement is trusted with. The target time
 /// bounds every batch anyway; this only keeps a first batch measured in microseconds from sizing the second to
-/// the whole render. It was 4: a 256-spp render then took five submissions (1, 4, 16, 64, 171 spp), each
-/// waited for and each ending in the tail of its slowest paths, which cost the H100's light renders of 10-100
-/// ms up to 1.2x (rtnw-checker-spheres 600x600: 57.1 ms of GPU time, 47.3 with three submissions of 1, 64 and
-/// 191 spp; docs/PERFORMANCE.md §8.6).
+/// the whole render. It was 4: a 600x337 render at 256 spp then took five batches (1, 4, 16, 64, 171 spp) in
+/// eleven GPU submissions (GpuEngine's bands of rows grow by the same rule), each waited for and each ending
+/// in the tail of its slowest paths, which cost the H100's light renders of 10-100 ms up to 1.3x (rtow-default
+/// 600x337: 59.9 ms of GPU time, 46.4 in five submissions; docs/PERFORMANCE.md §8.6).
 inline constexpr double kBatchGrowthLimit = 64.0;
 
 class BatchPlan
