@@ -18,10 +18,10 @@ inline constexpr double kBatchTargetSeconds = 0.25;
 
 /// How much a batch may grow on the next, a bound on what one measurement is trusted with. The target time
 /// bounds every batch anyway; this only keeps a first batch measured in microseconds from sizing the second to
-/// the whole render. It was 4: a 600x337 render at 256 spp then took five batches (1, 4, 16, 64, 171 spp) in
-/// eleven GPU submissions (GpuEngine's bands of rows grow by the same rule), each waited for and each ending
-/// in the tail of its slowest paths, which cost the H100's light renders of 10-100 ms up to 1.3x (rtow-default
-/// 600x337: 59.9 ms of GPU time, 46.4 in five submissions; docs/PERFORMANCE.md §8.6).
+/// the whole render: every batch covers every pixel, so its rate holds for the next. It was 4: a 600x337
+/// render at 256 spp then took five batches (1, 4, 16, 64, 171 spp), each waited for and each ending in the
+/// tail of its slowest paths, which cost the H100's light renders of 10-100 ms up to 1.2x (docs/PERFORMANCE.md
+/// §8.6). GpuEngine's bands of rows keep a growth of 4 (kBandGrowthLimit).
 inline constexpr double kBatchGrowthLimit = 64.0;
 
 class BatchPlan

@@ -29,13 +29,17 @@ namespace
 constexpr std::uint32_t kFirstWaveSegments = 8;
 constexpr std::uint32_t kWaveSegmentChunk = 8;
 
+/// How much a band may grow on the next. Less than a batch may (kBatchGrowthLimit): a band's rows are new
+/// rows, whose cost the rows measured so far may not tell (with 64, lavapipe's many-lights at 200x200 sized a
+/// band of the frame's lower rows from its top rows and ran 1.6 s past a Ctrl-C; tests/Cli/interrupt.sh).
+constexpr double kBandGrowthLimit = 4.0;
+
 /// Work (rows x samples per pixel) of the next submit after one of `work` took `seconds`: about
-/// kBatchTargetSeconds' worth, growing at most kBatchGrowthLimit times (BatchPlan's rule, in rows x samples), at
-/// least 1.
+/// kBatchTargetSeconds' worth, growing at most kBandGrowthLimit times, at least 1.
 /// Counted in rows x samples, not rows, so that a batch of more samples gets fewer rows per submit.
 std::uint64_t nextBandWork(std::uint64_t work, double seconds)
 {
-    const double grown = kBatchGrowthLimit * double(work);
+    const double grown = kBandGrowthLimit * double(work);
     const double ideal = seconds > 0.0 ? std::min(grown, double(work) * kBatchTargetSeconds / seconds) : grown;
     return static_cast<std::uint64_t>(std::clamp(std::floor(ideal), 1.0, 1e15));
 }
