@@ -97,7 +97,8 @@ void writePng(const std::filesystem::path& path, const Image& image)
     // as the deflate is, in parts of at least 32 K pixels (a thread's start would cost more than a smaller part).
     std::vector<unsigned char> bytes(image.pixelCount() * 3);
     const std::size_t pixels = image.pixelCount();
-    const int parts = static_cast<int>(std::clamp<std::size_t>(pixels >> 15, 1, static_cast<std::size_t>(usableCores())));
+    const int parts =
+        static_cast<int>(std::clamp<std::size_t>(pixels >> 15, 1, static_cast<std::size_t>(usableCores())));
     runInParallel(parts, [&](int part) {
         const std::size_t end = pixels * std::size_t(part + 1) / std::size_t(parts);
         for (std::size_t i = pixels * std::size_t(part) / std::size_t(parts); i < end; ++i)

@@ -49,7 +49,8 @@ void runInParallel(int parts, const std::function<void(int part)>& work)
 namespace
 {
 /// One piece as raw deflate data: ended by a sync flush unless it is the last (then a final block).
-bool deflatePiece(const unsigned char* data, std::size_t length, int level, bool last, std::vector<unsigned char>& out)
+bool deflatePiece(const unsigned char* data, std::size_t length, int level, bool last,
+                  std::vector<unsigned char>& out)
 {
     z_stream s{};
     if (deflateInit2(&s, level, Z_DEFLATED, -MAX_WBITS, 8, Z_DEFAULT_STRATEGY) != Z_OK)
@@ -72,17 +73,21 @@ std::vector<unsigned char> deflateInParts(const unsigned char* data, std::size_t
 {
     // Pieces below 64 KiB gain less from a thread than they lose to their own dictionaries.
     constexpr std::size_t kMinPiece = 64 * 1024;
-    parts = static_cast<int>(std::clamp<std::size_t>(length / kMinPiece, 1, static_cast<std::size_t>(std::max(parts, 1))));
-    const std::size_t step = length / static_cast<std::size_t>(parts);
-    std::vector<std::vector<unsigned char>> pieces(static_cast<std::size_t>(parts));
-    std::vector<char> ok(static_cast<std::size_t>(parts), 0);
-    std::vector<uLong> adlers(static_cast<std::size_t>(parts));
-    runInParallel(parts, [&](int part) {
-        const std::size_t begin = step * static_cast<std::size_t>(part);
-        const std::size_t end = part + 1 == parts ? length : begin + step;
+    const std::size_t count =
+        std::clamp<std::size_t>(length / kMinPiece, 1, static_cast<std::size_t>(std::max(parts, 1)));
+    // Piece i is data[bounds[i], bounds[i + 1]).
+    std::vector<std::size_t> bounds(count + 1);
+    for (std::size_t i = 0; i < count; ++i)
+        bounds[i] = length / count * i;
+    bounds[count] = length;
+    std::vector<std::vector<unsigned char>> pieces(count);
+    std::vector<char> ok(count, 0);
+    std::vector<uLong> adlers(count);
+    runInParallel(static_cast<int>(count), [&](int part) {
         const auto i = static_cast<std::size_t>(part);
-        ok[i] = deflatePiece(data + begin, end - begin, level, part + 1 == parts, pieces[i]);
-        adlers[i] = adler32(adler32(0L, Z_NULL, 0), data + begin, static_cast<uInt>(end - begin));
+        const std::size_t size = bounds[i + 1] - bounds[i];
+        ok[i] = deflatePiece(data + bounds[i], size, level, i + 1 == count, pieces[i]);
+        adlers[i] = adler32(adler32(0L, Z_NULL, 0), data + bounds[i], static_cast<uInt>(size));
     });
     if (std::find(ok.begin(), ok.end(), 0) != ok.end())
         return {};
@@ -93,15 +98,11 @@ std::vector<unsigned char> deflateInParts(const unsigned char* data, std::size_t
     flg += (31 - (cmf * 256 + flg) % 31) % 31;
     std::vector<unsigned char> stream{static_cast<unsigned char>(cmf), static_cast<unsigned char>(flg)};
     uLong adler = adlers[0];
-    for (std::size_t i = 0; i < pieces.size(); ++i)
+    for (std::size_t i = 0; i < count; ++i)
     {
         stream.insert(stream.end(), pieces[i].begin(), pieces[i].end());
         if (i > 0)
-        {
-            const std::size_t begin = step * i;
-            const std::size_t end = i + 1 == pieces.size() ? length : begin + step;
-            adler = adler32_combine(adler, adlers[i], static_cast<z_off_t>(end - begin));
-        }
+            adler = adler32_combine(adler, adlers[i], static_cast<z_off_t>(bounds[i + 1] - bounds[i]));
     }
     for (int shift = 24; shift >= 0; shift -= 8)
         stream.push_back(static_cast<unsigned char>((adler >> shift) & 0xff));

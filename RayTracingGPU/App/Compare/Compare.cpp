@@ -81,7 +81,8 @@ std::optional<Reference> obtainReference(const Scene& scene, const RenderRequest
         return Reference{std::move(reference), std::nullopt, options.referencePath, 0};
     }
     const int halfSpp = std::max(1, (options.referenceSpp + 1) / 2);
-    const std::string description = fmt::format("{} spp", 2 * halfSpp);
+    const int referenceSpp = 2 * halfSpp; // both halves
+    const std::string description = fmt::format("{} spp", referenceSpp);
     RenderRequest request = base;
     request.settings.spp = options.referenceSpp;
     request.settings.seed += 1000;
@@ -90,7 +91,7 @@ std::optional<Reference> obtainReference(const Scene& scene, const RenderRequest
     {
         std::fprintf(stderr, "reference: %s on the %s engine, from the cache (%s)\n", description.c_str(),
                      toString(last.kind), options.referenceCache.string().c_str());
-        return Reference{std::move(cached->mean), cached->ownRelMse, description, 2 * halfSpp};
+        return Reference{std::move(cached->mean), cached->ownRelMse, description, referenceSpp};
     }
     std::fprintf(stderr, "reference: rendering 2 x %d spp on the %s engine...\n", halfSpp, toString(last.kind));
     RenderRequest half = request;
@@ -102,13 +103,13 @@ std::optional<Reference> obtainReference(const Scene& scene, const RenderRequest
     Measurement b = measure(*last.engine, half, nullptr);
     if (b.cancelled)
         return std::nullopt;
-    const TwoHalfReference combined = combineReferenceHalves(a.image, b.image);
+    TwoHalfReference combined = combineReferenceHalves(a.image, b.image);
     std::fprintf(stderr, "reference: %.1f s; its own relMSE %.3g (from its halves)\n", (a.wallMs + b.wallMs) * 1e-3,
                  combined.ownRelMse);
     const auto stored = cache.store(scene, request, last.kind, combined);
     if (!stored.empty())
         std::fprintf(stderr, "reference: cached as %s\n", stored.string().c_str());
-    return Reference{combined.mean, combined.ownRelMse, description, 2 * halfSpp};
+    return Reference{std::move(combined.mean), combined.ownRelMse, description, referenceSpp};
 }
 
 /// Rows whose relMSE is less than 3x the reference's own carry a third or more of the reference's noise: one

@@ -115,7 +115,8 @@ std::filesystem::path ReferenceCache::pathFor(const std::string& key, const char
     return m_dir / (hex(h.hash()) + extension);
 }
 
-std::optional<TwoHalfReference> ReferenceCache::find(const Scene& scene, const RenderRequest& request, EngineKind engine) const
+std::optional<TwoHalfReference> ReferenceCache::find(const Scene& scene, const RenderRequest& request,
+                                                     EngineKind engine) const
 {
     if (m_dir.empty())
         return std::nullopt;

@@ -32,7 +32,8 @@ public:
     explicit ReferenceCache(std::filesystem::path dir) : m_dir(std::move(dir)) {}
 
     /// The cached reference rendered for exactly (scene, request, engine), or nullopt.
-    std::optional<TwoHalfReference> find(const Scene& scene, const RenderRequest& request, EngineKind engine) const;
+    std::optional<TwoHalfReference> find(const Scene& scene, const RenderRequest& request,
+                                         EngineKind engine) const;
     /// Stores `reference` as that reference (atomically; a failure to write is reported, not thrown: the
     /// comparison does not depend on the cache). Returns the PFM's path, empty when not stored.
     std::filesystem::path store(const Scene& scene, const RenderRequest& request, EngineKind engine,
