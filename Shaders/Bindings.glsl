@@ -5,6 +5,7 @@
 #ifndef RT_BINDINGS_GLSL
 #define RT_BINDINGS_GLSL
 
+#include "Shared/BandOrder.h"
 #include "Shared/HostDevice.h"
 
 #ifndef RT_COMPUTE_KERNEL
@@ -43,11 +44,22 @@ layout(push_constant, scalar) uniform PushBlock { TracePushConstants push; };
 
 #include "Specialization.glsl"
 
+/// The image pixel at `index` = position * width + x of the frame's row order (push.rowInterleave's:
+/// Shared/BandOrder.h), where a band's pixels lie from push.firstRow * width on.
+uvec2 bandOrderPixel(uint index)
+{
+    return uvec2(index % uniforms.width, bandOrderRow(index / uniforms.width, uniforms.height, push.rowInterleave));
+}
+
 #ifndef RT_COMPUTE_KERNEL
-/// The image pixel of this invocation of the megakernel (RayGen.rgen): a launch covers a band of rows from
-/// push.firstRow, so that one submit of a large image on a slow device stays short (cancellation waits for a
-/// submit).
-uvec2 launchPixel() { return gl_LaunchIDEXT.xy + uvec2(0u, push.firstRow); }
+/// The image pixel of this invocation of the megakernel (RayGen.rgen): a launch covers a band of rows, from
+/// position push.firstRow on in the frame's row order, so that one submit of a large image on a slow device
+/// stays short (cancellation waits for a submit).
+uvec2 launchPixel()
+{
+    return uvec2(gl_LaunchIDEXT.x,
+                 bandOrderRow(gl_LaunchIDEXT.y + push.firstRow, uniforms.height, push.rowInterleave));
+}
 
 /// The pixel and the sample index of the path whose ray this invocation traces, for the intersection shaders,
 /// which cannot read the payload: in the wavefront, the path of the launch's queue entry; in the megakernel,

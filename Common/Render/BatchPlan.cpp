@@ -16,7 +16,8 @@ BatchPlan::BatchPlan(std::uint32_t totalSamples, std::uint64_t pixels, std::uint
 std::uint32_t BatchPlan::next(std::uint32_t samplesDone) const
 {
     const std::uint32_t left = samplesDone < m_total ? m_total - samplesDone : 1u;
-    return std::min(m_samples, left);
+    const std::uint32_t batches = (left + m_samples - 1) / m_samples;
+    return (left + batches - 1) / batches;
 }
 
 void BatchPlan::record(std::uint32_t samples, double seconds)

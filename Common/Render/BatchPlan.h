@@ -21,7 +21,7 @@ inline constexpr double kBatchTargetSeconds = 0.25;
 /// the whole render: every batch covers every pixel, so its rate holds for the next. It was 4: a 600x337
 /// render at 256 spp then took five batches (1, 4, 16, 64, 171 spp), each waited for and each ending in the
 /// tail of its slowest paths, which cost the H100's light renders of 10-100 ms up to 1.2x (docs/PERFORMANCE.md
-/// §8.6). GpuEngine's bands of rows keep a growth of 4 (kBandGrowthLimit).
+/// §8.6). GpuEngine's bands of rows grow by the same limit (Engine/BandPlan.h).
 inline constexpr double kBatchGrowthLimit = 64.0;
 
 class BatchPlan
@@ -33,7 +33,10 @@ public:
     BatchPlan(std::uint32_t totalSamples, std::uint64_t pixels, std::uint64_t pathsPerBatch, bool progressive,
               double targetSeconds = kBatchTargetSeconds);
 
-    /// Samples per pixel of the next batch, given `samplesDone` (< totalSamples) so far: >= 1.
+    /// Samples per pixel of the next batch, given `samplesDone` (< totalSamples) so far: >= 1. The samples
+    /// left are spread evenly over the batches they need at the planned size, so that no batch of a few
+    /// samples ends the render: on a GPU its few paths per thread would leave most of the device idle while
+    /// the launch still pays its whole tail.
     std::uint32_t next(std::uint32_t samplesDone) const;
     /// Reports that a batch of `samples` took `seconds` (wall clock; <= 0 when unmeasured): the next batch
     /// aims at the target time at that rate, growing at most kBatchGrowthLimit times.

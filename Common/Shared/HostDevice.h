@@ -332,7 +332,8 @@ struct TracePushConstants
 {
     uint firstSample; // index of the launch's first sample within the whole render (not the dispatch)
     uint sampleCount;
-    uint firstRow; // image row of the launch's row 0: a launch may cover a band of rows (launchPixel())
+    uint firstRow; // position of the launch's row 0 in the frame's row order: a launch may cover a band of rows
+    uint rowInterleave; // that order (Shared/BandOrder.h): 1, top to bottom; kBandInterleave, spread
     // The wavefront integrator's (0 for the megakernel's RayGen.rgen): a wave is sampleCount samples of each
     // of wavePixelCount pixels from pixel index (y * width + x) wavePixelBegin on, path p = pixel offset *
     // sampleCount + sample offset; waveSegment is the segment a kernel extends or shades, waveQueue the queue
@@ -493,7 +494,7 @@ static_assert(sizeof(RenderUniforms) == 176);
 static_assert(sizeof(LightBvhNode) == 48);
 static_assert(offsetof(RenderUniforms, background0) == 96);
 static_assert(offsetof(RenderUniforms, sampling) == 128);
-static_assert(sizeof(TracePushConstants) == 32);
+static_assert(sizeof(TracePushConstants) == 36);
 static_assert(sizeof(HitPayload) == 60);
 static_assert(sizeof(WaveCounters) == 64 && offsetof(WaveCounters, shadowRays) == 32);
 static_assert(sizeof(InstanceRecord) == 32);

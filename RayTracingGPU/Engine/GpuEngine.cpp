@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "Assets/AssetPaths.h"
+#include "Engine/BandPlan.h"
 #include "Engine/GpuContext.h"
 #include "Engine/GpuScene.h"
 #include "Engine/RenderLimits.h"
@@ -29,21 +30,6 @@ namespace
 constexpr std::uint32_t kFirstWaveSegments = 8;
 constexpr std::uint32_t kWaveSegmentChunk = 8;
 
-/// How much a band may grow on the next. Less than a batch may (kBatchGrowthLimit): a band's rows are new
-/// rows, whose cost the rows measured so far may not tell (with 64, lavapipe's many-lights at 200x200 sized a
-/// band of the frame's lower rows from its top rows and ran 1.6 s past a Ctrl-C; tests/Cli/interrupt.sh).
-constexpr double kBandGrowthLimit = 4.0;
-
-/// Work (rows x samples per pixel) of the next submit after one of `work` took `seconds`: about
-/// kBatchTargetSeconds' worth, growing at most kBandGrowthLimit times, at least 1.
-/// Counted in rows x samples, not rows, so that a batch of more samples gets fewer rows per submit.
-std::uint64_t nextBandWork(std::uint64_t work, double seconds)
-{
-    const double grown = kBandGrowthLimit * double(work);
-    const double ideal = seconds > 0.0 ? std::min(grown, double(work) * kBatchTargetSeconds / seconds) : grown;
-    return static_cast<std::uint64_t>(std::clamp(std::floor(ideal), 1.0, 1e15));
-}
-
 TargetLimits targetLimits(const vk::Device& device)
 {
     const vk::DeviceProperties& p = device.properties();
@@ -58,7 +44,7 @@ struct GpuEngine::Impl
     SceneTracer tracer;
     vk::QueryPool timestamps;
     std::uint64_t pathsPerBatch;
-    std::uint64_t bandWork = 1; // rows x samples per pixel of the next submit (nextBandWork)
+    BandPlan bands{1}; // the frame's (beginFrame)
     std::uint32_t fixedBandRows = 0; // setBandRows: rows per submit; 0: by time
     std::unique_ptr<RenderTarget> target;
     TracingDescriptors descriptors; // the scene and the target; empty after setScene
@@ -98,14 +84,15 @@ struct GpuEngine::Impl
         descriptors = tracer.makeDescriptors(target->bindings());
     }
 
-    /// Records and runs one dispatch: `samples` samples per pixel from `firstSample` on, over `rows` rows
-    /// from `firstRow` on; `snapshot` first copies the accumulation image to the readback buffer.
+    /// Records and runs one dispatch: `samples` samples per pixel from `firstSample` on, over `rows` rows from
+    /// position `firstRow` on in the row order of `interleave` (BandPlan.h); `snapshot` first copies the
+    /// accumulation image to the readback buffer.
     /// Returns the GPU seconds of the launches (negative when the queue has no timestamps).
     double dispatch(std::uint32_t firstSample, std::uint32_t samples, std::uint32_t firstRow, std::uint32_t rows,
-                    bool snapshot)
+                    std::uint32_t interleave, bool snapshot)
     {
         if (integrator == GpuIntegrator::Wavefront)
-            return dispatchWaves(firstSample, samples, firstRow, rows, snapshot);
+            return dispatchWaves(firstSample, samples, firstRow, rows, interleave, snapshot);
         const bool timed = device().properties().timestampValidBits > 0;
         vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) {
             if (snapshot)
@@ -116,7 +103,7 @@ struct GpuEngine::Impl
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps.Handle(), 0);
             }
             tracer.recordLaunch(cmd, {&descriptors.set, 1}, uniforms, integrator, firstSample, samples,
-                                {target->width(), rows}, nullptr, firstRow);
+                                {target->width(), rows}, nullptr, firstRow, interleave);
             if (timed)
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 1);
             vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
@@ -129,7 +116,7 @@ struct GpuEngine::Impl
     /// the segments its paths are expected to need, then more while its queue is not empty: no launches over
     /// the empty queues of the segments after its longest path. The image is the one recordLaunch gives.
     double dispatchWaves(std::uint32_t firstSample, std::uint32_t samples, std::uint32_t firstRow, std::uint32_t rows,
-                         bool snapshot)
+                         std::uint32_t interleave, bool snapshot)
     {
         const bool timed = device().properties().timestampValidBits > 0;
         if (timed && !waveTimer)
@@ -150,7 +137,7 @@ struct GpuEngine::Impl
                     waveTimer->begin(cmd);
                 }
                 WavefrontPipeline::Recorder recorder(*tracer.wavefront(), cmd, {&descriptors.set, 1}, uniforms, scene,
-                                                     firstRow, buffers, waveTimer.get());
+                                                     firstRow, interleave, buffers, waveTimer.get());
                 record(recorder);
                 buffers.recordCountersReadback(cmd);
                 if (timed)
@@ -288,7 +275,7 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
         std::chrono::duration<double>(std::chrono::steady_clock::now() - compileStart).count();
     e.target->reset(e.uniforms);
     e.clear();
-    e.bandWork = std::max(1u, height / 16); // a sixteenth of the image at one sample, then by time
+    e.bands = BandPlan(height);
     e.waveSegments = kFirstWaveSegments;
 }
 
@@ -306,6 +293,7 @@ BatchResult GpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
     const shader::SampleCounters countersBefore = e.target->readCounters();
     double deviceSeconds = 0.0;
     bool deviceTimed = true;
+    std::uint32_t interleave = 1; // the batch's row order, chosen at its first band
     for (std::uint32_t row = 0; row < height;)
     {
         if (control.cancelRequested())
@@ -317,11 +305,13 @@ BatchResult GpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
             }
             return {.complete = false};
         }
-        const auto rows = static_cast<std::uint32_t>(
-            std::clamp<std::uint64_t>(e.fixedBandRows > 0 ? e.fixedBandRows : e.bandWork / count, 1, height - row));
+        const std::uint32_t rows = e.fixedBandRows > 0 ? std::min(e.fixedBandRows, height - row)
+                                                       : e.bands.nextRows(count, height - row);
+        if (row == 0)
+            interleave = BandPlan::interleaveFor(rows, height);
         const bool snapshot = row == 0 && rows < height; // only a batch of several bands can be cut
         const auto start = std::chrono::steady_clock::now();
-        const double seconds = e.dispatch(firstSample, count, row, rows, snapshot);
+        const double seconds = e.dispatch(firstSample, count, row, rows, interleave, snapshot);
         const double hostSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         deviceTimed = deviceTimed && seconds >= 0.0;
         deviceSeconds += seconds;
@@ -329,7 +319,7 @@ BatchResult GpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
             e.frameStages["trace_gpu"] += seconds;
         control.advance(std::uint64_t(width) * rows * count);
         row += rows;
-        e.bandWork = nextBandWork(std::uint64_t(rows) * count, hostSeconds);
+        e.bands.record(rows, count, hostSeconds);
     }
     return {.complete = true, .deviceSeconds = deviceTimed ? deviceSeconds : -1.0};
 }

@@ -126,7 +126,8 @@ bool PathTracingPipeline::prepare(const RenderUniforms& uniforms, const Pipeline
 void PathTracingPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                                         const RenderUniforms& uniforms, const PipelineScene& scene,
                                         std::uint32_t firstSample, std::uint32_t count, VkExtent2D extent,
-                                        std::uint32_t samplesPerLaunch, std::uint32_t firstRow) const
+                                        std::uint32_t samplesPerLaunch, std::uint32_t firstRow,
+                                        std::uint32_t rowInterleave) const
 {
     const Compiled& c = compiled(specializationFor(uniforms, scene));
     const ShaderBindingTable& sbt = sbtFor(c, scene.hitGroups);
@@ -136,7 +137,7 @@ void PathTracingPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDe
     for (std::uint32_t done = 0; done < count;)
     {
         const std::uint32_t samples = std::min(count - done, std::max(samplesPerLaunch, 1u));
-        const TracePushConstants push{firstSample + done, samples, firstRow};
+        const TracePushConstants push{firstSample + done, samples, firstRow, rowInterleave};
         vkCmdPushConstants(cmd, m_layout.Handle(), kPathTracerStages, 0, sizeof(push), &push);
         vkCmdTraceRaysKHR(cmd, &sbt.raygen(), &sbt.miss(), &sbt.hit(), &sbt.callable(), extent.width,
                           extent.height, 1);

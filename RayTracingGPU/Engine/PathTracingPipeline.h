@@ -97,11 +97,12 @@ public:
     /// on an H100 that is 1.8x faster than one launch per sample), with `sets` bound from set 0, each launch
     /// ordered before whatever comes next, through the pipeline of `uniforms` (the contents of the uniform
     /// buffer the sets name) and `scene` (the scene the sets name), compiled first if need be. `extent` may be
-    /// a band of the image's rows starting at row `firstRow` (launchPixel() in Bindings.glsl).
+    /// a band of the image's rows: positions from `firstRow` on in the row order of `rowInterleave`
+    /// (Shared/BandOrder.h; launchPixel() in Bindings.glsl).
     void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                       const shader::RenderUniforms& uniforms, const PipelineScene& scene, std::uint32_t firstSample,
                       std::uint32_t count, VkExtent2D extent, std::uint32_t samplesPerLaunch,
-                      std::uint32_t firstRow = 0) const;
+                      std::uint32_t firstRow = 0, std::uint32_t rowInterleave = 1) const;
 
 private:
     struct Compiled

@@ -130,17 +130,18 @@ bool SceneTracer::prepare(const shader::RenderUniforms& uniforms, GpuIntegrator 
 void SceneTracer::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                                const shader::RenderUniforms& uniforms, GpuIntegrator integrator,
                                std::uint32_t firstSample, std::uint32_t count, VkExtent2D extent,
-                               const PathTracingPipeline* variant, std::uint32_t firstRow) const
+                               const PathTracingPipeline* variant, std::uint32_t firstRow,
+                               std::uint32_t rowInterleave) const
 {
     const GpuScene& scene = gpuScene();
     if (!variant && integrator == GpuIntegrator::Wavefront)
     {
         m_wavefront->recordLaunch(cmd, sets, uniforms, scene.pipelineScene(), firstSample, count, extent, firstRow,
-                                  m_waves);
+                                  rowInterleave, m_waves);
         return;
     }
     (variant ? *variant : m_pipeline)
         .recordLaunch(cmd, sets, uniforms, scene.pipelineScene(), firstSample, count, extent, scene.samplesPerLaunch(),
-                      firstRow);
+                      firstRow, rowInterleave);
 }
 } // namespace rt::gpu

@@ -102,12 +102,12 @@ public:
     /// Records `count` samples per pixel of `extent` from `firstSample` on, with `sets` bound from set 0, whose
     /// uniform buffer holds `uniforms`, through `variant` (a megakernel: PathTracingPipeline::recordLaunch, with
     /// the scene's samples per launch) or else `integrator` (integratorFor: Megakernel or Wavefront). `extent`
-    /// may be a band of rows from `firstRow` on. The wavefront records every wave to the render's depth
+    /// may be a band of rows, positions from `firstRow` on in the row order of `rowInterleave` (Shared/BandOrder.h). The wavefront records every wave to the render's depth
     /// (GpuEngine submits its waves itself, stopping where their queues empty).
     void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                       const shader::RenderUniforms& uniforms, GpuIntegrator integrator, std::uint32_t firstSample,
                       std::uint32_t count, VkExtent2D extent, const PathTracingPipeline* variant = nullptr,
-                      std::uint32_t firstRow = 0) const;
+                      std::uint32_t firstRow = 0, std::uint32_t rowInterleave = 1) const;
 
 private:
     const vk::Device* m_device;

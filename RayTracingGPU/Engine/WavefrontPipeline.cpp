@@ -142,7 +142,8 @@ std::vector<Wave> planWaves(std::uint32_t firstSample, std::uint32_t count, VkEx
 
 WavefrontPipeline::Recorder::Recorder(const WavefrontPipeline& pipeline, VkCommandBuffer cmd,
                                       std::span<const VkDescriptorSet> sets, const RenderUniforms& uniforms,
-                                      const PipelineScene& scene, std::uint32_t firstRow, const WaveBuffers& waves,
+                                      const PipelineScene& scene, std::uint32_t firstRow,
+                                      std::uint32_t rowInterleave, const WaveBuffers& waves,
                                       WaveStageTimer* timer)
     : m_cmd(cmd), m_compiled(&pipeline.compiled(pipeline.m_layout->specializationFor(uniforms, scene))),
       m_tables(&pipeline.tablesFor(*m_compiled, scene.hitGroups)),
@@ -155,6 +156,7 @@ WavefrontPipeline::Recorder::Recorder(const WavefrontPipeline& pipeline, VkComma
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, m_layout, 0, setCount, sets.data(), 0,
                             nullptr);
     m_push.firstRow = firstRow;
+    m_push.rowInterleave = rowInterleave;
     m_push.waveCapacity = waves.capacity();
 }
 
@@ -244,9 +246,10 @@ void WavefrontPipeline::Recorder::finish(const Wave& wave)
 void WavefrontPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                                      const RenderUniforms& uniforms, const PipelineScene& scene,
                                      std::uint32_t firstSample, std::uint32_t count, VkExtent2D extent,
-                                     std::uint32_t firstRow, const WaveBuffers& waves) const
+                                     std::uint32_t firstRow, std::uint32_t rowInterleave,
+                                     const WaveBuffers& waves) const
 {
-    Recorder recorder(*this, cmd, sets, uniforms, scene, firstRow, waves);
+    Recorder recorder(*this, cmd, sets, uniforms, scene, firstRow, rowInterleave, waves);
     for (const Wave& wave : planWaves(firstSample, count, extent, firstRow, waves.capacity()))
     {
         recorder.start(wave);

@@ -37,7 +37,8 @@ struct Wave
     std::uint32_t pixelCount = 0;
 };
 
-/// The waves of `count` samples per pixel from `firstSample` on over `extent` (rows from `firstRow` on), at
+/// The waves of `count` samples per pixel from `firstSample` on over `extent` (rows from position `firstRow` on of
+/// the frame's row order; a wave's pixels are indices position * width + x of that order), at
 /// most `capacity` paths each, in the order they must run: a pixel's earlier samples first. Pure.
 std::vector<Wave> planWaves(std::uint32_t firstSample, std::uint32_t count, VkExtent2D extent, std::uint32_t firstRow,
                             std::uint32_t capacity);
@@ -70,6 +71,7 @@ public:
     public:
         Recorder(const WavefrontPipeline& pipeline, VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                  const shader::RenderUniforms& uniforms, const PipelineScene& scene, std::uint32_t firstRow,
+                 std::uint32_t rowInterleave,
                  const WaveBuffers& waves, WaveStageTimer* timer = nullptr);
 
         /// The counters reset, the camera rays of `wave` and its first queue.
@@ -96,7 +98,8 @@ public:
         shader::TracePushConstants m_push{};
     };
 
-    /// Records `count` camera samples per pixel of `extent` (a band of rows from `firstRow` on), sample
+    /// Records `count` camera samples per pixel of `extent` (a band of rows: positions from `firstRow` on in the
+    /// row order of `rowInterleave`, Shared/BandOrder.h), sample
     /// indices from `firstSample` on, as waves of at most waves.capacity() paths (planWaves), each traced to
     /// the render's depth: each sample of a pixel after the one before, added to the accumulation images in
     /// sample order. `sets` (set 0 naming `waves`)
@@ -104,7 +107,8 @@ public:
     /// ordered before what comes next.
     void recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,
                       const shader::RenderUniforms& uniforms, const PipelineScene& scene, std::uint32_t firstSample,
-                      std::uint32_t count, VkExtent2D extent, std::uint32_t firstRow, const WaveBuffers& waves) const;
+                      std::uint32_t count, VkExtent2D extent, std::uint32_t firstRow, std::uint32_t rowInterleave,
+                      const WaveBuffers& waves) const;
 
 private:
     const Compiled& compiled(const PipelineSpecialization& key) const;

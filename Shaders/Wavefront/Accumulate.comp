@@ -16,8 +16,7 @@ void main()
     uint q = gl_GlobalInvocationID.x;
     if (q >= push.wavePixelCount)
         return;
-    uint pixelIndex = push.wavePixelBegin + q;
-    ivec2 texel = ivec2(pixelIndex % uniforms.width, pixelIndex / uniforms.width);
+    ivec2 texel = ivec2(bandOrderPixel(push.wavePixelBegin + q));
     vec4 sum = imageLoad(accumulation, texel);
     vec3 lost = imageLoad(compensation, texel).rgb;
     for (uint s = 0u; s < push.sampleCount; ++s)

@@ -23,7 +23,7 @@ void main()
         return;
     uint pixelIndex = push.wavePixelBegin + p / push.sampleCount;
     uint sampleIndex = push.firstSample + p % push.sampleCount;
-    uvec2 pixel = uvec2(pixelIndex % uniforms.width, pixelIndex / uniforms.width);
+    uvec2 pixel = bandOrderPixel(pixelIndex);
     Rng rng = rngForCameraSample(pixel, sampleIndex);
     CameraSample cs = drawCameraSample(rng, pixel, sampleIndex);
     vec3 origin;
@@ -33,7 +33,7 @@ void main()
     bool finite = isFiniteVec(origin) && isFiniteVec(direction);
     if (!finite)
         path.radiance = vec3(uintBitsToFloat(0x7FC00000u)); // a quiet NaN, as the megakernel returns
-    storePath(p, path, pixelIndex, sampleIndex);
+    storePath(p, path, pixel.y * uniforms.width + pixel.x, sampleIndex);
     uint slot = queueSlot(finite, kCounterPushed);
     if (finite)
         setWaveQueueEntry(0u, slot, p);

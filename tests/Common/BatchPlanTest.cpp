@@ -2,6 +2,8 @@
 // Ctrl-C waited that long), within the engine's path budget, one sample each for progressive sampling.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "Render/BatchPlan.h"
 
 namespace rt
@@ -16,8 +18,25 @@ TEST(BatchPlan, StartsWithOneSampleAndGrowsAtMostByTheLimit)
     plan.record(1, 1e-6); // very fast: the time says 250000 samples, the growth limit 64
     EXPECT_EQ(plan.next(1), 64u);
     plan.record(64, 0.0); // unmeasured: grow
-    EXPECT_EQ(plan.next(65), 4096u);
+    EXPECT_EQ(plan.next(65), 3312u) << "9935 samples left, in three batches of at most 4096";
     EXPECT_EQ(plan.next(9000), 1000u) << "the remainder";
+}
+
+TEST(BatchPlan, SpreadsTheSamplesLeftEvenly)
+{
+    // A 600x337 render at 256 spp within 2^24 paths a batch (82 spp): after the first sample, four batches of
+    // 64 or 63, not 64, 82, 82 and a last one of 27 whose few samples per thread would leave a GPU idle.
+    BatchPlan plan(256, 600 * 337, std::uint64_t(1) << 24, false);
+    ASSERT_EQ(plan.maxSamples(), 82u);
+    std::uint32_t done = 0;
+    std::vector<std::uint32_t> batches;
+    while (done < 256)
+    {
+        batches.push_back(plan.next(done));
+        done += batches.back();
+        plan.record(batches.back(), 1e-9);
+    }
+    EXPECT_EQ(batches, (std::vector<std::uint32_t>{1, 64, 64, 64, 63}));
 }
 
 TEST(BatchPlan, SizesTheNextBatchToTheTargetTime)

@@ -240,6 +240,13 @@ TEST_F(GpuProgress, CancelInsideABandedBatchPutsTheBatchBack)
     expectCancelInsideABandedBatchPutsTheBatchBack("rtnw-cornell-smoke", 64);
 }
 
+TEST_F(GpuProgress, BandsGiveTheImageOfOneSubmission)
+{
+    // Thirteen bands of 3 rows a batch, in the interleaved row order: a pixel traced twice or never changes
+    // the image.
+    expectBandsGiveTheImageOfOneSubmission("cornell-box-lights", 24);
+}
+
 TEST_F(GpuProgress, CancelStopsBetweenDispatchesWithTheEstimateSoFar)
 {
     const Scene scene = makeScene("rtnw-quads");

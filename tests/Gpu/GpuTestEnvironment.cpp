@@ -102,6 +102,22 @@ void expectCancelInsideABandedBatchPutsTheBatchBack(const std::string& sceneId, 
     EXPECT_EQ(cancelled.stats.nanSamples, clean.stats.nanSamples);
 }
 
+void expectBandsGiveTheImageOfOneSubmission(const std::string& sceneId, int width)
+{
+    const Scene scene = makeScene(sceneId);
+    RenderSettings s = ::rt::test::settingsFor(scene, width, 3, 8);
+    s.aspect = float(width) / 37.0f;
+    ASSERT_EQ(s.height(), 37);
+    sharedEngine()->setBandRows(3);
+    const RenderResult banded = renderOnGpu(scene, s);
+    sharedEngine()->setBandRows(37);
+    const RenderResult whole = renderOnGpu(scene, s);
+    sharedEngine()->setBandRows(0);
+    EXPECT_EQ(banded.stats.trueSpp, 3);
+    EXPECT_GT(banded.image.mean().x, 0.0f);
+    EXPECT_EQ(banded.image.pixels(), whole.image.pixels());
+}
+
 RenderResult renderOnGpu(const Scene& scene, const RenderSettings& settings)
 {
     GpuEngine& engine = *sharedEngine();

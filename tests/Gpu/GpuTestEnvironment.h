@@ -35,6 +35,11 @@ void expectFurnaceOnGpu(float albedo, float radiance, Estimator estimator, int s
 /// gives, bit for bit, and its NaN/Inf counters (GpuEngine's snapshot).
 void expectCancelInsideABandedBatchPutsTheBatchBack(const std::string& sceneId, int width);
 
+/// Renders `sceneId` at `width` px (an odd number of rows), 3 spp, depth 8, once in bands of three rows per
+/// submission (the interleaved row order of Shared/BandOrder.h) and once in one submission per batch, and
+/// expects the same image bit for bit: every pixel traced once per sample, whatever the bands.
+void expectBandsGiveTheImageOfOneSubmission(const std::string& sceneId, int width);
+
 using ::rt::test::MeanAndError;
 using ::rt::test::pixelStatistics;
 using ::rt::test::renderWithSettings;

@@ -164,6 +164,13 @@ TEST_F(GpuWavefront, CancelInsideABandedBatchPutsTheBatchBack)
     expectCancelInsideABandedBatchPutsTheBatchBack("cornell-box-lights", 32);
 }
 
+// The wavefront's waves are indices in the frame's row order: bands of interleaved rows give the image of one
+// submission per batch.
+TEST_F(GpuWavefront, BandsGiveTheImageOfOneSubmission)
+{
+    expectBandsGiveTheImageOfOneSubmission("cornell-box-lights", 24);
+}
+
 // Each kernel's GPU time is in the stats (a timestamp after every kernel), within the launches' own total.
 TEST_F(GpuWavefront, StageTimesAreWithinTheTrace)
 {

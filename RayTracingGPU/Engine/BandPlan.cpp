@@ -1,0 +1,34 @@
+#include "Engine/BandPlan.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "Render/BatchPlan.h"
+#include "Shared/BandOrder.h"
+
+namespace rt::gpu
+{
+BandPlan::BandPlan(std::uint32_t height) : m_work(std::max(1u, height / shader::kBandInterleave)) {}
+
+std::uint32_t BandPlan::nextRows(std::uint32_t samples, std::uint32_t rowsLeft) const
+{
+    rowsLeft = std::max(rowsLeft, 1u);
+    const std::uint64_t perBand = std::clamp<std::uint64_t>(m_work / std::max(samples, 1u), 1, rowsLeft);
+    const std::uint64_t bands = (rowsLeft + perBand - 1) / perBand;
+    return static_cast<std::uint32_t>((rowsLeft + bands - 1) / bands);
+}
+
+void BandPlan::record(std::uint32_t rows, std::uint32_t samples, double seconds)
+{
+    const std::uint64_t work = std::uint64_t(rows) * samples;
+    m_measured += work;
+    const double grown = kBatchGrowthLimit * double(m_measured);
+    const double ideal = seconds > 0.0 ? std::min(grown, double(work) * kBatchTargetSeconds / seconds) : grown;
+    m_work = static_cast<std::uint64_t>(std::clamp(std::floor(ideal), 1.0, 1e15));
+}
+
+std::uint32_t BandPlan::interleaveFor(std::uint32_t rows, std::uint32_t height)
+{
+    return rows < height ? shader::kBandInterleave : 1u;
+}
+} // namespace rt::gpu

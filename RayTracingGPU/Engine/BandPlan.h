@@ -1,0 +1,41 @@
+// How GpuEngine cuts a batch (Render/BatchPlan.h: a few samples of every pixel) into submissions of rows. The
+// engine cancels between submissions, so each must stay near kBatchTargetSeconds on any device: one sample of
+// a 200x200 heavy scene is seconds on lavapipe. A frame's first band is a sixteenth of its rows at one
+// sample; each band after is sized by the time the last one took.
+//
+// A batch of several bands takes its rows in the interleaved order (Shared/BandOrder.h), so that every band,
+// the first included, samples the whole frame and its rate holds for the next. Bands of consecutive rows
+// sized the lower rows from the top ones: with a growth of 64 that ran 1.6 s past a Ctrl-C on lavapipe, and
+// with a growth of 4 the H100 traced a 600x337 render of a light scene in eleven submissions, up to 1.3x its
+// time (docs/PERFORMANCE.md §8.6, §8.7). A batch of one band keeps the rows in order.
+#pragma once
+
+#include <cstdint>
+
+namespace rt::gpu
+{
+class BandPlan
+{
+public:
+    /// A frame of `height` (>= 1) rows: the first band is height / 16 rows (at least one) at one sample.
+    explicit BandPlan(std::uint32_t height);
+
+    /// Rows of the next band of a batch of `samples` per pixel, of which `rowsLeft` (>= 1) rows are not
+    /// traced yet: the rows the measured rate gives kBatchTargetSeconds, spread evenly over the bands the
+    /// batch's rest then needs (no short band at its end, whose few rows would leave the device idle).
+    std::uint32_t nextRows(std::uint32_t samples, std::uint32_t rowsLeft) const;
+
+    /// Reports that a band of `rows` x `samples` took `seconds` (<= 0: unmeasured). The next band aims at the
+    /// target time at that rate, but at most kBatchGrowthLimit times the work measured so far in the frame:
+    /// a measurement of microseconds is not trusted with seconds.
+    void record(std::uint32_t rows, std::uint32_t samples, double seconds);
+
+    /// The row order of a batch whose first band has `rows` of the frame's `height`: kBandInterleave when it
+    /// takes several bands, else 1 (rows in order, as coherent as can be).
+    static std::uint32_t interleaveFor(std::uint32_t rows, std::uint32_t height);
+
+private:
+    std::uint64_t m_work; // rows x samples of the next band
+    std::uint64_t m_measured = 0; // rows x samples traced so far in the frame
+};
+} // namespace rt::gpu
