@@ -27,9 +27,10 @@ inline bool intersectSphere(const SphereRec& s, const TraceRay& r, float tMin, H
     const float disc = r2 - glm::dot(l, l); // discriminant / a
     if (disc < 0.0f)
         return false;
-    const float c = shader::sphereQuadraticC(f, s.radius); // exact where it cancels: a huge sphere's surface
     const float a = r.directionLength2;
     const float q = -(b + std::copysign(std::sqrt(a * disc), b));
+    // Exact where it cancels (a huge sphere's surface) and the near root lies surely ahead.
+    const float c = shader::sphereQuadraticCForNearRoot(f, s.radius, q);
     float t0 = c / q;
     float t1 = q * r.invDirectionLength2;
     if (t0 > t1)

@@ -176,14 +176,14 @@ RT_LANES_INLINE bool sphereLanes(const SphereLaneView& s, const RayLaneView& r, 
     const Lanes ff = fx * fx + fy * fy + fz * fz;
     Lanes c = ff - s.radius2;
     const Lanes q = -(b + copysign(sqrt(max(disc, Lanes(0.0f)) * r.directionLength2), b));
-    // Where c cancels (near a huge sphere's surface) and the near root c / q may lie ahead, those lanes take
-    // the exact c: sphereQuadraticCForNearRoot's rule, lane by lane (a ray leaving a sphere's surface, as
-    // every refraction through glass, needs no exact c).
+    // Where c cancels (near a huge sphere's surface) and the near root c / q lies surely ahead, those lanes
+    // take the exact c: sphereQuadraticCForNearRoot's rule, lane by lane (a ray leaving a sphere's surface, as
+    // every bounce and refraction, needs no exact c).
     const Lanes zero(0.0f);
-    const Lanes surelyBehind = (abs(c) > Lanes(kSphereRootError) * (ff + s.radius2)) &
-                               (((c > zero) & (q < zero)) | ((c < zero) & (q > zero)));
-    const Lanes cancelled =
-        andNot(surelyBehind, valid & (abs(c) < Lanes(shader::kSphereCancellation) * (ff + s.radius2)));
+    const Lanes absC = abs(c);
+    const Lanes nearRootAhead = ((c > zero) & (q > zero)) | ((c < zero) & (q < zero));
+    const Lanes cancelled = valid & nearRootAhead & (absC > Lanes(kSphereRootError) * (ff + s.radius2)) &
+                            (absC < Lanes(shader::kSphereCancellation) * (ff + s.radius2));
     if (movemask(cancelled))
         c = select(cancelled, exactSphereC(fx, fy, fz, s.radius), c);
     const Lanes t0 = c / q;
