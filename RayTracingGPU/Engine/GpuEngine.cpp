@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <functional>
 
 #include "Assets/AssetPaths.h"
@@ -15,7 +14,6 @@
 #include "Engine/WaveStageTimer.h"
 #include "Engine/WavefrontPipeline.h"
 #include "Error.h"
-#include "Render/BatchPlan.h"
 #include "Vulkan/Barriers.h"
 #include "Vulkan/CommandBuffer.h"
 #include "Vulkan/QueryPool.h"
@@ -85,7 +83,7 @@ struct GpuEngine::Impl
     }
 
     /// Records and runs one dispatch: `samples` samples per pixel from `firstSample` on, over `rows` rows from
-    /// position `firstRow` on in the row order of `interleave` (BandPlan.h); `snapshot` first copies the
+    /// position `firstRow` on in the row order of `interleave` (Shared/BandOrder.h); `snapshot` first copies the
     /// accumulation image to the readback buffer.
     /// Returns the GPU seconds of the launches (negative when the queue has no timestamps).
     double dispatch(std::uint32_t firstSample, std::uint32_t samples, std::uint32_t firstRow, std::uint32_t rows,
