@@ -85,7 +85,7 @@ void addWindowOptions(CLI::App& app, WindowFlags& w)
 }
 
 int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::optional<int> device, bool validation,
-              rt::gpu::GpuIntegrator integrator)
+              rt::gpu::GpuIntegrator integrator, const std::string& shaderDir)
 {
     if (!options.hdr.empty() || !options.stats.empty())
         spdlog::warn("--hdr and --stats are for --headless; the window's Save writes the PFM beside the PNG");
@@ -115,6 +115,7 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
     w.deviceIndex = device;
     w.validation = validation;
     w.integrator = integrator;
+    w.shaderDir = shaderDir;
     w.frames = flags.frames;
     w.screenshot = flags.screenshot;
     w.stateJson = flags.stateJson;
@@ -128,7 +129,8 @@ struct WindowFlags
 
 void addWindowOptions(CLI::App&, WindowFlags&) {}
 
-int runWindow(const rt::CommonOptions&, const WindowFlags&, std::optional<int>, bool, rt::gpu::GpuIntegrator)
+int runWindow(const rt::CommonOptions&, const WindowFlags&, std::optional<int>, bool, rt::gpu::GpuIntegrator,
+              const std::string&)
 {
     throw rt::UsageError("this build has no window (configured with RT_BUILD_GUI=OFF): run with --headless");
 }
@@ -237,6 +239,12 @@ int main(int argc, char** argv)
                    "GPU, wherever the wavefront runs: paths traced at once (each holds 204 bytes of state); 0: by the "
                    "device (16 M on a GPU of 48 GiB or more, 64 K on a CPU device)")
         ->check(CLI::Range(0u, 1u << 26));
+    std::string shaderDir;
+    app.add_option("--shader-dir", shaderDir,
+                   "Load the SPIR-V shaders from this folder instead of the 'shaders' folder beside the app (the same "
+                   "layout: Shaders/CMakeLists.txt's glslc output), to try or time a variant of the GLSL without "
+                   "rebuilding the app (docs/GPU.md)")
+        ->check(CLI::ExistingDirectory);
     WindowFlags window;
     addWindowOptions(app, window);
 
@@ -248,6 +256,7 @@ int main(int argc, char** argv)
         const auto engineOptions = [&] {
             return rt::gpu::GpuEngineOptions{.deviceIndex = device,
                                              .validation = validation,
+                                             .shaderDir = shaderDir,
                                              .specialize = specializeMode(specialize),
                                              .integrator = *rt::gpu::parseIntegrator(integrator), // checked by CLI11
                                              .wavePaths = wavePaths};
@@ -275,7 +284,7 @@ int main(int argc, char** argv)
             });
         }
         if (!options.headless)
-            return runWindow(options, window, device, validation, engineOptions().integrator);
+            return runWindow(options, window, device, validation, engineOptions().integrator, shaderDir);
         rt::checkOutputPaths(options);
         const rt::CommandLineRender job = rt::resolveCommandLine(options);
         rt::gpu::GpuEngine gpu(engineOptions());

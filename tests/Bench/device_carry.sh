@@ -26,6 +26,12 @@ if [ -n "${BASELINE_BIN:-}" ]; then
     cp -rL "$BASELINE_BIN/ray-tracing-gpu" "$BASELINE_BIN/shaders" "$BASELINE_BIN/Assets" .devcarry/baseline/
     strip .devcarry/baseline/ray-tracing-gpu
 fi
+# Shader variants for tests/Bench/shader_variants.sh (device_run.sh variants): VARIANTS, folders of SPIR-V in the
+# layout of build/bin/shaders, each copied under its own name.
+for v in ${VARIANTS:-}; do
+    mkdir -p .devcarry/variants
+    cp -r "$v" ".devcarry/variants/$(basename "$v")"
+done
 # The glTF models tests/Cli/scene_files.sh renders (Debian's assimp-testmodels; the host has none).
 mkdir -p .devcarry/gltf
 for m in BoxTextured-glTF BoxTextured-glTF-Binary cameras; do

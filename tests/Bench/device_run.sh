@@ -17,6 +17,9 @@
 #                                      (INTEGRATOR: the GPU integrator, default the app's)
 #   tests/Bench/device_run.sh integrators [RENDERS_FILE]  the megakernel against the wavefront, render by
 #                                      render (default tests/Bench/renders/integrators.txt)
+#   tests/Bench/device_run.sh variants RENDERS_FILE  the shader variants carried in .devcarry/variants/ (VARIANTS
+#                                      of device_carry.sh) against the build's own shaders, render by render
+#                                      (shader_variants.sh)
 set -u
 mode=${1:-tests}
 out=${OUT:-/tmp/out}
@@ -87,6 +90,10 @@ bars)
     "$bin/ray-tracing-gpu" --compare --quiet $integrator --scene many-lights --width 600 --engines gpu --reference-spp 4096 \
         --estimators nee-mis --light-selections uniform,power,bvh --samplings random,sobol --spp-list 64,256 \
         --csv "$out/ml.csv" --table "$out/ml.json"
+    ;;
+variants)
+    ROUNDS=${ROUNDS:-3} bash tests/Bench/shader_variants.sh "$bin" /tmp/variants "$2" "$bin/shaders" \
+        .devcarry/variants/* | tee "$out/variants.txt"
     ;;
 ab)
     ROUNDS=${ROUNDS:-3} bash tests/Bench/gpu_ab.sh .devcarry/baseline "$bin" /tmp/ab ${2:-} | tee "$out/ab.txt"

@@ -153,6 +153,33 @@ TEST(GpuApp, HeadlessRenderWritesImageHdrAndStats)
         EXPECT_NE(json.find(key), std::string::npos) << key << " in " << json;
 }
 
+TEST(GpuApp, ShaderDirLoadsTheShadersFromThere)
+{
+    // A copy of the shaders renders the image of the app's own; a folder without them is a one-line asset
+    // error naming the missing shader; a folder that does not exist is refused as a usage error.
+    RT_REQUIRE_GPU();
+    const ::rt::test::ScratchDir dir;
+    const std::filesystem::path shaders = std::filesystem::path(RT_GPU_APP).parent_path() / "shaders";
+    std::filesystem::copy(shaders, dir / "copy", std::filesystem::copy_options::recursive);
+    const std::string render = "--headless --scene rtnw-cornell-box --width 16 --spp 2 --depth 4 --quiet --hdr '";
+    ASSERT_EQ(runApp(render + (dir / "own.pfm").string() + "'").status, 0);
+    const AppRun copied = runApp(render + (dir / "copy.pfm").string() + "' --shader-dir '" + (dir / "copy").string() + "'");
+    ASSERT_EQ(copied.status, 0) << copied.output;
+    const auto bytes = [](const std::filesystem::path& p) {
+        std::ifstream in(p, std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    EXPECT_EQ(bytes(dir / "own.pfm"), bytes(dir / "copy.pfm"));
+    std::filesystem::create_directory(dir / "empty");
+    const AppRun empty = runApp(render + (dir / "none.pfm").string() + "' --shader-dir '" + (dir / "empty").string() + "'");
+    EXPECT_NE(empty.status, 0);
+    EXPECT_NE(empty.output.find("not found"), std::string::npos) << empty.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "none.pfm"));
+    const AppRun missing = runApp(render + (dir / "x.pfm").string() + "' --shader-dir '" + (dir / "nope").string() + "'");
+    EXPECT_EQ(missing.status, 2) << missing.output;
+    EXPECT_NE(missing.output.find("--shader-dir"), std::string::npos) << missing.output;
+}
+
 TEST(GpuApp, BadDeviceIndexIsUsageError)
 {
     RT_REQUIRE_GPU();

@@ -41,6 +41,7 @@ GpuEngineOptions engineOptions(const WindowOptions& options, const VulkanWindow&
     e.deviceIndex = options.deviceIndex;
     e.validation = options.validation;
     e.integrator = options.integrator;
+    e.shaderDir = options.shaderDir;
     e.presentation = Presentation{VulkanWindow::requiredInstanceExtensions(),
                                   [&window](VkInstance instance) { return window.createSurface(instance); }};
     return e;

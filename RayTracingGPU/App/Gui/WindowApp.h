@@ -29,6 +29,7 @@ struct WindowOptions
     std::optional<int> deviceIndex;
     bool validation = false;
     GpuIntegrator integrator = GpuIntegrator::Auto; // --integrator
+    std::filesystem::path shaderDir; // --shader-dir; empty: the shaders beside the app
     std::optional<int> frames; // run this many frames after the actions, then stop
     std::filesystem::path screenshot; // with frames: what the window shows in the last frame, as PNG
     std::filesystem::path stateJson; // at exit: the window's and the image's sizes, the layout drawn, the message
