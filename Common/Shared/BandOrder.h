@@ -1,5 +1,5 @@
-// The order in which the GPU engine's bands of rows cover a frame, written once for the engine (which plans the
-// bands: Engine/BandPlan.h) and its shaders (which find their pixel: launchPixel() in Bindings.glsl).
+// The order in which the GPU engine's bands of rows cover a frame, written once for the engine (which plans
+// the bands: Engine/BandPlan.h) and its shaders (which find their pixel: launchPixel() in Bindings.glsl).
 //
 // A batch that one submission would make too long is traced in bands of rows, and the next band is sized by
 // the time the last one took. Bands of consecutive rows measured the top of the frame (often sky) and sized
@@ -13,8 +13,9 @@
 
 RT_SHADER_NAMESPACE_BEGIN
 
-/// The interleave of a batch cut into several bands: its first band (a sixteenth of the rows) then holds
-/// every sixteenth row of the frame.
+/// The interleave of a batch cut into several bands: one pass of the order (ceil(height / 16) rows, the
+/// first band of a frame) holds every sixteenth row of the frame, and any band of a pass or more holds a row
+/// of every whole block of sixteen rows, top to bottom.
 RT_CONST(uint, kBandInterleave, 16u)
 
 /// The image row at position `j` (< height) of a frame's row order: with `interleave` k > 1, the rows r with

@@ -335,8 +335,9 @@ struct TracePushConstants
     uint firstRow; // position of the launch's row 0 in the frame's row order: a launch may cover a band of rows
     uint rowInterleave; // that order (Shared/BandOrder.h): 1, top to bottom; kBandInterleave, spread
     // The wavefront integrator's (0 for the megakernel's RayGen.rgen): a wave is sampleCount samples of each
-    // of wavePixelCount pixels from pixel index (y * width + x) wavePixelBegin on, path p = pixel offset *
-    // sampleCount + sample offset; waveSegment is the segment a kernel extends or shades, waveQueue the queue
+    // of wavePixelCount pixels from index wavePixelBegin on, an index being position * width + x in the row
+    // order above (bandOrderPixel() gives the image pixel; kWaveOriginPixel holds y * width + x), path p =
+    // pixel offset * sampleCount + sample offset; waveSegment is the segment a kernel extends or shades, waveQueue the queue
     // a ray-tracing launch reads (its intersection shaders find their path through it), waveCapacity the
     // paths each queue holds.
     uint wavePixelBegin;

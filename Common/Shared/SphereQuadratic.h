@@ -72,7 +72,8 @@ RT_FN float sphereQuadraticC(vec3 f, float r)
 /// - with a sure sign opposite to q's, the near root is behind the ray with either c;
 /// - within its rounding error, the ray's origin cannot be told from the sphere's surface, and the near root
 ///   c / q lies within the bound under which the intersection tests reject a root as the surface the ray
-///   leaves (kSphereRootError (f.f + r^2) / |q|): the ray leaves the surface, and only its far root counts.
+///   leaves (kSphereRootError (f.f + r^2) / |q|): the ray leaves the surface, and only its far root counts
+///   (so also for a ray from another surface that starts that close to the sphere).
 /// That is nearly every ray leaving a sphere (each bounce off a ground sphere, each refraction through glass),
 /// which took the exact path when the rule was "unless surely behind": 10 % of rtow-default's sphere tests, now
 /// 0.8 % (docs/PERFORMANCE.md §8.7). There the exact c puts the near root within twice that bound: a root

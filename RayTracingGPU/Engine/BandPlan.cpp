@@ -8,7 +8,11 @@
 
 namespace rt::gpu
 {
-BandPlan::BandPlan(std::uint32_t height) : m_work(std::max(1u, height / shader::kBandInterleave)) {}
+BandPlan::BandPlan(std::uint32_t height, std::uint32_t firstRows)
+    : m_pass((std::max(height, 1u) + shader::kBandInterleave - 1) / shader::kBandInterleave),
+      m_work(std::clamp(firstRows, 1u, m_pass))
+{
+}
 
 std::uint32_t BandPlan::nextRows(std::uint32_t samples, std::uint32_t rowsLeft) const
 {
@@ -22,8 +26,10 @@ void BandPlan::record(std::uint32_t rows, std::uint32_t samples, double seconds)
 {
     const std::uint64_t work = std::uint64_t(rows) * samples;
     m_measured += work;
-    const double grown = kBatchGrowthLimit * double(m_measured);
-    const double ideal = seconds > 0.0 ? std::min(grown, double(work) * kBatchTargetSeconds / seconds) : grown;
+    const double grown =
+        rows >= m_pass ? kBatchGrowthLimit * double(m_measured) : kShortBandGrowth * double(work);
+    const double ideal =
+        seconds > 0.0 ? std::min(grown, double(work) * kBatchTargetSeconds / seconds) : grown;
     m_work = static_cast<std::uint64_t>(std::clamp(std::floor(ideal), 1.0, 1e15));
 }
 

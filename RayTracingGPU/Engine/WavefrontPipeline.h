@@ -27,8 +27,9 @@ class WaveBuffers;
 class WaveStageTimer;
 enum class WaveStage;
 
-/// One wave of a launch: `samples` camera samples from `firstSample` on of each pixel (index y * width + x) of
-/// [pixelBegin, pixelBegin + pixelCount).
+/// One wave of a launch: `samples` camera samples from `firstSample` on of each pixel of [pixelBegin, pixelBegin +
+/// pixelCount), an index being position * width + x in the frame's row order (Shared/BandOrder.h; y * width + x
+/// where the rows are in order).
 struct Wave
 {
     std::uint32_t firstSample = 0;

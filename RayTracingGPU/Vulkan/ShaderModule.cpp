@@ -18,7 +18,7 @@ std::vector<std::uint32_t> readSpirv(const std::filesystem::path& path)
     std::ifstream in(path, std::ios::binary | std::ios::ate);
     if (!in)
         throw AssetError(fmt::format("shader '{}' not found (the shaders are built into <bin>/shaders beside the "
-                                     "executable)",
+                                     "executable; --shader-dir names another folder of that layout)",
                                      path.string()));
     const std::streamsize bytes = in.tellg();
     constexpr std::uint32_t kSpirvMagic = 0x07230203u;

@@ -29,7 +29,7 @@ bool sphereRoots(vec3 o, vec3 d, vec3 center, float radius, out SphereRoots root
     float q = -(halfB + (halfB >= 0.0 ? 1.0 : -1.0) * sqrt(a * discriminantOverA));
     if (q == 0.0)
         return false; // the origin is on the sphere and the line only grazes it
-    float c = sphereQuadraticCForNearRoot(f, radius, q); // exact where it cancels and the near root may be ahead
+    float c = sphereQuadraticCForNearRoot(f, radius, q); // exact where it cancels and the near root is surely ahead
     float r0 = c / q;
     float r1 = q / a;
     roots.t0 = min(r0, r1);

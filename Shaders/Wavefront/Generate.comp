@@ -21,9 +21,9 @@ void main()
     uint p = gl_GlobalInvocationID.x;
     if (p >= push.wavePixelCount * push.sampleCount)
         return;
-    uint pixelIndex = push.wavePixelBegin + p / push.sampleCount;
+    uint orderIndex = push.wavePixelBegin + p / push.sampleCount; // in the band order, not the image's
     uint sampleIndex = push.firstSample + p % push.sampleCount;
-    uvec2 pixel = bandOrderPixel(pixelIndex);
+    uvec2 pixel = bandOrderPixel(orderIndex);
     Rng rng = rngForCameraSample(pixel, sampleIndex);
     CameraSample cs = drawCameraSample(rng, pixel, sampleIndex);
     vec3 origin;

@@ -30,7 +30,9 @@ fi
 # layout of build/bin/shaders, each copied under its own name.
 for v in ${VARIANTS:-}; do
     mkdir -p .devcarry/variants
-    cp -r "$v" ".devcarry/variants/$(basename "$v")"
+    name=$(basename "$v")
+    [ ! -e ".devcarry/variants/$name" ] || { echo "device_carry.sh: two variants named $name" >&2; exit 2; }
+    cp -rL "$v" ".devcarry/variants/$name"
 done
 # The glTF models tests/Cli/scene_files.sh renders (Debian's assimp-testmodels; the host has none).
 mkdir -p .devcarry/gltf

@@ -92,8 +92,10 @@ bars)
         --csv "$out/ml.csv" --table "$out/ml.json"
     ;;
 variants)
-    ROUNDS=${ROUNDS:-3} bash tests/Bench/shader_variants.sh "$bin" /tmp/variants "$2" "$bin/shaders" \
-        .devcarry/variants/* | tee "$out/variants.txt"
+    set -o pipefail
+    ls -d .devcarry/variants/*/ >/dev/null || { echo "no shader variants carried (VARIANTS of device_carry.sh)"; exit 2; }
+    ROUNDS=${ROUNDS:-3} bash tests/Bench/shader_variants.sh "$bin" /tmp/variants "${2:?variants needs a RENDERS_FILE}" \
+        "$bin/shaders" .devcarry/variants/* | tee "$out/variants.txt"
     ;;
 ab)
     ROUNDS=${ROUNDS:-3} bash tests/Bench/gpu_ab.sh .devcarry/baseline "$bin" /tmp/ab ${2:-} | tee "$out/ab.txt"

@@ -161,21 +161,26 @@ TEST(GpuApp, ShaderDirLoadsTheShadersFromThere)
     const ::rt::test::ScratchDir dir;
     const std::filesystem::path shaders = std::filesystem::path(RT_GPU_APP).parent_path() / "shaders";
     std::filesystem::copy(shaders, dir / "copy", std::filesystem::copy_options::recursive);
-    const std::string render = "--headless --scene rtnw-cornell-box --width 16 --spp 2 --depth 4 --quiet --hdr '";
-    ASSERT_EQ(runApp(render + (dir / "own.pfm").string() + "'").status, 0);
-    const AppRun copied = runApp(render + (dir / "copy.pfm").string() + "' --shader-dir '" + (dir / "copy").string() + "'");
-    ASSERT_EQ(copied.status, 0) << copied.output;
+    const auto render = [&](const std::string& hdr, const std::string& shaderDir) {
+        return runApp("--headless --scene rtnw-cornell-box --width 16 --spp 2 --depth 4 --quiet --hdr '" +
+                      (dir / hdr).string() + "'" +
+                      (shaderDir.empty() ? "" : " --shader-dir '" + (dir / shaderDir).string() + "'"));
+    };
     const auto bytes = [](const std::filesystem::path& p) {
         std::ifstream in(p, std::ios::binary);
         return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     };
+    ASSERT_EQ(render("own.pfm", "").status, 0);
+    const AppRun copied = render("copy.pfm", "copy");
+    ASSERT_EQ(copied.status, 0) << copied.output;
+    ASSERT_GT(std::filesystem::file_size(dir / "own.pfm"), 16u * 16u * 12u);
     EXPECT_EQ(bytes(dir / "own.pfm"), bytes(dir / "copy.pfm"));
     std::filesystem::create_directory(dir / "empty");
-    const AppRun empty = runApp(render + (dir / "none.pfm").string() + "' --shader-dir '" + (dir / "empty").string() + "'");
-    EXPECT_NE(empty.status, 0);
-    EXPECT_NE(empty.output.find("not found"), std::string::npos) << empty.output;
+    const AppRun empty = render("none.pfm", "empty");
+    EXPECT_EQ(empty.status, 4) << empty.output;
+    EXPECT_NE(empty.output.find("RayGen.rgen.spv' not found"), std::string::npos) << empty.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "none.pfm"));
-    const AppRun missing = runApp(render + (dir / "x.pfm").string() + "' --shader-dir '" + (dir / "nope").string() + "'");
+    const AppRun missing = render("x.pfm", "nope");
     EXPECT_EQ(missing.status, 2) << missing.output;
     EXPECT_NE(missing.output.find("--shader-dir"), std::string::npos) << missing.output;
 }

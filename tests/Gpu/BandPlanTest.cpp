@@ -1,6 +1,7 @@
 // Engine/BandPlan and Shared/BandOrder.h: how the GPU engine cuts a batch into submissions of rows, and the
 // interleaved row order that makes every band a sample of the whole frame. Host-only (label unit); the
-// shaders' side of the order is checked by GpuEngineTest's banded renders, which must give every pixel.
+// shaders' side of the order is checked by the GPU tests FirstBandTracesEverySixteenthRow (the rows one pass
+// traces) and BandsGiveTheImageOfOneSubmission (every pixel once per sample, whatever the bands).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -43,34 +44,40 @@ TEST(BandOrder, TakesEverySixteenthRowFirstThenTheNextPhase)
     EXPECT_EQ(bandOrderRow(7, height, 1), 7u) << "interleave 1: the rows in order";
 }
 
-TEST(BandOrder, EveryBandOfASixteenthSpansTheFrame)
+TEST(BandOrder, EveryBandOfAPassSpansTheFrame)
 {
-    // Wherever a band of a sixteenth of the rows starts, it holds rows of the frame's top and bottom
-    // sixteenths: its time is a sample of the whole frame's.
-    const std::uint32_t height = 600;
-    const std::uint32_t band = height / kBandInterleave;
-    for (std::uint32_t first = 0; first + band <= height; ++first)
+    // Wherever a band of one pass (ceil(height / 16) rows, BandPlan's first band) starts, it holds a row of
+    // every whole block of sixteen rows, top to bottom (the last rows, height mod 16 of them, only the longer
+    // phases reach): its time is a sample of the whole frame's.
+    for (const std::uint32_t height : {17u, 200u, 337u, 600u})
     {
-        std::uint32_t top = height;
-        std::uint32_t bottom = 0;
-        for (std::uint32_t j = first; j < first + band; ++j)
+        const std::uint32_t pass = BandPlan(height).passRows();
+        ASSERT_EQ(pass, (height + kBandInterleave - 1) / kBandInterleave);
+        for (std::uint32_t first = 0; first + pass <= height; ++first)
         {
-            top = std::min(top, bandOrderRow(j, height, kBandInterleave));
-            bottom = std::max(bottom, bandOrderRow(j, height, kBandInterleave));
+            std::vector<bool> block(height / kBandInterleave, false);
+            for (std::uint32_t j = first; j < first + pass; ++j)
+            {
+                const std::uint32_t row = bandOrderRow(j, height, kBandInterleave);
+                if (row / kBandInterleave < block.size())
+                    block[row / kBandInterleave] = true;
+            }
+            ASSERT_EQ(std::count(block.begin(), block.end(), false), 0)
+                << "height " << height << ", band from " << first;
         }
-        ASSERT_LT(top, band) << "band from " << first;
-        ASSERT_GE(bottom, height - band) << "band from " << first;
     }
 }
 
-TEST(BandPlan, FirstBandIsASixteenthAtOneSampleInTheInterleavedOrder)
+TEST(BandPlan, FirstBandIsOnePassAtOneSampleInTheInterleavedOrder)
 {
-    const BandPlan plan(337);
-    const std::uint32_t rows = plan.nextRows(1, 337);
-    EXPECT_GE(rows, 1u);
-    EXPECT_LE(rows, 337u / 16);
-    EXPECT_EQ(BandPlan::interleaveFor(rows, 337), kBandInterleave);
-    EXPECT_EQ(BandPlan(5).nextRows(1, 5), 1u) << "at least one row";
+    for (const std::uint32_t height : {1u, 5u, 17u, 200u, 337u, 600u})
+    {
+        const BandPlan plan(height);
+        const std::uint32_t rows = plan.nextRows(1, height);
+        EXPECT_EQ(rows, plan.passRows()) << height;
+        EXPECT_EQ(BandPlan::interleaveFor(rows, height), height > 1 ? kBandInterleave : 1u) << height;
+    }
+    EXPECT_EQ(BandPlan(337).passRows(), 22u); // 337 = 16 x 21 + 1: phase 0 holds 22 rows, 0 to 336
 }
 
 TEST(BandPlan, AFastFirstBandLetsTheRestOfTheFrameGoInOneBand)
@@ -87,11 +94,31 @@ TEST(BandPlan, AFastFirstBandLetsTheRestOfTheFrameGoInOneBand)
     EXPECT_LT(plan.nextRows(2 * samples, 337), 337u) << "twice the growth limit is not trusted";
 }
 
+TEST(BandPlan, FirstBandKeepsToItsCap)
+{
+    BandPlan plan(800, 5); // a pass is 50 rows; 5 rows of 800 px are a CPU device's 4 K paths
+    EXPECT_EQ(plan.nextRows(1, 800), 5u);
+    plan.record(5, 1, 1e-6);
+    EXPECT_EQ(plan.nextRows(1, 795), 20u) << "a band shorter than a pass: 4x";
+    EXPECT_EQ(BandPlan(800, 500).nextRows(1, 800), 50u) << "a cap above a pass leaves the pass";
+}
+
+TEST(BandPlan, ABandShorterThanAPassGrowsAtMostFourTimes)
+{
+    // A slow device's large image: a band of a few rows is a run of one phase, top to bottom, and does not
+    // tell the cost of the rows below it.
+    BandPlan plan(4000); // a pass is 250 rows
+    plan.record(10, 1, 1e-6);
+    EXPECT_EQ(plan.nextRows(1, 3990), 40u) << "4x the band, not 64x the frame's work";
+    plan.record(250, 1, 1e-6); // a whole pass: the frame's rate
+    EXPECT_EQ(plan.nextRows(1, 3740), 3740u) << "64x the 260 rows measured: the rest in one band";
+}
+
 TEST(BandPlan, SizesBandsToTheTargetTime)
 {
     BandPlan plan(1000);
     plan.record(50, 1, 2.0 * kBatchTargetSeconds); // 25 rows fit the target
-    EXPECT_EQ(plan.nextRows(1, 950), 25u); // 38 bands of 25
+    EXPECT_EQ(plan.nextRows(1, 950), 25u);         // 38 bands of 25
     EXPECT_EQ(plan.nextRows(5, 950), 5u) << "five samples a row: a fifth of the rows";
     plan.record(25, 1, 100.0); // slower than the target at one row: still one row
     EXPECT_EQ(plan.nextRows(1, 925), 1u);

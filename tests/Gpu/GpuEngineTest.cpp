@@ -247,6 +247,11 @@ TEST_F(GpuProgress, BandsGiveTheImageOfOneSubmission)
     expectBandsGiveTheImageOfOneSubmission("cornell-box-lights", 24);
 }
 
+TEST_F(GpuProgress, FirstBandTracesEverySixteenthRow)
+{
+    expectFirstBandTracesEverySixteenthRow(GpuIntegrator::Megakernel);
+}
+
 TEST_F(GpuProgress, CancelStopsBetweenDispatchesWithTheEstimateSoFar)
 {
     const Scene scene = makeScene("rtnw-quads");

@@ -6,8 +6,15 @@
 #include <memory>
 #include <thread>
 
+#include "Engine/BandPlan.h"
+#include "Engine/GpuContext.h"
+#include "Engine/RenderTarget.h"
+#include "Engine/SceneTracer.h"
 #include "Error.h"
+#include "Scene/SceneBuilder.h"
 #include "Scenes/Catalogue.h"
+#include "Shared/BandOrder.h"
+#include "Vulkan/CommandBuffer.h"
 #include "Support/SmallSettings.h"
 
 namespace rt::gpu::test
@@ -116,6 +123,40 @@ void expectBandsGiveTheImageOfOneSubmission(const std::string& sceneId, int widt
     EXPECT_EQ(banded.stats.trueSpp, 3);
     EXPECT_GT(banded.image.mean().x, 0.0f);
     EXPECT_EQ(banded.image.pixels(), whole.image.pixels());
+}
+
+void expectFirstBandTracesEverySixteenthRow(GpuIntegrator integrator)
+{
+    SceneBuilder b("sky");
+    b.sphere(b.world(), vec3(0.0f, 0.0f, 50.0f), 0.1f, b.lambertian(vec3(0.5f))); // behind the camera
+    b.scene().background = {BackgroundType::Constant, vec3(1.0f), vec3(1.0f)};
+    b.scene().camera.lookFrom = vec3(0.0f);
+    b.scene().camera.lookAt = vec3(0.0f, 0.0f, -1.0f);
+    const Scene scene = b.finish();
+    GpuEngine& engine = *sharedEngine();
+    engine.setScene(scene);
+    const SceneTracer& tracer = engine.tracer();
+    const vk::Device& device = engine.context().device();
+    const std::uint32_t width = 24, height = 37;
+    RenderSettings s = ::rt::test::settingsFor(scene, int(width), 1, 4);
+    s.aspect = float(width) / float(height);
+    const shader::RenderUniforms uniforms = tracer.uniforms(scene.camera, s, {width, height});
+    tracer.prepare(uniforms, integrator);
+    RenderTarget target(device, width, height);
+    target.reset(uniforms);
+    const TracingDescriptors descriptors = tracer.makeDescriptors(target.bindings());
+    const std::uint32_t rows = BandPlan(height).passRows();
+    vk::submitAndWait(device, engine.context().commandPool(), [&](VkCommandBuffer cmd) { target.recordClear(cmd); });
+    vk::submitAndWait(device, engine.context().commandPool(), [&](VkCommandBuffer cmd) {
+        tracer.recordLaunch(cmd, {&descriptors.set, 1}, uniforms, integrator, 0, 1, {width, rows}, nullptr, 0,
+                            shader::kBandInterleave);
+    });
+    vk::submitAndWait(device, engine.context().commandPool(), [&](VkCommandBuffer cmd) { target.recordReadback(cmd); });
+    const Image image = target.readEstimate(1);
+    for (std::uint32_t y = 0; y < height; ++y)
+        for (std::uint32_t x = 0; x < width; ++x)
+            ASSERT_EQ(image.at(int(x), int(y)).x, y % shader::kBandInterleave == 0 ? 1.0f : 0.0f)
+                << "pixel (" << x << ", " << y << ")";
 }
 
 RenderResult renderOnGpu(const Scene& scene, const RenderSettings& settings)

@@ -171,6 +171,12 @@ TEST_F(GpuWavefront, BandsGiveTheImageOfOneSubmission)
     expectBandsGiveTheImageOfOneSubmission("cornell-box-lights", 24);
 }
 
+// A wave's pixel indices are positions in the frame's row order: one pass traces every sixteenth row.
+TEST_F(GpuWavefront, FirstBandTracesEverySixteenthRow)
+{
+    expectFirstBandTracesEverySixteenthRow(GpuIntegrator::Wavefront);
+}
+
 // Each kernel's GPU time is in the stats (a timestamp after every kernel), within the launches' own total.
 TEST_F(GpuWavefront, StageTimesAreWithinTheTrace)
 {
