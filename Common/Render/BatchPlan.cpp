@@ -16,15 +16,13 @@ BatchPlan::BatchPlan(std::uint32_t totalSamples, std::uint64_t pixels, std::uint
 std::uint32_t BatchPlan::next(std::uint32_t samplesDone) const
 {
     const std::uint32_t left = samplesDone < m_total ? m_total - samplesDone : 1u;
-    const std::uint32_t batches = (left + m_samples - 1) / m_samples;
-    return (left + batches - 1) / batches;
+    return static_cast<std::uint32_t>(evenPart(left, m_samples));
 }
 
 void BatchPlan::record(std::uint32_t samples, double seconds)
 {
     samples = std::max<std::uint32_t>(samples, 1);
-    const double grown = kBatchGrowthLimit * samples;
-    const double ideal = seconds > 0.0 ? std::min(grown, samples * m_target / seconds) : grown;
+    const double ideal = workForTarget(samples, seconds, kBatchGrowthLimit * samples, m_target);
     m_samples = static_cast<std::uint32_t>(std::clamp(std::floor(ideal), 1.0, double(m_max)));
 }
 } // namespace rt

@@ -7,6 +7,7 @@
 // adds its samples in sample order), so sizing by a clock costs no determinism.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 namespace rt
@@ -24,6 +25,21 @@ inline constexpr double kBatchTargetSeconds = 0.25;
 /// §8.6). GpuEngine's bands of rows take the same limit, of the work measured so far in the frame rather than
 /// of the last band, after a band that spans the frame (Engine/BandPlan.h).
 inline constexpr double kBatchGrowthLimit = 64.0;
+
+/// Work (samples, or rows x samples) of the next submission after one of `work` took `seconds`: `target`
+/// seconds' worth at that rate, at most `grown`; `grown` when unmeasured (`seconds` <= 0). Not rounded.
+inline double workForTarget(double work, double seconds, double grown, double target = kBatchTargetSeconds)
+{
+    return seconds > 0.0 ? std::min(grown, work * target / seconds) : grown;
+}
+
+/// The first of the even parts `left` (>= 1) takes when cut into as few parts of at most `most` (>= 1) as it
+/// needs: no short part at the end.
+inline std::uint64_t evenPart(std::uint64_t left, std::uint64_t most)
+{
+    const std::uint64_t parts = (left + most - 1) / most;
+    return (left + parts - 1) / parts;
+}
 
 class BatchPlan
 {

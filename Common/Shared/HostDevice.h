@@ -337,9 +337,9 @@ struct TracePushConstants
     // The wavefront integrator's (0 for the megakernel's RayGen.rgen): a wave is sampleCount samples of each
     // of wavePixelCount pixels from index wavePixelBegin on, an index being position * width + x in the row
     // order above (bandOrderPixel() gives the image pixel; kWaveOriginPixel holds y * width + x), path p =
-    // pixel offset * sampleCount + sample offset; waveSegment is the segment a kernel extends or shades, waveQueue the queue
-    // a ray-tracing launch reads (its intersection shaders find their path through it), waveCapacity the
-    // paths each queue holds.
+    // pixel offset * sampleCount + sample offset; waveSegment is the segment a kernel extends or shades,
+    // waveQueue the queue a ray-tracing launch reads (its intersection shaders find their path through it),
+    // waveCapacity the paths each queue holds.
     uint wavePixelBegin;
     uint wavePixelCount;
     uint waveSegment;

@@ -16,10 +16,8 @@ BandPlan::BandPlan(std::uint32_t height, std::uint32_t firstRows)
 
 std::uint32_t BandPlan::nextRows(std::uint32_t samples, std::uint32_t rowsLeft) const
 {
-    rowsLeft = std::max(rowsLeft, 1u);
-    const std::uint64_t perBand = std::clamp<std::uint64_t>(m_work / std::max(samples, 1u), 1, rowsLeft);
-    const std::uint64_t bands = (rowsLeft + perBand - 1) / perBand;
-    return static_cast<std::uint32_t>((rowsLeft + bands - 1) / bands);
+    const std::uint64_t perBand = std::max<std::uint64_t>(m_work / std::max(samples, 1u), 1);
+    return static_cast<std::uint32_t>(evenPart(std::max(rowsLeft, 1u), perBand));
 }
 
 void BandPlan::record(std::uint32_t rows, std::uint32_t samples, double seconds)
@@ -28,8 +26,7 @@ void BandPlan::record(std::uint32_t rows, std::uint32_t samples, double seconds)
     m_measured += work;
     const double grown =
         rows >= m_pass ? kBatchGrowthLimit * double(m_measured) : kShortBandGrowth * double(work);
-    const double ideal =
-        seconds > 0.0 ? std::min(grown, double(work) * kBatchTargetSeconds / seconds) : grown;
+    const double ideal = workForTarget(double(work), seconds, grown);
     m_work = static_cast<std::uint64_t>(std::clamp(std::floor(ideal), 1.0, 1e15));
 }
 

@@ -19,10 +19,10 @@ namespace rt::gpu
 {
 class BandPlan
 {
-  public:
-    /// A frame of `height` (>= 1) rows: the first band is one pass, ceil(height / 16) rows, at one sample, but at
-    /// most `firstRows` (>= 1): a slow device's large image (800x800 of many-lights is 24 ms a row on lavapipe,
-    /// so a pass of 50 rows ran past the 1 s a Ctrl-C may take).
+public:
+    /// A frame of `height` (>= 1) rows: the first band is one pass, ceil(height / 16) rows, at one sample, but
+    /// at most `firstRows` (>= 1): a slow device's large image (800x800 of many-lights is 24 ms a row on
+    /// lavapipe, so a pass of 50 rows ran past the 1 s a Ctrl-C may take).
     explicit BandPlan(std::uint32_t height, std::uint32_t firstRows = ~0u);
 
     /// Rows of the next band of a batch of `samples` per pixel, of which `rowsLeft` (>= 1) rows are not
@@ -47,9 +47,9 @@ class BandPlan
     /// takes several bands, else 1 (rows in order, as coherent as can be).
     static std::uint32_t interleaveFor(std::uint32_t rows, std::uint32_t height);
 
-  private:
+private:
     std::uint32_t m_pass;
-    std::uint64_t m_work;         // rows x samples of the next band
+    std::uint64_t m_work; // rows x samples of the next band
     std::uint64_t m_measured = 0; // rows x samples traced so far in the frame
 };
 } // namespace rt::gpu
