@@ -14,6 +14,7 @@ layout(constant_id = kSpecIdLightSampler) const uint kSpecLightSampler = kSpecDy
 layout(constant_id = kSpecIdLightSelection) const uint kSpecLightSelection = kSpecDynamic;
 layout(constant_id = kSpecIdSampling) const uint kSpecSampling = kSpecDynamic;
 layout(constant_id = kSpecIdFeatures) const uint kSpecFeatures = kSpecDynamic;
+layout(constant_id = kSpecIdExactSphereC) const uint kSpecExactSphereC = kSpecDynamic;
 // Not a render setting: 1 in the wavefront integrator's pipelines, 0 in the megakernel's.
 layout(constant_id = kSpecIdWavefront) const uint kSpecWavefront = 0u;
 const bool kWavefront = kSpecWavefront != 0u;
@@ -49,5 +50,13 @@ const bool kHasGradientBackground = (kSpecFeatures & kFeatureGradientBackground)
 #error "Specialization.glsl (through Bindings.glsl) must come before Shared/LightSampling.h"
 #endif
 #define RT_HAS_LIGHT_SHAPE(Shape) kHas##Shape##Lights
+
+// Whether the sphere tests (Geometry/Sphere.glsl) compute the exact c where it cancels: there, and in the shaders
+// without this file (the parity kernel), always.
+#ifdef RT_SPHERE_GLSL
+#error "Specialization.glsl (through Bindings.glsl) must come before Geometry/Sphere.glsl"
+#endif
+const bool kExactSphereC = kSpecExactSphereC != 0u;
+#define RT_EXACT_SPHERE_C kExactSphereC
 
 #endif

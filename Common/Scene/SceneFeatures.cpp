@@ -1,6 +1,9 @@
 #include "Scene/SceneFeatures.h"
 
+#include <algorithm>
 #include <vector>
+
+#include "Shared/SphereQuadratic.h"
 
 namespace rt
 {
@@ -46,6 +49,85 @@ void useMaterial(const Scene& scene, std::uint32_t material, std::vector<bool>& 
     }
     useTexture(scene, m.albedoTexture, f);
     useTexture(scene, m.emissionTexture, f);
+}
+/// The largest factor by which `t` stretches a length (the longest column of its linear part).
+float lengthScale(const Transform& t)
+{
+    return std::max({glm::length(vec3(t.m[0])), glm::length(vec3(t.m[1])), glm::length(vec3(t.m[2]))});
+}
+
+/// A sphere of the scene, surface (spheres[index]) or medium boundary (media[index]), of an instance.
+struct SphereRef
+{
+    std::size_t instance = 0;
+    bool medium = false;
+    std::size_t index = 0;
+    float worldRadius = -1.0f;
+};
+
+/// Object-space bounds of `g`'s primitives but one: media[skip] if `skipMedium`, else spheres[skip] (kNoSkip:
+/// none).
+constexpr std::size_t kNoSkip = std::size_t(-1);
+Aabb groupBoundsBut(const Scene& scene, const GroupDesc& g, bool skipMedium, std::size_t skip)
+{
+    Aabb box;
+    for (std::size_t i = 0; i < g.spheres.size(); ++i)
+        if (skipMedium || i != skip)
+            box.expand(g.spheres[i].bounds());
+    for (const QuadDesc& q : g.quads)
+    {
+        box.expand(q.q);
+        box.expand(q.q + q.u + q.v);
+        box.expand(q.q + q.u);
+        box.expand(q.q + q.v);
+    }
+    for (const MeshRef& m : g.meshes)
+        box.expand(scene.meshes[m.mesh].bounds());
+    for (std::size_t i = 0; i < g.media.size(); ++i)
+        if (!skipMedium || i != skip)
+            box.expand(g.media[i].bounds());
+    return box;
+}
+
+/// SceneFeatures::hugeSpheres. Only the largest sphere can be huge: every other one lies in the rest.
+bool hasHugeSphere(const Scene& scene)
+{
+    SphereRef largest;
+    for (std::size_t i = 0; i < scene.instances.size(); ++i)
+    {
+        const GroupDesc& g = scene.groups[scene.instances[i].group];
+        const float scale = lengthScale(scene.instances[i].worldFromObject);
+        for (std::size_t k = 0; k < g.spheres.size(); ++k)
+            if (scale * g.spheres[k].radius > largest.worldRadius)
+                largest = {i, false, k, scale * g.spheres[k].radius};
+        for (std::size_t k = 0; k < g.media.size(); ++k)
+            if (g.media[k].boundary == MediumDesc::Boundary::Sphere && scale * g.media[k].radius > largest.worldRadius)
+                largest = {i, true, k, scale * g.media[k].radius};
+    }
+    if (largest.worldRadius < 0.0f)
+        return false;
+    Aabb rest;
+    for (std::size_t i = 0; i < scene.instances.size(); ++i)
+    {
+        const InstanceDesc& instance = scene.instances[i];
+        const Aabb local = groupBoundsBut(scene, scene.groups[instance.group], largest.medium,
+                                          i == largest.instance ? largest.index : kNoSkip);
+        if (!local.empty())
+            rest.expand(instance.worldFromObject.bounds(local));
+    }
+    // Rays start from the rest and from the camera, which may hover over a lone planet: its point nearest the
+    // camera counts too.
+    const InstanceDesc& instance = scene.instances[largest.instance];
+    const GroupDesc& g = scene.groups[instance.group];
+    const vec3 centre = instance.worldFromObject.point(largest.medium ? g.media[largest.index].center
+                                                                      : g.spheres[largest.index].center0);
+    const vec3 toCamera = scene.camera.lookFrom - centre;
+    const float cameraDistance = glm::length(toCamera);
+    rest.expand(scene.camera.lookFrom);
+    rest.expand(centre + (cameraDistance > 0.0f ? (largest.worldRadius / cameraDistance) * toCamera
+                                                : vec3(largest.worldRadius, 0.0f, 0.0f)));
+    const float restSize = glm::length(rest.extent());
+    return shader::kSphereRootError * largest.worldRadius > kHugeSphereTolerance * restSize;
 }
 } // namespace
 
@@ -93,6 +175,7 @@ SceneFeatures featuresOf(const Scene& scene)
         case shader::LightShape::Sphere: f.sphereEmitters = true; break;
         case shader::LightShape::Triangle: f.triangleEmitters = true; break;
         }
+    f.hugeSpheres = hasHugeSphere(scene);
     f.thinLens = scene.camera.defocusAngleDegrees > 0.0f;
     f.background = scene.background.type;
     f.blackBackground = scene.background.type == BackgroundType::Constant && scene.background.color0 == vec3(0.0f);
@@ -114,6 +197,7 @@ std::string SceneFeatures::describe() const
     add(meshes, "meshes");
     add(media, "media");
     add(motionBlur, "motion-blur");
+    add(hugeSpheres, "huge-spheres");
     add(transformedInstances, "instances");
     add(lambertian, "lambertian");
     add(metal, "metal");
@@ -138,6 +222,7 @@ nlohmann::json SceneFeatures::toJson() const
             {"meshes", meshes},
             {"media", media},
             {"motion_blur", motionBlur},
+            {"huge_spheres", hugeSpheres},
             {"transformed_instances", transformedInstances},
             {"lambertian", lambertian},
             {"metal", metal},

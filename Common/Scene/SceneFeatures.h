@@ -13,6 +13,10 @@
 
 namespace rt
 {
+/// SceneFeatures::hugeSpheres: a near root's rounding above 1e-4 of the rest of the scene, 1/17 of a pixel of a
+/// 600-pixel image that frames it, at most (kSphereRootError is a bound of 8 roundings).
+inline constexpr float kHugeSphereTolerance = 1e-4f;
+
 struct SceneFeatures
 {
     // Geometry
@@ -21,6 +25,13 @@ struct SceneFeatures
     bool meshes = false; // triangles
     bool media = false; // constant media (their boundaries, the isotropic phase function)
     bool motionBlur = false; // a moving sphere: rays need their time
+    // A sphere (surface or medium boundary) so large against the rest of the scene that float's c = |o - centre|^2
+    // - r^2 of its ray quadratic cannot place a hit near its surface well enough: a near root's rounding,
+    // about kSphereRootError times its radius, above kHugeSphereTolerance of the size (bounding-box diagonal) of
+    // the region rays start from: every other primitive, the camera and the sphere's point nearest the camera
+    // (a 1e6-radius ground under a 6-unit light, 1.5 units below the camera). The GPU computes the exact c only
+    // then (Shared/SphereQuadratic.h); rtow's radius-1000 ground beside 22 units of spheres is not huge.
+    bool hugeSpheres = false;
     bool transformedInstances = false; // an instance whose transform is not the identity
     // Materials that some primitive uses
     bool lambertian = false;

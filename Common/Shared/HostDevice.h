@@ -264,10 +264,15 @@ RT_CONST(uint, kSpecIdLightSampler, 1u)   // RenderUniforms::lightSampler
 RT_CONST(uint, kSpecIdLightSelection, 2u) // RenderUniforms::lightSelection
 RT_CONST(uint, kSpecIdSampling, 3u)       // RenderUniforms::sampling
 RT_CONST(uint, kSpecIdFeatures, 4u)       // kFeature* bits
-RT_CONST(uint, kSpecIdCount, 5u)
+// 0: the sphere tests take float's c of their quadratic, for a scene without huge spheres (SceneFeatures::
+// hugeSpheres); else (kSpecDynamic included) the exact c where it cancels (Shared/SphereQuadratic.h). Not a
+// feature bit: the mixture, whose pipeline leaves the feature mask dynamic (docs/PERFORMANCE.md §4.3), sets
+// it too. The exact c's code alone, never run, cost the light book scenes 3-9 % on an H100 (§8.8).
+RT_CONST(uint, kSpecIdExactSphereC, 5u)
+RT_CONST(uint, kSpecIdCount, 6u)
 // Set by the pipeline's kind, not by the render (not in PipelineSpecialization's key): 1 in the wavefront
 // integrator's pipelines, where the intersection shaders find their path's pixel and sample in the queues.
-RT_CONST(uint, kSpecIdWavefront, 5u)
+RT_CONST(uint, kSpecIdWavefront, 6u)
 
 // The bits of kSpecIdFeatures (PipelineSpecialization.cpp sets them from rt::SceneFeatures and the uniforms).
 RT_CONST(uint, kFeatureTriangles, 0x1u)          // quads or meshes: Triangle.rchit's hit group

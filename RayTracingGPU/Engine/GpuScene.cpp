@@ -11,6 +11,7 @@
 #include "Sampling/LightBvh.h"
 #include "Sampling/LightPower.h"
 #include "Scene/Perlin.h"
+#include "Scene/SceneFeatures.h"
 #include "Vulkan/UploadBatch.h"
 
 namespace rt::gpu
@@ -63,7 +64,8 @@ std::vector<LightData> mixtureLightsOf(const Scene& scene)
 
 GpuScene::GpuScene(const vk::Device& device, const vk::CommandPool& pool, const Scene& scene,
                    const SceneLayout& layout, std::uint32_t maxImages, std::unique_ptr<GpuGeometry> previous)
-    : m_pipelineScene{featureBitsOf(scene, layout.hitGroups), layout.hitGroups, tracedPrimitivesOf(layout)},
+    : m_pipelineScene{featureBitsOf(scene, layout.hitGroups), featuresOf(scene).hugeSpheres, layout.hitGroups,
+                      tracedPrimitivesOf(layout)},
       m_samplesPerLaunch(scene.hasMotion() ? 1u : std::numeric_limits<std::uint32_t>::max())
 {
     checkImageLimits(device, scene, maxImages);

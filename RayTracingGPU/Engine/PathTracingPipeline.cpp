@@ -85,7 +85,7 @@ PathTracingPipeline::PathTracingPipeline(const vk::Device& device, const std::fi
 PipelineSpecialization PathTracingPipeline::specializationFor(const RenderUniforms& uniforms,
                                                               const PipelineScene& scene) const
 {
-    return PipelineSpecialization::of(m_specialize, uniforms, scene.features);
+    return PipelineSpecialization::of(m_specialize, uniforms, scene.features, scene.hugeSpheres);
 }
 
 const PathTracingPipeline::Compiled& PathTracingPipeline::compiled(const PipelineSpecialization& key) const

@@ -47,6 +47,7 @@ struct TargetBindings
 struct PipelineScene
 {
     std::uint32_t features = shader::kSpecDynamic; // featureBitsOf the scene
+    bool hugeSpheres = true; // SceneFeatures::hugeSpheres: the sphere tests need the exact c
     HitGroupLayout hitGroups = HitGroupLayout::all(); // the hit records its TLAS instances name
     std::uint64_t tracedPrimitives = 0; // per TLAS instance, its BLAS's triangles, spheres and media, summed
 };

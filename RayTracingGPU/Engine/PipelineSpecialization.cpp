@@ -75,30 +75,39 @@ PipelineSpecialization PipelineSpecialization::strategyOf(const RenderUniforms& 
     // Accumulate is random jitter to the shaders (the passes are the host's): one pipeline serves both.
     const PixelSampling sampling = u.sampling == PixelSampling::Accumulate ? PixelSampling::Random : u.sampling;
     s.constants[kSpecIdSampling] = static_cast<std::uint32_t>(sampling);
-    static_assert(kSpecIdCount == 5, "a new constant id needs its value here");
+    static_assert(kSpecIdCount == 6, "a new constant id needs its value here");
     return s;
 }
 
-PipelineSpecialization PipelineSpecialization::of(const RenderUniforms& u, std::uint32_t sceneFeatures)
+PipelineSpecialization PipelineSpecialization::of(const RenderUniforms& u, std::uint32_t sceneFeatures,
+                                                  bool hugeSpheres)
 {
     PipelineSpecialization s = strategyOf(u);
     s.constants[kSpecIdFeatures] = (sceneFeatures & ~(kFeatureThinLens | kFeatureGradientBackground)) |
                                    uniformFeatureBits(u);
+    s.constants[kSpecIdExactSphereC] = hugeSpheres ? 1u : 0u;
     return s;
 }
 
 PipelineSpecialization PipelineSpecialization::of(Specialize specialize, const RenderUniforms& u,
-                                                  std::uint32_t sceneFeatures)
+                                                  std::uint32_t sceneFeatures, bool hugeSpheres)
 {
     switch (specialize)
     {
     case Specialize::Off: return general();
     case Specialize::Strategy: return strategyOf(u);
     case Specialize::Full:
-        // Measured on the H100 (docs/PERFORMANCE.md §4.3): with any explicit feature mask, even one with every
-        // bit set, book 3's mixture renders cornell-box-lights 1.23-1.32x slower than with the mask left
-        // dynamic, while NEE + MIS renders it 1.46x faster. So the mixture keys on its strategy alone.
-        return u.estimator == Estimator::Mixture ? strategyOf(u) : of(u, sceneFeatures);
+        if (u.estimator == Estimator::Mixture)
+        {
+            // Measured on the H100 (docs/PERFORMANCE.md §4.3): with any explicit feature mask, even one with
+            // every bit set, book 3's mixture renders cornell-box-lights 1.23-1.32x slower than with the mask
+            // left dynamic, while NEE + MIS renders it 1.46x faster. So the mixture keys on its strategy and
+            // the sphere tests' c alone (which made the light book scenes 1.03-1.09x faster, §8.8).
+            PipelineSpecialization s = strategyOf(u);
+            s.constants[kSpecIdExactSphereC] = hugeSpheres ? 1u : 0u;
+            return s;
+        }
+        return of(u, sceneFeatures, hugeSpheres);
     }
     return general();
 }
@@ -121,6 +130,7 @@ std::string PipelineSpecialization::describe() const
                     " selection=" +
                     value(kSpecIdLightSelection, [](std::uint32_t v) { return toString(LightSelection(v)); }) +
                     " sampling=" + value(kSpecIdSampling, [](std::uint32_t v) { return toString(PixelSampling(v)); }) +
+                    " sphere-c=" + value(kSpecIdExactSphereC, [](std::uint32_t v) { return v != 0u ? "exact" : "float"; }) +
                     " ";
     s += "features=";
     if (features() == kSpecDynamic)

@@ -5,7 +5,7 @@
 // the materials and texture kinds its primitives use, the shapes of its lights) and from the uniforms (thin
 // lens, gradient background); kSpecDynamic there is every feature. Specialised, the driver folds away every
 // estimator, sampler and selection the render does not use (1.1x to 5x faster on an H100, docs/PERFORMANCE.md
-// §4.2) and the code of every feature the scene lacks, and the pipeline holds only the hit groups of the
+// §4.2), the code of every feature the scene lacks and, without huge spheres, the sphere tests' exact c (§8.8), and the pipeline holds only the hit groups of the
 // scene's geometry (hitGroups()). The value is the key of the pipeline cache (PathTracingPipeline): two
 // renders with equal keys share one compilation. The general pipeline is what every render used before
 // specialisation, kept for comparison (--specialize off).
@@ -42,11 +42,13 @@ struct PipelineSpecialization
     static PipelineSpecialization general();
     /// The settings of `uniforms` that have a constant id; every feature.
     static PipelineSpecialization strategyOf(const shader::RenderUniforms& uniforms);
-    /// strategyOf(uniforms) and the features: `sceneFeatures` (featureBitsOf) with the uniforms' own bits.
-    static PipelineSpecialization of(const shader::RenderUniforms& uniforms, std::uint32_t sceneFeatures);
-    /// What `specialize` asks for a render of `uniforms` on a scene of `sceneFeatures`.
+    /// strategyOf(uniforms) and the features: `sceneFeatures` (featureBitsOf) with the uniforms' own bits, and
+    /// the exact c in the sphere tests only with `hugeSpheres` (SceneFeatures::hugeSpheres).
+    static PipelineSpecialization of(const shader::RenderUniforms& uniforms, std::uint32_t sceneFeatures,
+                                     bool hugeSpheres = true);
+    /// What `specialize` asks for a render of `uniforms` on a scene of `sceneFeatures` and `hugeSpheres`.
     static PipelineSpecialization of(Specialize specialize, const shader::RenderUniforms& uniforms,
-                                     std::uint32_t sceneFeatures);
+                                     std::uint32_t sceneFeatures, bool hugeSpheres = true);
 
     std::uint32_t features() const { return constants[shader::kSpecIdFeatures]; }
     bool has(std::uint32_t featureBit) const { return (features() & featureBit) != 0u; }

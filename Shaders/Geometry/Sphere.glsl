@@ -7,6 +7,10 @@
 #include "Math/Constants.glsl"
 #include "Shared/SphereQuadratic.h"
 
+#ifndef RT_EXACT_SPHERE_C
+#define RT_EXACT_SPHERE_C true
+#endif
+
 struct SphereRoots
 {
     float t0; // t0 <= t1
@@ -29,7 +33,9 @@ bool sphereRoots(vec3 o, vec3 d, vec3 center, float radius, out SphereRoots root
     float q = -(halfB + (halfB >= 0.0 ? 1.0 : -1.0) * sqrt(a * discriminantOverA));
     if (q == 0.0)
         return false; // the origin is on the sphere and the line only grazes it
-    float c = sphereQuadraticCForNearRoot(f, radius, q); // exact where it cancels and the near root is surely ahead
+    // Exact where it cancels and the near root is surely ahead, unless the pipeline is compiled for a scene
+    // without huge spheres (Specialization.glsl), where float's c places every hit within 1e-4 of the scene.
+    float c = RT_EXACT_SPHERE_C ? sphereQuadraticCForNearRoot(f, radius, q) : dot(f, f) - r2;
     float r0 = c / q;
     float r1 = q / a;
     roots.t0 = min(r0, r1);

@@ -55,5 +55,51 @@ TEST(SceneFeatures, UnusedMaterialsAndTexturesDoNotCount)
     EXPECT_EQ(f.toJson()["spheres"], true);
     EXPECT_EQ(f.toJson()["metal"], false);
 }
+/// A ground sphere of `radius` whose top touches y = 0 (a medium's boundary if `medium`), through an instance
+/// scaled by `scale`, under a 6x6 light 20 units up, seen from 1.5 units above it: the region rays start from
+/// is 21.7 units across, so the ground is huge above a radius of 21.7 kHugeSphereTolerance / kSphereRootError
+/// = 4,550.
+Scene groundUnderLight(float radius, float scale = 1.0f, bool medium = false)
+{
+    SceneBuilder b("ground");
+    const std::uint32_t ground = b.group("ground");
+    if (medium)
+        b.sphereMedium(ground, {0.0f, -radius / scale, 0.0f}, radius / scale, 0.01f, vec3(0.5f));
+    else
+        b.sphere(ground, {0.0f, -radius / scale, 0.0f}, radius / scale, b.lambertian(vec3(0.5f)));
+    b.instance(ground, Transform::scale(vec3(scale)));
+    b.quad(b.world(), {-3.0f, 20.0f, -3.0f}, {6.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 6.0f}, b.diffuseLight(vec3(5.0f)));
+    b.scene().camera.lookFrom = {0.0f, 1.5f, 3.0f};
+    b.scene().camera.lookAt = vec3(0.0f);
+    return b.finish();
+}
+
+// Only where float's c of the ray-sphere quadratic would misplace hits by more than 1e-4 of the scene do the GPU's
+// sphere tests pay for the exact c: the threshold from both sides, an instance's scale, a medium's boundary, a
+// lone planet under the camera, and none of the catalogue's scenes (rtow's radius-1000 ground included).
+TEST(SceneFeatures, HugeSpheresAreThoseFloatsCPlacesTooCoarsely)
+{
+    EXPECT_FALSE(featuresOf(groundUnderLight(4000.0f)).hugeSpheres);
+    EXPECT_TRUE(featuresOf(groundUnderLight(5500.0f)).hugeSpheres);
+    EXPECT_TRUE(featuresOf(groundUnderLight(1e6f)).hugeSpheres);
+    EXPECT_TRUE(featuresOf(groundUnderLight(6000.0f, 6.0f)).hugeSpheres) << "1000 object units, scaled 6x";
+    EXPECT_FALSE(featuresOf(groundUnderLight(4000.0f, 0.5f)).hugeSpheres);
+    EXPECT_TRUE(featuresOf(groundUnderLight(1e6f, 1.0f, true)).hugeSpheres) << "a medium's boundary";
+    EXPECT_FALSE(featuresOf(groundUnderLight(4000.0f, 1.0f, true)).hugeSpheres);
+    EXPECT_NE(featuresOf(groundUnderLight(1e6f)).describe().find("huge-spheres"), std::string::npos);
+
+    const auto lone = [](float radius, const vec3& camera) {
+        SceneBuilder b("lone");
+        b.sphere(b.world(), {0.0f, -radius, 0.0f}, radius, b.lambertian(vec3(0.5f)));
+        b.scene().camera.lookFrom = camera;
+        return featuresOf(b.finish()).hugeSpheres;
+    };
+    EXPECT_TRUE(lone(6.4e6f, {0.0f, 1.5f, 3.0f})) << "a planet seen from 3.4 units";
+    EXPECT_FALSE(lone(1.0f, {0.0f, 1.5f, 3.0f}));
+    EXPECT_FALSE(lone(1.0f, {0.0f, -1.0f, 0.0f})) << "the camera at the centre";
+
+    for (const SceneInfo& info : sceneCatalogue())
+        EXPECT_FALSE(featuresOf(makeScene(info.id)).hugeSpheres) << info.id;
+}
 } // namespace
 } // namespace rt

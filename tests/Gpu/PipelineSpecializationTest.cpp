@@ -50,8 +50,35 @@ TEST(PipelineSpecialization, ModesKeyOnWhatTheySay)
     mixture.lightSelection = LightSelection::Uniform;
     EXPECT_EQ(a, PipelineSpecialization::of(mixture, scene));
     // On the H100 the mixture ran slower with any explicit feature mask: --specialize on keys it on its strategy.
-    EXPECT_EQ(PipelineSpecialization::of(Specialize::Full, mixture, scene), PipelineSpecialization::strategyOf(mixture));
+    PipelineSpecialization mixtureFull = PipelineSpecialization::of(Specialize::Full, mixture, scene);
+    EXPECT_EQ(mixtureFull.constants[kSpecIdExactSphereC], 1u);
+    mixtureFull.constants[kSpecIdExactSphereC] = kSpecDynamic;
+    EXPECT_EQ(mixtureFull, PipelineSpecialization::strategyOf(mixture)) << "but the sphere tests' c (below)";
     EXPECT_NE(PipelineSpecialization::of(Specialize::Full, u, scene), PipelineSpecialization::strategyOf(u));
+}
+
+// The sphere tests' exact c (kSpecIdExactSphereC): left out by --specialize on for a scene without huge spheres,
+// the mixture's pipeline included (its feature mask stays dynamic); kept by the general and strategy-only ones.
+TEST(PipelineSpecialization, ExactSphereCOnlyForHugeSpheres)
+{
+    const std::uint32_t scene = kFeatureSpheres | kFeatureLambertian;
+    for (const Estimator e : {Estimator::Mixture, Estimator::NeeMis})
+    {
+        const RenderUniforms u = uniformsWith(e, false, BackgroundType::Constant);
+        const PipelineSpecialization small = PipelineSpecialization::of(Specialize::Full, u, scene, false);
+        EXPECT_EQ(small.constants[kSpecIdExactSphereC], 0u);
+        EXPECT_NE(small.describe().find("sphere-c=float"), std::string::npos) << small.describe();
+        EXPECT_EQ(PipelineSpecialization::of(Specialize::Full, u, scene, true).constants[kSpecIdExactSphereC], 1u);
+        EXPECT_NE(PipelineSpecialization::of(Specialize::Full, u, scene, true), small) << "two pipelines";
+        EXPECT_EQ(PipelineSpecialization::of(Specialize::Strategy, u, scene, false).constants[kSpecIdExactSphereC],
+                  kSpecDynamic);
+        EXPECT_EQ(PipelineSpecialization::of(Specialize::Off, u, scene, false), PipelineSpecialization::general());
+    }
+    EXPECT_EQ(PipelineSpecialization::of(Specialize::Full, uniformsWith(Estimator::Mixture, false, BackgroundType::Constant),
+                                         scene, false)
+                  .features(),
+              kSpecDynamic)
+        << "the mixture's feature mask stays dynamic";
 }
 
 TEST(PipelineSpecialization, CatalogueScenesHaveTheirFeatureBits)
