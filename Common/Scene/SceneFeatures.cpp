@@ -50,6 +50,7 @@ void useMaterial(const Scene& scene, std::uint32_t material, std::vector<bool>& 
     useTexture(scene, m.albedoTexture, f);
     useTexture(scene, m.emissionTexture, f);
 }
+
 /// The largest factor by which `t` stretches a length (the longest column of its linear part).
 float lengthScale(const Transform& t)
 {
@@ -101,8 +102,11 @@ bool hasHugeSphere(const Scene& scene)
             if (scale * g.spheres[k].radius > largest.worldRadius)
                 largest = {i, false, k, scale * g.spheres[k].radius};
         for (std::size_t k = 0; k < g.media.size(); ++k)
-            if (g.media[k].boundary == MediumDesc::Boundary::Sphere && scale * g.media[k].radius > largest.worldRadius)
+        {
+            const bool sphere = g.media[k].boundary == MediumDesc::Boundary::Sphere;
+            if (sphere && scale * g.media[k].radius > largest.worldRadius)
                 largest = {i, true, k, scale * g.media[k].radius};
+        }
     }
     if (largest.worldRadius < 0.0f)
         return false;

@@ -97,17 +97,15 @@ PipelineSpecialization PipelineSpecialization::of(Specialize specialize, const R
     case Specialize::Off: return general();
     case Specialize::Strategy: return strategyOf(u);
     case Specialize::Full:
-        if (u.estimator == Estimator::Mixture)
-        {
-            // Measured on the H100 (docs/PERFORMANCE.md §4.3): with any explicit feature mask, even one with
-            // every bit set, book 3's mixture renders cornell-box-lights 1.23-1.32x slower than with the mask
-            // left dynamic, while NEE + MIS renders it 1.46x faster. So the mixture keys on its strategy and
-            // the sphere tests' c alone (which made the light book scenes 1.03-1.09x faster, §8.8).
-            PipelineSpecialization s = strategyOf(u);
-            s.constants[kSpecIdExactSphereC] = hugeSpheres ? 1u : 0u;
-            return s;
-        }
-        return of(u, sceneFeatures, hugeSpheres);
+    {
+        // Measured on the H100 (docs/PERFORMANCE.md §4.3): with any explicit feature mask, even one with every
+        // bit set, book 3's mixture renders cornell-box-lights 1.23-1.32x slower than with the mask left
+        // dynamic, while NEE + MIS renders it 1.46x faster. So the mixture keys on its strategy and the sphere
+        // tests' c alone (the c made the light book scenes 1.03-1.09x faster, §8.8).
+        PipelineSpecialization s = u.estimator == Estimator::Mixture ? strategyOf(u) : of(u, sceneFeatures);
+        s.constants[kSpecIdExactSphereC] = hugeSpheres ? 1u : 0u;
+        return s;
+    }
     }
     return general();
 }
@@ -130,7 +128,8 @@ std::string PipelineSpecialization::describe() const
                     " selection=" +
                     value(kSpecIdLightSelection, [](std::uint32_t v) { return toString(LightSelection(v)); }) +
                     " sampling=" + value(kSpecIdSampling, [](std::uint32_t v) { return toString(PixelSampling(v)); }) +
-                    " sphere-c=" + value(kSpecIdExactSphereC, [](std::uint32_t v) { return v != 0u ? "exact" : "float"; }) +
+                    " sphere-c=" +
+                    value(kSpecIdExactSphereC, [](std::uint32_t v) { return v != 0u ? "exact" : "float"; }) +
                     " ";
     s += "features=";
     if (features() == kSpecDynamic)

@@ -74,10 +74,8 @@ TEST(PipelineSpecialization, ExactSphereCOnlyForHugeSpheres)
                   kSpecDynamic);
         EXPECT_EQ(PipelineSpecialization::of(Specialize::Off, u, scene, false), PipelineSpecialization::general());
     }
-    EXPECT_EQ(PipelineSpecialization::of(Specialize::Full, uniformsWith(Estimator::Mixture, false, BackgroundType::Constant),
-                                         scene, false)
-                  .features(),
-              kSpecDynamic)
+    const RenderUniforms mixture = uniformsWith(Estimator::Mixture, false, BackgroundType::Constant);
+    EXPECT_EQ(PipelineSpecialization::of(Specialize::Full, mixture, scene, false).features(), kSpecDynamic)
         << "the mixture's feature mask stays dynamic";
 }
 
