@@ -13,9 +13,9 @@
 
 RT_SHADER_NAMESPACE_BEGIN
 
-/// The interleave of a batch cut into several bands: one pass of the order (ceil(height / 16) rows, the
-/// first band of a frame) holds every sixteenth row of the frame, and any band of a pass or more holds a row
-/// of every whole block of sixteen rows, top to bottom.
+/// The interleave of a batch cut into several bands: one pass of the order (ceil(height / 16) rows) holds
+/// every sixteenth row of the frame, and any band of a pass or more (a capped first band of a frame, most
+/// often) holds a row of every whole block of sixteen rows, top to bottom.
 RT_CONST(uint, kBandInterleave, 16u)
 
 /// The image row at position `j` (< height) of a frame's row order: with `interleave` k > 1, the rows r with

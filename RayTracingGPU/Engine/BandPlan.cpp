@@ -10,7 +10,7 @@ namespace rt::gpu
 {
 BandPlan::BandPlan(std::uint32_t height, std::uint32_t firstRows)
     : m_pass((std::max(height, 1u) + shader::kBandInterleave - 1) / shader::kBandInterleave),
-      m_work(std::clamp(firstRows, 1u, m_pass))
+      m_work(std::clamp(firstRows, 1u, std::max(height, 1u)))
 {
 }
 

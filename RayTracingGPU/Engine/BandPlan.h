@@ -1,8 +1,9 @@
 // How GpuEngine cuts a batch (Render/BatchPlan.h: a few samples of every pixel) into submissions of rows. The
 // engine cancels between submissions, so each must stay near kBatchTargetSeconds on any device: one sample of
-// a 200x200 heavy scene is seconds on lavapipe. A frame's first band is one pass of the interleaved order
-// (every sixteenth row: ceil(height / 16) rows) at one sample; each band after is sized by the time the last
-// one took.
+// a 200x200 heavy scene is seconds on lavapipe. A frame's first band is its first sample, the whole frame,
+// or as many rows of the interleaved order (every sixteenth row first) as the engine's cap allows (a sixteenth
+// of its paths per batch: a pass or less on a CPU device's large image); each band after is sized by the time
+// the last one took.
 //
 // A batch of several bands takes its rows in the interleaved order (Shared/BandOrder.h), so that every band
 // of a pass or more, the first included, samples the whole frame and its rate holds for the next. Bands of
@@ -20,9 +21,10 @@ namespace rt::gpu
 class BandPlan
 {
 public:
-    /// A frame of `height` (>= 1) rows: the first band is one pass, ceil(height / 16) rows, at one sample, but
-    /// at most `firstRows` (>= 1): a slow device's large image (800x800 of many-lights is 24 ms a row on
-    /// lavapipe, so a pass of 50 rows ran past the 1 s a Ctrl-C may take).
+    /// A frame of `height` (>= 1) rows: the first band is the frame at one sample, but at most `firstRows`
+    /// (>= 1): a slow device's large image (800x800 of many-lights is 24 ms a row on lavapipe, so a pass of 50
+    /// rows ran past the 1 s a Ctrl-C may take). A first band of one pass, the rule before, cost the H100 a
+    /// submission: 0-3 % of a 256-spp light book render (docs/PERFORMANCE.md §8.8).
     explicit BandPlan(std::uint32_t height, std::uint32_t firstRows = ~0u);
 
     /// Rows of the next band of a batch of `samples` per pixel, of which `rowsLeft` (>= 1) rows are not

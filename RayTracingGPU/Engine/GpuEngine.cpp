@@ -274,8 +274,8 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
         std::chrono::duration<double>(std::chrono::steady_clock::now() - compileStart).count();
     e.target->reset(e.uniforms);
     e.clear();
-    // The first band: a pass, but at most a sixteenth of the engine's paths per batch (a CPU device's 64 K are
-    // a fraction of a second; a GPU's 16 M never bind).
+    // The first band: the frame's first sample, but at most a sixteenth of the engine's paths per batch (a CPU
+    // device's 64 K are a fraction of a second; a GPU's 16 M bind only above a million pixels).
     const std::uint64_t firstBandRows = e.pathsPerBatch / (std::uint64_t(shader::kBandInterleave) * width);
     e.bands = BandPlan(height, static_cast<std::uint32_t>(std::clamp<std::uint64_t>(firstBandRows, 1, height)));
     e.waveSegments = kFirstWaveSegments;

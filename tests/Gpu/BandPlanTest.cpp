@@ -1,6 +1,6 @@
 // Engine/BandPlan and Shared/BandOrder.h: how the GPU engine cuts a batch into submissions of rows, and the
 // interleaved row order that makes every band a sample of the whole frame. Host-only (label unit); the
-// shaders' side of the order is checked by the GPU tests FirstBandTracesEverySixteenthRow (the rows one pass
+// shaders' side of the order is checked by the GPU tests OnePassTracesEverySixteenthRow (the rows one pass
 // traces) and BandsGiveTheImageOfOneSubmission (every pixel once per sample, whatever the bands).
 #include <gtest/gtest.h>
 
@@ -46,7 +46,7 @@ TEST(BandOrder, TakesEverySixteenthRowFirstThenTheNextPhase)
 
 TEST(BandOrder, EveryBandOfAPassSpansTheFrame)
 {
-    // Wherever a band of one pass (ceil(height / 16) rows, BandPlan's first band) starts, it holds a row of
+    // Wherever a band of one pass (ceil(height / 16) rows) starts, it holds a row of
     // every whole block of sixteen rows, top to bottom (the last rows, height mod 16 of them, only the longer
     // phases reach): its time is a sample of the whole frame's.
     for (const std::uint32_t height : {17u, 200u, 337u, 600u})
@@ -68,22 +68,28 @@ TEST(BandOrder, EveryBandOfAPassSpansTheFrame)
     }
 }
 
-TEST(BandPlan, FirstBandIsOnePassAtOneSampleInTheInterleavedOrder)
+TEST(BandPlan, FirstBandIsTheFrameAtOneSampleUnlessCapped)
 {
     for (const std::uint32_t height : {1u, 5u, 17u, 200u, 337u, 600u})
     {
         const BandPlan plan(height);
         const std::uint32_t rows = plan.nextRows(1, height);
-        EXPECT_EQ(rows, plan.passRows()) << height;
-        EXPECT_EQ(BandPlan::interleaveFor(rows, height), height > 1 ? kBandInterleave : 1u) << height;
+        EXPECT_EQ(rows, height) << height;
+        EXPECT_EQ(BandPlan::interleaveFor(rows, height), 1u) << "one band: the rows in order";
     }
     EXPECT_EQ(BandPlan(337).passRows(), 22u); // 337 = 16 x 21 + 1: phase 0 holds 22 rows, 0 to 336
+    // Capped below the frame, the first band takes the interleaved order's first rows (a pass or more spans
+    // the frame), the frame's rows spread evenly over the bands the cap allows: 12 of at most 30 rows.
+    const BandPlan capped(337, 30);
+    EXPECT_EQ(capped.nextRows(1, 337), 29u);
+    EXPECT_EQ(BandPlan::interleaveFor(29, 337), kBandInterleave);
 }
 
-TEST(BandPlan, AFastFirstBandLetsTheRestOfTheFrameGoInOneBand)
+TEST(BandPlan, AFastFirstPassLetsTheRestOfTheFrameGoInOneBand)
 {
-    BandPlan plan(337);
+    BandPlan plan(337, 22); // a first band of one pass
     const std::uint32_t first = plan.nextRows(1, 337);
+    ASSERT_EQ(first, plan.passRows());
     plan.record(first, 1, 1e-5); // far under the target: the growth limit decides
     EXPECT_EQ(plan.nextRows(1, 337 - first), 337 - first);
     plan.record(337 - first, 1, 1e-4);
@@ -100,7 +106,7 @@ TEST(BandPlan, FirstBandKeepsToItsCap)
     EXPECT_EQ(plan.nextRows(1, 800), 5u);
     plan.record(5, 1, 1e-6);
     EXPECT_EQ(plan.nextRows(1, 795), 20u) << "a band shorter than a pass: 4x";
-    EXPECT_EQ(BandPlan(800, 500).nextRows(1, 800), 50u) << "a cap above a pass leaves the pass";
+    EXPECT_EQ(BandPlan(800, 500).nextRows(1, 800), 400u) << "a cap above a pass: two even bands";
 }
 
 TEST(BandPlan, ABandShorterThanAPassGrowsAtMostFourTimes)

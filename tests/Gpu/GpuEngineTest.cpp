@@ -247,9 +247,9 @@ TEST_F(GpuProgress, BandsGiveTheImageOfOneSubmission)
     expectBandsGiveTheImageOfOneSubmission("cornell-box-lights", 24);
 }
 
-TEST_F(GpuProgress, FirstBandTracesEverySixteenthRow)
+TEST_F(GpuProgress, OnePassTracesEverySixteenthRow)
 {
-    expectFirstBandTracesEverySixteenthRow(GpuIntegrator::Megakernel);
+    expectOnePassTracesEverySixteenthRow(GpuIntegrator::Megakernel);
 }
 
 TEST_F(GpuProgress, CancelStopsBetweenDispatchesWithTheEstimateSoFar)

@@ -125,7 +125,7 @@ void expectBandsGiveTheImageOfOneSubmission(const std::string& sceneId, int widt
     EXPECT_EQ(banded.image.pixels(), whole.image.pixels());
 }
 
-void expectFirstBandTracesEverySixteenthRow(GpuIntegrator integrator)
+void expectOnePassTracesEverySixteenthRow(GpuIntegrator integrator)
 {
     SceneBuilder b("sky");
     b.sphere(b.world(), vec3(0.0f, 0.0f, 50.0f), 0.1f, b.lambertian(vec3(0.5f))); // behind the camera

@@ -40,10 +40,10 @@ void expectCancelInsideABandedBatchPutsTheBatchBack(const std::string& sceneId, 
 /// expects the same image bit for bit: every pixel traced once per sample, whatever the bands.
 void expectBandsGiveTheImageOfOneSubmission(const std::string& sceneId, int width);
 
-/// Traces one launch of the first band of a frame, one pass of the interleaved order (Shared/BandOrder.h), with
-/// `integrator` (Megakernel or Wavefront: the shared engine must allow it) on a sky of radiance 1, 24x37 px at
-/// one sample, and expects exactly the rows r = 0 mod 16 traced: the shaders' side of the order.
-void expectFirstBandTracesEverySixteenthRow(GpuIntegrator integrator);
+/// Traces one launch of one pass of the interleaved order (Shared/BandOrder.h: the first rows of a capped first
+/// band) with `integrator` (Megakernel or Wavefront: the shared engine must allow it) on a sky of radiance 1,
+/// 24x37 px at one sample, and expects exactly the rows r = 0 mod 16 traced: the shaders' side of the order.
+void expectOnePassTracesEverySixteenthRow(GpuIntegrator integrator);
 
 using ::rt::test::MeanAndError;
 using ::rt::test::pixelStatistics;

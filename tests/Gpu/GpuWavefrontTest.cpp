@@ -172,9 +172,9 @@ TEST_F(GpuWavefront, BandsGiveTheImageOfOneSubmission)
 }
 
 // A wave's pixel indices are positions in the frame's row order: one pass traces every sixteenth row.
-TEST_F(GpuWavefront, FirstBandTracesEverySixteenthRow)
+TEST_F(GpuWavefront, OnePassTracesEverySixteenthRow)
 {
-    expectFirstBandTracesEverySixteenthRow(GpuIntegrator::Wavefront);
+    expectOnePassTracesEverySixteenthRow(GpuIntegrator::Wavefront);
 }
 
 // Each kernel's GPU time is in the stats (a timestamp after every kernel), within the launches' own total.
