@@ -17,6 +17,14 @@ Aabb SphereDesc::bounds() const
     return box;
 }
 
+Aabb QuadDesc::bounds() const
+{
+    Aabb box(q, q + u + v);
+    box.expand(q + u);
+    box.expand(q + v);
+    return box;
+}
+
 Aabb MeshData::bounds() const
 {
     Aabb box;
@@ -85,12 +93,7 @@ Aabb Scene::bounds() const
         for (const SphereDesc& s : g.spheres)
             local.expand(s.bounds());
         for (const QuadDesc& q : g.quads)
-        {
-            local.expand(q.q);
-            local.expand(q.q + q.u);
-            local.expand(q.q + q.v);
-            local.expand(q.q + q.u + q.v);
-        }
+            local.expand(q.bounds());
         for (const MeshRef& m : g.meshes)
             local.expand(meshes[m.mesh].bounds());
         for (const MediumDesc& m : g.media)

@@ -53,6 +53,8 @@ struct QuadDesc
     vec3 u{1.0f, 0.0f, 0.0f};
     vec3 v{0.0f, 1.0f, 0.0f};
     std::uint32_t material = 0;
+
+    Aabb bounds() const;
 };
 
 /// An indexed triangle mesh (counter-clockwise front faces). Vertex normals and uvs are optional.

@@ -76,12 +76,7 @@ Aabb groupBoundsBut(const Scene& scene, const GroupDesc& g, bool skipMedium, std
         if (skipMedium || i != skip)
             box.expand(g.spheres[i].bounds());
     for (const QuadDesc& q : g.quads)
-    {
-        box.expand(q.q);
-        box.expand(q.q + q.u + q.v);
-        box.expand(q.q + q.u);
-        box.expand(q.q + q.v);
-    }
+        box.expand(q.bounds());
     for (const MeshRef& m : g.meshes)
         box.expand(scene.meshes[m.mesh].bounds());
     for (std::size_t i = 0; i < g.media.size(); ++i)

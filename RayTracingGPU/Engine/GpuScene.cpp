@@ -60,12 +60,18 @@ std::vector<LightData> mixtureLightsOf(const Scene& scene)
     std::copy_n(scene.lights.begin(), std::min<std::size_t>(scene.lights.size(), lights.size()), lights.begin());
     return lights;
 }
+/// What the pipelines need of `scene`: its features walked once (meshes' materials and bounds included).
+PipelineScene pipelineSceneOf(const Scene& scene, const SceneLayout& layout)
+{
+    const SceneFeatures features = featuresOf(scene);
+    return {featureBitsOf(scene, features, layout.hitGroups), features.hugeSpheres, layout.hitGroups,
+            tracedPrimitivesOf(layout)};
+}
 } // namespace
 
 GpuScene::GpuScene(const vk::Device& device, const vk::CommandPool& pool, const Scene& scene,
                    const SceneLayout& layout, std::uint32_t maxImages, std::unique_ptr<GpuGeometry> previous)
-    : m_pipelineScene{featureBitsOf(scene, layout.hitGroups), featuresOf(scene).hugeSpheres, layout.hitGroups,
-                      tracedPrimitivesOf(layout)},
+    : m_pipelineScene{pipelineSceneOf(scene, layout)},
       m_samplesPerLaunch(scene.hasMotion() ? 1u : std::numeric_limits<std::uint32_t>::max())
 {
     checkImageLimits(device, scene, maxImages);

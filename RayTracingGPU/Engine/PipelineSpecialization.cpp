@@ -1,7 +1,6 @@
 #include "Engine/PipelineSpecialization.h"
 
 #include "Render/RenderSettings.h"
-#include "Scene/SceneFeatures.h"
 
 namespace rt::gpu
 {
@@ -148,7 +147,11 @@ std::string PipelineSpecialization::describe() const
 
 std::uint32_t featureBitsOf(const Scene& scene, const HitGroupLayout& hitGroups)
 {
-    const SceneFeatures f = featuresOf(scene);
+    return featureBitsOf(scene, featuresOf(scene), hitGroups);
+}
+
+std::uint32_t featureBitsOf(const Scene& scene, const SceneFeatures& f, const HitGroupLayout& hitGroups)
+{
     std::uint32_t bits = 0;
     const auto set = [&bits](bool on, std::uint32_t bit) { bits |= on ? bit : 0u; };
     set(hitGroups.has(HitGroupKind::Triangles), kFeatureTriangles);

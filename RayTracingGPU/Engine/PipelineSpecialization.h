@@ -18,6 +18,7 @@
 
 #include "RayTracing/HitGroupLayout.h"
 #include "Scene/Scene.h"
+#include "Scene/SceneFeatures.h"
 #include "Shared/HostDevice.h"
 
 namespace rt::gpu
@@ -65,4 +66,6 @@ struct PipelineSpecialization
 /// background): SceneFeatures (Scene/SceneFeatures.h), the shapes of every light (emitters and the mixture's
 /// sampling targets), and the geometry kinds of its TLAS instances, `hitGroups` (SceneLayout::hitGroups).
 std::uint32_t featureBitsOf(const Scene& scene, const HitGroupLayout& hitGroups);
+/// The same from the scene's `features` (featuresOf(scene)), computed once by a caller that needs them too.
+std::uint32_t featureBitsOf(const Scene& scene, const SceneFeatures& features, const HitGroupLayout& hitGroups);
 } // namespace rt::gpu
