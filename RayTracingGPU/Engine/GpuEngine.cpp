@@ -275,7 +275,7 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     e.target->reset(e.uniforms);
     e.clear();
     // The first band: the frame's first sample, but at most a sixteenth of the engine's paths per batch (a CPU
-    // device's 64 K are a fraction of a second; a GPU's 16 M bind only above a million pixels).
+    // device's 64 K are a fraction of a second; a GPU's 268 M bind only above 16 M pixels).
     const std::uint64_t firstBandRows = e.pathsPerBatch / (std::uint64_t(shader::kBandInterleave) * width);
     e.bands = BandPlan(height, static_cast<std::uint32_t>(std::clamp<std::uint64_t>(firstBandRows, 1, height)));
     e.waveSegments = kFirstWaveSegments;

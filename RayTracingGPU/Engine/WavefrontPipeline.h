@@ -40,7 +40,8 @@ struct Wave
 
 /// The waves of `count` samples per pixel from `firstSample` on over `extent` (rows from position `firstRow` on of
 /// the frame's row order; a wave's pixels are indices position * width + x of that order), at
-/// most `capacity` paths each, in the order they must run: a pixel's earlier samples first. Pure.
+/// most `capacity` paths each, the pixels spread evenly over the waves of a sample range, in the order they must
+/// run: a pixel's earlier samples first. Pure.
 std::vector<Wave> planWaves(std::uint32_t firstSample, std::uint32_t count, VkExtent2D extent, std::uint32_t firstRow,
                             std::uint32_t capacity);
 
