@@ -19,8 +19,8 @@ std::uint32_t waveCapacityFor(bool cpuDevice, std::uint64_t deviceLocalBytes)
         return std::uint32_t(1) << 16;
     // A sixteenth of the device's memory at most: the scene and the images keep the rest. Each wave ends with
     // launches over its last few long paths (about 25 us each on an H100 at depth 50), so fewer, larger waves
-    // are faster: 16 M paths (then the engine's paths per batch) rendered book 2's BSDF sampling of cornell-box-lights
-    // 1.19x faster than 4 M there (129 against 153 ms).
+    // are faster: 16 M paths (then the engine's paths per batch) rendered book 2's BSDF sampling of
+    // cornell-box-lights 1.19x faster than 4 M there (129 against 153 ms).
     std::uint32_t capacity = std::uint32_t(1) << 24;
     while (capacity > (1u << 16) && std::uint64_t(capacity) * kPathBytes > deviceLocalBytes / 16)
         capacity /= 2;
