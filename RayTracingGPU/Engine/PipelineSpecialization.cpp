@@ -101,7 +101,9 @@ PipelineSpecialization PipelineSpecialization::of(Specialize specialize, const R
         // bit set, book 3's mixture renders cornell-box-lights 1.23-1.32x slower than with the mask left
         // dynamic, while NEE + MIS renders it 1.46x faster. So the mixture keys on its strategy and the sphere
         // tests' c alone (the c made the light book scenes 1.03-1.09x faster, §8.8).
-        PipelineSpecialization s = u.estimator == Estimator::Mixture ? strategyOf(u) : of(u, sceneFeatures);
+        if (u.estimator != Estimator::Mixture)
+            return of(u, sceneFeatures, hugeSpheres);
+        PipelineSpecialization s = strategyOf(u);
         s.constants[kSpecIdExactSphereC] = hugeSpheres ? 1u : 0u;
         return s;
     }
