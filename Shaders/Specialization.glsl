@@ -15,6 +15,7 @@ layout(constant_id = kSpecIdLightSelection) const uint kSpecLightSelection = kSp
 layout(constant_id = kSpecIdSampling) const uint kSpecSampling = kSpecDynamic;
 layout(constant_id = kSpecIdFeatures) const uint kSpecFeatures = kSpecDynamic;
 layout(constant_id = kSpecIdExactSphereC) const uint kSpecExactSphereC = kSpecDynamic;
+layout(constant_id = kSpecIdHitUv) const uint kSpecHitUv = kSpecDynamic;
 // Not a render setting: 1 in the wavefront integrator's pipelines, 0 in the megakernel's.
 layout(constant_id = kSpecIdWavefront) const uint kSpecWavefront = 0u;
 const bool kWavefront = kSpecWavefront != 0u;
@@ -58,5 +59,8 @@ const bool kHasGradientBackground = (kSpecFeatures & kFeatureGradientBackground)
 #endif
 const bool kExactSphereC = kSpecExactSphereC != 0u;
 #define RT_EXACT_SPHERE_C kExactSphereC
+
+// Whether the closest-hit shaders compute a hit's uv (read by image textures only).
+const bool kHitUv = kSpecHitUv != 0u;
 
 #endif

@@ -23,7 +23,7 @@ void main()
 
     payload.position = gl_ObjectToWorldEXT * vec4(objectPoint, 1.0);
     payload.normal = normalize(q * mat3(gl_WorldToObjectEXT));
-    payload.uv = sphereUv(q);
+    payload.uv = kHitUv ? sphereUv(q) : vec2(0.0);
     payload.material = sphere.material;
     payload.lightSlot = primitiveLightSlot(record, uint(gl_PrimitiveID));
     payload.flags = 0u;

@@ -31,7 +31,9 @@ void main()
 
     payload.position = b0 * p0 + b1 * p1 + b2 * p2;
     payload.normal = normalize(cross(p1 - p0, p2 - p0));
-    if (record.firstUv == kQuadUvs)
+    if (!kHitUv)
+        payload.uv = vec2(0.0);
+    else if (record.firstUv == kQuadUvs)
         payload.uv = quadUv(uint(gl_PrimitiveID), b1, b2);
     else if (record.firstUv != kNoIndex)
         payload.uv = b0 * uvs[record.firstUv + triangle.x] + b1 * uvs[record.firstUv + triangle.y] +

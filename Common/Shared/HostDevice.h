@@ -269,10 +269,15 @@ RT_CONST(uint, kSpecIdFeatures, 4u)       // kFeature* bits
 // feature bit: the mixture, whose pipeline leaves the feature mask dynamic (docs/PERFORMANCE.md §4.3), sets
 // it too. The exact c's code alone, never run, cost the light book scenes 3-9 % on an H100 (§8.8).
 RT_CONST(uint, kSpecIdExactSphereC, 5u)
-RT_CONST(uint, kSpecIdCount, 6u)
+// 0: the closest-hit shaders leave a hit's uv at 0, for a scene without image textures (SceneFeatures::
+// imageTextures), the only readers of a hit's uv; else (kSpecDynamic included) they compute it: the sphere uv's
+// acos and atan, a mesh's uv interpolation. Not a feature bit either, so that the mixture's pipelines set it
+// too: computing the uv cost the light book scenes and furnace 1-6 % on an H200 (§8.10).
+RT_CONST(uint, kSpecIdHitUv, 6u)
+RT_CONST(uint, kSpecIdCount, 7u)
 // Set by the pipeline's kind, not by the render (not in PipelineSpecialization's key): 1 in the wavefront
 // integrator's pipelines, where the intersection shaders find their path's pixel and sample in the queues.
-RT_CONST(uint, kSpecIdWavefront, 6u)
+RT_CONST(uint, kSpecIdWavefront, 7u)
 
 // The bits of kSpecIdFeatures (PipelineSpecialization.cpp sets them from rt::SceneFeatures and the uniforms).
 RT_CONST(uint, kFeatureTriangles, 0x1u)          // quads or meshes: Triangle.rchit's hit group

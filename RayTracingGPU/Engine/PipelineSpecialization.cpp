@@ -74,7 +74,7 @@ PipelineSpecialization PipelineSpecialization::strategyOf(const RenderUniforms& 
     // Accumulate is random jitter to the shaders (the passes are the host's): one pipeline serves both.
     const PixelSampling sampling = u.sampling == PixelSampling::Accumulate ? PixelSampling::Random : u.sampling;
     s.constants[kSpecIdSampling] = static_cast<std::uint32_t>(sampling);
-    static_assert(kSpecIdCount == 6, "a new constant id needs its value here");
+    static_assert(kSpecIdCount == 7, "a new constant id needs its value here");
     return s;
 }
 
@@ -84,7 +84,7 @@ PipelineSpecialization PipelineSpecialization::of(const RenderUniforms& u, std::
     PipelineSpecialization s = strategyOf(u);
     s.constants[kSpecIdFeatures] = (sceneFeatures & ~(kFeatureThinLens | kFeatureGradientBackground)) |
                                    uniformFeatureBits(u);
-    s.constants[kSpecIdExactSphereC] = hugeSpheres ? 1u : 0u;
+    s.setSceneConstants(sceneFeatures, hugeSpheres);
     return s;
 }
 
@@ -99,16 +99,22 @@ PipelineSpecialization PipelineSpecialization::of(Specialize specialize, const R
     {
         // Measured on the H100 (docs/PERFORMANCE.md §4.3): with any explicit feature mask, even one with every
         // bit set, book 3's mixture renders cornell-box-lights 1.23-1.32x slower than with the mask left
-        // dynamic, while NEE + MIS renders it 1.46x faster. So the mixture keys on its strategy and the sphere
-        // tests' c alone (the c made the light book scenes 1.03-1.09x faster, §8.8).
+        // dynamic, while NEE + MIS renders it 1.46x faster. So the mixture keys on its strategy, the sphere
+        // tests' c (the c made the light book scenes 1.03-1.09x faster, §8.8) and the hit's uv alone (§8.10).
         if (u.estimator != Estimator::Mixture)
             return of(u, sceneFeatures, hugeSpheres);
         PipelineSpecialization s = strategyOf(u);
-        s.constants[kSpecIdExactSphereC] = hugeSpheres ? 1u : 0u;
+        s.setSceneConstants(sceneFeatures, hugeSpheres);
         return s;
     }
     }
     return general();
+}
+
+void PipelineSpecialization::setSceneConstants(std::uint32_t sceneFeatures, bool hugeSpheres)
+{
+    constants[kSpecIdExactSphereC] = hugeSpheres ? 1u : 0u;
+    constants[kSpecIdHitUv] = (sceneFeatures & kFeatureImageTextures) != 0u ? 1u : 0u;
 }
 
 HitGroupLayout PipelineSpecialization::hitGroups() const
@@ -131,7 +137,7 @@ std::string PipelineSpecialization::describe() const
                     " sampling=" + value(kSpecIdSampling, [](std::uint32_t v) { return toString(PixelSampling(v)); }) +
                     " sphere-c=" +
                     value(kSpecIdExactSphereC, [](std::uint32_t v) { return v != 0u ? "exact" : "float"; }) +
-                    " ";
+                    " uv=" + value(kSpecIdHitUv, [](std::uint32_t v) { return v != 0u ? "on" : "off"; }) + " ";
     s += "features=";
     if (features() == kSpecDynamic)
         return s + "all";

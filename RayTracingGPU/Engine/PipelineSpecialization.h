@@ -5,8 +5,9 @@
 // the materials and texture kinds its primitives use, the shapes of its lights) and from the uniforms (thin
 // lens, gradient background); kSpecDynamic there is every feature. Specialised, the driver folds away every
 // estimator, sampler and selection the render does not use (1.1x to 5x faster on an H100, docs/PERFORMANCE.md
-// §4.2), the code of every feature the scene lacks and, without huge spheres, the sphere tests' exact c
-// (§8.8), and the pipeline holds only the hit groups of the scene's geometry (hitGroups()). The value is the
+// §4.2), the code of every feature the scene lacks, without huge spheres the sphere tests' exact c (§8.8),
+// without image textures the hit's uv (§8.10), and the pipeline holds only the hit groups of the scene's
+// geometry (hitGroups()). The value is the
 // key of the pipeline cache (PathTracingPipeline): two renders with equal keys share one compilation. The
 // general pipeline is what every render used before specialisation, kept for comparison (--specialize off).
 #pragma once
@@ -43,8 +44,9 @@ struct PipelineSpecialization
     static PipelineSpecialization general();
     /// The settings of `uniforms` that have a constant id; every feature.
     static PipelineSpecialization strategyOf(const shader::RenderUniforms& uniforms);
-    /// strategyOf(uniforms) and the features: `sceneFeatures` (featureBitsOf) with the uniforms' own bits, and
-    /// the exact c in the sphere tests only with `hugeSpheres` (SceneFeatures::hugeSpheres).
+    /// strategyOf(uniforms) and the features: `sceneFeatures` (featureBitsOf) with the uniforms' own bits, the
+    /// exact c in the sphere tests only with `hugeSpheres` (SceneFeatures::hugeSpheres) and a hit's uv only with
+    /// image textures among `sceneFeatures`.
     static PipelineSpecialization of(const shader::RenderUniforms& uniforms, std::uint32_t sceneFeatures,
                                      bool hugeSpheres = true);
     /// What `specialize` asks for a render of `uniforms` on a scene of `sceneFeatures` and `hugeSpheres`.
@@ -60,6 +62,11 @@ struct PipelineSpecialization
     std::string describe() const;
 
     auto operator<=>(const PipelineSpecialization&) const = default;
+
+private:
+    /// The constants that come from the scene but are not feature bits, which the mixture's pipelines set too:
+    /// the sphere tests' c and the hit's uv.
+    void setSceneConstants(std::uint32_t sceneFeatures, bool hugeSpheres);
 };
 
 /// The kFeature* bits of what `scene` (valid) uses, but for the render's own (thin lens, gradient

@@ -52,8 +52,10 @@ TEST(PipelineSpecialization, ModesKeyOnWhatTheySay)
     // On the H100 the mixture ran slower with any explicit feature mask: --specialize on keys it on its strategy.
     PipelineSpecialization mixtureFull = PipelineSpecialization::of(Specialize::Full, mixture, scene);
     EXPECT_EQ(mixtureFull.constants[kSpecIdExactSphereC], 1u);
+    EXPECT_EQ(mixtureFull.constants[kSpecIdHitUv], 0u) << "no image texture";
     mixtureFull.constants[kSpecIdExactSphereC] = kSpecDynamic;
-    EXPECT_EQ(mixtureFull, PipelineSpecialization::strategyOf(mixture)) << "but the sphere tests' c (below)";
+    mixtureFull.constants[kSpecIdHitUv] = kSpecDynamic;
+    EXPECT_EQ(mixtureFull, PipelineSpecialization::strategyOf(mixture)) << "but the sphere tests' c and the uv (below)";
     EXPECT_NE(PipelineSpecialization::of(Specialize::Full, u, scene), PipelineSpecialization::strategyOf(u));
 }
 
@@ -77,6 +79,32 @@ TEST(PipelineSpecialization, ExactSphereCOnlyForHugeSpheres)
     const RenderUniforms mixture = uniformsWith(Estimator::Mixture, false, BackgroundType::Constant);
     EXPECT_EQ(PipelineSpecialization::of(Specialize::Full, mixture, scene, false).features(), kSpecDynamic)
         << "the mixture's feature mask stays dynamic";
+}
+
+// The hit's uv (kSpecIdHitUv): computed only for a scene with image textures under --specialize on, the mixture's
+// pipeline included; always by the general and strategy-only ones.
+TEST(PipelineSpecialization, HitUvOnlyWithImageTextures)
+{
+    const std::uint32_t plain = kFeatureSpheres | kFeatureTriangles | kFeatureLambertian | kFeatureCheckerTextures |
+                                kFeatureNoiseTextures;
+    const std::uint32_t textured = plain | kFeatureImageTextures;
+    for (const Estimator e : {Estimator::Mixture, Estimator::NeeMis, Estimator::BsdfOnly})
+    {
+        const RenderUniforms u = uniformsWith(e, false, BackgroundType::Constant);
+        const PipelineSpecialization without = PipelineSpecialization::of(Specialize::Full, u, plain, false);
+        EXPECT_EQ(without.constants[kSpecIdHitUv], 0u);
+        EXPECT_NE(without.describe().find("uv=off"), std::string::npos) << without.describe();
+        const PipelineSpecialization with = PipelineSpecialization::of(Specialize::Full, u, textured, false);
+        EXPECT_EQ(with.constants[kSpecIdHitUv], 1u);
+        EXPECT_NE(with, without) << "two pipelines";
+        EXPECT_EQ(PipelineSpecialization::of(Specialize::Strategy, u, plain, false).constants[kSpecIdHitUv],
+                  kSpecDynamic);
+    }
+    EXPECT_EQ(PipelineSpecialization::of(Specialize::Full, uniformsWith(Estimator::Mixture, false, BackgroundType::Constant),
+                                         bitsOf(makeScene("rtnw-earth")), false)
+                  .constants[kSpecIdHitUv],
+              1u)
+        << "the earth's image texture reads the sphere's uv";
 }
 
 TEST(PipelineSpecialization, CatalogueScenesHaveTheirFeatureBits)
