@@ -84,11 +84,14 @@ uint tracedSample()
 #endif
 
 /// Where primitiveLights[] says which light primitive `primitive` of a record is (its entry may be kNoIndex),
-/// or kNoIndex when no primitive of the record is a light (InstanceRecord::firstPrimitiveLight). Hit shaders
-/// hand this on and raygen reads the entry only when it needs the light (an emitter hit after NEE): the load
-/// in every closest-hit cost the H100 3 % of book 3's mixture, which never needs it.
+/// or kNoIndex when no primitive of the record is a light (InstanceRecord::firstPrimitiveLight) or the
+/// estimator is not NEE. Hit shaders hand this on and raygen reads the entry only when it needs the light (an
+/// emitter hit after NEE, weighted by MIS or by 0): the load in every closest-hit cost the H100 3 % of book 3's
+/// mixture, which never needs it, and the record's field alone up to 3 % on the H200 (PERFORMANCE.md §8.10).
 uint primitiveLightSlot(InstanceRecord record, uint primitive)
 {
+    if (settingEstimator() != Estimator_Nee && settingEstimator() != Estimator_NeeMis)
+        return kNoIndex;
     return record.firstPrimitiveLight == kNoIndex ? kNoIndex : record.firstPrimitiveLight + primitive;
 }
 

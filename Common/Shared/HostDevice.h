@@ -368,7 +368,7 @@ struct HitPayload
     vec2 uv;
     float offsetScale; // offsetRayOrigin's scale: the largest |vertex coordinate| of a triangle, else 1
     vec3 background; // radiance of the background on a miss
-    uint lightSlot; // primitiveLightSlot of the hit primitive: primitiveLights[lightSlot] is its light, if any
+    uint lightSlot; // primitiveLightSlot of the hit primitive: primitiveLights[lightSlot] is its light, if any (NEE)
 };
 RT_CONST(uint, kHitMedium, 1u) // HitPayload::flags: scattered inside a constant medium (frontFace, origin = position)
 
