@@ -7,9 +7,9 @@
 // estimator, sampler and selection the render does not use (1.1x to 5x faster on an H100, docs/PERFORMANCE.md
 // §4.2), the code of every feature the scene lacks, without huge spheres the sphere tests' exact c (§8.8),
 // without image textures the hit's uv (§8.10), and the pipeline holds only the hit groups of the scene's
-// geometry (hitGroups()). The value is the
-// key of the pipeline cache (PathTracingPipeline): two renders with equal keys share one compilation. The
-// general pipeline is what every render used before specialisation, kept for comparison (--specialize off).
+// geometry (hitGroups()). The value is the key of the pipeline cache (PathTracingPipeline): two renders with
+// equal keys share one compilation. The general pipeline is what every render used before specialisation,
+// kept for comparison (--specialize off).
 #pragma once
 
 #include <array>
