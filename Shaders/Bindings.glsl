@@ -90,7 +90,7 @@ uint tracedSample()
 /// mixture, which never needs it, and the record's field alone up to 3 % on the H200 (PERFORMANCE.md §8.10).
 uint primitiveLightSlot(InstanceRecord record, uint primitive)
 {
-    if (settingEstimator() != Estimator_Nee && settingEstimator() != Estimator_NeeMis)
+    if (!settingUsesNee())
         return kNoIndex;
     return record.firstPrimitiveLight == kNoIndex ? kNoIndex : record.firstPrimitiveLight + primitive;
 }

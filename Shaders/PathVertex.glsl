@@ -73,8 +73,7 @@ bool shadePathVertex(inout PathState path, uint segment, HitPayload payload, out
     shadow.direction = vec3(0.0);
     shadow.distance = 0.0;
     shadow.contribution = vec3(0.0);
-    bool nee = (settingEstimator() == Estimator_Nee || settingEstimator() == Estimator_NeeMis) &&
-               uniforms.emitterCount > 0u;
+    bool nee = settingUsesNee() && uniforms.emitterCount > 0u;
     bool mis = settingEstimator() == Estimator_NeeMis;
     bool lateRoulette = rouletteAfterNextHit(settingEstimator());
     if (payload.material == kNoIndex)

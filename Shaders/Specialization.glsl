@@ -27,6 +27,13 @@ uint settingLightSelection()
     return kSpecLightSelection != kSpecDynamic ? kSpecLightSelection : uniforms.lightSelection;
 }
 uint settingSampling() { return kSpecSampling != kSpecDynamic ? kSpecSampling : uniforms.sampling; }
+/// Whether the render's estimator samples a light at its vertices (nee, nee-mis): the shadow rays, and the
+/// weight of an emitter that a BSDF ray finds after such a vertex.
+bool settingUsesNee()
+{
+    uint e = settingEstimator();
+    return e == Estimator_Nee || e == Estimator_NeeMis;
+}
 
 // Specialization-constant expressions (OpSpecConstantOp): constants once the pipeline is compiled.
 const bool kHasSpheres = (kSpecFeatures & kFeatureSpheres) != 0u;
