@@ -4,7 +4,7 @@
 #ifndef RT_CAMERA_GLSL
 #define RT_CAMERA_GLSL
 
-#include "Random.glsl"
+#include "Shared/Random.h"
 #include "Shared/Warps.h"
 #include "Shared/HostDevice.h"
 

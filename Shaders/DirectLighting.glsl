@@ -6,7 +6,7 @@
 #ifndef RT_DIRECT_LIGHTING_GLSL
 #define RT_DIRECT_LIGHTING_GLSL
 
-#include "Random.glsl"
+#include "Shared/Random.h"
 #include "Shared/DiffuseScattering.h"
 #include "Shared/LightSampling.h"
 #include "Shared/LightSelection.h"

@@ -1,8 +1,8 @@
-// What lets one source compile as C++ (on GLM) and as GLSL: the sampling code both engines run is written
-// once, in Shared/ headers that include this one (Shared/Warps.h). Write such code in the common subset:
-// GLSL types and constructors (vec2, vec3), float literals with an `f` suffix (GLSL accepts it; without it
-// C++ would compute in double and the engines would differ), the scalar functions below, RT_FN before each
-// function, RT_OUT(T) for out parameters, RT_IN(T) for struct parameters and RT_ENUM(Type, Value) for
+// What lets one source compile as C++ (on GLM) and as GLSL: the code both engines run is written once, in
+// Shared/ headers that include this one (Shared/Warps.h). Write such code in the common subset: GLSL types and
+// constructors (vec2, vec3), float literals with an `f` suffix (GLSL accepts it; without it C++ would compute
+// in double and the engines would differ), the scalar functions below, RT_FN before each function, RT_OUT(T)
+// for out parameters, RT_INOUT(T) for inout ones, RT_IN(T) for struct parameters and RT_ENUM(Type, Value) for
 // HostDevice.h's tags. C++ sees it in namespace rt::shader. Code whose scalar type is switched to double for
 // the CPU (Shared/SphericalTriangle.h's Real) writes its literals without the suffix instead: double in C++,
 // float in GLSL.
@@ -70,6 +70,7 @@ inline double clamp(double x, double lo, double hi) { return min(max(x, lo), hi)
 
 #define RT_FN inline
 #define RT_OUT(Type) Type&
+#define RT_INOUT(Type) Type&
 // Structs go in by const reference on the CPU, as C++ code passes them (no copy left to the optimiser).
 #define RT_IN(Type) const Type&
 #define RT_ENUM(Type, Value) Type::Value
@@ -84,10 +85,30 @@ inline double clamp(double x, double lo, double hi) { return min(max(x, lo), hi)
 // -ffp-contract=off project-wide; GLSL marks such variables `precise` (no fused multiply-add, no reordering).
 #define RT_PRECISE
 #else
-#include "Math/Constants.glsl"
+// Common/Math/Math.h's constants and helpers, for GLSL.
+const float kPi = 3.14159265358979323846;
+const float kInvPi = 0.31830988618379067154;
+const float kInv4Pi = 0.07957747154594766788;
+
+/// sqrt clamped at 0: rounding can push a quantity that is >= 0 in exact arithmetic slightly below it.
+float safeSqrt(float x)
+{
+    return sqrt(max(0.0, x));
+}
+
+float lengthSquared(vec3 v)
+{
+    return dot(v, v);
+}
+
+bool isFiniteVec(vec3 v)
+{
+    return !any(isnan(v)) && !any(isinf(v));
+}
 
 #define RT_FN
 #define RT_OUT(Type) out Type
+#define RT_INOUT(Type) inout Type
 #define RT_IN(Type) Type
 #define RT_ENUM(Type, Value) Type##_##Value
 

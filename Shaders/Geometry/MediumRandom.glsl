@@ -10,7 +10,7 @@
 #ifndef RT_MEDIUM_RANDOM_GLSL
 #define RT_MEDIUM_RANDOM_GLSL
 
-#include "Random.glsl"
+#include "Shared/Random.h"
 
 /// In (0, 1]: usable in log(u).
 float mediumUniform(uvec2 launch, vec3 origin, vec3 direction, uint instance, uint primitive, uint seed)

@@ -4,7 +4,7 @@
 #ifndef RT_SPHERE_GLSL
 #define RT_SPHERE_GLSL
 
-#include "Math/Constants.glsl"
+#include "Shared/ShaderLang.h"
 #include "Shared/SphereQuadratic.h"
 
 #ifndef RT_EXACT_SPHERE_C

@@ -5,7 +5,7 @@
 #define RT_DIELECTRIC_GLSL
 
 #include "Materials/Interaction.glsl"
-#include "Random.glsl"
+#include "Shared/Random.h"
 #include "Shared/SpecularScattering.h"
 
 bool scatterDielectric(MaterialData m, SurfaceHit hit, inout Rng rng, out ScatterSample s)

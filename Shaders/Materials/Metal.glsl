@@ -4,7 +4,7 @@
 #define RT_METAL_GLSL
 
 #include "Materials/Interaction.glsl"
-#include "Random.glsl"
+#include "Shared/Random.h"
 #include "Shared/SpecularScattering.h"
 #include "Textures/Texture.glsl"
 

@@ -8,7 +8,7 @@
 
 #include "Materials/Interaction.glsl"
 #include "Shared/Onb.h"
-#include "Random.glsl"
+#include "Shared/Random.h"
 #include "Shared/LightSampling.h"
 
 /// The BSDF strategy is the cosine lobe about ns, or the uniform sphere for an isotropic phase function.

@@ -17,7 +17,7 @@ layout(binding = 5, scalar) readonly buffer LightBvhLeafBlock { uint lightBvhLea
 layout(push_constant, scalar) uniform Push { uint mode; uint caseCount; uint inputStride; uint outputStride; };
 
 #include "Geometry/Sphere.glsl"
-#include "Random.glsl"
+#include "Shared/Random.h"
 #include "RayOffset.glsl"
 #include "Shared/LightBvh.h"
 #include "Shared/LightSampling.h"
