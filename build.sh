@@ -2,8 +2,8 @@
 # Set up, build, and run the main job or the tests, on Debian 12 (bookworm).
 #
 #   ./build.sh          install what is missing, configure and build (Release) into build/
-#   ./build.sh run      ... then the main job: render cornell-box-lights at 600x600 to out/, print the time,
-#                       and the CPU/GPU timing table
+#   ./build.sh run      ... building only the two apps and their shaders, then the main job: render
+#                       cornell-box-lights at 600x600 to out/, print the time, and the CPU/GPU timing table
 #   ./build.sh test     ... then the test suite (everything but the label "heavy")
 #   ./build.sh heavy    ... then the heavy suites only
 #
@@ -67,10 +67,19 @@ install_dependencies() {
         -t bookworm-backports "${backports_packages[@]}" >/dev/null
 }
 
+# build [TARGET...]: configure, then build the targets named (with what they need), or everything.
 build() {
-    echo "== configuring ($BUILD_TYPE) and building in $BUILD_DIR with $JOBS jobs"
+    echo "== configuring ($BUILD_TYPE) and building${*:+ $*} in $BUILD_DIR with $JOBS jobs"
     cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" >/dev/null
-    cmake --build "$BUILD_DIR" -j "$JOBS"
+    local targets=()
+    local t
+    for t in "$@"; do
+        # A target the configuration left out (the GPU app without Vulkan) is skipped, not an error.
+        if cmake --build "$BUILD_DIR" --target help | grep -q "^\.\.\. $t\$"; then
+            targets+=(--target "$t")
+        fi
+    done
+    cmake --build "$BUILD_DIR" -j "$JOBS" "${targets[@]}"
 }
 
 main_job() {
@@ -93,11 +102,10 @@ run_tests() {
 }
 
 install_dependencies
-build
 case "$mode" in
-build) ;;
-run) main_job ;;
-test) run_tests -LE heavy ;;
-heavy) run_tests -L heavy ;;
+build) build ;;
+run) build ray-tracing-cpu ray-tracing-gpu && main_job ;; # the apps and their shaders: no test targets
+test) build && run_tests -LE heavy ;;
+heavy) build && run_tests -L heavy ;;
 *) echo "usage: $0 [build|run|test|heavy]" >&2; exit 2 ;;
 esac

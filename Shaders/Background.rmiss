@@ -1,4 +1,4 @@
-// A ray that leaves the scene: report the background radiance in its direction.
+// A path ray that leaves the scene: no material, for the path vertex to add the background (Shared/Shading/Background.h).
 #version 460
 #extension GL_EXT_ray_tracing : require
 #extension GL_EXT_scalar_block_layout : require
@@ -7,12 +7,10 @@
 
 #include "Bindings.glsl"
 #include "Payload.glsl"
-#include "Background.glsl"
 
 layout(location = kPayloadPath) rayPayloadInEXT HitPayload payload;
 
 void main()
 {
     payload.material = kNoIndex;
-    payload.background = background(gl_WorldRayDirectionEXT);
 }

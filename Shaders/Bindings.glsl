@@ -1,5 +1,7 @@
 // Descriptor set 0 of the path tracer, as HostDevice.h numbers it. Every stage includes this one declaration;
 // the engine makes every binding visible to every ray-tracing stage and to the wavefront's compute kernels.
+// With Specialization.glsl it is the shaders' host of the shared shading (Common/Shared/Shading/README.md): the
+// globals it names, and the two functions each host writes for itself, emitterOfSlot and imageTexel.
 // Needs GL_EXT_scalar_block_layout and GL_EXT_nonuniform_qualifier, and GL_EXT_ray_tracing in a ray-tracing
 // stage; a compute kernel defines RT_COMPUTE_KERNEL first (it sees neither the TLAS nor a launch).
 #ifndef RT_BINDINGS_GLSL
@@ -94,5 +96,17 @@ uint primitiveLightSlot(InstanceRecord record, uint primitive)
         return kNoIndex;
     return record.firstPrimitiveLight == kNoIndex ? kNoIndex : record.firstPrimitiveLight + primitive;
 }
+
+/// Whether the mixture reads the scene's first lights from mixtureLights, a uniform buffer (HostDevice.h
+/// kMixtureUniformLights).
+const bool kHostHasMixtureLights = true;
+
+/// The light of a hit's primitive (HitPayload::lightSlot, from primitiveLightSlot), or kNoIndex.
+uint emitterOfSlot(uint slot)
+{
+    return slot == kNoIndex ? kNoIndex : primitiveLights[slot];
+}
+
+#include "Textures/ImageTexture.glsl"
 
 #endif

@@ -3,8 +3,8 @@
 #ifndef RT_CAMERA_SAMPLE_GLSL
 #define RT_CAMERA_SAMPLE_GLSL
 
-#include "Camera.glsl"
 #include "Integrator.glsl"
+#include "Shared/Shading/Camera.h"
 #include "SampleSum.glsl"
 
 /// Estimates the camera samples first .. first + count - 1 of `pixel` and adds them to its accumulation

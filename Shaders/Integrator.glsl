@@ -1,5 +1,6 @@
 // The megakernel's path-tracing estimator of one camera sample (RayGen.rgen): a loop over segments in one
-// invocation, iterative (no recursion from hit shaders), each vertex shaded by PathVertex.glsl, NEE's shadow
+// invocation, iterative (no recursion from hit shaders), each vertex shaded by the path vertex both engines
+// share (Shared/Shading/PathVertex.h), NEE's shadow
 // ray traced at the end of its vertex: across that trace only the path's own state lives (the hit, its
 // material and the light sample are dead by then), which the GPU keeps in registers.
 // Needs the payloads `payload` (location kPayloadPath) and `shadowVisible` (kPayloadShadow) and the globals of
@@ -7,8 +8,8 @@
 #ifndef RT_INTEGRATOR_GLSL
 #define RT_INTEGRATOR_GLSL
 
-#include "PathVertex.glsl"
 #include "Rays.glsl"
+#include "Shared/Shading/PathVertex.h"
 
 /// Radiance along the camera ray (origin, direction). A non-finite direction ends the path with NaN, so the
 /// sample is counted like the CPU engine's instead of reaching traversal (undefined for NaN rays).

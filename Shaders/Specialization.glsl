@@ -9,6 +9,8 @@
 #ifndef RT_SPECIALIZATION_GLSL
 #define RT_SPECIALIZATION_GLSL
 
+#include "Shared/Estimator.h"
+
 layout(constant_id = kSpecIdEstimator) const uint kSpecEstimator = kSpecDynamic;
 layout(constant_id = kSpecIdLightSampler) const uint kSpecLightSampler = kSpecDynamic;
 layout(constant_id = kSpecIdLightSelection) const uint kSpecLightSelection = kSpecDynamic;
@@ -27,12 +29,10 @@ uint settingLightSelection()
     return kSpecLightSelection != kSpecDynamic ? kSpecLightSelection : uniforms.lightSelection;
 }
 uint settingSampling() { return kSpecSampling != kSpecDynamic ? kSpecSampling : uniforms.sampling; }
-/// Whether the render's estimator samples a light at its vertices (nee, nee-mis): the shadow rays, and the
-/// weight of an emitter that a BSDF ray finds after such a vertex.
+/// Whether the render's estimator samples a light at its vertices (Shared/Estimator.h usesNee).
 bool settingUsesNee()
 {
-    uint e = settingEstimator();
-    return e == Estimator_Nee || e == Estimator_NeeMis;
+    return usesNee(settingEstimator());
 }
 
 // Specialization-constant expressions (OpSpecConstantOp): constants once the pipeline is compiled.
@@ -59,10 +59,10 @@ const bool kHasGradientBackground = (kSpecFeatures & kFeatureGradientBackground)
 #endif
 #define RT_HAS_LIGHT_SHAPE(Shape) kHas##Shape##Lights
 
-// Whether the sphere tests (Geometry/Sphere.glsl) compute the exact c where it cancels: there, and in the shaders
+// Whether the sphere tests (Shared/Sphere.h) compute the exact c where it cancels: there, and in the shaders
 // without this file (the parity kernel), always.
-#ifdef RT_SPHERE_GLSL
-#error "Specialization.glsl (through Bindings.glsl) must come before Geometry/Sphere.glsl"
+#ifdef RT_SHARED_SPHERE_H
+#error "Specialization.glsl (through Bindings.glsl) must come before Shared/Sphere.h"
 #endif
 const bool kExactSphereC = kSpecExactSphereC != 0u;
 #define RT_EXACT_SPHERE_C kExactSphereC

@@ -7,7 +7,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "Bindings.glsl"
-#include "Geometry/Sphere.glsl"
+#include "Shared/Sphere.h"
 #include "Payload.glsl"
 
 layout(location = kPayloadPath) rayPayloadInEXT HitPayload payload;

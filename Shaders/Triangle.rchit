@@ -9,7 +9,7 @@
 
 #include "Bindings.glsl"
 #include "Payload.glsl"
-#include "RayOffset.glsl"
+#include "Shared/RayOffset.h"
 #include "Shared/QuadUv.h"
 
 layout(location = kPayloadPath) rayPayloadInEXT HitPayload payload;

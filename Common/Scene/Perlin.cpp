@@ -1,6 +1,5 @@
 #include "Scene/Perlin.h"
 
-#include <cmath>
 #include <utility>
 
 #include "Random/Pcg.h"
@@ -42,37 +41,4 @@ const shader::PerlinData& perlinTables()
     return tables;
 }
 
-float perlinNoise(const shader::PerlinData& t, const vec3& p)
-{
-    const vec3 f = glm::floor(p);
-    const vec3 w = p - f;
-    const int i = static_cast<int>(f.x);
-    const int j = static_cast<int>(f.y);
-    const int k = static_cast<int>(f.z);
-    const vec3 s = w * w * (3.0f - 2.0f * w); // Hermite smoothing
-    float accum = 0.0f;
-    for (int di = 0; di < 2; ++di)
-        for (int dj = 0; dj < 2; ++dj)
-            for (int dk = 0; dk < 2; ++dk)
-            {
-                const vec3& g = t.gradients[t.permX[(i + di) & 255] ^ t.permY[(j + dj) & 255] ^ t.permZ[(k + dk) & 255]];
-                const float weight = (di ? s.x : 1.0f - s.x) * (dj ? s.y : 1.0f - s.y) * (dk ? s.z : 1.0f - s.z);
-                accum += weight * glm::dot(g, w - vec3(di, dj, dk));
-            }
-    return accum;
-}
-
-float perlinTurbulence(const shader::PerlinData& t, const vec3& p, int depth)
-{
-    float accum = 0.0f;
-    vec3 q = p;
-    float weight = 1.0f;
-    for (int i = 0; i < depth; ++i)
-    {
-        accum += weight * perlinNoise(t, q);
-        weight *= 0.5f;
-        q *= 2.0f;
-    }
-    return std::fabs(accum);
-}
 } // namespace rt

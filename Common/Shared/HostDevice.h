@@ -198,6 +198,58 @@ struct PerlinData
     uint permZ[kPerlinPointCount];
 };
 
+// ---- What both engines' shading reads besides the scene (scalar layout on the GPU) -------------------------
+
+/// Everything a render's shading reads that is not scene geometry: the camera frame of rt::Camera for this
+/// image size (world space), the settings and the background (Render/RenderUniforms.h fills it). The GPU's
+/// uniform buffer, written before a render; the CPU engine's shading holds it as it is.
+struct RenderUniforms
+{
+    vec3 cameraCenter;
+    float shutterOpen;
+    vec3 pixel00; // centre of pixel (0, 0)
+    float shutterClose;
+    vec3 pixelDeltaU;
+    uint thinLens; // 1: sample the defocus disk (defocus angle > 0)
+    vec3 pixelDeltaV;
+    uint width;
+    vec3 defocusDiskU;
+    uint height;
+    vec3 defocusDiskV;
+    uint depth; // path segments traced at most
+    vec3 background0;
+    RT_TAG(BackgroundType) backgroundType;
+    vec3 background1;
+    RT_TAG(Estimator) estimator;
+    RT_TAG(PixelSampling) sampling;
+    uint strata; // stratified sampling: n, with n * n strata per pixel
+    uint seed;
+    uint unidirectionalLight; // 1: emitters emit from their front face only
+    uint lightCount; // LightData[]: the emitters, then the mixture's sampling targets
+    uint emitterCount; // LightData[0, emitterCount) emit: what NEE samples
+    uint russianRoulette; // 1: paths end by Russian roulette on their throughput (RussianRoulette.h)
+    RT_TAG(LightSampler) lightSampler; // NEE's
+    RT_TAG(LightSelection) lightSelection; // NEE's
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+
+/// What a traced path ray brings back to the path vertex (Shared/Shading/PathVertex.h): the GPU's payload at
+/// kPayloadPath (the kWaveHit* fields in the wavefront), the CPU's hit turned into it. The hit shaders describe
+/// the hit; all shading (textures, materials, the estimator) happens after the trace.
+struct HitPayload
+{
+    vec3 position; // world-space hit point, computed accurately (barycentrics, re-projection)
+    uint material; // kNoIndex: the ray missed
+    vec3 normal; // world-space unit geometric normal, outward (arbitrary inside a medium)
+    uint flags; // kHitMedium
+    vec2 uv;
+    float offsetScale; // offsetRayOrigin's scale: the largest |vertex coordinate| of a triangle, else 1
+    uint lightSlot; // where the host finds the hit primitive's light, if any (emitterOfSlot; only read by NEE)
+};
+RT_CONST(uint, kHitMedium, 1u) // HitPayload::flags: scattered inside a constant medium (frontFace, origin = position)
+
 // ==== GPU engine only (RayTracingGPU, Shaders): bindings, uniforms and geometry records ====================
 // Nothing above depends on this section; the CPU engine ignores it. Layout rule as above (scalar).
 
@@ -302,40 +354,6 @@ RT_ENUM_VALUE(MediumBoundary, Sphere, 0) // center, radius
 RT_ENUM_VALUE(MediumBoundary, Box, 1)    // boxMin, boxMax (axis-aligned in object space)
 RT_ENUM_END(MediumBoundary)
 
-/// Everything a render's shaders read that is not scene geometry: the camera frame of rt::Camera for this
-/// image size (world space), the settings and the background. One uniform buffer, written before a render.
-struct RenderUniforms
-{
-    vec3 cameraCenter;
-    float shutterOpen;
-    vec3 pixel00; // centre of pixel (0, 0)
-    float shutterClose;
-    vec3 pixelDeltaU;
-    uint thinLens; // 1: sample the defocus disk (defocus angle > 0)
-    vec3 pixelDeltaV;
-    uint width;
-    vec3 defocusDiskU;
-    uint height;
-    vec3 defocusDiskV;
-    uint depth; // path segments traced at most
-    vec3 background0;
-    RT_TAG(BackgroundType) backgroundType;
-    vec3 background1;
-    RT_TAG(Estimator) estimator;
-    RT_TAG(PixelSampling) sampling;
-    uint strata; // stratified sampling: n, with n * n strata per pixel
-    uint seed;
-    uint unidirectionalLight; // 1: emitters emit from their front face only
-    uint lightCount; // LightData[]: the emitters, then the mixture's sampling targets
-    uint emitterCount; // LightData[0, emitterCount) emit: what NEE samples
-    uint russianRoulette; // 1: paths end by Russian roulette on their throughput (RussianRoulette.h)
-    RT_TAG(LightSampler) lightSampler; // NEE's
-    RT_TAG(LightSelection) lightSelection; // NEE's
-    uint pad0;
-    uint pad1;
-    uint pad2;
-};
-
 /// Per vkCmdTraceRaysKHR: each launch traces sampleCount camera samples per pixel, one after the other.
 /// Several per launch keep a GPU without ray-tracing cores busy between the barriers that order launches.
 struct TracePushConstants
@@ -357,21 +375,6 @@ struct TracePushConstants
     uint waveCapacity;
 };
 
-/// What a traced path ray brings back (the payload at kPayloadPath; the kWaveHit* fields in the wavefront). The hit
-/// shaders describe the hit; all shading (textures, materials, the estimator) happens after the trace.
-struct HitPayload
-{
-    vec3 position; // world-space hit point, computed accurately (barycentrics, re-projection)
-    uint material; // kNoIndex: the ray missed
-    vec3 normal; // world-space unit geometric normal, outward (arbitrary inside a medium)
-    uint flags; // kHitMedium
-    vec2 uv;
-    float offsetScale; // offsetRayOrigin's scale: the largest |vertex coordinate| of a triangle, else 1
-    vec3 background; // radiance of the background on a miss
-    uint lightSlot; // primitiveLightSlot of the hit primitive: primitiveLights[lightSlot] is its light, if any (NEE)
-};
-RT_CONST(uint, kHitMedium, 1u) // HitPayload::flags: scattered inside a constant medium (frontFace, origin = position)
-
 // A wavefront wave's paths between its kernels, stored field by field (structure of arrays): field f of path
 // p is the uvec4 at f * capacity + p of kBindingWavePaths, so that a subgroup's loads and stores of one field
 // are contiguous (with a structure per path, the scattered accesses made BSDF sampling on the H100 take 2.7x
@@ -386,7 +389,7 @@ RT_CONST(uint, kWaveSobol, 5u)           // x: the Sobol seed, y: 2D draws made 
 RT_CONST(uint, kWaveShadowOrigin, 6u)    // xyz: the shadow ray's origin; w: its length
 RT_CONST(uint, kWaveShadowDirection, 7u) // xyz: its direction
 RT_CONST(uint, kWaveShadowLight, 8u)     // xyz: its contribution, added to the radiance when unoccluded
-RT_CONST(uint, kWaveHitPoint, 9u)        // the hit: xyz its position (on a miss, the background); w material
+RT_CONST(uint, kWaveHitPoint, 9u)        // the hit: xyz its position; w material (kNoIndex: a miss)
 RT_CONST(uint, kWaveHitNormal, 10u)      // xyz: its geometric normal; w: flags
 RT_CONST(uint, kWaveHitSurface, 11u)     // xy: uv; z: offsetScale; w: lightSlot
 RT_CONST(uint, kWaveFieldCount, 12u)
@@ -501,12 +504,8 @@ struct PreviewPushConstants
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(RenderUniforms) == 176);
 static_assert(sizeof(LightBvhNode) == 48);
-static_assert(offsetof(RenderUniforms, background0) == 96);
-static_assert(offsetof(RenderUniforms, sampling) == 128);
 static_assert(sizeof(TracePushConstants) == 36);
-static_assert(sizeof(HitPayload) == 60);
 static_assert(sizeof(WaveCounters) == 64 && offsetof(WaveCounters, shadowRays) == 32);
 static_assert(sizeof(InstanceRecord) == 32);
 static_assert(sizeof(SphereRecord) == 32);
@@ -523,6 +522,10 @@ static_assert(sizeof(PreviewPushConstants) == 80 && offsetof(PreviewPushConstant
 
 #ifdef __cplusplus
 static_assert(sizeof(PerlinData) == 256 * 12 + 3 * 256 * 4);
+static_assert(sizeof(RenderUniforms) == 176);
+static_assert(offsetof(RenderUniforms, background0) == 96);
+static_assert(offsetof(RenderUniforms, sampling) == 128);
+static_assert(sizeof(HitPayload) == 48);
 static_assert(sizeof(TextureData) == 40);
 static_assert(sizeof(MaterialData) == 32);
 static_assert(sizeof(LightData) == 104);

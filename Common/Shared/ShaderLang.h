@@ -20,10 +20,20 @@ namespace rt::shader
 using uint = std::uint32_t;
 using glm::cross;
 using glm::dot;
+using glm::floatBitsToInt;
+using glm::floatBitsToUint;
+using glm::floor;
+using glm::intBitsToFloat;
+using glm::ivec3;
 using glm::length;
 using glm::normalize;
+using glm::uintBitsToFloat;
+using glm::uvec2;
+using glm::uvec3;
 using glm::vec2;
 using glm::vec3;
+using glm::vec4;
+using rt::kInv2Pi;
 using rt::kInv4Pi;
 using rt::kInvPi;
 using rt::kPi;
@@ -37,6 +47,7 @@ inline float sin(float x) { return std::sin(x); }
 inline float cos(float x) { return std::cos(x); }
 inline float abs(float x) { return std::fabs(x); }
 inline float acos(float x) { return std::acos(x); }
+inline float log(float x) { return std::log(x); }
 inline float atan(float y, float x) { return std::atan2(y, x); } // GLSL's two-argument atan
 inline float min(float a, float b) { return b < a ? b : a; } // GLSL's min/max: the first for NaN b, as std::min
 inline float max(float a, float b) { return a < b ? b : a; }
@@ -78,6 +89,8 @@ inline double clamp(double x, double lo, double hi) { return min(max(x, lo), hi)
 // first in a parameter list, RT_ARRAY(Type, name) declares `const Type* name,` in C++ and nothing in GLSL, so
 // the body names the array the same way in both; C++ calls pass it, GLSL calls leave it out.
 #define RT_ARRAY(Type, name) const Type* name,
+// A read-only struct that GLSL reads as a global block (Bindings.glsl's perlinTables), as RT_ARRAY passes arrays.
+#define RT_GLOBAL(Type, name) const Type& name,
 #define RT_PASS(name) name, // passes an RT_ARRAY on to another such function
 #define RT_SHADER_NAMESPACE_BEGIN namespace rt::shader {
 #define RT_SHADER_NAMESPACE_END }
@@ -88,6 +101,7 @@ inline double clamp(double x, double lo, double hi) { return min(max(x, lo), hi)
 // Common/Math/Math.h's constants and helpers, for GLSL.
 const float kPi = 3.14159265358979323846;
 const float kInvPi = 0.31830988618379067154;
+const float kInv2Pi = 0.15915494309189533577;
 const float kInv4Pi = 0.07957747154594766788;
 
 /// sqrt clamped at 0: rounding can push a quantity that is >= 0 in exact arithmetic slightly below it.
@@ -117,6 +131,7 @@ float signNotZero(float x)
     return (floatBitsToUint(x) & 0x80000000u) != 0u ? -1.0 : 1.0;
 }
 #define RT_ARRAY(Type, name)
+#define RT_GLOBAL(Type, name)
 #define RT_PASS(name)
 #define RT_SHADER_NAMESPACE_BEGIN
 #define RT_SHADER_NAMESPACE_END

@@ -14,6 +14,7 @@
 #include <spdlog/spdlog.h>
 
 #include "Error.h"
+#include "Render/RenderUniforms.h"
 
 namespace rt::cpu
 {
@@ -30,43 +31,6 @@ std::string cpuModel()
     return "CPU";
 }
 
-/// The camera samples of a batch: sample s of pixel (x, y) as a job, its random stream and first ray.
-/// Flattened, so that the generator's Sobol draws are compiled into it: called out of line, they cost
-/// cube-and-spheres' render 4 % (perf).
-struct CameraSampler
-{
-    const Camera& camera;
-    std::uint32_t seed;
-    int width;
-    std::uint32_t strata;
-    float invStrata;
-    bool stratified;
-    bool sobol;
-
-    RT_FLATTEN PathJob operator()(int x, int y, std::uint32_t s) const
-    {
-        const auto pixelIndex = static_cast<std::uint32_t>(y * width + x);
-        PathJob job{{}, sobol ? Rng::forSobolSample(seed, pixelIndex, s) : Rng::forSample(seed, pixelIndex, s)};
-        const vec2 jitter = job.rng.next2D();
-        float fx, fy;
-        if (stratified)
-        {
-            fx = float(x) + (float(s % strata) + jitter.x) * invStrata; // stratum (s % n, s / n)
-            fy = float(y) + (float(s / strata) + jitter.y) * invStrata;
-        }
-        else
-        {
-            fx = float(x) + jitter.x;
-            fy = float(y) + jitter.y;
-        }
-        vec2 lens(0.0f);
-        if (camera.thinLens)
-            lens = job.rng.next2D();
-        const float time = job.rng.nextFloat();
-        job.ray = camera.generateRay(fx, fy, lens, time);
-        return job;
-    }
-};
 } // namespace
 
 CpuEngine::CpuEngine(EngineKind kind, bool specialize) : m_kind(kind), m_specialize(specialize)
@@ -99,9 +63,8 @@ void CpuEngine::beginFrame(const RenderSettings& settings)
     const int width = settings.width;
     const int height = settings.height();
     m_frame.emplace(Frame{.settings = settings,
-                          .camera = Camera(m_scene->source().camera, width, height),
-                          .options = {settings.depth, settings.estimator, settings.lightSampler, settings.lightSelection,
-                                    settings.russianRoulette, settings.unidirectionalLight},
+                          .uniforms = makeUniforms(m_scene->source(), m_scene->source().camera, settings,
+                                                   std::uint32_t(width), std::uint32_t(height)),
                           .variant = choosePathVariant(m_features, settings.estimator, m_specialize, m_scene->tracesRayLanes()),
                           .sum = std::vector<dvec3>(std::size_t(width) * height, dvec3(0.0)),
                           .before = std::make_unique_for_overwrite<dvec3[]>(std::size_t(width) * height),
@@ -128,20 +91,16 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
         throw UsageError("CpuEngine::traceSamples called before beginFrame");
     Frame& f = *m_frame;
     const int width = f.width;
-    const bool stratified = f.settings.sampling == PixelSampling::Stratified;
-    const bool sobol = f.settings.sampling == PixelSampling::Sobol;
-    const std::uint32_t strata = static_cast<std::uint32_t>(f.settings.strata());
-    const float invStrata = 1.0f / float(strata);
-    const std::uint32_t seed = f.settings.seed;
     // The batch's inputs as locals, read once rather than through the frame in the inner loop.
-    const Camera camera = f.camera;
-    const PathOptions options = f.options;
-    const TracePathFn trace = f.variant.trace;
+    const shader::RenderUniforms uniforms = f.uniforms;
+    const TracePathsFn trace = f.variant.traceLanes ? f.variant.traceLanes : f.variant.trace;
     const CpuScene& scene = *m_scene;
     std::vector<dvec3>& sums = f.sum;
     std::vector<RowTally>& tallies = f.rows;
-    const TracePathsFn traceLanes = f.variant.traceLanes;
-    const CameraSampler cameraSample{camera, seed, width, strata, invStrata, stratified, sobol};
+    // The camera's part of the shared shading (Shared/Shading/Camera.h) reads no feature a path loop is
+    // specialised for: one instance serves every variant.
+    CpuShading<PathCode{}> camera(scene, uniforms);
+    const bool media = scene.hasMedia();
     const auto accumulate = [](dvec3& sum, const vec3& l, RowTally& t) {
         if (isFinite(l))
             sum += dvec3(l);
@@ -162,50 +121,29 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
         f.rowsBefore[y] = tallies[y];
         RowTally& t = tallies[y];
         t.thread = std::hash<std::thread::id>{}(std::this_thread::get_id());
-        if (traceLanes)
+        // The row's samples in (pixel, sample) order, in chunks of jobs: camera rays first, then the paths (one
+        // after the other, or kLanes at a time); each pixel still adds its samples in sample order. Cancellation
+        // is polled per chunk: one pixel of a huge-spp batch can hold seconds of paths (issue 13).
+        constexpr std::uint32_t kChunk = 256;
+        PathJob jobs[kChunk];
+        vec3 radiance[kChunk];
+        const std::uint64_t total = std::uint64_t(width) * count;
+        for (std::uint64_t first = 0; first < total; first += kChunk)
         {
-            // The row's samples in (pixel, sample) order, in chunks of jobs traced kLanes at a time; each pixel
-            // still adds its samples in sample order.
-            constexpr std::uint32_t kChunk = 256;
-            PathJob jobs[kChunk];
-            vec3 radiance[kChunk];
-            const std::uint64_t total = std::uint64_t(width) * count;
-            for (std::uint64_t first = 0; first < total; first += kChunk)
+            if (control.cancelRequested())
             {
-                if (control.cancelRequested())
-                {
-                    f.rowStates[y] = RowState::Abandoned;
-                    return;
-                }
-                const auto n = static_cast<std::uint32_t>(std::min<std::uint64_t>(kChunk, total - first));
-                for (std::uint32_t i = 0; i < n; ++i)
-                {
-                    const std::uint64_t j = first + i;
-                    jobs[i] = cameraSample(int(j / count), y, firstSample + std::uint32_t(j % count));
-                }
-                traceLanes(scene, options, std::span<PathJob>(jobs, n), radiance, t.segments);
-                for (std::uint32_t i = 0; i < n; ++i)
-                    accumulate(sums[rowStart + std::size_t((first + i) / count)], radiance[i], t);
+                f.rowStates[y] = RowState::Abandoned;
+                return;
             }
-            control.advance(total);
-            return;
-        }
-        for (int x = 0; x < width; ++x)
-        {
-            dvec3 sum = sums[rowStart + std::size_t(x)];
-            for (std::uint32_t s = firstSample; s < firstSample + count; ++s)
+            const auto n = static_cast<std::uint32_t>(std::min<std::uint64_t>(kChunk, total - first));
+            for (std::uint32_t i = 0; i < n; ++i)
             {
-                // Within the pixel too: one pixel of a huge-spp batch can hold seconds of paths (issue 13).
-                // A relaxed load of a flag nobody writes until Ctrl-C costs nothing beside a path.
-                if (control.cancelRequested())
-                {
-                    f.rowStates[y] = RowState::Abandoned;
-                    return;
-                }
-                PathJob job = cameraSample(x, y, s);
-                accumulate(sum, trace(scene, options, job.ray, job.rng, t.segments), t);
+                const std::uint64_t j = first + i;
+                jobs[i] = cameraJob(camera, media, std::uint32_t(j / count), std::uint32_t(y), firstSample + std::uint32_t(j % count));
             }
-            sums[rowStart + std::size_t(x)] = sum;
+            trace(scene, uniforms, std::span<const PathJob>(jobs, n), radiance, t.segments);
+            for (std::uint32_t i = 0; i < n; ++i)
+                accumulate(sums[rowStart + std::size_t((first + i) / count)], radiance[i], t);
         }
         control.advance(std::uint64_t(width) * count);
     };

@@ -68,8 +68,7 @@ private:
     struct Frame
     {
         RenderSettings settings;
-        Camera camera;
-        PathOptions options;
+        shader::RenderUniforms uniforms; // what the shared shading reads (Render/RenderUniforms.h)
         PathVariant variant;
         // Radiance sum of every sample traced so far, row-major, in double: a float sum of 2^20 samples of 0.1
         // drifts by 1 % (each addition rounds to the ulp of the sum; tests/Cpu/StressTest.cpp's long run).

@@ -1,51 +1,30 @@
 // Ray-primitive tests of the CPU engine. Each takes the open interval (tMin, hit.t) and, on a closer hit,
-// updates `hit` and returns true. The GLSL twins of the sphere and medium tests are in Shaders/.
+// updates `hit` and returns true. The sphere's roots and the medium's interval and free flight are Shared/
+// code (Shared/Sphere.h, Shared/Medium.h) that the GPU's intersection shaders run too.
 #pragma once
 
 #include <cmath>
 
 #include "Geometry/Primitives.h"
 #include "Geometry/TraceRay.h"
-#include "Random/Pcg.h"
-#include "Shared/SphereQuadratic.h"
+#include "Shared/Medium.h"
+#include "Shared/Sphere.h"
 
 namespace rt::cpu
 {
 using shader::kSphereRootError;
 
-/// Sphere at the ray's time. Hearn & Baker's discriminant (the closest approach l is formed before squaring)
-/// with Press et al.'s stable roots: Haines, Günther & Akenine-Möller, "Precision Improvements for Ray/Sphere
-/// Intersection", Ray Tracing Gems ch. 7, 2019. The far root is taken when the near one is out of range, so
-/// rays leaving from inside (glass) hit the far wall.
+/// Sphere at the ray's time (Shared/Sphere.h: the roots and the nearest one the ray may take).
 inline bool intersectSphere(const SphereRec& s, const TraceRay& r, float tMin, HitRecord& hit, std::uint32_t prim)
 {
     const vec3 center = s.center0 + r.time * s.velocity;
     const vec3 f = r.origin - center;
-    const float b = glm::dot(f, r.direction);
-    const vec3 l = f - (b * r.invDirectionLength2) * r.direction;
-    const float r2 = s.radius * s.radius;
-    const float disc = r2 - glm::dot(l, l); // discriminant / a
-    if (disc < 0.0f)
+    shader::SphereRoots roots;
+    if (!shader::sphereRoots(f, r.direction, r.directionLength2, r.invDirectionLength2, s.radius, roots))
         return false;
-    const float a = r.directionLength2;
-    const float q = -(b + std::copysign(std::sqrt(a * disc), b));
-    // Exact where it cancels (a huge sphere's surface) and the near root lies surely ahead.
-    const float c = shader::sphereQuadraticCForNearRoot(f, s.radius, q);
-    float t0 = c / q;
-    float t1 = q * r.invDirectionLength2;
-    if (t0 > t1)
-        std::swap(t0, t1);
-    // A root nearer 0 than its rounding error cannot be told from the surface the ray leaves: f and the
-    // re-projected hit point carry errors of ulp(|center| + radius), which the ray offset does not cover
-    // near the origin of a huge sphere (the books' radius-1000 ground). c's error is gamma(8) (f.f + r^2).
-    const float lo = maxf(tMin, kSphereRootError * (glm::dot(f, f) + r2) / std::fabs(q));
-    float t = t0;
-    if (!(t > lo && t < hit.t))
-    {
-        t = t1;
-        if (!(t > lo && t < hit.t))
-            return false;
-    }
+    const float t = shader::nearestSphereRoot(roots, shader::sphereRootError(f, s.radius, roots), tMin, hit.t);
+    if (!(t >= 0.0f))
+        return false;
     hit.t = t;
     hit.prim = prim;
     return true;
@@ -105,50 +84,27 @@ inline bool intersectTriangle(const TriangleRec& tri, const TraceRay& r, float t
     return true;
 }
 
-/// Constant-density medium (RTTNW §9): clips the boundary's [entry, exit] to the ray interval, samples an
-/// exponential free-flight distance with the path's generator, and reports a scattering point if it falls
-/// inside. Density is per world unit; t is invariant under the object transform.
+/// Constant-density medium (RTTNW §9, Shared/Medium.h): clips the boundary's [entry, exit] to the ray interval
+/// and reports a scattering point where the free-flight distance, drawn from the hash of the path's
+/// `mediumSeed`, the ray and the medium, falls inside. Density is per world unit; t is invariant under the
+/// object transform.
 inline bool intersectMedium(const MediumRec& m, const TraceRay& r, float tMin, HitRecord& hit, std::uint32_t prim,
-                            Rng& rng)
+                            std::uint32_t mediumSeed)
 {
     const vec3 o = vec3(m.objectFromWorld * vec4(r.origin, 1.0f));
     const vec3 d = vec3(m.objectFromWorld * vec4(r.direction, 0.0f));
     float t1, t2;
-    if (m.sphere)
-    {
-        const vec3 f = o - m.center;
-        const float a = glm::dot(d, d);
-        const float b = glm::dot(f, d);
-        const vec3 l = f - (b / a) * d;
-        const float disc = m.radius * m.radius - glm::dot(l, l);
-        if (disc < 0.0f)
-            return false;
-        const float c = glm::dot(f, f) - m.radius * m.radius;
-        const float q = -(b + std::copysign(std::sqrt(a * disc), b));
-        t1 = c / q;
-        t2 = q / a;
-        if (t1 > t2)
-            std::swap(t1, t2);
-    }
-    else
-    {
-        const vec3 inv = 1.0f / d;
-        const vec3 lo = (m.boxMin - o) * inv;
-        const vec3 hi = (m.boxMax - o) * inv;
-        const vec3 tn = glm::min(lo, hi);
-        const vec3 tf = glm::max(lo, hi);
-        t1 = maxf(tn.x, maxf(tn.y, tn.z));
-        t2 = minf(tf.x, minf(tf.y, tf.z));
-    }
+    if (!shader::mediumInterval(m.sphere, m.center, m.radius, m.boxMin, m.boxMax, o, d, t1, t2))
+        return false;
     t1 = maxf(t1, tMin);
     t2 = minf(t2, hit.t);
     if (!(t1 < t2))
         return false;
-    const float inside = (t2 - t1) * r.directionLength;
-    const float distance = m.negInvDensity * std::log(1.0f - rng.nextFloat());
-    if (!(distance < inside))
+    const float u = shader::mediumUniform(mediumSeed, o, d, 0u, prim);
+    const float t = shader::mediumScatterT(t1, t2, r.directionLength, m.density, u);
+    if (!(t >= 0.0f))
         return false;
-    hit = {t1 + distance / r.directionLength, prim, 0.0f, 0.0f};
+    hit = {t, prim, 0.0f, 0.0f};
     return true;
 }
 } // namespace rt::cpu

@@ -50,7 +50,7 @@ struct MediumRec
     float radius;
     vec3 boxMin; // Box boundary (object space)
     vec3 boxMax;
-    float negInvDensity; // -1 / density, world units
+    float density; // extinction coefficient per world unit
     std::uint32_t material;
     bool sphere;
 };

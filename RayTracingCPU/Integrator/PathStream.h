@@ -6,27 +6,23 @@
 #pragma once
 
 #include <cstdint>
+#include <new>
 #include <span>
 
 #include "Integrator/PathIntegrator.h"
 
 namespace rt::cpu
 {
-/// One camera sample to trace: its first ray and its random stream (drawn from as the path goes).
-struct PathJob
-{
-    Ray ray;
-    Rng rng{0u};
-};
-
 /// Traces every job's path and writes job i's radiance (linear RGB) to radiance[i]. `segments` is incremented
-/// per ray traced, shadow rays included. Precondition: cs.tracesRayLanes(); C matches the scene and options as
+/// per ray traced, shadow rays included. Precondition: cs.tracesRayLanes(); C matches the scene and uniforms as
 /// tracePath's must.
 template <PathCode C = PathCode{}>
-RT_FLATTEN inline void tracePaths(const CpuScene& cs, const PathOptions& options, std::span<PathJob> jobs,
+RT_FLATTEN inline void tracePaths(const CpuScene& cs, const shader::RenderUniforms& uniforms, std::span<const PathJob> jobs,
                                   vec3* radiance, std::uint64_t& segments)
 {
-    PathState paths[kLanes];
+    CpuShading<C> shading(cs, uniforms);
+    shader::PathState paths[kLanes];
+    std::uint32_t segmentOf[kLanes]; // the segment each lane's ray is
     int jobOf[kLanes]; // -1: the lane has no path
     RayLanes rays;
     const TraceRay::Needs needs = cs.rayNeeds();
@@ -35,14 +31,19 @@ RT_FLATTEN inline void tracePaths(const CpuScene& cs, const PathOptions& options
     const auto start = [&](int lane) {
         for (; next < jobs.size(); ++next)
         {
-            if (options.depth <= 0)
+            if (uniforms.depth == 0)
             {
                 radiance[next] = vec3(0.0f);
                 continue;
             }
-            paths[lane] = PathState{jobs[next].ray};
+            const PathJob& job = jobs[next];
+            // Constructed in place (the prvalue's copy elided): assigned, the path was built field by field on
+            // the stack and copied in 64-byte moves, which waited on those stores: a third of rtnw-earth's paths.
+            ::new (static_cast<void*>(&paths[lane])) shader::PathState(
+                shader::startPath(job.ray.origin, job.ray.direction, job.rng));
+            segmentOf[lane] = 0;
             jobOf[lane] = static_cast<int>(next++);
-            rays.set(lane, TraceRay(paths[lane].ray, needs));
+            rays.set(lane, TraceRay(job.ray, needs));
             ++active;
             return;
         }
@@ -63,10 +64,12 @@ RT_FLATTEN inline void tracePaths(const CpuScene& cs, const PathOptions& options
             if (job < 0)
                 continue;
             ++segments;
-            PathState& path = paths[lane];
-            if (continuePath<C>(cs, options, path, hits[lane].prim != kNoIndex, hits[lane], jobs[job].rng, segments))
+            shader::PathState& path = paths[lane];
+            // The vertex ends the path at its last segment (depth - 1), so segmentOf stays below the depth.
+            if (continuePath<C>(shading, cs, path, jobs[job], segmentOf[lane]++, hits[lane].prim != kNoIndex, hits[lane],
+                                segments))
             {
-                rays.set(lane, TraceRay(path.ray, needs));
+                rays.set(lane, TraceRay(Ray{path.origin, path.direction, jobs[job].ray.time}, needs));
                 continue;
             }
             radiance[job] = path.radiance;

@@ -12,12 +12,12 @@ PathVariant instance(bool rayLanes)
     constexpr PathCode code{.general = false, .estimator = E, .media = Media, .textures = Textures};
     // kLanes paths at a time where their rays are tested together (book 3's scene 1.15x). Paths merely
     // interleaved over a BVH, each ray traversing it alone, were 0.92x (rtrol-cornell-mirror) to 1.04x
-    // (rtow-final) one path at a time: not kept (docs/PERFORMANCE.md §1). A medium's intersection draws random
-    // numbers, so media scenes never test rays in lanes.
+    // (rtow-final) one path at a time: not kept (docs/PERFORMANCE.md §1). The lanes test quads and spheres only
+    // (CpuScene::tracesRayLanes), so media scenes never test rays in lanes.
     if constexpr (!Media)
         if (rayLanes)
-            return {&tracePath<code>, code, &tracePaths<code>};
-    return {&tracePath<code>, code};
+            return {&traceJobs<code>, code, &tracePaths<code>};
+    return {&traceJobs<code>, code};
 }
 
 template <Estimator E>
@@ -41,7 +41,7 @@ std::string PathVariant::describe() const
 PathVariant choosePathVariant(const SceneFeatures& features, Estimator estimator, bool specialize, bool rayLanes)
 {
     if (!specialize)
-        return {&tracePath<PathCode{}>, PathCode{}};
+        return {&traceJobs<PathCode{}>, PathCode{}};
     const bool media = features.media;
     const bool textures = features.textures();
     switch (estimator)
@@ -51,6 +51,6 @@ PathVariant choosePathVariant(const SceneFeatures& features, Estimator estimator
     case Estimator::Nee: return forEstimator<Estimator::Nee>(media, textures, rayLanes);
     case Estimator::NeeMis: return forEstimator<Estimator::NeeMis>(media, textures, rayLanes);
     }
-    return {&tracePath<PathCode{}>, PathCode{}};
+    return {&traceJobs<PathCode{}>, PathCode{}};
 }
 } // namespace rt::cpu

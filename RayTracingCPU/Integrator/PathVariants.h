@@ -14,12 +14,12 @@
 
 namespace rt::cpu
 {
-using TracePathFn = vec3 (*)(const CpuScene&, const PathOptions&, Ray, Rng&, std::uint64_t&);
-using TracePathsFn = void (*)(const CpuScene&, const PathOptions&, std::span<PathJob>, vec3*, std::uint64_t&);
+using TracePathsFn = void (*)(const CpuScene&, const shader::RenderUniforms&, std::span<const PathJob>, vec3*,
+                              std::uint64_t&);
 
 struct PathVariant
 {
-    TracePathFn trace = nullptr;
+    TracePathsFn trace = nullptr; // one path after the other (traceJobs)
     PathCode code; // what `trace` was compiled for
     /// The same instance tracing kLanes paths at a time, their rays tested together (Integrator/PathStream.h),
     /// where the scene allows it; else nullptr.

@@ -7,6 +7,8 @@
 #include "Math/RayOffset.h"
 #include "Sampling/LightPower.h"
 #include "Scene/LightLookup.h"
+#include "Scene/Perlin.h"
+#include "Shared/Sphere.h"
 
 namespace rt::cpu
 {
@@ -48,14 +50,12 @@ Aabb quadBounds(const QuadRec& q, const vec3& u, const vec3& v)
 
 vec2 CpuScene::sphereUv(const vec3& q)
 {
-    // RTTNW §4.3: theta from -y, phi around y from -x.
-    const float theta = std::acos(std::clamp(-q.y, -1.0f, 1.0f));
-    const float phi = std::atan2(-q.z, q.x) + kPi;
-    return {phi * kInv2Pi, theta * kInvPi};
+    return shader::sphereUv(q);
 }
 
 CpuScene::CpuScene(const Scene& scene)
-    : m_scene(&scene), m_lightAlias(lightAliasTable(scene)), m_lightBvh(buildLightBvh(scene)), m_emitterCount(scene.emitterCount())
+    : m_scene(&scene), m_lightAlias(lightAliasTable(scene)), m_lightBvh(buildLightBvh(scene)), m_emitterCount(scene.emitterCount()),
+      m_perlinTables(&rt::perlinTables())
 {
     const auto isImage = [&](std::uint32_t t) { return t != kNoIndex && scene.textures[t].type == TextureType::Image; };
     for (const MaterialData& m : scene.materials)
@@ -137,7 +137,7 @@ CpuScene::CpuScene(const Scene& scene)
             rec.radius = md.radius;
             rec.boxMin = md.boxMin;
             rec.boxMax = md.boxMax;
-            rec.negInvDensity = -1.0f / md.density;
+            rec.density = md.density;
             rec.material = md.phaseMaterial;
             add(PrimType::Medium, m_media.size(), m.bounds(md.bounds()));
             m_media.push_back(rec);

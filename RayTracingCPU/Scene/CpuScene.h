@@ -48,22 +48,25 @@ public:
     /// The emitters' light BVH (Sampling/LightBvh.h) for NEE's bvh selection: its nodes and each emitter's leaf.
     const shader::LightBvhNode* lightBvh() const { return m_lightBvh.nodes.data(); }
     const std::uint32_t* lightBvhLeaves() const { return m_lightBvh.leaves.data(); }
+    /// The Perlin tables of noise textures (Scene/Perlin.h), found once.
+    const shader::PerlinData& perlinTables() const { return *m_perlinTables; }
     TraceRay::Needs rayNeeds() const { return {!m_triangles.empty(), !m_media.empty(), !m_bvh4.rootIsLeaf}; }
 
-    /// Closest hit along r in (tMin, tMax). Consumes random numbers only when the ray crosses a medium.
-    bool intersect(const TraceRay& r, float tMin, float tMax, HitRecord& hit, Rng& rng) const
+    /// Closest hit along r in (tMin, tMax). A medium the ray crosses scatters it where the hash of the path's
+    /// `mediumSeed` and the ray puts it (Shared/Medium.h).
+    bool intersect(const TraceRay& r, float tMin, float tMax, HitRecord& hit, std::uint32_t mediumSeed) const
     {
         hit.t = tMax;
         hit.prim = kNoIndex;
         traverse(m_bvh4, r, hit.t, [&](std::uint32_t first, std::uint32_t count) {
             for (std::uint32_t k = first; k < first + count; ++k)
-                intersectLeafPacket(m_leafPackets[k], r, tMin, hit, rng);
+                intersectLeafPacket(m_leafPackets[k], r, tMin, hit, mediumSeed);
         });
         return hit.prim != kNoIndex;
     }
 
     /// Whether intersect(RayLanes) serves the scene: it is one BVH leaf of quads and spheres (no triangles, whose
-    /// packet test hands some rays to a scalar test, and no media, which draw random numbers).
+    /// packet test hands some rays to a scalar test, and no media).
     bool tracesRayLanes() const { return m_bvh4.rootIsLeaf && m_triangles.empty() && m_media.empty(); }
 
     /// The closest hit of each lane's ray in (tMin, hits.t), as intersect() finds it for that ray alone, bit for
@@ -80,7 +83,7 @@ public:
     /// True when something lies along r in (tMin, tMax): a shadow ray. Stops at the first hit found. A medium
     /// the ray crosses occludes it with the probability that a particle stops it (1 - transmittance), so the
     /// visibility it returns is an unbiased estimate of the transmittance (RTTNW §9's distance sampling).
-    bool occluded(const TraceRay& r, float tMin, float tMax, Rng& rng) const
+    bool occluded(const TraceRay& r, float tMin, float tMax, std::uint32_t mediumSeed) const
     {
         HitRecord hit;
         hit.t = tMax;
@@ -89,7 +92,7 @@ public:
         // entered at t >= 0).
         traverse(m_bvh4, r, hit.t, [&](std::uint32_t first, std::uint32_t count) {
             for (std::uint32_t k = first; k < first + count && hit.prim == kNoIndex; ++k)
-                intersectLeafPacket(m_leafPackets[k], r, tMin, hit, rng);
+                intersectLeafPacket(m_leafPackets[k], r, tMin, hit, mediumSeed);
             if (hit.prim != kNoIndex)
                 hit.t = -1.0f;
         });
@@ -165,7 +168,7 @@ private:
     /// (u, v) of the unit sphere's point q (RTTNW §4.3): acos and atan2, out of line.
     static vec2 sphereUv(const vec3& q);
 
-    void intersectLeafPacket(PrimRef ref, const TraceRay& r, float tMin, HitRecord& hit, Rng& rng) const
+    void intersectLeafPacket(PrimRef ref, const TraceRay& r, float tMin, HitRecord& hit, std::uint32_t mediumSeed) const
     {
         switch (ref.type())
         {
@@ -183,7 +186,7 @@ private:
             }
             break;
         }
-        case PrimType::Medium: intersectMedium(m_media[ref.index()], r, tMin, hit, ref.bits, rng); break;
+        case PrimType::Medium: intersectMedium(m_media[ref.index()], r, tMin, hit, ref.bits, mediumSeed); break;
         }
     }
 
@@ -201,6 +204,7 @@ private:
     std::vector<shader::AliasEntry> m_lightAlias;
     LightBvh m_lightBvh;
     std::uint32_t m_emitterCount = 0;
+    const shader::PerlinData* m_perlinTables;
     std::vector<bool> m_materialNeedsUv; // an image texture reads (u, v): spheres compute them only then
     std::vector<mat3> m_uvFrames; // object-from-world rotations of instanced spheres; [0] = identity
     // What traversal reads: per leaf, a run of packet references (type + index into the packet arrays; for

@@ -1,5 +1,7 @@
 #include "Engine/GpuIntegrator.h"
 
+#include "Shared/Estimator.h"
+
 namespace rt::gpu
 {
 const char* integratorName(GpuIntegrator integrator)
@@ -29,7 +31,7 @@ GpuIntegrator resolveIntegrator(GpuIntegrator setting, bool cpuDevice, const sha
     if (cpuDevice)
         return GpuIntegrator::Megakernel;
     using shader::Estimator;
-    const bool nee = uniforms.estimator == Estimator::Nee || uniforms.estimator == Estimator::NeeMis;
+    const bool nee = shader::usesNee(uniforms.estimator);
     if (nee && uniforms.emitterCount >= 2)
         return paths >= kWavefrontMinPathsNee ? GpuIntegrator::Wavefront : GpuIntegrator::Megakernel;
     const bool heavy = (uniforms.estimator == Estimator::Mixture && uniforms.lightCount >= 2) ||

@@ -1,6 +1,7 @@
 #include "Engine/PipelineSpecialization.h"
 
 #include "Render/RenderSettings.h"
+#include "Shared/Estimator.h"
 
 namespace rt::gpu
 {
@@ -68,7 +69,7 @@ PipelineSpecialization PipelineSpecialization::strategyOf(const RenderUniforms& 
     PipelineSpecialization s = general();
     s.constants[kSpecIdEstimator] = static_cast<std::uint32_t>(u.estimator);
     // Only NEE samples lights: the other estimators share one pipeline whatever the sampler and selection.
-    const bool nee = u.estimator == Estimator::Nee || u.estimator == Estimator::NeeMis;
+    const bool nee = shader::usesNee(u.estimator);
     s.constants[kSpecIdLightSampler] = nee ? static_cast<std::uint32_t>(u.lightSampler) : 0u;
     s.constants[kSpecIdLightSelection] = nee ? static_cast<std::uint32_t>(u.lightSelection) : 0u;
     // Accumulate is random jitter to the shaders (the passes are the host's): one pipeline serves both.

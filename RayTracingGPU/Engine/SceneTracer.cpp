@@ -1,7 +1,7 @@
 #include "Engine/SceneTracer.h"
 
 #include "Engine/GpuScene.h"
-#include "Engine/Uniforms.h"
+#include "Render/RenderUniforms.h"
 #include "Engine/WavefrontPipeline.h"
 #include "Error.h"
 

@@ -8,6 +8,7 @@
 
 #include "Engine/WaveBuffers.h"
 #include "Engine/WaveStageTimer.h"
+#include "Shared/Estimator.h"
 #include "Shared/HostDevice.h"
 #include "Vulkan/Barriers.h"
 #include "Vulkan/ComputePipeline.h"
@@ -155,7 +156,7 @@ WavefrontPipeline::Recorder::Recorder(const WavefrontPipeline& pipeline, VkComma
     : m_cmd(cmd), m_compiled(&pipeline.compiled(pipeline.m_layout->specializationFor(uniforms, scene))),
       m_tables(&pipeline.tablesFor(*m_compiled, scene.hitGroups)),
       m_layout(pipeline.m_layout->layout().Handle()), m_waves(&waves), m_timer(timer),
-      m_nee((uniforms.estimator == Estimator::Nee || uniforms.estimator == Estimator::NeeMis) &&
+      m_nee(shader::usesNee(uniforms.estimator) &&
             uniforms.emitterCount > 0)
 {
     const auto setCount = static_cast<std::uint32_t>(sets.size());

@@ -16,13 +16,13 @@ layout(binding = 4, scalar) readonly buffer LightBvhBlock { LightBvhNode lightBv
 layout(binding = 5, scalar) readonly buffer LightBvhLeafBlock { uint lightBvhLeaves[]; };
 layout(push_constant, scalar) uniform Push { uint mode; uint caseCount; uint inputStride; uint outputStride; };
 
-#include "Geometry/Sphere.glsl"
 #include "Shared/Random.h"
-#include "RayOffset.glsl"
+#include "Shared/RayOffset.h"
+#include "Shared/Sphere.h"
 #include "Shared/LightBvh.h"
 #include "Shared/LightSampling.h"
 #include "Shared/Warps.h"
-#include "Textures/Perlin.glsl"
+#include "Shared/Perlin.h"
 #include "Textures/Srgb.glsl"
 
 uint inBase;
@@ -85,7 +85,9 @@ void main()
     else if (mode == 5u) // Sphere: (o, d, center, radius) -> hit, t0, t1
     {
         SphereRoots roots;
-        bool hit = sphereRoots(inVec3(0u), inVec3(3u), inVec3(6u), inFloat(9u), roots);
+        vec3 d = inVec3(3u);
+        float a = dot(d, d);
+        bool hit = sphereRoots(inVec3(0u) - inVec3(6u), d, a, 1.0 / a, inFloat(9u), roots);
         outUint(0u, hit ? 1u : 0u);
         outFloat(1u, roots.t0);
         outFloat(2u, roots.t1);

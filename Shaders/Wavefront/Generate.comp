@@ -9,8 +9,8 @@
 
 #define RT_COMPUTE_KERNEL
 #include "Bindings.glsl"
-#include "Camera.glsl"
-#include "PathVertex.glsl"
+#include "Shared/Shading/Camera.h"
+#include "Shared/Shading/PathVertex.h"
 #include "Wavefront/QueueAppend.glsl"
 #include "Wavefront/WavePath.glsl"
 

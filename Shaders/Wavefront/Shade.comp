@@ -1,5 +1,5 @@
-// The wavefront's vertices: one invocation per path extended at segment push.waveSegment, shaded by
-// PathVertex.glsl, the megakernel's own vertex; a path that goes on is queued for the next segment, a shadow
+// The wavefront's vertices: one invocation per path extended at segment push.waveSegment, shaded by the path
+// vertex both engines share (Shared/Shading/PathVertex.h), the megakernel's own; a path that goes on is queued for the next segment, a shadow
 // ray for Shadow.rgen.
 #version 460
 #extension GL_EXT_scalar_block_layout : require
@@ -9,7 +9,7 @@
 
 #define RT_COMPUTE_KERNEL
 #include "Bindings.glsl"
-#include "PathVertex.glsl"
+#include "Shared/Shading/PathVertex.h"
 #include "Wavefront/QueueAppend.glsl"
 #include "Wavefront/WavePath.glsl"
 

@@ -2,10 +2,10 @@
 // folder, recorded by RayTracingGPU/Engine/WavefrontPipeline.cpp). A wave is push.sampleCount samples of each
 // of push.wavePixelCount pixels; path p, pixel offset p / sampleCount, keeps its state in its fields from its
 // camera ray (Generate.comp) to its sum (Accumulate.comp). Per segment, Extend.rgen traces the paths of
-// queue (segment & 1) to their hits, Shade.comp shades those (PathVertex.glsl) and queues the ones that go on
+// queue (segment & 1) to their hits, Shade.comp shades those (Shared/Shading/PathVertex.h) and queues the ones that go on
 // into the other queue and those with a shadow ray into kWaveShadowQueue, Prepare.comp turns the lengths into
 // the next launches' sizes, and Shadow.rgen traces the shadow rays.
-// Needs the globals of Bindings.glsl and PathVertex.glsl's PathState.
+// Needs the globals of Bindings.glsl and Shared/PathState.h.
 #ifndef RT_WAVE_PATH_GLSL
 #define RT_WAVE_PATH_GLSL
 
@@ -66,7 +66,6 @@ HitPayload loadHit(uint p)
     HitPayload hit;
     hit.material = point.w;
     hit.position = uintBitsToFloat(point.xyz);
-    hit.background = hit.position; // a miss keeps its background where a hit keeps its point
     hit.normal = uintBitsToFloat(normal.xyz);
     hit.flags = normal.w;
     hit.uv = uintBitsToFloat(surface.xy);
@@ -77,9 +76,8 @@ HitPayload loadHit(uint p)
 
 void storeHit(uint p, HitPayload hit)
 {
-    bool missed = hit.material == kNoIndex;
-    setWaveField(kWaveHitPoint, p, packWaveField(missed ? hit.background : hit.position, hit.material));
-    if (!missed)
+    setWaveField(kWaveHitPoint, p, packWaveField(hit.position, hit.material)); // a miss: the material alone counts
+    if (hit.material != kNoIndex)
     {
         setWaveField(kWaveHitNormal, p, packWaveField(hit.normal, hit.flags));
         setWaveField(kWaveHitSurface, p, uvec4(floatBitsToUint(hit.uv), floatBitsToUint(hit.offsetScale), hit.lightSlot));

@@ -10,7 +10,9 @@ build=${BUILD_DIR:-build}
 rm -rf .devcarry
 mkdir -p .devcarry/lib .devcarry/layers .gl
 cp -rL "$build/bin" .devcarry/bin
-rm -f .devcarry/bin/rt_gui_gpu_tests .devcarry/bin/rt_bench # the window needs a display; benchmarks run here
+# The window needs a display; benchmarks and the CPU-only suites run here (and the carry must stay under 64 MiB).
+rm -f .devcarry/bin/rt_gui_gpu_tests .devcarry/bin/rt_gui_cpu_tests .devcarry/bin/rt_bench .devcarry/bin/rt_common_tests \
+    .devcarry/bin/rt_cpu_tests
 strip .devcarry/bin/ray-tracing-* .devcarry/bin/rt_*_tests 2>/dev/null || true
 for exe in .devcarry/bin/ray-tracing-gpu .devcarry/bin/ray-tracing-cpu .devcarry/bin/rt_gpu_tests; do
     ldd "$exe" | awk '/=>/ {print $3}'

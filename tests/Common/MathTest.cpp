@@ -2,6 +2,7 @@
 // that keeps a secondary ray off the surface it leaves.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <vector>
 
@@ -107,6 +108,28 @@ TEST(RayOffset, ClearsTheErrorOfATestWithLargeVertices)
             << "p = (" << p.x << ", " << p.y << ", " << p.z << "), S = " << s;
         if (HasFailure())
             return;
+    }
+}
+TEST(RayOffset, SseIsTheScalarOneBitForBit)
+{
+    // The CPU's SSE offset is a twin of the scalar one that the GPU runs (Shared/RayOffset.h): the same bits for
+    // points near and far from the origin, on both sides of the near-origin threshold, with zero and negative
+    // coordinates.
+    Rng rng(pcgHash(90));
+    for (int i = 0; i < 200'000; ++i)
+    {
+        const float s = std::pow(10.0f, 10.0f * rng.nextFloat() - 4.0f); // 1e-4 .. 1e6
+        vec3 p;
+        for (int k = 0; k < 3; ++k)
+            p[k] = rng.nextFloat() < 0.1f ? 0.0f : s * (2.0f * rng.nextFloat() - 1.0f);
+        const float a = rng.nextFloat(), b = rng.nextFloat();
+        const vec3 n = sampleUniformSphere({a, b});
+        const float scale = i % 3 == 0 ? 1.0f : s * 2.0f * rng.nextFloat();
+        const vec3 sse = offsetRayOrigin(p, n, scale);
+        const vec3 shared = shader::offsetRayOriginScalar(p, n, scale);
+        for (int k = 0; k < 3; ++k)
+            ASSERT_EQ(std::bit_cast<std::uint32_t>(sse[k]), std::bit_cast<std::uint32_t>(shared[k]))
+                << "p = (" << p.x << ", " << p.y << ", " << p.z << "), scale " << scale << ", axis " << k;
     }
 }
 } // namespace

@@ -53,7 +53,7 @@ TEST(Perlin, NoiseIsAPureFunctionOfTablesAndPoint)
         const float a = perlinNoise(perlinTables(), p);
         EXPECT_EQ(a, perlinNoise(*copy, p));
         EXPECT_EQ(a, perlinNoise(perlinTables(), p));
-        EXPECT_EQ(perlinTurbulence(perlinTables(), p), perlinTurbulence(*copy, p));
+        EXPECT_EQ(perlinTurbulence(perlinTables(), p, 7), perlinTurbulence(*copy, p, 7));
     }
 }
 
@@ -92,7 +92,7 @@ TEST(Perlin, TurbulenceIsNonNegativeAndBounded)
     // |sum of 7 octaves with weights 1, 1/2, ...| <= (sqrt(3)/2) (2 - 2^-6).
     for (const vec3& p : randomPoints(20'000, 30.0f, 3))
     {
-        const float t = perlinTurbulence(perlinTables(), p);
+        const float t = perlinTurbulence(perlinTables(), p, 7);
         ASSERT_GE(t, 0.0f);
         ASSERT_LE(t, 0.8661f * 2.0f);
     }

@@ -84,7 +84,7 @@ TEST(Bvh, HitsEqualBruteForceOnAMillionRandomRays)
         const float length = 0.1f + 3.0f * rng.nextFloat(); // unnormalised directions too
         const TraceRay r(Ray{o, length * sampleUniformSphere(u), rng.nextFloat()}, {true, false});
         HitRecord viaBvh;
-        const bool found = cs.intersect(r, 0.0f, kInfinity, viaBvh, rng);
+        const bool found = cs.intersect(r, 0.0f, kInfinity, viaBvh, 0u);
         const HitRecord expected = bruteForce(cs, r);
         if (found != (expected.prim != kNoIndex))
         {

@@ -20,9 +20,8 @@ using namespace rt::cpu;
 
 HitRecord closest(const CpuScene& cs, const Ray& ray)
 {
-    Rng rng(1);
     HitRecord hit;
-    cs.intersect(TraceRay(ray, cs.rayNeeds()), 0.0f, kInfinity, hit, rng);
+    cs.intersect(TraceRay(ray, cs.rayNeeds()), 0.0f, kInfinity, hit, 1u);
     return hit;
 }
 

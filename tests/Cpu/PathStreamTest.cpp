@@ -10,6 +10,7 @@
 #include "Integrator/PathStream.h"
 #include "Integrator/PathVariants.h"
 #include "Random/Pcg.h"
+#include "Render/RenderUniforms.h"
 #include "Sampling/Warps.h"
 #include "Scene/CpuScene.h"
 #include "Scene/SceneBuilder.h"
@@ -72,9 +73,8 @@ void expectLanesFindTheScalarHits(const CpuScene& cs, const std::vector<Ray>& ra
         nearest.store(fromLanes);
         for (int l = 0; l < kLanes; ++l)
         {
-            Rng rng(1);
             HitRecord alone{};
-            const bool found = cs.intersect(TraceRay(rays[first + l], cs.rayNeeds()), 0.0f, kInfinity, alone, rng);
+            const bool found = cs.intersect(TraceRay(rays[first + l], cs.rayNeeds()), 0.0f, kInfinity, alone, 0u);
             const HitRecord& h = fromLanes[l];
             ASSERT_EQ(h.prim, found ? alone.prim : kNoIndex) << name << ", ray " << first + l;
             if (!found)
@@ -128,18 +128,19 @@ void expectTracePathsIsTracePath(const Scene& scene, Estimator estimator, std::v
     const CpuScene cs(scene);
     const PathVariant variant = choosePathVariant(featuresOf(scene), estimator, true, cs.tracesRayLanes());
     ASSERT_NE(variant.traceLanes, nullptr) << name;
-    PathOptions options;
-    options.depth = depth;
-    options.estimator = estimator;
+    RenderSettings settings;
+    settings.depth = depth;
+    settings.estimator = estimator;
+    const shader::RenderUniforms uniforms = makeUniforms(scene, scene.camera, settings, 64, 64);
     std::vector<vec3> radiance(jobs.size(), vec3(-1.0f));
     std::uint64_t laneSegments = 0;
-    std::vector<PathJob> copy = jobs;
-    variant.traceLanes(cs, options, copy, radiance.data(), laneSegments);
+    variant.traceLanes(cs, uniforms, jobs, radiance.data(), laneSegments);
     std::uint64_t segments = 0;
     bool light = false;
     for (std::size_t i = 0; i < jobs.size(); ++i)
     {
-        const vec3 alone = variant.trace(cs, options, jobs[i].ray, jobs[i].rng, segments);
+        vec3 alone;
+        variant.trace(cs, uniforms, std::span<const PathJob>(&jobs[i], 1), &alone, segments);
         ASSERT_TRUE(sameBits(radiance[i], alone))
             << name << ", depth " << depth << ", " << jobs.size() << " jobs: job " << i << " (" << radiance[i].x
             << " against " << alone.x << ")";

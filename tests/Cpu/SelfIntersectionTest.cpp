@@ -34,7 +34,7 @@ int selfHits(const Scene& scene, float scale)
         const vec3 target = 0.3f * scale * vec3(rng.nextFloat() - 0.5f, rng.nextFloat() - 0.5f, rng.nextFloat() - 0.5f);
         const TraceRay r(Ray{from, target - from, 0.0f}, cs.rayNeeds());
         HitRecord hit;
-        if (!cs.intersect(r, 0.0f, kInfinity, hit, rng))
+        if (!cs.intersect(r, 0.0f, kInfinity, hit, 0u))
             continue;
         const SurfaceInteraction si = cs.interaction(r, hit);
         const vec3 toward = glm::dot(r.direction, si.n) < 0.0f ? si.n : -si.n;
@@ -45,7 +45,7 @@ int selfHits(const Scene& scene, float scale)
                 d = -d;
             const vec3 origin = offsetRayOrigin(si.p, glm::dot(d, si.n) > 0.0f ? si.n : -si.n, si.offsetScale);
             HitRecord again;
-            if (cs.intersect(TraceRay(Ray{origin, d, 0.0f}, cs.rayNeeds()), 0.0f, kInfinity, again, rng) &&
+            if (cs.intersect(TraceRay(Ray{origin, d, 0.0f}, cs.rayNeeds()), 0.0f, kInfinity, again, 0u) &&
                 again.prim == hit.prim && again.t < 1e-3f * scale)
                 ++bad;
         }

@@ -147,7 +147,7 @@ TEST(StressGroundSphere, RaysHitAHugeSphereWhereExactArithmeticDoes)
         const vec3 target(100.0f * (rng.nextFloat() - 0.5f), 0.0f, 100.0f * (rng.nextFloat() - 0.5f));
         const Ray ray{origin, target - origin, 0.0f};
         cpu::HitRecord hit{kInfinity, kNoIndex, 0.0f, 0.0f};
-        ASSERT_TRUE(cs.intersect(cpu::TraceRay(ray, cs.rayNeeds()), 0.0f, kInfinity, hit, rng)) << i;
+        ASSERT_TRUE(cs.intersect(cpu::TraceRay(ray, cs.rayNeeds()), 0.0f, kInfinity, hit, 0u)) << i;
         // The exact root in double: |o + t d - c|^2 = R^2.
         const dvec3 f = dvec3(origin) - dvec3(0.0, -kRadius, 0.0), d(ray.direction);
         const double a = glm::dot(d, d), half = glm::dot(f, d), c = glm::dot(f, f) - kRadius * kRadius;

@@ -7,6 +7,7 @@
 
 #include "Cli/ValueParsing.h"
 #include "Error.h"
+#include "Shared/Estimator.h"
 
 namespace rt::app
 {
@@ -31,8 +32,6 @@ std::vector<T> parseList(const std::string& text, const char* flag, const char* 
         throw UsageError(fmt::format("{} has an empty entry (got '{}')", flag, text));
     return values;
 }
-
-bool usesNee(Estimator e) { return e == Estimator::Nee || e == Estimator::NeeMis; }
 } // namespace
 
 Strategy Strategy::of(const RenderSettings& s)
@@ -83,8 +82,8 @@ std::vector<Strategy> strategyGrid(const StrategyLists& lists, const RenderSetti
                     for (const bool rr : roulettes)
                     {
                         // Only NEE samples and selects lights: keep the first of the others' duplicates.
-                        const Strategy s{e, usesNee(e) ? ls : samplers.front(),
-                                         usesNee(e) ? sel : selections.front(), sm, rr};
+                        const Strategy s{e, shader::usesNee(e) ? ls : samplers.front(),
+                                         shader::usesNee(e) ? sel : selections.front(), sm, rr};
                         if (std::find(grid.begin(), grid.end(), s) == grid.end())
                             grid.push_back(s);
                     }
@@ -108,9 +107,9 @@ std::vector<std::string> distinctLabels(const std::vector<Strategy>& strategies)
         std::vector<std::string> parts;
         if (estimator || !(sampler || selection || sampling || roulette))
             parts.emplace_back(toString(s.estimator));
-        if (sampler && usesNee(s.estimator))
+        if (sampler && shader::usesNee(s.estimator))
             parts.emplace_back(toString(s.lightSampler));
-        if (selection && usesNee(s.estimator))
+        if (selection && shader::usesNee(s.estimator))
             parts.emplace_back(toString(s.lightSelection));
         if (sampling)
             parts.emplace_back(toString(s.sampling));

@@ -1,8 +1,8 @@
-#include "Engine/Uniforms.h"
+#include "Render/RenderUniforms.h"
 
 #include "Scene/Camera.h"
 
-namespace rt::gpu
+namespace rt
 {
 shader::RenderUniforms makeUniforms(const Scene& scene, const CameraDesc& cameraDesc, const RenderSettings& settings,
                                     std::uint32_t width, std::uint32_t height)
@@ -36,4 +36,4 @@ shader::RenderUniforms makeUniforms(const Scene& scene, const CameraDesc& camera
     u.lightSelection = settings.lightSelection;
     return u;
 }
-} // namespace rt::gpu
+} // namespace rt

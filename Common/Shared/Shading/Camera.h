@@ -1,0 +1,70 @@
+// Camera samples and rays, written once for both engines: a host's shading scope (Shading/README.md). The
+// thin-lens camera of RTIOW §12-13 with RTTNW §2's shutter (Scene/Camera.h computes its frame for the image
+// size into RenderUniforms).
+#ifndef RT_SHADING_CAMERA_H
+#define RT_SHADING_CAMERA_H
+
+#include "Shared/HostDevice.h"
+#include "Shared/PathState.h"
+#include "Shared/Random.h"
+#include "Shared/Warps.h"
+
+/// Whether the camera samples its lens (kHasThinLens: the render was compiled for a camera with one).
+RT_FN bool thinLens()
+{
+    return kHasThinLens && uniforms.thinLens != 0u;
+}
+
+/// The numbers of camera sample `sampleIndex` of `pixel`, by the render's pixel sampling.
+RT_FN Rng rngForCameraSample(uvec2 pixel, uint sampleIndex)
+{
+    const uint pixelIndex = pixel.y * uniforms.width + pixel.x;
+    return settingSampling() == RT_ENUM(PixelSampling, Sobol) ? rngForSobolSample(uniforms.seed, pixelIndex, sampleIndex)
+                                                              : rngForSample(uniforms.seed, pixelIndex, sampleIndex);
+}
+
+/// Draws the camera sample `sampleIndex` of `pixel` from the start of its stream: pixel jitter (2), lens (2,
+/// only with a thin lens), time (1). Stratified sampling puts sample s in stratum (s mod n, s / n) of the
+/// pixel's n x n.
+RT_FN CameraSample drawCameraSample(RT_INOUT(Rng) rng, uvec2 pixel, uint sampleIndex)
+{
+    const vec2 jitter = nextFloat2(rng);
+    CameraSample cs;
+    if (settingSampling() == RT_ENUM(PixelSampling, Stratified))
+    {
+        const uint n = uniforms.strata;
+        const vec2 stratum = vec2(float(sampleIndex % n), float(sampleIndex / n));
+        cs.raster = vec2(pixel) + (stratum + jitter) / float(n);
+    }
+    else
+        cs.raster = vec2(pixel) + jitter;
+    cs.lens = thinLens() ? nextFloat2(rng) : vec2(0.5f);
+    const float u = nextFloat(rng);
+    cs.time = uniforms.shutterOpen + u * (uniforms.shutterClose - uniforms.shutterOpen);
+    return cs;
+}
+
+/// The camera ray of `cs`: from the lens point (the centre without a thin lens) to the raster position's point
+/// of the focus plane (the direction is not unit length).
+RT_FN void generateRay(RT_IN(CameraSample) cs, RT_OUT(vec3) origin, RT_OUT(vec3) direction)
+{
+    const vec3 target =
+        uniforms.pixel00 + (cs.raster.x - 0.5f) * uniforms.pixelDeltaU + (cs.raster.y - 0.5f) * uniforms.pixelDeltaV;
+    origin = uniforms.cameraCenter;
+    if (thinLens())
+    {
+        const vec2 d = sampleUniformDiskConcentric(cs.lens);
+        origin += d.x * uniforms.defocusDiskU + d.y * uniforms.defocusDiskV;
+    }
+    direction = target - origin;
+}
+
+/// The shutter time of camera sample `sampleIndex` of `pixel`: the first numbers of its stream replayed (a GPU
+/// intersection shader cannot read the path's payload); the time stays the same along a path.
+RT_FN float cameraSampleTime(uvec2 pixel, uint sampleIndex)
+{
+    Rng rng = rngForCameraSample(pixel, sampleIndex);
+    return drawCameraSample(rng, pixel, sampleIndex).time;
+}
+
+#endif

@@ -1,0 +1,66 @@
+// Next-event estimation at a diffuse or isotropic vertex (Veach 1997 §9.2; pbrt-v4 PathIntegrator), written
+// once for both engines: a host's shading scope (Shading/README.md). One emitter selected (uniformly, by power
+// or by the light BVH: Shared/LightSelection.h), one point on it (Shared/LightSampling.h), and the shadow ray
+// handed back to the caller, which traces it once the vertex is done with (on the GPU little state then lives
+// across the trace; the wavefront traces it in a launch of its own).
+#ifndef RT_SHADING_DIRECT_LIGHTING_H
+#define RT_SHADING_DIRECT_LIGHTING_H
+
+#include "Shared/DiffuseScattering.h"
+#include "Shared/HostDevice.h"
+#include "Shared/LightSampling.h"
+#include "Shared/LightSelection.h"
+#include "Shared/Mis.h"
+#include "Shared/PathState.h"
+#include "Shared/Shading/Textures.h"
+
+/// Probability with which NEE at `origin` (receiver normal `receiver`, 0 in a medium) selects `light`.
+RT_FN float selectionPmf(uint light, vec3 origin, vec3 receiver)
+{
+    return lightSelectionPmf(RT_PASS(lightAlias) RT_PASS(lightBvh) RT_PASS(lightBvhLeaves) settingLightSelection(),
+                             light, uniforms.emitterCount, origin, receiver, uniforms.unidirectionalLight == 0u);
+}
+
+/// A light sample for next-event estimation seen from `origin`, where the vertex's rays leave (the hit point
+/// offset to the side of the unit shading normal ns; the point itself in a medium, `phase`): lights are
+/// sampled from there and the BSDF ray leaves from there too, so both strategies see one geometry and their
+/// MIS weights sum to 1 for every direction. False (shadow not pending) when it contributes nothing (the light BVH proved that no
+/// emitter reaches origin; the point faces away or lies below the horizon; it emits nothing towards origin);
+/// else shadow.contribution = f cos Le / (pmf pdf) x the MIS weight (nee-mis: the power heuristic against the
+/// BSDF strategy's pdf of the same direction; nee: 1), valid if the shadow ray is unoccluded. Takes the
+/// vertex's numbers uSelect for the selection and u for the point.
+RT_FN bool sampleDirect(vec3 origin, vec3 ns, bool phase, vec3 albedo, float uSelect, vec2 u,
+                        RT_OUT(ShadowRay) shadow)
+{
+    shadow.pending = false;
+    shadow.origin = origin;
+    shadow.direction = vec3(0.0f);
+    shadow.distance = 0.0f;
+    shadow.contribution = vec3(0.0f);
+    float pmf;
+    const vec3 receiver = phase ? vec3(0.0f) : ns; // no horizon in a medium
+    const uint picked = selectLight(RT_PASS(lightAlias) RT_PASS(lightBvh) settingLightSelection(), uSelect,
+                                    uniforms.emitterCount, origin, receiver, uniforms.unidirectionalLight == 0u, pmf);
+    if (picked == kNoIndex)
+        return false;
+    LightSample ls;
+    if (!sampleLight(lights[picked], settingLightSampler(), origin, receiver, u, ls))
+        return false;
+    const float bsdfPdf = diffusePdf(phase, ns, ls.wi); // f cos = albedo bsdfPdf
+    if (!(bsdfPdf > 0.0f) || (uniforms.unidirectionalLight != 0u && dot(ls.wi, ls.normal) >= 0.0f))
+        return false;
+    const vec3 le = evaluateTexture(materials[lights[picked].material].emissionTexture, ls.uv, ls.point);
+    if (!(max(le.x, max(le.y, le.z)) > 0.0f))
+        return false;
+    const float lightPdfTotal = pmf * ls.pdf;
+    const float weight = settingEstimator() == RT_ENUM(Estimator, NeeMis) ? powerHeuristic(lightPdfTotal, bsdfPdf) : 1.0f;
+    shadow.pending = true;
+    shadow.direction = ls.wi;
+    // The shadow ray stops short of the light's surface by a relative margin far above the rounding of the
+    // sampled point and of the light's intersection test.
+    shadow.distance = ls.distance * (1.0f - 1e-4f);
+    shadow.contribution = albedo * le * (weight * bsdfPdf / lightPdfTotal);
+    return true;
+}
+
+#endif
