@@ -3,9 +3,9 @@
 // constructors (vec2, vec3), float literals with an `f` suffix (GLSL accepts it; without it C++ would compute
 // in double and the engines would differ), the scalar functions below, RT_FN before each function, RT_OUT(T)
 // for out parameters, RT_INOUT(T) for inout ones, RT_IN(T) for struct parameters and RT_ENUM(Type, Value) for
-// HostDevice.h's tags. C++ sees it in namespace rt::shader. Code whose scalar type is switched to double for
-// the CPU (Shared/SphericalTriangle.h's Real) writes its literals without the suffix instead: double in C++,
-// float in GLSL.
+// HostDevice.h's tags, RT_DCHECK(cond) for preconditions (Check.h's in C++, nothing in GLSL). C++ sees it in
+// namespace rt::shader. Code whose scalar type is switched to double for the CPU (Shared/SphericalTriangle.h's
+// Real) writes its literals without the suffix instead: double in C++, float in GLSL.
 #ifndef RT_SHADER_LANG_H
 #define RT_SHADER_LANG_H
 
@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "Check.h"
 #include "Math/Math.h"
 
 namespace rt::shader
@@ -130,6 +131,9 @@ float signNotZero(float x)
 {
     return (floatBitsToUint(x) & 0x80000000u) != 0u ? -1.0 : 1.0;
 }
+// Check.h's debug checks of a precondition: on in C++ Debug builds (compiled, never run, in Release), nothing in
+// GLSL.
+#define RT_DCHECK(cond)
 #define RT_ARRAY(Type, name)
 #define RT_GLOBAL(Type, name)
 #define RT_PASS(name)

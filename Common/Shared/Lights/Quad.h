@@ -1,0 +1,101 @@
+// Quad lights for NEE (both engines, Shared/ShaderLang.h; conventions in Shared/Lights/LightSample.h): a
+// rectangle of at least kMinSphericalRectangle sr by its spherical rectangle (Ureña, Fajardo & King 2013, "An
+// Area-Preserving Parametrization for Spherical Rectangles", EGSR), uniform over the solid angle (SolidAngle) or
+// warped first by a bilinear fit of the receiver's cosine (Projected: Hart et al. 2020, "Practical Product
+// Sampling by Fitting and Composing Warps", EGSR; pbrt-v4 §6.5.4); every other quad and Area by book 3's area
+// sampler (Lights/Planar.h). Each sampler's pdf is beside it.
+#ifndef RT_SHARED_LIGHTS_QUAD_H
+#define RT_SHARED_LIGHTS_QUAD_H
+
+#include "Shared/HostDevice.h"
+#include "Shared/Lights/LightSample.h"
+#include "Shared/Lights/Planar.h"
+#include "Shared/ShaderLang.h"
+#include "Shared/SphericalRectangle.h"
+#include "Shared/Warps.h"
+
+RT_SHADER_NAMESPACE_BEGIN
+
+/// Below this solid angle (sr) a rectangle is sampled by area: the float sum of four angles minus 2 pi
+/// carries an absolute error near 5e-7 sr, 5e-5 of the density here, and a light this small looks the same
+/// to both strategies.
+RT_CONST(float, kMinSphericalRectangle, 1e-2f)
+
+/// A quad whose edges are orthogonal (to float precision): what spherical-rectangle sampling needs.
+RT_FN bool isRectangle(RT_IN(LightData) light)
+{
+    return RT_LIGHT_IS(light.shape, Quad) &&
+           abs(dot(light.p1, light.p2)) <= 1e-5f * length(light.p1) * length(light.p2);
+}
+
+/// The cosine to the receiver normal n at the rectangle's four corners, seen from r.o, floored at 0.01 (a
+/// corner below the horizon still gets samples near it, where the cosine rises): (w00, w10, w01, w11), the
+/// weights of the bilinear warp that makes spherical-rectangle samples follow the cosine (pbrt-v4 §6.5.4,
+/// after Hart et al. 2020, "Practical Product Sampling by Fitting and Composing Warps").
+RT_FN vec4 rectangleCosineWeights(RT_IN(SphericalRectangle) r, vec3 n)
+{
+    const vec3 zn = r.z0 * r.z;
+    const float w00 = max(dot(n, normalize(r.x0 * r.x + r.y0 * r.y + zn)), 0.01f);
+    const float w10 = max(dot(n, normalize(r.x1 * r.x + r.y0 * r.y + zn)), 0.01f);
+    const float w01 = max(dot(n, normalize(r.x0 * r.x + r.y1 * r.y + zn)), 0.01f);
+    const float w11 = max(dot(n, normalize(r.x1 * r.x + r.y1 * r.y + zn)), 0.01f);
+    return vec4(w00, w10, w01, w11);
+}
+
+/// NEE's solid-angle pdf of wi from p with receiver normal n (0 in a medium) by `strategy`: over a rectangle of
+/// at least kMinSphericalRectangle sr, 1 / S (SolidAngle, or no receiver), or the bilinear cosine warp's density
+/// at the direction's u (the inverse of the spherical map) over 1 / S (Projected); else the area density.
+RT_FN float quadLightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec3 wi)
+{
+    if (strategy != RT_ENUM(LightSampler, Area) && isRectangle(light))
+    {
+        const SphericalRectangle r = makeSphericalRectangle(p, light.p0, light.p1, light.p2);
+        if (r.solidAngle >= kMinSphericalRectangle)
+        {
+            const float t = planarHit(light, p, wi);
+            if (t < 0.0f)
+                return 0.0f;
+            if (strategy == RT_ENUM(LightSampler, SolidAngle) || !(dot(n, n) > 0.0f))
+                return 1.0f / r.solidAngle;
+            const vec3 y = t * wi;
+            const vec2 uv = invertSphericalRectangle(r, dot(y, r.x), dot(y, r.y));
+            const vec4 w = rectangleCosineWeights(r, n);
+            return bilinearPdf(uv, w.x, w.y, w.z, w.w) / r.solidAngle;
+        }
+    }
+    return planarLightPdf(light, p, wi);
+}
+
+/// NEE's sample from p by `strategy`, with the density quadLightPdf reports.
+RT_FN bool sampleQuadLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec2 u,
+                           RT_OUT(LightSample) ls)
+{
+    if (strategy != RT_ENUM(LightSampler, Area) && isRectangle(light))
+    {
+        const SphericalRectangle r = makeSphericalRectangle(p, light.p0, light.p1, light.p2);
+        if (r.solidAngle >= kMinSphericalRectangle)
+        {
+            // Projected warps u toward the receiver's cosine first; SolidAngle (or no receiver) takes u as is.
+            const bool warp = strategy == RT_ENUM(LightSampler, Projected) && dot(n, n) > 0.0f;
+            const vec4 w = warp ? rectangleCosineWeights(r, n) : vec4(1.0f);
+            const vec2 warped = warp ? sampleBilinear(u, w.x, w.y, w.z, w.w) : u;
+            ls.point = sampleSphericalRectangle(r, warped);
+            ls.normal = light.normal;
+            const vec3 planar = ls.point - light.p0;
+            ls.uv = vec2(dot(planar, light.dualU), dot(planar, light.dualV));
+            const vec3 toPoint = ls.point - p;
+            ls.distance = length(toPoint);
+            ls.wi = toPoint / ls.distance;
+            // The density of the construction at its own (u, v) (the warp's, 1 without it) over 1 / S; 0 where
+            // rounding put the direction off the rectangle, as quadLightPdf finds it.
+            const float warpPdf = warp ? bilinearPdf(warped, w.x, w.y, w.z, w.w) : 1.0f;
+            ls.pdf = planarHit(light, p, ls.wi) > 0.0f ? warpPdf / r.solidAngle : 0.0f;
+            return ls.pdf > 0.0f;
+        }
+    }
+    return samplePlanarLight(light, p, u, ls);
+}
+
+RT_SHADER_NAMESPACE_END
+
+#endif
