@@ -89,7 +89,7 @@ uint tracedSample()
 /// or kNoIndex when no primitive of the record is a light (InstanceRecord::firstPrimitiveLight) or the
 /// estimator is not NEE. Hit shaders hand this on and raygen reads the entry only when it needs the light (an
 /// emitter hit after NEE, weighted by MIS or by 0): the load in every closest-hit cost the H100 3 % of book 3's
-/// mixture, which never needs it, and the record's field alone up to 3 % on the H200 (PERFORMANCE.md §8.10).
+/// mixture, which never needs it, and the record's field alone up to 3 % on the H200 (docs/notebook/PERFORMANCE.md §8.10).
 uint primitiveLightSlot(InstanceRecord record, uint primitive)
 {
     if (!settingUsesNee())

@@ -2,7 +2,7 @@
 // stream of its own (RFC 1951), the pieces but the last end with a sync flush (byte-aligned, not final), and
 // the adler-32 of the whole closes the stream. Any inflater reads it as one stream. The PNG of a render is
 // written after the render, while every other core waits: compressed in pieces it keeps the cores busy
-// (docs/PERFORMANCE.md §1).
+// (docs/notebook/PERFORMANCE.md §1).
 #pragma once
 
 #include <cstddef>

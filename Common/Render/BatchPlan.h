@@ -21,7 +21,7 @@ inline constexpr double kBatchTargetSeconds = 0.25;
 /// bounds every batch anyway; this only keeps a first batch measured in microseconds from sizing the second to
 /// the whole render: every batch covers every pixel, so its rate holds for the next. It was 4: a 600x337
 /// render at 256 spp then took five batches (1, 4, 16, 64, 171 spp), each waited for and each ending in the
-/// tail of its slowest paths, which cost the H100's light renders of 10-100 ms up to 1.2x (docs/PERFORMANCE.md
+/// tail of its slowest paths, which cost the H100's light renders of 10-100 ms up to 1.2x (docs/notebook/PERFORMANCE.md
 /// §8.6). GpuEngine's bands of rows take the same limit, of the work measured so far in the frame rather than
 /// of the last band, after a band that spans the frame (Engine/BandPlan.h).
 inline constexpr double kBatchGrowthLimit = 64.0;

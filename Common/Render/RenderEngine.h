@@ -70,5 +70,8 @@ public:
     /// What the last frame ran on, in words, where an engine has variants (the GPU engine: the specialisation
     /// of its pipeline; the CPU engine: its path loop); empty otherwise.
     virtual std::string frameConfiguration() const { return {}; }
+    /// Warnings and errors the device's validation has reported since the engine was made (the GPU engine with
+    /// --validation); 0 where there is none.
+    virtual std::uint64_t validationMessages() const { return 0; }
 };
 } // namespace rt

@@ -145,7 +145,7 @@ struct SceneDefaults
     // This project's scenes use NEE + MIS; the books' keep book 3's mixture, so a render compares with theirs.
     shader::Estimator estimator = shader::Estimator::NeeMis;
     // This project's scenes draw Owen-scrambled Sobol samples, which keep the spherical samplers' stratification
-    // (the largest gain after the projected samplers, docs/PERFORMANCE.md §4.1; pbrt-v4's default sampler is a
+    // (the largest gain after the projected samplers, docs/notebook/PERFORMANCE.md §4.1; pbrt-v4's default sampler is a
     // Sobol one too); the books' keep independent random samples.
     shader::PixelSampling sampling = shader::PixelSampling::Sobol;
 };

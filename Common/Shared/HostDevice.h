@@ -179,7 +179,7 @@ struct LightData
     vec3 dualV;
     // Quad / Triangle: |p0|, |dualU|, |dualV| and |dualU + dualV|, the lengths planarHit's rounding slack
     // scales with, computed once (setPlanarSlackLengths), so that planarHit can test its slack bounds on every
-    // call without four square roots (docs/PERFORMANCE.md §6.2).
+    // call without four square roots (docs/notebook/PERFORMANCE.md §6.2).
     float p0Length;
     float dualULength;
     float dualVLength;
@@ -305,7 +305,7 @@ RT_CONST(uint, kPayloadShadow, 1u)
 // Specialization constants of the path-tracing pipeline (Shaders/Specialization.glsl). The first four stand
 // each for one RenderUniforms field, so that a pipeline compiled for one estimator, light sampler, light
 // selection and sampling carries only their code (the driver folds the rest away: 1.1x to 5x faster on an H100,
-// docs/PERFORMANCE.md §4.2); the value kSpecDynamic reads the uniform instead: the general pipeline.
+// docs/notebook/PERFORMANCE.md §4.2); the value kSpecDynamic reads the uniform instead: the general pipeline.
 // kSpecIdFeatures is a mask of the kFeature* bits below: what the scene (and the render's camera) uses; the
 // shaders test `if (kHasX)` on it and the driver drops the code of every absent feature. kSpecDynamic (every
 // bit set) is the general pipeline again: every feature present. Each specialisation is a compilation (tens
@@ -318,7 +318,7 @@ RT_CONST(uint, kSpecIdSampling, 3u)       // RenderUniforms::sampling
 RT_CONST(uint, kSpecIdFeatures, 4u)       // kFeature* bits
 // 0: the sphere tests take float's c of their quadratic, for a scene without huge spheres (SceneFeatures::
 // hugeSpheres); else (kSpecDynamic included) the exact c where it cancels (Shared/SphereQuadratic.h). Not a
-// feature bit: the mixture, whose pipeline leaves the feature mask dynamic (docs/PERFORMANCE.md §4.3), sets
+// feature bit: the mixture, whose pipeline leaves the feature mask dynamic (docs/notebook/PERFORMANCE.md §4.3), sets
 // it too. The exact c's code alone, never run, cost the light book scenes 3-9 % on an H100 (§8.8).
 RT_CONST(uint, kSpecIdExactSphereC, 5u)
 // 0: the closest-hit shaders leave a hit's uv at 0, for a scene without image textures (SceneFeatures::

@@ -38,7 +38,7 @@ RT_FN float cosSubClamped(float sinA, float cosA, float sinB, float cosB)
 /// of squared lengths (taken at once, side by side), scaled by the one reciprocal distance, and the sines of
 /// the angle differences are taken only where the difference is not clamped to 0: on the CPU a selection takes
 /// 120 ns instead of 144 on cornell-box-lights, 317 instead of 397 on many-lights (`rt_bench
-/// --benchmark_filter=SelectLight`, docs/PERFORMANCE.md §4.5).
+/// --benchmark_filter=SelectLight`, docs/notebook/PERFORMANCE.md §4.5).
 RT_FN float lightBvhImportance(RT_IN(LightBvhNode) node, vec3 p, vec3 n, bool twoSided)
 {
     const vec3 toCentre = node.centre - p;

@@ -76,7 +76,7 @@ RT_FN float sphereQuadraticC(vec3 f, float r)
 ///   (so also for a ray from another surface that starts that close to the sphere).
 /// That is nearly every ray leaving a sphere (each bounce off a ground sphere, each refraction through glass),
 /// which took the exact path when the rule was "unless surely behind": 10 % of rtow-default's sphere tests, now
-/// 0.8 % (docs/PERFORMANCE.md §8.7). There the exact c puts the near root within twice that bound: a root
+/// 0.8 % (docs/notebook/PERFORMANCE.md §8.7). There the exact c puts the near root within twice that bound: a root
 /// between the bound and twice it, which the exact c accepted, is now taken for the surface the ray leaves, on
 /// both engines alike.
 RT_FN float sphereQuadraticCForNearRoot(vec3 f, float r, float q)

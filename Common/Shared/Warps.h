@@ -14,7 +14,7 @@ RT_SHADER_NAMESPACE_BEGIN
 /// sin and cos of 2 pi u for u in [0, 1]. On the CPU: quadrant reduction, then Taylor polynomials on
 /// [-pi/4, pi/4] (degree 7 and 8: absolute error below 4e-7), as libm's sincosf was a tenth of a diffuse
 /// bounce. On the GPU: the hardware's sin and cos, one instruction each; the polynomial's quadrant switch
-/// cost an H200 8 % of cornell-box-lights' time (docs/PERFORMANCE.md). Vulkan guarantees them to 2^-11
+/// cost an H200 8 % of cornell-box-lights' time (docs/notebook/PERFORMANCE.md). Vulkan guarantees them to 2^-11
 /// absolute only; the parity test bounds what the devices really do.
 RT_FN void sinCos2Pi(float u, RT_OUT(float) s, RT_OUT(float) c)
 {

@@ -1,8 +1,11 @@
 // ray-tracing-cpu: the CPU path tracer's command line and, without --headless, its desktop window
-// (App/Gui: the thesis' settings panel, renders off the UI thread, timings of every engine side by side).
+// (App/Gui: the thesis' settings panel, renders off the UI thread, timings of every engine side by side). Its
+// engines are the registry's (Render/EngineRegistry.h): single and multi, and the GPU engine where the build
+// links it (the window's third engine, and --compare's).
 #include "Cli/HeadlessRun.h"
-#include "Engine/CpuEngine.h"
+#include "Compare/CompareCommand.h"
 #include "Error.h"
+#include "Render/EngineRegistry.h"
 
 #ifdef RT_WITH_GUI
 #include "App/Gui/GuiApp.h"
@@ -21,11 +24,13 @@ int main(int argc, char** argv)
         ->capture_default_str();
     std::string specialize = "on";
     app.add_option("--specialize", specialize,
-                   "Headless: on runs the path loop compiled for the render's estimator and the scene's features "
+                   "Headless and --compare: on runs the path loop compiled for the render's estimator and the scene's features "
                    "(no media code without media, no texture lookups for solid colours); off runs the general "
                    "loop that tests them at every vertex (the same image bit for bit, for benchmarks)")
         ->check(CLI::IsMember({"on", "off"}))
         ->capture_default_str();
+    rt::compare::CompareFlags compareFlags;
+    rt::compare::addCompareOptions(app, compareFlags);
 #ifdef RT_WITH_GUI
     rt::gui::GuiOptions gui;
     rt::gui::addGuiOptions(app, gui);
@@ -34,6 +39,9 @@ int main(int argc, char** argv)
     return rt::guardedMain(app, argc, argv, [&] {
         if (rt::runCommonCommands(options))
             return 0;
+        const rt::EngineOptions engineOptions{.specialize = *rt::parseSpecialize(specialize)}; // checked by CLI11
+        if (compareFlags.compare)
+            return rt::compare::runCompare(compareFlags, options, engineOptions);
         if (!options.headless)
         {
 #ifdef RT_WITH_GUI
@@ -50,7 +58,7 @@ int main(int argc, char** argv)
             throw rt::UsageError("--engine must be single or multi (got '" + engineName + "')");
         rt::checkOutputPaths(options);
         const rt::CommandLineRender job = rt::resolveCommandLine(options);
-        rt::cpu::CpuEngine cpu(*engine, specialize == "on");
-        return rt::runHeadless(cpu, job.scene, job.request, options);
+        const std::unique_ptr<rt::RenderEngine> cpu = rt::engines::make(*engine, engineOptions);
+        return rt::runHeadless(*cpu, job.scene, job.request, options);
     });
 }

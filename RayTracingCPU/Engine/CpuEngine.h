@@ -12,12 +12,12 @@
 #include "Integrator/PathVariants.h"
 #include "Render/RenderEngine.h"
 #include "Scene/Camera.h"
-#include "Scene/CpuScene.h"
+#include "Engine/CpuScene.h"
 
 namespace rt::cpu
 {
 /// Camera paths per batch: 2^20, half a second on one core of the CI kind for the books' Cornell boxes. Each
-/// batch ends with the parallel loop's tail (about 3 ms on 2 cores, docs/PERFORMANCE.md): fewer, larger
+/// batch ends with the parallel loop's tail (about 3 ms on 2 cores, docs/notebook/PERFORMANCE.md): fewer, larger
 /// batches cost less; progress does not wait for a batch (it works per row), nor does cancellation (polled
 /// before every sample). The render driver also keeps a batch near kBatchTargetSeconds (Render/BatchPlan.h).
 inline constexpr std::uint64_t kPathsPerBatch = std::uint64_t(1) << 20;

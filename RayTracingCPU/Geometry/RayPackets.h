@@ -1,7 +1,7 @@
 // kLanes rays at once against one primitive, the rays in the lanes: the transpose of Packets.h (one ray against
 // kLanes primitives). For a scene that is one small BVH leaf every ray tests every primitive, and a lane of
 // rays pays no lane for padding nor a horizontal min per packet: 12.7 ns per ray against 33.1 on book 3's
-// final scene (rt_bench --benchmark_filter=ClosestHit, docs/PERFORMANCE.md §1). Integrator/PathStream.h
+// final scene (rt_bench --benchmark_filter=ClosestHit, docs/notebook/PERFORMANCE.md §1). Integrator/PathStream.h
 // traces paths this way.
 // Each lane runs the primitive packets' own lane test (Packets.h's detail::quadLanes, sphereLanes) for its
 // ray, and the lanes keep the nearest hit with the primitives taken in the packets' order (the first of equal

@@ -9,7 +9,7 @@
 #include <cstdint>
 
 #include "Image/ImageIO.h"
-#include "Scene/CpuScene.h"
+#include "Engine/CpuScene.h"
 #include "Scene/Perlin.h"
 // The namespace-level Shared headers that the shading includes: first here, so that inside the class their
 // include guards leave nothing.

@@ -13,12 +13,12 @@
 
 #include "Integrator/CpuShading.h"
 #include "Render/RenderSettings.h"
-#include "Scene/CpuScene.h"
+#include "Engine/CpuScene.h"
 #include "Shared/Medium.h"
 
 // The path loop compiled as one function, with the traversal, the packet tests, the samplers and the random
 // numbers inlined into it (GCC's and Clang's flatten): 1.08x on book 3's final scene on one core, 1.05-1.12x on
-// the catalogue, the same images bit for bit (docs/PERFORMANCE.md §1). Elsewhere the compiler decides.
+// the catalogue, the same images bit for bit (docs/notebook/PERFORMANCE.md §1). Elsewhere the compiler decides.
 #if defined(__GNUC__)
 #define RT_FLATTEN [[gnu::flatten]]
 #else

@@ -10,18 +10,18 @@
 
 #include <spdlog/spdlog.h>
 
-#include "App/Compare/Compare.h"
-#include "App/Compare/ReferenceCache.h"
+#include "Compare/Compare.h"
+#include "Compare/ReferenceCache.h"
 #ifdef RT_GPU_WINDOW
 #include "App/Gui/WindowApp.h"
 #endif
 #include "Cli/HeadlessRun.h"
 #include "Cli/ValueParsing.h"
 #include "Cli/WindowSize.h"
-#include "Engine/CpuEngine.h"
+#include "Compare/CompareCommand.h"
 #include "Engine/GpuContext.h"
-#include "Engine/GpuEngine.h"
 #include "Error.h"
+#include "Render/EngineRegistry.h"
 #include "Scenes/Catalogue.h"
 
 namespace
@@ -40,14 +40,6 @@ struct WindowFlags
     std::string accumulate = "on";
     std::string heatmap = "off";
 };
-
-/// --specialize's value (checked by CLI11): on, strategy, off.
-rt::gpu::Specialize specializeMode(const std::string& value)
-{
-    return value == "off" ? rt::gpu::Specialize::Off
-           : value == "strategy" ? rt::gpu::Specialize::Strategy
-                                 : rt::gpu::Specialize::Full;
-}
 
 bool onOff(const std::string& value, const char* flag)
 {
@@ -85,7 +77,7 @@ void addWindowOptions(CLI::App& app, WindowFlags& w)
 }
 
 int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::optional<int> device, bool validation,
-              rt::gpu::GpuIntegrator integrator, const std::string& shaderDir)
+              rt::GpuIntegrator integrator, const std::string& shaderDir)
 {
     if (!options.hdr.empty() || !options.stats.empty())
         spdlog::warn("--hdr and --stats are for --headless; the window's Save writes the PFM beside the PNG");
@@ -129,7 +121,7 @@ struct WindowFlags
 
 void addWindowOptions(CLI::App&, WindowFlags&) {}
 
-int runWindow(const rt::CommonOptions&, const WindowFlags&, std::optional<int>, bool, rt::gpu::GpuIntegrator,
+int runWindow(const rt::CommonOptions&, const WindowFlags&, std::optional<int>, bool, rt::GpuIntegrator,
               const std::string&)
 {
     throw rt::UsageError("this build has no window (configured with RT_BUILD_GUI=OFF): run with --headless");
@@ -148,67 +140,8 @@ int main(int argc, char** argv)
     app.add_option("--device", device,
                    "Vulkan device index in vkEnumeratePhysicalDevices order (default: the first suitable "
                    "discrete GPU, else any suitable device); an unsuitable one is refused with what it lacks");
-    bool compare = false;
-    std::string sppList = "10,50,100";
-    std::string engines = "single,multi,gpu";
-    int referenceSpp = 0;
-    std::string table;
-    CLI::Option* compareFlag = app.add_flag("--compare", compare,
-                 "Headless comparison: render --scene at every count of --spp-list on every engine of --engines, "
-                 "print time, CPU/GPU ratio and relMSE against a --reference-spp render");
-    app.add_option("--spp-list", sppList, "With --compare: sample counts, comma separated")->capture_default_str();
-    app.add_option("--engines", engines, "With --compare: engines, comma separated (single, multi, gpu)")
-        ->capture_default_str();
-    app.add_option("--reference-spp", referenceSpp,
-                   "With --compare: spp of the reference image (default: 4x the largest count), rendered by the "
-                   "last engine in two halves (seeds + 1000 and + 2000) whose difference gives the reference's own "
-                   "relMSE");
-    std::string referencePath;
-    app.add_option("--reference", referencePath,
-                   "With --compare: a linear PFM of the same size (e.g. a long --hdr render) to measure against "
-                   "instead of rendering a reference")
-        ->check(CLI::ExistingFile);
-    app.add_option("--table", table, "With --compare: write every figure as JSON here");
-    rt::app::StrategyLists strategyLists;
-    app.add_option("--estimators", strategyLists.estimators,
-                   "With --compare: estimators to compare, comma separated (bsdf, mixture, nee, nee-mis; default: "
-                   "--estimator's); every combination with the lists below is a strategy")
-        ->needs(compareFlag);
-    app.add_option("--light-samplers", strategyLists.lightSamplers,
-                   "With --compare: NEE's light samplers to compare (area, solid-angle, projected)")
-        ->needs(compareFlag);
-    app.add_option("--light-selections", strategyLists.lightSelections,
-                   "With --compare: NEE's light selections to compare (uniform, power, bvh)")
-        ->needs(compareFlag);
-    app.add_option("--samplings", strategyLists.samplings,
-                   "With --compare: pixel samplings to compare (random, stratified, accumulate, sobol)")
-        ->needs(compareFlag);
-    app.add_option("--roulettes", strategyLists.roulettes, "With --compare: Russian roulette settings to compare (on, off)")
-        ->needs(compareFlag);
-    std::string csv;
-    app.add_option("--csv", csv,
-                   "With --compare: one CSV row per engine x strategy x spp (scene, engine, device, strategy, label, "
-                   "spp, wall ms, GPU ms, Mpaths/s, MSE, relMSE, RMSE), each written as its render ends (Ctrl-C keeps "
-                   "them)")
-        ->needs(compareFlag);
-    std::string plot;
-    app.add_option("--plot", plot,
-                   "With --compare and --csv: a PNG of relMSE against time and against spp (log-log, slope -1 "
-                   "drawn) and of the efficiency 1/(relMSE s), drawn by matplotlib (python3-matplotlib)")
-        ->needs(compareFlag);
-    double equalTimeMs = 0.0;
-    app.add_option("--equal-time", equalTimeMs,
-                   "With --compare: render every engine x strategy for this many milliseconds instead of the "
-                   "--spp-list ladder, and write the images with their false-colour error images as one figure to "
-                   "--output FILE.png")
-        ->check(CLI::PositiveNumber)
-        ->needs(compareFlag);
-    std::string referenceCache = rt::app::defaultReferenceCacheDir().string();
-    app.add_option("--reference-cache", referenceCache,
-                   "With --compare: folder of rendered references, re-used when scene, settings, spp, seed and engine "
-                   "match ('off': render the reference every time)")
-        ->capture_default_str()
-        ->needs(compareFlag);
+    rt::compare::CompareFlags compareFlags;
+    rt::compare::addCompareOptions(app, compareFlags);
     app.add_flag("--validation", validation,
                  "Run with VK_LAYER_KHRONOS_validation and fail (exit 1) if it reports any warning or error "
                  "(always on in Debug builds and with RT_VULKAN_VALIDATION=1)");
@@ -229,7 +162,7 @@ int main(int argc, char** argv)
                    "GPU: megakernel runs each camera sample's whole path in one ray-tracing invocation; wavefront "
                    "runs kernels per segment over waves of paths (path rays, shading in a compute kernel, shadow "
                    "rays): the same estimator, the same image within noise, up to 3.5x faster on NEE renders "
-                   "(docs/PERFORMANCE.md); auto takes the wavefront on a GPU for nee and nee-mis over two emitters "
+                   "(docs/notebook/PERFORMANCE.md); auto takes the wavefront on a GPU for nee and nee-mis over two emitters "
                    "or more from 2^20 camera paths (width x height x spp), for the mixture over two lights or more "
                    "and for scenes of 256 primitives or more from 2^24 paths, else the megakernel")
         ->check(CLI::IsMember({"auto", "megakernel", "wavefront"}))
@@ -251,47 +184,24 @@ int main(int argc, char** argv)
     return rt::guardedMain(app, argc, argv, [&] {
         if (rt::runCommonCommands(options))
             return 0;
-        validation = validation || rt::gpu::validationWanted();
-        // The headless engine's and --compare's (the window adds its presentation to the device and integrator).
-        const auto engineOptions = [&] {
-            return rt::gpu::GpuEngineOptions{.deviceIndex = device,
-                                             .validation = validation,
-                                             .shaderDir = shaderDir,
-                                             .specialize = specializeMode(specialize),
-                                             .integrator = *rt::gpu::parseIntegrator(integrator), // checked by CLI11
-                                             .wavePaths = wavePaths};
-        };
-        if (compare)
-        {
-            const rt::CommandLineRender job = rt::resolveCommandLine(options);
-            rt::app::CompareOptions c;
-            c.spps = rt::app::parseSppList(sppList);
-            c.engines = rt::app::parseEngineList(engines);
-            c.referenceSpp = referenceSpp > 0 ? referenceSpp : 4 * *std::max_element(c.spps.begin(), c.spps.end());
-            c.json = table;
-            c.referencePath = referencePath;
-            c.strategies = rt::app::strategyGrid(strategyLists, job.request.settings);
-            c.csv = csv;
-            c.plot = plot;
-            c.equalTimeMs = equalTimeMs;
-            c.grid = options.output;
-            if (referenceCache != "off")
-                c.referenceCache = referenceCache;
-            return rt::app::runComparison(job.scene, job.request, c, [&](rt::EngineKind kind) -> std::unique_ptr<rt::RenderEngine> {
-                if (kind == rt::EngineKind::Gpu)
-                    return std::make_unique<rt::gpu::GpuEngine>(engineOptions());
-                return std::make_unique<rt::cpu::CpuEngine>(kind);
-            });
-        }
+        const rt::EngineOptions engineOptions{.specialize = *rt::parseSpecialize(specialize), // checked by CLI11
+                                              .device = device,
+                                              .validation = validation,
+                                              .shaderDir = shaderDir,
+                                              .integrator = *rt::parseIntegrator(integrator), // checked by CLI11
+                                              .wavePaths = wavePaths};
+        if (compareFlags.compare)
+            return rt::compare::runCompare(compareFlags, options, engineOptions);
         if (!options.headless)
-            return runWindow(options, window, device, validation, engineOptions().integrator, shaderDir);
+            return runWindow(options, window, device, validation || rt::gpu::validationWanted(),
+                             engineOptions.integrator, shaderDir);
         rt::checkOutputPaths(options);
         const rt::CommandLineRender job = rt::resolveCommandLine(options);
-        rt::gpu::GpuEngine gpu(engineOptions());
-        const int status = rt::runHeadless(gpu, job.scene, job.request, options);
-        if (gpu.validationMessages() > 0)
+        const std::unique_ptr<rt::RenderEngine> gpu = rt::engines::make(rt::EngineKind::Gpu, engineOptions);
+        const int status = rt::runHeadless(*gpu, job.scene, job.request, options);
+        if (gpu->validationMessages() > 0)
         {
-            spdlog::error("Vulkan validation reported {} warnings or errors (see above)", gpu.validationMessages());
+            spdlog::error("Vulkan validation reported {} warnings or errors (see above)", gpu->validationMessages());
             return status == 0 ? 1 : status;
         }
         return status;

@@ -9,7 +9,7 @@
 // of a pass or more, the first included, samples the whole frame and its rate holds for the next. Bands of
 // consecutive rows sized the lower rows from the top ones: with a growth of 64 that ran 1.6 s past a Ctrl-C
 // on lavapipe, and with a growth of 4 the H100 traced a 600x337 render of a light scene in eleven
-// submissions, up to 1.3x its time (docs/PERFORMANCE.md §8.6, §8.7). A band shorter than a pass (a slow
+// submissions, up to 1.3x its time (docs/notebook/PERFORMANCE.md §8.6, §8.7). A band shorter than a pass (a slow
 // device's large image) is a run of one phase, top to bottom, so the band after it grows at most 4x, as bands
 // of consecutive rows did. A batch of one band keeps the rows in order.
 #pragma once
@@ -24,7 +24,7 @@ public:
     /// A frame of `height` (>= 1) rows: the first band is the frame at one sample, but at most `firstRows`
     /// (>= 1): a slow device's large image (800x800 of many-lights is 24 ms a row on lavapipe, so a pass of 50
     /// rows ran past the 1 s a Ctrl-C may take). A first band of one pass, the rule before, cost the H100 a
-    /// submission: 0-3 % of a 256-spp light book render (docs/PERFORMANCE.md §8.8).
+    /// submission: 0-3 % of a 256-spp light book render (docs/notebook/PERFORMANCE.md §8.8).
     explicit BandPlan(std::uint32_t height, std::uint32_t firstRows = ~0u);
 
     /// Rows of the next band of a batch of `samples` per pixel, of which `rowsLeft` (>= 1) rows are not

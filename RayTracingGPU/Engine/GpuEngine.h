@@ -44,7 +44,7 @@ struct GpuEngineOptions
 /// Camera paths one dispatch may hold. On a GPU ~268 M (745 spp of 600x600, 129 of 1920x1080), so that fast
 /// renders' batches are sized by time (kBatchTargetSeconds) rather than cut by the cap: each dispatch ends in
 /// the tail of its slowest threads, and a cap of 16 M cut a 600x337 render of 1024 spp into 14 of them, which
-/// cost the light book scenes up to 7 % on an H200 (docs/PERFORMANCE.md §8.9; 16 M had run 15 % faster than
+/// cost the light book scenes up to 7 % on an H200 (docs/notebook/PERFORMANCE.md §8.9; 16 M had run 15 % faster than
 /// 4 M). On a CPU device such as lavapipe ~64 K (a fraction of a second at the test sizes).
 inline constexpr std::uint64_t kPathsPerBatchGpu = std::uint64_t(1) << 28;
 inline constexpr std::uint64_t kPathsPerBatchCpu = std::uint64_t(1) << 16;
@@ -90,7 +90,7 @@ public:
 
     bool validationEnabled() const;
     /// Validation warnings and errors reported since the engine was created (0 without validation).
-    std::uint64_t validationMessages() const;
+    std::uint64_t validationMessages() const override;
     /// The same counts, readable after the engine is destroyed (leaked objects are reported while the device
     /// is destroyed). Null without validation.
     std::shared_ptr<const vk::ValidationLog> validationLog() const;

@@ -4,25 +4,6 @@
 
 namespace rt::gpu
 {
-const char* integratorName(GpuIntegrator integrator)
-{
-    switch (integrator)
-    {
-    case GpuIntegrator::Auto: return "auto";
-    case GpuIntegrator::Megakernel: return "megakernel";
-    case GpuIntegrator::Wavefront: return "wavefront";
-    }
-    return "?";
-}
-
-std::optional<GpuIntegrator> parseIntegrator(std::string_view name)
-{
-    for (const GpuIntegrator i : {GpuIntegrator::Auto, GpuIntegrator::Megakernel, GpuIntegrator::Wavefront})
-        if (name == integratorName(i))
-            return i;
-    return std::nullopt;
-}
-
 GpuIntegrator resolveIntegrator(GpuIntegrator setting, bool cpuDevice, const shader::RenderUniforms& uniforms,
                                 std::uint64_t primitives, std::uint64_t paths)
 {

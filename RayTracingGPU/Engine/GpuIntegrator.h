@@ -1,29 +1,19 @@
 // How the GPU engine runs the path-tracing estimator: one ray-tracing invocation per camera sample looping
 // over its segments (the megakernel, RayGen.rgen), or kernels per segment over a wave of paths
-// (WavefrontPipeline.h). Both compute the same estimator with the same shading code (PathVertex.glsl); which
-// is faster depends on the render (docs/PERFORMANCE.md §8), and `auto` picks by a rule measured on the H100.
+// (WavefrontPipeline.h). Both compute the same estimator with the same shading code (Shared/Shading/); which
+// is faster depends on the render (docs/notebook/PERFORMANCE.md §8), and `auto` picks by a rule measured on the H100.
 #pragma once
 
 #include <cstdint>
-#include <optional>
-#include <string_view>
 
+#include "Render/EngineOptions.h"
 #include "Shared/HostDevice.h"
 
 namespace rt::gpu
 {
-enum class GpuIntegrator
-{
-    Auto,
-    Megakernel,
-    Wavefront,
-};
-
-/// --integrator's names: "auto", "megakernel", "wavefront".
-const char* integratorName(GpuIntegrator integrator);
-
-/// The integrator a name gives, or nothing for an unknown name.
-std::optional<GpuIntegrator> parseIntegrator(std::string_view name);
+using rt::GpuIntegrator; // --integrator (Render/EngineOptions.h, with its names)
+using rt::integratorName;
+using rt::parseIntegrator;
 
 /// Scenes with at least this many traced primitives run the wavefront under `auto`: their traversal calls
 /// many intersection shaders, each dearer in the megakernel, whose raygen keeps the path's state across it
@@ -32,7 +22,7 @@ inline constexpr std::uint64_t kWavefrontPrimitives = 256;
 
 /// Under auto, a render of fewer camera paths than these runs the megakernel: each of the wavefront's
 /// segments costs a few launches whatever their size, which a small render does not repay (H100,
-/// docs/PERFORMANCE.md §8.5). NEE with several emitters gains the most from the wavefront (cornell-box-lights:
+/// docs/notebook/PERFORMANCE.md §8.5). NEE with several emitters gains the most from the wavefront (cornell-box-lights:
 /// 0.71x the megakernel at 0.36 M paths, 1.11x at 1.4 M); the mixture and large scenes need more paths
 /// (cornell-box-lights' mixture 0.92x at 7.2 M, 1.02x at 10.8 M; rtrol-cornell-glass 0.88x at 11.5 M, 1.03x at
 /// 23 M; rtow-final 0.80x at 6.5 M, 1.29x at 52 M).

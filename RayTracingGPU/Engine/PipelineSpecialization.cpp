@@ -46,17 +46,6 @@ std::uint32_t uniformFeatureBits(const RenderUniforms& u)
 }
 } // namespace
 
-const char* specializeName(Specialize specialize)
-{
-    switch (specialize)
-    {
-    case Specialize::Off: return "off";
-    case Specialize::Strategy: return "strategy";
-    case Specialize::Full: return "on";
-    }
-    return "?";
-}
-
 PipelineSpecialization PipelineSpecialization::general()
 {
     PipelineSpecialization s;
@@ -98,7 +87,7 @@ PipelineSpecialization PipelineSpecialization::of(Specialize specialize, const R
     case Specialize::Strategy: return strategyOf(u);
     case Specialize::Full:
     {
-        // Measured on the H100 (docs/PERFORMANCE.md §4.3): with any explicit feature mask, even one with every
+        // Measured on the H100 (docs/notebook/PERFORMANCE.md §4.3): with any explicit feature mask, even one with every
         // bit set, book 3's mixture renders cornell-box-lights 1.23-1.32x slower than with the mask left
         // dynamic, while NEE + MIS renders it 1.46x faster. So the mixture keys on its strategy, the sphere
         // tests' c (the c made the light book scenes 1.03-1.09x faster, §8.8) and the hit's uv alone (§8.10).

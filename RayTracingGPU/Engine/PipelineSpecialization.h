@@ -4,7 +4,7 @@
 // of HostDevice.h's kFeature* bits) come from the scene (featureBitsOf: its geometry kinds, media, motion,
 // the materials and texture kinds its primitives use, the shapes of its lights) and from the uniforms (thin
 // lens, gradient background); kSpecDynamic there is every feature. Specialised, the driver folds away every
-// estimator, sampler and selection the render does not use (1.1x to 5x faster on an H100, docs/PERFORMANCE.md
+// estimator, sampler and selection the render does not use (1.1x to 5x faster on an H100, docs/notebook/PERFORMANCE.md
 // §4.2), the code of every feature the scene lacks, without huge spheres the sphere tests' exact c (§8.8),
 // without image textures the hit's uv (§8.10), and the pipeline holds only the hit groups of the scene's
 // geometry (hitGroups()). The value is the key of the pipeline cache (PathTracingPipeline): two renders with
@@ -18,22 +18,16 @@
 #include <string>
 
 #include "RayTracing/HitGroupLayout.h"
+#include "Render/EngineOptions.h"
 #include "Scene/Scene.h"
 #include "Scene/SceneFeatures.h"
 #include "Shared/HostDevice.h"
 
 namespace rt::gpu
 {
-/// How far pipelines are specialised (--specialize).
-enum class Specialize
-{
-    Off, // the general pipeline for every render
-    Strategy, // the render's estimator, light sampler, light selection and pixel sampling; every feature
-    Full // the strategy and the scene's features (the default); the mixture's strategy alone (measured faster)
-};
-
-/// "off", "strategy", "on".
-const char* specializeName(Specialize specialize);
+/// How far pipelines are specialised (--specialize, Render/EngineOptions.h).
+using rt::Specialize;
+using rt::specializeName;
 
 struct PipelineSpecialization
 {

@@ -9,7 +9,7 @@
 
 #include "Random/Pcg.h"
 #include "Sampling/Warps.h"
-#include "Scene/CpuScene.h"
+#include "Engine/CpuScene.h"
 #include "Scenes/Catalogue.h"
 
 namespace

@@ -2,7 +2,7 @@
 # Runs on the lent NVIDIA machine (the workplace's `device` tool), from the repository root, with the build
 # carried in .devcarry/ (bin/: the binaries, shaders and assets; lib/: the shared libraries ldd lists beyond
 # glibc; layers/: the Khronos validation layer) and Debian's Vulkan loader in .gl/, both made here by
-# tests/Bench/device_carry.sh (figures in docs/PERFORMANCE.md).
+# tests/Bench/device_carry.sh (figures in docs/notebook/PERFORMANCE.md).
 #   tests/Bench/device_run.sh tests    the GPU test suite (but its heavy part) and the apps' smoke tests
 #   tests/Bench/device_run.sh heavy    the heavy part: CPU/GPU agreement of every scene at 128 px, 64 spp
 #   tests/Bench/device_run.sh table    thesis Table 5.4 redone: cornell-box-lights 600x600, depth 50, mixture

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The light-sampling efficiency table: for each scene, one long NEE + MIS render as the reference, then every
 # strategy's spp ladder on one engine against it (ray-tracing-gpu --compare --reference), and a table of
-# efficiency 1 / (relMSE x time) per strategy (tests/Bench/efficiency_table.py). Used for docs/PERFORMANCE.md.
+# efficiency 1 / (relMSE x time) per strategy (tests/Bench/efficiency_table.py). Used for docs/notebook/PERFORMANCE.md.
 #   tests/Bench/efficiency.sh BIN_DIR OUT_DIR ENGINE WIDTH REFERENCE_SPP SPP_LIST SCENE...
 # e.g. on the lent GPU: efficiency.sh .devcarry/bin "$OUT" gpu 600 20000 64,256,1024 cornell-box-lights
 set -eu

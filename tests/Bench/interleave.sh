@@ -6,7 +6,7 @@
 #   tests/Bench/interleave.sh ROUNDS CMD_1 CMD_2 [CMD...]
 # Each CMD is one string, run by bash on core 0 (taskset), its output discarded. CORE overrides the core list
 # (CORE=0,1 for a two-core render).
-# Example (docs/PERFORMANCE.md §1): the books' code against this build.
+# Example (docs/notebook/PERFORMANCE.md §1): the books' code against this build.
 #   A="--headless --scene rtrol-cornell-glass --width 600 --spp 16 --depth 50 --sampling stratified --pdf on --engine single --quiet"
 #   tests/Bench/interleave.sh 8 ./book_O3 "build/bin/ray-tracing-cpu $A"
 set -eu

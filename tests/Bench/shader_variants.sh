@@ -5,7 +5,7 @@
 # first one's (round-off where a variant changes only the speed; a variant that breaks the image shows here, not
 # as a gain). A variant is a folder of SPIR-V in
 # the layout of build/bin/shaders: build it with the GLSL changed (cmake --build build --target rt_shaders),
-# copy build/bin/shaders away, restore the GLSL. What the probes of docs/PERFORMANCE.md §8.7 did by hand.
+# copy build/bin/shaders away, restore the GLSL. What the probes of docs/notebook/PERFORMANCE.md §8.7 did by hand.
 #   tests/Bench/shader_variants.sh APP_BIN_DIR OUT_DIR RENDERS_FILE VARIANT_DIR...
 # RENDERS_FILE: one render per line, "NAME ARGS..." (ray-tracing-gpu flags after --headless); `#` comments.
 # ROUNDS (default 3).

@@ -3,7 +3,7 @@
 # are white Lambertian (albedo 0.73, the Cornell box's white), each through ray-tracing-gpu --compare with the
 # same flags. Light through glass reaches a diffuse surface only along BSDF-sampled paths (a caustic: a shadow
 # ray cannot refract), so that error is the same whatever NEE's light selection or sampler does, and it bounds
-# the ratio of two such strategies' efficiencies (docs/PERFORMANCE.md §4.6).
+# the ratio of two such strategies' efficiencies (docs/notebook/PERFORMANCE.md §4.6).
 #   tests/Bench/without_glass.sh APP_BIN_DIR OUT_DIR SCENE [--compare flags...]
 # e.g. tests/Bench/without_glass.sh build/bin /tmp/glass many-lights --width 600 --engines gpu \
 #          --reference-spp 4096 --estimators nee-mis --light-selections uniform,power,bvh --spp-list 64,256

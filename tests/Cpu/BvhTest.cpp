@@ -5,7 +5,7 @@
 
 #include "Random/Pcg.h"
 #include "Sampling/Warps.h"
-#include "Scene/CpuScene.h"
+#include "Engine/CpuScene.h"
 #include "Scene/SceneBuilder.h"
 
 namespace rt::test

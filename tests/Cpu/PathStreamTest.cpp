@@ -12,7 +12,7 @@
 #include "Random/Pcg.h"
 #include "Render/RenderUniforms.h"
 #include "Sampling/Warps.h"
-#include "Scene/CpuScene.h"
+#include "Engine/CpuScene.h"
 #include "Scene/SceneBuilder.h"
 #include "Scene/SceneFeatures.h"
 #include "Scenes/Catalogue.h"

@@ -7,7 +7,7 @@
 #include "Math/RayOffset.h"
 #include "Random/Pcg.h"
 #include "Sampling/Warps.h"
-#include "Scene/CpuScene.h"
+#include "Engine/CpuScene.h"
 #include "Scene/SceneBuilder.h"
 
 namespace rt::test

@@ -9,7 +9,7 @@
 
 #include "Engine/CpuEngine.h"
 #include "Random/Pcg.h"
-#include "Scene/CpuScene.h"
+#include "Engine/CpuScene.h"
 #include "Scene/SceneBuilder.h"
 #include "Error.h"
 #include "Scenes/Catalogue.h"

@@ -8,14 +8,15 @@
 #include <random>
 #include <sstream>
 
-#include "App/Compare/ConvergenceCsv.h"
-#include "App/Compare/EqualTime.h"
-#include "App/Compare/ReferenceCache.h"
-#include "App/Compare/Strategy.h"
+#include "Compare/ConvergenceCsv.h"
+#include "Compare/EqualTime.h"
+#include "Compare/ReferenceCache.h"
+#include "Compare/Strategy.h"
 #include "Error.h"
+#include "Render/EngineRegistry.h"
 #include "Render/RenderRequest.h"
 
-namespace rt::app
+namespace rt::compare
 {
 namespace
 {
@@ -162,4 +163,11 @@ TEST(EqualTime, SppForBudgetRoundsDownAndStaysPositive)
     EXPECT_EQ(sppForBudget(1.0, 50.0), 1);
     EXPECT_EQ(sppForBudget(1e12, 1e-6), INT_MAX);
 }
-} // namespace rt::app
+TEST(CompareEngines, AProgramLinkingBothEnginesOffersAllThreeThroughTheRegistry)
+{
+    // What --compare's default engine list is in both apps, which link rt_cpu_engines and rt_gpu_engine.
+    EXPECT_EQ(engines::available(), (std::vector<EngineKind>{EngineKind::Single, EngineKind::Multi, EngineKind::Gpu}));
+    const std::unique_ptr<RenderEngine> cpu = engines::make(EngineKind::Single);
+    EXPECT_EQ(cpu->kind(), EngineKind::Single);
+}
+} // namespace rt::compare

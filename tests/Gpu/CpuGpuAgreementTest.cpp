@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "Engine/CpuEngine.h"
 #include "GpuTestEnvironment.h"
+#include "Render/EngineRegistry.h"
 #include "Scenes/Catalogue.h"
 #include "Support/BlockAgreement.h"
 #include "Support/CatalogueCases.h"
@@ -56,8 +56,8 @@ void expectAgreement(const AgreementCase& c, RenderSettings s, double maxZ)
     s.sampling = c.sampling;
     s.unidirectionalLight = scene.defaults.unidirectionalLight;
 
-    cpu::CpuEngine cpuEngine(EngineKind::Multi);
-    const auto failures = disagreeingBlocks(estimateBlocks(cpuEngine, scene, s),
+    const auto cpuEngine = engines::make(EngineKind::Multi);
+    const auto failures = disagreeingBlocks(estimateBlocks(*cpuEngine, scene, s),
                                             estimateBlocks(*sharedEngine(), scene, s), maxZ);
     for (const std::string& f : failures)
         ADD_FAILURE() << c.scene << " (A = CPU, B = GPU): " << f;
@@ -69,7 +69,7 @@ class GpuCpuAgreement : public ::testing::TestWithParam<AgreementCase>
 };
 
 /// `scene` rendered on the CPU engine with `s`.
-Image renderOnCpu(cpu::CpuEngine& engine, const Scene& scene, const RenderSettings& s)
+Image renderOnCpu(RenderEngine& engine, const Scene& scene, const RenderSettings& s)
 {
     engine.setScene(scene);
     RenderControl control;
@@ -89,18 +89,18 @@ TEST(GpuCpuMeshFit, FarHugeAndTinyMeshesRenderAsTheUnitCubeOnBothEngines)
     s.depth = 8;
     const Scene unit = makeScene("cornell-box-and-mesh", {.meshPath = dir.write("unit.obj", ::rt::test::cubeObj(0.0, 1.0)).string()});
     s.aspect = unit.defaults.aspect;
-    cpu::CpuEngine cpuEngine(EngineKind::Multi);
-    const Image cpuUnit = renderOnCpu(cpuEngine, unit, s);
+    const auto cpuEngine = engines::make(EngineKind::Multi);
+    const Image cpuUnit = renderOnCpu(*cpuEngine, unit, s);
     const Image gpuUnit = renderOnGpu(unit, s).image;
     for (const auto& [centre, edge] : {std::pair{0.0, 2e7}, {1e7, 1.0}, {1e7, 0.5}, {0.0, 1e-7}})
     {
         const Scene far = makeScene("cornell-box-and-mesh",
                                     {.meshPath = dir.write("cube.obj", ::rt::test::cubeObj(centre, edge)).string()});
-        EXPECT_EQ(renderOnCpu(cpuEngine, far, s).pixels(), cpuUnit.pixels())
+        EXPECT_EQ(renderOnCpu(*cpuEngine, far, s).pixels(), cpuUnit.pixels())
             << "CPU, edge " << edge << " at " << centre;
         EXPECT_EQ(renderOnGpu(far, s).image.pixels(), gpuUnit.pixels()) << "GPU, edge " << edge << " at " << centre;
     }
-    EXPECT_EQ(disagreeingBlocks(estimateBlocks(cpuEngine, unit, s), estimateBlocks(*sharedEngine(), unit, s), kMaxZ)
+    EXPECT_EQ(disagreeingBlocks(estimateBlocks(*cpuEngine, unit, s), estimateBlocks(*sharedEngine(), unit, s), kMaxZ)
                   .size(),
               0u);
 }

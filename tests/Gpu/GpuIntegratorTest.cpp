@@ -37,7 +37,7 @@ TEST(IntegratorChoice, AnExplicitChoiceStands)
               GpuIntegrator::Wavefront);
 }
 
-// The rule, on the catalogue's cases measured on the H100 (docs/PERFORMANCE.md §8), at 600x600 and 256 spp.
+// The rule, on the catalogue's cases measured on the H100 (docs/notebook/PERFORMANCE.md §8), at 600x600 and 256 spp.
 TEST(IntegratorChoice, AutoTakesTheWavefrontWhereAVertexEvaluatesSeveralLightsOrTheSceneIsLarge)
 {
     const auto autoFor = [](const shader::RenderUniforms& u, std::uint64_t primitives) {
@@ -57,7 +57,7 @@ TEST(IntegratorChoice, AutoTakesTheWavefrontWhereAVertexEvaluatesSeveralLightsOr
 }
 
 // Small renders (previews, the window's frames) run the megakernel: its launches cost less than the wavefront's
-// per segment (docs/PERFORMANCE.md §8.5); NEE over several emitters gains from the wavefront soonest.
+// per segment (docs/notebook/PERFORMANCE.md §8.5); NEE over several emitters gains from the wavefront soonest.
 TEST(IntegratorChoice, AutoRunsTheMegakernelForSmallRenders)
 {
     const auto autoFor = [](const shader::RenderUniforms& u, std::uint64_t primitives, std::uint64_t paths) {

@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "Engine/CpuEngine.h"
 #include "Engine/SceneTracer.h"
+#include "Render/EngineRegistry.h"
 #include "GpuTestEnvironment.h"
 #include "Scenes/Catalogue.h"
 #include "Support/BlockAgreement.h"
@@ -149,8 +149,8 @@ TEST_F(GpuWavefront, AgreesWithTheCpuEngine)
 {
     const Scene scene = makeScene("cornell-box-lights");
     RenderSettings s = ::rt::test::settingsFor(scene, 32, 16, 16);
-    cpu::CpuEngine cpuEngine(EngineKind::Multi);
-    const auto failures = ::rt::test::disagreeingBlocks(::rt::test::estimateBlocks(cpuEngine, scene, s),
+    const auto cpuEngine = engines::make(EngineKind::Multi);
+    const auto failures = ::rt::test::disagreeingBlocks(::rt::test::estimateBlocks(*cpuEngine, scene, s),
                                                         ::rt::test::estimateBlocks(*sharedEngine(), scene, s),
                                                         ::rt::test::kMaxZ);
     for (const std::string& f : failures)

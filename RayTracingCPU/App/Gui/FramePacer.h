@@ -1,7 +1,7 @@
 // How often the window redraws. A frame drawn while a render runs takes CPU time from it (ImGui's drawing,
 // the GL driver, which is llvmpipe on a machine without a GPU, and the X server), and that time lands in the
 // render time the timings table reports: on 2 cores, 10 frames a second (about 15 ms of CPU each) made multi
-// core 6 % slower than headless while single core left them the idle core (docs/PERFORMANCE.md §6; a user
+// core 6 % slower than headless while single core left them the idle core (docs/notebook/PERFORMANCE.md §6; a user
 // saw 1.0x for 1.4x on a loaded machine). So while a render runs the window draws a frame every
 // kRenderingInterval, when the render thread has news (a render ended), and at once for a person's input (a
 // click must not wait half a second); those last frames are counted, and the timings table marks a render

@@ -5,27 +5,18 @@
 #include <spdlog/spdlog.h>
 
 #include "Error.h"
-
-#ifdef RT_WITH_GPU_ENGINE
-#include "Engine/GpuContext.h"
-#include "Engine/GpuEngine.h"
-#endif
+#include "Render/EngineRegistry.h"
 
 namespace rt::gui
 {
 GpuStartup::GpuStartup(const Options& options)
 {
-#ifdef RT_WITH_GPU_ENGINE
-    if (options.enabled)
-    {
+    if (!engines::has(EngineKind::Gpu))
+        m_status = {State::Unavailable, "built without the GPU engine (RT_BUILD_GPU=OFF)"};
+    else if (!options.enabled)
+        m_status = {State::Unavailable, "disabled by --no-gpu"};
+    else
         m_thread = std::thread([this, options] { start(options); });
-        return;
-    }
-    m_status = {State::Unavailable, "disabled by --no-gpu"};
-#else
-    (void)options;
-    m_status = {State::Unavailable, "built without the GPU engine (RT_BUILD_GPU=OFF)"};
-#endif
 }
 
 GpuStartup::~GpuStartup()
@@ -34,20 +25,17 @@ GpuStartup::~GpuStartup()
         m_thread.join();
 }
 
-void GpuStartup::start([[maybe_unused]] const Options& options)
+void GpuStartup::start(const Options& options)
 {
-#ifdef RT_WITH_GPU_ENGINE
     Status status;
-    std::unique_ptr<gpu::GpuEngine> engine;
+    std::unique_ptr<RenderEngine> engine;
     const auto begin = std::chrono::steady_clock::now();
     try
     {
-        engine = std::make_unique<gpu::GpuEngine>(
-            gpu::GpuEngineOptions{.validation = options.validation || gpu::validationWanted()});
+        engine = engines::make(EngineKind::Gpu, EngineOptions{.validation = options.validation});
         status = {State::Ready, engine->deviceName()};
-        spdlog::info("GPU engine ready in {:.1f} s: {}{}",
-                     std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count(), status.detail,
-                     engine->validationEnabled() ? " (validation layer on)" : "");
+        spdlog::info("GPU engine ready in {:.1f} s: {}",
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count(), status.detail);
     }
     catch (const std::exception& e)
     {
@@ -60,7 +48,6 @@ void GpuStartup::start([[maybe_unused]] const Options& options)
         m_status = std::move(status);
     }
     m_resolved.notify_all();
-#endif
 }
 
 GpuStartup::Status GpuStartup::status() const
@@ -83,12 +70,7 @@ RenderEngine* GpuStartup::wait(const std::function<bool()>& giveUp)
 
 std::uint64_t GpuStartup::validationMessages() const
 {
-#ifdef RT_WITH_GPU_ENGINE
     std::lock_guard lock(m_mutex);
-    // Only start() puts an engine here, and it only makes GpuEngines.
-    return m_engine ? static_cast<const gpu::GpuEngine&>(*m_engine).validationMessages() : 0;
-#else
-    return 0;
-#endif
+    return m_engine ? m_engine->validationMessages() : 0;
 }
 } // namespace rt::gui

@@ -1,4 +1,4 @@
-#include "Scene/CpuScene.h"
+#include "Engine/CpuScene.h"
 
 #include <algorithm>
 #include <cmath>

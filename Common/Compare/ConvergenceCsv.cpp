@@ -1,4 +1,4 @@
-#include "App/Compare/ConvergenceCsv.h"
+#include "Compare/ConvergenceCsv.h"
 
 #include <cerrno>
 #include <cstring>
@@ -7,7 +7,7 @@
 
 #include "Error.h"
 
-namespace rt::app
+namespace rt::compare
 {
 namespace
 {
@@ -47,4 +47,4 @@ void ConvergenceCsv::append(const ConvergenceRow& r)
     if (std::fputs(line.c_str(), m_file.get()) < 0 || std::fflush(m_file.get()) != 0)
         throw OutputError(fmt::format("cannot write {}: {}", m_path.string(), std::strerror(errno)));
 }
-} // namespace rt::app
+} // namespace rt::compare

@@ -1,4 +1,4 @@
-#include "App/Compare/EqualTime.h"
+#include "Compare/EqualTime.h"
 
 #include <algorithm>
 #include <climits>
@@ -9,12 +9,12 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
-#include "App/Compare/PythonScript.h"
+#include "Compare/PythonScript.h"
 #include "IO/AtomicFile.h"
 #include "Image/ImageIO.h"
 #include "Image/Metrics.h"
 
-namespace rt::app
+namespace rt::compare
 {
 namespace
 {
@@ -104,4 +104,4 @@ void writeEqualTimeGrid(const std::filesystem::path& png, const GridCaption& cap
     writeFileAtomically(metaPath, meta.dump(2));
     drawFigure(png, script, {metaPath.string()});
 }
-} // namespace rt::app
+} // namespace rt::compare

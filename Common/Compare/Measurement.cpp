@@ -1,4 +1,4 @@
-#include "App/Compare/Measurement.h"
+#include "Compare/Measurement.h"
 
 #include <chrono>
 
@@ -7,7 +7,7 @@
 #include "Cli/Interrupt.h"
 #include "Render/RenderDriver.h"
 
-namespace rt::app
+namespace rt::compare
 {
 Measurement measure(RenderEngine& engine, const RenderRequest& request, const Image* reference)
 {
@@ -43,4 +43,4 @@ void warmUp(RenderEngine& engine, const RenderRequest& request)
         if (measure(engine, small, nullptr).cancelled)
             return;
 }
-} // namespace rt::app
+} // namespace rt::compare

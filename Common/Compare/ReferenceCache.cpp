@@ -1,4 +1,4 @@
-#include "App/Compare/ReferenceCache.h"
+#include "Compare/ReferenceCache.h"
 
 #include <cstdlib>
 #include <fstream>
@@ -13,7 +13,7 @@
 #include "IO/AtomicFile.h"
 #include "Image/ImageIO.h"
 
-namespace rt::app
+namespace rt::compare
 {
 namespace
 {
@@ -171,4 +171,4 @@ std::filesystem::path ReferenceCache::store(const Scene& scene, const RenderRequ
         return {};
     }
 }
-} // namespace rt::app
+} // namespace rt::compare

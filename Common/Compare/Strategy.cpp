@@ -1,4 +1,4 @@
-#include "App/Compare/Strategy.h"
+#include "Compare/Strategy.h"
 
 #include <algorithm>
 #include <optional>
@@ -9,7 +9,7 @@
 #include "Error.h"
 #include "Shared/Estimator.h"
 
-namespace rt::app
+namespace rt::compare
 {
 namespace
 {
@@ -119,4 +119,4 @@ std::vector<std::string> distinctLabels(const std::vector<Strategy>& strategies)
     }
     return labels;
 }
-} // namespace rt::app
+} // namespace rt::compare

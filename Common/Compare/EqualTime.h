@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "App/Compare/Measurement.h"
-#include "App/Compare/Strategy.h"
+#include "Compare/Measurement.h"
+#include "Compare/Strategy.h"
 
-namespace rt::app
+namespace rt::compare
 {
 struct EqualTimeTile
 {
@@ -40,4 +40,4 @@ struct GridCaption
 /// draws them. Throws OutputError when the script fails.
 void writeEqualTimeGrid(const std::filesystem::path& png, const GridCaption& caption, const Image& reference,
                         const std::vector<EqualTimeTile>& tiles);
-} // namespace rt::app
+} // namespace rt::compare

@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "App/Compare/Strategy.h"
+#include "Compare/Strategy.h"
 #include "Render/RenderEngine.h"
 #include "Render/RenderRequest.h"
 
-namespace rt::app
+namespace rt::compare
 {
 struct CompareOptions
 {
@@ -50,4 +50,4 @@ void checkComparison(const CompareOptions& options);
 /// of `scene` (the scene it names, built); rows vary its spp and strategy.
 int runComparison(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
                   const std::function<std::unique_ptr<RenderEngine>(EngineKind)>& makeEngine);
-} // namespace rt::app
+} // namespace rt::compare

@@ -16,7 +16,7 @@
 #include "Render/RenderSettings.h"
 #include "Scene/Scene.h"
 
-namespace rt::app
+namespace rt::compare
 {
 /// $RT_REFERENCE_CACHE, else $XDG_CACHE_HOME/ray-tracing/references, else ~/.cache/ray-tracing/references.
 std::filesystem::path defaultReferenceCacheDir();
@@ -47,4 +47,4 @@ private:
 
     std::filesystem::path m_dir;
 };
-} // namespace rt::app
+} // namespace rt::compare

@@ -8,7 +8,7 @@
 #include "Render/RenderRequest.h"
 #include "Render/RenderSettings.h"
 
-namespace rt::app
+namespace rt::compare
 {
 struct Strategy
 {
@@ -49,4 +49,4 @@ std::vector<Strategy> strategyGrid(const StrategyLists& lists, const RenderSetti
 /// The shortest labels that tell the strategies apart: only the fields that vary among them ("mixture",
 /// "nee-mis projected"), or the estimator's name when there is one strategy.
 std::vector<std::string> distinctLabels(const std::vector<Strategy>& strategies);
-} // namespace rt::app
+} // namespace rt::compare

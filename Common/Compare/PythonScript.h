@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace rt::app
+namespace rt::compare
 {
 /// <folder of the executable>/scripts/`name`. Throws AssetError when it is not there.
 std::filesystem::path scriptPath(const std::string& name);
@@ -24,4 +24,4 @@ void runPythonScript(const std::filesystem::path& script, const std::vector<std:
 /// failed script leaves no file. Throws OutputError naming the figure and why.
 void drawFigure(const std::filesystem::path& figure, const std::filesystem::path& script,
                 const std::vector<std::string>& inputs);
-} // namespace rt::app
+} // namespace rt::compare

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-namespace rt::app
+namespace rt::compare
 {
 struct ConvergenceRow
 {
@@ -40,4 +40,4 @@ private:
     std::filesystem::path m_path;
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> m_file;
 };
-} // namespace rt::app
+} // namespace rt::compare

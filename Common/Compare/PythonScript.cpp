@@ -1,4 +1,4 @@
-#include "App/Compare/PythonScript.h"
+#include "Compare/PythonScript.h"
 
 #include <cerrno>
 #include <cstdlib>
@@ -20,7 +20,7 @@ extern char** environ;
 #include "IO/AtomicFile.h"
 #include "Error.h"
 
-namespace rt::app
+namespace rt::compare
 {
 namespace
 {
@@ -134,4 +134,4 @@ void drawFigure(const std::filesystem::path& figure, const std::filesystem::path
         throw OutputError(fmt::format("cannot write '{}': {}", figure.string(), failure));
     }
 }
-} // namespace rt::app
+} // namespace rt::compare

@@ -1,4 +1,4 @@
-#include "App/Compare/Compare.h"
+#include "Compare/Compare.h"
 
 #include <algorithm>
 #include <chrono>
@@ -13,11 +13,11 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
-#include "App/Compare/ConvergenceCsv.h"
-#include "App/Compare/EqualTime.h"
-#include "App/Compare/Measurement.h"
-#include "App/Compare/PythonScript.h"
-#include "App/Compare/ReferenceCache.h"
+#include "Compare/ConvergenceCsv.h"
+#include "Compare/EqualTime.h"
+#include "Compare/Measurement.h"
+#include "Compare/PythonScript.h"
+#include "Compare/ReferenceCache.h"
 #include "Cli/HeadlessRun.h"
 #include "Cli/Interrupt.h"
 #include "Cli/ValueParsing.h"
@@ -26,7 +26,7 @@
 #include "Image/ImageIO.h"
 #include "Image/Metrics.h"
 
-namespace rt::app
+namespace rt::compare
 {
 namespace
 {
@@ -138,7 +138,7 @@ std::string againstReference(const Reference& reference)
 
 /// The order in which the engines run their renders: the GPU's first. After the CPU's rows of a long table
 /// (200 s of 16-thread renders) the H100's rows at 10-250 spp were 1.7-5.6x slower than a GPU-only run
-/// (docs/PERFORMANCE.md §2).
+/// (docs/notebook/PERFORMANCE.md §2).
 std::vector<std::size_t> measurementOrder(const std::vector<EngineUnderTest>& engines)
 {
     std::vector<std::size_t> order(engines.size());
@@ -159,7 +159,7 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
     std::vector<std::vector<std::vector<Measurement>>> runs(engines.size());
     RunLog log(engines.size() * strategyCount * options.spps.size());
     // Each engine runs all its rows back to back after its warm-up: row by row interleaving with 16-thread CPU
-    // renders cost an H100 2-3x (docs/PERFORMANCE.md).
+    // renders cost an H100 2-3x (docs/notebook/PERFORMANCE.md).
     for (const std::size_t e : measurementOrder(engines))
     {
         RenderEngine& engine = *engines[e].engine;
@@ -421,4 +421,4 @@ int runComparison(const Scene& scene, const RenderRequest& base, const CompareOp
     }
     return 0;
 }
-} // namespace rt::app
+} // namespace rt::compare

@@ -10,7 +10,7 @@
 #include "Render/RenderEngine.h"
 #include "Render/RenderRequest.h"
 
-namespace rt::app
+namespace rt::compare
 {
 struct Measurement
 {
@@ -32,6 +32,6 @@ struct Measurement
 Measurement measure(RenderEngine& engine, const RenderRequest& request, const Image* reference);
 
 /// Half a second of untimed 4-spp renders: a GPU idle through another engine's turn drops its clocks, and an
-/// H100 then ran its first rows 3-10x slower (docs/PERFORMANCE.md).
+/// H100 then ran its first rows 3-10x slower (docs/notebook/PERFORMANCE.md).
 void warmUp(RenderEngine& engine, const RenderRequest& request);
-} // namespace rt::app
+} // namespace rt::compare

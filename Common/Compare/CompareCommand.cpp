@@ -1,0 +1,87 @@
+#include "Compare/CompareCommand.h"
+
+#include <algorithm>
+
+#include "Cli/HeadlessRun.h"
+#include "Compare/Compare.h"
+#include "Compare/ReferenceCache.h"
+#include "Render/EngineRegistry.h"
+
+namespace rt::compare
+{
+void addCompareOptions(CLI::App& app, CompareFlags& flags)
+{
+    flags.referenceCache = defaultReferenceCacheDir().string();
+    CLI::Option* compareFlag = app.add_flag("--compare", flags.compare,
+                 "Headless comparison: render --scene at every count of --spp-list on every engine of --engines, "
+                 "print time, CPU/GPU ratio and relMSE against a --reference-spp render");
+    app.add_option("--spp-list", flags.sppList, "With --compare: sample counts, comma separated")->capture_default_str();
+    app.add_option("--engines", flags.engines,
+                   "With --compare: engines, comma separated (single, multi, gpu; default: every engine this app "
+                   "links)");
+    app.add_option("--reference-spp", flags.referenceSpp,
+                   "With --compare: spp of the reference image (default: 4x the largest count), rendered by the "
+                   "last engine in two halves (seeds + 1000 and + 2000) whose difference gives the reference's own "
+                   "relMSE");
+    app.add_option("--reference", flags.referencePath,
+                   "With --compare: a linear PFM of the same size (e.g. a long --hdr render) to measure against "
+                   "instead of rendering a reference")
+        ->check(CLI::ExistingFile);
+    app.add_option("--table", flags.table, "With --compare: write every figure as JSON here");
+    app.add_option("--estimators", flags.strategies.estimators,
+                   "With --compare: estimators to compare, comma separated (bsdf, mixture, nee, nee-mis; default: "
+                   "--estimator's); every combination with the lists below is a strategy")
+        ->needs(compareFlag);
+    app.add_option("--light-samplers", flags.strategies.lightSamplers,
+                   "With --compare: NEE's light samplers to compare (area, solid-angle, projected)")
+        ->needs(compareFlag);
+    app.add_option("--light-selections", flags.strategies.lightSelections,
+                   "With --compare: NEE's light selections to compare (uniform, power, bvh)")
+        ->needs(compareFlag);
+    app.add_option("--samplings", flags.strategies.samplings,
+                   "With --compare: pixel samplings to compare (random, stratified, accumulate, sobol)")
+        ->needs(compareFlag);
+    app.add_option("--roulettes", flags.strategies.roulettes, "With --compare: Russian roulette settings to compare (on, off)")
+        ->needs(compareFlag);
+    app.add_option("--csv", flags.csv,
+                   "With --compare: one CSV row per engine x strategy x spp (scene, engine, device, strategy, label, "
+                   "spp, wall ms, GPU ms, Mpaths/s, MSE, relMSE, RMSE), each written as its render ends (Ctrl-C keeps "
+                   "them)")
+        ->needs(compareFlag);
+    app.add_option("--plot", flags.plot,
+                   "With --compare and --csv: a PNG of relMSE against time and against spp (log-log, slope -1 "
+                   "drawn) and of the efficiency 1/(relMSE s), drawn by matplotlib (python3-matplotlib)")
+        ->needs(compareFlag);
+    app.add_option("--equal-time", flags.equalTimeMs,
+                   "With --compare: render every engine x strategy for this many milliseconds instead of the "
+                   "--spp-list ladder, and write the images with their false-colour error images as one figure to "
+                   "--output FILE.png")
+        ->check(CLI::PositiveNumber)
+        ->needs(compareFlag);
+    app.add_option("--reference-cache", flags.referenceCache,
+                   "With --compare: folder of rendered references, re-used when scene, settings, spp, seed and engine "
+                   "match ('off': render the reference every time)")
+        ->capture_default_str()
+        ->needs(compareFlag);
+}
+
+int runCompare(const CompareFlags& flags, const CommonOptions& options, const EngineOptions& engineOptions)
+{
+    const CommandLineRender job = resolveCommandLine(options);
+    CompareOptions c;
+    c.spps = parseSppList(flags.sppList);
+    c.engines = flags.engines.empty() ? engines::available() : parseEngineList(flags.engines);
+    c.referenceSpp = flags.referenceSpp > 0 ? flags.referenceSpp : 4 * *std::max_element(c.spps.begin(), c.spps.end());
+    c.json = flags.table;
+    c.referencePath = flags.referencePath;
+    c.strategies = strategyGrid(flags.strategies, job.request.settings);
+    c.csv = flags.csv;
+    c.plot = flags.plot;
+    c.equalTimeMs = flags.equalTimeMs;
+    c.grid = options.output;
+    if (flags.referenceCache != "off")
+        c.referenceCache = flags.referenceCache;
+    return runComparison(job.scene, job.request, c,
+                         [&](EngineKind kind) { return engines::make(kind, engineOptions); });
+}
+} // namespace rt::compare

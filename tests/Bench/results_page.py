@@ -1,0 +1,758 @@
+#!/usr/bin/env python3
+"""Writes docs/RESULTS.md, the page of current figures, from the results files under docs/results/.
+
+    python3 tests/Bench/results_page.py           rewrite docs/RESULTS.md
+    python3 tests/Bench/results_page.py --check   exit 1 if docs/RESULTS.md differs from what would be written
+
+Every number on the page is parsed from a results file (interleave.sh and hyperfine outputs, --compare CSVs
+and JSON tables). What is curated here is only which file is the current one for each headline, the machine
+and date where the file does not say them, the command where the file does not hold it, and the notebook
+section (docs/notebook/PERFORMANCE.md) that discusses it; anchors are computed from the notebook's headings.
+Standard library only.
+"""
+import argparse
+import csv
+import json
+import math
+import re
+import statistics
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+DOCS = ROOT / "docs"
+RESULTS = DOCS / "results"
+NOTEBOOK = DOCS / "notebook" / "PERFORMANCE.md"
+PAGE = DOCS / "RESULTS.md"
+
+# ---------------------------------------------------------------------------------------------------------
+# Curated metadata: which results file is current for each headline. `notebook` is the start of the heading
+# (as written in PERFORMANCE.md) of the section that discusses it. Dates are those of the notebook's section;
+# a date ending in '?' is that of the commit that added the files, where the section is undated (the page says so).
+
+CI_EPYC = "CI kind: 2-vCPU AMD EPYC (AVX-512, `x86-64-v4` build), one core pinned; no GPU (Vulkan on lavapipe)"
+CI_UNSTATED = "CI kind: 2 vCPU (the run's CPU model is not recorded); no GPU (Vulkan on lavapipe)"
+
+BOOKS = {
+    "file": "cpu-packets/books-vs-final.txt",
+    "hyperfine": "cpu-packets/books-vs-stream-hyperfine.md",
+    "later_ab": "cpu-shared-vertex/catalogue-one-core-ab.txt",
+    "later_ab_render": "rtrol-glass",
+    "date": "2026-11-25",
+    "machine": CI_EPYC,
+    "notebook": "### 2026-11-25 (later)",
+    "later_notebook": "### 9.2",
+}
+
+SCALING = {
+    "file": "cpu-packets/png-parallel-2-cores.txt",
+    "single": 3,  # the [n] of the interleave output: this build's single engine on one core
+    "multi": 4,  # and its multi engine on both cores
+    "base_single": 1,
+    "base_multi": 2,
+    "machine": CI_UNSTATED,
+    "notebook": "### 2026-11-25 (end)",
+}
+
+TABLE54 = {
+    "file": "h100-table-wavefront/table.json",
+    "date": "2026-11-25",
+    "command": "tests/Bench/device_run.sh table   # i.e.\n"
+    "ray-tracing-gpu --compare --quiet --scene cornell-box-lights --width 600 --depth 50 \\\n"
+    "    --estimator mixture --sampling random --spp-list 10,50,100,250,500,1000,2000,5000 --engines multi,gpu \\\n"
+    "    --reference-spp 20000 --table table.json",
+    "notebook": "## 2. CPU against GPU",
+    # Earlier tables of the same render, for the history line (GPU ms at this spp).
+    "history_spp": 1000,
+    "history": [
+        ("h100-cornell-box-lights.json", "2026-11-21", "megakernel, no roulette"),
+        ("h200-cornell-box-lights-render-driver.json", "2026-11-21", "megakernel, no roulette, after the render driver"),
+        ("h100-compare/table54.json", "2026-11-22?", "megakernel, roulette on, 16,384-spp reference"),
+    ],
+    # The later GPU-only figure of the same render (issue 11's): integrators.txt output, B = wavefront.
+    "gpu_only": ("h100-batch-growth/integrators-final.txt", "cbl-mixture", "B", "2026-11-25", "### 8.6"),
+}
+
+BARS_CBL = ("bash tests/Bench/device_run.sh bars   # first of its two commands:\n"
+            "ray-tracing-gpu --compare --quiet --scene cornell-box-lights --width 600 --engines gpu --reference-spp 16384 \\\n"
+            "    --estimators mixture,nee-mis --roulettes off,on --samplings random,sobol --spp-list 256,1024 \\\n"
+            "    --csv cbl.csv --table cbl.json")
+BARS_ML = ("bash tests/Bench/device_run.sh bars   # second of its two commands:\n"
+           "ray-tracing-gpu --compare --quiet --scene many-lights --width 600 --engines gpu --reference-spp 4096 \\\n"
+           "    --estimators nee-mis --light-selections uniform,power,bvh --samplings random,sobol --spp-list 64,256 \\\n"
+           "    --csv ml.csv --table ml.json")
+CLOSEUP = ("ray-tracing-gpu --compare --scene {scene} --width 600 --engines gpu --reference-spp 16384 \\\n"
+           "    --estimators mixture,nee-mis --light-samplers area,solid-angle,projected --samplings random,sobol \\\n"
+           "    --spp-list 64,256,1024 --csv eff-{scene}.csv --table eff-{scene}.json")
+
+MIXTURE_SOBOL = "mixture projected bvh sobol rr-on"
+DEFAULTS = "nee-mis projected bvh sobol rr-on"
+
+# --compare runs for headlines 4 and 5: the latest of each scene and machine. `baseline` and `defaults` are
+# strategy strings of the CSV (baseline: book 3's mixture at today's defaults, or uniform selection where the
+# run compares selections; defaults: the scene's defaults today). GPU runs are timed by `gpu_ms`, CPU runs by
+# the wall clock.
+COMPARE = [
+    {"file": "h200-hit-uv/bars/cbl.csv", "scene": "cornell-box-lights", "date": "2026-11-26",
+     "baseline": MIXTURE_SOBOL, "defaults": DEFAULTS, "command": BARS_CBL, "notebook": "### 8.10"},
+    {"file": "h200-hit-uv/bars/ml.csv", "scene": "many-lights", "date": "2026-11-26",
+     "baseline": "nee-mis projected uniform sobol rr-on", "defaults": DEFAULTS, "command": BARS_ML,
+     "notebook": "### 8.10"},
+    {"file": "h100-compare/eff-rect-light-closeup.csv", "scene": "rect-light-closeup",
+     "date": "2026-11-22?", "baseline": "mixture area bvh sobol rr-on", "defaults": DEFAULTS,
+     "command": CLOSEUP.format(scene="rect-light-closeup"), "notebook": "### 5.2"},
+    {"file": "h100-compare/eff-sphere-light-closeup.csv", "scene": "sphere-light-closeup",
+     "date": "2026-11-22?", "baseline": "mixture area bvh sobol rr-on", "defaults": DEFAULTS,
+     "command": CLOSEUP.format(scene="sphere-light-closeup"), "notebook": "### 5.2"},
+    {"file": "h100-compare/eff-triangle-lights.csv", "scene": "triangle-lights", "date": "2026-11-22?",
+     "baseline": "nee-mis area power random rr-on", "defaults": "nee-mis projected bvh random rr-on",
+     "defaults_note": "of that day: random samples; today's Sobol default was not in the run",
+     "command": "ray-tracing-gpu --compare --scene triangle-lights --width 600 --engines gpu --reference-spp 4096 \\\n"
+                "    --estimators nee-mis --light-samplers area,projected --light-selections power,bvh \\\n"
+                "    --spp-list 16,64,256 --csv eff-triangle-lights.csv --table eff-triangle-lights.json",
+     "notebook": "### 5.2"},
+    {"file": "cpu-reference-noise/cbl.csv", "scene": "cornell-box-lights", "date": "2026-11-25",
+     "baseline": MIXTURE_SOBOL, "defaults": DEFAULTS,
+     "command": "ray-tracing-gpu --compare --quiet --scene cornell-box-lights --width 128 --engines multi \\\n"
+                "    --reference-spp 4096 --estimators mixture,nee-mis --spp-list 64,256 --csv cbl.csv --table cbl.json",
+     "notebook": "### 5.8"},
+    {"file": "cpu-caustics/many-lights.csv", "scene": "many-lights", "date": "2026-11-26",
+     "baseline": "nee-mis projected uniform sobol rr-on", "defaults": DEFAULTS,
+     "command": "tests/Bench/without_glass.sh build/bin out many-lights --width 128 --engines multi \\\n"
+                "    --reference-spp 4096 --estimators nee-mis --light-selections uniform,power,bvh --spp-list 64 \\\n"
+                "    --reference-cache off   # the scene as is (its copy without the glass sphere aside)",
+     "notebook": "### 4.6"},
+]
+
+# Headline 6: JSON tables of --compare runs with both engines on one host (CPU multi and GPU).
+RATIO_TABLES = [
+    {"file": "h100-table-wavefront/table.json", "date": "2026-11-25", "notebook": "## 2. CPU against GPU"},
+    {"file": "h100-compare/table54.json", "date": "2026-11-22?", "notebook": "### 5.1"},
+]
+
+
+class ParseError(Exception):
+    pass
+
+
+# ---------------------------------------------------------------------------------------------------------
+# Readers
+
+def results_path(rel):
+    path = RESULTS / rel
+    if not path.is_file():
+        raise ParseError(f"missing results file docs/results/{rel}")
+    return path
+
+
+def link(rel):
+    return f"[`{rel}`](results/{rel})"
+
+
+INTERLEAVE_LINE = re.compile(
+    r"^\[(\d+)\] mean ([0-9.]+) s(?:, \[1\] / \[\d+\] = ([0-9.]+) ± ([0-9.]+))?\s+\((.*)\)\s*$")
+ROUNDS_LINE = re.compile(r"^\(± is the standard deviation over (\d+) rounds\)")
+
+
+def read_interleave(rel):
+    """interleave.sh output: per-round times, then '[n] mean ...' lines. Returns the first block only:
+    {'header', 'date', 'rows': [[s, ...]], 'cmds': {n: dict}, 'rounds'}."""
+    text = results_path(rel).read_text()
+    header = None
+    rows, cmds, rounds = [], {}, None
+    for line in text.splitlines():
+        if line.startswith("#"):
+            if cmds:
+                break  # a second block
+            header = header or line.lstrip("# ").strip()
+            continue
+        m = INTERLEAVE_LINE.match(line)
+        if m:
+            n = int(m.group(1))
+            cmds[n] = {"mean": float(m.group(2)),
+                       "ratio": float(m.group(3)) if m.group(3) else None,
+                       "sd": float(m.group(4)) if m.group(4) else None,
+                       "cmd": m.group(5)}
+            continue
+        m = ROUNDS_LINE.match(line)
+        if m:
+            rounds = int(m.group(1))
+            break
+        if line.strip() and re.fullmatch(r"[0-9. ]+", line.strip()):
+            rows.append([float(x) for x in line.split()])
+    if not cmds or rounds is None:
+        raise ParseError(f"{rel}: no interleave.sh summary found")
+    date = None
+    if header:
+        m = re.search(r"\((\d{4}-\d{2}-\d{2})\)", header)
+        date = m.group(1) if m else None
+    # Where every round was kept, check the summary against the rounds.
+    if len(rows) == rounds:
+        for n, c in cmds.items():
+            mean = statistics.mean(r[n - 1] for r in rows)
+            if abs(mean - c["mean"]) > 0.0015:
+                raise ParseError(f"{rel}: [{n}] mean {c['mean']} disagrees with its rounds ({mean:.3f})")
+    return {"header": header, "date": date, "rows": rows, "cmds": cmds, "rounds": rounds}
+
+
+def interleave_command(data, env=""):
+    cmds = " ".join(f'"{data["cmds"][n]["cmd"]}"' for n in sorted(data["cmds"]))
+    return f"{env}tests/Bench/interleave.sh {data['rounds']} {cmds}"
+
+
+def read_hyperfine_md(rel):
+    """hyperfine --export-markdown table: {command: (mean, sd, relative, relative_sd)}."""
+    out = {}
+    for line in results_path(rel).read_text().splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) != 5 or not cells[0].startswith("`"):
+            continue
+        mean = re.match(r"([0-9.]+)(?: ± ([0-9.]+))?", cells[1])
+        rel_ = re.match(r"([0-9.]+)(?: ± ([0-9.]+))?", cells[4])
+        out[cells[0].strip("`")] = (float(mean.group(1)), float(mean.group(2) or 0),
+                                    float(rel_.group(1)), float(rel_.group(2) or 0))
+    if not out:
+        raise ParseError(f"{rel}: no hyperfine table found")
+    return out
+
+
+def read_ab_markdown(rel):
+    """cpu_ab.sh's table: | render | A s | B s | A / B | images |."""
+    out = {}
+    for line in results_path(rel).read_text().splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) == 5 and re.fullmatch(r"[0-9.]+", cells[1] or "x"):
+            out[cells[0]] = (float(cells[1]), float(cells[2]), float(cells[3]), cells[4])
+    if not out:
+        raise ParseError(f"{rel}: no A/B table found")
+    return out
+
+
+def read_integrators(rel):
+    """device_run.sh integrators / ab output: the first block of 'name: A x ms  B y ms  A/B r' lines."""
+    text = results_path(rel).read_text()
+    lines = text.splitlines()
+    header = lines[0].lstrip("# ").strip() if lines and lines[0].startswith("#") else None
+    out = {}
+    for line in lines:
+        m = re.match(r"^\s*(\S+): A\s+([0-9.]+) ms\s+B\s+([0-9.]+) ms", line)
+        if m:
+            if m.group(1) in out:
+                break  # the second block
+            out[m.group(1)] = {"A": float(m.group(2)), "B": float(m.group(3))}
+    if not out:
+        raise ParseError(f"{rel}: no A/B lines found")
+    return header, out
+
+
+def read_json(rel):
+    try:
+        return json.loads(results_path(rel).read_text())
+    except json.JSONDecodeError as e:
+        raise ParseError(f"{rel}: {e}")
+
+
+def read_compare_csv(rel):
+    with results_path(rel).open(newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        raise ParseError(f"{rel}: empty")
+    for r in rows:
+        for k in ("spp",):
+            r[k] = int(r[k])
+        for k in ("wall_ms", "gpu_ms", "relmse"):
+            r[k] = float(r[k])
+        if "reference_relmse" in r and r["reference_relmse"] not in (None, ""):
+            r["reference_relmse"] = float(r["reference_relmse"])
+        else:
+            r["reference_relmse"] = None
+    return rows
+
+
+def command_flag(command, flag):
+    m = re.search(rf"--{flag} (\S+)", command)
+    return m.group(1) if m else None
+
+
+def check_command(rel, command, scene=None, spps=None, width=None, reference_spp=None):
+    """The curated command must agree with what the file records."""
+    checks = [("scene", scene), ("spp-list", None if spps is None else ",".join(map(str, sorted(spps)))),
+              ("width", None if width is None else str(width)),
+              ("reference-spp", None if reference_spp is None else str(reference_spp))]
+    for flag, value in checks:
+        if value is None:
+            continue
+        said = command_flag(command, flag)
+        if said is None and flag == "scene" and re.search(rf"\b{re.escape(value)}\b", command):
+            continue  # a wrapper taking the scene as an argument (without_glass.sh)
+        if flag == "spp-list" and said:
+            said = ",".join(map(str, sorted(int(x) for x in said.split(","))))
+        if said != value:
+            raise ParseError(f"{rel}: the curated command says --{flag} {said}, the file {value}")
+
+
+# ---------------------------------------------------------------------------------------------------------
+# Notebook anchors (GitHub's rule: lower case, punctuation dropped, spaces to hyphens, duplicates numbered)
+
+def slugify(text):
+    return re.sub(r"[^\w\- ]", "", text.strip().lower()).replace(" ", "-")
+
+
+def notebook_headings():
+    """(line, short label, anchor) of every heading: '§8.10' for a numbered one, else '§1, <its title up to a
+    colon>' under its numbered parent."""
+    seen, out, parent = {}, [], None
+    for line in NOTEBOOK.read_text().splitlines():
+        m = re.match(r"^(#{1,6}) (.*)$", line)
+        if not m:
+            continue
+        text = m.group(2).strip()
+        slug = slugify(text)
+        n = seen.get(slug, 0)
+        seen[slug] = n + 1
+        num = re.match(r"(\d+(?:\.\d+)*)\.? ", text)
+        if num and len(m.group(1)) == 2:
+            parent = num.group(1)
+        label = f"§{num.group(1)}" if num else f"§{parent}, {text.split(':')[0].replace('`', '')}"
+        out.append((line, label, slug if n == 0 else f"{slug}-{n}"))
+    return out
+
+
+HEADINGS = None
+
+
+def notebook_link(prefix):
+    global HEADINGS
+    if HEADINGS is None:
+        HEADINGS = notebook_headings()
+    hits = [(text, slug) for line, text, slug in HEADINGS if line.startswith(prefix)]
+    if len(hits) != 1:
+        raise ParseError(f"notebook heading starting {prefix!r}: {len(hits)} found")
+    label, slug = hits[0]
+    return f"[notebook {label}](notebook/PERFORMANCE.md#{slug})"
+
+
+# ---------------------------------------------------------------------------------------------------------
+# Formatting
+
+def date_text(date):
+    """'2026-11-22?' marks a date the notebook does not give: the commit that added the file."""
+    return f"{date[:-1]} (commit date)" if date.endswith("?") else date
+
+
+def ms(x):
+    return f"{x:,.0f}" if x >= 1000 else f"{x:.1f}"
+
+
+def g3(x):
+    return f"{x:.3g}"
+
+
+def eff(x):
+    return f"{x:,.0f}" if x >= 1000 else f"{x:.4g}"
+
+
+def ratio(x):
+    return f"{x:.2f}x"
+
+
+def device_name(device):
+    if "H100" in device:
+        return "NVIDIA H100 80GB HBM3"
+    if "H200" in device:
+        return "NVIDIA H200"
+    m = re.match(r"(.*?) \((\d+) threads\)", device)
+    if m and m.group(2) == "2":
+        return f"CI kind, 2-vCPU {m.group(1).replace('(R)', '')} (multi engine, both cores)"
+    if m and m.group(2) == "16":
+        return f"the same host's 16 cores ({m.group(1).replace('(R)', '')}, multi engine)"
+    return device
+
+
+def sources(items):
+    """A bullet list of (label, value) pairs."""
+    return "\n".join(f"- **{k}:** {v}".rstrip() for k, v in items)
+
+
+def code(cmd):
+    return f"```\n{cmd}\n```"
+
+
+# ---------------------------------------------------------------------------------------------------------
+# Sections
+
+def section_books():
+    d = read_interleave(BOOKS["file"])
+    cmds = d["cmds"]
+    books = [n for n, c in cmds.items() if "book" in c["cmd"]]
+    if books != [1]:
+        raise ParseError(f"{BOOKS['file']}: the books' code is not command [1]")
+    per_path = [n for n, c in cmds.items() if "--russian-roulette off" in c["cmd"]]
+    per_render = [n for n, c in cmds.items() if n != 1 and "--russian-roulette" not in c["cmd"]]
+    if len(per_path) != 1 or len(per_render) != 1:
+        raise ParseError(f"{BOOKS['file']}: expected one run with and one without --russian-roulette off")
+    pp, pr = cmds[per_path[0]], cmds[per_render[0]]
+    hf = read_hyperfine_md(BOOKS["hyperfine"])
+    hf_book = next(v for k, v in hf.items() if "book" in k)
+    hf_ours = next((k, v) for k, v in hf.items() if "book" not in k)
+    ab = read_ab_markdown(BOOKS["later_ab"])[BOOKS["later_ab_render"]]
+    out = [
+        "## 1. CPU engine against the books' own code",
+        "",
+        "Book 3's final render (`rtrol-cornell-glass`, 600x600, 16 spp, depth 50, stratified, the books' mixture) on "
+        "one core, against the books' reference code (*Ray Tracing: The Rest of Your Life*, v4.0.1, `g++ -O3`). "
+        "Per path: this engine with `--russian-roulette off`, the books' estimator exactly; per render: this "
+        "engine's defaults (Russian roulette on: fewer segments per path, but more error per sample than the books' "
+        "estimator, so not at the books' error; the notebook weighs the two).",
+        "",
+        f"| | mean of {d['rounds']} interleaved rounds | books' / this (± sd of per-round ratios) |",
+        "|---|---:|---:|",
+        f"| books' code, `-O3` | {cmds[1]['mean']:.3f} s | |",
+        f"| **this engine, per path** (no roulette) | {pp['mean']:.3f} s | **{pp['ratio']:.3f} ± {pp['sd']:.3f}** |",
+        f"| **this engine, per render** (its defaults) | {pr['mean']:.3f} s | **{pr['ratio']:.3f} ± {pr['sd']:.3f}** |",
+        "",
+        f"An earlier `hyperfine` run of the same day (the issue's tool, {link(BOOKS['hyperfine'])}) gave "
+        f"{hf_book[2] / hf_ours[1][2]:.2f}" + (f" ± {hf_book[3]:.2f}" if hf_ours[1][2] == 1.0 else "") +
+        " per path while the books' code drifted "
+        f"({hf_book[0]:.2f} ± {hf_book[1]:.2f} s); the interleaved figure above is the one to quote. "
+        f"Since then ({notebook_link(BOOKS['later_notebook'])}, 2026-11-26) a one-core A/B of the same render at "
+        f"the defaults (`tests/Bench/cpu_ab.sh`, fastest of 3) measured {ab[0]:.3f} s for 5ea60e8 and {ab[1]:.3f} s "
+        f"for the shared path vertex ({ab[2]:.3f}x, {link(BOOKS['later_ab'])}); the books' code was not in that run.",
+        "",
+        sources([
+            ("Machine", BOOKS["machine"]),
+            ("Date", BOOKS["date"]),
+            ("Results", link(BOOKS["file"])),
+            ("Notebook", notebook_link(BOOKS["notebook"])),
+            ("Command (from the file)", ""),
+        ]),
+        "",
+        code(interleave_command(d)),
+    ]
+    return out
+
+
+def section_scaling():
+    d = read_interleave(SCALING["file"])
+    c = d["cmds"]
+    s, m = c[SCALING["single"]], c[SCALING["multi"]]
+    bs, bm = c[SCALING["base_single"]], c[SCALING["base_multi"]]
+    if "--engine single" not in s["cmd"] or "--engine multi" not in m["cmd"]:
+        raise ParseError(f"{SCALING['file']}: unexpected commands for single and multi")
+    header_cmd = d["header"].split(" (")[0] if d["header"] else ""
+    env = "CORE=0,1 " if header_cmd.startswith("CORE=0,1") else ""
+    out = [
+        "## 2. CPU scaling: one core against two",
+        "",
+        "The same render as §1 at the defaults, with its PNG written (`--output`): the single engine pinned to one "
+        "core against the multi engine on both cores of the CI kind, interleaved.",
+        "",
+        "| build | single engine, one core | multi engine, two cores | two cores / one |",
+        "|---|---:|---:|---:|",
+        f"| the build before (PNG on one thread) | {bs['mean']:.3f} s | {bm['mean']:.3f} s | "
+        f"{bm['ratio']:.3f} ± {bm['sd']:.3f} |",
+        f"| **current** (PNG on every core) | {s['mean']:.3f} s | {m['mean']:.3f} s | "
+        f"**{s['mean'] / m['mean']:.3f}** (ratio of the means) |",
+        "",
+        f"Only the last of the {d['rounds']} rounds and the means were kept, so the current build's ratio has no "
+        "per-round spread in the file; the notebook quotes a later 10-round figure that no results file keeps.",
+        "",
+        sources([
+            ("Machine", SCALING["machine"]),
+            ("Date", d["date"] or "not in the file"),
+            ("Results", link(SCALING["file"])),
+            ("Notebook", notebook_link(SCALING["notebook"])),
+            ("Command (from the file; the header abbreviates it)", ""),
+        ]),
+        "",
+        code(interleave_command(d, env)),
+    ]
+    return out
+
+
+def table_rows(data, rel):
+    rows = data.get("rows") or []
+    if not rows:
+        raise ParseError(f"{rel}: no rows")
+    return rows
+
+
+def section_table54():
+    rel = TABLE54["file"]
+    data = read_json(rel)
+    rows = table_rows(data, rel)
+    check_command(rel, TABLE54["command"], scene=data["scene"], spps={r["spp"] for r in rows},
+                  width=data["width"], reference_spp=data["reference_spp"])
+    gpu, cpu = data["devices"]["gpu"], data["devices"]["multi"]
+    out = [
+        "## 3. GPU: thesis Table 5.4 redone",
+        "",
+        f"`{data['scene']}`, {data['width']}x{data['height']}, depth {data['depth']}, book 3's {data['estimator']} "
+        f"(roulette {'on' if data.get('russian_roulette') else 'off'}), {data['sampling']} samples; relMSE against a "
+        f"{data['reference_spp']:,}-spp GPU render. GPU time from timestamp queries around the dispatches, CPU time "
+        "from the host clock; both engines on the same host.",
+        "",
+        f"| spp | CPU multi ms | relMSE | GPU ({device_name(gpu)}) ms | relMSE | CPU/GPU |",
+        "|---:|---:|---:|---:|---:|---:|",
+    ]
+    for r in rows:
+        out.append(f"| {r['spp']} | {ms(r['multi']['render_ms'])} | {g3(r['multi']['relmse'])} | "
+                   f"{ms(r['gpu']['gpu_ms'])} | {g3(r['gpu']['relmse'])} | {r['cpu_over_gpu']:.1f}x |")
+    spp = TABLE54["history_spp"]
+    hist = []
+    for hrel, date, what in TABLE54["history"]:
+        h = read_json(hrel)
+        hr = [r for r in table_rows(h, hrel)
+              if r["spp"] == spp and r.get("strategy", data["estimator"]).startswith(data["estimator"])]
+        if len(hr) != 1:
+            raise ParseError(f"{hrel}: no single {data['estimator']} row at {spp} spp")
+        hist.append(f"{ms(hr[0]['gpu']['gpu_ms'])} ms on the {device_name(h['devices']['gpu'])} "
+                    f"({what}; {date_text(date)}; {link(hrel)})")
+    grel, name, col, gdate, gnote = TABLE54["gpu_only"]
+    gheader, gdata = read_integrators(grel)
+    out += [
+        "",
+        f"Earlier runs of the GPU's {spp}-spp row: " + "; ".join(hist) + ". "
+        f"The GPU alone, later the same day with the final build of {notebook_link(gnote)}: "
+        f"{ms(gdata[name][col])} ms (`{name}`, wavefront, {link(grel)}, by `{gheader.split(' (')[0]}`).",
+        "",
+        sources([
+            ("Machine", f"{device_name(gpu)}; the CPU columns: {device_name(cpu)}"),
+            ("Date", TABLE54["date"]),
+            ("Results", link(rel)),
+            ("Notebook", notebook_link(TABLE54["notebook"])),
+            ("Command", ""),
+        ]),
+        "",
+        code(TABLE54["command"]),
+    ]
+    return out
+
+
+def compare_runs():
+    """Each COMPARE entry with its parsed strategies: {strategy: [(spp, ms, relmse), ...]} sorted by spp."""
+    runs = []
+    for meta in COMPARE:
+        rel = meta["file"]
+        rows = read_compare_csv(rel)
+        engines = {r["engine"] for r in rows}
+        if len(engines) != 1:
+            raise ParseError(f"{rel}: expected one engine, found {sorted(engines)}")
+        engine = engines.pop()
+        devices = {r["device"] for r in rows}
+        csv_scenes = {r["scene"] for r in rows}
+        if not all(meta["scene"] in s for s in csv_scenes):
+            raise ParseError(f"{rel}: scene {sorted(csv_scenes)} is not {meta['scene']}")
+        check_command(rel, meta["command"], scene=meta["scene"], spps={r["spp"] for r in rows})
+        sibling = RESULTS / rel.replace(".csv", ".json")
+        if sibling.is_file():
+            j = read_json(rel.replace(".csv", ".json"))
+            check_command(rel, meta["command"], width=j["width"], reference_spp=j["reference_spp"])
+        strategies, labels = {}, {}
+        for r in rows:
+            t = r["gpu_ms"] if engine == "gpu" else r["wall_ms"]
+            strategies.setdefault(r["strategy"], []).append((r["spp"], t, r["relmse"]))
+            labels[r["strategy"]] = r["label"]
+        for s in strategies.values():
+            s.sort()
+        for key in ("baseline", "defaults"):
+            if meta[key] not in strategies:
+                raise ParseError(f"{rel}: no {key} strategy {meta[key]!r}")
+        ref = {r["reference_relmse"] for r in rows} - {None}
+        runs.append(dict(meta, engine=engine, device=devices.pop() if len(devices) == 1 else ", ".join(devices),
+                         strategies=strategies, labels=labels, reference_relmse=ref.pop() if ref else None))
+    return runs
+
+
+def efficiency(points):
+    spp, t, e = points[-1]
+    return 1.0 / (e * t / 1000.0)
+
+
+def time_to(points, target):
+    """GPU or wall ms for the strategy to reach relMSE `target`: log-log interpolation between the two measured
+    spp that bracket it, else extrapolated from the nearest one with relMSE proportional to 1/time."""
+    for (s0, t0, e0), (s1, t1, e1) in zip(points, points[1:]):
+        if e0 >= target >= e1 and e0 != e1:
+            f = (math.log(target) - math.log(e0)) / (math.log(e1) - math.log(e0))
+            return math.exp(math.log(t0) + f * (math.log(t1) - math.log(t0))), False
+    s, t, e = points[0] if target > points[0][2] else points[-1]
+    return t * e / target, True
+
+
+def machine_of(run):
+    return device_name(run["device"])
+
+
+def section_time_to_error(runs):
+    out = [
+        "## 4. Time to equal error",
+        "",
+        "For each `--compare` run: the time every strategy needs to reach the relMSE that the baseline reaches at "
+        "its largest spp (the baseline's own time is measured; the others are interpolated log-log between the two "
+        "measured spp that bracket the target, or, marked ≈, extrapolated from the nearest with relMSE ∝ 1/time). "
+        "Baseline: book 3's mixture at today's defaults, or uniform light selection where the run compares "
+        "selections. GPU runs are timed by the GPU's timestamps, CPU runs by the wall clock.",
+        "",
+        "| scene | machine | target relMSE (baseline, spp) | baseline ms | the defaults ms (speed-up) | fastest to the target (speed-up) | results |",
+        "|---|---|---|---:|---:|---|---|",
+    ]
+    for run in runs:
+        st, labels = run["strategies"], run["labels"]
+        base = st[run["baseline"]]
+        target = base[-1][2]
+        t_base = base[-1][1]
+        times = {s: time_to(p, target) for s, p in st.items()}
+        t_def, ex_def = times[run["defaults"]]
+        fastest = min(times, key=lambda s: times[s][0])
+        t_f, ex_f = times[fastest]
+        mark = lambda ex: "≈" if ex else ""
+        out.append(
+            f"| {run['scene']} | {machine_of(run)} | {g3(target)} ({labels[run['baseline']]}, {base[-1][0]}) | "
+            f"{ms(t_base)} | {mark(ex_def)}{ms(t_def)} ({ratio(t_base / t_def)}) | "
+            f"{labels[fastest]}: {mark(ex_f)}{ms(t_f)} ({ratio(t_base / t_f)}) | {link(run['file'])} |")
+    out += [
+        "",
+        "Dates, commands and notebook sections of these runs: §5 below. The equal-time view (each strategy given "
+        "the same time) is in `h100-compare/equal-time-*.csv` (2026-11-22, commit date), "
+        f"{notebook_link('### 5.4')}.",
+    ]
+    return out
+
+
+def section_efficiency(runs):
+    out = [
+        "## 5. Efficiency per strategy and scene",
+        "",
+        "Efficiency = 1 / (relMSE × seconds) at each strategy's largest spp, from the latest `--compare` run of each "
+        "scene and machine (higher is better; the ratio of two is how much less time one needs for the same error). "
+        "Labels name only what varies in the run; the rest are the run's defaults. **the defaults** marks the "
+        "scene's defaults today, *baseline* the baseline of §4.",
+    ]
+    for run in runs:
+        st, labels = run["strategies"], run["labels"]
+        base_eff = efficiency(st[run["baseline"]])
+        unit = "GPU ms" if run["engine"] == "gpu" else "wall ms"
+        ref = (f"; the reference's own relMSE {g3(run['reference_relmse'])}" if run["reference_relmse"] else "")
+        out += [
+            "",
+            f"**{run['scene']}**, {machine_of(run)}, {date_text(run['date'])}{ref} "
+            f"({link(run['file'])}; {notebook_link(run['notebook'])})",
+            "",
+            f"| strategy | spp | {unit} | relMSE | efficiency | vs baseline |",
+            "|---|---:|---:|---:|---:|---:|",
+        ]
+        for s, points in st.items():
+            spp, t, e = points[-1]
+            name = labels[s]
+            if s == run["defaults"]:
+                name = f"**{name}** (the defaults{' ' + run['defaults_note'] if run.get('defaults_note') else ''})"
+            elif s == run["baseline"]:
+                name = f"{name} (*baseline*)"
+            out.append(f"| {name} | {spp} | {ms(t)} | {g3(e)} | {eff(efficiency(points))} | "
+                       f"{ratio(efficiency(points) / base_eff)} |")
+    out += ["", "Commands of these runs:", ""]
+    for run in runs:
+        out += [f"- {link(run['file'])}:", "", "  ```", *("  " + l for l in run["command"].splitlines()), "  ```"]
+    out += [
+        "",
+        "The CPU's closeup and triangle-light scenes were last measured with `tests/Bench/efficiency.sh` on an older "
+        f"build (`cpu-light-sampling/`, {notebook_link('### 4.1')}); they are not repeated here.",
+    ]
+    return out
+
+
+def section_ratio():
+    out = [
+        "## 6. GPU speed-up over the CPU, per scene",
+        "",
+        "CPU ms / GPU ms of the same render, both engines in one `--compare` run on one host (the multi engine on "
+        "the GPU host's 16 cores). At the largest spp of each table, with the range over its spp ladder.",
+        "",
+        "| scene | estimator | spp | CPU multi ms | GPU ms | CPU/GPU | over the ladder | GPU | date | results |",
+        "|---|---|---:|---:|---:|---:|---|---|---|---|",
+    ]
+    seen = set()
+    for meta in RATIO_TABLES:
+        rel = meta["file"]
+        data = read_json(rel)
+        rows = table_rows(data, rel)
+        by_est = {}
+        for r in rows:
+            est = r.get("strategy", data["estimator"]).split()[0]
+            by_est.setdefault(est, []).append(r)
+        for est, rs in by_est.items():
+            key = (data["scene"], est)
+            if key in seen:
+                continue  # a later table (listed first) already gives this scene and estimator
+            seen.add(key)
+            rs.sort(key=lambda r: r["spp"])
+            last = rs[-1]
+            lo = min(r["cpu_over_gpu"] for r in rs)
+            hi = max(r["cpu_over_gpu"] for r in rs)
+            out.append(f"| {data['scene']} | {est} | {last['spp']} | {ms(last['multi']['render_ms'])} | "
+                       f"{ms(last['gpu']['gpu_ms'])} | **{last['cpu_over_gpu']:.1f}x** | {lo:.1f}-{hi:.1f}x | "
+                       f"{device_name(data['devices']['gpu'])} | {date_text(meta['date'])} | {link(rel)} |")
+    out += [
+        "",
+        "No results file holds CPU and GPU times of the same render for any other scene: the per-scene GPU runs "
+        "(catalogue A/B lists, the efficiency runs of §5) time the GPU alone, and the CPU runs are on the CI kind "
+        "at other sizes. The nee-mis row is of an older build (megakernel) than the mixture's (wavefront). "
+        + "Notebook: " + ", ".join(notebook_link(m["notebook"]) for m in RATIO_TABLES) + ".",
+    ]
+    return out
+
+
+def render():
+    runs = compare_runs()
+    parts = [
+        [
+            "# Current results",
+            "",
+            "<!-- Generated by tests/Bench/results_page.py from docs/results/; do not edit by hand. -->",
+            "",
+            "The latest figure of each of the project's performance headlines, with the machine, the date, the command "
+            "and the results file it was read from. This page is generated: `python3 tests/Bench/results_page.py` "
+            "rewrites it from the files under [`docs/results/`](results/), and `--check` tells whether it is up to "
+            "date. How each figure was made, what came before it and why it moved is in the dated lab notebook, "
+            "[`docs/notebook/PERFORMANCE.md`](notebook/PERFORMANCE.md).",
+            "",
+            "Machines: the **CI kind** is the project's 2-vCPU development and CI machine (Intel Xeon or AMD EPYC, "
+            "no GPU: its Vulkan device is Mesa's lavapipe); the **GPU host** is an NVIDIA H100 80GB HBM3 or, when no "
+            "H100 was free, an NVIDIA H200, with 16 Xeon cores. Each figure names its card. Ratios are only valid "
+            "within one run.",
+        ],
+        section_books(),
+        section_scaling(),
+        section_table54(),
+        section_time_to_error(runs),
+        section_efficiency(runs),
+        section_ratio(),
+    ]
+    titles = [p[0][3:] for p in parts[1:]]
+    parts[0] += ["", "Contents: " + " · ".join(f"[{t}](#{slugify(t)})" for t in titles)]
+    return "\n\n".join("\n".join(p) for p in parts) + "\n"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--check", action="store_true", help="exit 1 if docs/RESULTS.md is not what would be written")
+    args = parser.parse_args()
+    try:
+        text = render()
+    except (ParseError, KeyError, ValueError, StopIteration) as e:
+        print(f"results_page.py: cannot build the page: {e!r}", file=sys.stderr)
+        return 2
+    rel = PAGE.relative_to(ROOT)
+    if args.check:
+        if not PAGE.is_file() or PAGE.read_text() != text:
+            print(f"{rel} is out of date: run python3 tests/Bench/results_page.py", file=sys.stderr)
+            return 1
+        return 0
+    PAGE.write_text(text)
+    print(f"wrote {rel}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
