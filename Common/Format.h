@@ -1,9 +1,9 @@
 // fmt formatters for the Common types that appear in messages (logs, errors, RT_CHECK values):
 //   vec2 / vec3 / vec4 (any glm::vec)  "(1, 2.5, -3)"; a float spec applies to each component: "{:.2f}"
 //   Aabb                               "[(0, 0, 0) .. (1, 2, 3)]"; the spec applies to each component
-//   EngineKind, PixelSampling, Estimator  their toString() names ("gpu", "stratified", "mixture")
-//   RenderSettings                     "spp 16, depth 50, 600x600, random, mixture, unidirectional light on,
-//                                       seed 0"
+//   every named enum (Render/NamedEnum.h)  its word ("gpu", "stratified", "mixture")
+//   RenderSettings                     "spp 16, depth 50, width 600, aspect 1, sampling random, ..., seed 0
+//                                       (600x600)": the settings table's names and words
 // The names and the settings' line take string specs ("{:>10}"). Written for fmt 9 (Debian 12's, which
 // spdlog uses) and later.
 #pragma once
@@ -16,6 +16,7 @@
 #include "Math/Aabb.h"
 #include "Math/Math.h"
 #include "Render/RenderSettings.h"
+#include "Render/SettingsTable.h"
 
 template <glm::length_t L, typename T, glm::qualifier Q>
 struct fmt::formatter<glm::vec<L, T, Q>> : fmt::formatter<T>
@@ -59,11 +60,9 @@ struct fmt::formatter<rt::Aabb> : fmt::formatter<rt::vec3>
     }
 };
 
-namespace rt::detail
-{
-/// The enums' formatter: their toString() name, through the string_view formatter.
-template <typename Enum>
-struct NamedEnumFormatter : fmt::formatter<std::string_view>
+/// Every named enum (Render/NamedEnum.h) formats as its word.
+template <rt::NamedEnum Enum>
+struct fmt::formatter<Enum> : fmt::formatter<std::string_view>
 {
     template <typename FormatContext>
     auto format(Enum value, FormatContext& ctx) const -> decltype(ctx.out())
@@ -71,36 +70,18 @@ struct NamedEnumFormatter : fmt::formatter<std::string_view>
         return fmt::formatter<std::string_view>::format(rt::toString(value), ctx);
     }
 };
-} // namespace rt::detail
 
-template <>
-struct fmt::formatter<rt::EngineKind> : rt::detail::NamedEnumFormatter<rt::EngineKind>
-{
-};
-
-template <>
-struct fmt::formatter<rt::PixelSampling> : rt::detail::NamedEnumFormatter<rt::PixelSampling>
-{
-};
-
-template <>
-struct fmt::formatter<rt::Estimator> : rt::detail::NamedEnumFormatter<rt::Estimator>
-{
-};
-
+/// Every setting as "NAME VALUE", in the settings table's order, then the height.
 template <>
 struct fmt::formatter<rt::RenderSettings> : fmt::formatter<std::string_view>
 {
     template <typename FormatContext>
     auto format(const rt::RenderSettings& s, FormatContext& ctx) const -> decltype(ctx.out())
     {
-        const std::string text = fmt::format(
-            "spp {}, depth {}, {}x{}, {}, {}, {} light sampling, {} light selection, Russian roulette {}, "
-            "unidirectional light {}, seed {}",
-            s.spp, s.depth, s.width, s.height(), s.sampling, s.estimator, rt::toString(s.lightSampler),
-            rt::toString(s.lightSelection),
-            s.russianRoulette ? "on" : "off",
-            s.unidirectionalLight ? "on" : "off", s.seed);
+        std::string text;
+        for (const rt::Setting& setting : rt::settingsTable())
+            text += fmt::format("{}{} {}", text.empty() ? "" : ", ", setting.name, setting.text(s));
+        text += fmt::format(" ({}x{})", s.width, s.height());
         return fmt::formatter<std::string_view>::format(text, ctx);
     }
 };

@@ -10,7 +10,7 @@
 #include "Cli/ValueParsing.h"
 #include "Cli/WindowSize.h"
 #include "Error.h"
-#include "Render/RenderSettings.h"
+#include "Render/SettingsTable.h"
 #include "SceneFile/SceneFile.h"
 #include "Scenes/Catalogue.h"
 
@@ -128,8 +128,35 @@ std::string actionScriptHelp(const std::vector<ActionSpec>& specs)
     return help;
 }
 
+ActionSpec settingActionSpec(const Setting& setting)
+{
+    ActionSpec spec{.name = std::string(setting.name),
+                    .placeholder = setting.placeholder(),
+                    .meaning = std::string(setting.tooltip)};
+    switch (setting.type)
+    {
+    case SettingType::Integer: spec.value = ActionValue::Integer; break;
+    case SettingType::Real: spec.value = ActionValue::Real; break;
+    case SettingType::OnOff: spec.value = ActionValue::OnOff; break;
+    case SettingType::Choice: spec.value = ActionValue::Text; break;
+    }
+    // The table's parse is the last check (a Real's minimum is exclusive there).
+    spec.minimum = setting.minimum;
+    spec.maximum = setting.number ? setting.maximum : 1e30;
+    spec.accepts = [&setting](const std::string& value) {
+        RenderSettings scratch;
+        return setting.assign(setting, scratch, value);
+    };
+    return spec;
+}
+
 std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long long sppMinimum)
 {
+    ActionSpec sppSpec = settingActionSpec(setting("spp"));
+    sppSpec.meaning = sppMeaning;
+    // The GPU window's spp is where accumulation stops, 0 for never: its own minimum.
+    sppSpec.minimum = double(sppMinimum);
+    sppSpec.accepts = {};
     return {
         {"scene", ActionValue::Text, "ID|FILE",
          "switch to a catalogue scene (--list-scenes) or a scene file (.json, .gltf, .glb; reloaded when it changes)",
@@ -142,17 +169,14 @@ std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long lo
              std::optional<shader::FresnelModel> model;
              return parseFresnelOption(v, model);
          }},
-        {"spp", ActionValue::Integer, "N", sppMeaning, double(sppMinimum)},
-        {"depth", ActionValue::Integer, "N", "ray segments per path at most", 1},
-        {"estimator", ActionValue::Text, "bsdf|mixture|nee|nee-mis", "how paths gather light (--estimator)", 0, 1e30,
-         [](const std::string& v) { return parseEstimator(v).has_value(); }},
-        {"light-sampler", ActionValue::Text, "area|solid-angle|projected", "how NEE picks a point on a light", 0, 1e30,
-         [](const std::string& v) { return parseLightSampler(v).has_value(); }},
-        {"light-selection", ActionValue::Text, "uniform|power|bvh", "how NEE picks the light it samples", 0, 1e30,
-         [](const std::string& v) { return parseLightSelection(v).has_value(); }},
+        sppSpec,
+        settingActionSpec(setting("depth")),
+        settingActionSpec(setting("estimator")),
+        settingActionSpec(setting("light-sampler")),
+        settingActionSpec(setting("light-selection")),
         {"pdf", ActionValue::OnOff, "on|off", "the books' name: estimator=mixture, or estimator=bsdf"},
-        {"russian-roulette", ActionValue::OnOff, "on|off", "paths end by Russian roulette from their third segment"},
-        {"unidirectional-light", ActionValue::OnOff, "on|off", "emitters emit from their front face only"},
+        settingActionSpec(setting("russian-roulette")),
+        settingActionSpec(setting("unidirectional-light")),
         {"resize", ActionValue::Size, "WxH", "resize the window (0x0: as a minimised window reports)"},
         {"save", ActionValue::Text, "FILE.png", "save the image shown: FILE.png and the linear FILE.pfm", 0, 1e30,
          [](const std::string& path) { return saveImagePathProblem(path).empty(); }},

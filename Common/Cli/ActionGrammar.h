@@ -13,6 +13,8 @@
 
 namespace rt
 {
+struct Setting;
+
 enum class ActionValue
 {
     None, // a bare name: "render"
@@ -68,6 +70,10 @@ inline constexpr int kMaxFontPixels = 32;
 /// Why the windows' Save cannot write `path`, or empty when it can: they write PNG (sRGB) with the linear PFM
 /// beside it, so the name must end in .png.
 std::string saveImagePathProblem(const std::string& path);
+
+/// The action that sets `setting` (Render/SettingsTable.h): its name, its words or range as the table parses them,
+/// its tooltip as the meaning. A window applies it with Setting::assign.
+ActionSpec settingActionSpec(const Setting& setting);
 
 /// `shared` followed by `own`.
 std::vector<ActionSpec> joinActionSpecs(std::vector<ActionSpec> shared, const std::vector<ActionSpec>& own);

@@ -12,6 +12,7 @@
 #include "Cli/ValueParsing.h"
 #include "Error.h"
 #include "Render/MemoryBudget.h"
+#include "Render/SettingsTable.h"
 #include "SceneFile/JsonSceneWriter.h"
 #include "SceneFile/SceneFile.h"
 #include "SceneFile/SceneFileWatch.h"
@@ -74,62 +75,27 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
             return isSceneFilePath(path) && path.ends_with(".json") ? std::string()
                                                                      : std::string("must name a .json file");
         });
-    app.add_option("--spp", o.spp, "Samples per pixel, 1 to 16777216 (default: the scene's)");
-    app.add_option("--depth", o.depth, "Ray segments per path at most, the camera ray included: 1 sees only the emitters (default: the scene's, usually 50)");
-    app.add_option("--width", o.width, "Image width in pixels, 1 to 65536 (default: the scene's)");
-    app.add_option("--aspect", o.aspect, "Aspect ratio width/height, e.g. 1 or 1.7778 (default: the scene's)")
-        ->check([](const std::string& text) -> std::string {
-            // Checked as written, in double: a float reads 1e308 as inf, and the message would quote that.
-            char* end = nullptr;
-            const double value = std::strtod(text.c_str(), &end);
-            if (text.empty() || end != text.c_str() + text.size())
-                return fmt::format("must be a number (got '{}')", text);
-            if (!(value > 0.0) || !(value <= double(std::numeric_limits<float>::max())))
-                return fmt::format("must be a positive number a float can hold (got {})", text);
-            return {};
-        });
-    app.add_option("--sampling", o.sampling,
-                   "Pixel sampling: random (independent jitter), stratified (floor(sqrt(spp))^2 jittered strata), "
-                   "accumulate (progressive 1-spp passes) or sobol (every 2D draw of a sample - pixel, lens, light "
-                   "point, BSDF direction - an Owen-scrambled Sobol point over the pixel's samples, Burley 2020: "
-                   "stratified at every power-of-two spp). Default: the scene's: sobol, or random for the books' "
-                   "scenes");
-    app.add_option("--estimator", o.estimator,
-                   "How a path gathers light (default: the scene's: nee-mis, or mixture for the books' scenes). "
-                   "bsdf: follow sampled BSDF directions only (books 1-2); mixture: book 3's one-sample mix of "
-                   "BSDF and light directions, no shadow rays; nee: a shadow ray to one sampled light at every "
-                   "diffuse vertex, BSDF rays ignore the lights; nee-mis: NEE and BSDF rays both count, weighted "
-                   "by the power heuristic");
-    app.add_option("--light-sampler", o.lightSampler,
-                   "How nee and nee-mis pick a point on a light: area (uniform over its surface), solid-angle "
-                   "(uniform over the directions it covers: cones for spheres, spherical rectangles for "
-                   "rectangular quads, spherical triangles (Arvo) for triangles of 3e-4 to 6.22 sr, area "
-                   "where no solid-angle sampler applies) or projected (by the cosine over a sphere's cap "
-                   "when it lies above the receiver's horizon, and over rectangles and triangles by a "
-                   "bilinear warp of their spherical samplers; else as solid-angle). The mixture keeps "
-                   "book 3's.")
-        ->capture_default_str();
-    app.add_option("--light-selection", o.lightSelection,
-                   "Which light nee and nee-mis sample at a vertex: uniform (each of the N emitters 1/N), power "
-                   "(in proportion to area x emitted luminance, by an alias table) or bvh (by a light BVH: in "
-                   "proportion to a bound of what each group of emitters can contribute at the vertex, from its "
-                   "power, distance, orientation and the receiver's horizon)")
-        ->capture_default_str();
+    for (const Setting& setting : settingsTable())
+    {
+        // Each flag writes its text into `settings` (CLI11 keeps the callback); resolveRequest parses it.
+        const std::string name(setting.name);
+        std::string help(setting.help);
+        if (!setting.fromScene)
+            help += fmt::format(" (default: {})", setting.text(RenderSettings{}));
+        app.add_option_function<std::string>(
+               "--" + name, [&o, name](const std::string& value) { o.settings[name] = value; }, help)
+            ->check([&setting, name](const std::string& value) -> std::string {
+                RenderSettings scratch;
+                return setting.assign(setting, scratch, value) ? std::string() : setting.refusal(value);
+            })
+            ->type_name(setting.placeholder());
+    }
     app.add_option("--fresnel", o.fresnel,
                    "The reflectance of every dielectric (glass): schlick (Schlick's approximation, as the books) "
                    "or exact (the unpolarised Fresnel equations, as pbrt-v4 and Mitsuba); default: each "
                    "material's own, schlick in the catalogue's scenes")
         ->check(CLI::IsMember({"schlick", "exact"}));
     app.add_option("--pdf", o.pdf, "The books' name for two estimators: on = --estimator mixture, off = bsdf");
-    app.add_option("--russian-roulette", o.russianRoulette,
-                   "on: from the third segment, a path whose throughput fell below 1 ends with probability "
-                   "1 - throughput and the survivors are scaled up (unbiased, pbrt-v4's rule; with bsdf and "
-                   "mixture a path ends after the light its last direction finds); off: paths run to --depth")
-        ->capture_default_str();
-    app.add_option("--unidirectional-light", o.unidirectionalLight,
-                   "on: emitters emit from their front face only; off: from both faces (default: the scene's)");
-    app.add_option("--seed", o.seed, "Seed of the per-pixel, per-sample random streams (0..4294967295)")
-        ->capture_default_str();
     app.add_option("--output", o.output, "Write the tone-mapped sRGB image here (.png)");
     app.add_option("--hdr", o.hdr, "Write the linear radiance image here (.pfm)");
     app.add_option("--stats", o.stats, "Write render statistics as JSON here");
@@ -149,51 +115,31 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
     app.add_flag("--quiet", o.quiet, "No progress line");
 }
 
+std::optional<std::string> CommonOptions::given(std::string_view name) const
+{
+    const auto it = settings.find(name);
+    return it == settings.end() ? std::nullopt : std::optional(it->second);
+}
+
 RenderRequest resolveRequest(const CommonOptions& o, const Scene& scene)
 {
     RenderRequest request = defaultRequest(o.sceneRef(), scene);
     RenderSettings& s = request.settings;
-    s.spp = o.spp.value_or(s.spp);
-    s.depth = o.depth.value_or(s.depth);
-    s.width = o.width.value_or(s.width);
-    s.aspect = o.aspect.value_or(s.aspect);
-    if (o.sampling)
+    for (const auto& [name, value] : o.settings)
     {
-        const auto sampling = parsePixelSampling(*o.sampling);
-        if (!sampling)
-            throw UsageError(
-                fmt::format("--sampling must be random, stratified, accumulate or sobol (got '{}')", *o.sampling));
-        s.sampling = *sampling;
-    }
-    if (o.estimator)
-    {
-        const auto estimator = parseEstimator(*o.estimator);
-        if (!estimator)
-            throw UsageError(
-                fmt::format("--estimator must be bsdf, mixture, nee or nee-mis (got '{}')", *o.estimator));
-        s.estimator = *estimator;
+        const Setting* setting = findSetting(name);
+        if (setting == nullptr)
+            throw UsageError(fmt::format("no setting '{}'", name));
+        setting->set(s, value, "--" + name);
     }
     if (o.pdf)
     {
         const Estimator named = onOffFlag("--pdf", *o.pdf) ? Estimator::Mixture : Estimator::BsdfOnly;
-        if (o.estimator && s.estimator != named)
+        if (const auto estimator = o.given("estimator"); estimator && s.estimator != named)
             throw UsageError(fmt::format("--pdf {} means --estimator {}, which contradicts --estimator {}", *o.pdf,
-                                         toString(named), *o.estimator));
+                                         toString(named), *estimator));
         s.estimator = named;
     }
-    s.russianRoulette = onOffFlag("--russian-roulette", o.russianRoulette);
-    const auto lightSampler = parseLightSampler(o.lightSampler);
-    if (!lightSampler)
-        throw UsageError(
-            fmt::format("--light-sampler must be area, solid-angle or projected (got '{}')", o.lightSampler));
-    s.lightSampler = *lightSampler;
-    const auto lightSelection = parseLightSelection(o.lightSelection);
-    if (!lightSelection)
-        throw UsageError(fmt::format("--light-selection must be uniform, power or bvh (got '{}')", o.lightSelection));
-    s.lightSelection = *lightSelection;
-    if (o.unidirectionalLight)
-        s.unidirectionalLight = onOffFlag("--unidirectional-light", *o.unidirectionalLight);
-    s.seed = o.seed;
     s.validate();
     return request;
 }

@@ -3,8 +3,11 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include <CLI/CLI.hpp>
 
@@ -18,18 +21,10 @@ struct CommonOptions
     bool headless = false;
     bool listScenes = false;
     std::string scene = "cornell-box-lights";
-    std::optional<int> spp;
-    std::optional<int> depth;
-    std::optional<int> width;
-    std::optional<float> aspect;
-    std::optional<std::string> sampling;
-    std::optional<std::string> estimator;
-    std::optional<std::string> pdf;
-    std::string russianRoulette = "on";
-    std::string lightSampler = "projected";
-    std::string lightSelection = "bvh";
-    std::optional<std::string> unidirectionalLight;
-    std::uint32_t seed = 0;
+    /// The render settings' flags as given, by the settings table's names (Render/SettingsTable.h): "spp" -> "16";
+    /// a setting not given is absent and keeps the scene's request's value.
+    std::map<std::string, std::string, std::less<>> settings;
+    std::optional<std::string> pdf; // the books' name for two estimators
     std::string output;
     std::string hdr;
     std::string stats;
@@ -41,11 +36,13 @@ struct CommonOptions
     std::optional<std::string> fresnel; // schlick | exact; empty: each dielectric's own
     bool quiet = false;
 
+    /// The value given for the setting `name`, or nothing.
+    std::optional<std::string> given(std::string_view name) const;
     /// The scene the flags name; throws UsageError for a malformed --translate-scene or --scale-scene.
     SceneRef sceneRef() const;
 };
 
-/// Registers the shared flags on `app` with help text for each.
+/// Registers the shared flags on `app` with help text for each: the render settings' from the settings table.
 void addCommonOptions(CLI::App& app, CommonOptions& options);
 
 /// The request of a command line for `scene` (built from options.sceneRef()): the scene's defaults,

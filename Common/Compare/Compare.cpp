@@ -11,8 +11,10 @@
 
 #include <nlohmann/json.hpp>
 #include <spdlog/fmt/fmt.h>
+#include <spdlog/fmt/ranges.h>
 #include <spdlog/spdlog.h>
 
+#include "Render/SettingsTable.h"
 #include "Compare/ConvergenceCsv.h"
 #include "Compare/EqualTime.h"
 #include "Compare/Measurement.h"
@@ -128,6 +130,15 @@ void warnNearReferenceNoise(const Reference& reference, const std::vector<double
 }
 
 /// "relMSE against 4096 spp (epsilon 0.01; the reference's own relMSE 3.4e-04 is part of every value)".
+/// "estimator nee-mis, light-sampler projected, ...": the strategy settings, as the command line names them.
+std::string describeStrategy(const RenderSettings& settings)
+{
+    std::vector<std::string> parts;
+    for (const Setting* s : strategySettings())
+        parts.push_back(fmt::format("{} {}", s->name, s->text(settings)));
+    return fmt::format("{}", fmt::join(parts, ", "));
+}
+
 std::string againstReference(const Reference& reference)
 {
     std::string text = fmt::format("relMSE against {} (epsilon {:g}", reference.description, kRelMseEpsilon);
@@ -182,16 +193,10 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
     }
 
     const RenderSettings& b = base.settings;
-    nlohmann::json json;
+    nlohmann::json json = toJson(b); // the base settings by the settings table's keys; each row names its spp
+    json.erase("spp");
     json["scene"] = scene.id;
-    json["width"] = b.width;
     json["height"] = b.height();
-    json["depth"] = b.depth;
-    json["estimator"] = toString(b.estimator);
-    json["sampling"] = toString(b.sampling);
-    json["light_sampler"] = toString(b.lightSampler);
-    json["light_selection"] = toString(b.lightSelection);
-    json["russian_roulette"] = b.russianRoulette;
     if (options.referencePath.empty())
         json["reference_spp"] = reference.spp;
     else
@@ -206,12 +211,8 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
     for (std::size_t s = 0; s < strategyCount; ++s)
     {
         const RenderSettings settings = options.strategies[s].applyTo(b);
-        std::printf("\n%s: %dx%d, depth %d, %s estimator (%s light sampler, %s selection, roulette %s), %s "
-                    "sampling; %s\n",
-                    scene.id.c_str(), b.width, b.height(), b.depth, toString(settings.estimator),
-                    toString(settings.lightSampler), toString(settings.lightSelection),
-                    settings.russianRoulette ? "on" : "off", toString(settings.sampling),
-                    againstReference(reference).c_str());
+        std::printf("\n%s: %dx%d, depth %d, %s; %s\n", scene.id.c_str(), b.width, b.height(), b.depth,
+                    describeStrategy(settings).c_str(), againstReference(reference).c_str());
         std::string header = fmt::format("{:>6}", "spp");
         for (const EngineUnderTest& e : engines)
             header += fmt::format(" | {:>9} {:>9}", fmt::format("{} ms", toString(e.kind)), "relMSE");
@@ -339,7 +340,7 @@ std::vector<EngineKind> parseEngineList(const std::string& text)
     std::vector<EngineKind> engines;
     for (const std::string& part : splitCommas(text))
     {
-        const auto e = parseEngine(part);
+        const auto e = parseName<EngineKind>(part);
         if (!e)
             throw UsageError(fmt::format("--engines takes single, multi and gpu (got '{}')", part));
         engines.push_back(*e);

@@ -2,10 +2,13 @@
 
 #include <algorithm>
 
+#include <spdlog/fmt/fmt.h>
+
 #include "Cli/HeadlessRun.h"
 #include "Compare/Compare.h"
 #include "Compare/ReferenceCache.h"
 #include "Render/EngineRegistry.h"
+#include "Render/SettingsTable.h"
 
 namespace rt::compare
 {
@@ -28,21 +31,19 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
                    "instead of rendering a reference")
         ->check(CLI::ExistingFile);
     app.add_option("--table", flags.table, "With --compare: write every figure as JSON here");
-    app.add_option("--estimators", flags.strategies.estimators,
-                   "With --compare: estimators to compare, comma separated (bsdf, mixture, nee, nee-mis; default: "
-                   "--estimator's); every combination with the lists below is a strategy")
-        ->needs(compareFlag);
-    app.add_option("--light-samplers", flags.strategies.lightSamplers,
-                   "With --compare: NEE's light samplers to compare (area, solid-angle, projected)")
-        ->needs(compareFlag);
-    app.add_option("--light-selections", flags.strategies.lightSelections,
-                   "With --compare: NEE's light selections to compare (uniform, power, bvh)")
-        ->needs(compareFlag);
-    app.add_option("--samplings", flags.strategies.samplings,
-                   "With --compare: pixel samplings to compare (random, stratified, accumulate, sobol)")
-        ->needs(compareFlag);
-    app.add_option("--roulettes", flags.strategies.roulettes, "With --compare: Russian roulette settings to compare (on, off)")
-        ->needs(compareFlag);
+    for (const Setting* setting : strategySettings())
+    {
+        const std::string flag(setting->compareFlag);
+        std::string help = fmt::format("With --compare: values of --{} to compare, comma separated ({}; default: "
+                                       "--{}'s)",
+                                       setting->name, setting->expected(), setting->name);
+        if (setting->name == "estimator")
+            help += "; every combination with the other lists is a strategy";
+        app.add_option_function<std::string>(
+               flag, [&flags, flag](const std::string& value) { flags.strategies[flag] = value; }, help)
+            ->type_name("LIST")
+            ->needs(compareFlag);
+    }
     app.add_option("--csv", flags.csv,
                    "With --compare: one CSV row per engine x strategy x spp (scene, engine, device, strategy, label, "
                    "spp, wall ms, GPU ms, Mpaths/s, MSE, relMSE, RMSE), each written as its render ends (Ctrl-C keeps "

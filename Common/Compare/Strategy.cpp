@@ -1,51 +1,68 @@
 #include "Compare/Strategy.h"
 
 #include <algorithm>
-#include <optional>
 
 #include <spdlog/fmt/fmt.h>
+#include <spdlog/fmt/ranges.h>
 
 #include "Cli/ValueParsing.h"
 #include "Error.h"
-#include "Shared/Estimator.h"
+#include "Render/SettingsTable.h"
 
 namespace rt::compare
 {
 namespace
 {
-/// The values of a comma-separated list, or {fallback} when it is empty.
-template <typename T, typename Parse>
-std::vector<T> parseList(const std::string& text, const char* flag, const char* names, T fallback, Parse parse)
+/// The words of `setting`'s list, checked and without repeats, or the base's word when there is none.
+std::vector<std::string> listedWords(const StrategyLists& lists, const Setting& setting, const RenderSettings& base)
 {
-    if (text.empty())
-        return {fallback};
-    std::vector<T> values;
-    for (const std::string& part : splitCommas(text))
+    const auto it = lists.find(setting.compareFlag);
+    if (it == lists.end() || it->second.empty())
+        return {setting.text(base)};
+    const std::string& text = it->second;
+    std::vector<std::string> words;
+    for (const std::string& word : splitCommas(text))
     {
-        const std::optional<T> value = parse(part);
-        if (!value)
-            throw UsageError(fmt::format("{} takes {} separated by commas (got '{}')", flag, names, part));
-        if (std::find(values.begin(), values.end(), *value) == values.end())
-            values.push_back(*value);
+        RenderSettings scratch;
+        if (!setting.assign(setting, scratch, word))
+            throw UsageError(fmt::format("{} takes {} separated by commas (got '{}')", setting.compareFlag,
+                                         setting.expected(), word));
+        if (std::find(words.begin(), words.end(), word) == words.end())
+            words.push_back(word);
     }
-    if (values.empty() || text.back() == ',')
-        throw UsageError(fmt::format("{} has an empty entry (got '{}')", flag, text));
-    return values;
+    if (words.empty() || text.back() == ',')
+        throw UsageError(fmt::format("{} has an empty entry (got '{}')", setting.compareFlag, text));
+    return words;
+}
+
+/// The word a label shows for `setting`: the value's, or TAG-on / TAG-off.
+std::string labelWord(const Setting& setting, const RenderSettings& s)
+{
+    const std::string word = setting.text(s);
+    return setting.compareTag.empty() ? word : fmt::format("{}-{}", setting.compareTag, word);
 }
 } // namespace
 
+bool Strategy::operator==(const Strategy& other) const
+{
+    const auto settingsList = strategySettings();
+    return std::all_of(settingsList.begin(), settingsList.end(), [&](const Setting* s) {
+        return s->text(settings) == s->text(other.settings);
+    });
+}
+
 Strategy Strategy::of(const RenderSettings& s)
 {
-    return {s.estimator, s.lightSampler, s.lightSelection, s.sampling, s.russianRoulette};
+    Strategy x;
+    for (const Setting* setting : strategySettings())
+        setting->copy(x.settings, s);
+    return x;
 }
 
 RenderSettings Strategy::applyTo(RenderSettings base) const
 {
-    base.estimator = estimator;
-    base.lightSampler = lightSampler;
-    base.lightSelection = lightSelection;
-    base.sampling = sampling;
-    base.russianRoulette = russianRoulette;
+    for (const Setting* s : strategySettings())
+        s->copy(base, settings);
     return base;
 }
 
@@ -58,63 +75,66 @@ RenderRequest Strategy::request(RenderRequest base, int spp) const
 
 std::string Strategy::name() const
 {
-    return fmt::format("{} {} {} {} rr-{}", toString(estimator), toString(lightSampler), toString(lightSelection),
-                       toString(sampling), russianRoulette ? "on" : "off");
+    std::vector<std::string> words;
+    for (const Setting* s : strategySettings())
+        words.push_back(labelWord(*s, settings));
+    return fmt::format("{}", fmt::join(words, " "));
 }
 
 std::vector<Strategy> strategyGrid(const StrategyLists& lists, const RenderSettings& base)
 {
-    const auto estimators = parseList(lists.estimators, "--estimators", "bsdf, mixture, nee and nee-mis",
-                                      base.estimator, parseEstimator);
-    const auto samplers = parseList(lists.lightSamplers, "--light-samplers", "area, solid-angle and projected",
-                                    base.lightSampler, parseLightSampler);
-    const auto selections = parseList(lists.lightSelections, "--light-selections", "uniform, power and bvh",
-                                      base.lightSelection, parseLightSelection);
-    const auto samplings = parseList(lists.samplings, "--samplings", "random, stratified, accumulate and sobol",
-                                     base.sampling, parsePixelSampling);
-    const auto roulettes = parseList(lists.roulettes, "--roulettes", "on and off", base.russianRoulette,
-                                     [](const std::string& t) { return parseOnOff(t); });
+    const std::vector<const Setting*> varied = strategySettings();
+    for (const auto& [flag, text] : lists)
+        if (std::none_of(varied.begin(), varied.end(), [&](const Setting* s) { return s->compareFlag == flag; }))
+            throw UsageError(fmt::format("--compare varies no setting by '{}'", flag));
+    // Every combination, later settings varying fastest.
+    std::vector<RenderSettings> combinations{base};
+    std::vector<std::vector<std::string>> words;
+    for (const Setting* s : varied)
+    {
+        words.push_back(listedWords(lists, *s, base));
+        std::vector<RenderSettings> next;
+        for (const RenderSettings& c : combinations)
+            for (const std::string& word : words.back())
+            {
+                RenderSettings v = c;
+                s->assign(*s, v, word);
+                next.push_back(v);
+            }
+        combinations = std::move(next);
+    }
     std::vector<Strategy> grid;
-    for (const Estimator e : estimators)
-        for (const LightSampler ls : samplers)
-            for (const LightSelection sel : selections)
-                for (const PixelSampling sm : samplings)
-                    for (const bool rr : roulettes)
-                    {
-                        // Only NEE samples and selects lights: keep the first of the others' duplicates.
-                        const Strategy s{e, shader::usesNee(e) ? ls : samplers.front(),
-                                         shader::usesNee(e) ? sel : selections.front(), sm, rr};
-                        if (std::find(grid.begin(), grid.end(), s) == grid.end())
-                            grid.push_back(s);
-                    }
+    for (RenderSettings c : combinations)
+    {
+        // What the strategy does not use takes its list's first word: the others' duplicates go.
+        for (std::size_t i = 0; i < varied.size(); ++i)
+            if (!varied[i]->used(c))
+                varied[i]->assign(*varied[i], c, words[i].front());
+        const Strategy s = Strategy::of(c);
+        if (std::find(grid.begin(), grid.end(), s) == grid.end())
+            grid.push_back(s);
+    }
     return grid;
 }
 
 std::vector<std::string> distinctLabels(const std::vector<Strategy>& strategies)
 {
-    const auto varies = [&](auto field) {
-        return std::any_of(strategies.begin(), strategies.end(),
-                           [&](const Strategy& s) { return field(s) != field(strategies.front()); });
-    };
-    const bool estimator = varies([](const Strategy& s) { return s.estimator; });
-    const bool sampler = varies([](const Strategy& s) { return s.lightSampler; });
-    const bool selection = varies([](const Strategy& s) { return s.lightSelection; });
-    const bool sampling = varies([](const Strategy& s) { return s.sampling; });
-    const bool roulette = varies([](const Strategy& s) { return s.russianRoulette; });
+    const std::vector<const Setting*> varied = strategySettings();
+    std::vector<const Setting*> shown;
+    for (const Setting* s : varied)
+        if (std::any_of(strategies.begin(), strategies.end(), [&](const Strategy& x) {
+                return s->text(x.settings) != s->text(strategies.front().settings);
+            }))
+            shown.push_back(s);
+    if (shown.empty())
+        shown.push_back(&setting("estimator"));
     std::vector<std::string> labels;
-    for (const Strategy& s : strategies)
+    for (const Strategy& x : strategies)
     {
         std::vector<std::string> parts;
-        if (estimator || !(sampler || selection || sampling || roulette))
-            parts.emplace_back(toString(s.estimator));
-        if (sampler && shader::usesNee(s.estimator))
-            parts.emplace_back(toString(s.lightSampler));
-        if (selection && shader::usesNee(s.estimator))
-            parts.emplace_back(toString(s.lightSelection));
-        if (sampling)
-            parts.emplace_back(toString(s.sampling));
-        if (roulette)
-            parts.push_back(s.russianRoulette ? "rr-on" : "rr-off");
+        for (const Setting* s : shown)
+            if (s->used(x.settings))
+                parts.push_back(labelWord(*s, x.settings));
         labels.push_back(fmt::format("{}", fmt::join(parts, " ")));
     }
     return labels;

@@ -1,7 +1,10 @@
-// A light-sampling strategy of a comparison: the settings --compare varies beside the spp (estimator, light
-// sampler, light selection, pixel sampling, Russian roulette), the rest of a render held fixed.
+// A light-sampling strategy of a comparison: the settings --compare varies beside the spp (the settings table's
+// entries with a compareFlag: estimator, light sampler, light selection, pixel sampling, Russian roulette), the
+// rest of a render held fixed.
 #pragma once
 
+#include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -12,41 +15,31 @@ namespace rt::compare
 {
 struct Strategy
 {
-    Estimator estimator = Estimator::NeeMis;
-    LightSampler lightSampler = LightSampler::Projected;
-    LightSelection lightSelection = LightSelection::Bvh;
-    PixelSampling sampling = PixelSampling::Random;
-    bool russianRoulette = true;
+    RenderSettings settings; // only the strategy settings (strategySettings()) take part
 
-    bool operator==(const Strategy&) const = default;
+    /// The strategy settings equal.
+    bool operator==(const Strategy& other) const;
 
     static Strategy of(const RenderSettings& settings);
-    /// `base` with this strategy's fields.
+    /// `base` with this strategy's settings.
     RenderSettings applyTo(RenderSettings base) const;
-    /// `base` with this strategy's fields and `spp` samples per pixel: one render of a comparison.
+    /// `base` with this strategy's settings and `spp` samples per pixel: one render of a comparison.
     RenderRequest request(RenderRequest base, int spp) const;
-    /// "nee-mis projected bvh random rr-on": every field, space separated (the CSV's strategy column).
+    /// "nee-mis projected bvh random rr-on": every strategy setting, space separated (the CSV's strategy column).
     std::string name() const;
 };
 
-/// The lists of --estimators, --light-samplers, --light-selections, --samplings, --roulettes: comma separated
-/// names, each empty for "the base request's value".
-struct StrategyLists
-{
-    std::string estimators;
-    std::string lightSamplers;
-    std::string lightSelections;
-    std::string samplings;
-    std::string roulettes;
-};
+/// --compare's lists by flag ("--estimators" -> "bsdf,nee-mis"): comma separated words; a flag absent or empty
+/// stands for the base request's value.
+using StrategyLists = std::map<std::string, std::string, std::less<>>;
 
-/// Every combination of the lists (in list order, estimators outermost), the base's value where a list is
-/// empty. Combinations that differ only in what their estimator does not use (the light sampler and selection
-/// of bsdf, the selection of the mixture, which picks lights uniformly) are kept once. Throws UsageError naming
-/// the flag and the bad name.
+/// Every combination of the lists (in the settings table's order, estimators outermost), the base's value where a
+/// list is empty. Combinations that differ only in what their estimator does not use (the light sampler and
+/// selection of bsdf and of the mixture, which keeps book 3's) are kept once. Throws UsageError naming the flag and
+/// the bad word.
 std::vector<Strategy> strategyGrid(const StrategyLists& lists, const RenderSettings& base);
 
-/// The shortest labels that tell the strategies apart: only the fields that vary among them ("mixture",
-/// "nee-mis projected"), or the estimator's name when there is one strategy.
+/// The shortest labels that tell the strategies apart: only the settings that vary among them and that the
+/// strategy uses ("mixture", "nee-mis projected"), or the estimator's name when nothing varies.
 std::vector<std::string> distinctLabels(const std::vector<Strategy>& strategies);
 } // namespace rt::compare

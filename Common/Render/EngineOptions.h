@@ -2,10 +2,12 @@
 // knows (the CPU engine: `specialize`; the GPU engine: all of them) and ignores the others.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
-#include <string_view>
+
+#include "Render/NamedEnum.h"
 
 namespace rt
 {
@@ -17,10 +19,12 @@ enum class Specialize
     Full // the strategy and the scene's features (the default); the GPU's mixture its strategy alone (faster)
 };
 
-/// "off", "strategy", "on".
-const char* specializeName(Specialize specialize);
-/// The mode a name gives, or nothing for an unknown name.
-std::optional<Specialize> parseSpecialize(std::string_view name);
+template <>
+struct EnumNames<Specialize>
+{
+    static constexpr std::array<EnumName<Specialize>, 3> values{
+        {{Specialize::Off, "off"}, {Specialize::Strategy, "strategy"}, {Specialize::Full, "on"}}};
+};
 
 /// How the GPU engine runs the estimator (--integrator): one ray-tracing invocation per camera sample looping
 /// over its segments (megakernel), kernels per segment over waves of paths (wavefront), or by the render (auto).
@@ -31,10 +35,13 @@ enum class GpuIntegrator
     Wavefront,
 };
 
-/// --integrator's names: "auto", "megakernel", "wavefront".
-const char* integratorName(GpuIntegrator integrator);
-/// The integrator a name gives, or nothing for an unknown name.
-std::optional<GpuIntegrator> parseIntegrator(std::string_view name);
+template <>
+struct EnumNames<GpuIntegrator>
+{
+    static constexpr std::array<EnumName<GpuIntegrator>, 3> values{{{GpuIntegrator::Auto, "auto"},
+                                                                    {GpuIntegrator::Megakernel, "megakernel"},
+                                                                    {GpuIntegrator::Wavefront, "wavefront"}}};
+};
 
 struct EngineOptions
 {

@@ -1,12 +1,14 @@
 // What a render is asked to do, identical for every engine; scene defaults fill what the user leaves out.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "Render/NamedEnum.h"
 #include "Shared/HostDevice.h"
 
 namespace rt
@@ -26,6 +28,8 @@ enum class EngineKind
 /// The most samples per pixel a render takes: the GPU counts a pixel's samples in a float channel, exact up
 /// to 2^24 (scene files have the same bound).
 inline constexpr int kMaxSpp = 1 << 24;
+/// The widest and tallest image a render makes, in pixels.
+inline constexpr int kMaxImageSide = 1 << 16;
 
 struct RenderSettings
 {
@@ -49,23 +53,61 @@ struct RenderSettings
     int strata() const;
     /// Samples each pixel really gets: spp, or strata()^2 for stratified sampling.
     int trueSpp() const;
-    /// Throws UsageError naming the first bad value (spp < 1, width < 1, depth < 1, aspect <= 0, ...).
+    /// Throws UsageError naming the first value outside its range in the settings table (Render/SettingsTable.h),
+    /// or a height (width / aspect) beyond 65536.
     void validate() const;
 };
 
-const char* toString(EngineKind engine);
-const char* toString(PixelSampling sampling);
-const char* toString(Estimator estimator);
-const char* toString(LightSampler sampler);
-const char* toString(LightSelection selection);
-std::optional<EngineKind> parseEngine(const std::string& text);
-std::optional<PixelSampling> parsePixelSampling(const std::string& text);
-std::optional<Estimator> parseEstimator(const std::string& text);
-std::optional<LightSampler> parseLightSampler(const std::string& text);
-std::optional<LightSelection> parseLightSelection(const std::string& text);
+template <>
+struct EnumNames<EngineKind>
+{
+    static constexpr std::array<EnumName<EngineKind>, 3> values{
+        {{EngineKind::Single, "single"}, {EngineKind::Multi, "multi"}, {EngineKind::Gpu, "gpu"}}};
+};
 
-/// Every field, by the command line's names (spp, depth, width, aspect, sampling, estimator, light_sampler,
-/// light_selection, russian_roulette, unidirectional_light, seed): the stats JSON's "settings" and the
-/// reference cache's key.
+template <>
+struct EnumNames<PixelSampling>
+{
+    // The thesis' names ("normal", "accumulation") are accepted as aliases.
+    static constexpr std::array<EnumName<PixelSampling>, 4> values{{{PixelSampling::Random, "random", "normal"},
+                                                                    {PixelSampling::Accumulate, "accumulate", "accumulation"},
+                                                                    {PixelSampling::Stratified, "stratified"},
+                                                                    {PixelSampling::Sobol, "sobol"}}};
+};
+
+template <>
+struct EnumNames<Estimator>
+{
+    static constexpr std::array<EnumName<Estimator>, 4> values{{{Estimator::BsdfOnly, "bsdf"},
+                                                                {Estimator::Mixture, "mixture"},
+                                                                {Estimator::Nee, "nee"},
+                                                                {Estimator::NeeMis, "nee-mis"}}};
+};
+
+template <>
+struct EnumNames<LightSampler>
+{
+    static constexpr std::array<EnumName<LightSampler>, 3> values{
+        {{LightSampler::Area, "area"}, {LightSampler::SolidAngle, "solid-angle"}, {LightSampler::Projected, "projected"}}};
+};
+
+template <>
+struct EnumNames<LightSelection>
+{
+    static constexpr std::array<EnumName<LightSelection>, 3> values{
+        {{LightSelection::Uniform, "uniform"}, {LightSelection::Power, "power"}, {LightSelection::Bvh, "bvh"}}};
+};
+
+/// The pixel sampling of a progressive render (the GPU window's passes of one or a few samples): Sobol's points,
+/// indexed by the sample whatever the passes, stay; anything else becomes random jitter per pass (accumulate), as
+/// stratification needs the whole count up front.
+constexpr PixelSampling progressiveSampling(PixelSampling sampling)
+{
+    return sampling == PixelSampling::Sobol ? PixelSampling::Sobol : PixelSampling::Accumulate;
+}
+
+/// Every field by its JSON key (Render/SettingsTable.h: spp, depth, width, aspect, sampling, estimator,
+/// light_sampler, light_selection, russian_roulette, unidirectional_light, seed): the stats JSON's "settings"
+/// and the reference cache's key.
 nlohmann::json toJson(const RenderSettings& settings);
 } // namespace rt

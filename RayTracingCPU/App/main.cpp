@@ -39,7 +39,7 @@ int main(int argc, char** argv)
     return rt::guardedMain(app, argc, argv, [&] {
         if (rt::runCommonCommands(options))
             return 0;
-        const rt::EngineOptions engineOptions{.specialize = *rt::parseSpecialize(specialize)}; // checked by CLI11
+        const rt::EngineOptions engineOptions{.specialize = *rt::parseName<rt::Specialize>(specialize)}; // checked by CLI11
         if (compareFlags.compare)
             return rt::compare::runCompare(compareFlags, options, engineOptions);
         if (!options.headless)
@@ -53,7 +53,7 @@ int main(int argc, char** argv)
 #ifdef RT_WITH_GUI
         rt::gui::GuiOptions::rejectIfGiven(app);
 #endif
-        const auto engine = rt::parseEngine(engineName);
+        const auto engine = rt::parseName<rt::EngineKind>(engineName);
         if (!engine || *engine == rt::EngineKind::Gpu)
             throw rt::UsageError("--engine must be single or multi (got '" + engineName + "')");
         rt::checkOutputPaths(options);

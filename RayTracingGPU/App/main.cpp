@@ -96,14 +96,14 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
     if (settings.sampling == rt::PixelSampling::Stratified)
         spdlog::warn("the window accumulates random or Sobol samples progressively; stratified sampling is for "
                      "--headless");
-    if (settings.sampling != rt::PixelSampling::Sobol)
-        image.request.settings.sampling = rt::PixelSampling::Accumulate;
+    image.request.settings.sampling = rt::progressiveSampling(settings.sampling);
     image.camera = job.scene.camera;
     image.rayTracing = onOff(flags.rayTracing, "--raytracing");
     image.accumulate = onOff(flags.accumulate, "--accumulate");
     image.heatmap = onOff(flags.heatmap, "--heatmap");
     w.initial.display.samplesPerFrame = flags.samplesPerFrame;
-    w.initial.display.targetSpp = options.spp.value_or(0); // the scene's default spp is no reason to stop
+    // The scene's default spp is no reason to stop: only a --spp given is.
+    w.initial.display.targetSpp = options.given("spp") ? settings.spp : 0;
     w.deviceIndex = device;
     w.validation = validation;
     w.integrator = integrator;
@@ -184,11 +184,11 @@ int main(int argc, char** argv)
     return rt::guardedMain(app, argc, argv, [&] {
         if (rt::runCommonCommands(options))
             return 0;
-        const rt::EngineOptions engineOptions{.specialize = *rt::parseSpecialize(specialize), // checked by CLI11
+        const rt::EngineOptions engineOptions{.specialize = *rt::parseName<rt::Specialize>(specialize), // checked by CLI11
                                               .device = device,
                                               .validation = validation,
                                               .shaderDir = shaderDir,
-                                              .integrator = *rt::parseIntegrator(integrator), // checked by CLI11
+                                              .integrator = *rt::parseName<rt::GpuIntegrator>(integrator), // checked by CLI11
                                               .wavePaths = wavePaths};
         if (compareFlags.compare)
             return rt::compare::runCompare(compareFlags, options, engineOptions);

@@ -344,7 +344,7 @@ std::string GpuEngine::frameConfiguration() const
         return {};
     const SceneTracer& t = m_impl->tracer;
     return "pipeline " + t.pipeline().specializationFor(m_impl->uniforms, t.gpuScene().pipelineScene()).describe() +
-           ", integrator " + integratorName(m_impl->integrator);
+           ", integrator " + toString(m_impl->integrator);
 }
 
 std::map<std::string, double> GpuEngine::stageSeconds() const

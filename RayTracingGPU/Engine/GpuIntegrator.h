@@ -12,8 +12,6 @@
 namespace rt::gpu
 {
 using rt::GpuIntegrator; // --integrator (Render/EngineOptions.h, with its names)
-using rt::integratorName;
-using rt::parseIntegrator;
 
 /// Scenes with at least this many traced primitives run the wavefront under `auto`: their traversal calls
 /// many intersection shaders, each dearer in the megakernel, whose raygen keeps the path's state across it

@@ -27,7 +27,6 @@ namespace rt::gpu
 {
 /// How far pipelines are specialised (--specialize, Render/EngineOptions.h).
 using rt::Specialize;
-using rt::specializeName;
 
 struct PipelineSpecialization
 {

@@ -38,7 +38,7 @@ mixture = [p for (e, l), ps in lines.items() if l == "mixture" for p in ps]
 nee = [p for (e, l), ps in lines.items() if l == "nee-mis" for p in ps]
 assert max(nee) < min(mixture), "NEE + MIS is less noisy per sample than the mixture on this scene"
 PY
-grep -q "mixture estimator" "$work/out1.txt" && grep -q "nee-mis estimator" "$work/out1.txt" || fail "table"
+grep -q "estimator mixture" "$work/out1.txt" && grep -q "estimator nee-mis" "$work/out1.txt" || fail "table"
 
 # The same reference again: from the cache.
 "$app" "${common[@]}" --engines gpu --spp-list 4 >/dev/null 2>"$work/err2.txt"

@@ -139,7 +139,8 @@ TEST(Format, RenderSettings)
     RenderSettings s;
     s.spp = 16;
     EXPECT_EQ(fmt::format("{}", s),
-              "spp 16, depth 50, 600x600, random, nee-mis, projected light sampling, bvh light selection, Russian roulette on, unidirectional light on, seed 0");
+              "spp 16, depth 50, width 600, aspect 1, estimator nee-mis, light-sampler projected, light-selection bvh, "
+              "sampling random, russian-roulette on, unidirectional-light on, seed 0 (600x600)");
 
     s.spp = 10;
     s.depth = 8;
@@ -150,7 +151,8 @@ TEST(Format, RenderSettings)
     s.unidirectionalLight = false;
     s.seed = 7;
     EXPECT_EQ(fmt::format("{}", s),
-              "spp 10, depth 8, 400x225, stratified, bsdf, projected light sampling, bvh light selection, Russian roulette on, unidirectional light off, seed 7");
+              "spp 10, depth 8, width 400, aspect 1.7777778, estimator bsdf, light-sampler projected, light-selection "
+              "bvh, sampling stratified, russian-roulette on, unidirectional-light off, seed 7 (400x225)");
 }
 } // namespace
 } // namespace rt

@@ -77,12 +77,12 @@ TEST(EngineRegistry, MakesTheRegisteredKindsWithTheirOptionsAndKeepsTheFirstFact
 TEST(EngineOptions, NamesRoundTrip)
 {
     for (const Specialize s : {Specialize::Off, Specialize::Strategy, Specialize::Full})
-        EXPECT_EQ(parseSpecialize(specializeName(s)), s);
-    EXPECT_EQ(parseSpecialize("on"), Specialize::Full);
-    EXPECT_FALSE(parseSpecialize("full"));
+        EXPECT_EQ(parseName<Specialize>(toString(s)), s);
+    EXPECT_EQ(parseName<Specialize>("on"), Specialize::Full);
+    EXPECT_FALSE(parseName<Specialize>("full"));
     for (const GpuIntegrator i : {GpuIntegrator::Auto, GpuIntegrator::Megakernel, GpuIntegrator::Wavefront})
-        EXPECT_EQ(parseIntegrator(integratorName(i)), i);
-    EXPECT_FALSE(parseIntegrator("wave"));
+        EXPECT_EQ(parseName<GpuIntegrator>(toString(i)), i);
+    EXPECT_FALSE(parseName<GpuIntegrator>("wave"));
 }
 } // namespace
 } // namespace rt

@@ -89,11 +89,11 @@ TEST(RenderSettings, HeightRoundsWidthOverAspect)
 TEST(RenderSettings, NamesRoundTrip)
 {
     for (PixelSampling p : {PixelSampling::Random, PixelSampling::Stratified, PixelSampling::Accumulate})
-        EXPECT_EQ(parsePixelSampling(toString(p)), p);
+        EXPECT_EQ(parseName<PixelSampling>(toString(p)), p);
     for (EngineKind e : {EngineKind::Single, EngineKind::Multi, EngineKind::Gpu})
-        EXPECT_EQ(parseEngine(toString(e)), e);
-    EXPECT_FALSE(parsePixelSampling("Stratified").has_value()); // exact names only
-    EXPECT_FALSE(parseEngine("cpu").has_value());
+        EXPECT_EQ(parseName<EngineKind>(toString(e)), e);
+    EXPECT_FALSE(parseName<PixelSampling>("Stratified").has_value()); // exact names only
+    EXPECT_FALSE(parseName<EngineKind>("cpu").has_value());
 }
 
 TEST(ResolveRequest, FlagsOverrideTheScenesDefaults)
@@ -108,14 +108,14 @@ TEST(ResolveRequest, FlagsOverrideTheScenesDefaults)
     EXPECT_EQ(s.aspect, scene.defaults.aspect);
     EXPECT_EQ(s.unidirectionalLight, scene.defaults.unidirectionalLight);
 
-    options.spp = 7;
-    options.depth = 3;
-    options.width = 320;
-    options.aspect = 2.0f;
-    options.sampling = "stratified";
+    options.settings["spp"] = "7";
+    options.settings["depth"] = "3";
+    options.settings["width"] = "320";
+    options.settings["aspect"] = "2";
+    options.settings["sampling"] = "stratified";
     options.pdf = "off";
-    options.unidirectionalLight = scene.defaults.unidirectionalLight ? "off" : "on";
-    options.seed = 12;
+    options.settings["unidirectional-light"] = scene.defaults.unidirectionalLight ? "off" : "on";
+    options.settings["seed"] = "12";
     options.count = 5;
     options.mesh = "meshes/other.obj";
     const RenderRequest request = resolveRequest(options, scene);
@@ -142,12 +142,12 @@ TEST(ResolveRequest, EstimatorComesFromTheSceneUnlessNamed)
     EXPECT_EQ(resolveRequest(options, makeScene("cornell-box-lights")).settings.estimator, Estimator::NeeMis);
     EXPECT_EQ(resolveRequest(options, makeScene("rtrol-cornell-box")).settings.estimator, Estimator::Mixture);
     EXPECT_TRUE(resolveRequest(options, makeScene("rtrol-cornell-box")).settings.russianRoulette);
-    options.estimator = "nee";
-    options.russianRoulette = "off";
+    options.settings["estimator"] = "nee";
+    options.settings["russian-roulette"] = "off";
     const RenderSettings s = resolveRequest(options, makeScene("rtrol-cornell-box")).settings;
     EXPECT_EQ(s.estimator, Estimator::Nee);
     EXPECT_FALSE(s.russianRoulette);
-    options.estimator = "mixture";
+    options.settings["estimator"] = "mixture";
     options.pdf = "on"; // agrees: accepted
     EXPECT_EQ(resolveRequest(options, makeScene("cornell-box-lights")).settings.estimator, Estimator::Mixture);
 }
@@ -160,9 +160,9 @@ TEST(ResolveRequest, SamplingComesFromTheSceneUnlessNamed)
     EXPECT_EQ(resolveRequest(options, makeScene("many-lights")).settings.sampling, PixelSampling::Sobol);
     for (const char* book : {"rtow-final", "rtnw-final", "rtrol-cornell-glass"})
         EXPECT_EQ(resolveRequest(options, makeScene(book)).settings.sampling, PixelSampling::Random) << book;
-    options.sampling = "random";
+    options.settings["sampling"] = "random";
     EXPECT_EQ(resolveRequest(options, makeScene("cornell-box-lights")).settings.sampling, PixelSampling::Random);
-    options.sampling = "sobol";
+    options.settings["sampling"] = "sobol";
     EXPECT_EQ(resolveRequest(options, makeScene("rtrol-cornell-glass")).settings.sampling, PixelSampling::Sobol);
 }
 
@@ -174,18 +174,18 @@ TEST(ResolveRequest, BadFlagsAreUsageErrors)
         change(o);
         EXPECT_THROW(resolveRequest(o, scene), UsageError);
     };
-    rejects([](CommonOptions& o) { o.spp = 0; });
-    rejects([](CommonOptions& o) { o.width = -1; });
-    rejects([](CommonOptions& o) { o.aspect = 0.0f; });
-    rejects([](CommonOptions& o) { o.sampling = "jittered"; });
+    rejects([](CommonOptions& o) { o.settings["spp"] = "0"; });
+    rejects([](CommonOptions& o) { o.settings["width"] = "-1"; });
+    rejects([](CommonOptions& o) { o.settings["aspect"] = "0"; });
+    rejects([](CommonOptions& o) { o.settings["sampling"] = "jittered"; });
     rejects([](CommonOptions& o) { o.pdf = "maybe"; });
-    rejects([](CommonOptions& o) { o.estimator = "path"; });
-    rejects([](CommonOptions& o) { o.russianRoulette = "sometimes"; });
+    rejects([](CommonOptions& o) { o.settings["estimator"] = "path"; });
+    rejects([](CommonOptions& o) { o.settings["russian-roulette"] = "sometimes"; });
     rejects([](CommonOptions& o) {
-        o.estimator = "nee";
+        o.settings["estimator"] = "nee";
         o.pdf = "on";
     });
-    rejects([](CommonOptions& o) { o.unidirectionalLight = "yes please"; });
+    rejects([](CommonOptions& o) { o.settings["unidirectional-light"] = "yes please"; });
 }
 
 TEST(RenderStats, JsonReportsWhatWasRendered)

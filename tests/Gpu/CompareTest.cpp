@@ -51,19 +51,19 @@ TEST(StrategyGrid, EmptyListsGiveTheBaseSettings)
 TEST(StrategyGrid, CombinesListsAndKeepsOneOfWhatAnEstimatorIgnores)
 {
     // The mixture and bsdf neither select nor sample lights: two samplers give them one strategy each.
-    const auto grid = strategyGrid({.estimators = "bsdf,mixture,nee-mis", .lightSamplers = "area,projected"}, {});
+    const auto grid = strategyGrid({{"--estimators", "bsdf,mixture,nee-mis"}, {"--light-samplers", "area,projected"}}, {});
     ASSERT_EQ(grid.size(), 4u);
-    EXPECT_EQ(grid[0].estimator, Estimator::BsdfOnly);
-    EXPECT_EQ(grid[1].estimator, Estimator::Mixture);
-    EXPECT_EQ(grid[2].lightSampler, LightSampler::Area);
-    EXPECT_EQ(grid[3].lightSampler, LightSampler::Projected);
+    EXPECT_EQ(grid[0].settings.estimator, Estimator::BsdfOnly);
+    EXPECT_EQ(grid[1].settings.estimator, Estimator::Mixture);
+    EXPECT_EQ(grid[2].settings.lightSampler, LightSampler::Area);
+    EXPECT_EQ(grid[3].settings.lightSampler, LightSampler::Projected);
     EXPECT_EQ(distinctLabels(grid),
               (std::vector<std::string>{"bsdf", "mixture", "nee-mis area", "nee-mis projected"}));
 }
 
 TEST(StrategyGrid, RouletteAndSamplingListsMultiply)
 {
-    const auto grid = strategyGrid({.samplings = "random,sobol", .roulettes = "on,off"}, {});
+    const auto grid = strategyGrid({{"--samplings", "random,sobol"}, {"--roulettes", "on,off"}}, {});
     ASSERT_EQ(grid.size(), 4u);
     EXPECT_EQ(distinctLabels(grid),
               (std::vector<std::string>{"random rr-on", "random rr-off", "sobol rr-on", "sobol rr-off"}));
@@ -74,7 +74,7 @@ TEST(StrategyGrid, BadNamesAreUsageErrorsNamingTheFlag)
 {
     try
     {
-        strategyGrid({.lightSelections = "bvh,nearest"}, {});
+        strategyGrid({{"--light-selections", "bvh,nearest"}}, {});
         FAIL() << "no error";
     }
     catch (const UsageError& e)
@@ -82,8 +82,8 @@ TEST(StrategyGrid, BadNamesAreUsageErrorsNamingTheFlag)
         EXPECT_NE(std::string(e.what()).find("--light-selections"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("nearest"), std::string::npos) << e.what();
     }
-    EXPECT_THROW(strategyGrid({.estimators = "mixture,"}, {}), UsageError);
-    EXPECT_THROW(strategyGrid({.roulettes = "yes"}, {}), UsageError);
+    EXPECT_THROW(strategyGrid({{"--estimators", "mixture,"}}, {}), UsageError);
+    EXPECT_THROW(strategyGrid({{"--roulettes", "yes"}}, {}), UsageError);
 }
 
 TEST(ReferenceCache, FindsOnlyTheReferenceOfTheSameSceneSettingsAndEngine)

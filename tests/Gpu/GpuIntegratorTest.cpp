@@ -24,9 +24,9 @@ shader::RenderUniforms render(Estimator estimator, std::uint32_t lights, std::ui
 TEST(IntegratorName, NamesRoundTrip)
 {
     for (const GpuIntegrator i : {GpuIntegrator::Auto, GpuIntegrator::Megakernel, GpuIntegrator::Wavefront})
-        EXPECT_EQ(parseIntegrator(integratorName(i)), i);
-    EXPECT_FALSE(parseIntegrator("wave"));
-    EXPECT_FALSE(parseIntegrator(""));
+        EXPECT_EQ(parseName<GpuIntegrator>(toString(i)), i);
+    EXPECT_FALSE(parseName<GpuIntegrator>("wave"));
+    EXPECT_FALSE(parseName<GpuIntegrator>(""));
 }
 
 TEST(IntegratorChoice, AnExplicitChoiceStands)

@@ -51,7 +51,7 @@ GpuIntegrator suiteIntegrator()
     const char* name = std::getenv("RT_GPU_INTEGRATOR");
     if (!name || !*name)
         return GpuIntegrator::Auto;
-    if (const auto integrator = parseIntegrator(name))
+    if (const auto integrator = parseName<GpuIntegrator>(name))
         return *integrator;
     throw UsageError(std::string("RT_GPU_INTEGRATOR must be megakernel or wavefront (got '") + name + "')");
 }

@@ -13,35 +13,21 @@ namespace rt::gui
 {
 namespace
 {
-std::optional<PixelSampling> sampling(const std::string& text)
-{
-    if (text == "normal" || text == "random")
-        return PixelSampling::Random;
-    if (text == "accumulation" || text == "accumulate")
-        return PixelSampling::Accumulate;
-    if (text == "stratified")
-        return PixelSampling::Stratified;
-    if (text == "sobol")
-        return PixelSampling::Sobol;
-    return std::nullopt;
-}
-
 /// The window's actions: the shared ones (Cli/ActionGrammar.h), then this window's own.
 const std::vector<ActionSpec>& specs()
 {
     static const std::vector<ActionSpec> all = joinActionSpecs(
         sharedActionSpecs("samples per pixel of the render", 1),
         {
-            {"width", ActionValue::Integer, "N", "image width in pixels", 1},
-            {"aspect", ActionValue::Real, "A", "aspect ratio width / height", 1e-6},
-            {"seed", ActionValue::Integer, "N", "seed of the random streams", 0, 4294967295.0},
+            settingActionSpec(setting("width")),
+            settingActionSpec(setting("aspect")),
+            settingActionSpec(setting("seed")),
             {"count", ActionValue::Integer, "N", "white-spheres' sphere count (-1: the scene's)", -1},
-            {"sampling", ActionValue::Text, "random|accumulate|stratified|sobol", "pixel sampling (the thesis' normal and accumulation too)",
-             0, 1e30, [](const std::string& v) { return sampling(v).has_value(); }},
+            settingActionSpec(setting("sampling")),
             {"loop", ActionValue::OnOff, "on|off", "loop rendering: render again with the next seed and average"},
             {"engine", ActionValue::Text, "single|multi|gpu",
              "rendering engine (gpu waits for the GPU engine to start; unavailable: a warning)", 0, 1e30,
-             [](const std::string& v) { return parseEngine(v).has_value(); }},
+             [](const std::string& v) { return parseName<EngineKind>(v).has_value(); }},
             {"render", ActionValue::None, "", "start a render with the panel's settings"},
             {"cancel", ActionValue::None, "", "cancel the render"},
             {"defaults", ActionValue::None, "", "the scene's own spp, depth, width, aspect and light mode"},
@@ -91,53 +77,15 @@ bool ActionScript::run(const Action& a, Session& session, GlWindow& window)
         session.setFresnel(model);
         return true;
     }
-    if (a.name == "spp")
-        return check(session.setSpp(int(a.integer())));
-    if (a.name == "depth")
-        return check(session.setDepth(int(a.integer())));
-    if (a.name == "width")
-        return check(session.setWidth(int(a.integer())));
-    if (a.name == "aspect")
-        return check(session.setAspect(a.real()));
-    if (a.name == "seed")
-        return check(session.setSeed(a.integer()));
     if (a.name == "count")
         return check(session.setCount(int(a.integer())));
-    if (a.name == "sampling")
-    {
-        session.setSampling(*sampling(v));
-        return true;
-    }
-    if (a.name == "estimator")
-    {
-        session.setEstimator(*parseEstimator(v));
-        return true;
-    }
     if (a.name == "pdf")
     {
-        session.setEstimator(a.on() ? Estimator::Mixture : Estimator::BsdfOnly);
+        session.setPdf(a.on());
         return true;
     }
-    if (a.name == "light-sampler")
-    {
-        session.setLightSampler(*parseLightSampler(v));
-        return true;
-    }
-    if (a.name == "light-selection")
-    {
-        session.setLightSelection(*parseLightSelection(v));
-        return true;
-    }
-    if (a.name == "russian-roulette")
-    {
-        session.setRussianRoulette(a.on());
-        return true;
-    }
-    if (a.name == "unidirectional-light")
-    {
-        session.setUnidirectionalLight(a.on());
-        return true;
-    }
+    if (const Setting* setting = findSetting(a.name))
+        return check(session.setSetting(*setting, v));
     if (a.name == "loop")
     {
         session.setLoop(a.on());
@@ -145,7 +93,7 @@ bool ActionScript::run(const Action& a, Session& session, GlWindow& window)
     }
     if (a.name == "engine")
     {
-        const EngineKind engine = *parseEngine(v);
+        const EngineKind engine = *parseName<EngineKind>(v);
         // The GPU radio button says "starting..." until the engine is up; a script waits for the answer.
         if (engine == EngineKind::Gpu && session.gpu().state == GpuStartup::State::Starting)
             return false;

@@ -36,7 +36,7 @@ std::string describe(const Preview& p)
     return fmt::format("{}  |  {}x{}  |  {} spp{}  |  depth {}  |  {}{}  |  {}  |  {}", p.request.image.scene.id,
                        r.width, r.height(), p.samples,
                        p.request.loop || p.samples == r.trueSpp() ? "" : fmt::format(" of {}", r.trueSpp()), r.depth,
-                       toString(r.estimator), r.russianRoulette ? "" : ", no roulette", samplingLabel(r.sampling),
+                       toString(r.estimator), r.russianRoulette ? "" : ", no roulette", toString(r.sampling),
                        engineLabel(p.request.engine));
 }
 
@@ -213,7 +213,7 @@ private:
 
 int runGui(const CommonOptions& options, const std::string& engineName, const GuiOptions& gui)
 {
-    const auto engine = parseEngine(engineName);
+    const auto engine = parseName<EngineKind>(engineName);
     if (!engine)
         throw UsageError("--engine must be single, multi or gpu (got '" + engineName + "')");
     for (const auto& [flag, value] : {std::pair{"--output", &options.output}, {"--hdr", &options.hdr}, {"--stats", &options.stats}})

@@ -12,16 +12,4 @@ const char* engineLabel(EngineKind engine)
     }
     return "?";
 }
-
-const char* samplingLabel(PixelSampling sampling)
-{
-    switch (sampling)
-    {
-    case PixelSampling::Random: return "random";
-    case PixelSampling::Accumulate: return "accumulate";
-    case PixelSampling::Stratified: return "stratified";
-    case PixelSampling::Sobol: return "sobol";
-    }
-    return "?";
-}
 } // namespace rt::gui

@@ -21,7 +21,4 @@ struct DisplaySettings
 
 /// "single core", "multi core", "GPU": the engine names the panel and the timings table show.
 const char* engineLabel(EngineKind engine);
-/// The panel's names of the pixel sampling types: the command line's (--sampling), so that one word means one
-/// thing everywhere; the tooltip gives the thesis' names ("normal", "accumulation").
-const char* samplingLabel(PixelSampling sampling);
 } // namespace rt::gui

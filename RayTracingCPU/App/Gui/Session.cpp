@@ -98,43 +98,14 @@ bool Session::setScene(const std::string& idOrPath)
 
 void Session::setFresnel(std::optional<shader::FresnelModel> fresnel) { m_image.scene.options.fresnel = fresnel; }
 
-bool Session::setSpp(int spp)
+bool Session::setSetting(const Setting& setting, std::string_view value)
 {
     RenderRequest s = m_image;
-    s.settings.spp = spp;
-    return tryImage(s);
-}
-
-bool Session::setDepth(int depth)
-{
-    RenderRequest s = m_image;
-    s.settings.depth = depth;
-    return tryImage(s);
-}
-
-bool Session::setWidth(int width)
-{
-    RenderRequest s = m_image;
-    s.settings.width = width;
-    return tryImage(s);
-}
-
-bool Session::setAspect(float aspect)
-{
-    RenderRequest s = m_image;
-    s.settings.aspect = aspect;
-    return tryImage(s);
-}
-
-bool Session::setSeed(long long seed)
-{
-    if (seed < 0 || seed > 0xFFFFFFFFll)
+    if (!setting.assign(setting, s.settings, value))
     {
-        note(fmt::format("seed must be in [0, 4294967295] (got {})", seed), true);
+        note(setting.refusal(value), true);
         return false;
     }
-    RenderRequest s = m_image;
-    s.settings.seed = static_cast<std::uint32_t>(seed);
     return tryImage(s);
 }
 
@@ -145,12 +116,7 @@ bool Session::setCount(int count)
     return tryImage(s);
 }
 
-void Session::setSampling(PixelSampling sampling) { m_image.settings.sampling = sampling; }
-void Session::setEstimator(Estimator estimator) { m_image.settings.estimator = estimator; }
-void Session::setRussianRoulette(bool on) { m_image.settings.russianRoulette = on; }
-void Session::setLightSampler(LightSampler sampler) { m_image.settings.lightSampler = sampler; }
-void Session::setLightSelection(LightSelection selection) { m_image.settings.lightSelection = selection; }
-void Session::setUnidirectionalLight(bool on) { m_image.settings.unidirectionalLight = on; }
+void Session::setPdf(bool on) { m_image.settings.estimator = on ? Estimator::Mixture : Estimator::BsdfOnly; }
 
 bool Session::applySceneDefaults()
 {

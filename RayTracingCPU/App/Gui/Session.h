@@ -8,12 +8,14 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
 #include "App/Gui/PanelSettings.h"
 #include "App/Gui/RenderJob.h"
 #include "App/Gui/TimingsTable.h"
+#include "Render/SettingsTable.h"
 #include "SceneFile/SceneFileWatch.h"
 
 namespace rt::gui
@@ -37,21 +39,14 @@ public:
     /// A catalogue id or an existing scene file (.json, .gltf, .glb), which update() then reloads whenever
     /// it changes on disk; the image on screen stays when the new version fails to load.
     bool setScene(const std::string& idOrPath);
-    bool setSpp(int spp);
-    bool setDepth(int depth);
-    bool setWidth(int width);
-    bool setAspect(float aspect);
-    bool setSeed(long long seed);
+    /// A render setting (Render/SettingsTable.h) from its word or number, as the command line takes it.
+    bool setSetting(const Setting& setting, std::string_view value);
     /// white-spheres' sphere count; negative: the scene's default.
     bool setCount(int count);
     /// Every dielectric's Fresnel model; empty: each material's own (--fresnel).
     void setFresnel(std::optional<shader::FresnelModel> fresnel);
-    void setSampling(PixelSampling sampling);
-    void setEstimator(Estimator estimator);
-    void setRussianRoulette(bool on);
-    void setLightSampler(LightSampler sampler);
-    void setLightSelection(LightSelection selection);
-    void setUnidirectionalLight(bool on);
+    /// The books' name for two estimators: on = mixture, off = bsdf (--pdf).
+    void setPdf(bool on);
     /// The selected scene's own spp, depth, width, aspect and light mode; false until the scene was built once.
     bool applySceneDefaults();
 

@@ -9,6 +9,7 @@
 
 #include "App/Gui/Theme.h"
 #include "Cli/ActionGrammar.h"
+#include "Gui/SettingWidget.h"
 #include "Scenes/Catalogue.h"
 
 namespace rt::gui
@@ -19,16 +20,14 @@ namespace
 // keystroke of "1000" would be three wasted ones.
 constexpr ImGuiInputTextFlags kApplyOnEnter = ImGuiInputTextFlags_EnterReturnsTrue;
 
-void tooltip(const char* text)
+void tooltip(const char* text) { itemTooltip(text); }
+
+/// An integer setting's field, applied on Enter.
+void integerField(Session& session, const Setting& setting, int value, int step, int fastStep)
 {
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-    {
-        ImGui::BeginTooltip();
-        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
-        ImGui::TextUnformatted(text);
-        ImGui::PopTextWrapPos();
-        ImGui::EndTooltip();
-    }
+    if (ImGui::InputInt(std::string(setting.label).c_str(), &value, step, fastStep, kApplyOnEnter))
+        session.setSetting(setting, std::to_string(value));
+    tooltip(std::string(setting.tooltip).c_str());
 }
 
 /// Fields as wide as the panel allows with their labels still whole on their right.
@@ -109,26 +108,20 @@ void SettingsPanel::drawRenderingParameters(Session& session)
         tooltip(current->source.c_str());
     }
 
-    int spp = s.spp;
-    if (ImGui::InputInt("Samples per pixel", &spp, 1, 10, kApplyOnEnter))
-        session.setSpp(spp);
+    integerField(session, setting("spp"), s.spp, 1, 10);
     if (const int trueSpp = s.trueSpp(); trueSpp != s.spp)
         ImGui::TextDisabled("stratified: a square number of strata, %d true spp", trueSpp);
-    int depth = s.depth;
-    if (ImGui::InputInt("Ray-tracing depth", &depth, 1, 10, kApplyOnEnter))
-        session.setDepth(depth);
+    integerField(session, setting("depth"), s.depth, 1, 10);
     float aspect = s.aspect;
     if (ImGui::InputFloat("Aspect ratio", &aspect, 0.0f, 0.0f, "%.4f", kApplyOnEnter))
-        session.setAspect(aspect);
-    int width = s.width;
-    if (ImGui::InputInt("Image width", &width, 16, 128, kApplyOnEnter))
-        session.setWidth(width);
+        session.setSetting(setting("aspect"), fmt::format("{}", aspect));
+    integerField(session, setting("width"), s.width, 16, 128);
     ImGui::TextDisabled("%d x %d pixels", s.width, s.height());
     for (const auto& [label, value] : {std::pair{"1:1", 1.0f}, {"4:3", 4.0f / 3.0f}, {"16:9", 16.0f / 9.0f}})
     {
         ImGui::SameLine();
         if (ImGui::SmallButton(label))
-            session.setAspect(value);
+            session.setSetting(setting("aspect"), fmt::format("{}", value));
     }
     if (request.scene.id == "white-spheres" || request.scene.id == "many-lights")
     {
@@ -154,54 +147,10 @@ void SettingsPanel::drawRenderingParameters(Session& session)
 
     drawEngineChoice(session);
 
-    const PixelSampling samplings[] = {PixelSampling::Random, PixelSampling::Accumulate, PixelSampling::Stratified,
-                                       PixelSampling::Sobol};
-    if (ImGui::BeginCombo("Pixel sampling", samplingLabel(s.sampling)))
-    {
-        for (PixelSampling p : samplings)
-            if (ImGui::Selectable(samplingLabel(p), p == s.sampling))
-                session.setSampling(p);
-        ImGui::EndCombo();
-    }
-    tooltip("random (the thesis' \"normal\"): spp jittered samples per pixel in one pass; accumulate (the thesis' "
-            "\"accumulation\"): 1-spp passes shown as they finish; stratified: floor(sqrt(spp))^2 jittered strata; "
-            "sobol: Owen-scrambled Sobol points");
-    if (ImGui::BeginCombo("Estimator", toString(s.estimator)))
-    {
-        for (Estimator e : {Estimator::BsdfOnly, Estimator::Mixture, Estimator::Nee, Estimator::NeeMis})
-            if (ImGui::Selectable(toString(e), e == s.estimator))
-                session.setEstimator(e);
-        ImGui::EndCombo();
-    }
-    tooltip("bsdf: BSDF sampling only (books 1 and 2); mixture: book 3's mix of BSDF and light directions, no "
-            "shadow rays; nee: a shadow ray to one light per diffuse vertex; nee-mis: NEE and BSDF rays "
-            "weighted by the power heuristic");
-    if (ImGui::BeginCombo("Light sampler", toString(s.lightSampler)))
-    {
-        for (LightSampler l : {LightSampler::Area, LightSampler::SolidAngle, LightSampler::Projected})
-            if (ImGui::Selectable(toString(l), l == s.lightSampler))
-                session.setLightSampler(l);
-        ImGui::EndCombo();
-    }
-    tooltip("how nee and nee-mis pick a point on a light: area: uniform over its surface; solid-angle: uniform "
-            "over the directions it covers (sphere cones, spherical rectangles)");
-    if (ImGui::BeginCombo("Light selection", toString(s.lightSelection)))
-    {
-        for (LightSelection l : {LightSelection::Uniform, LightSelection::Power, LightSelection::Bvh})
-            if (ImGui::Selectable(toString(l), l == s.lightSelection))
-                session.setLightSelection(l);
-        ImGui::EndCombo();
-    }
-    tooltip("which light nee and nee-mis sample: uniform (each 1/N) or in proportion to its power");
-    bool roulette = s.russianRoulette;
-    if (ImGui::Checkbox("Russian roulette", &roulette))
-        session.setRussianRoulette(roulette);
-    tooltip("on: from the third segment, paths of low throughput end at random and survivors are scaled up "
-            "(unbiased); off: paths run to the depth");
-    bool unidirectional = s.unidirectionalLight;
-    if (ImGui::Checkbox("Unidirectional light", &unidirectional))
-        session.setUnidirectionalLight(unidirectional);
-    tooltip("on: emitters emit from their front face only; off: from both faces");
+    // The choices and switches of the settings table, as the command line lists them.
+    for (const Setting& setting : settingsTable())
+        if (const auto picked = settingWidget(setting, s))
+            session.setSetting(setting, *picked);
     bool loop = session.loop();
     if (ImGui::Checkbox("Loop rendering", &loop))
         session.setLoop(loop);
@@ -209,7 +158,7 @@ void SettingsPanel::drawRenderingParameters(Session& session)
     std::uint32_t seed = s.seed;
     const std::uint32_t step = 1;
     if (ImGui::InputScalar("Seed", ImGuiDataType_U32, &seed, &step, nullptr, "%u", kApplyOnEnter))
-        session.setSeed(seed);
+        session.setSetting(setting("seed"), std::to_string(seed));
 }
 
 void SettingsPanel::drawEngineChoice(Session& session)

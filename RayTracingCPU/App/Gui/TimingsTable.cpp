@@ -4,20 +4,26 @@
 
 namespace rt::gui
 {
+TimingKey TimingKey::of(const RenderRequest& request)
+{
+    TimingKey key{.scene = request.scene, .settings = request.settings};
+    key.settings.spp = request.settings.trueSpp();
+    key.settings.seed = 0;
+    return key;
+}
+
+std::vector<const Setting*> timingColumns()
+{
+    std::vector<const Setting*> out;
+    for (const Setting& s : settingsTable())
+        if (s.name != "width" && s.name != "aspect" && s.name != "seed")
+            out.push_back(&s);
+    return out;
+}
+
 void TimingsTable::record(const RenderStats& stats, const WindowRedraws& redraws)
 {
-    const RenderSettings& s = stats.request.settings;
-    const TimingKey key{.scene = stats.request.scene,
-                        .width = stats.width,
-                        .height = stats.height,
-                        .spp = stats.trueSpp,
-                        .depth = s.depth,
-                        .sampling = s.sampling,
-                        .estimator = s.estimator,
-                        .lightSampler = s.lightSampler,
-                        .lightSelection = s.lightSelection,
-                        .russianRoulette = s.russianRoulette,
-                        .unidirectionalLight = s.unidirectionalLight};
+    const TimingKey key = TimingKey::of(stats.request);
     auto row = std::find_if(m_rows.begin(), m_rows.end(), [&](const TimingRow& r) { return r.key == key; });
     if (row == m_rows.end())
         row = m_rows.insert(m_rows.end(), TimingRow{.key = key});
@@ -41,27 +47,23 @@ nlohmann::json TimingsTable::toJson() const
     for (const TimingRow& row : m_rows)
         for (std::size_t e = 0; e < row.engines.size(); ++e)
             if (const auto& cell = row.engines[e])
-                out.push_back({{"scene", row.key.scene.id},
-                               {"count", row.key.scene.options.count},
-                               {"mesh", row.key.scene.options.meshPath},
-                               {"width", row.key.width},
-                               {"height", row.key.height},
-                               {"spp", row.key.spp},
-                               {"depth", row.key.depth},
-                               {"sampling", toString(row.key.sampling)},
-                               {"estimator", toString(row.key.estimator)},
-                               {"light_sampler", toString(row.key.lightSampler)},
-                               {"light_selection", toString(row.key.lightSelection)},
-                               {"russian_roulette", row.key.russianRoulette},
-                               {"unidirectional_light", row.key.unidirectionalLight},
-                               {"engine", toString(EngineKind(e))},
-                               {"seconds", cell->lastSeconds},
-                               {"best_seconds", cell->bestSeconds},
-                               {"mpaths_per_second", cell->mpathsPerSecond},
-                               {"renders", cell->renders},
-                               {"device", cell->device},
-                               {"window_redraws", cell->redraws.total},
-                               {"window_redraws_on_input", cell->redraws.onInput}});
+            {
+                nlohmann::json entry = rt::toJson(row.key.settings);
+                entry.erase("seed");
+                entry.update(nlohmann::json{{"scene", row.key.scene.id},
+                                            {"count", row.key.scene.options.count},
+                                            {"mesh", row.key.scene.options.meshPath},
+                                            {"height", row.key.settings.height()},
+                                            {"engine", toString(EngineKind(e))},
+                                            {"seconds", cell->lastSeconds},
+                                            {"best_seconds", cell->bestSeconds},
+                                            {"mpaths_per_second", cell->mpathsPerSecond},
+                                            {"renders", cell->renders},
+                                            {"device", cell->device},
+                                            {"window_redraws", cell->redraws.total},
+                                            {"window_redraws_on_input", cell->redraws.onInput}});
+                out.push_back(std::move(entry));
+            }
     return out;
 }
 } // namespace rt::gui

@@ -17,27 +17,24 @@
 #include "App/Gui/PanelSettings.h"
 #include "Render/RenderRequest.h"
 #include "Render/RenderStats.h"
+#include "Render/SettingsTable.h"
 
 namespace rt::gui
 {
-/// A render's request but its seed (loop rendering's iterations differ by seed only) and spp (the true spp
-/// counts: stratified sampling rounds down).
+/// A render's request but its seed (loop rendering's iterations differ by seed only) and with its true spp
+/// (stratified sampling rounds down): the same key is the same work.
 struct TimingKey
 {
     SceneRef scene;
-    int width = 0;
-    int height = 0;
-    int spp = 0; // true samples per pixel
-    int depth = 0;
-    PixelSampling sampling = PixelSampling::Random;
-    Estimator estimator = Estimator::NeeMis;
-    LightSampler lightSampler = LightSampler::Projected;
-    LightSelection lightSelection = LightSelection::Bvh;
-    bool russianRoulette = true;
-    bool unidirectionalLight = true;
+    RenderSettings settings;
 
+    static TimingKey of(const RenderRequest& request);
     bool operator==(const TimingKey&) const = default;
 };
+
+/// The settings a timings row shows in its own column, in the settings table's order: every one but the size
+/// (shown as WxH) and the seed (not part of the key).
+std::vector<const Setting*> timingColumns();
 
 struct EngineTiming
 {

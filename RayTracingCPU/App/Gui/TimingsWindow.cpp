@@ -34,16 +34,16 @@ bool drawTimings(Session& session)
     // Every column follows its widest cell as timings arrive; a pane too narrow scrolls rather than clips.
     const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollX |
                                   ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
-    if (!ImGui::BeginTable("timings", 10, flags))
+    const std::vector<const Setting*> columns = timingColumns();
+    // Scene, size, the settings, one per engine, the ratio.
+    if (!ImGui::BeginTable("timings", int(2 + columns.size() + std::size(kEngines) + 1), flags))
         return table.rows().empty();
     bool latestVisible = table.rows().empty();
     ImGui::TableSetupScrollFreeze(1, 1);
     ImGui::TableSetupColumn("Scene");
     ImGui::TableSetupColumn("Size");
-    ImGui::TableSetupColumn("spp");
-    ImGui::TableSetupColumn("Depth");
-    ImGui::TableSetupColumn("Estimator");
-    ImGui::TableSetupColumn("Sampling");
+    for (const Setting* setting : columns)
+        ImGui::TableSetupColumn(std::string(setting->label).c_str());
     for (EngineKind e : kEngines)
         ImGui::TableSetupColumn(engineLabel(e));
     ImGui::TableSetupColumn("vs single core");
@@ -61,15 +61,12 @@ bool drawTimings(Session& session)
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(row.key.scene.id.c_str());
         ImGui::TableNextColumn();
-        ImGui::Text("%dx%d", row.key.width, row.key.height);
-        ImGui::TableNextColumn();
-        ImGui::Text("%d", row.key.spp);
-        ImGui::TableNextColumn();
-        ImGui::Text("%d", row.key.depth);
-        ImGui::TableNextColumn();
-        ImGui::Text("%s%s", toString(row.key.estimator), row.key.russianRoulette ? "" : ", no RR");
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(samplingLabel(row.key.sampling));
+        ImGui::Text("%dx%d", row.key.settings.width, row.key.settings.height());
+        for (const Setting* setting : columns)
+        {
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(setting->text(row.key.settings).c_str());
+        }
 
         std::size_t best = row.engines.size();
         for (std::size_t e = 0; e < row.engines.size(); ++e)

@@ -97,20 +97,12 @@ bool applyAction(const Action& a, Controls& c)
         c.setTargetSpp(int(a.integer()));
     else if (n == "depth")
         c.setDepth(int(a.integer()));
-    else if (n == "estimator")
-        c.setEstimator(*parseEstimator(a.value));
     else if (n == "pdf")
-        c.setEstimator(a.on() ? Estimator::Mixture : Estimator::BsdfOnly);
-    else if (n == "light-sampler")
-        c.setLightSampler(*parseLightSampler(a.value));
-    else if (n == "light-selection")
-        c.setLightSelection(*parseLightSelection(a.value));
-    else if (n == "russian-roulette")
-        c.setRussianRoulette(a.on());
+        c.setPdf(a.on());
     else if (n == "sobol")
         c.setSobol(a.on());
-    else if (n == "unidirectional-light")
-        c.setUnidirectionalLight(a.on());
+    else if (const Setting* setting = findSetting(n))
+        c.setSetting(*setting, a.value);
     else if (n == "resize")
         c.resize({a.size().first, a.size().second});
     else if (n == "save")

@@ -73,18 +73,26 @@ void Controls::setDepth(int depth)
 {
     m_state->image.request.settings.depth = held(*m_state, "depth", depth, 1, std::numeric_limits<int>::max(), "");
 }
-void Controls::setEstimator(Estimator estimator) { m_state->image.request.settings.estimator = estimator; }
-void Controls::setRussianRoulette(bool on) { m_state->image.request.settings.russianRoulette = on; }
-void Controls::setLightSampler(LightSampler sampler) { m_state->image.request.settings.lightSampler = sampler; }
-void Controls::setLightSelection(LightSelection selection)
+bool Controls::setSetting(const Setting& setting, std::string_view value)
 {
-    m_state->image.request.settings.lightSelection = selection;
+    RenderSettings changed = m_state->image.request.settings;
+    if (!setting.assign(setting, changed, value))
+    {
+        m_state->message = setting.refusal(value);
+        spdlog::warn("{}", m_state->message);
+        return false;
+    }
+    m_state->image.request.settings = changed;
+    return true;
+}
+void Controls::setPdf(bool on)
+{
+    m_state->image.request.settings.estimator = on ? Estimator::Mixture : Estimator::BsdfOnly;
 }
 void Controls::setSobol(bool on)
 {
     m_state->image.request.settings.sampling = on ? PixelSampling::Sobol : PixelSampling::Accumulate;
 }
-void Controls::setUnidirectionalLight(bool on) { m_state->image.request.settings.unidirectionalLight = on; }
 void Controls::setFov(float degrees) { m_state->image.camera = withFov(m_state->image.camera, degrees); }
 void Controls::setAperture(float diameter) { m_state->image.camera = withAperture(m_state->image.camera, diameter); }
 

@@ -7,8 +7,10 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "App/Gui/WindowState.h"
+#include "Render/SettingsTable.h"
 #include "Math/Math.h"
 
 namespace rt::gpu::gui
@@ -36,13 +38,13 @@ public:
     void setSamplesPerFrame(int samples);
     void setTargetSpp(int spp); // 0: never stop
     void setDepth(int depth);
-    void setEstimator(Estimator estimator);
-    void setRussianRoulette(bool on);
-    void setLightSampler(LightSampler sampler);
-    void setLightSelection(LightSelection selection);
+    /// A render setting (Render/SettingsTable.h) from its word or number, as the command line takes it; false,
+    /// with WindowState::message, for a value the table refuses.
+    bool setSetting(const Setting& setting, std::string_view value);
+    /// The books' name for two estimators: on = mixture, off = bsdf (--pdf).
+    void setPdf(bool on);
     /// Owen-scrambled Sobol pixel samples (on) or random jitter per pass (off).
     void setSobol(bool on);
-    void setUnidirectionalLight(bool on);
     float fov() const { return m_state->image.camera.vfovDegrees; }
     void setFov(float degrees);
     void setAperture(float diameter);

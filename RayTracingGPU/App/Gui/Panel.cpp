@@ -9,6 +9,7 @@
 
 #include "App/Gui/CameraController.h"
 #include "Cli/ActionGrammar.h"
+#include "Gui/SettingWidget.h"
 #include "Error.h"
 #include "Image/ImageIO.h"
 #include "Scenes/Catalogue.h"
@@ -92,42 +93,17 @@ void rayTracingSection(Controls& controls, const WindowState& state)
         ImGui::SetTooltip("Tracing stops at this many samples per pixel; 0: never");
     if (int depth = image.request.settings.depth; ImGui::SliderInt("Depth", &depth, 1, 100))
         controls.setDepth(depth);
-    const Estimator estimator = image.request.settings.estimator;
-    if (ImGui::BeginCombo("Estimator", toString(estimator)))
-    {
-        for (Estimator e : {Estimator::BsdfOnly, Estimator::Mixture, Estimator::Nee, Estimator::NeeMis})
-            if (ImGui::Selectable(toString(e), e == estimator))
-                controls.setEstimator(e);
-        ImGui::EndCombo();
-    }
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("bsdf: BSDF sampling only; mixture: book 3's mix, no shadow rays; nee: a shadow ray to one "
-                          "light per diffuse vertex; nee-mis: NEE and BSDF rays by the power heuristic");
-    const LightSampler lightSampler = image.request.settings.lightSampler;
-    if (ImGui::BeginCombo("Light sampler", toString(lightSampler)))
-    {
-        for (LightSampler l : {LightSampler::Area, LightSampler::SolidAngle, LightSampler::Projected})
-            if (ImGui::Selectable(toString(l), l == lightSampler))
-                controls.setLightSampler(l);
-        ImGui::EndCombo();
-    }
-    const LightSelection lightSelection = image.request.settings.lightSelection;
-    if (ImGui::BeginCombo("Light selection", toString(lightSelection)))
-    {
-        for (LightSelection l : {LightSelection::Uniform, LightSelection::Power, LightSelection::Bvh})
-            if (ImGui::Selectable(toString(l), l == lightSelection))
-                controls.setLightSelection(l);
-        ImGui::EndCombo();
-    }
+    // The choices and switches of the settings table but the pixel sampling (the window accumulates random or
+    // Sobol samples: the checkbox below).
+    for (const Setting& setting : settingsTable())
+        if (setting.name != "sampling")
+            if (const auto picked = rt::gui::settingWidget(setting, image.request.settings))
+                controls.setSetting(setting, *picked);
     if (bool on = image.request.settings.sampling == PixelSampling::Sobol; ImGui::Checkbox("Sobol samples", &on))
         controls.setSobol(on);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Every 2D draw of a sample (pixel, light point, BSDF direction) an Owen-scrambled Sobol "
                           "point over the pixel's samples (Burley 2020); off: independent random numbers");
-    if (bool on = image.request.settings.russianRoulette; ImGui::Checkbox("Russian roulette", &on))
-        controls.setRussianRoulette(on);
-    if (bool on = image.request.settings.unidirectionalLight; ImGui::Checkbox("Unidirectional light", &on))
-        controls.setUnidirectionalLight(on);
 }
 
 void cameraSection(Controls& controls, const WindowState& state)

@@ -143,10 +143,7 @@ void ProgressiveRenderer::recordSamples(VkCommandBuffer cmd, std::uint32_t slot,
     if (count == 0)
         return;
     RenderSettings settings = request.settings;
-    // Progressive passes of one or a few samples: random jitter, or Sobol's points when asked for (they are
-    // indexed by the sample, whatever the passes).
-    if (settings.sampling != PixelSampling::Sobol)
-        settings.sampling = PixelSampling::Accumulate;
+    settings.sampling = progressiveSampling(settings.sampling);
     const VkExtent2D size = extent();
     const shader::RenderUniforms uniforms = m_engine->tracer().uniforms(request.camera, settings, size);
     std::memcpy(m_uniforms.at(slot).mapped(), &uniforms, sizeof(uniforms));
