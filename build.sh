@@ -72,10 +72,13 @@ build() {
     echo "== configuring ($BUILD_TYPE) and building${*:+ $*} in $BUILD_DIR with $JOBS jobs"
     cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" >/dev/null
     local targets=()
-    local t
+    local t known
+    # Read whole before grep: `grep -q` would close the pipe early, and under pipefail the build's broken
+    # pipe would read as "no such target" (and build everything).
+    known=$(cmake --build "$BUILD_DIR" --target help)
     for t in "$@"; do
         # A target the configuration left out (the GPU app without Vulkan) is skipped, not an error.
-        if cmake --build "$BUILD_DIR" --target help | grep -q "^\.\.\. $t\$"; then
+        if grep -q "^\.\.\. $t\$" <<<"$known"; then
             targets+=(--target "$t")
         fi
     done
