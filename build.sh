@@ -2,8 +2,9 @@
 # Set up, build, and run the main job or the tests, on Debian 12 (bookworm).
 #
 #   ./build.sh          install what is missing, configure and build (Release) into build/
-#   ./build.sh run      ... building only the two apps and their shaders, then the main job: render
-#                       cornell-box-lights at 600x600 to out/, print the time, and the CPU/GPU timing table
+#   ./build.sh run      ... installing and building only the two apps and their shaders (tests off), then the
+#                       main job: render cornell-box-lights at 600x600 to out/, print the time, and the CPU/GPU
+#                       timing table. About 8 minutes on a bare 2-core machine, installs included.
 #   ./build.sh test     ... then the test suite (everything but the label "heavy")
 #   ./build.sh heavy    ... then the heavy suites only
 #
@@ -18,14 +19,15 @@ BUILD_TYPE=${BUILD_TYPE:-Release}
 JOBS=${JOBS:-$(nproc)}
 
 # Every dependency comes from Debian's packages. mesa-vulkan-drivers (lavapipe, the CPU Vulkan device with
-# ray tracing) must be 25.x, from bookworm-backports: bookworm's own 22.x has no ray tracing.
-packages=(
+# ray tracing) must be 25.x, from bookworm-backports: bookworm's own 22.x has no ray tracing. `run` installs
+# what the two apps need; the tests' and benchmarks' own packages come with `build`, `test` and `heavy`.
+app_packages=(
     cmake g++ make pkg-config file python3 python3-matplotlib
     libglm-dev libspdlog-dev libstb-dev libtinyobjloader-dev libtbb-dev libcli11-dev nlohmann-json3-dev zlib1g-dev
-    libgtest-dev libbenchmark-dev
-    libvulkan-dev vulkan-tools vulkan-validationlayers glslc
-    libglfw3-dev libimgui-dev xvfb xauth x11-utils imagemagick fonts-dejavu-core hyperfine
-    xplanet-images assimp-testmodels libtinygltf-dev
+    libvulkan-dev glslc libglfw3-dev libimgui-dev fonts-dejavu-core xplanet-images assimp-testmodels libtinygltf-dev
+)
+test_packages=(
+    libgtest-dev libbenchmark-dev vulkan-tools vulkan-validationlayers xvfb xauth x11-utils imagemagick hyperfine
 )
 backports_packages=(mesa-vulkan-drivers)
 
@@ -37,7 +39,7 @@ as_root() {
 
 missing_packages() {
     local p
-    for p in "${packages[@]}"; do
+    for p in "$@"; do
         dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || echo "$p"
     done
 }
@@ -48,10 +50,11 @@ lavapipe_is_new_enough() {
     [ -n "$v" ] && dpkg --compare-versions "$v" ge 25
 }
 
+# install_dependencies PACKAGE...: those missing, and lavapipe from backports where it is older than 25.
 install_dependencies() {
     [ "${RT_SKIP_APT:-0}" = 1 ] && return
     local missing
-    missing=$(missing_packages)
+    missing=$(missing_packages "$@")
     if [ -z "$missing" ] && lavapipe_is_new_enough; then
         return
     fi
@@ -67,10 +70,14 @@ install_dependencies() {
         -t bookworm-backports "${backports_packages[@]}" >/dev/null
 }
 
-# build [TARGET...]: configure, then build the targets named (with what they need), or everything.
+# build [TARGET...]: configure, then build the targets named (with what they need, and without the tests'
+# targets), or everything.
 build() {
+    local tests=ON
+    [ $# -gt 0 ] && tests=OFF
     echo "== configuring ($BUILD_TYPE) and building${*:+ $*} in $BUILD_DIR with $JOBS jobs"
-    cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" >/dev/null
+    cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" -DRT_BUILD_TESTS=$tests -DRT_BUILD_BENCHMARKS=$tests \
+        >/dev/null
     local targets=()
     local t known
     # Read whole before grep: `grep -q` would close the pipe early, and under pipefail the build's broken
@@ -104,11 +111,11 @@ run_tests() {
     ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS" "${labels[@]}"
 }
 
-install_dependencies
 case "$mode" in
-build) build ;;
-run) build ray-tracing-cpu ray-tracing-gpu && main_job ;; # the apps and their shaders: no test targets
-test) build && run_tests -LE heavy ;;
-heavy) build && run_tests -L heavy ;;
+run) install_dependencies "${app_packages[@]}" && build ray-tracing-cpu ray-tracing-gpu && main_job ;;
+build | test | heavy) install_dependencies "${app_packages[@]}" "${test_packages[@]}" && build ;;&
+test) run_tests -LE heavy ;;
+heavy) run_tests -L heavy ;;
+build) ;;
 *) echo "usage: $0 [build|run|test|heavy]" >&2; exit 2 ;;
 esac

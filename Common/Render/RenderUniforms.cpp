@@ -1,5 +1,6 @@
 #include "Render/RenderUniforms.h"
 
+#include "Render/SettingsTable.h"
 #include "Scene/Camera.h"
 
 namespace rt
@@ -20,20 +21,13 @@ shader::RenderUniforms makeUniforms(const Scene& scene, const CameraDesc& camera
     u.defocusDiskU = camera.defocusDiskU;
     u.height = height;
     u.defocusDiskV = camera.defocusDiskV;
-    u.depth = static_cast<std::uint32_t>(settings.depth);
     u.background0 = scene.background.color0;
     u.backgroundType = scene.background.type;
     u.background1 = scene.background.color1;
-    u.estimator = settings.estimator;
-    u.sampling = settings.sampling;
     u.strata = static_cast<std::uint32_t>(settings.strata());
-    u.seed = settings.seed;
-    u.unidirectionalLight = settings.unidirectionalLight ? 1u : 0u;
     u.lightCount = static_cast<std::uint32_t>(scene.lights.size());
     u.emitterCount = scene.emitterCount();
-    u.russianRoulette = settings.russianRoulette ? 1u : 0u;
-    u.lightSampler = settings.lightSampler;
-    u.lightSelection = settings.lightSelection;
+    writeSettingUniforms(settings, u); // the settings table's (depth, estimator, samplers, seed, ...)
     return u;
 }
 } // namespace rt

@@ -106,10 +106,30 @@ std::vector<std::string_view> words()
     return out;
 }
 
+/// A setting's uniform is its field as the shaders hold it: a uint for on/off and integers, the tag for an enum.
+template <auto Member, auto Uniform>
+void uniformField(const RenderSettings& s, shader::RenderUniforms& u)
+{
+    using T = std::remove_cvref_t<decltype(u.*Uniform)>;
+    u.*Uniform = static_cast<T>(s.*Member);
+}
+
+template <auto Member, auto Uniform>
+Setting fieldWithUniform(Setting s);
+
 /// The entry of the field `Member`: its type, choices and accessors from the field's C++ type.
 template <auto Member>
 Setting field(Setting s)
 {
+    return fieldWithUniform<Member, nullptr>(s);
+}
+
+/// field<Member>, written into the uniform `Uniform` too.
+template <auto Member, auto Uniform>
+Setting fieldWithUniform(Setting s)
+{
+    if constexpr (Uniform != nullptr)
+        s.toUniforms = &uniformField<Member, Uniform>;
     using T = FieldType<Member>;
     if constexpr (std::is_same_v<T, bool>)
         s.type = SettingType::OnOff;
@@ -146,7 +166,7 @@ std::vector<Setting> makeTable()
             .maximum = kMaxSpp,
             .fromScene = true,
         }),
-        field<&RenderSettings::depth>({
+        fieldWithUniform<&RenderSettings::depth, &shader::RenderUniforms::depth>({
             .name = "depth",
             .jsonKey = "depth",
             .label = "Max depth",
@@ -177,7 +197,7 @@ std::vector<Setting> makeTable()
             .maximum = double(std::numeric_limits<float>::max()),
             .fromScene = true,
         }),
-        field<&RenderSettings::estimator>({
+        fieldWithUniform<&RenderSettings::estimator, &shader::RenderUniforms::estimator>({
             .name = "estimator",
             .jsonKey = "estimator",
             .label = "Estimator",
@@ -192,7 +212,7 @@ std::vector<Setting> makeTable()
             .fromScene = true,
             .compareFlag = "--estimators",
         }),
-        field<&RenderSettings::lightSampler>({
+        fieldWithUniform<&RenderSettings::lightSampler, &shader::RenderUniforms::lightSampler>({
             .name = "light-sampler",
             .jsonKey = "light_sampler",
             .label = "Light sampler",
@@ -208,7 +228,7 @@ std::vector<Setting> makeTable()
             .compareFlag = "--light-samplers",
             .usedBy = &usesLights,
         }),
-        field<&RenderSettings::lightSelection>({
+        fieldWithUniform<&RenderSettings::lightSelection, &shader::RenderUniforms::lightSelection>({
             .name = "light-selection",
             .jsonKey = "light_selection",
             .label = "Light selection",
@@ -221,7 +241,7 @@ std::vector<Setting> makeTable()
             .compareFlag = "--light-selections",
             .usedBy = &usesLights,
         }),
-        field<&RenderSettings::sampling>({
+        fieldWithUniform<&RenderSettings::sampling, &shader::RenderUniforms::sampling>({
             .name = "sampling",
             .jsonKey = "sampling",
             .label = "Pixel sampling",
@@ -236,7 +256,7 @@ std::vector<Setting> makeTable()
             .fromScene = true,
             .compareFlag = "--samplings",
         }),
-        field<&RenderSettings::russianRoulette>({
+        fieldWithUniform<&RenderSettings::russianRoulette, &shader::RenderUniforms::russianRoulette>({
             .name = "russian-roulette",
             .jsonKey = "russian_roulette",
             .label = "Russian roulette",
@@ -248,7 +268,7 @@ std::vector<Setting> makeTable()
             .compareFlag = "--roulettes",
             .compareTag = "rr",
         }),
-        field<&RenderSettings::unidirectionalLight>({
+        fieldWithUniform<&RenderSettings::unidirectionalLight, &shader::RenderUniforms::unidirectionalLight>({
             .name = "unidirectional-light",
             .jsonKey = "unidirectional_light",
             .label = "Unidirectional light",
@@ -256,7 +276,7 @@ std::vector<Setting> makeTable()
             .tooltip = "on: emitters emit from their front face only; off: from both faces",
             .fromScene = true,
         }),
-        field<&RenderSettings::seed>({
+        fieldWithUniform<&RenderSettings::seed, &shader::RenderUniforms::seed>({
             .name = "seed",
             .jsonKey = "seed",
             .label = "Seed",
@@ -343,6 +363,13 @@ const Setting& setting(std::string_view name)
     if (const Setting* s = findSetting(name))
         return *s;
     throw std::logic_error(fmt::format("the settings table has no '{}'", name));
+}
+
+void writeSettingUniforms(const RenderSettings& settings, shader::RenderUniforms& uniforms)
+{
+    for (const Setting& s : settingsTable())
+        if (s.toUniforms != nullptr)
+            s.toUniforms(settings, uniforms);
 }
 
 std::vector<const Setting*> strategySettings()

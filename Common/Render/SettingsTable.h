@@ -45,6 +45,9 @@ struct Setting
     bool (*assign)(const Setting&, RenderSettings&, std::string_view value);
     void (*copy)(RenderSettings& to, const RenderSettings& from);
     double (*number)(const RenderSettings&); // Integer, Real: the value; null otherwise
+    /// Writes the field into the shaders' uniforms (Shared/HostDevice.h's RenderUniforms, which both engines' path
+    /// vertex reads); null for a setting the host alone reads (spp, width, aspect: the frame's size and count).
+    void (*toUniforms)(const RenderSettings&, shader::RenderUniforms&) = nullptr;
     /// Whether a render with `settings` reads the field (the light sampler: only an estimator with NEE); null:
     /// always.
     bool (*usedBy)(const RenderSettings& settings) = nullptr;
@@ -70,6 +73,8 @@ std::span<const Setting> settingsTable();
 const Setting* findSetting(std::string_view name);
 /// The setting called `name`; throws std::logic_error for a name the table lacks (a programming error).
 const Setting& setting(std::string_view name);
+/// Every setting's toUniforms into `uniforms`.
+void writeSettingUniforms(const RenderSettings& settings, shader::RenderUniforms& uniforms);
 /// The settings --compare varies (compareFlag non-empty), in table order.
 std::vector<const Setting*> strategySettings();
 } // namespace rt
