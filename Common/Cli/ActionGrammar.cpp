@@ -161,9 +161,7 @@ std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long lo
         {"scene", ActionValue::Text, "ID|FILE",
          "switch to a catalogue scene (--list-scenes) or a scene file (.json, .gltf, .glb; reloaded when it changes)",
          0, 1e30,
-         [](const std::string& id) {
-             return findScene(id) != nullptr || (isSceneFilePath(id) && std::filesystem::is_regular_file(id));
-         }},
+         [](const std::string& id) { return sceneProblem(id).empty(); }},
         {"fresnel", ActionValue::Text, "scene|schlick|exact", "every dielectric's reflectance (--fresnel)", 0, 1e30,
          [](const std::string& v) {
              std::optional<shader::FresnelModel> model;

@@ -9,6 +9,7 @@
 #include "Error.h"
 #include "SceneFile/GltfImport.h"
 #include "SceneFile/JsonSceneReader.h"
+#include "Scenes/Catalogue.h"
 
 namespace rt
 {
@@ -31,6 +32,17 @@ bool isSceneFilePath(std::string_view idOrPath)
 std::string sceneShortName(std::string_view idOrPath)
 {
     return isSceneFilePath(idOrPath) ? std::filesystem::path(idOrPath).stem().string() : std::string(idOrPath);
+}
+
+std::string sceneProblem(std::string_view idOrPath)
+{
+    if (isSceneFilePath(idOrPath))
+        return std::filesystem::is_regular_file(std::filesystem::path(idOrPath))
+                   ? std::string()
+                   : fmt::format("scene file '{}' not found", idOrPath);
+    return findScene(std::string(idOrPath)) != nullptr
+               ? std::string()
+               : fmt::format("unknown scene '{}' (--list-scenes lists them)", idOrPath);
 }
 
 Scene loadSceneFile(const std::filesystem::path& file)

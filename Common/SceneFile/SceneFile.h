@@ -13,6 +13,11 @@ namespace rt
 /// True if `idOrPath` names a scene file by its extension (case-insensitive), whether or not it exists.
 bool isSceneFilePath(std::string_view idOrPath);
 
+/// Why `idOrPath` names no scene, or empty when it names one: "scene file 'F' not found" for a scene file's path
+/// that is no file, "unknown scene 'ID' (--list-scenes lists them)" for an id the catalogue lacks. What both windows
+/// and --actions check before they take a scene.
+std::string sceneProblem(std::string_view idOrPath);
+
 /// A name for output files and window titles: a catalogue id as it is, a scene file's stem
 /// ("scenes/lamp.json" gives "lamp").
 std::string sceneShortName(std::string_view idOrPath);

@@ -81,10 +81,9 @@ bool Session::tryImage(const RenderRequest& candidate)
 
 bool Session::setScene(const std::string& idOrPath)
 {
-    const bool file = isSceneFilePath(idOrPath);
-    if (file ? !std::filesystem::is_regular_file(idOrPath) : !findScene(idOrPath))
+    if (const std::string problem = sceneProblem(idOrPath); !problem.empty())
     {
-        note(file ? fmt::format("scene file '{}' not found", idOrPath) : fmt::format("no scene '{}'", idOrPath), true);
+        note(problem, true);
         return false;
     }
     RenderRequest s = m_image;

@@ -36,13 +36,8 @@ float basePixels(const WindowState& state) { return state.display.font == 0 ? kI
 
 void Controls::selectScene(const std::string& idOrPath)
 {
-    if (isSceneFilePath(idOrPath))
-    {
-        if (!std::filesystem::is_regular_file(idOrPath))
-            throw SceneError(fmt::format("scene file '{}' not found", idOrPath));
-    }
-    else if (!findScene(idOrPath))
-        throw SceneError(fmt::format("unknown scene '{}' (--list-scenes lists them)", idOrPath));
+    if (const std::string problem = sceneProblem(idOrPath); !problem.empty())
+        throw SceneError(problem);
     m_state->sceneRequest = idOrPath;
 }
 
