@@ -1,5 +1,5 @@
 // The figures of --compare (plots, the equal-time grid) are drawn by matplotlib scripts that ship beside the
-// app in <bin>/scripts (copied there from RayTracingGPU/App/Compare at build time); these run them.
+// app in <bin>/scripts (copied there from Common/Compare at build time); these run them.
 #pragma once
 
 #include <filesystem>
