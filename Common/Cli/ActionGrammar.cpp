@@ -143,10 +143,7 @@ ActionSpec settingActionSpec(const Setting& setting)
     // The table's parse is the last check (a Real's minimum is exclusive there).
     spec.minimum = setting.minimum;
     spec.maximum = setting.number ? setting.maximum : 1e30;
-    spec.accepts = [&setting](const std::string& value) {
-        RenderSettings scratch;
-        return setting.assign(setting, scratch, value);
-    };
+    spec.accepts = [&setting](const std::string& value) { return setting.accepts(value); };
     return spec;
 }
 

@@ -85,8 +85,7 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
         app.add_option_function<std::string>(
                "--" + name, [&o, name](const std::string& value) { o.settings[name] = value; }, help)
             ->check([&setting, name](const std::string& value) -> std::string {
-                RenderSettings scratch;
-                return setting.assign(setting, scratch, value) ? std::string() : setting.refusal(value);
+                return setting.accepts(value) ? std::string() : setting.refusal(value);
             })
             ->type_name(setting.placeholder());
     }

@@ -23,8 +23,7 @@ std::vector<std::string> listedWords(const StrategyLists& lists, const Setting& 
     std::vector<std::string> words;
     for (const std::string& word : splitCommas(text))
     {
-        RenderSettings scratch;
-        if (!setting.assign(setting, scratch, word))
+        if (!setting.accepts(word))
             throw UsageError(fmt::format("{} takes {} separated by commas (got '{}')", setting.compareFlag,
                                          setting.expected(), word));
         if (std::find(words.begin(), words.end(), word) == words.end())

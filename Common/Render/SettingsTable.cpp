@@ -73,7 +73,7 @@ bool assignField(const Setting& setting, RenderSettings& s, std::string_view tex
     }
     else
     {
-        // Read in double: a float reads 1e308 as inf, which would pass as "finite" nowhere but confuse the message.
+        // Read in double, so that 1e308 is refused as beyond a float rather than read as inf.
         const std::string copy(text);
         char* end = nullptr;
         const double value = std::strtod(copy.c_str(), &end);
@@ -337,6 +337,12 @@ std::string Setting::refusal(std::string_view value) const
 {
     return fmt::format(fmt::runtime(number ? "{} must be {} (got {})" : "{} must be {} (got '{}')"), noun(),
                        expected(), value);
+}
+
+bool Setting::accepts(std::string_view value) const
+{
+    RenderSettings scratch;
+    return assign(*this, scratch, value);
 }
 
 void Setting::set(RenderSettings& settings, std::string_view value, std::string_view what) const

@@ -61,6 +61,8 @@ struct Setting
     std::string placeholder() const;
     /// The label as a noun inside a sentence: "samples per pixel", "light sampler".
     std::string noun() const;
+    /// Whether assign() would take `value`.
+    bool accepts(std::string_view value) const;
     /// assign(), or throws UsageError "`what` (NOUN) must be EXPECTED (got VALUE)".
     void set(RenderSettings& settings, std::string_view value, std::string_view what) const;
     bool used(const RenderSettings& settings) const { return usedBy == nullptr || usedBy(settings); }

@@ -117,7 +117,9 @@ TEST(SettingsTable, EveryWindowActionOfASettingParsesAsTheCommandLine)
         const std::vector<ActionSpec> specs{settingActionSpec(s)};
         EXPECT_NO_THROW(parseActionScript(std::string(s.name) + "=" + otherValue(s), specs)) << s.name;
         if (s.type == SettingType::Choice || s.type == SettingType::OnOff)
+        {
             EXPECT_THROW(parseActionScript(std::string(s.name) + "=nonsense", specs), UsageError) << s.name;
+        }
     }
 }
 } // namespace
