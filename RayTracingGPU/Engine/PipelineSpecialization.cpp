@@ -87,15 +87,17 @@ PipelineSpecialization PipelineSpecialization::of(Specialize specialize, const R
     case Specialize::Strategy: return strategyOf(u);
     case Specialize::Full:
     {
-        // Measured on the H100 (docs/notebook/PERFORMANCE.md §4.3): with any explicit feature mask, even one with every
-        // bit set, book 3's mixture renders cornell-box-lights 1.23-1.32x slower than with the mask left
-        // dynamic, while NEE + MIS renders it 1.46x faster. So the mixture keys on its strategy, the sphere
-        // tests' c (the c made the light book scenes 1.03-1.09x faster, §8.8) and the hit's uv alone (§8.10).
-        if (u.estimator != Estimator::Mixture)
-            return of(u, sceneFeatures, hugeSpheres);
-        PipelineSpecialization s = strategyOf(u);
-        s.setSceneConstants(sceneFeatures, hugeSpheres);
-        return s;
+        // Measured on the H100 (docs/notebook/PERFORMANCE.md §9.6, which overturns §4.3's rule of a mixture
+        // keyed on its strategy alone): with the scene's feature mask, book 3's mixture renders the book scenes
+        // 1.04-1.12x faster and cornell-box-lights as fast, but rtnw-cornell-smoke 0.93x. So a mixture in a
+        // scene with media keeps its mask dynamic, with the sphere tests' c (§8.8) and the hit's uv (§8.10).
+        if (u.estimator == Estimator::Mixture && (sceneFeatures & kFeatureMedia) != 0u)
+        {
+            PipelineSpecialization s = strategyOf(u);
+            s.setSceneConstants(sceneFeatures, hugeSpheres);
+            return s;
+        }
+        return of(u, sceneFeatures, hugeSpheres);
     }
     }
     return general();

@@ -57,7 +57,7 @@ struct PipelineSpecialization
     auto operator<=>(const PipelineSpecialization&) const = default;
 
 private:
-    /// The constants that come from the scene but are not feature bits, which the mixture's pipelines set too:
+    /// The constants that come from the scene but are not feature bits, which a mixture with media sets too:
     /// the sphere tests' c and the hit's uv.
     void setSceneConstants(std::uint32_t sceneFeatures, bool hugeSpheres);
 };

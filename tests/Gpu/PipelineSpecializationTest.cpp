@@ -49,21 +49,27 @@ TEST(PipelineSpecialization, ModesKeyOnWhatTheySay)
     const PipelineSpecialization a = PipelineSpecialization::of(mixture, scene);
     mixture.lightSelection = LightSelection::Uniform;
     EXPECT_EQ(a, PipelineSpecialization::of(mixture, scene));
-    // On the H100 the mixture ran slower with any explicit feature mask: --specialize on keys it on its strategy.
-    PipelineSpecialization mixtureFull = PipelineSpecialization::of(Specialize::Full, mixture, scene);
-    EXPECT_EQ(mixtureFull.constants[kSpecIdExactSphereC], 1u);
-    EXPECT_EQ(mixtureFull.constants[kSpecIdHitUv], 0u) << "no image texture";
-    mixtureFull.constants[kSpecIdExactSphereC] = kSpecDynamic;
-    mixtureFull.constants[kSpecIdHitUv] = kSpecDynamic;
-    EXPECT_EQ(mixtureFull, PipelineSpecialization::strategyOf(mixture)) << "but the sphere tests' c and the uv (below)";
+    // The mixture has its scene's mask under --specialize on, but in a scene with media (measured on the H100).
+    EXPECT_EQ(PipelineSpecialization::of(Specialize::Full, mixture, scene).features(),
+              kFeatureTriangles | kFeatureLambertian | kFeatureQuadLights);
+    PipelineSpecialization mixtureInMedia =
+        PipelineSpecialization::of(Specialize::Full, mixture, scene | kFeatureMedia | kFeatureIsotropic);
+    EXPECT_EQ(mixtureInMedia.constants[kSpecIdExactSphereC], 1u);
+    EXPECT_EQ(mixtureInMedia.constants[kSpecIdHitUv], 0u) << "no image texture";
+    mixtureInMedia.constants[kSpecIdExactSphereC] = kSpecDynamic;
+    mixtureInMedia.constants[kSpecIdHitUv] = kSpecDynamic;
+    EXPECT_EQ(mixtureInMedia, PipelineSpecialization::strategyOf(mixture)) << "but the sphere tests' c and the uv (below)";
+    EXPECT_NE(PipelineSpecialization::of(Specialize::Full, u, scene | kFeatureMedia).features(), kSpecDynamic)
+        << "NEE has its mask with media too";
     EXPECT_NE(PipelineSpecialization::of(Specialize::Full, u, scene), PipelineSpecialization::strategyOf(u));
 }
 
 // The sphere tests' exact c (kSpecIdExactSphereC): left out by --specialize on for a scene without huge spheres,
-// the mixture's pipeline included (its feature mask stays dynamic); kept by the general and strategy-only ones.
+// the pipeline of a mixture with media included (its feature mask stays dynamic); kept by the general and
+// strategy-only ones.
 TEST(PipelineSpecialization, ExactSphereCOnlyForHugeSpheres)
 {
-    const std::uint32_t scene = kFeatureSpheres | kFeatureLambertian;
+    const std::uint32_t scene = kFeatureSpheres | kFeatureLambertian | kFeatureMedia | kFeatureIsotropic;
     for (const Estimator e : {Estimator::Mixture, Estimator::NeeMis})
     {
         const RenderUniforms u = uniformsWith(e, false, BackgroundType::Constant);
