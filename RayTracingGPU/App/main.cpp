@@ -103,7 +103,7 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
     image.heatmap = onOff(flags.heatmap, "--heatmap");
     w.initial.display.samplesPerFrame = flags.samplesPerFrame;
     // The scene's default spp is no reason to stop: only a --spp given is.
-    w.initial.display.targetSpp = options.given("spp") ? settings.spp : 0;
+    w.initial.display.stopAtSpp = options.given("spp").has_value();
     w.deviceIndex = device;
     w.validation = validation;
     w.integrator = integrator;

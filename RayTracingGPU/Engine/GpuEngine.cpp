@@ -228,6 +228,8 @@ std::shared_ptr<const vk::ValidationLog> GpuEngine::validationLog() const
 
 const SceneTracer& GpuEngine::tracer() const { return m_impl->tracer; }
 
+const std::filesystem::path& GpuEngine::shaderDir() const { return m_impl->tracer.shaderDir(); }
+
 void GpuEngine::setBandRows(std::uint32_t rows) { m_impl->fixedBandRows = rows; }
 
 void GpuEngine::setSpecialize(Specialize specialize) { m_impl->tracer.setSpecialize(specialize); }

@@ -95,9 +95,12 @@ public:
     /// is destroyed). Null without validation.
     std::shared_ptr<const vk::ValidationLog> validationLog() const;
 
-    /// The pipeline and the scene on the device, for tracing into images of one's own (the window's
-    /// ProgressiveRenderer records its frames with it).
+    /// The pipeline and the scene on the device: the engine's own progressive frames (ProgressiveFrame.h) trace
+    /// with it, and the tests look inside.
     const SceneTracer& tracer() const;
+    /// The folder of the SPIR-V the engine loaded (GpuEngineOptions::shaderDir, or executableDir()/shaders):
+    /// where a caller's own pipelines (the window's display pass) find theirs.
+    const std::filesystem::path& shaderDir() const;
     /// GpuEngineOptions::specialize, from the next frame on (pipelines compiled so far are kept).
     void setSpecialize(Specialize specialize);
     /// GpuEngineOptions::integrator, from the next frame on, with waves of `waveCapacity` paths (0: by the

@@ -94,7 +94,7 @@ bool applyAction(const Action& a, Controls& c)
         c.setFresnel(model);
     }
     else if (n == "spp")
-        c.setTargetSpp(int(a.integer()));
+        c.setStopSpp(int(a.integer()));
     else if (n == "depth")
         c.setDepth(int(a.integer()));
     else if (n == "pdf")

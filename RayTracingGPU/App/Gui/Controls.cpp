@@ -60,9 +60,12 @@ void Controls::setSamplesPerFrame(int samples)
 {
     m_state->display.samplesPerFrame = held(*m_state, "samples per frame", samples, 1, kMaxSamplesPerFrame, "");
 }
-void Controls::setTargetSpp(int spp)
+void Controls::setStopSpp(int spp)
 {
-    m_state->display.targetSpp = held(*m_state, "stop at spp", spp, 0, std::numeric_limits<int>::max(), "");
+    const int kept = held(*m_state, "stop at spp", spp, 0, std::numeric_limits<int>::max(), "");
+    m_state->display.stopAtSpp = kept > 0;
+    if (kept > 0)
+        m_state->image.request.settings.spp = kept;
 }
 void Controls::setDepth(int depth)
 {

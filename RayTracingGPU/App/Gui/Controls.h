@@ -36,7 +36,8 @@ public:
     void setAutoCostScale(bool on);
     void setCostScale(float ticksPerSample);
     void setSamplesPerFrame(int samples);
-    void setTargetSpp(int spp); // 0: never stop
+    /// Tracing stops at `spp` samples per pixel, the render's spp (> 0); 0: never stops (the spp is kept).
+    void setStopSpp(int spp);
     void setDepth(int depth);
     /// A render setting (Render/SettingsTable.h) from its word or number, as the command line takes it; false,
     /// with WindowState::message, for a value the table refuses.

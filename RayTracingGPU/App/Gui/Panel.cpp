@@ -87,10 +87,11 @@ void rayTracingSection(Controls& controls, const WindowState& state)
         controls.setAccumulate(on);
     if (int samples = display.samplesPerFrame; ImGui::SliderInt("Samples / frame", &samples, 1, 64))
         controls.setSamplesPerFrame(samples);
-    if (int spp = display.targetSpp; ImGui::InputInt("Stop at spp", &spp, 16, 256))
-        controls.setTargetSpp(spp);
+    if (int spp = display.stopAtSpp ? image.request.settings.spp : 0; ImGui::InputInt("Stop at spp", &spp, 16, 256))
+        controls.setStopSpp(spp);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Tracing stops at this many samples per pixel; 0: never");
+        ImGui::SetTooltip("Tracing stops at this many samples per pixel, the image of a headless render of that "
+                          "spp; 0: never");
     if (int depth = image.request.settings.depth; ImGui::SliderInt("Depth", &depth, 1, 100))
         controls.setDepth(depth);
     // The choices and switches of the settings table but the pixel sampling (the window accumulates random or
@@ -155,8 +156,8 @@ void profilerSection(Controls& controls, const WindowState& state, const PanelIn
 void statsSection(const WindowState& state, const PanelInfo& info)
 {
     ImGui::Text("%.1f fps, %.2f Msamples/s", info.framesPerSecond, info.megaSamplesPerSecond);
-    if (state.display.targetSpp > 0)
-        ImGui::Text("%d / %d spp accumulated", info.accumulatedSpp, state.display.targetSpp);
+    if (state.display.stopAtSpp)
+        ImGui::Text("%d / %d spp accumulated", info.accumulatedSpp, state.image.request.settings.spp);
     else
         ImGui::Text("%d spp accumulated", info.accumulatedSpp);
     ImGui::Text("%d x %d image, depth %d", info.image.width, info.image.height, state.image.request.settings.depth);

@@ -18,10 +18,9 @@
 #include "App/Gui/Presenter.h"
 #include "App/Gui/Throughput.h"
 #include "App/Gui/VulkanWindow.h"
-#include "App/Gui/ProgressiveRenderer.h"
 #include "App/Gui/RasterPreview.h"
 #include "App/Gui/WindowLayout.h"
-#include "Engine/SceneTracer.h"
+#include "Engine/ProgressiveFrame.h"
 #include "Error.h"
 #include "IO/AtomicFile.h"
 #include "Image/ImageIO.h"
@@ -55,8 +54,8 @@ public:
           m_scene(std::make_unique<Scene>(std::move(scene))),
           m_presenter(m_engine.context(), window.framebufferSize()),
           m_renderer(m_engine, kFramesInFlight),
-          m_preview(m_engine.context().device(), m_engine.tracer().shaderDir(), m_presenter.renderPass()),
-          m_display(m_engine.context().device(), m_engine.tracer().shaderDir(), m_presenter.renderPass()),
+          m_preview(m_engine.context().device(), m_engine.shaderDir(), m_presenter.renderPass()),
+          m_display(m_engine.context().device(), m_engine.shaderDir(), m_presenter.renderPass()),
           m_imgui(m_engine.context(), window.handle(), m_presenter.renderPass(), kFramesInFlight),
           m_state(options.initial), m_controls(m_state)
     {
@@ -121,9 +120,29 @@ private:
     /// The next frame traces samples: ray tracing is on and the image has not reached its stop.
     bool tracing() const
     {
-        const DisplaySettings& d = m_state.display;
-        return m_state.image.rayTracing &&
-               (d.targetSpp == 0 || !m_state.image.accumulate || m_accumulatedSpp < std::uint32_t(d.targetSpp));
+        return m_state.image.rayTracing && (!m_state.display.stopAtSpp || !m_state.image.accumulate ||
+                                            m_accumulatedSpp < std::uint32_t(m_state.image.request.settings.spp));
+    }
+
+    /// What a frame of `image` traces.
+    static FrameRequest requestOf(const ImageSettings& image)
+    {
+        FrameRequest request;
+        request.settings = image.request.settings;
+        request.camera = image.camera;
+        request.cost = image.heatmap;
+        return request;
+    }
+
+    /// The samples in the accumulation image (traced with m_traced) are samples of the panel's image: the same
+    /// settings but perhaps the spp, where tracing stops, as long as the spp does not change the integrator
+    /// (whose images differ by noise).
+    bool accumulationFits() const
+    {
+        ImageSettings now = m_state.image;
+        now.request.settings.spp = m_traced.request.settings.spp;
+        return now == m_traced &&
+               m_renderer.integratorFor(requestOf(m_state.image)) == m_renderer.integratorFor(requestOf(m_traced));
     }
 
     /// Puts `scene` on the device, in the preview and behind the renderer's descriptor sets; the device is idle.
@@ -257,7 +276,7 @@ private:
                 throw UsageError("nothing to save: the window shows the rasterised preview; turn ray tracing on");
             // Before the first frame, or before the first frame of new settings (a save in the same frame as
             // the change): the accumulation image is empty or holds the old settings' samples.
-            if (m_accumulatedSpp == 0 || !(m_state.image == m_traced))
+            if (m_accumulatedSpp == 0 || !accumulationFits())
                 throw UsageError("nothing to save yet: no frame rendered yet with the panel's settings (save after "
                                  "the first frame)");
             m_presenter.waitIdle();
@@ -372,7 +391,7 @@ private:
     std::uint64_t traceSamples(const Frame& frame)
     {
         const VkCommandBuffer cmd = frame.commands;
-        const bool restart = m_needsClear || !(m_state.image == m_traced);
+        const bool restart = m_needsClear || !accumulationFits();
         if (restart || !m_state.image.accumulate)
         {
             m_renderer.recordClear(cmd);
@@ -384,16 +403,12 @@ private:
         m_traced = m_state.image;
 
         auto count = static_cast<std::uint32_t>(m_state.display.samplesPerFrame);
-        if (m_state.display.targetSpp > 0 && m_state.image.accumulate)
+        if (m_state.display.stopAtSpp && m_state.image.accumulate)
         {
-            const auto target = static_cast<std::uint32_t>(m_state.display.targetSpp);
+            const auto target = static_cast<std::uint32_t>(m_state.image.request.settings.spp);
             count = std::min(count, target > m_accumulatedSpp ? target - m_accumulatedSpp : 0u);
         }
-        FrameRequest request;
-        request.settings = m_state.image.request.settings;
-        request.camera = m_state.image.camera;
-        request.cost = m_state.image.heatmap;
-        m_renderer.recordSamples(cmd, frame.slot, request, m_nextSample, count);
+        m_renderer.recordSamples(cmd, frame.slot, requestOf(m_state.image), m_nextSample, count);
         // Without accumulation the indices still advance, so each frame shows new noise, not the same frame.
         m_nextSample += count;
         m_accumulatedSpp += count;
@@ -433,7 +448,7 @@ private:
     GpuEngine m_engine;
     std::unique_ptr<Scene> m_scene; // what the engine renders (it keeps a pointer)
     Presenter m_presenter;
-    ProgressiveRenderer m_renderer;
+    ProgressiveFrame m_renderer;
     RasterPreview m_preview;
     DisplayPass m_display;
     ImGuiLayer m_imgui;

@@ -24,9 +24,10 @@ struct Extent
 
 struct ImageSettings
 {
-    /// The scene on the device (id and options) and the settings of its samples: size, depth, estimator,
-    /// emitter sidedness, seed. The window traces progressively (sampling: accumulate); the samples to stop at
-    /// are DisplaySettings'. The image keeps its size whatever the window's: the window letterboxes it
+    /// The scene on the device (id and options) and the settings of its samples: size, spp, depth, estimator,
+    /// emitter sidedness, seed. The window traces progressively (sampling: accumulate) and stops at the
+    /// settings' spp when DisplaySettings::stopAtSpp says so; the spp also decides the integrator, as it does
+    /// for a headless render. The image keeps its size whatever the window's: the window letterboxes it
     /// (WindowLayout.h).
     RenderRequest request;
     CameraDesc camera; // the interactive camera: the scene's, moved, turned and zoomed
@@ -48,7 +49,7 @@ inline constexpr float kPanelFontPixels = 15.0f;
 struct DisplaySettings
 {
     int samplesPerFrame = 1;
-    int targetSpp = 0; // tracing stops at this many samples per pixel; 0: never
+    bool stopAtSpp = false; // tracing stops at the settings' spp (ImageSettings::request); false: never
     bool autoCostScale = true; // the heatmap's top follows the image: 95 % of the pixels are below it
     float costScale = 1.0e5f; // otherwise: ticks per sample at the top of the palette
     bool darkStyle = true;

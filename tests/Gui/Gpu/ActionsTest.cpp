@@ -125,7 +125,8 @@ TEST(WindowActions, EachActionChangesItsSetting)
                  "heatmap=on;heatmap-scale=5000;theme=light;font=Mono;font-size=30;fov=55;focus=20;aperture=2");
     EXPECT_EQ(state.image.request.settings.depth, 7);
     EXPECT_EQ(state.display.samplesPerFrame, 4);
-    EXPECT_EQ(state.display.targetSpp, 64);
+    EXPECT_TRUE(state.display.stopAtSpp);
+    EXPECT_EQ(state.image.request.settings.spp, 64) << "one spp: the render's is where the window stops";
     EXPECT_EQ(state.image.request.settings.estimator, Estimator::BsdfOnly);
     EXPECT_FALSE(state.image.request.settings.russianRoulette);
     EXPECT_FALSE(state.image.request.settings.unidirectionalLight);
@@ -200,9 +201,18 @@ TEST(WindowSettings, EveryImageSettingRestartsAccumulationDisplaySettingsDoNot)
                                     "raytracing=off", "heatmap=on", "fov=30", "aperture=1", "focus=3",
                                     "camera=forward:1", "camera=yaw:1"})
         EXPECT_TRUE(changed(imageChange)) << imageChange;
-    for (const char* displayChange :
-         {"samples=8", "spp=100", "heatmap-scale=100", "theme=light", "font=Mono", "font-size=20"})
+    for (const char* displayChange : {"samples=8", "heatmap-scale=100", "theme=light", "font=Mono", "font-size=20"})
         EXPECT_FALSE(changed(displayChange)) << displayChange;
+    // The spp is the image's (it decides the integrator), but where tracing stops is all it changes: the window
+    // keeps the samples while the integrator stays (WindowApp's accumulationFits).
+    WindowState stopped = base;
+    apply(stopped, "spp=100");
+    EXPECT_TRUE(stopped.display.stopAtSpp);
+    stopped.image.request.settings.spp = base.image.request.settings.spp;
+    EXPECT_EQ(stopped.image, base.image);
+    apply(stopped, "spp=0");
+    EXPECT_FALSE(stopped.display.stopAtSpp) << "0: never stop";
+    EXPECT_EQ(stopped.image.request.settings.spp, base.image.request.settings.spp) << "the spp is kept";
 }
 } // namespace
 } // namespace rt::gpu::gui

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "App/Gui/PreviewMesh.h"
-#include "App/Gui/ProgressiveRenderer.h"
+#include "Engine/ProgressiveFrame.h"
 #include "App/Gui/RasterPreview.h"
 #include "Scenes/Catalogue.h"
 

@@ -1,4 +1,4 @@
-#include "App/Gui/ProgressiveRenderer.h"
+#include "Engine/ProgressiveFrame.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "Vulkan/Barriers.h"
 #include "Vulkan/CommandBuffer.h"
 
-namespace rt::gpu::gui
+namespace rt::gpu
 {
 namespace
 {
@@ -20,7 +20,7 @@ constexpr VkPipelineStageFlags kImageStages = VK_PIPELINE_STAGE_RAY_TRACING_SHAD
 
 } // namespace
 
-ProgressiveRenderer::ProgressiveRenderer(const GpuEngine& engine, std::uint32_t frameSlots)
+ProgressiveFrame::ProgressiveFrame(const GpuEngine& engine, std::uint32_t frameSlots)
     : m_engine(&engine),
       m_counters(engine.context().device(), sizeof(shader::SampleCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                  vk::MemoryUse::Readback)
@@ -32,11 +32,11 @@ ProgressiveRenderer::ProgressiveRenderer(const GpuEngine& engine, std::uint32_t 
     std::memset(m_counters.mapped(), 0, sizeof(shader::SampleCounters));
 }
 
-ProgressiveRenderer::~ProgressiveRenderer() = default;
+ProgressiveFrame::~ProgressiveFrame() = default;
 
-bool ProgressiveRenderer::costAvailable() const { return m_engine->context().device().shaderClock(); }
+bool ProgressiveFrame::costAvailable() const { return m_engine->context().device().shaderClock(); }
 
-void ProgressiveRenderer::prepare(VkExtent2D extent)
+void ProgressiveFrame::prepare(VkExtent2D extent)
 {
     const vk::Device& device = m_engine->context().device();
     const VkExtent2D current = m_accumulation.extent();
@@ -67,7 +67,7 @@ void ProgressiveRenderer::prepare(VkExtent2D extent)
         writeCostDescriptors();
 }
 
-void ProgressiveRenderer::createCostResources()
+void ProgressiveFrame::createCostResources()
 {
     const vk::Device& device = m_engine->context().device();
     m_costPipeline = std::make_unique<PathTracingPipeline>(device, m_engine->tracer().shaderDir(), RayGenVariant::Cost,
@@ -83,7 +83,7 @@ void ProgressiveRenderer::createCostResources()
     writeCostDescriptors();
 }
 
-void ProgressiveRenderer::writeCostDescriptors() const
+void ProgressiveFrame::writeCostDescriptors() const
 {
     const VkDescriptorImageInfo image{VK_NULL_HANDLE, m_costView.Handle(), VK_IMAGE_LAYOUT_GENERAL};
     for (std::size_t slot = 0; slot < m_costSets.size(); ++slot)
@@ -106,7 +106,7 @@ void ProgressiveRenderer::writeCostDescriptors() const
     }
 }
 
-void ProgressiveRenderer::recordClear(VkCommandBuffer cmd)
+void ProgressiveFrame::recordClear(VkCommandBuffer cmd)
 {
     VkImageMemoryBarrier toClear[3]{};
     const VkImage images[3] = {m_accumulation.Handle(), m_compensation.Handle(), m_cost.Handle()};
@@ -137,7 +137,19 @@ void ProgressiveRenderer::recordClear(VkCommandBuffer cmd)
     m_imagesUndefined = false;
 }
 
-void ProgressiveRenderer::recordSamples(VkCommandBuffer cmd, std::uint32_t slot, const FrameRequest& request,
+GpuIntegrator ProgressiveFrame::integratorFor(const FrameRequest& request) const
+{
+    // Decided by the render's spp, as the headless render of that spp decides (the two integrators' images
+    // differ by noise on a GPU): a window image of N spp stays that render's.
+    RenderSettings settings = request.settings;
+    settings.sampling = progressiveSampling(settings.sampling);
+    const VkExtent2D size = extent();
+    const shader::RenderUniforms uniforms = m_engine->tracer().uniforms(request.camera, settings, size);
+    return m_engine->tracer().integratorFor(uniforms, std::uint64_t(size.width) * size.height *
+                                                          static_cast<std::uint64_t>(std::max(settings.spp, 1)));
+}
+
+void ProgressiveFrame::recordSamples(VkCommandBuffer cmd, std::uint32_t slot, const FrameRequest& request,
                                         std::uint32_t firstSample, std::uint32_t count)
 {
     if (count == 0)
@@ -160,15 +172,8 @@ void ProgressiveRenderer::recordSamples(VkCommandBuffer cmd, std::uint32_t slot,
                                         m_costPipeline.get());
     }
     else
-    {
-        // Decided by the accumulation's stop, as the headless render of its spp decides (the two integrators'
-        // images differ by noise on a GPU): a window image of N spp stays that render's.
-        const auto stop = static_cast<std::uint64_t>(std::max<std::int64_t>(settings.spp, count));
-        const GpuIntegrator integrator =
-            m_engine->tracer().integratorFor(uniforms, std::uint64_t(size.width) * size.height * stop);
-        m_engine->tracer().recordLaunch(cmd, {&m_sets.at(slot).set, 1}, uniforms, integrator, firstSample, count,
-                                        size);
-    }
+        m_engine->tracer().recordLaunch(cmd, {&m_sets.at(slot).set, 1}, uniforms, integratorFor(request), firstSample,
+                                        count, size);
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
@@ -197,7 +202,7 @@ CostSummary summarizeCost(const shader::CostStats& stats)
     return summary;
 }
 
-CostSummary ProgressiveRenderer::takeCostSummary(std::uint32_t slot)
+CostSummary ProgressiveFrame::takeCostSummary(std::uint32_t slot)
 {
     if (slot >= m_costStats.size())
         return {};
@@ -207,7 +212,7 @@ CostSummary ProgressiveRenderer::takeCostSummary(std::uint32_t slot)
     return summary;
 }
 
-Image ProgressiveRenderer::readImage() const
+Image ProgressiveFrame::readImage() const
 {
     const vk::Device& device = m_engine->context().device();
     const VkExtent2D size = extent();
@@ -226,4 +231,4 @@ Image ProgressiveRenderer::readImage() const
         image.data()[i] = vec3(texels[4 * i], texels[4 * i + 1], texels[4 * i + 2]) / std::max(texels[4 * i + 3], 1.0f);
     return image;
 }
-} // namespace rt::gpu::gui
+} // namespace rt::gpu

@@ -1,8 +1,12 @@
-// The window's ray tracing: a few camera samples per pixel per frame, added to an accumulation image of the
-// window's size and recorded into the frame's own command buffer (no readback, no wait). Each frame in flight
-// has its own uniforms and descriptor sets, so the camera and settings written for frame n + 1 never change
-// what frame n is still reading. With the heatmap on, the timed ray-generation shader also sums each pixel's
-// shader-clock ticks into a cost image. The display pass reads both images where they are (GENERAL layout).
+// The GPU engine's progressive rendering, for a caller that shows the image as it converges (the window): a
+// few camera samples per pixel per frame, added to an accumulation image of the render's size and recorded
+// into the caller's own command buffer (no readback, no wait). The samples are the engine's: the same uniforms,
+// pipeline and launches (SceneTracer::recordLaunch) as GpuEngine::traceSamples, with the integrator the
+// render's spp decides, so that N samples here are the image of a headless render of N spp. Each frame in
+// flight has its own uniforms and descriptor sets, so the camera and settings written for frame n + 1 never
+// change what frame n is still reading. With the cost on, the timed ray-generation shader also sums each
+// pixel's shader-clock ticks into a cost image (the window's heatmap). A display pass reads both images where
+// they are (GENERAL layout).
 #pragma once
 
 #include <cstdint>
@@ -13,6 +17,7 @@
 #include "Render/RenderSettings.h"
 #include "Scene/Camera.h"
 #include "Shared/HostDevice.h"
+#include "Engine/GpuIntegrator.h"
 #include "Engine/SceneTracer.h"
 #include "Vulkan/Buffer.h"
 #include "Vulkan/DescriptorPool.h"
@@ -21,15 +26,13 @@
 namespace rt::gpu
 {
 class GpuEngine;
-}
-
-namespace rt::gpu::gui
-{
 
 /// What one frame traces.
 struct FrameRequest
 {
-    RenderSettings settings; // depth, estimator, unidirectional light, seed (sampling is always progressive)
+    // The render's settings: spp decides the integrator (as a headless render of spp); sampling is made
+    // progressive (progressiveSampling).
+    RenderSettings settings;
     CameraDesc camera; // the window's camera, not necessarily the scene's
     bool cost = false; // time the samples (heatmap); needs costAvailable()
 };
@@ -43,14 +46,14 @@ struct CostSummary
 
 CostSummary summarizeCost(const shader::CostStats& stats);
 
-class ProgressiveRenderer final
+class ProgressiveFrame final
 {
 public:
     /// `frameSlots`: frames in flight, each with its own uniforms and descriptor sets.
-    ProgressiveRenderer(const GpuEngine& engine, std::uint32_t frameSlots);
-    ProgressiveRenderer(const ProgressiveRenderer&) = delete;
-    ProgressiveRenderer& operator=(const ProgressiveRenderer&) = delete;
-    ~ProgressiveRenderer();
+    ProgressiveFrame(const GpuEngine& engine, std::uint32_t frameSlots);
+    ProgressiveFrame(const ProgressiveFrame&) = delete;
+    ProgressiveFrame& operator=(const ProgressiveFrame&) = delete;
+    ~ProgressiveFrame();
 
     /// The device has the shader clock, so the heatmap can be shown.
     bool costAvailable() const;
@@ -59,6 +62,10 @@ public:
     /// Images of `extent` (kept when it is unchanged) and descriptor sets for the engine's current scene. Call
     /// with the device idle, after every setScene and resize; the next frame must begin with recordClear.
     void prepare(VkExtent2D extent);
+
+    /// The integrator the samples of `request` run on: the one a headless render of its settings (spp and all)
+    /// on the current scene would run (SceneTracer::integratorFor).
+    GpuIntegrator integratorFor(const FrameRequest& request) const;
 
     /// Records the clearing of the accumulation and cost images: the next sample starts a new image.
     void recordClear(VkCommandBuffer cmd);
@@ -99,4 +106,4 @@ private:
     std::vector<vk::DescriptorPool> m_costPools;
     std::vector<VkDescriptorSet> m_costSets;
 };
-} // namespace rt::gpu::gui
+} // namespace rt::gpu
