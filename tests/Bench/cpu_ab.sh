@@ -3,6 +3,7 @@
 # ROUNDS times (alternating, so that a drift of the machine hits both), then per render the fastest wall time
 # of each, the ratio A/B, and whether the two linear images are the same bit for bit (a change of speed only).
 #   tests/Bench/cpu_ab.sh A_BIN B_BIN RENDERS_FILE [ROUNDS (default 3)]
+# CORES (default 0: taskset's list) and ENGINE (default single) for other runs: CORES=0,1 ENGINE=multi, both cores.
 # RENDERS_FILE: one render per line, "NAME ARGS..." (ray-tracing-cpu flags after --headless); `#` comments.
 # Example: tests/Bench/cpu_ab.sh old/ray-tracing-cpu build/bin/ray-tracing-cpu tests/Bench/renders/cpu-catalogue.txt
 set -eu
@@ -19,7 +20,7 @@ grep -v '^\s*\(#\|$\)' "$renders" | while read -r name args; do
             [ "$which" = b ] && bin=$b
             start=$EPOCHREALTIME
             # shellcheck disable=SC2086
-            taskset -c 0 "$bin" --headless --engine single --quiet $args --hdr "$out/$which.pfm" >/dev/null
+            taskset -c "${CORES:-0}" "$bin" --headless --engine "${ENGINE:-single}" --quiet $args --hdr "$out/$which.pfm" >/dev/null
             seconds=$(python3 -c "print(f'{$EPOCHREALTIME - $start:.3f}')")
             if [ "$which" = a ]; then
                 best_a=$(python3 -c "print(min(float('$best_a'), $seconds))")
