@@ -15,6 +15,7 @@ rm -f .devcarry/bin/rt_gui_gpu_tests .devcarry/bin/rt_gui_cpu_tests .devcarry/bi
     .devcarry/bin/rt_cpu_tests
 strip .devcarry/bin/ray-tracing-* .devcarry/bin/rt_*_tests 2>/dev/null || true
 for exe in .devcarry/bin/ray-tracing-gpu .devcarry/bin/ray-tracing-cpu .devcarry/bin/rt_gpu_tests; do
+    [ -e "$exe" ] || continue # a build without tests or without the CPU app
     ldd "$exe" | awk '/=>/ {print $3}'
 done | sort -u | grep -vE '/(libc|libm|libdl|libpthread|librt|libstdc\+\+|libgcc_s)\.so' |
     xargs -r -I{} cp -L {} .devcarry/lib/
