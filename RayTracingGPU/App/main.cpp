@@ -66,7 +66,9 @@ void addWindowOptions(CLI::App& app, WindowFlags& w)
     app.add_option("--actions", w.actions,
                    "Window: scripted input, one per frame, through the panel's own functions, separated by ';':\n" +
                        rt::gpu::gui::actionHelp());
-    app.add_option("--samples-per-frame", w.samplesPerFrame, "Window: samples per pixel traced each frame")
+    app.add_option("--samples-per-frame", w.samplesPerFrame,
+                   "Window: samples per pixel traced each frame (the window stops at --spp when it is given, with "
+                   "the image of a headless render of that spp; without it, it accumulates until closed)")
         ->check(CLI::Range(1, rt::gpu::gui::kMaxSamplesPerFrame))
         ->capture_default_str();
     app.add_option("--raytracing", w.rayTracing, "Window: ray tracing, or (off) the rasterised preview")
