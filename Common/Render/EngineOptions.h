@@ -16,7 +16,8 @@ enum class Specialize
 {
     Off, // the general code for every render
     Strategy, // the render's estimator, light sampler, light selection and pixel sampling (GPU); every feature
-    Full // the strategy and the scene's features (the default); the GPU's mixture in a scene with media its strategy alone (faster)
+    Full // the strategy and the scene's features (the default); on the GPU, a mixture in a scene with media
+         // its strategy alone (faster)
 };
 
 template <>

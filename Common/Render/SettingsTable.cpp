@@ -114,19 +114,10 @@ void uniformField(const RenderSettings& s, shader::RenderUniforms& u)
     u.*Uniform = static_cast<T>(s.*Member);
 }
 
-template <auto Member, auto Uniform>
-Setting fieldWithUniform(Setting s);
-
-/// The entry of the field `Member`: its type, choices and accessors from the field's C++ type.
-template <auto Member>
+/// The entry of the field `Member`: its type, choices and accessors from the field's C++ type, and its writer
+/// into the uniform `Uniform` where it has one.
+template <auto Member, auto Uniform = nullptr>
 Setting field(Setting s)
-{
-    return fieldWithUniform<Member, nullptr>(s);
-}
-
-/// field<Member>, written into the uniform `Uniform` too.
-template <auto Member, auto Uniform>
-Setting fieldWithUniform(Setting s)
 {
     if constexpr (Uniform != nullptr)
         s.toUniforms = &uniformField<Member, Uniform>;
@@ -166,7 +157,7 @@ std::vector<Setting> makeTable()
             .maximum = kMaxSpp,
             .fromScene = true,
         }),
-        fieldWithUniform<&RenderSettings::depth, &shader::RenderUniforms::depth>({
+        field<&RenderSettings::depth, &shader::RenderUniforms::depth>({
             .name = "depth",
             .jsonKey = "depth",
             .label = "Max depth",
@@ -197,7 +188,7 @@ std::vector<Setting> makeTable()
             .maximum = double(std::numeric_limits<float>::max()),
             .fromScene = true,
         }),
-        fieldWithUniform<&RenderSettings::estimator, &shader::RenderUniforms::estimator>({
+        field<&RenderSettings::estimator, &shader::RenderUniforms::estimator>({
             .name = "estimator",
             .jsonKey = "estimator",
             .label = "Estimator",
@@ -212,7 +203,7 @@ std::vector<Setting> makeTable()
             .fromScene = true,
             .compareFlag = "--estimators",
         }),
-        fieldWithUniform<&RenderSettings::lightSampler, &shader::RenderUniforms::lightSampler>({
+        field<&RenderSettings::lightSampler, &shader::RenderUniforms::lightSampler>({
             .name = "light-sampler",
             .jsonKey = "light_sampler",
             .label = "Light sampler",
@@ -228,7 +219,7 @@ std::vector<Setting> makeTable()
             .compareFlag = "--light-samplers",
             .usedBy = &usesLights,
         }),
-        fieldWithUniform<&RenderSettings::lightSelection, &shader::RenderUniforms::lightSelection>({
+        field<&RenderSettings::lightSelection, &shader::RenderUniforms::lightSelection>({
             .name = "light-selection",
             .jsonKey = "light_selection",
             .label = "Light selection",
@@ -241,7 +232,7 @@ std::vector<Setting> makeTable()
             .compareFlag = "--light-selections",
             .usedBy = &usesLights,
         }),
-        fieldWithUniform<&RenderSettings::sampling, &shader::RenderUniforms::sampling>({
+        field<&RenderSettings::sampling, &shader::RenderUniforms::sampling>({
             .name = "sampling",
             .jsonKey = "sampling",
             .label = "Pixel sampling",
@@ -256,7 +247,7 @@ std::vector<Setting> makeTable()
             .fromScene = true,
             .compareFlag = "--samplings",
         }),
-        fieldWithUniform<&RenderSettings::russianRoulette, &shader::RenderUniforms::russianRoulette>({
+        field<&RenderSettings::russianRoulette, &shader::RenderUniforms::russianRoulette>({
             .name = "russian-roulette",
             .jsonKey = "russian_roulette",
             .label = "Russian roulette",
@@ -268,7 +259,7 @@ std::vector<Setting> makeTable()
             .compareFlag = "--roulettes",
             .compareTag = "rr",
         }),
-        fieldWithUniform<&RenderSettings::unidirectionalLight, &shader::RenderUniforms::unidirectionalLight>({
+        field<&RenderSettings::unidirectionalLight, &shader::RenderUniforms::unidirectionalLight>({
             .name = "unidirectional-light",
             .jsonKey = "unidirectional_light",
             .label = "Unidirectional light",
@@ -276,7 +267,7 @@ std::vector<Setting> makeTable()
             .tooltip = "on: emitters emit from their front face only; off: from both faces",
             .fromScene = true,
         }),
-        fieldWithUniform<&RenderSettings::seed, &shader::RenderUniforms::seed>({
+        field<&RenderSettings::seed, &shader::RenderUniforms::seed>({
             .name = "seed",
             .jsonKey = "seed",
             .label = "Seed",

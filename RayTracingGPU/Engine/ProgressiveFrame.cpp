@@ -137,27 +137,34 @@ void ProgressiveFrame::recordClear(VkCommandBuffer cmd)
     m_imagesUndefined = false;
 }
 
-GpuIntegrator ProgressiveFrame::integratorFor(const FrameRequest& request) const
+shader::RenderUniforms ProgressiveFrame::uniformsOf(const FrameRequest& request) const
+{
+    RenderSettings settings = request.settings;
+    settings.sampling = progressiveSampling(settings.sampling);
+    return m_engine->tracer().uniforms(request.camera, settings, extent());
+}
+
+GpuIntegrator ProgressiveFrame::integratorOf(const shader::RenderUniforms& uniforms, int spp) const
 {
     // Decided by the render's spp, as the headless render of that spp decides (the two integrators' images
     // differ by noise on a GPU): a window image of N spp stays that render's.
-    RenderSettings settings = request.settings;
-    settings.sampling = progressiveSampling(settings.sampling);
     const VkExtent2D size = extent();
-    const shader::RenderUniforms uniforms = m_engine->tracer().uniforms(request.camera, settings, size);
     return m_engine->tracer().integratorFor(uniforms, std::uint64_t(size.width) * size.height *
-                                                          static_cast<std::uint64_t>(std::max(settings.spp, 1)));
+                                                          static_cast<std::uint64_t>(std::max(spp, 1)));
+}
+
+GpuIntegrator ProgressiveFrame::integratorFor(const FrameRequest& request) const
+{
+    return integratorOf(uniformsOf(request), request.settings.spp);
 }
 
 void ProgressiveFrame::recordSamples(VkCommandBuffer cmd, std::uint32_t slot, const FrameRequest& request,
-                                        std::uint32_t firstSample, std::uint32_t count)
+                                     std::uint32_t firstSample, std::uint32_t count)
 {
     if (count == 0)
         return;
-    RenderSettings settings = request.settings;
-    settings.sampling = progressiveSampling(settings.sampling);
     const VkExtent2D size = extent();
-    const shader::RenderUniforms uniforms = m_engine->tracer().uniforms(request.camera, settings, size);
+    const shader::RenderUniforms uniforms = uniformsOf(request);
     std::memcpy(m_uniforms.at(slot).mapped(), &uniforms, sizeof(uniforms));
 
     // After the previous frame's display reads (write-after-read) and its samples or clears.
@@ -172,8 +179,8 @@ void ProgressiveFrame::recordSamples(VkCommandBuffer cmd, std::uint32_t slot, co
                                         m_costPipeline.get());
     }
     else
-        m_engine->tracer().recordLaunch(cmd, {&m_sets.at(slot).set, 1}, uniforms, integratorFor(request), firstSample,
-                                        count, size);
+        m_engine->tracer().recordLaunch(cmd, {&m_sets.at(slot).set, 1}, uniforms,
+                                        integratorOf(uniforms, request.settings.spp), firstSample, count, size);
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);

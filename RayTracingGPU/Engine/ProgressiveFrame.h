@@ -85,6 +85,9 @@ public:
     Image readImage() const;
 
 private:
+    /// The uniforms of `request` for images of extent(), its sampling made progressive.
+    shader::RenderUniforms uniformsOf(const FrameRequest& request) const;
+    GpuIntegrator integratorOf(const shader::RenderUniforms& uniforms, int spp) const;
     void createCostResources();
     void writeCostDescriptors() const;
 

@@ -1,8 +1,8 @@
 // The GPU engine's core, shared by its two ways to render, the batches of the render interface (GpuEngine)
 // and the progressive frames a window shows (ProgressiveFrame): the path-tracing pipeline, compiled once, and
-// the scene on the device (GpuScene: BLAS/TLAS, buffers, images). A caller traces into an accumulation image of its own with three
-// calls: a descriptor set naming the scene and its target, the uniforms of a camera and settings, and the
-// launches. It owns no image, and only setScene waits for the device. A new scene whose geometry is the
+// the scene on the device (GpuScene: BLAS/TLAS, buffers, images). A caller traces into an accumulation image
+// of its own with three calls: a descriptor set naming the scene and its target, the uniforms of a camera and
+// settings, and the launches. It owns no image, and only setScene waits for the device. A new scene whose geometry is the
 // last one's keeps its acceleration structures (GpuScene, GeometryFingerprint); the builds are counted.
 #pragma once
 

@@ -58,7 +58,8 @@ TEST(PipelineSpecialization, ModesKeyOnWhatTheySay)
     EXPECT_EQ(mixtureInMedia.constants[kSpecIdHitUv], 0u) << "no image texture";
     mixtureInMedia.constants[kSpecIdExactSphereC] = kSpecDynamic;
     mixtureInMedia.constants[kSpecIdHitUv] = kSpecDynamic;
-    EXPECT_EQ(mixtureInMedia, PipelineSpecialization::strategyOf(mixture)) << "but the sphere tests' c and the uv (below)";
+    EXPECT_EQ(mixtureInMedia, PipelineSpecialization::strategyOf(mixture))
+        << "but the sphere tests' c and the uv (below)";
     EXPECT_NE(PipelineSpecialization::of(Specialize::Full, u, scene | kFeatureMedia).features(), kSpecDynamic)
         << "NEE has its mask with media too";
     EXPECT_NE(PipelineSpecialization::of(Specialize::Full, u, scene), PipelineSpecialization::strategyOf(u));
