@@ -138,8 +138,23 @@ void Scene::validate() const
         require(m.type != MaterialType::DiffuseLight || m.emissionTexture != kNoIndex, id,
                 fmt::format("diffuse light material {} has no emission", i));
         require(m.type == MaterialType::DiffuseLight || m.albedoTexture != kNoIndex ||
-                    m.type == MaterialType::Dielectric,
+                    m.type == MaterialType::Dielectric || m.type == MaterialType::RoughDielectric ||
+                    (m.type == MaterialType::Conductor && m.fresnel == FresnelModel::Exact),
                 id, fmt::format("material {} has no albedo texture", i));
+        const bool microfacet = m.type == MaterialType::Conductor || m.type == MaterialType::RoughDielectric ||
+                                m.type == MaterialType::GltfPbr;
+        require(!microfacet || (m.alphaX >= 0.0f && m.alphaX <= 1.0f && m.alphaY >= 0.0f && m.alphaY <= 1.0f), id,
+                fmt::format("material {} has roughness alpha ({}, {}) outside [0, 1]", i, m.alphaX, m.alphaY));
+        require((m.type != MaterialType::RoughDielectric && m.type != MaterialType::GltfPbr) ||
+                    (m.ior > 0.0f && std::isfinite(m.ior)), id,
+                fmt::format("material {} has index of refraction {}", i, m.ior));
+        require(m.type != MaterialType::Conductor || m.fresnel == FresnelModel::Schlick ||
+                    (glm::all(glm::greaterThan(m.eta, vec3(0.0f))) && glm::all(glm::greaterThanEqual(m.k, vec3(0.0f))) &&
+                     std::isfinite(m.eta.x + m.eta.y + m.eta.z + m.k.x + m.k.y + m.k.z)), id,
+                fmt::format("conductor material {} needs eta > 0 and k >= 0", i));
+        require(m.type != MaterialType::GltfPbr ||
+                    (m.metallic >= 0.0f && m.metallic <= 1.0f && textureOk(m.metallicRoughnessTexture)), id,
+                fmt::format("glTF material {} has metallic {} outside [0, 1] or a missing texture", i, m.metallic));
     }
     const auto materialOk = [&](std::uint32_t m) { return m < materials.size(); };
     for (std::size_t gi = 0; gi < groups.size(); ++gi)

@@ -25,6 +25,7 @@ namespace rt
 {
 using shader::BackgroundType;
 using shader::Estimator;
+using shader::FresnelModel;
 using shader::PixelSampling;
 using shader::kNoIndex;
 using shader::LightData;

@@ -56,7 +56,12 @@ std::uint32_t SceneBuilder::perlin(TextureType type, float scale)
     return append(m_scene.textures, t);
 }
 
-std::uint32_t SceneBuilder::material(MaterialData m) { return append(m_scene.materials, m); }
+std::uint32_t SceneBuilder::material(MaterialData m)
+{
+    if (m.type != MaterialType::GltfPbr)
+        m.metallicRoughnessTexture = kNoIndex; // one spelling of "none", as the scene reader writes it
+    return append(m_scene.materials, m);
+}
 
 std::uint32_t SceneBuilder::lambertianTextured(std::uint32_t texture)
 {
@@ -86,6 +91,55 @@ std::uint32_t SceneBuilder::diffuseLight(const vec3& radiance)
 std::uint32_t SceneBuilder::isotropic(const vec3& albedo)
 {
     return material({.type = MaterialType::Isotropic, .albedoTexture = solid(albedo), .emissionTexture = kNoIndex});
+}
+
+std::uint32_t SceneBuilder::conductor(const vec3& eta, const vec3& k, float alphaX, float alphaY)
+{
+    return material({.type = MaterialType::Conductor,
+                     .albedoTexture = kNoIndex,
+                     .emissionTexture = kNoIndex,
+                     .fresnel = FresnelModel::Exact,
+                     .alphaX = alphaX,
+                     .alphaY = alphaY,
+                     .eta = eta,
+                     .k = k,
+                     .metallicRoughnessTexture = kNoIndex});
+}
+
+std::uint32_t SceneBuilder::conductorSchlick(const vec3& f0, float alphaX, float alphaY)
+{
+    return material({.type = MaterialType::Conductor,
+                     .albedoTexture = solid(f0),
+                     .emissionTexture = kNoIndex,
+                     .fresnel = FresnelModel::Schlick,
+                     .alphaX = alphaX,
+                     .alphaY = alphaY,
+                     .metallicRoughnessTexture = kNoIndex});
+}
+
+std::uint32_t SceneBuilder::roughDielectric(float alpha, float ior)
+{
+    return material({.type = MaterialType::RoughDielectric,
+                     .albedoTexture = kNoIndex,
+                     .emissionTexture = kNoIndex,
+                     .ior = ior,
+                     .fresnel = FresnelModel::Exact,
+                     .alphaX = alpha,
+                     .alphaY = alpha,
+                     .metallicRoughnessTexture = kNoIndex});
+}
+
+std::uint32_t SceneBuilder::gltfPbr(std::uint32_t baseColorTexture, float metallic, float roughness,
+                                    std::uint32_t metallicRoughnessTexture, float ior)
+{
+    return material({.type = MaterialType::GltfPbr,
+                     .albedoTexture = baseColorTexture,
+                     .emissionTexture = kNoIndex,
+                     .ior = ior,
+                     .alphaX = roughness * roughness, // glTF 2.0 Appendix B.3.2: alpha = roughness^2
+                     .alphaY = roughness * roughness,
+                     .metallic = metallic,
+                     .metallicRoughnessTexture = metallicRoughnessTexture});
 }
 
 std::uint32_t SceneBuilder::emissiveLambertian(const vec3& albedo, const vec3& radiance)

@@ -29,6 +29,15 @@ public:
     std::uint32_t dielectric(float ior);
     std::uint32_t diffuseLight(const vec3& radiance);
     std::uint32_t isotropic(const vec3& albedo);
+    /// A rough conductor of GGX roughness (alphaX, alphaY) with the exact Fresnel term of eta + i k (per channel).
+    std::uint32_t conductor(const vec3& eta, const vec3& k, float alphaX, float alphaY);
+    /// A rough conductor whose Fresnel term is Schlick's from the reflectance f0 at normal incidence.
+    std::uint32_t conductorSchlick(const vec3& f0, float alphaX, float alphaY);
+    /// Rough glass of GGX roughness alpha and index of refraction ior (inside / outside).
+    std::uint32_t roughDielectric(float alpha, float ior);
+    /// glTF 2.0's metallic-roughness material: factors, textures (kNoIndex: none) and the dielectric's ior.
+    std::uint32_t gltfPbr(std::uint32_t baseColorTexture, float metallic, float roughness,
+                          std::uint32_t metallicRoughnessTexture, float ior = 1.5f);
     /// A Lambertian surface that also emits: the white furnace's walls.
     std::uint32_t emissiveLambertian(const vec3& albedo, const vec3& radiance);
 

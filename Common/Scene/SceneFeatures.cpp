@@ -46,9 +46,14 @@ void useMaterial(const Scene& scene, std::uint32_t material, std::vector<bool>& 
     case MaterialType::Dielectric: f.dielectric = true; break;
     case MaterialType::DiffuseLight: f.diffuseLight = true; break;
     case MaterialType::Isotropic: break; // the media's phase function: SceneFeatures::media
+    case MaterialType::Conductor: f.conductor = true; break;
+    case MaterialType::RoughDielectric: f.roughDielectric = true; break;
+    case MaterialType::GltfPbr: f.gltfPbr = true; break;
     }
     useTexture(scene, m.albedoTexture, f);
     useTexture(scene, m.emissionTexture, f);
+    if (m.type == MaterialType::GltfPbr)
+        useTexture(scene, m.metallicRoughnessTexture, f);
 }
 
 /// The largest factor by which `t` stretches a length (the longest column of its linear part).
@@ -201,6 +206,9 @@ std::string SceneFeatures::describe() const
     add(lambertian, "lambertian");
     add(metal, "metal");
     add(dielectric, "dielectric");
+    add(conductor, "conductor");
+    add(roughDielectric, "rough-dielectric");
+    add(gltfPbr, "gltf-pbr");
     add(diffuseLight, "diffuse-light");
     add(checkerTextures, "checker");
     add(imageTextures, "image-textures");
@@ -226,6 +234,9 @@ nlohmann::json SceneFeatures::toJson() const
             {"lambertian", lambertian},
             {"metal", metal},
             {"dielectric", dielectric},
+            {"conductor", conductor},
+            {"rough_dielectric", roughDielectric},
+            {"gltf_pbr", gltfPbr},
             {"diffuse_light", diffuseLight},
             {"checker_textures", checkerTextures},
             {"image_textures", imageTextures},

@@ -37,6 +37,9 @@ struct SceneFeatures
     bool lambertian = false;
     bool metal = false;
     bool dielectric = false;
+    bool conductor = false; // the microfacet materials (Shared/Bsdf/)
+    bool roughDielectric = false;
+    bool gltfPbr = false;
     bool diffuseLight = false;
     // Textures that some used material reads, by kind (solid colours are always there)
     bool checkerTextures = false;

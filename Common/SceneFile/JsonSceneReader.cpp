@@ -24,6 +24,7 @@ namespace
 constexpr float kMaxRadiance = 1e30f; // finite with room for the engines' sums
 constexpr float kMinIor = 1e-3f;
 constexpr float kMaxIor = 100.0f;
+constexpr float kMinConductorEta = 1e-3f; // silver's eta is 0.05-0.16 in the visible range
 
 /// Runs a loader; an AssetError it throws gets the pointer of the value that named the file.
 template <typename F>
@@ -290,10 +291,38 @@ private:
         return m_builder.solid(m[key].vector3(0.0f, maxValue));
     }
 
+    /// A microfacet material's GGX roughness: "alpha" as is (a number, or [alpha_x, alpha_y] where `anisotropic`),
+    /// or "roughness" as glTF maps it, alpha = roughness^2 (pbrt-v4 would take its square root instead).
+    static void readRoughness(const JsonNode& m, MaterialData& mat, bool anisotropic)
+    {
+        if (m.has("alpha") == m.has("roughness"))
+            m.fail("give the roughness as 'alpha' (GGX alpha) or as 'roughness' (alpha = roughness^2), one of them");
+        if (m.has("roughness"))
+        {
+            const float r = m["roughness"].number(0.0f, 1.0f);
+            mat.alphaX = mat.alphaY = r * r;
+            return;
+        }
+        const JsonNode a = m["alpha"];
+        if (anisotropic && a.value().is_array())
+        {
+            if (a.size() != 2)
+                a.fail("expected [alpha_x, alpha_y]");
+            mat.alphaX = a[0].number(0.0f, 1.0f);
+            mat.alphaY = a[1].number(0.0f, 1.0f);
+        }
+        else
+            mat.alphaX = mat.alphaY = a.number(0.0f, 1.0f);
+    }
+
     void readMaterial(const JsonNode& m)
     {
-        MaterialData mat{.type = MaterialType::Lambertian, .albedoTexture = kNoIndex, .emissionTexture = kNoIndex};
-        switch (m["type"].choice({"lambertian", "metal", "dielectric", "diffuse_light", "isotropic"}))
+        MaterialData mat{.type = MaterialType::Lambertian,
+                         .albedoTexture = kNoIndex,
+                         .emissionTexture = kNoIndex,
+                         .metallicRoughnessTexture = kNoIndex};
+        switch (m["type"].choice(
+            {"lambertian", "metal", "dielectric", "diffuse_light", "isotropic", "conductor", "rough_dielectric", "gltf_pbr"}))
         {
         case 0:
             m.allowOnly({"name", "type", "albedo", "albedo_texture", "radiance", "radiance_texture"});
@@ -319,10 +348,52 @@ private:
             mat.type = MaterialType::DiffuseLight;
             mat.emissionTexture = colorOrTexture(m, "radiance", kMaxRadiance);
             break;
-        default:
+        case 4:
             m.allowOnly({"name", "type", "albedo", "albedo_texture"});
             mat.type = MaterialType::Isotropic;
             mat.albedoTexture = colorOrTexture(m, "albedo", 1.0f);
+            break;
+        case 5:
+            m.allowOnly({"name", "type", "alpha", "roughness", "eta", "k", "f0", "f0_texture"});
+            mat.type = MaterialType::Conductor;
+            readRoughness(m, mat, true);
+            if (m.has("f0") || m.has("f0_texture"))
+            {
+                if (m.has("eta") || m.has("k"))
+                    m.fail("give 'f0' (Schlick) or 'eta' and 'k' (exact), not both");
+                mat.fresnel = shader::FresnelModel::Schlick;
+                mat.albedoTexture = colorOrTexture(m, "f0", 1.0f);
+            }
+            else
+            {
+                mat.fresnel = shader::FresnelModel::Exact;
+                mat.eta = m["eta"].vector3(kMinConductorEta, kMaxIor);
+                mat.k = m["k"].vector3(0.0f, kMaxIor);
+            }
+            break;
+        case 6:
+            m.allowOnly({"name", "type", "alpha", "roughness", "ior"});
+            mat.type = MaterialType::RoughDielectric;
+            mat.fresnel = shader::FresnelModel::Exact;
+            readRoughness(m, mat, false);
+            mat.ior = m["ior"].number(kMinIor, kMaxIor);
+            break;
+        default:
+            m.allowOnly({"name", "type", "base_color", "base_color_texture", "metallic", "roughness", "alpha",
+                         "metallic_roughness_texture", "ior"});
+            mat.type = MaterialType::GltfPbr;
+            mat.albedoTexture = m.has("base_color") || m.has("base_color_texture") ? colorOrTexture(m, "base_color", 1.0f)
+                                                                                   : m_builder.solid(vec3(1.0f));
+            mat.metallic = m.has("metallic") ? m["metallic"].number(0.0f, 1.0f) : 1.0f;
+            if (m.has("alpha") || m.has("roughness"))
+                readRoughness(m, mat, false);
+            else
+                mat.alphaX = mat.alphaY = 1.0f; // glTF's default roughnessFactor 1
+            mat.metallicRoughnessTexture = m.has("metallic_roughness_texture")
+                                               ? m_textureNames.resolve(m["metallic_roughness_texture"],
+                                                                        scene().textures.size())
+                                               : kNoIndex;
+            mat.ior = m.has("ior") ? m["ior"].number(1.0f, kMaxIor) : 1.5f;
         }
         m_materialNames.add(m, static_cast<std::uint32_t>(scene().materials.size()));
         scene().materials.push_back(mat);

@@ -75,6 +75,31 @@ ojson material(const MaterialData& m)
                 {"fresnel", m.fresnel == shader::FresnelModel::Exact ? "exact" : "schlick"}};
     case MaterialType::DiffuseLight: return {{"type", "diffuse_light"}, {"radiance_texture", m.emissionTexture}};
     case MaterialType::Isotropic: return {{"type", "isotropic"}, {"albedo_texture", m.albedoTexture}};
+    case MaterialType::Conductor:
+    {
+        ojson j = {{"type", "conductor"}, {"alpha", ojson::array({number(m.alphaX), number(m.alphaY)})}};
+        if (m.fresnel == shader::FresnelModel::Schlick)
+            j["f0_texture"] = m.albedoTexture;
+        else
+        {
+            j["eta"] = ojson::array({number(m.eta.x), number(m.eta.y), number(m.eta.z)});
+            j["k"] = ojson::array({number(m.k.x), number(m.k.y), number(m.k.z)});
+        }
+        return j;
+    }
+    case MaterialType::RoughDielectric:
+        return {{"type", "rough_dielectric"}, {"alpha", number(m.alphaX)}, {"ior", number(m.ior)}};
+    case MaterialType::GltfPbr:
+    {
+        ojson j = {{"type", "gltf_pbr"},
+                   {"base_color_texture", m.albedoTexture},
+                   {"metallic", number(m.metallic)},
+                   {"alpha", number(m.alphaX)},
+                   {"ior", number(m.ior)}};
+        if (m.metallicRoughnessTexture != kNoIndex)
+            j["metallic_roughness_texture"] = m.metallicRoughnessTexture;
+        return j;
+    }
     }
     throw SceneError(fmt::format("material type {} cannot be written", static_cast<unsigned>(m.type)));
 }

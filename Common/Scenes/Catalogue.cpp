@@ -39,6 +39,10 @@ const std::vector<SceneInfo>& sceneCatalogue()
         {"sphere-light-closeup", "Sphere light just above a floor", "scenes.md", sphereLightCloseup},
         {"triangle-lights", "Cornell box lit by triangles: ceiling halves, a sliver, an emitting mesh",
          "scenes.md", triangleLights, kTakesMesh},
+        {"veach-mis", "Veach's MIS scene: four glossy plates, four sphere lights of equal power", "Veach 1997 fig. 9.2",
+         veachMis},
+        {"glossy-cornell", "cornell-box-lights with a rough conductor, a glTF floor and rough glass", "scenes.md",
+         glossyCornell},
     };
     return catalogue;
 }

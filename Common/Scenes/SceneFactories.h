@@ -41,6 +41,9 @@ Scene manyLights(const SceneOptions&);
 Scene sphereLightCloseup(const SceneOptions&);
 Scene triangleLights(const SceneOptions&);
 
+Scene veachMis(const SceneOptions&);
+Scene glossyCornell(const SceneOptions&);
+
 // Pieces several sources share.
 inline const vec3 kSky{0.70f, 0.80f, 1.00f};
 void setGradientSky(Scene& scene); // white -> (0.5, 0.7, 1.0), RTIOW §4
@@ -52,8 +55,8 @@ void randomSphereField(SceneBuilder& b, std::uint32_t group, std::uint32_t seed,
 void finalSceneCamera(Scene& scene, float defocusAngle);
 /// The five book-2 Cornell box walls (without light) in RTTNW §7's orientation.
 void rtnwCornellWalls(SceneBuilder& b, std::uint32_t group);
-/// The five book-3 walls (normals facing into the box, RTTROYL §12).
-void rtrolCornellWalls(SceneBuilder& b, std::uint32_t group);
+/// The five book-3 walls (normals facing into the box, RTTROYL §12); the floor of material `floor` when given.
+void rtrolCornellWalls(SceneBuilder& b, std::uint32_t group, std::uint32_t floor = kNoIndex);
 void cornellCamera(Scene& scene);
 /// A mesh loaded by loadObj (so already in MeshFit.h's fit frame: floor centre at the origin, fit height 1)
 /// placed by an instance: scaled by `height`, rotated about y, its floor centre moved to `base`. The fit was

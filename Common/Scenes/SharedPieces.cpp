@@ -78,7 +78,7 @@ void rtnwCornellWalls(SceneBuilder& b, std::uint32_t g)
     b.quad(g, {0, 0, 555}, {555, 0, 0}, {0, 555, 0}, white);
 }
 
-void rtrolCornellWalls(SceneBuilder& b, std::uint32_t g)
+void rtrolCornellWalls(SceneBuilder& b, std::uint32_t g, std::uint32_t floor)
 {
     const std::uint32_t red = b.lambertian({0.65f, 0.05f, 0.05f});
     const std::uint32_t white = b.lambertian(vec3(0.73f));
@@ -86,7 +86,7 @@ void rtrolCornellWalls(SceneBuilder& b, std::uint32_t g)
     b.quad(g, {555, 0, 0}, {0, 0, 555}, {0, 555, 0}, green);
     b.quad(g, {0, 0, 555}, {0, 0, -555}, {0, 555, 0}, red);
     b.quad(g, {0, 555, 0}, {555, 0, 0}, {0, 0, 555}, white);
-    b.quad(g, {0, 0, 555}, {555, 0, 0}, {0, 0, -555}, white);
+    b.quad(g, {0, 0, 555}, {555, 0, 0}, {0, 0, -555}, floor != kNoIndex ? floor : white);
     b.quad(g, {555, 0, 555}, {-555, 0, 0}, {0, 555, 0}, white);
 }
 

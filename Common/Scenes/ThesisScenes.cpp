@@ -67,26 +67,32 @@ vec3 hueColor(float h)
     const vec3 k = glm::fract(vec3(h) + vec3(0.0f, 2.0f / 3.0f, 1.0f / 3.0f));
     return glm::clamp(glm::abs(6.0f * k - 3.0f) - 1.0f, 0.0f, 1.0f);
 }
-} // namespace
-
-Scene cornellBoxLights(const SceneOptions&)
+/// cornell-box-lights as `id`; with `glossy`, glossy-cornell's materials (scenes.md): the floor glTF's
+/// metallic-roughness material, the white sphere a rough conductor, the glass sphere rough.
+Scene cornellBoxLightsScene(const char* id, bool glossy)
 {
-    SceneBuilder b("cornell-box-lights");
+    SceneBuilder b(id);
     const std::uint32_t w = b.world();
-    rtrolCornellWalls(b, w);
+    rtrolCornellWalls(b, w, glossy ? b.gltfPbr(b.solid(vec3(0.73f)), 0.0f, 0.3f, kNoIndex) : kNoIndex);
     const std::uint32_t strip = b.diffuseLight(vec3(kStripRadiance));
     for (int y = 100; y <= 500; y += 50)
         b.quad(w, {455.0f, static_cast<float>(y), 554.0f}, kStripEdgeU, kStripEdgeV, strip);
     b.sphere(w, {530, 530, 277}, kLampRadius, b.diffuseLight(kLampRadiance[0]));
     b.sphere(w, {277, 530, 277}, kLampRadius, b.diffuseLight(kLampRadiance[1]));
     b.sphere(w, {30, 530, 277}, kLampRadius, b.diffuseLight(kLampRadiance[2]));
-    b.sphere(w, {405, 100, 277.5f}, 100.0f, b.dielectric(1.5f));
-    b.sphere(w, {150, 100, 277.5f}, 100.0f, b.lambertian(vec3(0.73f)));
+    b.sphere(w, {405, 100, 277.5f}, 100.0f, glossy ? b.roughDielectric(0.05f, 1.5f) : b.dielectric(1.5f));
+    b.sphere(w, {150, 100, 277.5f}, 100.0f,
+             glossy ? b.conductorSchlick(vec3(0.9f), 0.1f, 0.1f) : b.lambertian(vec3(0.73f)));
     Scene& s = b.scene();
     cornellCamera(s);
     s.defaults = {.spp = 100, .depth = 50, .width = 600, .aspect = 1.0f, .unidirectionalLight = true};
     return b.finish();
 }
+} // namespace
+
+Scene cornellBoxLights(const SceneOptions&) { return cornellBoxLightsScene("cornell-box-lights", false); }
+
+Scene glossyCornell(const SceneOptions&) { return cornellBoxLightsScene("glossy-cornell", true); }
 
 Scene manyLights(const SceneOptions& options)
 {

@@ -46,6 +46,9 @@ RT_ENUM_VALUE(MaterialType, Metal, 1)        // albedo texture; mirror reflectio
 RT_ENUM_VALUE(MaterialType, Dielectric, 2)   // index of refraction `ior`; Fresnel reflectance by `fresnel`
 RT_ENUM_VALUE(MaterialType, DiffuseLight, 3) // emission texture only; does not scatter
 RT_ENUM_VALUE(MaterialType, Isotropic, 4)    // phase function of constant media; albedo texture
+RT_ENUM_VALUE(MaterialType, Conductor, 5)    // GGX rough metal (Shared/Bsdf/Conductor.h): alpha, Fresnel from eta + i k or F0
+RT_ENUM_VALUE(MaterialType, RoughDielectric, 6) // GGX rough glass (Shared/Bsdf/RoughDielectric.h): alphaX, ior
+RT_ENUM_VALUE(MaterialType, GltfPbr, 7)      // glTF 2.0 metallic-roughness BRDF (Shared/Bsdf/GltfPbr.h)
 RT_ENUM_END(MaterialType)
 
 // A dielectric's Fresnel reflectance (--fresnel; Shared/SpecularScattering.h).
@@ -124,13 +127,19 @@ struct TextureData
 struct MaterialData
 {
     RT_TAG(MaterialType) type;
-    uint albedoTexture; // index into the texture buffer, kNoIndex if none
+    uint albedoTexture; // Lambertian, Metal, Isotropic: albedo; Conductor (Schlick): F0; GltfPbr: base colour
     uint emissionTexture; // kNoIndex if the material does not emit
     float fuzz; // Metal: radius of the fuzz sphere around the mirror direction
-    float ior; // Dielectric: index of refraction (inside / outside)
-    RT_TAG(FresnelModel) fresnel; // Dielectric: how its reflectance is computed
-    float pad1;
-    float pad2;
+    float ior; // Dielectric, RoughDielectric: index of refraction (inside / outside); GltfPbr: the dielectric's
+    RT_TAG(FresnelModel) fresnel; // Dielectric: how its reflectance is computed; Conductor: Exact (eta, k) or Schlick (F0)
+    // GGX roughness (>= kMinMicrofacetAlpha) along the shading frame's tangents (Conductor; RoughDielectric
+    // reads alphaX); GltfPbr: alpha at a roughness texel of 1 (roughnessFactor^2), the texel g giving alphaX g^2.
+    float alphaX;
+    float alphaY;
+    vec3 eta; // Conductor (Exact): real part of the complex index of refraction, per RGB channel
+    float metallic; // GltfPbr: metallicFactor
+    vec3 k; // Conductor (Exact): imaginary part (extinction coefficient)
+    uint metallicRoughnessTexture; // GltfPbr: b = metallic, g = roughness (linear); kNoIndex if none
 };
 
 /// One slot of a light's alias table (Walker 1977; Vose 1991): slot i keeps light i with probability
@@ -348,6 +357,9 @@ RT_CONST(uint, kFeatureTriangleLights, 0x1000u)
 RT_CONST(uint, kFeatureThinLens, 0x2000u)        // RenderUniforms::thinLens (the render's camera, not the scene's)
 RT_CONST(uint, kFeatureGradientBackground, 0x4000u) // RenderUniforms::backgroundType
 RT_CONST(uint, kFeatureIsotropic, 0x8000u)       // an isotropic material (media's phase functions)
+RT_CONST(uint, kFeatureConductor, 0x10000u)      // the microfacet materials
+RT_CONST(uint, kFeatureRoughDielectric, 0x20000u)
+RT_CONST(uint, kFeatureGltfPbr, 0x40000u)
 
 RT_ENUM_BEGIN(MediumBoundary)
 RT_ENUM_VALUE(MediumBoundary, Sphere, 0) // center, radius
@@ -527,7 +539,7 @@ static_assert(offsetof(RenderUniforms, background0) == 96);
 static_assert(offsetof(RenderUniforms, sampling) == 128);
 static_assert(sizeof(HitPayload) == 48);
 static_assert(sizeof(TextureData) == 40);
-static_assert(sizeof(MaterialData) == 32);
+static_assert(sizeof(MaterialData) == 64);
 static_assert(sizeof(LightData) == 104);
 static_assert(sizeof(AliasEntry) == 12);
 static_assert(offsetof(LightData, p0) == 16);

@@ -30,6 +30,9 @@ RT_FN Onb onbFromNormal(vec3 n)
 
 RT_FN vec3 onbToWorld(RT_IN(Onb) onb, vec3 local) { return local.x * onb.u + local.y * onb.v + local.z * onb.w; }
 
+/// The inverse of onbToWorld: world -> (x, y, z) along (u, v, w).
+RT_FN vec3 onbToLocal(RT_IN(Onb) onb, vec3 world) { return vec3(dot(world, onb.u), dot(world, onb.v), dot(world, onb.w)); }
+
 RT_SHADER_NAMESPACE_END
 
 #endif

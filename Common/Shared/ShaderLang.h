@@ -39,6 +39,7 @@ using rt::kInv4Pi;
 using rt::kInvPi;
 using rt::kPi;
 using rt::lengthSquared;
+using rt::luminance;
 using rt::reflect;
 using rt::safeSqrt;
 
@@ -114,6 +115,12 @@ float safeSqrt(float x)
 float lengthSquared(vec3 v)
 {
     return dot(v, v);
+}
+
+/// Rec. 709 luminance of linear RGB.
+float luminance(vec3 c)
+{
+    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
 }
 
 bool isFiniteVec(vec3 v)

@@ -5,43 +5,12 @@
 #ifndef RT_SHARED_SPECULAR_SCATTERING_H
 #define RT_SHARED_SPECULAR_SCATTERING_H
 
+#include "Shared/Fresnel.h"
 #include "Shared/HostDevice.h"
 #include "Shared/ShaderLang.h"
 #include "Shared/Warps.h"
 
 RT_SHADER_NAMESPACE_BEGIN
-
-/// Schlick's approximation of the Fresnel reflectance (Schlick, "An Inexpensive BRDF Model for
-/// Physically-based Rendering", Computer Graphics Forum 13(3), 1994), RTIOW §11.4. `etaRatio` = eta_incident /
-/// eta_transmitted; `cosine` of the incident direction to the normal.
-RT_FN float schlickReflectance(float cosine, float etaRatio)
-{
-    float r0 = (1.0f - etaRatio) / (1.0f + etaRatio);
-    r0 *= r0;
-    const float m = 1.0f - cosine;
-    return r0 + (1.0f - r0) * (m * m) * (m * m) * m;
-}
-
-/// The Fresnel reflectance of unpolarised light at a smooth dielectric boundary: the mean of the squared
-/// amplitude ratios r_parallel and r_perpendicular (Born & Wolf, Principles of Optics, §1.5.2; pbrt-v4
-/// §9.3.1 FrDielectric). `cosine` of the incident direction to the normal, in [0, 1]; `etaRatio` =
-/// eta_incident / eta_transmitted. 1 under total internal reflection.
-RT_FN float fresnelDielectric(float cosine, float etaRatio)
-{
-    const float sin2T = etaRatio * etaRatio * max(0.0f, 1.0f - cosine * cosine);
-    if (sin2T >= 1.0f)
-        return 1.0f;
-    const float cosT = sqrt(1.0f - sin2T);
-    const float rParallel = (cosine - etaRatio * cosT) / (cosine + etaRatio * cosT);
-    const float rPerpendicular = (etaRatio * cosine - cosT) / (etaRatio * cosine + cosT);
-    return 0.5f * (rParallel * rParallel + rPerpendicular * rPerpendicular);
-}
-
-/// The reflectance `model` (FresnelModel) gives.
-RT_FN float dielectricReflectance(float cosine, float etaRatio, RT_TAG(FresnelModel) model)
-{
-    return model == RT_ENUM(FresnelModel, Exact) ? fresnelDielectric(cosine, etaRatio) : schlickReflectance(cosine, etaRatio);
-}
 
 /// Glass (RTIOW §11): the direction after the incident direction `d` meets the surface with unit normal `ns`
 /// (facing the incoming ray), `etaRatio` = eta_incident / eta_transmitted: the mirror direction on total

@@ -13,6 +13,7 @@
 #include "Scene/Perlin.h"
 // The namespace-level Shared headers that the shading includes: first here, so that inside the class their
 // include guards leave nothing.
+#include "Shared/Bsdf/MicrofacetBsdf.h"
 #include "Shared/DiffuseScattering.h"
 #include "Shared/Estimator.h"
 #include "Shared/HostDevice.h"
@@ -70,6 +71,9 @@ public:
     static constexpr bool kHasLambertian = true;
     static constexpr bool kHasMetal = true;
     static constexpr bool kHasDielectric = true;
+    static constexpr bool kHasConductor = true;
+    static constexpr bool kHasRoughDielectric = true;
+    static constexpr bool kHasGltfPbr = true;
     static constexpr bool kHasIsotropic = C.general || C.media;
     static constexpr bool kHasMedia = C.general || C.media;
     static constexpr bool kHasCheckerTextures = C.general || C.textures;

@@ -32,6 +32,9 @@ constexpr FeatureName kFeatureNames[] = {
     {kFeatureThinLens, "thin-lens"},
     {kFeatureGradientBackground, "gradient"},
     {kFeatureIsotropic, "isotropic"},
+    {kFeatureConductor, "conductor"},
+    {kFeatureRoughDielectric, "rough-dielectric"},
+    {kFeatureGltfPbr, "gltf-pbr"},
 };
 
 /// The bits the render decides, not the scene: a window may open the lens of a pinhole scene's camera.
@@ -161,6 +164,9 @@ std::uint32_t featureBitsOf(const Scene& scene, const SceneFeatures& f, const Hi
     set(f.lambertian, kFeatureLambertian);
     set(f.metal, kFeatureMetal);
     set(f.dielectric, kFeatureDielectric);
+    set(f.conductor, kFeatureConductor);
+    set(f.roughDielectric, kFeatureRoughDielectric);
+    set(f.gltfPbr, kFeatureGltfPbr);
     // Any isotropic material, used or not (SceneFeatures counts them under media; one on a surface is legal).
     for (const MaterialData& m : scene.materials)
         set(m.type == MaterialType::Isotropic, kFeatureIsotropic);

@@ -276,4 +276,51 @@ TEST(SceneFile, DielectricsTakeTheirFresnelModel)
     EXPECT_NE(errorOf(replaced(doc, "\"exact\"", "\"fast\"")).find("/materials/0/fresnel: expected one of"),
               std::string::npos);
 }
+TEST(SceneFile, MicrofacetMaterialsTakeAlphaOrGltfRoughness)
+{
+    const std::string doc = R"({"materials": [
+        {"type": "conductor", "alpha": [0.1, 0.3], "eta": [0.2, 0.9, 1.1], "k": [3.9, 2.4, 2.2]},
+        {"type": "conductor", "roughness": 0.5, "f0": [0.9, 0.6, 0.3]},
+        {"type": "rough_dielectric", "alpha": 0.05, "ior": 1.5},
+        {"type": "gltf_pbr", "base_color": [0.73, 0.73, 0.73], "metallic": 0.25, "roughness": 0.3},
+        {"type": "gltf_pbr"}],
+        "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": 0}]})";
+    const Scene s = readText(doc);
+    ASSERT_EQ(s.materials.size(), 5u);
+    const MaterialData& exact = s.materials[0];
+    EXPECT_EQ(exact.type, MaterialType::Conductor);
+    EXPECT_EQ(exact.fresnel, FresnelModel::Exact);
+    EXPECT_EQ(exact.alphaX, 0.1f);
+    EXPECT_EQ(exact.alphaY, 0.3f);
+    EXPECT_EQ(exact.eta, vec3(0.2f, 0.9f, 1.1f));
+    EXPECT_EQ(exact.k, vec3(3.9f, 2.4f, 2.2f));
+    const MaterialData& schlick = s.materials[1];
+    EXPECT_EQ(schlick.fresnel, FresnelModel::Schlick);
+    EXPECT_EQ(schlick.alphaX, 0.25f) << "roughness as glTF maps it: alpha = roughness^2";
+    EXPECT_EQ(s.textures[schlick.albedoTexture].color0, vec3(0.9f, 0.6f, 0.3f));
+    EXPECT_EQ(s.materials[2].type, MaterialType::RoughDielectric);
+    EXPECT_EQ(s.materials[2].ior, 1.5f);
+    const MaterialData& gltf = s.materials[3];
+    EXPECT_EQ(gltf.type, MaterialType::GltfPbr);
+    EXPECT_EQ(gltf.metallic, 0.25f);
+    EXPECT_EQ(gltf.alphaX, 0.3f * 0.3f);
+    EXPECT_EQ(gltf.ior, 1.5f) << "glTF's default ior";
+    EXPECT_EQ(gltf.metallicRoughnessTexture, kNoIndex);
+    EXPECT_EQ(s.materials[4].metallic, 1.0f) << "glTF's defaults: metallic 1, roughness 1";
+    EXPECT_EQ(s.materials[4].alphaX, 1.0f);
+
+    const std::vector<std::pair<std::string, std::string>> bad = {
+        {replaced(doc, "\"alpha\": [0.1, 0.3]", "\"alpha\": 0.1, \"roughness\": 0.3"), "one of them"},
+        {replaced(doc, "\"alpha\": [0.1, 0.3]", "\"alpha\": [0.1, 1.3]"), "/materials/0/alpha/1: expected a number in [0, 1]"},
+        {replaced(doc, "\"roughness\": 0.5, \"f0\"", "\"roughness\": 0.5, \"eta\": [1, 1, 1], \"f0\""), "not both"},
+        {replaced(doc, "\"eta\": [0.2, 0.9, 1.1], ", ""), "/materials/0: 'eta' is missing"},
+        {replaced(doc, "\"alpha\": 0.05, \"ior\": 1.5", "\"alpha\": [0.05, 0.1], \"ior\": 1.5"), "/materials/2/alpha: expected a number"},
+        {replaced(doc, "\"metallic\": 0.25", "\"metallic\": 2"), "/materials/3/metallic: expected a number in [0, 1]"},
+    };
+    for (const auto& [text, expected] : bad)
+    {
+        const std::string message = errorOf(text);
+        EXPECT_NE(message.find(expected), std::string::npos) << "expected '" << expected << "' in: " << message;
+    }
+}
 } // namespace rt

@@ -98,6 +98,47 @@ RT_FN bool shadePathVertex(RT_INOUT(PathState) path, uint segment, RT_IN(HitPayl
         path.previousBsdfPdf = diffusePdf(phase, surface.shadingNormal, direction);
         path.previousNormal = phase ? vec3(0.0f) : surface.shadingNormal;
     }
+    else if (isMicrofacet(m.type))
+    {
+        // A glossy lobe: NEE (its three numbers first, as at a diffuse vertex) with the BSDF's exact pdf in the
+        // MIS weights, then the BSDF's direction (two numbers, and one that picks the lobe). Glass transmits, so
+        // its light samples see no horizon and leave from the hit point itself; the emission its BSDF ray
+        // finds is weighed from that same point (previousPoint below).
+        float uSelect = 0.0f;
+        vec2 uLight = vec2(0.0f);
+        if (nee)
+        {
+            uSelect = nextFloat(path.rng);
+            uLight = nextFloat2(path.rng);
+        }
+        const vec2 u = nextFloat2(path.rng);
+        const float uLobe = nextFloat(path.rng);
+        const MicrofacetBsdf bsdf = microfacetBsdfAt(m, surface);
+        const vec3 wo = -normalize(path.direction);
+        const bool transmits = m.type == RT_ENUM(MaterialType, RoughDielectric);
+        if (nee)
+        {
+            const vec3 receiver = transmits ? vec3(0.0f) : surface.shadingNormal;
+            const vec3 origin = transmits ? surface.position
+                                          : offsetRayOrigin(surface.position, surface.shadingNormal, hit.offsetScale);
+            if (sampleDirectMicrofacet(origin, receiver, bsdf, wo, uSelect, uLight, shadow))
+            {
+                shadow.contribution *= path.beta;
+                if (transmits)
+                    shadow.origin = offsetRayOrigin(
+                        surface.position, dot(shadow.direction, hit.normal) > 0.0f ? hit.normal : -hit.normal,
+                        hit.offsetScale);
+            }
+            path.previousNormal = receiver;
+        }
+        BsdfSample s;
+        if (!sampleMicrofacetBsdf(bsdf, wo, uLobe, u, s))
+            return false;
+        path.beta *= s.weight;
+        direction = s.wi;
+        if (nee)
+            path.previousBsdfPdf = s.pdf;
+    }
     else
     {
         ScatterSample s;
@@ -126,7 +167,8 @@ RT_FN bool shadePathVertex(RT_INOUT(PathState) path, uint segment, RT_IN(HitPayl
                          : offsetRayOrigin(surface.position, dot(direction, hit.normal) > 0.0f ? hit.normal : -hit.normal,
                                            hit.offsetScale);
     path.direction = direction;
-    path.previousPoint = path.origin;
+    path.previousPoint = kHasRoughDielectric && m.type == RT_ENUM(MaterialType, RoughDielectric) ? surface.position
+                                                                                             : path.origin;
     return survives;
 }
 

@@ -8,6 +8,7 @@
 #ifndef RT_SHADING_SCATTER_H
 #define RT_SHADING_SCATTER_H
 
+#include "Shared/Bsdf/MicrofacetBsdf.h"
 #include "Shared/DiffuseScattering.h"
 #include "Shared/HostDevice.h"
 #include "Shared/LightSampling.h"
@@ -75,6 +76,50 @@ RT_FN bool scatterDiffuse(bool phase, RT_IN(MaterialData) m, RT_IN(SurfaceHit) h
     return true;
 }
 
+/// Whether material type `type` is one of the microfacet BSDFs (Shared/Bsdf/MicrofacetBsdf.h), which the path
+/// vertex samples and NEE evaluates through MicrofacetBsdf. Those the render's scene does not use are dead code.
+RT_FN bool isMicrofacet(RT_TAG(MaterialType) type)
+{
+    return (kHasConductor && type == RT_ENUM(MaterialType, Conductor)) ||
+           (kHasRoughDielectric && type == RT_ENUM(MaterialType, RoughDielectric)) ||
+           (kHasGltfPbr && type == RT_ENUM(MaterialType, GltfPbr));
+}
+
+/// The microfacet BSDF of material `m` at `hit`, its textures read there and its roughness raised to
+/// kMinMicrofacetAlpha.
+RT_FN MicrofacetBsdf microfacetBsdfAt(RT_IN(MaterialData) m, RT_IN(SurfaceHit) hit)
+{
+    MicrofacetBsdf b;
+    b.type = m.type;
+    b.frame = onbFromNormal(m.type == RT_ENUM(MaterialType, RoughDielectric) ? hit.normal : hit.shadingNormal);
+    b.conductor.alphaX = max(m.alphaX, kMinMicrofacetAlpha);
+    b.conductor.alphaY = max(m.alphaY, kMinMicrofacetAlpha);
+    b.conductor.schlick = m.fresnel == RT_ENUM(FresnelModel, Schlick);
+    b.conductor.f0 = vec3(0.0f);
+    b.conductor.eta = m.eta;
+    b.conductor.k = m.k;
+    b.gltf.baseColor = vec3(0.0f);
+    b.gltf.metallic = m.metallic;
+    b.gltf.alpha = b.conductor.alphaX;
+    const float r0 = (m.ior - 1.0f) / (m.ior + 1.0f);
+    b.gltf.f0 = r0 * r0;
+    b.alpha = b.conductor.alphaX;
+    b.ior = m.ior;
+    if (m.type == RT_ENUM(MaterialType, Conductor) && b.conductor.schlick)
+        b.conductor.f0 = evaluateTexture(m.albedoTexture, hit.uv, hit.position);
+    if (m.type == RT_ENUM(MaterialType, GltfPbr))
+    {
+        b.gltf.baseColor = evaluateTexture(m.albedoTexture, hit.uv, hit.position);
+        if (m.metallicRoughnessTexture != kNoIndex)
+        {
+            const vec3 texel = evaluateTexture(m.metallicRoughnessTexture, hit.uv, hit.position);
+            b.gltf.metallic *= texel.z;
+            b.gltf.alpha = max(m.alphaX * texel.y * texel.y, kMinMicrofacetAlpha);
+        }
+    }
+    return b;
+}
+
 /// The direction leaving a vertex of material `m` and the factor it multiplies the throughput by: false when
 /// the path ends here (absorbed, a light, a failed light sample). Diffuse and isotropic vertices sample their
 /// lobe (BSDF only) or book 3's mixture; NEE's vertices are the path vertex's own.
@@ -110,6 +155,9 @@ RT_FN bool scatter(RT_IN(MaterialData) m, RT_IN(SurfaceHit) hit, RT_INOUT(Rng) r
         }
         break;
     case RT_ENUM(MaterialType, DiffuseLight): break; // emits, does not scatter
+    case RT_ENUM(MaterialType, Conductor):
+    case RT_ENUM(MaterialType, RoughDielectric):
+    case RT_ENUM(MaterialType, GltfPbr): break; // the path vertex's own (isMicrofacet)
     }
     return false;
 }
