@@ -94,9 +94,13 @@ PipelineSpecialization PipelineSpecialization::of(Specialize specialize, const R
         // keyed on its strategy alone): with the scene's feature mask, book 3's mixture renders the book scenes
         // 1.04-1.12x faster and cornell-box-lights as fast, but rtnw-cornell-smoke 0.93x. So a mixture in a
         // scene with media keeps its mask dynamic, with the sphere tests' c (§8.8) and the hit's uv (§8.10).
+        // Its mask leaves out only the microfacet materials the scene lacks, which came after that measurement
+        // (rtnw-cornell-smoke 0.94x with their code compiled in; docs/notebook §10).
         if (u.estimator == Estimator::Mixture && (sceneFeatures & kFeatureMedia) != 0u)
         {
             PipelineSpecialization s = strategyOf(u);
+            constexpr std::uint32_t microfacet = kFeatureConductor | kFeatureRoughDielectric | kFeatureGltfPbr;
+            s.constants[kSpecIdFeatures] = kSpecDynamic & ~(microfacet & ~sceneFeatures);
             s.setSceneConstants(sceneFeatures, hugeSpheres);
             return s;
         }

@@ -56,10 +56,16 @@ TEST(PipelineSpecialization, ModesKeyOnWhatTheySay)
         PipelineSpecialization::of(Specialize::Full, mixture, scene | kFeatureMedia | kFeatureIsotropic);
     EXPECT_EQ(mixtureInMedia.constants[kSpecIdExactSphereC], 1u);
     EXPECT_EQ(mixtureInMedia.constants[kSpecIdHitUv], 0u) << "no image texture";
+    EXPECT_EQ(mixtureInMedia.features(), kSpecDynamic & ~(kFeatureConductor | kFeatureRoughDielectric | kFeatureGltfPbr))
+        << "every feature but the microfacet materials the scene lacks";
+    EXPECT_EQ(PipelineSpecialization::of(Specialize::Full, mixture, scene | kFeatureMedia | kFeatureConductor)
+                  .features(),
+              kSpecDynamic & ~(kFeatureRoughDielectric | kFeatureGltfPbr));
     mixtureInMedia.constants[kSpecIdExactSphereC] = kSpecDynamic;
     mixtureInMedia.constants[kSpecIdHitUv] = kSpecDynamic;
+    mixtureInMedia.constants[kSpecIdFeatures] = kSpecDynamic;
     EXPECT_EQ(mixtureInMedia, PipelineSpecialization::strategyOf(mixture))
-        << "but the sphere tests' c and the uv (below)";
+        << "but the sphere tests' c, the uv (below) and the microfacet materials";
     EXPECT_NE(PipelineSpecialization::of(Specialize::Full, u, scene | kFeatureMedia).features(), kSpecDynamic)
         << "NEE has its mask with media too";
     EXPECT_NE(PipelineSpecialization::of(Specialize::Full, u, scene), PipelineSpecialization::strategyOf(u));
@@ -84,8 +90,9 @@ TEST(PipelineSpecialization, ExactSphereCOnlyForHugeSpheres)
         EXPECT_EQ(PipelineSpecialization::of(Specialize::Off, u, scene, false), PipelineSpecialization::general());
     }
     const RenderUniforms mixture = uniformsWith(Estimator::Mixture, false, BackgroundType::Constant);
-    EXPECT_EQ(PipelineSpecialization::of(Specialize::Full, mixture, scene, false).features(), kSpecDynamic)
-        << "the mixture's feature mask stays dynamic";
+    EXPECT_EQ(PipelineSpecialization::of(Specialize::Full, mixture, scene, false).features(),
+              kSpecDynamic & ~(kFeatureConductor | kFeatureRoughDielectric | kFeatureGltfPbr))
+        << "the mixture's feature mask stays dynamic in a scene with media, but for the microfacet materials";
 }
 
 // The hit's uv (kSpecIdHitUv): computed only for a scene with image textures under --specialize on, the mixture's

@@ -3,7 +3,8 @@
 // vector of eq. 16; sampled by visible normals as pbrt-v4 §9.7 does), for both engines (Shared/ShaderLang.h).
 // Local frame: z the surface's outward normal, so wo.z < 0 means wo lies inside; `ior` = eta_inside /
 // eta_outside. Fresnel exact (Shared/Fresnel.h). Transport of radiance: a refracted f carries the factor
-// 1 / eta'^2 (eta' = eta_transmitted / eta_incident; Veach 1997 §5.2), so f(wo, wi) eta'(wo)^2 is symmetric.
+// 1 / eta'^2 (eta' = eta_transmitted / eta_incident; Veach 1997 §5.2), so f(wo, wi) / eta(wo side)^2 is symmetric
+// (generalized reciprocity) and the integral of (f_r + eta'^2 f_t) |cos| is at most 1 (energy).
 #ifndef RT_SHARED_BSDF_ROUGH_DIELECTRIC_H
 #define RT_SHARED_BSDF_ROUGH_DIELECTRIC_H
 
@@ -101,6 +102,10 @@ RT_FN bool sampleRoughDielectric(float alpha, float ior, vec3 wo, float uLobe, v
         const float cosT = sqrt(max(0.0f, 1.0f - sin2T)); // sin2T < 1 here: r = 1 under total reflection
         wi = -etaRatio * wo + (etaRatio * cosI - cosT) * n;
     }
+    // A reflection below the surface or a refraction back to wo's side is no sample of its lobe: the pdf would
+    // read it as the other event, through another microfacet, and count it there.
+    if ((uLobe < r) != (wi.z * wo.z > 0.0f))
+        return false;
     s.wi = normalize(wi);
     s.pdf = roughDielectricPdf(alpha, ior, wo, s.wi);
     if (!(s.pdf > 0.0f))

@@ -1,4 +1,4 @@
-// Next-event estimation at a diffuse or isotropic vertex (Veach 1997 §9.2; pbrt-v4 PathIntegrator), written
+// Next-event estimation at a diffuse, isotropic or glossy vertex (Veach 1997 §9.2; pbrt-v4 PathIntegrator), written
 // once for both engines: a host's shading scope (Shading/README.md). One emitter selected (uniformly, by power
 // or by the light BVH: Shared/LightSelection.h), one point on it (Shared/LightSampling.h), and the shadow ray
 // handed back to the caller, which traces it once the vertex is done with (on the GPU little state then lives
@@ -23,15 +23,19 @@ RT_FN float selectionPmf(uint light, vec3 origin, vec3 receiver)
 }
 
 /// A light sample for next-event estimation seen from `origin`, where the vertex's rays leave (the hit point
-/// offset to the side of the unit shading normal ns; the point itself in a medium, `phase`): lights are
-/// sampled from there and the BSDF ray leaves from there too, so both strategies see one geometry and their
-/// MIS weights sum to 1 for every direction. False (shadow not pending) when it contributes nothing (the light BVH proved that no
-/// emitter reaches origin; the point faces away or lies below the horizon; it emits nothing towards origin);
-/// else shadow.contribution = f cos Le / (pmf pdf) x the MIS weight (nee-mis: the power heuristic against the
-/// BSDF strategy's pdf of the same direction; nee: 1), valid if the shadow ray is unoccluded. Takes the
-/// vertex's numbers uSelect for the selection and u for the point.
-RT_FN bool sampleDirect(vec3 origin, vec3 ns, bool phase, vec3 albedo, float uSelect, vec2 u,
-                        RT_OUT(ShadowRay) shadow)
+/// offset to the side of the unit shading normal ns, the rays of both strategies leaving from there too, so both
+/// see one geometry and their MIS weights sum to 1 for every direction; the point itself in a medium and at
+/// glass, which transmits), with the horizon of `receiver` (ns; 0 in a medium and at glass). The BSDF is the
+/// diffuse lobe of `albedo` (`phase`: the isotropic phase function) about ns, or, when `microfacet`, `b` seen
+/// from the unit direction wo. False (shadow not pending) when it contributes nothing (the light BVH proved
+/// that no emitter reaches origin; the point faces away or lies where the BSDF is 0; it emits nothing towards
+/// origin); else shadow.contribution = f cos Le / (pmf pdf) x the MIS weight (nee-mis: the power heuristic
+/// against the BSDF strategy's pdf of the same direction; nee: 1), valid if the shadow ray is unoccluded.
+/// Takes the vertex's numbers uSelect for the selection and u for the point. One function for both kinds of
+/// lobe: the megakernel inlines the light samplers once (two call sites made NEE 2.4-4.2x slower on the H100,
+/// docs/notebook §10).
+RT_FN bool sampleDirect(vec3 origin, vec3 receiver, vec3 ns, bool phase, vec3 albedo, bool microfacet,
+                        RT_IN(MicrofacetBsdf) b, vec3 wo, float uSelect, vec2 u, RT_OUT(ShadowRay) shadow)
 {
     shadow.pending = false;
     shadow.origin = origin;
@@ -39,7 +43,6 @@ RT_FN bool sampleDirect(vec3 origin, vec3 ns, bool phase, vec3 albedo, float uSe
     shadow.distance = 0.0f;
     shadow.contribution = vec3(0.0f);
     float pmf;
-    const vec3 receiver = phase ? vec3(0.0f) : ns; // no horizon in a medium
     const uint picked = selectLight(RT_PASS(lightAlias) RT_PASS(lightBvh) settingLightSelection(), uSelect,
                                     uniforms.emitterCount, origin, receiver, uniforms.unidirectionalLight == 0u, pmf);
     if (picked == kNoIndex)
@@ -47,8 +50,14 @@ RT_FN bool sampleDirect(vec3 origin, vec3 ns, bool phase, vec3 albedo, float uSe
     LightSample ls;
     if (!sampleLight(lights[picked], settingLightSampler(), origin, receiver, u, ls))
         return false;
-    const float bsdfPdf = diffusePdf(phase, ns, ls.wi); // f cos = albedo bsdfPdf
-    if (!(bsdfPdf > 0.0f) || (uniforms.unidirectionalLight != 0u && dot(ls.wi, ls.normal) >= 0.0f))
+    float bsdfPdf;
+    vec3 f = vec3(0.0f); // f |cos theta_i| of a microfacet BSDF; a diffuse lobe's is albedo x bsdfPdf
+    if (microfacet)
+        f = evalMicrofacetBsdf(b, wo, ls.wi, bsdfPdf);
+    else
+        bsdfPdf = diffusePdf(phase, ns, ls.wi);
+    const bool scatters = microfacet ? max(f.x, max(f.y, f.z)) > 0.0f : bsdfPdf > 0.0f;
+    if (!scatters || (uniforms.unidirectionalLight != 0u && dot(ls.wi, ls.normal) >= 0.0f))
         return false;
     const vec3 le = evaluateTexture(materials[lights[picked].material].emissionTexture, ls.uv, ls.point);
     if (!(max(le.x, max(le.y, le.z)) > 0.0f))
@@ -60,46 +69,7 @@ RT_FN bool sampleDirect(vec3 origin, vec3 ns, bool phase, vec3 albedo, float uSe
     // The shadow ray stops short of the light's surface by a relative margin far above the rounding of the
     // sampled point and of the light's intersection test.
     shadow.distance = ls.distance * (1.0f - 1e-4f);
-    shadow.contribution = albedo * le * (weight * bsdfPdf / lightPdfTotal);
-    return true;
-}
-
-/// sampleDirect at a vertex of a microfacet BSDF `b` seen from the unit direction wo: the light is sampled from
-/// `origin` with the horizon of `receiver` (the shading normal of a reflector; 0 for glass, which transmits),
-/// and the contribution is f cos Le / (pmf pdf) x the MIS weight against the BSDF's pdf of the direction. Its
-/// own function, not a branch of sampleDirect: the diffuse vertex's code stays as NVIDIA's compiler knew it
-/// (docs/notebook §9.6: dead-code changes alone move the megakernel by up to 9 %).
-RT_FN bool sampleDirectMicrofacet(vec3 origin, vec3 receiver, RT_IN(MicrofacetBsdf) b, vec3 wo, float uSelect, vec2 u,
-                                  RT_OUT(ShadowRay) shadow)
-{
-    shadow.pending = false;
-    shadow.origin = origin;
-    shadow.direction = vec3(0.0f);
-    shadow.distance = 0.0f;
-    shadow.contribution = vec3(0.0f);
-    float pmf;
-    const uint picked = selectLight(RT_PASS(lightAlias) RT_PASS(lightBvh) settingLightSelection(), uSelect,
-                                    uniforms.emitterCount, origin, receiver, uniforms.unidirectionalLight == 0u, pmf);
-    if (picked == kNoIndex)
-        return false;
-    LightSample ls;
-    if (!sampleLight(lights[picked], settingLightSampler(), origin, receiver, u, ls))
-        return false;
-    if (uniforms.unidirectionalLight != 0u && dot(ls.wi, ls.normal) >= 0.0f)
-        return false;
-    float bsdfPdf;
-    const vec3 f = evalMicrofacetBsdf(b, wo, ls.wi, bsdfPdf); // f |cos theta_i|
-    if (!(max(f.x, max(f.y, f.z)) > 0.0f))
-        return false;
-    const vec3 le = evaluateTexture(materials[lights[picked].material].emissionTexture, ls.uv, ls.point);
-    if (!(max(le.x, max(le.y, le.z)) > 0.0f))
-        return false;
-    const float lightPdfTotal = pmf * ls.pdf;
-    const float weight = settingEstimator() == RT_ENUM(Estimator, NeeMis) ? powerHeuristic(lightPdfTotal, bsdfPdf) : 1.0f;
-    shadow.pending = true;
-    shadow.direction = ls.wi;
-    shadow.distance = ls.distance * (1.0f - 1e-4f); // as sampleDirect's
-    shadow.contribution = f * le * (weight / lightPdfTotal);
+    shadow.contribution = microfacet ? f * le * (weight / lightPdfTotal) : albedo * le * (weight * bsdfPdf / lightPdfTotal);
     return true;
 }
 

@@ -80,64 +80,63 @@ RT_FN bool shadePathVertex(RT_INOUT(PathState) path, uint segment, RT_IN(HitPayl
     vec3 direction;
     const bool phase = kHasIsotropic && m.type == RT_ENUM(MaterialType, Isotropic);
     const bool diffuse = (kHasLambertian && m.type == RT_ENUM(MaterialType, Lambertian)) || phase;
-    if (nee && diffuse)
+    const bool microfacet = isMicrofacet(m.type);
+    if (nee && (diffuse || microfacet))
     {
-        // NEE's three numbers and the direction's two, drawn in that order before any of them is used:
-        // independent draws that a CPU overlaps (a Sobol draw is a chain of about 60 cycles).
+        // NEE's three numbers and the direction's two (and a glossy lobe's choice), drawn in that order before any
+        // of them is used: independent draws that a CPU overlaps (a Sobol draw is a chain of about 60 cycles).
         const float uSelect = nextFloat(path.rng);
         const vec2 uLight = nextFloat2(path.rng);
         const vec2 u = nextFloat2(path.rng);
-        const vec3 albedo = evaluateTexture(m.albedoTexture, surface.uv, surface.position);
-        // The BSDF ray leaves from this origin too (below): sampleDiffuse keeps to the side of ns.
-        const vec3 origin =
-            medium ? surface.position : offsetRayOrigin(surface.position, surface.shadingNormal, hit.offsetScale);
-        if (sampleDirect(origin, surface.shadingNormal, phase, albedo, uSelect, uLight, shadow))
-            shadow.contribution *= path.beta;
-        direction = sampleDiffuse(phase, surface.shadingNormal, u);
-        path.beta *= albedo;
-        path.previousBsdfPdf = diffusePdf(phase, surface.shadingNormal, direction);
-        path.previousNormal = phase ? vec3(0.0f) : surface.shadingNormal;
-    }
-    else if (isMicrofacet(m.type))
-    {
-        // A glossy lobe: NEE (its three numbers first, as at a diffuse vertex) with the BSDF's exact pdf in the
-        // MIS weights, then the BSDF's direction (two numbers, and one that picks the lobe). Glass transmits, so
-        // its light samples see no horizon and leave from the hit point itself; the emission its BSDF ray
-        // finds is weighed from that same point (previousPoint below).
-        float uSelect = 0.0f;
-        vec2 uLight = vec2(0.0f);
-        if (nee)
+        const float uLobe = microfacet ? nextFloat(path.rng) : 0.0f;
+        const vec3 albedo = microfacet ? vec3(0.0f) : evaluateTexture(m.albedoTexture, surface.uv, surface.position);
+        MicrofacetBsdf bsdf; // read only when microfacet: a diffuse vertex builds none
+        if (microfacet)
+            bsdf = microfacetBsdfAt(m, surface);
+        // Glass transmits: its light samples see no horizon and leave from the hit point itself, as in a medium.
+        const bool transmits = microfacet && m.type == RT_ENUM(MaterialType, RoughDielectric);
+        // The BSDF ray leaves from this origin too (below): sampleDiffuse and a reflecting BSDF keep to ns's side.
+        const vec3 origin = medium || transmits
+                                ? surface.position
+                                : offsetRayOrigin(surface.position, surface.shadingNormal, hit.offsetScale);
+        const vec3 receiver = phase || transmits ? vec3(0.0f) : surface.shadingNormal;
+        const vec3 wo = -normalize(path.direction);
+        if (sampleDirect(origin, receiver, surface.shadingNormal, phase, albedo, microfacet, bsdf, wo, uSelect, uLight,
+                         shadow))
         {
-            uSelect = nextFloat(path.rng);
-            uLight = nextFloat2(path.rng);
+            shadow.contribution *= path.beta;
+            if (transmits)
+                shadow.origin = offsetRayOrigin(
+                    surface.position, dot(shadow.direction, hit.normal) > 0.0f ? hit.normal : -hit.normal,
+                    hit.offsetScale);
         }
+        if (microfacet)
+        {
+            BsdfSample s;
+            if (!sampleMicrofacetBsdf(bsdf, wo, uLobe, u, s))
+                return false;
+            direction = s.wi;
+            path.beta *= s.weight;
+            path.previousBsdfPdf = s.pdf;
+        }
+        else
+        {
+            direction = sampleDiffuse(phase, surface.shadingNormal, u);
+            path.beta *= albedo;
+            path.previousBsdfPdf = diffusePdf(phase, surface.shadingNormal, direction);
+        }
+        path.previousNormal = receiver;
+    }
+    else if (microfacet)
+    {
+        // BSDF sampling alone (the bsdf and mixture estimators): the direction's two numbers and the lobe's.
         const vec2 u = nextFloat2(path.rng);
         const float uLobe = nextFloat(path.rng);
-        const MicrofacetBsdf bsdf = microfacetBsdfAt(m, surface);
-        const vec3 wo = -normalize(path.direction);
-        const bool transmits = m.type == RT_ENUM(MaterialType, RoughDielectric);
-        if (nee)
-        {
-            const vec3 receiver = transmits ? vec3(0.0f) : surface.shadingNormal;
-            const vec3 origin = transmits ? surface.position
-                                          : offsetRayOrigin(surface.position, surface.shadingNormal, hit.offsetScale);
-            if (sampleDirectMicrofacet(origin, receiver, bsdf, wo, uSelect, uLight, shadow))
-            {
-                shadow.contribution *= path.beta;
-                if (transmits)
-                    shadow.origin = offsetRayOrigin(
-                        surface.position, dot(shadow.direction, hit.normal) > 0.0f ? hit.normal : -hit.normal,
-                        hit.offsetScale);
-            }
-            path.previousNormal = receiver;
-        }
         BsdfSample s;
-        if (!sampleMicrofacetBsdf(bsdf, wo, uLobe, u, s))
+        if (!sampleMicrofacetBsdf(microfacetBsdfAt(m, surface), -normalize(path.direction), uLobe, u, s))
             return false;
-        path.beta *= s.weight;
         direction = s.wi;
-        if (nee)
-            path.previousBsdfPdf = s.pdf;
+        path.beta *= s.weight;
     }
     else
     {
