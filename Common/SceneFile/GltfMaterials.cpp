@@ -104,8 +104,6 @@ std::uint32_t GltfMaterials::make(int index)
         m_notes.add("normal textures", where);
     if (m.occlusionTexture.index >= 0)
         m_notes.add("occlusion textures", where);
-    if (pbr.metallicRoughnessTexture.index >= 0)
-        m_notes.add("metallic-roughness textures", where);
     if (m.alphaMode != "OPAQUE")
         m_notes.add(fmt::format("alphaMode {} (surfaces opaque)", m.alphaMode), where);
 
@@ -141,40 +139,35 @@ std::uint32_t GltfMaterials::make(int index)
         factor(m_doc, pointer + "/pbrMetallicRoughness/baseColorFactor", pbr.baseColorFactor, 4, 0.0, 1.0,
                {1.0, 1.0, 1.0, 1.0});
     const vec3 color(static_cast<float>(base[0]), static_cast<float>(base[1]), static_cast<float>(base[2]));
+    const auto metallic = static_cast<float>(
+        number(m_doc, pointer + "/pbrMetallicRoughness/metallicFactor", pbr.metallicFactor, 0.0, 1.0));
+    const auto roughness = static_cast<float>(
+        number(m_doc, pointer + "/pbrMetallicRoughness/roughnessFactor", pbr.roughnessFactor, 0.0, 1.0));
     if (transmission > 0.5)
     {
         if (color != vec3(1.0f) || pbr.baseColorTexture.index >= 0)
             m_notes.add("tinted transmission (clear glass)", where);
-        return m_builder.dielectric(static_cast<float>(ior));
+        if (pbr.metallicRoughnessTexture.index >= 0)
+            m_notes.add("metallic-roughness textures of transmissive materials (the roughness factor alone)", where);
+        return m_builder.roughDielectric(roughness * roughness, static_cast<float>(ior)); // alpha = roughness^2
     }
 
-    const double metallic =
-        number(m_doc, pointer + "/pbrMetallicRoughness/metallicFactor", pbr.metallicFactor, 0.0, 1.0);
-    const double roughness =
-        number(m_doc, pointer + "/pbrMetallicRoughness/roughnessFactor", pbr.roughnessFactor, 0.0, 1.0);
-    MaterialData mat{.type = MaterialType::Lambertian, .albedoTexture = kNoIndex, .emissionTexture = kNoIndex};
     std::optional<GltfWrapModes> wrap;
-    mat.albedoTexture = baseColor(m, pointer + "/pbrMetallicRoughness/baseColorTexture", where, color, wrap);
-    if (metallic >= 0.5)
-    {
-        mat.type = MaterialType::Metal;
-        mat.fuzz = static_cast<float>(roughness);
-    }
-    Scene& scene = m_builder.scene();
-    scene.materials.push_back(mat);
-    const auto made = static_cast<std::uint32_t>(scene.materials.size() - 1);
+    const std::uint32_t baseColorTexture =
+        baseColor(m, pointer + "/pbrMetallicRoughness/baseColorTexture", where, color, wrap);
+    const std::uint32_t metallicRoughnessTexture =
+        metallicRoughness(m, pointer + "/pbrMetallicRoughness/metallicRoughnessTexture", where, wrap);
+    const std::uint32_t made =
+        m_builder.gltfPbr(baseColorTexture, metallic, roughness, metallicRoughnessTexture, static_cast<float>(ior));
     if (wrap)
         m_texturedMaterials.emplace(made, *wrap);
     return made;
 }
 
-std::uint32_t GltfMaterials::baseColor(const tinygltf::Material& m, const std::string& pointer,
-                                       const std::string& where, const vec3& factor,
-                                       std::optional<GltfWrapModes>& wrap)
+std::optional<GltfMaterials::Source> GltfMaterials::source(const tinygltf::TextureInfo& info,
+                                                           const std::string& pointer, const std::string& where,
+                                                           const char* what, const char* fallback)
 {
-    const tinygltf::TextureInfo& info = m.pbrMetallicRoughness.baseColorTexture;
-    if (info.index < 0)
-        return m_builder.solid(factor);
     const tinygltf::Model& model = m_doc.model;
     if (static_cast<std::size_t>(info.index) >= model.textures.size())
         m_doc.fail(pointer + "/index",
@@ -184,17 +177,18 @@ std::uint32_t GltfMaterials::baseColor(const tinygltf::Material& m, const std::s
                     where);
     if (info.texCoord != 0)
     {
-        m_notes.add(fmt::format("base colour textures on TEXCOORD_{} (the factor alone)", info.texCoord), where);
-        return m_builder.solid(factor);
+        m_notes.add(fmt::format("{} textures on TEXCOORD_{} ({})", what, info.texCoord, fallback), where);
+        return std::nullopt;
     }
     const tinygltf::Texture& texture = model.textures[static_cast<std::size_t>(info.index)];
     if (texture.source < 0)
     {
         for (const auto& [name, value] : texture.extensions)
             m_notes.add(name, where);
-        m_notes.add("textures without a PNG or JPEG source (the factor alone)", where);
-        return m_builder.solid(factor);
+        m_notes.add(fmt::format("textures without a PNG or JPEG source ({})", fallback), where);
+        return std::nullopt;
     }
+    Source out{texture.source, GltfWrapModes{}}; // no sampler: repeat in both directions (§3.8.4)
     if (texture.sampler >= 0)
     {
         if (static_cast<std::size_t>(texture.sampler) >= model.samplers.size())
@@ -202,28 +196,70 @@ std::uint32_t GltfMaterials::baseColor(const tinygltf::Material& m, const std::s
                        fmt::format("sampler {} does not exist (the file has {})", texture.sampler,
                                    model.samplers.size()));
         const tinygltf::Sampler& sampler = model.samplers[static_cast<std::size_t>(texture.sampler)];
-        wrap = GltfWrapModes{gltfWrap(sampler.wrapS), gltfWrap(sampler.wrapT)};
+        out.wrap = GltfWrapModes{gltfWrap(sampler.wrapS), gltfWrap(sampler.wrapT)};
     }
-    else
-        wrap = GltfWrapModes{}; // no sampler: repeat in both directions (§3.8.4)
+    return out;
+}
+
+std::uint32_t GltfMaterials::baseColor(const tinygltf::Material& m, const std::string& pointer,
+                                       const std::string& where, const vec3& factor,
+                                       std::optional<GltfWrapModes>& wrap)
+{
+    const tinygltf::TextureInfo& info = m.pbrMetallicRoughness.baseColorTexture;
+    if (info.index < 0)
+        return m_builder.solid(factor);
+    const std::optional<Source> found = source(info, pointer, where, "base colour", "the factor alone");
+    if (!found)
+        return m_builder.solid(factor);
+    wrap = found->wrap;
     const std::array<float, 3> key{factor.r, factor.g, factor.b};
-    if (const auto it = m_imageTextures.find({texture.source, key}); it != m_imageTextures.end())
+    if (const auto it = m_imageTextures.find({found->image, key}); it != m_imageTextures.end())
         return it->second;
-    ImageData image = readGltfImage(m_doc, texture.source);
+    ImageData image = readGltfImage(m_doc, found->image);
     if (factor != vec3(1.0f))
     {
         image = tintedImage(std::move(image), factor);
         // No longer the file's texels: a name that is no file (--export-scene writes such images out).
         image.path = fmt::format("{} x baseColorFactor ({}, {}, {})", image.path, factor.r, factor.g, factor.b);
     }
+    const std::uint32_t made = imageTexture(std::move(image), false);
+    m_imageTextures.emplace(std::make_pair(found->image, key), made);
+    return made;
+}
+
+std::uint32_t GltfMaterials::metallicRoughness(const tinygltf::Material& m, const std::string& pointer,
+                                               const std::string& where, std::optional<GltfWrapModes>& wrap)
+{
+    const tinygltf::TextureInfo& info = m.pbrMetallicRoughness.metallicRoughnessTexture;
+    if (info.index < 0)
+        return kNoIndex;
+    const std::optional<Source> found = source(info, pointer, where, "metallic-roughness", "the factors alone");
+    if (!found)
+        return kNoIndex;
+    // One set of texture coordinates serves both textures (the engines clamp; GltfTexcoords moves triangles by
+    // whole periods of one sampler's wrapping): the base colour's wrapping wins where the two differ.
+    if (!wrap)
+        wrap = found->wrap;
+    else if (wrap->s != found->wrap.s || wrap->t != found->wrap.t)
+        m_notes.add("metallic-roughness textures wrapping unlike their base colour (wrapped as the base colour)",
+                    where);
+    if (const auto it = m_linearTextures.find(found->image); it != m_linearTextures.end())
+        return it->second;
+    // Linear data, not colour (§3.9.2): the texels are read as they are, never decoded from sRGB, nor tinted.
+    const std::uint32_t made = imageTexture(readGltfImage(m_doc, found->image), true);
+    m_linearTextures.emplace(found->image, made);
+    return made;
+}
+
+std::uint32_t GltfMaterials::imageTexture(ImageData image, bool linear)
+{
     Scene& scene = m_builder.scene();
     TextureData t{};
     t.type = TextureType::Image;
     t.image = static_cast<std::uint32_t>(scene.images.size());
+    t.linear = linear ? 1u : 0u;
     scene.images.push_back(std::move(image));
     scene.textures.push_back(t);
-    const auto made = static_cast<std::uint32_t>(scene.textures.size() - 1);
-    m_imageTextures.emplace(std::make_pair(texture.source, key), made);
-    return made;
+    return static_cast<std::uint32_t>(scene.textures.size() - 1);
 }
 } // namespace rt

@@ -1,16 +1,20 @@
-// glTF materials (glTF 2.0 spec §3.9.2 "Metallic-Roughness Material" and the KHR_materials_* extensions named
-// below) mapped onto the books' materials, first match wins:
+// glTF materials (glTF 2.0 spec §3.9.2 "Metallic-Roughness Material", Appendix B, and the KHR_materials_*
+// extensions named below) mapped onto the scene's materials, first match wins:
 //
-//   | glTF                                                         | material                                   |
-//   |--------------------------------------------------------------|--------------------------------------------|
-//   | emissiveFactor x KHR_materials_emissive_strength > 0         | diffuse_light, radiance = their product    |
-//   | KHR_materials_transmission transmissionFactor > 0.5          | dielectric, ior = KHR_materials_ior (1.5)  |
-//   | metallicFactor >= 0.5                                        | metal, albedo = base colour, fuzz = roughness |
-//   | otherwise                                                    | lambertian, albedo = base colour           |
-//   | no material                                                  | lambertian, grey (0.8)                     |
+//   | glTF                                                  | material                                          |
+//   |-------------------------------------------------------|---------------------------------------------------|
+//   | emissiveFactor x KHR_materials_emissive_strength > 0  | diffuse_light, radiance = their product           |
+//   | KHR_materials_transmission transmissionFactor > 0.5   | rough_dielectric, alpha = roughnessFactor^2,      |
+//   |                                                       | ior = KHR_materials_ior's (default 1.5)           |
+//   | otherwise                                             | gltf_pbr: base colour, metallic = metallicFactor, |
+//   |                                                       | alpha = roughnessFactor^2, the metallic-roughness |
+//   |                                                       | texture (g roughness, b metallic; linear), ior    |
+//   | no material                                           | lambertian, grey (0.8)                            |
 //
 // The base colour is baseColorFactor's RGB, times baseColorTexture's texels (on TEXCOORD_0) where it has one:
-// the factor is multiplied into a copy of the image (GltfImages' tintedImage). Everything else a material
+// the factor is multiplied into a copy of the image (GltfImages' tintedImage). The metallic-roughness texture
+// (TEXCOORD_0 too) is an image texture marked linear (TextureData::linear: its texels are data, not sRGB); its
+// factors stay the material's (Shading/Scatter.h microfacetBsdfAt multiplies them). Everything else a material
 // says - other textures, alpha, other extensions, texture transforms - goes to the import's notes.
 #pragma once
 
@@ -38,7 +42,7 @@ public:
     /// The scene's material for glTF material `index` (-1: none), made on first use. `usedAs` is the referring
     /// value's JSON pointer. Throws SceneError for an index out of range or a value out of the spec's range
     /// (a factor of the wrong length or outside [0, 1], a negative emission, an ior below 1), AssetError for its
-    /// base colour image (GltfImages).
+    /// base colour or metallic-roughness image (GltfImages).
     std::uint32_t material(int index, const std::string& usedAs);
 
     /// Whether the scene's material `material` samples an image through the surface's texture coordinates, and
@@ -51,16 +55,31 @@ public:
 
 private:
     std::uint32_t make(int index);
+    /// The image and the sampler's wrap modes of texture reference `info` (at `pointer`), or none, noted, where
+    /// the import cannot use it (`what` textures on another TEXCOORD_n, no PNG or JPEG source: `fallback`).
+    struct Source
+    {
+        int image;
+        GltfWrapModes wrap;
+    };
+    std::optional<Source> source(const tinygltf::TextureInfo& info, const std::string& pointer,
+                                 const std::string& where, const char* what, const char* fallback);
     /// The albedo texture: the factor's colour, or the base colour image times the factor (then `wrap` is set
     /// to its sampler's wrap modes).
     std::uint32_t baseColor(const tinygltf::Material& m, const std::string& pointer, const std::string& where,
                             const vec3& factor, std::optional<GltfWrapModes>& wrap);
+    /// The metallic-roughness texture (linear), kNoIndex if none; sets `wrap` if the base colour did not.
+    std::uint32_t metallicRoughness(const tinygltf::Material& m, const std::string& pointer, const std::string& where,
+                                    std::optional<GltfWrapModes>& wrap);
+    /// A new image texture of `image`, its own image of the scene (--export-scene writes one path per texture).
+    std::uint32_t imageTexture(ImageData image, bool linear);
 
     const GltfDocument& m_doc;
     SceneBuilder& m_builder;
     GltfNotes& m_notes;
     std::map<int, std::uint32_t> m_made; // glTF material (-1: none) -> scene material
     std::map<std::pair<int, std::array<float, 3>>, std::uint32_t> m_imageTextures; // (image, factor) -> texture
+    std::map<int, std::uint32_t> m_linearTextures; // image -> its metallic-roughness texture
     std::map<std::uint32_t, GltfWrapModes> m_texturedMaterials; // scene material -> its texture's wrapping
     int m_singleSidedEmitters = 0;
     int m_doubleSidedEmitters = 0;

@@ -253,8 +253,9 @@ private:
             break;
         case 2:
         {
-            t.allowOnly({"name", "type", "path"});
+            t.allowOnly({"name", "type", "path", "linear"});
             tex.type = TextureType::Image;
+            tex.linear = t.has("linear") && t["linear"].boolean() ? 1u : 0u;
             const std::filesystem::path file = resolvePath(t["path"], "texture");
             tex.image = static_cast<std::uint32_t>(scene().images.size());
             scene().images.push_back(located(t["path"], [&] { return loadImage(file.string()); }));

@@ -47,7 +47,10 @@ ojson texture(const TextureData& t, const Scene& scene, const std::vector<std::s
         const std::filesystem::path relative = path.lexically_proximate(assetRoot());
         if (!relative.empty() && *relative.begin() != "..")
             path = relative; // found through the asset folder wherever the scene file and the checkout are
-        return {{"type", "image"}, {"path", path.generic_string()}};
+        ojson j = {{"type", "image"}, {"path", path.generic_string()}};
+        if (t.linear != 0)
+            j["linear"] = true;
+        return j;
     }
     case TextureType::Noise: return {{"type", "noise"}, {"scale", number(t.scale)}};
     case TextureType::Turbulence: return {{"type", "turbulence"}, {"scale", number(t.scale)}};

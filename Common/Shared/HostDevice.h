@@ -119,7 +119,7 @@ struct TextureData
     RT_TAG(TextureType) type;
     uint image; // index into the sampler array for TextureType::Image
     float scale;
-    uint pad;
+    uint linear; // Image: 1 when the texels are linear data (glTF's metallic-roughness), 0 sRGB-encoded colour
     vec3 color0;
     vec3 color1;
 };

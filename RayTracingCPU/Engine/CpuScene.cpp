@@ -59,7 +59,8 @@ CpuScene::CpuScene(const Scene& scene)
 {
     const auto isImage = [&](std::uint32_t t) { return t != kNoIndex && scene.textures[t].type == TextureType::Image; };
     for (const MaterialData& m : scene.materials)
-        m_materialNeedsUv.push_back(isImage(m.albedoTexture) || isImage(m.emissionTexture));
+        m_materialNeedsUv.push_back(isImage(m.albedoTexture) || isImage(m.emissionTexture) ||
+                                    (m.type == MaterialType::GltfPbr && isImage(m.metallicRoughnessTexture)));
 
     m_uvFrames.push_back(mat3(1.0f));
     std::vector<Aabb> bounds;

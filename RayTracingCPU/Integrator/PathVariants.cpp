@@ -34,7 +34,7 @@ std::string PathVariant::describe() const
     if (code.general)
         return "general";
     return fmt::format("{}, {}, {}{}", toString(code.estimator), code.media ? "media" : "no media",
-                       code.textures ? "textures" : "solid colours only",
+                       code.textures ? "textures or microfacet" : "solid colours only",
                        traceLanes ? fmt::format(", {} rays at a time", kLanes) : std::string());
 }
 
@@ -43,7 +43,7 @@ PathVariant choosePathVariant(const SceneFeatures& features, Estimator estimator
     if (!specialize)
         return {&traceJobs<PathCode{}>, PathCode{}};
     const bool media = features.media;
-    const bool textures = features.textures();
+    const bool textures = features.textures() || features.conductor || features.roughDielectric || features.gltfPbr;
     switch (estimator)
     {
     case Estimator::BsdfOnly: return forEstimator<Estimator::BsdfOnly>(media, textures, rayLanes);

@@ -1,5 +1,6 @@
 // glTF import: each branch of the material mapping (SceneFile/GltfMaterials.h's table), the sky added when
-// nothing emits, and base colour images (embedded, data URI, file) with their factor and their samplers' wrapping.
+// nothing emits, base colour images (embedded, data URI, file) with their factor and their samplers' wrapping,
+// and metallic-roughness images (linear data, untinted).
 #include <gtest/gtest.h>
 
 #include "Image/ImageIO.h"
@@ -43,28 +44,36 @@ TEST(GltfMaterials, EmissiveWithoutStrengthAndDoubleSided)
     EXPECT_FALSE(imported.scene.defaults.unidirectionalLight) << "a double-sided emitter emits from both sides";
 }
 
-TEST(GltfMaterials, TransmissionAboveHalfIsADielectricWithItsIor)
+TEST(GltfMaterials, TransmissionAboveHalfIsARoughDielectricWithItsIorAndRoughness)
 {
     ScratchDir dir;
     GltfWriter w;
     const int glass = w.material({{"extensions",
                                    {{"KHR_materials_transmission", {{"transmissionFactor", 0.9}}},
-                                    {"KHR_materials_ior", {{"ior", 1.33}}}}}});
+                                    {"KHR_materials_ior", {{"ior", 1.33}}}}},
+                                  {"pbrMetallicRoughness", {{"metallicFactor", 0}, {"roughnessFactor", 0.3}}}});
     const int plain = w.material({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}}}}});
     const int weak = w.material({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 0.4}}}}},
                                  {"pbrMetallicRoughness", {{"metallicFactor", 0}}}});
     const int mesh = w.mesh({triangle(glass), triangle(plain), triangle(weak)});
     w.scene({w.node({{"mesh", mesh}})});
-    const Scene scene = readGltf(w.writeGltf(dir.path(), "glass")).scene;
+    const GltfImport imported = readGltf(w.writeGltf(dir.path(), "glass"));
+    const Scene& scene = imported.scene;
     const auto material = [&](int k) { return scene.materials.at(scene.groups.at(0).meshes.at(k).material); };
-    ASSERT_EQ(material(0).type, MaterialType::Dielectric);
+    ASSERT_EQ(material(0).type, MaterialType::RoughDielectric);
     EXPECT_FLOAT_EQ(material(0).ior, 1.33f);
-    ASSERT_EQ(material(1).type, MaterialType::Dielectric);
+    EXPECT_EQ(material(0).alphaX, 0.3f * 0.3f) << "alpha = roughnessFactor^2";
+    EXPECT_EQ(material(0).alphaY, 0.3f * 0.3f);
+    EXPECT_EQ(material(0).fresnel, FresnelModel::Exact);
+    ASSERT_EQ(material(1).type, MaterialType::RoughDielectric);
     EXPECT_FLOAT_EQ(material(1).ior, 1.5f) << "KHR_materials_ior's default";
-    EXPECT_EQ(material(2).type, MaterialType::Lambertian) << "transmission 0.4 is not glass";
+    EXPECT_EQ(material(1).alphaX, 1.0f) << "roughnessFactor's default 1";
+    EXPECT_EQ(material(2).type, MaterialType::GltfPbr) << "transmission 0.4 is not glass";
+    EXPECT_EQ(material(2).metallic, 0.0f);
+    EXPECT_EQ(imported.unmapped, "") << "KHR_materials_transmission and KHR_materials_ior are read";
 }
 
-TEST(GltfMaterials, MetallicIsMetalWithRoughnessAsFuzz)
+TEST(GltfMaterials, MetallicRoughnessFactorsAreGltfPbrsOwn)
 {
     ScratchDir dir;
     GltfWriter w;
@@ -72,19 +81,29 @@ TEST(GltfMaterials, MetallicIsMetalWithRoughnessAsFuzz)
         {{"pbrMetallicRoughness", {{"baseColorFactor", {0.9, 0.8, 0.7, 1}}, {"metallicFactor", 0.5}, {"roughnessFactor", 0.3}}}});
     const Scene scene = readGltf(oneTriangle(dir, mat, w)).scene;
     const MaterialData& m = onlyMaterial(scene);
-    ASSERT_EQ(m.type, MaterialType::Metal);
-    EXPECT_FLOAT_EQ(m.fuzz, 0.3f);
+    ASSERT_EQ(m.type, MaterialType::GltfPbr);
+    EXPECT_EQ(m.metallic, 0.5f);
+    EXPECT_EQ(m.alphaX, 0.3f * 0.3f) << "alpha = roughnessFactor^2 (glTF 2.0 Appendix B)";
+    EXPECT_EQ(m.alphaY, 0.3f * 0.3f);
+    EXPECT_EQ(m.ior, 1.5f) << "the dielectric's ior without KHR_materials_ior";
+    EXPECT_EQ(m.metallicRoughnessTexture, kNoIndex);
+    EXPECT_EQ(m.fuzz, 0.0f) << "no fuzz: the metal of the books is gone";
     expectNear(solidColor(scene, m.albedoTexture), {0.9f, 0.8f, 0.7f});
 }
 
-TEST(GltfMaterials, DielectricLessNonMetalIsLambertianWithBaseColour)
+TEST(GltfMaterials, EveryMetallicFactorIsKeptNotThresholded)
 {
     ScratchDir dir;
     GltfWriter w;
-    const int mat = w.material({{"pbrMetallicRoughness", {{"baseColorFactor", {0.2, 0.4, 0.6, 1}}, {"metallicFactor", 0.49}}}});
+    const int mat = w.material({{"pbrMetallicRoughness",
+                                 {{"baseColorFactor", {0.2, 0.4, 0.6, 1}},
+                                  {"metallicFactor", 0.49},
+                                  {"roughnessFactor", 0}}}});
     const Scene scene = readGltf(oneTriangle(dir, mat, w)).scene;
     const MaterialData& m = onlyMaterial(scene);
-    ASSERT_EQ(m.type, MaterialType::Lambertian);
+    ASSERT_EQ(m.type, MaterialType::GltfPbr);
+    EXPECT_EQ(m.metallic, 0.49f);
+    EXPECT_EQ(m.alphaX, 0.0f) << "a smooth surface (the BSDF raises alpha to kMinMicrofacetAlpha)";
     expectNear(solidColor(scene, m.albedoTexture), {0.2f, 0.4f, 0.6f});
 }
 
@@ -95,9 +114,44 @@ TEST(GltfMaterials, SpecDefaultsAreWhiteRoughMetal)
     const int mat = w.material({{"name", "bare"}}); // metallicFactor and roughnessFactor default to 1 (§3.9.2)
     const Scene scene = readGltf(oneTriangle(dir, mat, w)).scene;
     const MaterialData& m = onlyMaterial(scene);
-    ASSERT_EQ(m.type, MaterialType::Metal);
-    EXPECT_EQ(m.fuzz, 1.0f);
+    ASSERT_EQ(m.type, MaterialType::GltfPbr);
+    EXPECT_EQ(m.metallic, 1.0f);
+    EXPECT_EQ(m.alphaX, 1.0f);
+    EXPECT_EQ(m.ior, 1.5f);
     expectNear(solidColor(scene, m.albedoTexture), {1, 1, 1});
+}
+
+TEST(GltfMaterials, KhrMaterialsIorIsTheDielectricsIor)
+{
+    ScratchDir dir;
+    GltfWriter w;
+    const int mat = w.material({{"extensions", {{"KHR_materials_ior", {{"ior", 2.4}}}}},
+                                {"pbrMetallicRoughness", {{"metallicFactor", 0.25}}}});
+    w.json()["extensionsUsed"] = {"KHR_materials_ior"};
+    const GltfImport imported = readGltf(oneTriangle(dir, mat, w));
+    const MaterialData& m = onlyMaterial(imported.scene);
+    ASSERT_EQ(m.type, MaterialType::GltfPbr);
+    EXPECT_EQ(m.ior, 2.4f);
+    EXPECT_EQ(imported.unmapped, "");
+
+    GltfWriter low;
+    const int bad = low.material({{"extensions", {{"KHR_materials_ior", {{"ior", 0.5}}}}}});
+    const std::string e = errorOf(oneTriangle(dir, bad, low, "low"));
+    EXPECT_NE(e.find("/materials/0/extensions/KHR_materials_ior/ior: expected a number in [1, 100], got 0.5"),
+              std::string::npos)
+        << e;
+}
+
+TEST(GltfMaterials, RoughnessOutOfRangeIsRefusedForGlassToo)
+{
+    ScratchDir dir;
+    GltfWriter w;
+    const int mat = w.material({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}}}},
+                                {"pbrMetallicRoughness", {{"roughnessFactor", 1.5}}}});
+    const std::string e = errorOf(oneTriangle(dir, mat, w));
+    EXPECT_NE(e.find("/materials/0/pbrMetallicRoughness/roughnessFactor: expected a number in [0, 1], got 1.5"),
+              std::string::npos)
+        << e;
 }
 
 TEST(GltfMaterials, NoMaterialIsGreyLambertianAndNoEmitterAddsTheSky)
@@ -180,8 +234,95 @@ TEST(GltfTextures, MetalTakesTheTextureToo)
                                   {"roughnessFactor", 0}}}});
     const Scene scene = readGltf(oneTriangle(dir, mat, w)).scene;
     const MaterialData& m = onlyMaterial(scene);
-    EXPECT_EQ(m.type, MaterialType::Metal);
-    EXPECT_EQ(scene.textures.at(m.albedoTexture).type, TextureType::Image);
+    EXPECT_EQ(m.type, MaterialType::GltfPbr);
+    EXPECT_EQ(m.metallic, 1.0f);
+    ASSERT_EQ(scene.textures.at(m.albedoTexture).type, TextureType::Image);
+    EXPECT_EQ(scene.textures.at(m.albedoTexture).linear, 0u) << "base colour is sRGB colour";
+}
+
+TEST(GltfTextures, MetallicRoughnessTextureIsLinearDataUntintedBesideTheFactors)
+{
+    // One image as base colour (tinted, sRGB) and as metallic-roughness texture (its texels as they are, linear).
+    ScratchDir dir;
+    GltfWriter w;
+    const std::vector<unsigned char> texel = {200, 128, 64, 255};
+    const int texture = w.texture(w.imageDataUri(texelPng(dir, texel)));
+    const int mat = w.material({{"pbrMetallicRoughness",
+                                 {{"baseColorTexture", {{"index", texture}}},
+                                  {"baseColorFactor", {0.5, 0.5, 0.5, 1}},
+                                  {"metallicRoughnessTexture", {{"index", texture}}},
+                                  {"metallicFactor", 0.8},
+                                  {"roughnessFactor", 0.5}}}});
+    const int again = w.material({{"pbrMetallicRoughness",
+                                   {{"metallicRoughnessTexture", {{"index", texture}}}, {"metallicFactor", 0.1}}}});
+    const int mesh = w.mesh({triangle(mat), triangle(again)});
+    w.scene({w.node({{"mesh", mesh}})});
+    const GltfImport imported = readGltf(w.writeGltf(dir.path(), "mr"));
+    const Scene& scene = imported.scene;
+    const MaterialData& m = scene.materials.at(scene.groups.at(0).meshes.at(0).material);
+    ASSERT_EQ(m.type, MaterialType::GltfPbr);
+    EXPECT_EQ(m.metallic, 0.8f) << "the factors stay the material's";
+    EXPECT_EQ(m.alphaX, 0.25f);
+    ASSERT_NE(m.metallicRoughnessTexture, kNoIndex);
+    const TextureData& mr = scene.textures.at(m.metallicRoughnessTexture);
+    ASSERT_EQ(mr.type, TextureType::Image);
+    EXPECT_EQ(mr.linear, 1u);
+    EXPECT_EQ(scene.images.at(mr.image).rgba, texel) << "not tinted by the base colour factor";
+    const TextureData& base = scene.textures.at(m.albedoTexture);
+    EXPECT_EQ(base.linear, 0u);
+    EXPECT_NE(base.image, mr.image);
+    EXPECT_EQ(scene.images.at(base.image).rgba[0], linearToSrgb8(srgb8ToLinear(200) * 0.5f)) << "the base colour is";
+    const MaterialData& n = scene.materials.at(scene.groups.at(0).meshes.at(1).material);
+    EXPECT_EQ(n.metallicRoughnessTexture, m.metallicRoughnessTexture) << "one texture per image";
+    EXPECT_EQ(n.metallic, 0.1f);
+    EXPECT_EQ(imported.unmapped.find("metallic-roughness"), std::string::npos) << imported.unmapped;
+    EXPECT_NO_THROW(imported.scene.validate());
+}
+
+TEST(GltfTextures, MetallicRoughnessTextureOnAnotherTexcoordIsNotedAndLeftOut)
+{
+    ScratchDir dir;
+    GltfWriter w;
+    const int texture = w.texture(w.imageDataUri(texelPng(dir, {0, 128, 64, 255})));
+    const int mat = w.material({{"name", "Other"},
+                                {"pbrMetallicRoughness",
+                                 {{"metallicRoughnessTexture", {{"index", texture}, {"texCoord", 1}}},
+                                  {"metallicFactor", 0.3}}}});
+    const GltfImport imported = readGltf(oneTriangle(dir, mat, w));
+    const MaterialData& m = onlyMaterial(imported.scene);
+    ASSERT_EQ(m.type, MaterialType::GltfPbr);
+    EXPECT_EQ(m.metallicRoughnessTexture, kNoIndex);
+    EXPECT_EQ(m.metallic, 0.3f);
+    EXPECT_NE(imported.unmapped.find(
+                  "metallic-roughness textures on TEXCOORD_1 (the factors alone) (material 'Other')"),
+              std::string::npos)
+        << imported.unmapped;
+}
+
+TEST(GltfTextures, MetallicRoughnessTextureThatDoesNotExistIsRefused)
+{
+    ScratchDir dir;
+    GltfWriter w;
+    w.texture(w.imageDataUri(texelPng(dir, {0, 128, 64, 255})));
+    const int mat = w.material({{"pbrMetallicRoughness", {{"metallicRoughnessTexture", {{"index", 4}}}}}});
+    const std::string e = errorOf(oneTriangle(dir, mat, w));
+    EXPECT_NE(e.find("/materials/0/pbrMetallicRoughness/metallicRoughnessTexture/index: texture 4 does not exist (the "
+                     "file has 1)"),
+              std::string::npos)
+        << e;
+}
+
+TEST(GltfTextures, MetallicRoughnessTextureOfGlassIsNoted)
+{
+    ScratchDir dir;
+    GltfWriter w;
+    const int texture = w.texture(w.imageDataUri(texelPng(dir, {0, 128, 64, 255})));
+    const int mat = w.material({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}}}},
+                                {"pbrMetallicRoughness", {{"metallicRoughnessTexture", {{"index", texture}}}}}});
+    const GltfImport imported = readGltf(oneTriangle(dir, mat, w));
+    EXPECT_EQ(onlyMaterial(imported.scene).type, MaterialType::RoughDielectric);
+    EXPECT_NE(imported.unmapped.find("metallic-roughness textures of transmissive materials"), std::string::npos)
+        << imported.unmapped;
 }
 
 TEST(GltfTextures, RepeatedAndMirroredCoordinatesAreMovedIntoTheUnitSquarePerTriangle)
@@ -245,6 +386,45 @@ TEST(GltfTextures, ClampToEdgeAndUntexturedMaterialsKeepTheirCoordinates)
         EXPECT_EQ(m.uvs.at(1), vec2(3.5f, -2.0f)) << m.name;
     }
     EXPECT_EQ(imported.unmapped, "");
+}
+
+TEST(GltfTextures, MetallicRoughnessSamplersWrapTooAndTheBaseColoursWins)
+{
+    ScratchDir dir;
+    GltfWriter w;
+    const int image = w.imageDataUri(texelPng(dir, {0, 128, 64, 255}));
+    w.json()["samplers"].push_back({{"wrapS", 33648}, {"wrapT", 10497}}); // MIRRORED_REPEAT, REPEAT
+    w.json()["samplers"].push_back({{"wrapS", 33071}, {"wrapT", 33071}}); // CLAMP_TO_EDGE
+    const int mirrored = w.texture(image);
+    w.json()["textures"][mirrored]["sampler"] = 0;
+    const int clamped = w.texture(w.imageDataUri(checkerPng(dir)));
+    w.json()["textures"][clamped]["sampler"] = 1;
+    // Only a metallic-roughness texture: its sampler wraps the coordinates.
+    const int alone = w.material({{"pbrMetallicRoughness", {{"metallicRoughnessTexture", {{"index", mirrored}}}}}});
+    // Both: the base colour's sampler (clamp) wins, and the difference is noted.
+    const int both = w.material({{"name", "Both"},
+                                 {"pbrMetallicRoughness",
+                                  {{"baseColorTexture", {{"index", clamped}}},
+                                   {"metallicRoughnessTexture", {{"index", mirrored}}}}}});
+    Primitive a = triangle(alone);
+    a.uvs = {{5.25, 2.5}, {6, 2.5}, {5, 3}};
+    Primitive b = a;
+    b.material = both;
+    const int mesh = w.mesh({a, b});
+    w.scene({w.node({{"mesh", mesh}})});
+    const GltfImport imported = readGltf(w.writeGltf(dir.path(), "mrwrap"));
+    const MeshData& moved = imported.scene.meshes.at(0);
+    // s in [5, 6]: period 5, odd, mirrored (s -> 6 - s); t in [2, 3] -> t - 2; the mesh holds (s, 1 - t).
+    EXPECT_NEAR(moved.uvs.at(moved.indices.at(0)).x, 0.75f, 1e-6f);
+    EXPECT_NEAR(moved.uvs.at(moved.indices.at(0)).y, 0.5f, 1e-6f);
+    EXPECT_NEAR(moved.uvs.at(moved.indices.at(2)).x, 1.0f, 1e-6f);
+    EXPECT_NEAR(moved.uvs.at(moved.indices.at(2)).y, 0.0f, 1e-6f);
+    const MeshData& kept = imported.scene.meshes.at(1);
+    EXPECT_EQ(kept.uvs.at(kept.indices.at(0)), vec2(5.25f, -1.5f)) << "clamped as the base colour's sampler says";
+    EXPECT_NE(imported.unmapped.find("metallic-roughness textures wrapping unlike their base colour (wrapped as "
+                                     "the base colour) (material 'Both')"),
+              std::string::npos)
+        << imported.unmapped;
 }
 
 TEST(GltfTextures, MissingImageFileIsAnAssetErrorNamingIt)

@@ -324,3 +324,50 @@ TEST(SceneFile, MicrofacetMaterialsTakeAlphaOrGltfRoughness)
     }
 }
 } // namespace rt
+
+#include "Image/ImageIO.h"
+
+namespace rt
+{
+TEST(SceneFile, ImageTexturesTakeTheLinearFlagAndWriteItBack)
+{
+    // An image texture's texels are sRGB colour unless "linear": true (data, as glTF's metallic-roughness).
+    test::ScratchDir dir;
+    writePng8(dir / "mr.png", 1, 1, {0, 128, 64, 255});
+    const std::string doc = R"({"textures": [{"type": "image", "path": "mr.png", "linear": true},
+        {"type": "image", "path": "mr.png"}, {"type": "image", "path": "mr.png", "linear": false}],
+        "materials": [{"type": "gltf_pbr", "base_color_texture": 1, "metallic_roughness_texture": 0}],
+        "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": 0}]})";
+    const Scene s = loadSceneFile(dir.write("s.json", doc));
+    ASSERT_EQ(s.textures.size(), 3u);
+    EXPECT_EQ(s.textures[0].linear, 1u);
+    EXPECT_EQ(s.textures[1].linear, 0u) << "sRGB by default";
+    EXPECT_EQ(s.textures[2].linear, 0u);
+
+    const nlohmann::ordered_json j = sceneToJson(s);
+    EXPECT_EQ(j["textures"][0].value("linear", false), true) << j["textures"][0].dump();
+    EXPECT_FALSE(j["textures"][1].contains("linear")) << "written only where set: " << j["textures"][1].dump();
+    exportScene(s, dir / "copy.json");
+    const Scene copy = loadSceneFile(dir / "copy.json");
+    ASSERT_EQ(copy.textures.size(), s.textures.size());
+    EXPECT_EQ(std::memcmp(copy.textures.data(), s.textures.data(), s.textures.size() * sizeof(TextureData)), 0)
+        << "the textures read back bit for bit";
+
+    const auto errorIn = [&](const std::string& text) {
+        try
+        {
+            loadSceneFile(dir.write("bad.json", text));
+        }
+        catch (const Error& e)
+        {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    std::string e = errorIn(replaced(doc, "\"linear\": true", "\"linear\": 1"));
+    EXPECT_NE(e.find("/textures/0/linear: expected true or false"), std::string::npos) << e;
+    e = errorIn(replaced(doc, R"({"type": "image", "path": "mr.png"})",
+                         R"({"type": "checker", "scale": 1, "even": [1, 1, 1], "odd": [0, 0, 0], "linear": true})"));
+    EXPECT_NE(e.find("/textures/1: unknown key 'linear'"), std::string::npos) << "images only: " << e;
+}
+} // namespace rt

@@ -71,7 +71,8 @@ TEST(CpuPathVariants, TheChoiceFollowsTheScenesFeaturesAndTheEstimator)
     RenderControl control;
     const RenderResult r = renderWithSettings(engine, smallSettings(8, 1, 4, Estimator::Mixture), control);
     EXPECT_EQ(r.stats.frameConfiguration,
-              fmt::format("path loop: mixture, no media, textures, {} rays at a time (scene: spheres lambertian "
+              fmt::format("path loop: mixture, no media, textures or microfacet, {} rays at a time "
+                          "(scene: spheres lambertian "
                           "image-textures)",
                           cpu::kLanes));
 

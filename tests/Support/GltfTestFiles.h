@@ -86,7 +86,16 @@ inline std::vector<std::uint8_t> checkerPng(const ScratchDir& dir, const std::st
     return GltfWriter::readBytes(dir / name);
 }
 
-/// A Lambertian triangle textured with `image` times `factor`.
+/// A 1 x 1 PNG of the texel `rgba`, written to `dir` and returned as bytes (a metallic-roughness texel: g
+/// roughness, b metallic).
+inline std::vector<std::uint8_t> texelPng(const ScratchDir& dir, const std::vector<unsigned char>& rgba,
+                                          const std::string& name = "texel.png")
+{
+    writePng8(dir / name, 1, 1, rgba);
+    return GltfWriter::readBytes(dir / name);
+}
+
+/// A non-metallic (gltf_pbr, metallicFactor 0) triangle textured with `image` times `factor`.
 inline std::filesystem::path texturedTriangle(const ScratchDir& dir, GltfWriter& w, int image, const std::vector<double>& factor,
                                        const std::string& name)
 {

@@ -1,7 +1,8 @@
 // Texture evaluation by type tag (HostDevice.h TextureType; RTTNW §4-5), written once for both engines: a host's
 // shading scope (Shading/README.md). p is the world-space point (checker and Perlin textures are solid textures),
 // uv the surface coordinates; colours are linear RGB. Image texels are each engine's own fetch (`imageTexel`:
-// the CPU's array, the GPU's sampler array, the same nearest texel), which the host provides.
+// the CPU's array, the GPU's sampler array, the same nearest texel), which the host provides: decoded from sRGB,
+// or read as linear data (texel / 255) for a texture whose `linear` is set (glTF's metallic-roughness).
 #ifndef RT_SHADING_TEXTURES_H
 #define RT_SHADING_TEXTURES_H
 
@@ -32,7 +33,7 @@ RT_FN vec3 evaluateTexture(uint index, vec2 uv, vec3 p)
         break;
     case RT_ENUM(TextureType, Image):
         if (kHasImageTextures)
-            return imageTexel(t.image, uv);
+            return imageTexel(t.image, uv, t.linear != 0u);
         break;
     case RT_ENUM(TextureType, Noise):
         if (kHasNoiseTextures)
