@@ -82,6 +82,28 @@ RT_FN float ggxVisibleNormalPdf(vec3 wo, vec3 wm, float alphaX, float alphaY)
     return ggxG1(wo, alphaX, alphaY) * max(0.0f, dot(wo, wm)) * ggxD(wm, alphaX, alphaY) / wo.z;
 }
 
+/// The half vector wm of a reflection from wo into wi: false unless both lie above the surface and are not
+/// opposite (wm (0, 0, 1) then).
+RT_FN bool ggxReflectionHalfVector(vec3 wo, vec3 wi, RT_OUT(vec3) wm)
+{
+    wm = vec3(0.0f, 0.0f, 1.0f);
+    if (!(wo.z > 0.0f) || !(wi.z > 0.0f))
+        return false;
+    const vec3 h = wo + wi;
+    if (lengthSquared(h) == 0.0f)
+        return false;
+    wm = normalize(h);
+    return true;
+}
+
+/// Density per unit solid angle of wi of wo reflected about a visible normal (ggxReflectionHalfVector's wm):
+/// D_wo(wm) / (4 wo.wm), the Jacobian of the reflection (Walter et al. 2007 eq. 14).
+RT_FN float ggxReflectionPdf(vec3 wo, vec3 wm, float alphaX, float alphaY)
+{
+    const float cosOm = dot(wo, wm);
+    return cosOm > 0.0f ? ggxVisibleNormalPdf(wo, wm, alphaX, alphaY) / (4.0f * cosOm) : 0.0f;
+}
+
 RT_SHADER_NAMESPACE_END
 
 #endif

@@ -1020,68 +1020,60 @@ dvec3 gltfEvalRef(const GltfPbrParams& p, const dvec3& v, const dvec3& l)
     return glm::mix(dielectric, metal, double(p.metallic)) * nl;
 }
 
-TEST(GltfPbrBsdf, EvalMatchesAppendixB)
+/// Direction pairs of the glTF BRDF at every test roughness, each metallic of `metallics` and four view angles:
+/// `pairs` wi per wo, every other one sampled by the BRDF (its lobe's peak), the rest cosine-distributed.
+void forEachGltfPair(std::initializer_list<float> metallics, int pairs, std::uint32_t seed,
+                     const std::function<void(const GltfPbrParams&, const vec3&, const vec3&)>& check)
 {
-    // The sampling tests check eval only against the sampler's own pdf; this checks it against the
-    // specification, diffuse and Fresnel mixing included. 1e-4 relative: float against double (below 1e-6
-    // here).
-    Rng rng(pcgHash(1250));
+    Rng rng(pcgHash(seed));
     for (float alpha : kAlphas)
-        for (float metallic : {0.0f, 0.3f, 1.0f})
+        for (float metallic : metallics)
         {
             GltfPbrParams p = gltfMaterial(alpha);
             p.metallic = metallic;
             for (double theta : {0.0, 30.0, 70.0, 85.0})
             {
                 const vec3 wo(direction(theta, 40.0));
-                for (int k = 0; k < 200; ++k)
+                for (int k = 0; k < pairs; ++k)
                 {
                     BsdfSample s;
                     const vec3 wi = k % 2 == 0 && sampleGltf(p, wo, rng, s)
                                         ? s.wi
                                         : shader::sampleCosineHemisphere(test::uniform2(rng));
-                    const vec3 eval = shader::evalGltfPbr(p, wo, wi);
-                    const dvec3 expected = gltfEvalRef(p, dvec3(wo), dvec3(wi));
-                    for (int ch = 0; ch < 3; ++ch)
-                        ASSERT_TRUE(closeRelative(eval[ch], expected[ch], 1e-4, 1e-30))
-                            << "alpha " << alpha << ", metallic " << metallic << ", channel " << ch
-                            << ": eval " << eval[ch] << ", Appendix B " << expected[ch]
-                            << ", wo = " << str(dvec3(wo)) << ", wi = " << str(dvec3(wi));
+                    check(p, wo, wi);
+                    if (::testing::Test::HasFatalFailure())
+                        return; // the first failing pair, as an ASSERT in the loop would
                 }
             }
         }
 }
 
+TEST(GltfPbrBsdf, EvalMatchesAppendixB)
+{
+    // The sampling tests check eval only against the sampler's own pdf; this checks it against the
+    // specification, diffuse and Fresnel mixing included. 1e-4 relative: float against double (below 1e-6
+    // here).
+    forEachGltfPair({0.0f, 0.3f, 1.0f}, 200, 1250, [](const GltfPbrParams& p, const vec3& wo, const vec3& wi) {
+        const vec3 eval = shader::evalGltfPbr(p, wo, wi);
+        const dvec3 expected = gltfEvalRef(p, dvec3(wo), dvec3(wi));
+        for (int ch = 0; ch < 3; ++ch)
+            ASSERT_TRUE(closeRelative(eval[ch], expected[ch], 1e-4, 1e-30))
+                << "alpha " << p.alpha << ", metallic " << p.metallic << ", channel " << ch << ": eval " << eval[ch]
+                << ", Appendix B " << expected[ch] << ", wo = " << str(dvec3(wo)) << ", wi = " << str(dvec3(wi));
+    });
+}
+
 TEST(GltfPbrBsdf, Reciprocity)
 {
     // As the conductor's: f = eval / cos_i is symmetric, its Fresnel terms taken at |wo.h| = |wi.h|.
-    Rng rng(pcgHash(1300));
-    for (float alpha : kAlphas)
-        for (float metallic : {0.0f, 0.5f, 1.0f})
-        {
-            GltfPbrParams p = gltfMaterial(alpha);
-            p.metallic = metallic;
-            for (double theta : {0.0, 30.0, 70.0, 85.0})
-            {
-                const vec3 wo(direction(theta, 40.0));
-                for (int k = 0; k < 500; ++k)
-                {
-                    BsdfSample s;
-                    vec3 wi;
-                    if (k % 2 == 0 && sampleGltf(p, wo, rng, s))
-                        wi = s.wi;
-                    else
-                        wi = shader::sampleCosineHemisphere(test::uniform2(rng));
-                    const vec3 forward = shader::evalGltfPbr(p, wo, wi) / wi.z;
-                    const vec3 backward = shader::evalGltfPbr(p, wi, wo) / wo.z;
-                    for (int ch = 0; ch < 3; ++ch)
-                        ASSERT_TRUE(closeRelative(forward[ch], backward[ch], 1e-4, 1e-30))
-                            << "alpha " << alpha << ", metallic " << metallic
-                            << ": f(wo, wi) = " << forward[ch] << ", f(wi, wo) = " << backward[ch]
-                            << ", wo = " << str(dvec3(wo)) << ", wi = " << str(dvec3(wi));
-                }
-            }
-        }
+    forEachGltfPair({0.0f, 0.5f, 1.0f}, 500, 1300, [](const GltfPbrParams& p, const vec3& wo, const vec3& wi) {
+        const vec3 forward = shader::evalGltfPbr(p, wo, wi) / wi.z;
+        const vec3 backward = shader::evalGltfPbr(p, wi, wo) / wo.z;
+        for (int ch = 0; ch < 3; ++ch)
+            ASSERT_TRUE(closeRelative(forward[ch], backward[ch], 1e-4, 1e-30))
+                << "alpha " << p.alpha << ", metallic " << p.metallic << ": f(wo, wi) = " << forward[ch]
+                << ", f(wi, wo) = " << backward[ch] << ", wo = " << str(dvec3(wo)) << ", wi = " << str(dvec3(wi));
+    });
 }
 
 TEST(GltfPbrBsdf, WhiteFurnaceOfWhiteMetalMatchesTheGgxAlbedo)

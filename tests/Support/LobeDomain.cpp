@@ -16,6 +16,27 @@ bool onSide(double z, Side side)
 {
     return side == Side::Upper ? z >= 0.0 : z < 0.0;
 }
+
+/// Cell integrals of a density times `samples`, and the other cell's count: the samples they leave out.
+std::vector<double> countsWithOtherCell(std::vector<double> counts, long samples)
+{
+    double total = 0.0;
+    for (double& c : counts)
+    {
+        c *= double(samples);
+        total += c;
+    }
+    counts.push_back(std::max(0.0, double(samples) - total));
+    return counts;
+}
+
+double sum(const std::vector<double>& values)
+{
+    double total = 0.0;
+    for (double v : values)
+        total += v;
+    return total;
+}
 } // namespace
 
 // Newton on the Legendre recurrence (Press et al., Numerical Recipes §4.6), mapped from [-1, 1].
@@ -255,23 +276,12 @@ glm::dvec3 LobeDomain::pointAt(const Cap& cap, const glm::dvec3& e, double T) co
 std::vector<double> LobeDomain::expectedCounts(const std::function<double(const glm::dvec3&)>& pdf,
                                                long samples, int subdivisions) const
 {
-    std::vector<double> counts = cellIntegrals(pdf, subdivisions);
-    double total = 0.0;
-    for (double& c : counts)
-    {
-        c *= double(samples);
-        total += c;
-    }
-    counts.push_back(std::max(0.0, double(samples) - total));
-    return counts;
+    return countsWithOtherCell(cellIntegrals(pdf, subdivisions), samples);
 }
 
 double LobeDomain::integrate(const std::function<double(const glm::dvec3&)>& f, int subdivisions) const
 {
-    double total = 0.0;
-    for (double c : cellIntegrals(f, subdivisions))
-        total += c;
-    return total;
+    return sum(cellIntegrals(f, subdivisions));
 }
 
 WarpedDomain::WarpedDomain(std::vector<WarpedPart> parts) : m_parts(std::move(parts))
@@ -317,22 +327,11 @@ std::vector<double> WarpedDomain::cellIntegrals(const std::function<double(const
 std::vector<double> WarpedDomain::expectedCounts(const std::function<double(const glm::dvec3&)>& pdf,
                                                  long samples, int subdivisions) const
 {
-    std::vector<double> counts = cellIntegrals(pdf, subdivisions);
-    double total = 0.0;
-    for (double& c : counts)
-    {
-        c *= double(samples);
-        total += c;
-    }
-    counts.push_back(std::max(0.0, double(samples) - total));
-    return counts;
+    return countsWithOtherCell(cellIntegrals(pdf, subdivisions), samples);
 }
 
 double WarpedDomain::integrate(const std::function<double(const glm::dvec3&)>& f, int subdivisions) const
 {
-    double total = 0.0;
-    for (double c : cellIntegrals(f, subdivisions))
-        total += c;
-    return total;
+    return sum(cellIntegrals(f, subdivisions));
 }
 } // namespace rt::test

@@ -29,30 +29,30 @@ RT_FN vec3 conductorFresnel(RT_IN(ConductorParams) c, float cosine)
     return c.schlick ? schlickFresnel(c.f0, cosine) : fresnelConductorRgb(cosine, c.eta, c.k);
 }
 
-/// f(wo, wi) |cos theta_i|; 0 unless both directions lie above the surface.
-RT_FN vec3 evalConductor(RT_IN(ConductorParams) c, vec3 wo, vec3 wi)
+/// f(wo, wi) |cos theta_i| (0 unless both directions lie above the surface) and, in `pdf`, the density of
+/// sampleConductor for wi per unit solid angle: D_wo(wm) / (4 wo.wm).
+RT_FN vec3 evalConductor(RT_IN(ConductorParams) c, vec3 wo, vec3 wi, RT_OUT(float) pdf)
 {
-    if (!(wo.z > 0.0f) || !(wi.z > 0.0f))
+    vec3 wm;
+    pdf = 0.0f;
+    if (!ggxReflectionHalfVector(wo, wi, wm))
         return vec3(0.0f);
-    const vec3 h = wo + wi;
-    if (lengthSquared(h) == 0.0f)
-        return vec3(0.0f);
-    const vec3 wm = normalize(h);
+    pdf = ggxReflectionPdf(wo, wm, c.alphaX, c.alphaY);
     return conductorFresnel(c, max(0.0f, dot(wo, wm))) *
            (ggxD(wm, c.alphaX, c.alphaY) * ggxG2(wo, wi, c.alphaX, c.alphaY) / (4.0f * wo.z));
 }
 
-/// Density of sampleConductor per unit solid angle of wi: D_wo(wm) / (4 wo.wm).
+RT_FN vec3 evalConductor(RT_IN(ConductorParams) c, vec3 wo, vec3 wi)
+{
+    float pdf;
+    return evalConductor(c, wo, wi, pdf);
+}
+
 RT_FN float conductorPdf(RT_IN(ConductorParams) c, vec3 wo, vec3 wi)
 {
-    if (!(wo.z > 0.0f) || !(wi.z > 0.0f))
-        return 0.0f;
-    const vec3 h = wo + wi;
-    if (lengthSquared(h) == 0.0f)
-        return 0.0f;
-    const vec3 wm = normalize(h);
-    const float cosOm = dot(wo, wm);
-    return cosOm > 0.0f ? ggxVisibleNormalPdf(wo, wm, c.alphaX, c.alphaY) / (4.0f * cosOm) : 0.0f;
+    float pdf;
+    evalConductor(c, wo, wi, pdf);
+    return pdf;
 }
 
 /// wi: wo reflected about a visible normal (u in [0, 1)^2). False (the path ends) for wo.z <= 0 or a reflection
@@ -70,10 +70,10 @@ RT_FN bool sampleConductor(RT_IN(ConductorParams) c, vec3 wo, vec2 u, RT_OUT(Bsd
     if (!(wi.z > 0.0f) || !(cosOm > 0.0f))
         return false;
     s.wi = normalize(wi);
-    s.pdf = conductorPdf(c, wo, s.wi);
+    const vec3 f = evalConductor(c, wo, s.wi, s.pdf);
     if (!(s.pdf > 0.0f))
         return false;
-    s.weight = evalConductor(c, wo, s.wi) / s.pdf;
+    s.weight = f / s.pdf;
     return true;
 }
 

@@ -40,15 +40,16 @@ RT_FN float gltfSpecularProbability(RT_IN(GltfPbrParams) p, float cosO)
     return diffuse > 0.0f ? specular / (specular + diffuse) : 1.0f;
 }
 
-/// f(wo, wi) |cos theta_i|; 0 unless both directions lie above the surface.
-RT_FN vec3 evalGltfPbr(RT_IN(GltfPbrParams) p, vec3 wo, vec3 wi)
+/// f(wo, wi) |cos theta_i| (0 unless both directions lie above the surface) and, in `pdf`, the density of
+/// sampleGltfPbr for wi per unit solid angle: the lobes' mixture.
+RT_FN vec3 evalGltfPbr(RT_IN(GltfPbrParams) p, vec3 wo, vec3 wi, RT_OUT(float) pdf)
 {
-    if (!(wo.z > 0.0f) || !(wi.z > 0.0f))
+    vec3 wm;
+    pdf = 0.0f;
+    if (!ggxReflectionHalfVector(wo, wi, wm))
         return vec3(0.0f);
-    const vec3 h = wo + wi;
-    if (lengthSquared(h) == 0.0f)
-        return vec3(0.0f);
-    const vec3 wm = normalize(h);
+    const float ps = gltfSpecularProbability(p, wo.z);
+    pdf = ps * ggxReflectionPdf(wo, wm, p.alpha, p.alpha) + (1.0f - ps) * cosineHemispherePdf(wi.z);
     const float voh = abs(dot(wo, wm));
     const float m = clamp(1.0f - voh, 0.0f, 1.0f);
     const float m5 = (m * m) * (m * m) * m;
@@ -59,19 +60,17 @@ RT_FN vec3 evalGltfPbr(RT_IN(GltfPbrParams) p, vec3 wo, vec3 wi)
     return (1.0f - p.metallic) * dielectric + p.metallic * specular * fm;
 }
 
-/// Density of sampleGltfPbr per unit solid angle of wi: the lobes' mixture.
+RT_FN vec3 evalGltfPbr(RT_IN(GltfPbrParams) p, vec3 wo, vec3 wi)
+{
+    float pdf;
+    return evalGltfPbr(p, wo, wi, pdf);
+}
+
 RT_FN float gltfPbrPdf(RT_IN(GltfPbrParams) p, vec3 wo, vec3 wi)
 {
-    if (!(wo.z > 0.0f) || !(wi.z > 0.0f))
-        return 0.0f;
-    const vec3 h = wo + wi;
-    if (lengthSquared(h) == 0.0f)
-        return 0.0f;
-    const vec3 wm = normalize(h);
-    const float cosOm = dot(wo, wm);
-    const float specularPdf = cosOm > 0.0f ? ggxVisibleNormalPdf(wo, wm, p.alpha, p.alpha) / (4.0f * cosOm) : 0.0f;
-    const float ps = gltfSpecularProbability(p, wo.z);
-    return ps * specularPdf + (1.0f - ps) * cosineHemispherePdf(wi.z);
+    float pdf;
+    evalGltfPbr(p, wo, wi, pdf);
+    return pdf;
 }
 
 /// The specular lobe when uLobe in [0, 1) falls below its probability, else the diffuse; u in [0, 1)^2 places
@@ -94,10 +93,10 @@ RT_FN bool sampleGltfPbr(RT_IN(GltfPbrParams) p, vec3 wo, float uLobe, vec2 u, R
     if (!(wi.z > 0.0f))
         return false;
     s.wi = normalize(wi);
-    s.pdf = gltfPbrPdf(p, wo, s.wi);
+    const vec3 f = evalGltfPbr(p, wo, s.wi, s.pdf);
     if (!(s.pdf > 0.0f))
         return false;
-    s.weight = evalGltfPbr(p, wo, s.wi) / s.pdf;
+    s.weight = f / s.pdf;
     return true;
 }
 

@@ -35,17 +35,10 @@ RT_FN vec3 evalMicrofacetBsdf(RT_IN(MicrofacetBsdf) b, vec3 wo, vec3 wi, RT_OUT(
     const vec3 o = onbToLocal(b.frame, wo);
     const vec3 i = onbToLocal(b.frame, wi);
     if (b.type == RT_ENUM(MaterialType, RoughDielectric))
-    {
-        pdf = roughDielectricPdf(b.alpha, b.ior, o, i);
-        return vec3(evalRoughDielectric(b.alpha, b.ior, o, i));
-    }
+        return vec3(evalRoughDielectric(b.alpha, b.ior, o, i, pdf));
     if (b.type == RT_ENUM(MaterialType, GltfPbr))
-    {
-        pdf = gltfPbrPdf(b.gltf, o, i);
-        return evalGltfPbr(b.gltf, o, i);
-    }
-    pdf = conductorPdf(b.conductor, o, i);
-    return evalConductor(b.conductor, o, i);
+        return evalGltfPbr(b.gltf, o, i, pdf);
+    return evalConductor(b.conductor, o, i, pdf);
 }
 
 /// A direction wi (world space) leaving the shading point, with its weight and pdf; uLobe picks the lobe where

@@ -42,37 +42,41 @@ RT_FN float roughDielectricReflectance(vec3 wo, vec3 wm, float ior)
     return fresnelDielectric(abs(c), c > 0.0f ? 1.0f / ior : ior);
 }
 
-/// f(wo, wi) |cos theta_i| for isotropic roughness alpha (>= kMinMicrofacetAlpha).
-RT_FN float evalRoughDielectric(float alpha, float ior, vec3 wo, vec3 wi)
+/// f(wo, wi) |cos theta_i| for isotropic roughness alpha (>= kMinMicrofacetAlpha) and, in `pdf`, the density
+/// of sampleRoughDielectric for wi per unit solid angle.
+RT_FN float evalRoughDielectric(float alpha, float ior, vec3 wo, vec3 wi, RT_OUT(float) pdf)
 {
     vec3 wm;
     float etaPrime;
     bool reflection;
+    pdf = 0.0f;
     if (!roughDielectricHalfVector(wo, wi, ior, wm, etaPrime, reflection))
         return 0.0f;
     const float r = roughDielectricReflectance(wo, wm, ior);
     const float dg = ggxD(wm, alpha, alpha) * ggxG2(wo, wi, alpha, alpha);
-    if (reflection)
-        return dg * r / (4.0f * abs(wo.z));
-    const float s = dot(wi, wm) + dot(wo, wm) / etaPrime;
-    return dg * (1.0f - r) * abs(dot(wi, wm) * dot(wo, wm) / (wo.z * s * s)) / (etaPrime * etaPrime);
-}
-
-/// Density of sampleRoughDielectric per unit solid angle of wi.
-RT_FN float roughDielectricPdf(float alpha, float ior, vec3 wo, vec3 wi)
-{
-    vec3 wm;
-    float etaPrime;
-    bool reflection;
-    if (!roughDielectricHalfVector(wo, wi, ior, wm, etaPrime, reflection))
-        return 0.0f;
-    const float r = roughDielectricReflectance(wo, wm, ior);
     // wm (z > 0) among the normals visible from wo's side, wo turned to z > 0.
     const float normalPdf = ggxVisibleNormalPdf(wo.z > 0.0f ? wo : -wo, wm, alpha, alpha);
     if (reflection)
-        return normalPdf * r / (4.0f * abs(dot(wo, wm)));
+    {
+        pdf = normalPdf * r / (4.0f * abs(dot(wo, wm)));
+        return dg * r / (4.0f * abs(wo.z));
+    }
     const float s = dot(wi, wm) + dot(wo, wm) / etaPrime;
-    return normalPdf * (1.0f - r) * abs(dot(wi, wm)) / (s * s);
+    pdf = normalPdf * (1.0f - r) * abs(dot(wi, wm)) / (s * s);
+    return dg * (1.0f - r) * abs(dot(wi, wm) * dot(wo, wm) / (wo.z * s * s)) / (etaPrime * etaPrime);
+}
+
+RT_FN float evalRoughDielectric(float alpha, float ior, vec3 wo, vec3 wi)
+{
+    float pdf;
+    return evalRoughDielectric(alpha, ior, wo, wi, pdf);
+}
+
+RT_FN float roughDielectricPdf(float alpha, float ior, vec3 wo, vec3 wi)
+{
+    float pdf;
+    evalRoughDielectric(alpha, ior, wo, wi, pdf);
+    return pdf;
 }
 
 /// A visible normal of wo (on either side, u in [0, 1)^2), then reflection with the Fresnel reflectance's
@@ -107,10 +111,10 @@ RT_FN bool sampleRoughDielectric(float alpha, float ior, vec3 wo, float uLobe, v
     if ((uLobe < r) != (wi.z * wo.z > 0.0f))
         return false;
     s.wi = normalize(wi);
-    s.pdf = roughDielectricPdf(alpha, ior, wo, s.wi);
+    const float f = evalRoughDielectric(alpha, ior, wo, s.wi, s.pdf);
     if (!(s.pdf > 0.0f))
         return false;
-    s.weight = vec3(evalRoughDielectric(alpha, ior, wo, s.wi) / s.pdf);
+    s.weight = vec3(f / s.pdf);
     return true;
 }
 
