@@ -100,7 +100,7 @@ RT_FN bool shadePathVertex(RT_INOUT(PathState) path, uint segment, RT_IN(HitPayl
                                 ? surface.position
                                 : offsetRayOrigin(surface.position, surface.shadingNormal, hit.offsetScale);
         const vec3 receiver = phase || transmits ? vec3(0.0f) : surface.shadingNormal;
-        const vec3 wo = -normalize(path.direction);
+        const vec3 wo = microfacet ? -normalize(path.direction) : vec3(0.0f); // read by glossy lobes only
         if (sampleDirect(origin, receiver, surface.shadingNormal, phase, albedo, microfacet, bsdf, wo, uSelect, uLight,
                          shadow))
         {
