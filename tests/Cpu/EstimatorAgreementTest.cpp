@@ -8,6 +8,7 @@
 
 #include "Engine/CpuEngine.h"
 #include "Image/Metrics.h"
+#include "Scene/SceneFeatures.h"
 #include "Scenes/Catalogue.h"
 #include "Support/BlockAgreement.h"
 #include "Support/CatalogueCases.h"
@@ -46,12 +47,18 @@ TEST_P(CpuEstimatorAgreement, EveryEstimatorMatchesNeeMis)
     s.spp = 32;
     s.depth = 16;
     s.unidirectionalLight = scene.defaults.unidirectionalLight;
+    // NEE alone at a near-specular lobe (glossy-cornell's glass of alpha 0.05) is Veach's bad case: its rare
+    // light samples that fall in the lobe are heavy-tailed, and at 32 spp the Z-test's variance, from the same
+    // samples, misses them (block means 0.46 against NEE + MIS's 0.77, |Z| 7; at 16,384 spp the two agree to
+    // 0.5 %).
+    const SceneFeatures features = featuresOf(scene);
+    const int neeFactor = features.conductor || features.roughDielectric || features.gltfPbr ? 8 : 1;
     cpu::CpuEngine engine(EngineKind::Multi);
     const auto blocksOf = [&](Variant v) {
         RenderSettings settings = s;
         settings.estimator = v.estimator;
         settings.russianRoulette = v.russianRoulette;
-        settings.spp *= v.sppFactor;
+        settings.spp *= v.sppFactor * (v.estimator == Estimator::Nee ? neeFactor : 1);
         settings.lightSampler = v.lightSampler;
         settings.lightSelection = v.lightSelection;
         settings.sampling = v.sampling;

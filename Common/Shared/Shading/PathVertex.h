@@ -81,34 +81,46 @@ RT_FN bool shadePathVertex(RT_INOUT(PathState) path, uint segment, RT_IN(HitPayl
     const bool phase = kHasIsotropic && m.type == RT_ENUM(MaterialType, Isotropic);
     const bool diffuse = (kHasLambertian && m.type == RT_ENUM(MaterialType, Lambertian)) || phase;
     const bool microfacet = isMicrofacet(m.type);
-    if (nee && (diffuse || microfacet))
+    if ((nee && diffuse) || microfacet)
     {
-        // NEE's three numbers and the direction's two (and a glossy lobe's choice), drawn in that order before any
-        // of them is used: independent draws that a CPU overlaps (a Sobol draw is a chain of about 60 cycles).
-        const float uSelect = nextFloat(path.rng);
-        const vec2 uLight = nextFloat2(path.rng);
+        // NEE's three numbers (where it runs) and the direction's two (and a glossy lobe's choice), drawn in that
+        // order before any of them is used: independent draws that a CPU overlaps (a Sobol draw is a chain of
+        // about 60 cycles). One call of each microfacet function for NEE's vertices and BSDF sampling's alike:
+        // a copy per estimator doubled lavapipe's compile of the general pipeline.
+        float uSelect = 0.0f;
+        vec2 uLight = vec2(0.0f);
+        if (nee)
+        {
+            uSelect = nextFloat(path.rng);
+            uLight = nextFloat2(path.rng);
+        }
         const vec2 u = nextFloat2(path.rng);
         const float uLobe = microfacet ? nextFloat(path.rng) : 0.0f;
         const vec3 albedo = microfacet ? vec3(0.0f) : evaluateTexture(m.albedoTexture, surface.uv, surface.position);
         MicrofacetBsdf bsdf; // read only when microfacet: a diffuse vertex builds none
         if (microfacet)
             bsdf = microfacetBsdfAt(m, surface);
-        // Glass transmits: its light samples see no horizon and leave from the hit point itself, as in a medium.
-        const bool transmits = microfacet && m.type == RT_ENUM(MaterialType, RoughDielectric);
-        // The BSDF ray leaves from this origin too (below): sampleDiffuse and a reflecting BSDF keep to ns's side.
-        const vec3 origin = medium || transmits
-                                ? surface.position
-                                : offsetRayOrigin(surface.position, surface.shadingNormal, hit.offsetScale);
-        const vec3 receiver = phase || transmits ? vec3(0.0f) : surface.shadingNormal;
         const vec3 wo = microfacet ? -normalize(path.direction) : vec3(0.0f); // read by glossy lobes only
-        if (sampleDirect(origin, receiver, surface.shadingNormal, phase, albedo, microfacet, bsdf, wo, uSelect, uLight,
-                         shadow))
+        if (nee)
         {
-            shadow.contribution *= path.beta;
-            if (transmits)
-                shadow.origin = offsetRayOrigin(
-                    surface.position, dot(shadow.direction, hit.normal) > 0.0f ? hit.normal : -hit.normal,
-                    hit.offsetScale);
+            // Glass transmits: its light samples see no horizon and leave from the hit point itself, as in a
+            // medium. The BSDF ray leaves from this origin too (below): sampleDiffuse and a reflecting BSDF keep
+            // to ns's side.
+            const bool transmits = microfacet && m.type == RT_ENUM(MaterialType, RoughDielectric);
+            const vec3 origin = medium || transmits
+                                    ? surface.position
+                                    : offsetRayOrigin(surface.position, surface.shadingNormal, hit.offsetScale);
+            const vec3 receiver = phase || transmits ? vec3(0.0f) : surface.shadingNormal;
+            if (sampleDirect(origin, receiver, surface.shadingNormal, phase, albedo, microfacet, bsdf, wo, uSelect,
+                             uLight, shadow))
+            {
+                shadow.contribution *= path.beta;
+                if (transmits)
+                    shadow.origin = offsetRayOrigin(
+                        surface.position, dot(shadow.direction, hit.normal) > 0.0f ? hit.normal : -hit.normal,
+                        hit.offsetScale);
+            }
+            path.previousNormal = receiver;
         }
         if (microfacet)
         {
@@ -117,7 +129,8 @@ RT_FN bool shadePathVertex(RT_INOUT(PathState) path, uint segment, RT_IN(HitPayl
                 return false;
             direction = s.wi;
             path.beta *= s.weight;
-            path.previousBsdfPdf = s.pdf;
+            if (nee)
+                path.previousBsdfPdf = s.pdf;
         }
         else
         {
@@ -125,18 +138,6 @@ RT_FN bool shadePathVertex(RT_INOUT(PathState) path, uint segment, RT_IN(HitPayl
             path.beta *= albedo;
             path.previousBsdfPdf = diffusePdf(phase, surface.shadingNormal, direction);
         }
-        path.previousNormal = receiver;
-    }
-    else if (microfacet)
-    {
-        // BSDF sampling alone (the bsdf and mixture estimators): the direction's two numbers and the lobe's.
-        const vec2 u = nextFloat2(path.rng);
-        const float uLobe = nextFloat(path.rng);
-        BsdfSample s;
-        if (!sampleMicrofacetBsdf(microfacetBsdfAt(m, surface), -normalize(path.direction), uLobe, u, s))
-            return false;
-        direction = s.wi;
-        path.beta *= s.weight;
     }
     else
     {
