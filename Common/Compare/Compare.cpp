@@ -17,6 +17,7 @@
 #include "Render/SettingsTable.h"
 #include "Compare/ConvergenceCsv.h"
 #include "Compare/EqualTime.h"
+#include "Compare/ImageFolder.h"
 #include "Compare/Measurement.h"
 #include "Compare/PythonScript.h"
 #include "Compare/ReferenceCache.h"
@@ -162,7 +163,8 @@ std::vector<std::size_t> measurementOrder(const std::vector<EngineUnderTest>& en
 /// The ladder: every engine x strategy x spp against the reference; rows to the CSV as they finish, the table
 /// to stdout and the JSON at the end. Returns false when Ctrl-C stopped it.
 bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
-               std::vector<EngineUnderTest>& engines, const Reference& reference, ConvergenceCsv* csv)
+               std::vector<EngineUnderTest>& engines, const Reference& reference, ConvergenceCsv* csv,
+               ImageFolder& images)
 {
     const std::vector<std::string> labels = distinctLabels(options.strategies);
     const std::size_t strategyCount = options.strategies.size();
@@ -188,6 +190,7 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
                     csv->append({scene.id, toString(engines[e].kind), engine.deviceName(), options.strategies[s].name(),
                                  labels[s], m.spp, m.wallMs, m.gpuMs, m.mpathsPerSecond, m.error.mse, m.error.relMse,
                                  m.error.rmse, reference.ownRelMse.value_or(-1.0)});
+                images.add(engines[e].kind, options.strategies[s].name(), labels[s], m);
                 runs[e][s].push_back(std::move(m));
             }
     }
@@ -269,7 +272,8 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
 /// The equal-time comparison: every engine x strategy for options.equalTimeMs, one figure (tiles in the
 /// engines' order). Returns false when Ctrl-C stopped it.
 bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
-                  std::vector<EngineUnderTest>& engines, const Reference& reference, ConvergenceCsv* csv)
+                  std::vector<EngineUnderTest>& engines, const Reference& reference, ConvergenceCsv* csv,
+                  ImageFolder& images)
 {
     const std::vector<std::string> labels = distinctLabels(options.strategies);
     std::vector<std::vector<EqualTimeTile>> tilesOf(engines.size());
@@ -293,6 +297,7 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
                 csv->append({scene.id, toString(e.kind), e.engine->deviceName(), options.strategies[s].name(),
                              labels[s], m.spp, m.wallMs, m.gpuMs, m.mpathsPerSecond, m.error.mse, m.error.relMse,
                              m.error.rmse, reference.ownRelMse.value_or(-1.0)});
+            images.add(e.kind, options.strategies[s].name(), labels[s], m);
             tilesOf[index].push_back({e.kind, labels[s], options.strategies[s], std::move(m)});
         }
     }
@@ -360,8 +365,9 @@ void checkComparison(const CompareOptions& options)
     checkOutputPath(options.grid, "--output", {".png"});
     if (!options.plot.empty() && options.csv.empty())
         throw UsageError("--plot draws the rows of --csv: give --csv FILE.csv too");
-    if (options.equalTimeMs > 0.0 && options.grid.empty())
-        throw UsageError("--equal-time writes its figure to --output FILE.png: give --output too");
+    if (options.equalTimeMs > 0.0 && options.grid.empty() && options.images.empty())
+        throw UsageError("--equal-time writes its figure to --output FILE.png or its images to --images DIR: give "
+                         "either");
     if (!options.plot.empty())
     {
         scriptPath("plot_convergence.py");
@@ -378,6 +384,7 @@ int runComparison(const Scene& scene, const RenderRequest& base, const CompareOp
                   const std::function<std::unique_ptr<RenderEngine>(EngineKind)>& makeEngine)
 {
     checkComparison(options);
+    ImageFolder images(options.images, scene.id, base.settings.width, base.settings.height());
     // One engine of each kind, its acceleration structures built once.
     std::vector<EngineUnderTest> engines;
     for (const EngineKind kind : options.engines)
@@ -404,10 +411,11 @@ int runComparison(const Scene& scene, const RenderRequest& base, const CompareOp
     bool finished = false;
     if (reference)
     {
+        images.addReference(reference->image, reference->description, reference->spp, reference->ownRelMse);
         if (!options.csv.empty())
             csv = std::make_unique<ConvergenceCsv>(options.csv);
-        finished = options.equalTimeMs > 0.0 ? runEqualTime(scene, base, options, engines, *reference, csv.get())
-                                             : runLadder(scene, base, options, engines, *reference, csv.get());
+        finished = options.equalTimeMs > 0.0 ? runEqualTime(scene, base, options, engines, *reference, csv.get(), images)
+                                             : runLadder(scene, base, options, engines, *reference, csv.get(), images);
     }
     if (!finished)
     {

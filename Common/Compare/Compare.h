@@ -33,6 +33,7 @@ struct CompareOptions
     std::string plot; // a PNG of the CSV's rows drawn by scripts/plot_convergence.py (needs csv)
     double equalTimeMs = 0.0; // > 0: the equal-time comparison instead of the ladder
     std::string grid; // the equal-time figure (PNG)
+    std::filesystem::path images; // every render's PFM and an index (ImageFolder.h), when not empty
 };
 
 /// Parses "10,50,100" (positive integers). Throws UsageError.

@@ -56,8 +56,14 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
     app.add_option("--equal-time", flags.equalTimeMs,
                    "With --compare: render every engine x strategy for this many milliseconds instead of the "
                    "--spp-list ladder, and write the images with their false-colour error images as one figure to "
-                   "--output FILE.png")
+                   "--output FILE.png, or the images alone to --images DIR")
         ->check(CLI::PositiveNumber)
+        ->needs(compareFlag);
+    app.add_option("--images", flags.images,
+                   "With --compare: write every render's linear image (PFM) and the reference to this folder (made "
+                   "when missing), with images.json listing each one's engine, strategy, spp, time and relMSE, for "
+                   "analyses of one's own (the error over regions: tests/Bench/veach_regions.py)")
+        ->type_name("DIR")
         ->needs(compareFlag);
     app.add_option("--reference-cache", flags.referenceCache,
                    "With --compare: folder of rendered references, re-used when scene, settings, spp, seed and engine "
@@ -80,6 +86,7 @@ int runCompare(const CompareFlags& flags, const CommonOptions& options, const En
     c.plot = flags.plot;
     c.equalTimeMs = flags.equalTimeMs;
     c.grid = options.output;
+    c.images = flags.images;
     if (flags.referenceCache != "off")
         c.referenceCache = flags.referenceCache;
     return runComparison(job.scene, job.request, c,

@@ -27,6 +27,7 @@ struct CompareFlags
     std::string plot;
     double equalTimeMs = 0.0;
     std::string referenceCache;
+    std::string images;
 };
 
 /// Adds --compare and the flags that go with it to `app`.

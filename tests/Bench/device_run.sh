@@ -17,6 +17,9 @@
 #                                      (INTEGRATOR: the GPU integrator, default the app's)
 #   tests/Bench/device_run.sh integrators [RENDERS_FILE]  the megakernel against the wavefront, render by
 #                                      render (default tests/Bench/renders/integrators.txt)
+#   tests/Bench/device_run.sh veach     issue 35: Veach's MIS scene, bsdf / nee / nee-mis each for BUDGET_MS
+#                                      (1000) on the GPU, SEEDS (4) seeds, against one nee-mis reference of
+#                                      REF_SPP (262144); relMSE per plate x light region (veach_regions.py)
 #   tests/Bench/device_run.sh variants RENDERS_FILE  the shader variants carried in .devcarry/variants/ (VARIANTS
 #                                      of device_carry.sh) against the build's own shaders, render by render
 #                                      (shader_variants.sh)
@@ -90,6 +93,27 @@ bars)
     "$bin/ray-tracing-gpu" --compare --quiet $integrator --scene many-lights --width 600 --engines gpu --reference-spp 4096 \
         --estimators nee-mis --light-selections uniform,power,bvh --samplings random,sobol --spp-list 64,256 \
         --csv "$out/ml.csv" --table "$out/ml.json"
+    ;;
+veach)
+    # Seed 1's comparison renders the reference (nee-mis, REF_SPP in two halves whose difference gives its
+    # own relMSE); the other seeds measure against that file.
+    budget=${BUDGET_MS:-1000}
+    rm -rf /tmp/veach && mkdir -p /tmp/veach && "$bin/ray-tracing-gpu" --scene veach-mis --export-scene /tmp/veach/veach-mis.json
+    folders=()
+    for seed in $(seq 1 "${SEEDS:-4}"); do
+        if [ "$seed" = 1 ]; then
+            reference=(--estimator nee-mis --reference-spp "${REF_SPP:-262144}" --reference-cache off)
+        else
+            reference=(--reference /tmp/veach/seed-1/reference.pfm)
+        fi
+        "$bin/ray-tracing-gpu" --compare --quiet --scene veach-mis --engines gpu --estimators bsdf,nee,nee-mis \
+            --equal-time "$budget" "${reference[@]}" --seed "$seed" --images "/tmp/veach/seed-$seed"
+        folders+=("/tmp/veach/seed-$seed")
+    done
+    python3 tests/Bench/veach_regions.py --scene /tmp/veach/veach-mis.json --budget-ms "$budget" \
+        --json "$out/regions.json" --markdown "$out/regions.md" "${folders[@]}"
+    # Seed 1's images come back for the figures (the tool brings back 8 files).
+    mkdir -p "$out/seed-1" && cp /tmp/veach/seed-1/*.pfm /tmp/veach/seed-1/images.json "$out/seed-1/"
     ;;
 variants)
     set -o pipefail

@@ -703,6 +703,52 @@ def section_ratio():
     return out
 
 
+VEACH = {"folder": "h100-veach-mis", "date": "2026-11-26", "notebook": "## 11."}
+
+
+def section_veach():
+    rel = f"{VEACH['folder']}/regions.json"
+    r = read_json(rel)
+    seed1 = read_json(f"{VEACH['folder']}/seed-1-images.json")
+    v = r["verdict"]
+    stats = r["relmse"]
+    labels = r["labels"]
+    runs = {label: f"{statistics.mean(x['spp'] for x in r['runs'][label]):,.0f} spp in "
+                   f"{statistics.mean(x['ms'] for x in r['runs'][label]):.0f} ms" for label in labels}
+    out = [
+        "## 7. Veach's MIS scene at equal time",
+        "",
+        f"`veach-mis` (Veach 1997, fig. 9.2: plates of GGX α 0.005 to 0.1 under sphere lights of radius 0.9 to "
+        f"0.0333 and equal power), {r['width']}x{r['height']}, each estimator given {r['budget_ms']:.0f} ms on an "
+        f"NVIDIA H100 80GB HBM3 (each on the integrator the app picks for it: bsdf on the megakernel, nee and "
+        f"nee-mis on the wavefront), {r['seeds']} seeds. The relMSE of each plate x light region (the pixels whose "
+        "mirror direction points nearest to that light, from the scene's geometry) is scaled to the budget by "
+        "time / budget and averaged over the seeds (± standard error); the reference is nee-mis at "
+        f"{seed1['reference']['spp']:,} spp, whose own relMSE, {seed1['reference']['own_relmse']:.2g}, is part of "
+        "every value. Mean runs: " + "; ".join(f"{k} {runs[k]}" for k in labels) + ".",
+        "",
+        f"**nee-mis is within {v['worst_ratio']:.2f}x of the better of bsdf and nee in every region** (the issue "
+        f"asks {v['factor']}x) and {'beats both' if v['beats_both'] else 'does not beat both'} over the whole image: "
+        f"relMSE {stats['nee-mis']['mean'][16]:.3g} against bsdf's {stats['bsdf']['mean'][16]:.3g} and nee's "
+        f"{stats['nee']['mean'][16]:.3g}.",
+        "",
+        results_path(f"{VEACH['folder']}/regions.md").read_text().rstrip(),
+        "",
+        f"![the regions and their relMSE](results/{VEACH['folder']}/regions.png)",
+        "",
+        f"![seed 1's equal-time grid](results/{VEACH['folder']}/grid.png)",
+        "",
+        sources([("machine", "NVIDIA H100 80GB HBM3, driver 580"), ("date", VEACH["date"]),
+                 ("results", f"{link(rel)}, {link(VEACH['folder'] + '/seed-1-images.json')}"),
+                 ("notebook", notebook_link(VEACH["notebook"]))]),
+        "",
+        code("bash tests/Bench/device_run.sh veach     # BUDGET_MS=1000 SEEDS=4 REF_SPP=262144\n"
+             "python3 tests/Bench/veach_regions.py --scene veach-mis.json --result regions.json seed-1 \\\n"
+             "    --figure regions.png --grid grid.png --device 'NVIDIA H100 80GB HBM3'"),
+    ]
+    return out
+
+
 def render():
     runs = compare_runs()
     parts = [
@@ -728,6 +774,7 @@ def render():
         section_time_to_error(runs),
         section_efficiency(runs),
         section_ratio(),
+        section_veach(),
     ]
     titles = [p[0][3:] for p in parts[1:]]
     parts[0] += ["", "Contents: " + " · ".join(f"[{t}](#{slugify(t)})" for t in titles)]

@@ -45,9 +45,33 @@ grep -q "estimator mixture" "$work/out1.txt" && grep -q "estimator nee-mis" "$wo
 grep -q "from the cache" "$work/err2.txt" || { cat "$work/err2.txt"; fail "the reference was not re-used"; }
 
 "$app" "${common[@]}" --engines gpu --estimators mixture,nee-mis --equal-time 300 --output "$work/grid.png" \
-    --csv "$work/e.csv" >"$work/out3.txt" 2>&1 || { cat "$work/out3.txt"; fail "equal time"; }
+    --csv "$work/e.csv" --images "$work/images/new" >"$work/out3.txt" 2>&1 || { cat "$work/out3.txt"; fail "equal time"; }
 file "$work/grid.png" | grep -q "PNG image data" || fail "no equal-time figure"
 [ "$(wc -l <"$work/e.csv")" -eq 3 ] || fail "equal-time CSV rows"
+# --images: the reference and each render as PFMs, indexed with the relMSE the CSV printed, which the files
+# themselves give again (Common/Image/Metrics.h's formula, recomputed here).
+python3 - "$work/images/new" "$work/e.csv" <<'PY' || fail "--images"
+import csv, json, struct, sys
+from pathlib import Path
+folder = Path(sys.argv[1])
+index = json.loads((folder / "images.json").read_text())
+def pfm(name):
+    data = (folder / name).read_bytes().split(b"\n", 3)
+    assert data[0] == b"PF", name
+    w, h = map(int, data[1].split())
+    assert (w, h) == (index["width"], index["height"]), (name, w, h)
+    return struct.unpack(f"<{w * h * 3}f", data[3])
+reference = pfm(index["reference"]["path"])
+assert index["scene"] == "cornell-box-lights" and index["reference"]["spp"] == 1024, index
+rows = {r["label"]: float(r["relmse"]) for r in csv.DictReader(open(sys.argv[2]))}
+assert [i["label"] for i in index["images"]] == ["mixture", "nee-mis"], index
+for image in index["images"]:
+    values = pfm(image["path"])
+    relmse = sum((v - r) ** 2 / (r * r + 0.01) for v, r in zip(values, reference)) / len(values)
+    assert abs(relmse - image["relmse"]) <= 1e-4 * image["relmse"], (image, relmse)
+    assert abs(rows[image["label"]] - image["relmse"]) <= 1e-6 * image["relmse"], (image, rows)
+    assert image["spp"] > 0 and image["ms"] > 0 and image["path"] == f"gpu-{image['label']}-{image['spp']}spp.pfm"
+PY
 
 # Ctrl-C in the middle of a ladder: status 130, the rows finished before kept whole, no plot.
 "$app" "${common[@]}" --engines multi --spp-list 1,1,1,1,1,1,1,1,100000 --csv "$work/i.csv" --plot "$work/i.png" \
@@ -76,5 +100,10 @@ bad --compare --scene cornell-box-lights --light-selections nearest
 bad --compare --scene cornell-box-lights --equal-time 100
 bad --compare --scene cornell-box-lights --equal-time -5 --output "$work/x.png"
 bad --scene cornell-box-lights --headless --csv "$work/x.csv"
+touch "$work/x-file"
+bad --compare --scene cornell-box-lights --equal-time 100 --images "$work/x-file"
+ln -s "$work/images" "$work/x-link"
+bad --compare --scene cornell-box-lights --equal-time 100 --images "$work/x-link"
+rm "$work/x-file" "$work/x-link"
 [ -z "$(ls "$work" | grep '^x')" ] || fail "a file left behind: $(ls "$work")"
 echo "compare ok"
