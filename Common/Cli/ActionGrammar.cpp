@@ -164,6 +164,9 @@ std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long lo
              std::optional<shader::FresnelModel> model;
              return parseFresnelOption(v, model);
          }},
+        {"roughness-scale", ActionValue::Real, "X",
+         "every microfacet material's GGX alpha times X, alpha at most 1 (--roughness-scale)", kMinRoughnessScale,
+         kMaxRoughnessScale},
         sppSpec,
         settingActionSpec(setting("depth")),
         settingActionSpec(setting("estimator")),

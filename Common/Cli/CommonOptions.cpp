@@ -58,6 +58,7 @@ SceneRef CommonOptions::sceneRef() const
     ref.options.transform = sceneTransform(translateScene, scaleScene);
     if (fresnel)
         parseFresnelOption(*fresnel, ref.options.fresnel); // CLI11 has checked the name
+    ref.options.roughnessScale = roughnessScale;
     return ref;
 }
 
@@ -94,6 +95,13 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
                    "or exact (the unpolarised Fresnel equations, as pbrt-v4 and Mitsuba); default: each "
                    "material's own, schlick in the catalogue's scenes")
         ->check(CLI::IsMember({"schlick", "exact"}));
+    app.add_option("--roughness-scale", o.roughnessScale,
+                   fmt::format("Multiply the GGX roughness alpha of every microfacet material (conductor, rough "
+                               "dielectric, glTF metallic-roughness) by this factor, {:g} to {:g}, alpha kept at "
+                               "most 1: veach-mis's plates from mirror to matte (default: 1, the scene's own)",
+                               kMinRoughnessScale, kMaxRoughnessScale))
+        ->check(CLI::Range(kMinRoughnessScale, kMaxRoughnessScale))
+        ->type_name("X");
     app.add_option("--pdf", o.pdf, "The books' name for two estimators: on = --estimator mixture, off = bsdf");
     app.add_option("--output", o.output, "Write the tone-mapped sRGB image here (.png)");
     app.add_option("--hdr", o.hdr, "Write the linear radiance image here (.pfm)");
@@ -163,6 +171,8 @@ CommandLineRender resolveCommandLine(const CommonOptions& options)
             return m.type == MaterialType::Dielectric;
         }))
         spdlog::warn("--fresnel is ignored: scene {} has no dielectric", r.scene.id);
+    if (options.roughnessScale != 1.0f && !r.scene.hasMicrofacetMaterial())
+        spdlog::warn("--roughness-scale is ignored: scene {} has no microfacet material", r.scene.id);
     r.request = resolveRequest(options, r.scene);
     const RenderSettings& s = r.request.settings;
     const std::uint64_t pixels = std::uint64_t(s.width) * std::uint64_t(s.height());

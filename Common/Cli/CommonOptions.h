@@ -34,6 +34,7 @@ struct CommonOptions
     std::string scaleScene; // a real > 0, empty = none
     std::string exportScene; // a .json path, empty = none
     std::optional<std::string> fresnel; // schlick | exact; empty: each dielectric's own
+    float roughnessScale = 1.0f; // in [kMinRoughnessScale, kMaxRoughnessScale] (CLI11 checks)
     bool quiet = false;
 
     /// The value given for the setting `name`, or nothing.

@@ -1,5 +1,6 @@
 #include "Scene/Scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -60,6 +61,12 @@ bool Scene::hasMotion() const
 bool Scene::isEmissive(std::uint32_t material) const
 {
     return material < materials.size() && materials[material].emissionTexture != kNoIndex;
+}
+
+bool Scene::hasMicrofacetMaterial() const
+{
+    return std::any_of(materials.begin(), materials.end(),
+                       [](const MaterialData& m) { return isMicrofacetMaterial(m.type); });
 }
 
 std::uint32_t Scene::emitterCount() const
@@ -141,9 +148,9 @@ void Scene::validate() const
                     m.type == MaterialType::Dielectric || m.type == MaterialType::RoughDielectric ||
                     (m.type == MaterialType::Conductor && m.fresnel == FresnelModel::Exact),
                 id, fmt::format("material {} has no albedo texture", i));
-        const bool microfacet = m.type == MaterialType::Conductor || m.type == MaterialType::RoughDielectric ||
-                                m.type == MaterialType::GltfPbr;
-        require(!microfacet || (m.alphaX >= 0.0f && m.alphaX <= 1.0f && m.alphaY >= 0.0f && m.alphaY <= 1.0f), id,
+        require(!isMicrofacetMaterial(m.type) ||
+                    (m.alphaX >= 0.0f && m.alphaX <= 1.0f && m.alphaY >= 0.0f && m.alphaY <= 1.0f),
+                id,
                 fmt::format("material {} has roughness alpha ({}, {}) outside [0, 1]", i, m.alphaX, m.alphaY));
         require((m.type != MaterialType::RoughDielectric && m.type != MaterialType::GltfPbr) ||
                     (m.ior > 0.0f && std::isfinite(m.ior)), id,

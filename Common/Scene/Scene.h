@@ -168,6 +168,13 @@ struct LightSource
     std::uint32_t primitive = 0;
 };
 
+/// The microfacet BSDFs (Shared/Bsdf/): conductor, rough dielectric, glTF metallic-roughness; their GGX alpha is
+/// MaterialData::alphaX, alphaY.
+constexpr bool isMicrofacetMaterial(MaterialType type)
+{
+    return type == MaterialType::Conductor || type == MaterialType::RoughDielectric || type == MaterialType::GltfPbr;
+}
+
 struct Scene
 {
     std::string id;
@@ -187,6 +194,8 @@ struct Scene
     bool hasMedia() const;
     bool hasMotion() const;
     bool isEmissive(std::uint32_t material) const;
+    /// Whether some material is a microfacet one (isMicrofacetMaterial), used by a primitive or not.
+    bool hasMicrofacetMaterial() const;
     /// The lights that emit: lights[0, emitterCount()) (the sampling targets follow them).
     std::uint32_t emitterCount() const;
     std::size_t primitiveCount() const; // spheres + quads + triangles + media over all instances

@@ -143,7 +143,13 @@ std::uint32_t GltfMaterials::make(int index)
         number(m_doc, pointer + "/pbrMetallicRoughness/metallicFactor", pbr.metallicFactor, 0.0, 1.0));
     const auto roughness = static_cast<float>(
         number(m_doc, pointer + "/pbrMetallicRoughness/roughnessFactor", pbr.roughnessFactor, 0.0, 1.0));
-    if (transmission > 0.5)
+    // KHR_materials_transmission mixes the transmission into the dielectric BRDF alone: a metal does not transmit.
+    const double transmitted = transmission * (1.0 - metallic);
+    if (transmitted > 0.0 && transmitted < 1.0)
+        m_notes.add(fmt::format("partial transmission ({:.2g} of the light: {})", transmitted,
+                                transmitted > 0.5 ? "clear glass" : "opaque"),
+                    where);
+    if (transmitted > 0.5)
     {
         if (color != vec3(1.0f) || pbr.baseColorTexture.index >= 0)
             m_notes.add("tinted transmission (clear glass)", where);

@@ -4,8 +4,8 @@
 //   | glTF                                                  | material                                          |
 //   |-------------------------------------------------------|---------------------------------------------------|
 //   | emissiveFactor x KHR_materials_emissive_strength > 0  | diffuse_light, radiance = their product           |
-//   | KHR_materials_transmission transmissionFactor > 0.5   | rough_dielectric, alpha = roughnessFactor^2,      |
-//   |                                                       | ior = KHR_materials_ior's (default 1.5)           |
+//   | transmissionFactor x (1 - metallicFactor) > 0.5       | rough_dielectric, alpha = roughnessFactor^2,      |
+//   | (KHR_materials_transmission: metals do not transmit)  | ior = KHR_materials_ior's (default 1.5)           |
 //   | otherwise                                             | gltf_pbr: base colour, metallic = metallicFactor, |
 //   |                                                       | alpha = roughnessFactor^2, the metallic-roughness |
 //   |                                                       | texture (g roughness, b metallic; linear), ior    |
@@ -14,7 +14,9 @@
 // The base colour is baseColorFactor's RGB, times baseColorTexture's texels (on TEXCOORD_0) where it has one:
 // the factor is multiplied into a copy of the image (GltfImages' tintedImage). The metallic-roughness texture
 // (TEXCOORD_0 too) is an image texture marked linear (TextureData::linear: its texels are data, not sRGB); its
-// factors stay the material's (Shading/Scatter.h microfacetBsdfAt multiplies them). Everything else a material
+// factors stay the material's (Shading/Scatter.h microfacetBsdfAt multiplies them). KHR_materials_transmission
+// weighs the dielectric BRDF only (its §"BTDF"): the transmitted share is transmissionFactor (1 - metallicFactor),
+// and one between 0 and 1 is rounded to glass or to opaque with a note. Everything else a material
 // says - other textures, alpha, other extensions, texture transforms - goes to the import's notes.
 #pragma once
 

@@ -1,5 +1,7 @@
 #include "Scenes/Catalogue.h"
 
+#include <algorithm>
+
 #include <spdlog/fmt/fmt.h>
 
 #include "Error.h"
@@ -84,6 +86,13 @@ Scene withOptions(Scene scene, const SceneOptions& options)
         for (MaterialData& m : scene.materials)
             if (m.type == MaterialType::Dielectric)
                 m.fresnel = *options.fresnel;
+    if (options.roughnessScale != 1.0f)
+        for (MaterialData& m : scene.materials)
+            if (isMicrofacetMaterial(m.type))
+            {
+                m.alphaX = std::min(m.alphaX * options.roughnessScale, 1.0f);
+                m.alphaY = std::min(m.alphaY * options.roughnessScale, 1.0f);
+            }
     return scene;
 }
 } // namespace

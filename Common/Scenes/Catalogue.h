@@ -19,6 +19,7 @@ struct SceneOptions
     std::string meshPath = "meshes/bunny.obj"; // OBJ for the mesh scenes (asset-relative or a real path)
     SceneTransform transform; // the stress knobs --translate-scene, --scale-scene: applied after building
     std::optional<shader::FresnelModel> fresnel; // --fresnel: every dielectric's model; empty: the scene's own
+    float roughnessScale = 1.0f; // --roughness-scale: every microfacet material's GGX alpha times this (at most 1)
 
     bool operator==(const SceneOptions&) const = default;
 };
@@ -52,8 +53,14 @@ const char* fresnelOptionName(const std::optional<shader::FresnelModel>& fresnel
 /// Reads a name fresnelOptionName gives into `fresnel`; false (and `fresnel` untouched) for any other text.
 bool parseFresnelOption(std::string_view text, std::optional<shader::FresnelModel>& fresnel);
 
+/// The range of SceneOptions::roughnessScale (--roughness-scale, the windows' slider).
+inline constexpr float kMinRoughnessScale = 0.01f;
+inline constexpr float kMaxRoughnessScale = 100.0f;
+
 /// Builds scene `id` (a catalogue id, or a scene file: SceneFile/SceneFile.h), moved by options.transform, with
-/// options.fresnel's model on every dielectric if given. Throws SceneError naming the id and listing the known ones
+/// options.fresnel's model on every dielectric if given and every microfacet material's alpha (conductor, rough
+/// dielectric, glTF metallic-roughness: both tangents, and through it a roughness texture's) times
+/// options.roughnessScale, at most 1. Throws SceneError naming the id and listing the known ones
 /// if unknown, AssetError if a texture or mesh it needs is missing, UsageError if the transform is refused.
 Scene makeScene(const std::string& id, const SceneOptions& options = {});
 

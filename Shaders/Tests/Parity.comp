@@ -23,6 +23,9 @@ layout(push_constant, scalar) uniform Push { uint mode; uint caseCount; uint inp
 #include "Shared/LightSampling.h"
 #include "Shared/Warps.h"
 #include "Shared/Perlin.h"
+#include "Shared/Bsdf/Conductor.h"
+#include "Shared/Bsdf/GltfPbr.h"
+#include "Shared/Bsdf/RoughDielectric.h"
 #include "Textures/Srgb.glsl"
 
 uint inBase;
@@ -99,6 +102,30 @@ void main()
         Rng rng = rngForSobolSample(inputs[inBase], inputs[inBase + 1u], inputs[inBase + 2u]);
         for (uint k = 0u; k < 8u; k += 2u)
             outVec2(k, nextFloat2(rng));
+    }
+    else if (mode == 9u) // Microfacet: one material for every case (input stride 0), the case's own uniforms
+    {                     // from (seed, case): -> ok, wi, pdf, weight of the material's sampler
+        uint kind = inputs[inBase + 1u];
+        vec3 wo = inVec3(2u);
+        Rng rng = rngForSample(inputs[inBase], c, 0u);
+        float uLobe = nextFloat(rng);
+        vec2 u = vec2(nextFloat(rng), nextFloat(rng));
+        BsdfSample s;
+        s.wi = vec3(0.0);
+        s.weight = vec3(0.0);
+        s.pdf = 0.0;
+        bool ok = false;
+        if (kind == 0u)
+            ok = sampleConductor(ConductorParams(inFloat(5u), inFloat(6u), false, vec3(0.0), inVec3(8u), inVec3(11u)),
+                                 wo, u, s);
+        else if (kind == 1u)
+            ok = sampleRoughDielectric(inFloat(5u), inFloat(7u), wo, uLobe, u, s);
+        else
+            ok = sampleGltfPbr(GltfPbrParams(inVec3(8u), inFloat(7u), inFloat(5u), inFloat(14u)), wo, uLobe, u, s);
+        outUint(0u, ok ? 1u : 0u);
+        outVec3(1u, s.wi);
+        outFloat(4u, s.pdf);
+        outVec3(5u, s.weight);
     }
     else if (mode == 7u) // LightBvh: (p, n, twoSided, u) -> selected light, its pmf, lightBvhPmf of it
     {

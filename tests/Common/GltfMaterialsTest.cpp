@@ -52,7 +52,8 @@ TEST(GltfMaterials, TransmissionAboveHalfIsARoughDielectricWithItsIorAndRoughnes
                                    {{"KHR_materials_transmission", {{"transmissionFactor", 0.9}}},
                                     {"KHR_materials_ior", {{"ior", 1.33}}}}},
                                   {"pbrMetallicRoughness", {{"metallicFactor", 0}, {"roughnessFactor", 0.3}}}});
-    const int plain = w.material({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}}}}});
+    const int plain = w.material({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}}}},
+                                  {"pbrMetallicRoughness", {{"metallicFactor", 0}}}});
     const int weak = w.material({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 0.4}}}}},
                                  {"pbrMetallicRoughness", {{"metallicFactor", 0}}}});
     const int mesh = w.mesh({triangle(glass), triangle(plain), triangle(weak)});
@@ -70,7 +71,37 @@ TEST(GltfMaterials, TransmissionAboveHalfIsARoughDielectricWithItsIorAndRoughnes
     EXPECT_EQ(material(1).alphaX, 1.0f) << "roughnessFactor's default 1";
     EXPECT_EQ(material(2).type, MaterialType::GltfPbr) << "transmission 0.4 is not glass";
     EXPECT_EQ(material(2).metallic, 0.0f);
-    EXPECT_EQ(imported.unmapped, "") << "KHR_materials_transmission and KHR_materials_ior are read";
+    // The two partial ones are rounded, and the notes say which way; KHR_materials_ior is read.
+    EXPECT_NE(imported.unmapped.find("partial transmission (0.9 of the light: clear glass)"), std::string::npos)
+        << imported.unmapped;
+    EXPECT_NE(imported.unmapped.find("partial transmission (0.4 of the light: opaque)"), std::string::npos)
+        << imported.unmapped;
+    EXPECT_EQ(imported.unmapped.find("KHR_materials"), std::string::npos) << imported.unmapped;
+}
+
+TEST(GltfMaterials, MetalsDoNotTransmit)
+{
+    // KHR_materials_transmission weighs the dielectric BRDF only: with metallicFactor's default 1 a fully
+    // transmissive material is a metal, and at metallic 0.6 only 0.4 of the light is transmitted.
+    ScratchDir dir;
+    GltfWriter w;
+    const int metal = w.material({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}}}},
+                                  {"pbrMetallicRoughness", {{"roughnessFactor", 0.2}}}});
+    const int mostlyMetal =
+        w.material({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}}}},
+                    {"pbrMetallicRoughness", {{"metallicFactor", 0.6}}}});
+    const int mesh = w.mesh({triangle(metal), triangle(mostlyMetal)});
+    w.scene({w.node({{"mesh", mesh}})});
+    const GltfImport imported = readGltf(w.writeGltf(dir.path(), "metal"));
+    const Scene& scene = imported.scene;
+    const auto material = [&](int k) { return scene.materials.at(scene.groups.at(0).meshes.at(k).material); };
+    ASSERT_EQ(material(0).type, MaterialType::GltfPbr);
+    EXPECT_EQ(material(0).metallic, 1.0f);
+    EXPECT_FLOAT_EQ(material(0).alphaX, 0.2f * 0.2f);
+    ASSERT_EQ(material(1).type, MaterialType::GltfPbr);
+    EXPECT_FLOAT_EQ(material(1).metallic, 0.6f);
+    EXPECT_NE(imported.unmapped.find("partial transmission (0.4 of the light: opaque)"), std::string::npos)
+        << imported.unmapped;
 }
 
 TEST(GltfMaterials, MetallicRoughnessFactorsAreGltfPbrsOwn)
@@ -147,7 +178,7 @@ TEST(GltfMaterials, RoughnessOutOfRangeIsRefusedForGlassToo)
     ScratchDir dir;
     GltfWriter w;
     const int mat = w.material({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}}}},
-                                {"pbrMetallicRoughness", {{"roughnessFactor", 1.5}}}});
+                                {"pbrMetallicRoughness", {{"metallicFactor", 0}, {"roughnessFactor", 1.5}}}});
     const std::string e = errorOf(oneTriangle(dir, mat, w));
     EXPECT_NE(e.find("/materials/0/pbrMetallicRoughness/roughnessFactor: expected a number in [0, 1], got 1.5"),
               std::string::npos)
@@ -318,7 +349,8 @@ TEST(GltfTextures, MetallicRoughnessTextureOfGlassIsNoted)
     GltfWriter w;
     const int texture = w.texture(w.imageDataUri(texelPng(dir, {0, 128, 64, 255})));
     const int mat = w.material({{"extensions", {{"KHR_materials_transmission", {{"transmissionFactor", 1}}}}},
-                                {"pbrMetallicRoughness", {{"metallicRoughnessTexture", {{"index", texture}}}}}});
+                                {"pbrMetallicRoughness",
+                                 {{"metallicFactor", 0}, {"metallicRoughnessTexture", {{"index", texture}}}}}});
     const GltfImport imported = readGltf(oneTriangle(dir, mat, w));
     EXPECT_EQ(onlyMaterial(imported.scene).type, MaterialType::RoughDielectric);
     EXPECT_NE(imported.unmapped.find("metallic-roughness textures of transmissive materials"), std::string::npos)

@@ -22,6 +22,8 @@
 #include "Shared/Microfacet.h"
 #include "Support/ChiSquare.h"
 #include "Support/LobeDomain.h"
+#include "Support/MicrofacetCases.h"
+#include "Support/MicrofacetReferences.h"
 #include "Support/StatisticsHelpers.h"
 
 namespace rt
@@ -36,10 +38,25 @@ using test::kChiSquareAlpha;
 using test::LobeCap;
 using test::LobeDomain;
 using test::Side;
+using test::conductorCases;
+using test::dielectricCases;
+using test::dielectricDomain;
+using test::direction;
+using test::DielectricCase;
+using test::distributionCases;
+using test::DistributionCase;
+using test::gltfCases;
+using test::gltfDomain;
+using test::normalCells;
+using test::reflectionDomain;
+using test::fresnelRef;
+using test::g1Ref;
+using test::g2Ref;
+using test::ggxAlbedoRef;
+using test::lambdaRef;
 
 constexpr long kSamples = 1'000'000;
 constexpr double kPiD = 3.14159265358979323846;
-const std::vector<float> kAlphas = {0.001f, 0.01f, 0.1f, 0.5f, 1.0f};
 
 std::string str(const dvec3& v)
 {
@@ -49,92 +66,10 @@ std::string str(const dvec3& v)
     return s.str();
 }
 
-/// Unit direction at polar angle theta (degrees) from +z and azimuth phi: float-rounded, so that the double
-/// references see exactly the direction the headers get.
-dvec3 direction(double thetaDegrees, double phiDegrees = 30.0)
-{
-    if (thetaDegrees == 0.0)
-        return {0.0, 0.0, 1.0};
-    const double t = thetaDegrees * kPiD / 180.0, p = phiDegrees * kPiD / 180.0;
-    return dvec3(
-        vec3(glm::normalize(dvec3(std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)))));
-}
 
 bool closeRelative(double a, double b, double relative, double absolute = 0.0)
 {
     return std::fabs(a - b) <= relative * std::max(std::fabs(a), std::fabs(b)) + absolute;
-}
-
-// ---- Double-precision references, from the papers ---------------------------------------------------------
-
-/// Smith's Lambda for GGX (Heitz 2014 §5): (-1 + sqrt(1 + alpha^2 tan^2)) / 2, alpha^2 along w's azimuth.
-double lambdaRef(const dvec3& w, double ax, double ay)
-{
-    const double a2Tan2 = (ax * ax * w.x * w.x + ay * ay * w.y * w.y) / (w.z * w.z);
-    return 0.5 * (std::sqrt(1.0 + a2Tan2) - 1.0);
-}
-
-double g1Ref(const dvec3& w, double ax, double ay)
-{
-    return 1.0 / (1.0 + lambdaRef(w, ax, ay));
-}
-
-/// Height-correlated masking-shadowing (Heitz 2014 §6): 1 / (1 + Lambda(wo) + Lambda(wi)).
-double g2Ref(const dvec3& wo, const dvec3& wi, double ax, double ay)
-{
-    return 1.0 / (1.0 + lambdaRef(wo, ax, ay) + lambdaRef(wi, ax, ay));
-}
-
-/// Unpolarised Fresnel reflectance from the complex index n = eta + i k of the far side relative to the near
-/// one (Born & Wolf §1.5.2, §14.2): r_s and r_p from n cos(theta_t) = sqrt(n^2 - sin^2(theta_i)), whose
-/// principal root has Re, Im >= 0 (a wave decaying into the conductor; the evanescent one under total
-/// reflection).
-double fresnelRef(double cosI, std::complex<double> n)
-{
-    const double sin2 = std::max(0.0, 1.0 - cosI * cosI);
-    const std::complex<double> nCosT = std::sqrt(n * n - sin2);
-    const std::complex<double> rs = (cosI - nCosT) / (cosI + nCosT);
-    const std::complex<double> rp = (n * n * cosI - nCosT) / (n * n * cosI + nCosT);
-    return 0.5 * (std::norm(rs) + std::norm(rp));
-}
-
-/// Directional albedo E(mu, alpha) of an isotropic GGX conductor with F = 1: the integral over wi of
-/// D(h) G2(wo, wi) / (4 mu_o mu_i) * mu_i, taken over the half vector h (d omega_i = 4 (wo.h) d omega_h),
-/// with theta_h = atan(alpha tan(beta)) so that Gauss-Legendre nodes in beta follow D's peak at every alpha.
-double ggxAlbedoRef(double mu, double alpha)
-{
-    constexpr int n = 1024;
-    std::vector<double> x, w;
-    test::gaussLegendre(n, x, w);
-    const dvec3 wo(std::sqrt(1.0 - mu * mu), 0.0, mu);
-    double sum = 0.0;
-    for (int i = 0; i < n; ++i)
-    {
-        const double beta = x[i] * kPiD / 2.0, wBeta = w[i] * kPiD / 2.0;
-        const double tanBeta = std::tan(beta);
-        const double thetaH = std::atan(alpha * tanBeta);
-        const double dThetaH =
-            alpha / (std::cos(beta) * std::cos(beta)) / (1.0 + alpha * alpha * tanBeta * tanBeta);
-        const double cosH = std::cos(thetaH), sinH = std::sin(thetaH);
-        // Walter 2007 eq. 33 with tan^2 = alpha^2 tan^2(beta).
-        const double d =
-            1.0 / (kPiD * alpha * alpha * std::pow(cosH, 4) * std::pow(1.0 + tanBeta * tanBeta, 2));
-        for (int j = 0; j < n; ++j)
-        {
-            // phi in [0, pi], doubled: the integrand is symmetric about the plane of incidence.
-            const double phi = x[j] * kPiD, wPhi = 2.0 * w[j] * kPiD;
-            const dvec3 h(sinH * std::cos(phi), sinH * std::sin(phi), cosH);
-            const double oh = glm::dot(wo, h);
-            if (oh <= 0.0)
-                continue;
-            const dvec3 wi = 2.0 * oh * h - wo;
-            if (wi.z <= 0.0)
-                continue;
-            const double f = d * g2Ref(wo, wi, alpha, alpha) / (4.0 * mu); // times mu_i / mu_i
-            sum += f * 4.0 * oh * sinH * dThetaH * wBeta * wPhi;
-        }
-    }
-    return sum;
 }
 
 // ---- Sampling harness -------------------------------------------------------------------------------------
@@ -223,79 +158,6 @@ void expectSamplerMatchesPdf(const SamplerRun& r)
     EXPECT_NEAR(r.pdfIntegral, 1.0 - f, tolerance) << f << " of the samples failed";
 }
 
-/// Where the normals visible from wo (z > 0) gather: the bisector of wo and +z in the stretched configuration
-/// (where they are a cap about wo), mapped back; +z at normal incidence.
-dvec3 visibleAxis(const dvec3& wo, double ax, double ay)
-{
-    if (wo.x == 0.0 && wo.y == 0.0)
-        return {0.0, 0.0, 1.0};
-    const dvec3 b = glm::normalize(glm::normalize(dvec3(ax * wo.x, ay * wo.y, wo.z)) + dvec3(0.0, 0.0, 1.0));
-    return glm::normalize(dvec3(ax * b.x, ay * b.y, b.z));
-}
-
-/// Cells over microfacet normals x (z > 0) seen from woUp: log rows about the visible normals' axis, as wide
-/// as D (s0 = alphaX alphaY / 2), and `creases` where the density over x jumps or kinks.
-LobeDomain normalCells(const dvec3& woUp, double ax, double ay, std::vector<test::Crease> creases)
-{
-    return LobeDomain({LobeCap{visibleAxis(woUp, ax, ay), 0.5 * ax * ay, Side::Upper}}, std::move(creases));
-}
-
-/// The directions wi on wo's side, histogrammed over the normal x (z > 0) that reflects wo into them,
-/// x = +-(wo + wi) / |wo + wi|, with d omega_i = 4 |wo.x| d omega_x (Walter 2007 eq. 14). Creases: where the
-/// reflection meets the horizon and where x stops facing wo.
-test::WarpedPart reflectionPart(const dvec3& wo, double ax, double ay)
-{
-    const double side = wo.z > 0.0 ? 1.0 : -1.0;
-    auto reflected = [wo, side](const dvec3& x, double& cosine) {
-        const dvec3 n = side * x; // the normal facing wo
-        cosine = glm::dot(wo, n);
-        return 2.0 * cosine * n - wo;
-    };
-    const test::Crease horizon = [=](const dvec3& x) {
-        double cosine;
-        return side * reflected(x, cosine).z;
-    };
-    const test::Crease facing = [=](const dvec3& x) { return side * glm::dot(wo, x); };
-    return {normalCells(side * wo, ax, ay, {horizon, facing}),
-            [=](const dvec3& wi, dvec3& x) {
-                if (!(wi.z * side > 0.0))
-                    return false;
-                x = side * glm::normalize(wo + wi);
-                return true;
-            },
-            [=](const dvec3& x, dvec3& wi, double& jacobian) {
-                double cosine;
-                wi = reflected(x, cosine);
-                jacobian = 4.0 * cosine;
-                return cosine > 0.0 && wi.z * side > 0.0;
-            }};
-}
-
-test::WarpedDomain reflectionDomain(const dvec3& wo, double ax, double ay)
-{
-    return test::WarpedDomain({reflectionPart(wo, ax, ay)});
-}
-
-struct DistributionCase
-{
-    std::string name;
-    float alphaX, alphaY;
-    dvec3 wo;
-};
-
-/// Every roughness at normal and grazing incidence, and an anisotropic pair seen off its axes.
-std::vector<DistributionCase> distributionCases(double grazingPeaked, double grazingBroad)
-{
-    std::vector<DistributionCase> cases;
-    for (float a : kAlphas)
-        for (double theta : {0.0, a <= 0.01f ? grazingPeaked : grazingBroad})
-            cases.push_back({"alpha " + std::to_string(a) + ", theta_o " + std::to_string(theta), a, a,
-                             direction(theta)});
-    for (double theta : {0.0, grazingBroad})
-        cases.push_back(
-            {"alpha (0.05, 0.4), theta_o " + std::to_string(theta), 0.05f, 0.4f, direction(theta)});
-    return cases;
-}
 
 // ---- Fresnel ----------------------------------------------------------------------------------------------
 
@@ -510,12 +372,6 @@ ConductorParams goldConductor(float alphaX, float alphaY)
     return {alphaX, alphaY, false, vec3(0.0f), kMetals[0].eta, kMetals[0].k};
 }
 
-/// Conductor cases: grazing at 85 degrees where the lobe is narrow (its mirror direction stays 5 degrees
-/// above the plane, 40 lobe widths at alpha 0.001), 89 degrees where it is broad and meets the plane.
-std::vector<DistributionCase> conductorCases()
-{
-    return distributionCases(85.0, 89.0);
-}
 
 /// Every record of sampleConductor: the common invariants, wi above the surface, and the weight the VNDF
 /// sampling must give, F(wo.wm) G2 / G1(wo) (Heitz 2018), G from the double references (F from the header's
@@ -718,86 +574,6 @@ TEST(ConductorBsdf, WhiteFurnaceOfAnisotropicRoughnessIsAtMostOne)
 
 // ---- Rough dielectric -------------------------------------------------------------------------------------
 
-struct DielectricCase
-{
-    std::string name;
-    float alpha, ior;
-    dvec3 wo;
-};
-
-/// Every roughness, ior 1.5 and 1 / 1.5, wo outside (z > 0) and inside, at normal and grazing incidence (85
-/// degrees for narrow lobes, 89 for broad ones as for the conductor).
-std::vector<DielectricCase> dielectricCases()
-{
-    std::vector<DielectricCase> cases;
-    for (float a : kAlphas)
-        for (float ior : {1.5f, 1.0f / 1.5f})
-            for (bool inside : {false, true})
-                for (double theta : {0.0, a <= 0.01f ? 85.0 : 89.0})
-                {
-                    dvec3 wo = direction(theta);
-                    if (inside)
-                        wo.z = -wo.z;
-                    std::ostringstream name;
-                    name << "alpha " << a << ", ior " << ior << ", wo " << (inside ? "inside" : "outside")
-                         << " at " << theta << " degrees";
-                    cases.push_back({name.str(), a, ior, wo});
-                }
-    return cases;
-}
-
-/// The directions wi across the surface from wo, histogrammed over the microfacet normal x (z > 0) that
-/// refracts wo into them: the generalised half vector of wo + eta' wi (Walter 2007 eq. 16), with d omega_i =
-/// (wi.x + wo.x / eta')^2 / |wi.x| d omega_x (eq. 17). Creases: where the refraction meets the horizon, where
-/// x stops facing wo, and where total reflection begins.
-test::WarpedPart refractionPart(const dvec3& wo, double alpha, double ior)
-{
-    const double side = wo.z > 0.0 ? 1.0 : -1.0;
-    const double etaPrime = wo.z > 0.0 ? ior : 1.0 / ior;
-    const double etaRatio = 1.0 / etaPrime; // eta_wo / eta_wi
-    // The refraction of wo through x, and 1 - sin^2(theta_t): <= 0 under total reflection.
-    auto refracted = [=](const dvec3& x, dvec3& wi) {
-        const dvec3 n = side * x;
-        const double cosI = glm::dot(wo, n);
-        const double cos2T = 1.0 - etaRatio * etaRatio * (1.0 - cosI * cosI);
-        if (cosI > 0.0 && cos2T > 0.0)
-            wi = -etaRatio * wo + (etaRatio * cosI - std::sqrt(cos2T)) * n;
-        return cos2T;
-    };
-    const test::Crease horizon = [=](const dvec3& x) {
-        dvec3 wi(0.0, 0.0, side);
-        refracted(x, wi);
-        return -side * wi.z;
-    };
-    const test::Crease facing = [=](const dvec3& x) { return side * glm::dot(wo, x); };
-    const test::Crease totalReflection = [=](const dvec3& x) {
-        dvec3 wi;
-        return refracted(x, wi);
-    };
-    return {normalCells(side * wo, alpha, alpha, {horizon, facing, totalReflection}),
-            [=](const dvec3& wi, dvec3& x) {
-                if (!(wi.z * side < 0.0))
-                    return false;
-                x = glm::normalize(wo + etaPrime * wi);
-                if (x.z < 0.0)
-                    x = -x;
-                return true;
-            },
-            [=](const dvec3& x, dvec3& wi, double& jacobian) {
-                wi = dvec3(0.0, 0.0, side);
-                if (!(refracted(x, wi) > 0.0) || !(side * glm::dot(wo, x) > 0.0) || !(wi.z * side < 0.0))
-                    return false;
-                const double s = glm::dot(wi, x) + glm::dot(wo, x) / etaPrime;
-                jacobian = s * s / std::fabs(glm::dot(wi, x));
-                return true;
-            }};
-}
-
-/// Reflections over their normals, refractions over theirs.
-test::WarpedDomain dielectricDomain(const DielectricCase& c)
-{
-    return test::WarpedDomain({reflectionPart(c.wo, c.alpha, c.alpha), refractionPart(c.wo, c.alpha, c.ior)});
-}
 
 /// eta' of a pair: 1 for a reflection, else eta_far / eta_wo (ior from outside, 1 / ior from inside).
 double etaPrime(const dvec3& wo, const dvec3& wi, double ior)
@@ -869,7 +645,7 @@ TEST(RoughDielectricBsdf, GeneralizedReciprocity)
     // 2 (3e-7 / alpha).
     Rng rng(pcgHash(900));
     long reflections = 0, refractions = 0;
-    for (float alpha : kAlphas)
+    for (float alpha : test::kMicrofacetAlphas)
         for (float ior : {1.5f, 1.0f / 1.5f})
             for (double theta : {0.0, 30.0, 70.0, 85.0, 150.0, 170.0})
             {
@@ -949,15 +725,6 @@ GltfPbrParams gltfMaterial(float alpha)
     return {vec3(0.8f, 0.5f, 0.2f), 0.5f, alpha, 0.04f};
 }
 
-/// Isotropic roughness only (glTF has no anisotropy here), at the conductor's incidences.
-std::vector<DistributionCase> gltfCases()
-{
-    std::vector<DistributionCase> cases;
-    for (const auto& c : conductorCases())
-        if (c.alphaX == c.alphaY)
-            cases.push_back(c);
-    return cases;
-}
 
 bool sampleGltf(const GltfPbrParams& p, const vec3& wo, Rng& rng, BsdfSample& s)
 {
@@ -965,12 +732,6 @@ bool sampleGltf(const GltfPbrParams& p, const vec3& wo, Rng& rng, BsdfSample& s)
     return shader::sampleGltfPbr(p, wo, uLobe, test::uniform2(rng), s);
 }
 
-/// Over the half vector as the conductor's: the log rows resolve the narrow specular lobe near the axis and
-/// the diffuse one, spread over all the normals that reflect wo above the horizon, together.
-test::WarpedDomain gltfDomain(const DistributionCase& c)
-{
-    return reflectionDomain(c.wo, c.alphaX, c.alphaX);
-}
 
 TEST(GltfPbrBsdf, ChiSquare)
 {
@@ -1026,7 +787,7 @@ void forEachGltfPair(std::initializer_list<float> metallics, int pairs, std::uin
                      const std::function<void(const GltfPbrParams&, const vec3&, const vec3&)>& check)
 {
     Rng rng(pcgHash(seed));
-    for (float alpha : kAlphas)
+    for (float alpha : test::kMicrofacetAlphas)
         for (float metallic : metallics)
         {
             GltfPbrParams p = gltfMaterial(alpha);

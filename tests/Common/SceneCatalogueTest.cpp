@@ -329,3 +329,39 @@ TEST(SceneCatalogue, FresnelOptionSetsEveryDielectric)
     EXPECT_EQ(chosen, std::vector<shader::FresnelModel>(books.size(), shader::FresnelModel::Exact));
 }
 } // namespace rt
+
+namespace rt
+{
+TEST(SceneCatalogue, RoughnessScaleMultipliesEveryMicrofacetAlphaUpToOne)
+{
+    // glossy-cornell holds all three microfacet materials (conductor alpha 0.1, glTF roughness 0.3 -> alpha 0.09,
+    // rough dielectric alpha 0.05) beside diffuse ones.
+    const Scene own = makeScene("glossy-cornell");
+    SceneOptions doubled;
+    doubled.roughnessScale = 2.0f;
+    SceneOptions far;
+    far.roughnessScale = 50.0f;
+    const Scene twice = makeScene("glossy-cornell", doubled);
+    const Scene matte = makeScene("glossy-cornell", far);
+    ASSERT_EQ(own.materials.size(), twice.materials.size());
+    int microfacet = 0;
+    for (std::size_t i = 0; i < own.materials.size(); ++i)
+    {
+        const MaterialData& m = own.materials[i];
+        if (!isMicrofacetMaterial(m.type))
+        {
+            EXPECT_EQ(twice.materials[i].alphaX, m.alphaX) << i;
+            continue;
+        }
+        ++microfacet;
+        EXPECT_FLOAT_EQ(twice.materials[i].alphaX, 2.0f * m.alphaX) << i;
+        EXPECT_FLOAT_EQ(twice.materials[i].alphaY, 2.0f * m.alphaY) << i;
+        EXPECT_EQ(matte.materials[i].alphaX, 1.0f) << i; // 50 x 0.05 and more: kept at 1
+        EXPECT_EQ(matte.materials[i].alphaY, 1.0f) << i;
+    }
+    EXPECT_EQ(microfacet, 3);
+    EXPECT_TRUE(own.hasMicrofacetMaterial());
+    EXPECT_FALSE(makeScene("cornell-box-lights").hasMicrofacetMaterial());
+    matte.validate();
+}
+} // namespace rt

@@ -108,6 +108,10 @@ TEST(SharedActions, SceneTakesExistingSceneFilesAndFresnelItsThreeNames)
     EXPECT_THROW(parseActionScript("scene=" + (dir / "absent.json").string(), specs), UsageError);
     EXPECT_THROW(parseActionScript("scene=" + dir.write("notes.txt", "").string(), specs), UsageError);
     EXPECT_THROW(parseActionScript("fresnel=fast", specs), UsageError);
+    EXPECT_EQ(parseActionScript("roughness-scale=0.01;roughness-scale=100;roughness-scale=2.5", specs).size(), 3u);
+    EXPECT_THROW(parseActionScript("roughness-scale=0.005", specs), UsageError);
+    EXPECT_THROW(parseActionScript("roughness-scale=101", specs), UsageError);
+    EXPECT_THROW(parseActionScript("roughness-scale=rough", specs), UsageError);
     EXPECT_THROW(parseActionScript("sleep=-1", specs), UsageError);
     EXPECT_THROW(parseActionScript("sleep=601", specs), UsageError);
 }

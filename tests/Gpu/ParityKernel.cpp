@@ -10,11 +10,13 @@
 namespace rt::gpu::test
 {
 std::vector<std::uint32_t> runParity(ParityMode mode, const std::vector<std::uint32_t>& inputs,
-                                     const std::vector<LightData>& lights, const LightBvh* lightBvh)
+                                     const std::vector<LightData>& lights, const LightBvh* lightBvh,
+                                     std::uint32_t sharedCases)
 {
     const ParityLayout layout = kParityLayouts[mode];
-    const auto cases = static_cast<std::uint32_t>(inputs.size() / layout.inputWords);
-    const std::uint32_t push[4] = {mode, cases, layout.inputWords, layout.outputWords};
+    const auto cases =
+        sharedCases > 0 ? sharedCases : static_cast<std::uint32_t>(inputs.size() / layout.inputWords);
+    const std::uint32_t push[4] = {mode, cases, sharedCases > 0 ? 0u : layout.inputWords, layout.outputWords};
     const std::vector<LightData> lightBuffer = lights.empty() ? std::vector<LightData>(1) : lights;
     const LightBvh noBvh{std::vector<LightBvhNode>(1), std::vector<std::uint32_t>(1)};
     const LightBvh& bvh = lightBvh != nullptr ? *lightBvh : noBvh;

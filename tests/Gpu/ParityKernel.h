@@ -23,7 +23,16 @@ enum ParityMode : std::uint32_t
     kSphere = 5,
     kSrgb = 6,
     kLightBvh = 7,
-    kSobol = 8
+    kSobol = 8,
+    kMicrofacet = 9
+};
+
+/// kMicrofacet's material kinds (input word 1).
+enum ParityMicrofacetKind : std::uint32_t
+{
+    kParityConductor = 0, // words 5, 6: alphaX, alphaY; 8-10: eta; 11-13: k
+    kParityRoughDielectric = 1, // word 5: alpha; 7: ior
+    kParityGltfPbr = 2 // word 5: alpha; 7: metallic; 8-10: base colour; 14: f0
 };
 
 struct ParityLayout
@@ -32,7 +41,7 @@ struct ParityLayout
     std::uint32_t outputWords;
 };
 inline constexpr ParityLayout kParityLayouts[] = {{3, 8},  {7, 3}, {3, 13}, {10, 6}, {3, 2},
-                                                  {10, 3}, {1, 1}, {8, 3},  {3, 8}};
+                                                  {10, 3}, {1, 1}, {8, 3},  {3, 8}, {15, 8}};
 
 inline std::uint32_t bits(float f) { return std::bit_cast<std::uint32_t>(f); }
 inline float asFloat(std::uint32_t u) { return std::bit_cast<float>(u); }
@@ -42,8 +51,10 @@ inline vec3 vec3At(const std::vector<std::uint32_t>& w, std::size_t i)
 }
 
 /// Runs `mode` on the shared engine's device over `inputs` (inputWords per case); returns outputWords per
-/// case. `lights` and `lightBvh` fill the light bindings (a placeholder each when absent).
+/// case. `lights` and `lightBvh` fill the light bindings (a placeholder each when absent). `sharedCases` > 0
+/// runs that many cases on the one case of `inputs` (the kernel reads it at input stride 0): kMicrofacet draws
+/// a million samples of one material so.
 std::vector<std::uint32_t> runParity(ParityMode mode, const std::vector<std::uint32_t>& inputs,
                                      const std::vector<LightData>& lights = {},
-                                     const LightBvh* lightBvh = nullptr);
+                                     const LightBvh* lightBvh = nullptr, std::uint32_t sharedCases = 0);
 } // namespace rt::gpu::test

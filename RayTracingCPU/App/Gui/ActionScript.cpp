@@ -77,6 +77,11 @@ bool ActionScript::run(const Action& a, Session& session, GlWindow& window)
         session.setFresnel(model);
         return true;
     }
+    if (a.name == "roughness-scale")
+    {
+        session.setRoughnessScale(a.real());
+        return true;
+    }
     if (a.name == "count")
         return check(session.setCount(int(a.integer())));
     if (a.name == "pdf")

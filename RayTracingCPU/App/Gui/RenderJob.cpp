@@ -36,7 +36,7 @@ RenderJob::RenderJob(const GpuStartup::Options& gpu, const RenderRequest& initia
 {
     m_slots[std::size_t(EngineKind::Single)].engine = &m_single;
     m_slots[std::size_t(EngineKind::Multi)].engine = &m_multi;
-    m_sceneDefaults[initial.scene.id] = m_scene->defaults;
+    m_sceneSummaries[initial.scene.id] = {m_scene->defaults, m_scene->hasMicrofacetMaterial()};
     m_worker = std::thread([this] { workerLoop(); });
 }
 
@@ -108,11 +108,11 @@ std::vector<RenderOutcome> RenderJob::takeOutcomes()
     return std::exchange(m_outcomes, {});
 }
 
-std::optional<SceneDefaults> RenderJob::sceneDefaults(const std::string& sceneId) const
+std::optional<SceneSummary> RenderJob::sceneSummary(const std::string& sceneId) const
 {
     std::lock_guard lock(m_mutex);
-    const auto it = m_sceneDefaults.find(sceneId);
-    return it == m_sceneDefaults.end() ? std::nullopt : std::optional(it->second);
+    const auto it = m_sceneSummaries.find(sceneId);
+    return it == m_sceneSummaries.end() ? std::nullopt : std::optional(it->second);
 }
 
 void RenderJob::workerLoop()
@@ -225,7 +225,7 @@ std::shared_ptr<const Scene> RenderJob::sceneFor(const SceneRef& ref)
     auto scene = std::make_shared<const Scene>(buildScene(ref));
     {
         std::lock_guard lock(m_mutex);
-        m_sceneDefaults[ref.id] = scene->defaults;
+        m_sceneSummaries[ref.id] = {scene->defaults, scene->hasMicrofacetMaterial()};
     }
     m_scene = scene;
     m_sceneKey = ref;

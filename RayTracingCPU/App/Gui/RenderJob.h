@@ -74,6 +74,14 @@ struct RenderOutcome
     WindowRedraws redraws; // during this render (loop iteration)
 };
 
+/// What the window needs of a scene it does not hold: its own render defaults, and whether the roughness
+/// slider applies.
+struct SceneSummary
+{
+    SceneDefaults defaults;
+    bool microfacet = false; // Scene::hasMicrofacetMaterial
+};
+
 class RenderJob
 {
 public:
@@ -101,8 +109,8 @@ public:
     std::shared_ptr<const Preview> latestPreview() const;
     /// Outcomes since the last call, oldest first.
     std::vector<RenderOutcome> takeOutcomes();
-    /// The defaults of a scene the job has built; empty for one it has not.
-    std::optional<SceneDefaults> sceneDefaults(const std::string& sceneId) const;
+    /// What the window shows of a scene the job has built; empty for one it has not.
+    std::optional<SceneSummary> sceneSummary(const std::string& sceneId) const;
     GpuStartup::Status gpuStatus() const { return m_gpu.status(); }
     std::uint64_t gpuValidationMessages() const { return m_gpu.validationMessages(); }
     /// The window drew a frame (`onInput`: for a person's input); counted into the outcome of the render
@@ -148,7 +156,7 @@ private:
     std::shared_ptr<const Preview> m_preview;
     std::uint64_t m_generation = 0;
     std::vector<RenderOutcome> m_outcomes;
-    std::unordered_map<std::string, SceneDefaults> m_sceneDefaults;
+    std::unordered_map<std::string, SceneSummary> m_sceneSummaries;
     std::function<void()> m_wakeUi;
     std::atomic<int> m_redraws{0}; // of the render in progress
     std::atomic<int> m_redrawsOnInput{0};

@@ -21,6 +21,7 @@ nlohmann::json toJson(const RenderRequest& request)
             {"count", request.scene.options.count},
             {"mesh", request.scene.options.meshPath},
             {"fresnel", fresnelOptionName(request.scene.options.fresnel)},
+            {"roughness_scale", request.scene.options.roughnessScale},
             {"spp", r.spp},
             {"true_spp", r.trueSpp()},
             {"depth", r.depth},
@@ -97,6 +98,17 @@ bool Session::setScene(const std::string& idOrPath)
 
 void Session::setFresnel(std::optional<shader::FresnelModel> fresnel) { m_image.scene.options.fresnel = fresnel; }
 
+void Session::setRoughnessScale(float scale)
+{
+    m_image.scene.options.roughnessScale = std::clamp(scale, kMinRoughnessScale, kMaxRoughnessScale);
+}
+
+bool Session::hasMicrofacetMaterial() const
+{
+    const std::optional<SceneSummary> summary = m_job.sceneSummary(m_image.scene.id);
+    return summary && summary->microfacet;
+}
+
 bool Session::setSetting(const Setting& setting, std::string_view value)
 {
     RenderRequest s = m_image;
@@ -119,14 +131,14 @@ void Session::setPdf(bool on) { m_image.settings.estimator = on ? Estimator::Mix
 
 bool Session::applySceneDefaults()
 {
-    const std::optional<SceneDefaults> d = m_job.sceneDefaults(m_image.scene.id);
+    const std::optional<SceneSummary> d = m_job.sceneSummary(m_image.scene.id);
     if (!d)
     {
         note("the scene's defaults are known once it has been built: render it first", true);
         return false;
     }
     RenderRequest s = m_image;
-    rt::applySceneDefaults(s.settings, *d);
+    rt::applySceneDefaults(s.settings, d->defaults);
     return tryImage(s);
 }
 

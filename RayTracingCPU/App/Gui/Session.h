@@ -45,6 +45,10 @@ public:
     bool setCount(int count);
     /// Every dielectric's Fresnel model; empty: each material's own (--fresnel).
     void setFresnel(std::optional<shader::FresnelModel> fresnel);
+    /// Every microfacet material's GGX alpha times `scale` (--roughness-scale), clamped to its range.
+    void setRoughnessScale(float scale);
+    /// Whether the selected scene, once built, has a microfacet material (the roughness slider applies).
+    bool hasMicrofacetMaterial() const;
     /// The books' name for two estimators: on = mixture, off = bsdf (--pdf).
     void setPdf(bool on);
     /// The selected scene's own spp, depth, width, aspect and light mode; false until the scene was built once.

@@ -144,6 +144,16 @@ void SettingsPanel::drawRenderingParameters(Session& session)
     }
     tooltip("every dielectric's reflectance: scene (each material's own: Schlick in the books' scenes), schlick "
             "(Schlick's approximation) or exact (the unpolarised Fresnel equations)");
+    if (session.hasMicrofacetMaterial())
+    {
+        float roughness = request.scene.options.roughnessScale;
+        if (ImGui::SliderFloat("Roughness x", &roughness, kMinRoughnessScale, kMaxRoughnessScale, "%.3g",
+                               ImGuiSliderFlags_Logarithmic))
+            session.setRoughnessScale(roughness);
+        tooltip("every microfacet material's GGX roughness alpha times this factor (alpha at most 1; 1: the "
+                "scene's own): in veach-mis, watch which strategy wins on each plate as they turn from mirror to "
+                "matte (--roughness-scale)");
+    }
 
     drawEngineChoice(session);
 

@@ -93,6 +93,8 @@ bool applyAction(const Action& a, Controls& c)
         parseFresnelOption(a.value, model); // the grammar has checked the name
         c.setFresnel(model);
     }
+    else if (n == "roughness-scale")
+        c.setRoughnessScale(a.real());
     else if (n == "spp")
         c.setStopSpp(int(a.integer()));
     else if (n == "depth")

@@ -51,6 +51,17 @@ void Controls::setFresnel(std::optional<shader::FresnelModel> fresnel)
         m_state->sceneRequest = m_state->image.request.scene.id; // the materials are the scene's: build it again
 }
 
+void Controls::setRoughnessScale(float scale)
+{
+    SceneOptions& options = m_state->image.request.scene.options;
+    scale = std::clamp(scale, kMinRoughnessScale, kMaxRoughnessScale);
+    if (options.roughnessScale == scale)
+        return;
+    options.roughnessScale = scale;
+    if (!m_state->sceneRequest)
+        m_state->sceneRequest = m_state->image.request.scene.id; // the materials are the scene's: build it again
+}
+
 void Controls::setRayTracing(bool on) { m_state->image.rayTracing = on; }
 void Controls::setAccumulate(bool on) { m_state->image.accumulate = on; }
 void Controls::setHeatmap(bool on) { m_state->image.heatmap = on && m_state->costAvailable; }

@@ -30,6 +30,9 @@ public:
     void selectScene(const std::string& idOrPath);
     /// Every dielectric's Fresnel model (empty: each material's own); rebuilds the scene when it changes.
     void setFresnel(std::optional<shader::FresnelModel> fresnel);
+    /// Every microfacet material's GGX alpha times `scale` (--roughness-scale; clamped to its range); rebuilds the
+    /// scene when it changes, keeping the view.
+    void setRoughnessScale(float scale);
     void setRayTracing(bool on);
     void setAccumulate(bool on);
     void setHeatmap(bool on); // stays off without the shader clock (WindowState::costAvailable)

@@ -65,6 +65,17 @@ void sceneSection(Controls& controls, const WindowState& state, const PanelInfo&
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Every dielectric's reflectance: scene (each material's own: Schlick in the books' "
                           "scenes), schlick (Schlick's approximation) or exact (the unpolarised Fresnel equations)");
+    if (info.microfacet)
+    {
+        float roughness = state.image.request.scene.options.roughnessScale;
+        if (ImGui::SliderFloat("Roughness x", &roughness, kMinRoughnessScale, kMaxRoughnessScale, "%.3g",
+                               ImGuiSliderFlags_Logarithmic))
+            controls.setRoughnessScale(roughness);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Every microfacet material's GGX roughness alpha times this factor (alpha at most 1; "
+                              "1: the scene's own): in veach-mis, watch which strategy wins on each plate as they "
+                              "turn from mirror to matte (--roughness-scale)");
+    }
     const ImVec4 warning(1.0f, 0.8f, 0.2f, 1.0f);
     if (!info.building.empty())
         ImGui::TextColored(warning, "Building %s...", info.building.c_str());

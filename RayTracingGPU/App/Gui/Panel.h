@@ -20,6 +20,7 @@ struct PanelInfo
     bool costAvailable = false; // the device has the shader clock: the profiler section exists
     std::string building; // the scene being built, empty when none
     std::string sceneError; // why the last scene build failed (the scene on screen stayed), empty when none
+    bool microfacet = false; // the scene on screen has a microfacet material: the roughness slider applies
     double framesPerSecond = 0.0;
     double megaSamplesPerSecond = 0.0; // camera samples (paths) per second, in millions
     int accumulatedSpp = 0;

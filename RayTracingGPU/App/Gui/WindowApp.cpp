@@ -176,6 +176,10 @@ private:
                            .options = m_state.image.request.scene.options,
                            .fileVersion = sceneFileVersion(m_loadingId)};
         m_watch.watch(ref.id, ref.fileVersion);
+        // The same version of the scene on screen, built again for its options (Fresnel, roughness): the view
+        // the user moved to stays.
+        m_loadingKeepsView = ref.id == m_state.image.request.scene.id &&
+                             ref.fileVersion == m_state.image.request.scene.fileVersion;
         m_loadingVersion = ref.fileVersion;
         m_loading = std::async(std::launch::async, [ref] { return buildScene(ref); });
     }
@@ -199,9 +203,16 @@ private:
         {
             auto scene = std::make_unique<Scene>(m_loading.get());
             m_presenter.waitIdle();
+            const CameraDesc view = m_state.image.camera;
+            const float speed = m_state.cameraSpeed;
             try
             {
                 showScene(*scene);
+                if (m_loadingKeepsView)
+                {
+                    m_state.image.camera = view;
+                    m_state.cameraSpeed = speed;
+                }
             }
             catch (const Error&)
             {
@@ -302,6 +313,7 @@ private:
         info.costAvailable = m_state.costAvailable;
         info.building = m_loading.valid() ? m_loadingId : std::string();
         info.sceneError = m_sceneError;
+        info.microfacet = m_scene->hasMicrofacetMaterial();
         info.framesPerSecond = m_throughput.framesPerSecond();
         info.megaSamplesPerSecond = m_throughput.samplesPerSecond() * 1e-6;
         info.accumulatedSpp = static_cast<int>(m_accumulatedSpp);
@@ -430,6 +442,7 @@ private:
             {"accumulated_spp", m_accumulatedSpp},
             {"samples_per_frame", m_state.display.samplesPerFrame},
             {"font_pixels", m_controls.fontPixels()},
+            {"roughness_scale", m_state.image.request.scene.options.roughnessScale},
             {"message", m_state.message}};
         writeFileAtomically(m_options.stateJson, state.dump(2) + "\n");
     }
@@ -465,6 +478,7 @@ private:
     std::future<Scene> m_loading;
     std::string m_loadingId;
     std::int64_t m_loadingVersion = 0;
+    bool m_loadingKeepsView = false;
     SceneFileWatch m_watch; // the scene file asked for last
     std::string m_sceneError;
     ImageSettings m_traced; // the settings of the samples in the accumulation image

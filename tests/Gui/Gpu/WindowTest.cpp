@@ -330,6 +330,39 @@ TEST(GpuWindow, AccumulatedImageMatchesTheSettingsShown)
     EXPECT_LE(largest, 1e-5f);
 }
 
+TEST(GpuWindow, RoughnessSliderRendersWhatTheFlagRenders)
+{
+    // roughness-scale=X is what the panel's slider calls: the scene is built again with every microfacet alpha
+    // times X, and the window's image is then the headless render of --roughness-scale X, bit for bit.
+    const ::rt::test::ScratchDir dir;
+    RT_RUN_WINDOW(run, "--width 96 --aspect 1.5 --validation --scene veach-mis --spp 4 --depth 8 --seed 5 --frames 1 "
+                       "--state-json '" + (dir / "state.json").string() +
+                           "' --actions 'frames=2;roughness-scale=6;frames=8;save=" + (dir / "window.png").string() +
+                           "'");
+    const AppRun headless = runApp("--headless --quiet --scene veach-mis --width 96 --aspect 1.5 --spp 4 --depth 8 "
+                                   "--seed 5 --roughness-scale 6 --hdr '" + (dir / "headless.pfm").string() + "'");
+    ASSERT_EQ(headless.status, 0) << headless.output;
+    const AppRun own = runApp("--headless --quiet --scene veach-mis --width 96 --aspect 1.5 --spp 4 --depth 8 "
+                              "--seed 5 --hdr '" + (dir / "own.pfm").string() + "'");
+    ASSERT_EQ(own.status, 0) << own.output;
+    const Image window = readPfm(dir / "window.pfm");
+    const Image reference = readPfm(dir / "headless.pfm");
+    const Image unscaled = readPfm(dir / "own.pfm");
+    ASSERT_EQ(window.pixelCount(), reference.pixelCount());
+    float largest = 0.0f;
+    double changed = 0.0, total = 0.0;
+    for (std::size_t i = 0; i < window.pixelCount(); ++i)
+    {
+        largest = std::max(largest, glm::length(window.data()[i] - reference.data()[i]));
+        changed += glm::length(window.data()[i] - unscaled.data()[i]);
+        total += glm::length(unscaled.data()[i]);
+    }
+    EXPECT_LE(largest, 1e-5f);
+    EXPECT_GT(changed, 0.05 * total) << "roughness x6 left the image as it was";
+    const nlohmann::json state = nlohmann::json::parse(std::ifstream(dir / "state.json"));
+    EXPECT_EQ(state["roughness_scale"], 6.0);
+}
+
 TEST(GpuWindow, CameraMoveRestartsAccumulation)
 {
     const ::rt::test::ScratchDir dir;
