@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <iterator>
 #include <limits>
 #include <memory>
@@ -16,6 +17,7 @@
 
 #include "Render/SettingsTable.h"
 #include "Compare/ConvergenceCsv.h"
+#include "Compare/Confidence.h"
 #include "Compare/EqualTime.h"
 #include "Compare/ImageFolder.h"
 #include "Compare/Measurement.h"
@@ -160,6 +162,68 @@ std::vector<std::size_t> measurementOrder(const std::vector<EngineUnderTest>& en
     return order;
 }
 
+/// One row of a comparison rendered with options.seeds independent seeds (the request's seed + k): every
+/// seed's measurement, the first whole (its image: the CPU/GPU comparison, the equal-time figure), the others'
+/// images dropped once measured.
+struct SeededRow
+{
+    std::vector<Measurement> seeds;
+
+    const Measurement& first() const { return seeds.front(); }
+    std::vector<double> values(double (*of)(const Measurement&)) const
+    {
+        std::vector<double> out;
+        for (const Measurement& m : seeds)
+            out.push_back(of(m));
+        return out;
+    }
+    static double median(std::vector<double> v)
+    {
+        std::sort(v.begin(), v.end());
+        const std::size_t n = v.size();
+        return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    }
+    double ms() const { return median(values([](const Measurement& m) { return m.ms(); })); }
+    double wallMs() const { return median(values([](const Measurement& m) { return m.wallMs; })); }
+    double gpuMs() const { return median(values([](const Measurement& m) { return m.gpuMs; })); }
+    Interval relMse() const { return meanInterval(values([](const Measurement& m) { return m.error.relMse; })); }
+    /// relMSE x seconds per seed: the inverse of the efficiency 1 / (relMSE s).
+    std::vector<double> relMseSeconds() const
+    {
+        return values([](const Measurement& m) { return m.error.relMse * m.ms() * 1e-3; });
+    }
+};
+
+/// Renders the seeds after `first` (rendered from `request`, whose seed is the first's) at its spp, calling
+/// `done` on each measurement, the first's included, before an image is dropped. nullopt when Ctrl-C stopped it.
+std::optional<SeededRow> completeSeeds(RenderEngine& engine, Measurement first, RenderRequest request, int seeds,
+                                       const Image& reference,
+                                       const std::function<void(const Measurement&, std::uint32_t seed)>& done)
+{
+    SeededRow row;
+    request.settings.spp = first.spp;
+    done(first, request.settings.seed);
+    row.seeds.push_back(std::move(first));
+    for (int k = 1; k < seeds; ++k)
+    {
+        RenderRequest next = request;
+        next.settings.seed = request.settings.seed + std::uint32_t(k);
+        Measurement m = measure(engine, next, &reference);
+        if (m.cancelled)
+            return std::nullopt;
+        done(m, next.settings.seed);
+        m.image = Image();
+        row.seeds.push_back(std::move(m));
+    }
+    return row;
+}
+
+/// " ±4.1e-05" (half the 95 % interval) when there are several seeds, else nothing.
+std::string plusMinus(const Interval& i)
+{
+    return i.count > 1 ? fmt::format(" ±{:<8.2g}", 0.5 * (i.hi - i.lo)) : std::string();
+}
+
 /// The ladder: every engine x strategy x spp against the reference; rows to the CSV as they finish, the table
 /// to stdout and the JSON at the end. Returns false when Ctrl-C stopped it.
 bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
@@ -169,8 +233,8 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
     const std::vector<std::string> labels = distinctLabels(options.strategies);
     const std::size_t strategyCount = options.strategies.size();
     // runs[engine][strategy][spp index]
-    std::vector<std::vector<std::vector<Measurement>>> runs(engines.size());
-    RunLog log(engines.size() * strategyCount * options.spps.size());
+    std::vector<std::vector<std::vector<SeededRow>>> runs(engines.size());
+    RunLog log(engines.size() * strategyCount * options.spps.size() * std::size_t(options.seeds));
     // Each engine runs all its rows back to back after its warm-up: row by row interleaving with 16-thread CPU
     // renders cost an H100 2-3x (docs/notebook/PERFORMANCE.md).
     for (const std::size_t e : measurementOrder(engines))
@@ -181,17 +245,26 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
         for (std::size_t s = 0; s < strategyCount; ++s)
             for (const int spp : options.spps)
             {
-                Measurement m = measure(engine, options.strategies[s].request(base, spp), &reference.image);
+                const RenderRequest request = options.strategies[s].request(base, spp);
+                Measurement m = measure(engine, request, &reference.image);
                 if (m.cancelled)
                     return false;
-                log.done(fmt::format("{} {}, {} spp: {:.1f} ms, relMSE {:.3g}", toString(engines[e].kind), labels[s],
-                                     m.spp, m.ms(), m.error.relMse));
-                if (csv)
-                    csv->append({scene.id, toString(engines[e].kind), engine.deviceName(), options.strategies[s].name(),
-                                 labels[s], m.spp, m.wallMs, m.gpuMs, m.mpathsPerSecond, m.error.mse, m.error.relMse,
-                                 m.error.rmse, reference.ownRelMse.value_or(-1.0)});
-                images.add(engines[e].kind, options.strategies[s].name(), labels[s], m);
-                runs[e][s].push_back(std::move(m));
+                std::optional<SeededRow> row = completeSeeds(
+                    engine, std::move(m), request, options.seeds, reference.image,
+                    [&](const Measurement& r, std::uint32_t seed) {
+                        log.done(fmt::format("{} {}, {} spp, seed {}: {:.1f} ms, relMSE {:.3g}",
+                                             toString(engines[e].kind), labels[s], r.spp, seed, r.ms(),
+                                             r.error.relMse));
+                        if (csv)
+                            csv->append({scene.id, toString(engines[e].kind), engine.deviceName(),
+                                         options.strategies[s].name(), labels[s], r.spp, r.wallMs, r.gpuMs,
+                                         r.mpathsPerSecond, r.error.mse, r.error.relMse, r.error.rmse,
+                                         reference.ownRelMse.value_or(-1.0), seed});
+                        images.add(engines[e].kind, options.strategies[s].name(), labels[s], r, seed);
+                    });
+                if (!row)
+                    return false;
+                runs[e][s].push_back(std::move(*row));
             }
     }
 
@@ -218,38 +291,51 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
                     describeStrategy(settings).c_str(), againstReference(reference).c_str());
         std::string header = fmt::format("{:>6}", "spp");
         for (const EngineUnderTest& e : engines)
-            header += fmt::format(" | {:>9} {:>9}", fmt::format("{} ms", toString(e.kind)), "relMSE");
+            header += fmt::format(" | {:>9} {:>9}{}", fmt::format("{} ms", toString(e.kind)), "relMSE",
+                                  options.seeds > 1 ? fmt::format(" {:<9}", "±95%") : std::string());
         if (ratio)
             header += fmt::format(" | {:>10} | {:>11}", "CPU/GPU", "relMSE C-G");
         std::printf("%s\n%s\n", header.c_str(), std::string(header.size(), '-').c_str());
         for (std::size_t row = 0; row < options.spps.size(); ++row)
         {
-            std::string line = fmt::format("{:>6}", runs.front()[s][row].spp);
+            std::string line = fmt::format("{:>6}", runs.front()[s][row].first().spp);
             nlohmann::json jrow;
-            jrow["spp"] = runs.front()[s][row].spp;
+            jrow["spp"] = runs.front()[s][row].first().spp;
             jrow["strategy"] = options.strategies[s].name();
-            const Measurement* gpu = nullptr;
-            const Measurement* cpu = nullptr; // the fastest CPU engine of the row
+            const SeededRow* gpu = nullptr;
+            const SeededRow* cpu = nullptr; // the fastest CPU engine of the row
             for (std::size_t e = 0; e < engines.size(); ++e)
             {
-                const Measurement& m = runs[e][s][row];
-                line += fmt::format(" | {:>9.1f} {:>9.2e}", m.ms(), m.error.relMse);
-                jrow[toString(engines[e].kind)] = {{"render_ms", m.wallMs},
-                                                   {"gpu_ms", m.gpuMs},
-                                                   {"mpaths_per_second", m.mpathsPerSecond},
-                                                   {"mse", m.error.mse},
-                                                   {"relmse", m.error.relMse},
-                                                   {"rmse", m.error.rmse}};
+                const SeededRow& seeded = runs[e][s][row];
+                const Measurement& m = seeded.first();
+                const Interval relMse = seeded.relMse();
+                line += fmt::format(" | {:>9.1f} {:>9.2e}{}", seeded.ms(), relMse.mean, plusMinus(relMse));
+                nlohmann::json& j = jrow[toString(engines[e].kind)];
+                j = {{"render_ms", seeded.wallMs()},
+                     {"gpu_ms", seeded.gpuMs()},
+                     {"mpaths_per_second", m.mpathsPerSecond},
+                     {"mse", m.error.mse},
+                     {"relmse", relMse.mean},
+                     {"rmse", m.error.rmse}};
+                if (options.seeds > 1)
+                {
+                    j["seeds"] = options.seeds;
+                    j["relmse_ci95"] = {relMse.lo, relMse.hi};
+                    j["relmse_seeds"] = seeded.values([](const Measurement& x) { return x.error.relMse; });
+                    j["ms_seeds"] = seeded.values([](const Measurement& x) { return x.ms(); });
+                    j["mse"] = meanInterval(seeded.values([](const Measurement& x) { return x.error.mse; })).mean;
+                    j["rmse"] = meanInterval(seeded.values([](const Measurement& x) { return x.error.rmse; })).mean;
+                }
                 if (engines[e].kind == EngineKind::Gpu)
-                    gpu = &m;
-                else if (!cpu || m.wallMs < cpu->wallMs)
-                    cpu = &m;
+                    gpu = &seeded;
+                else if (!cpu || seeded.wallMs() < cpu->wallMs())
+                    cpu = &seeded;
             }
             if (ratio && gpu && cpu)
             {
-                const double between = compareImages(cpu->image, gpu->image).relMse;
-                line += fmt::format(" | {:>9.1f}x | {:>11.2e}", cpu->wallMs / gpu->ms(), between);
-                jrow["cpu_over_gpu"] = cpu->wallMs / gpu->ms();
+                const double between = compareImages(cpu->first().image, gpu->first().image).relMse;
+                line += fmt::format(" | {:>9.1f}x | {:>11.2e}", cpu->wallMs() / gpu->ms(), between);
+                jrow["cpu_over_gpu"] = cpu->wallMs() / gpu->ms();
                 jrow["relmse_cpu_gpu"] = between;
             }
             std::printf("%s\n", line.c_str());
@@ -261,8 +347,8 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
     std::vector<double> relMses;
     for (const auto& engineRuns : runs)
         for (const auto& strategyRuns : engineRuns)
-            for (const Measurement& m : strategyRuns)
-                relMses.push_back(m.error.relMse);
+            for (const SeededRow& row : strategyRuns)
+                relMses.push_back(row.relMse().mean);
     warnNearReferenceNoise(reference, relMses);
     if (!options.json.empty())
         writeFileAtomically(options.json, json.dump(2) + "\n");
@@ -277,10 +363,12 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
 {
     const std::vector<std::string> labels = distinctLabels(options.strategies);
     std::vector<std::vector<EqualTimeTile>> tilesOf(engines.size());
-    RunLog log(engines.size() * options.strategies.size());
+    RunLog log(engines.size() * options.strategies.size() * std::size_t(options.seeds));
     std::string devices;
     for (const EngineUnderTest& e : engines)
         devices += (devices.empty() ? "" : ", ") + e.engine->deviceName();
+    // seeded[engine][strategy]: the first seed's render is the tile.
+    std::vector<std::vector<SeededRow>> seeded(engines.size());
     for (const std::size_t index : measurementOrder(engines))
     {
         EngineUnderTest& e = engines[index];
@@ -291,25 +379,66 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
                 renderForBudget(*e.engine, base, options.strategies[s], options.equalTimeMs, reference.image);
             if (m.cancelled)
                 return false;
-            log.done(fmt::format("{} {}: {} spp in {:.1f} ms, relMSE {:.3g}", toString(e.kind), labels[s], m.spp,
-                                 m.ms(), m.error.relMse));
-            if (csv)
-                csv->append({scene.id, toString(e.kind), e.engine->deviceName(), options.strategies[s].name(),
-                             labels[s], m.spp, m.wallMs, m.gpuMs, m.mpathsPerSecond, m.error.mse, m.error.relMse,
-                             m.error.rmse, reference.ownRelMse.value_or(-1.0)});
-            images.add(e.kind, options.strategies[s].name(), labels[s], m);
-            tilesOf[index].push_back({e.kind, labels[s], options.strategies[s], std::move(m)});
+            // The other seeds at the spp the budget gave the first.
+            std::optional<SeededRow> row = completeSeeds(
+                *e.engine, std::move(m), options.strategies[s].request(base, 1), options.seeds, reference.image,
+                [&](const Measurement& r, std::uint32_t seed) {
+                    log.done(fmt::format("{} {}, seed {}: {} spp in {:.1f} ms, relMSE {:.3g}", toString(e.kind),
+                                         labels[s], seed, r.spp, r.ms(), r.error.relMse));
+                    if (csv)
+                        csv->append({scene.id, toString(e.kind), e.engine->deviceName(), options.strategies[s].name(),
+                                     labels[s], r.spp, r.wallMs, r.gpuMs, r.mpathsPerSecond, r.error.mse,
+                                     r.error.relMse, r.error.rmse, reference.ownRelMse.value_or(-1.0), seed});
+                    images.add(e.kind, options.strategies[s].name(), labels[s], r, seed);
+                });
+            if (!row)
+                return false;
+            tilesOf[index].push_back({e.kind, labels[s], options.strategies[s], row->first()});
+            seeded[index].push_back(std::move(*row));
         }
     }
     std::vector<EqualTimeTile> tiles;
-    for (std::vector<EqualTimeTile>& engineTiles : tilesOf)
-        std::move(engineTiles.begin(), engineTiles.end(), std::back_inserter(tiles));
-    std::printf("\n%s: %dx%d, each strategy for %.0f ms; %s\n", scene.id.c_str(), base.settings.width,
-                base.settings.height(), options.equalTimeMs, againstReference(reference).c_str());
-    std::printf("%-8s %-36s %8s %10s %10s %12s\n", "engine", "strategy", "spp", "ms", "relMSE", "1/(relMSE s)");
-    for (const EqualTimeTile& t : tiles)
-        std::printf("%-8s %-36s %8d %10.1f %10.3g %12.4g\n", toString(t.engine), t.label.c_str(), t.result.spp,
-                    t.result.ms(), t.result.error.relMse, 1.0 / (t.result.error.relMse * t.result.ms() * 1e-3));
+    std::vector<const SeededRow*> rows; // in the tiles' order
+    for (std::size_t e = 0; e < engines.size(); ++e)
+    {
+        std::move(tilesOf[e].begin(), tilesOf[e].end(), std::back_inserter(tiles));
+        for (const SeededRow& row : seeded[e])
+            rows.push_back(&row);
+    }
+    // Efficiency ratios against the most efficient strategy (the lowest mean relMSE x s), with their interval
+    // over the seeds: one whose interval holds 1 is no different from the best.
+    std::size_t best = 0;
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        if (meanInterval(rows[i]->relMseSeconds()).mean < meanInterval(rows[best]->relMseSeconds()).mean)
+            best = i;
+    std::printf("\n%s: %dx%d, each strategy for %.0f ms%s; %s\n", scene.id.c_str(), base.settings.width,
+                base.settings.height(), options.equalTimeMs,
+                options.seeds > 1 ? fmt::format(", {} seeds (mean and 95 % interval)", options.seeds).c_str() : "",
+                againstReference(reference).c_str());
+    std::printf("%-8s %-36s %8s %10s %10s %12s %s\n", "engine", "strategy", "spp", "ms", "relMSE", "1/(relMSE s)",
+                options.seeds > 1 ? "  efficiency / best" : "");
+    for (std::size_t i = 0; i < rows.size(); ++i)
+    {
+        const SeededRow& row = *rows[i];
+        const Interval relMse = row.relMse();
+        std::string line = fmt::format("{:<8} {:<36} {:>8} {:>10.1f} {:>10.3g} {:>12.4g}", toString(tiles[i].engine),
+                                       tiles[i].label, row.first().spp, row.ms(), relMse.mean,
+                                       1.0 / meanInterval(row.relMseSeconds()).mean);
+        if (options.seeds > 1)
+        {
+            // The efficiency ratio e_i / e_best is the ratio of the best's relMSE x s to this one's.
+            line += fmt::format("  relMSE ±{:.2g}; ", 0.5 * (relMse.hi - relMse.lo));
+            if (i == best)
+                line += "1 (best)";
+            else
+            {
+                const Interval r = ratioInterval(rows[best]->relMseSeconds(), row.relMseSeconds());
+                line += fmt::format("{:.3f} [{:.3f}, {:.3f}]{}", r.mean, r.lo, r.hi,
+                                    r.contains(1.0) ? " (no different)" : "");
+            }
+        }
+        std::printf("%s\n", line.c_str());
+    }
     if (!options.grid.empty())
     {
         writeEqualTimeGrid(options.grid,
@@ -318,8 +447,8 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
         std::printf("wrote %s\n", options.grid.c_str());
     }
     std::vector<double> relMses;
-    for (const EqualTimeTile& t : tiles)
-        relMses.push_back(t.result.error.relMse);
+    for (const SeededRow* row : rows)
+        relMses.push_back(row->relMse().mean);
     warnNearReferenceNoise(reference, relMses);
     return true;
 }

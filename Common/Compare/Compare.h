@@ -34,6 +34,7 @@ struct CompareOptions
     double equalTimeMs = 0.0; // > 0: the equal-time comparison instead of the ladder
     std::string grid; // the equal-time figure (PNG)
     std::filesystem::path images; // every render's PFM and an index (ImageFolder.h), when not empty
+    int seeds = 1; // each row rendered with seeds seed, seed + 1, ...: means with 95 % intervals (Confidence.h)
 };
 
 /// Parses "10,50,100" (positive integers). Throws UsageError.

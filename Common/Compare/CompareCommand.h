@@ -28,6 +28,7 @@ struct CompareFlags
     double equalTimeMs = 0.0;
     std::string referenceCache;
     std::string images;
+    int seeds = 1;
 };
 
 /// Adds --compare and the flags that go with it to `app`.

@@ -1,7 +1,8 @@
-// The rows of a convergence run as CSV (RFC 4180), one per engine x strategy x spp, written and flushed as
+// The rows of a convergence run as CSV (RFC 4180), one per engine x strategy x spp x seed, written and flushed as
 // each render finishes, so that an interrupted run keeps every row it measured. Read by plot_convergence.py.
 #pragma once
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -24,6 +25,7 @@ struct ConvergenceRow
     double relMse = 0.0; // mean (I - R)^2 / (R^2 + kRelMseEpsilon)
     double rmse = 0.0;
     double referenceRelMse = -1.0; // the reference's own relMSE, part of relMse (Image/Metrics.h); < 0: unknown
+    std::uint32_t seed = 0; // the render's --seed (--seeds N renders a row N times: seed, seed + 1, ...)
 };
 
 class ConvergenceCsv

@@ -59,17 +59,19 @@ void ImageFolder::addReference(const Image& image, const std::string& descriptio
     flush();
 }
 
-void ImageFolder::add(EngineKind engine, const std::string& name, const std::string& label, const Measurement& m)
+void ImageFolder::add(EngineKind engine, const std::string& name, const std::string& label, const Measurement& m,
+                      std::uint32_t seed)
 {
     if (!enabled())
         return;
-    const std::string file = fmt::format("{}-{}-{}spp.pfm", toString(engine), fileSafe(label), m.spp);
+    const std::string file = fmt::format("{}-{}-{}spp-seed{}.pfm", toString(engine), fileSafe(label), m.spp, seed);
     writePfm(m_dir / file, m.image);
     m_index["images"].push_back({{"path", file},
                                  {"engine", toString(engine)},
                                  {"strategy", name},
                                  {"label", label},
                                  {"spp", m.spp},
+                                 {"seed", seed},
                                  {"ms", m.ms()},
                                  {"wall_ms", m.wallMs},
                                  {"gpu_ms", m.gpuMs},

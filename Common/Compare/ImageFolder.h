@@ -28,11 +28,12 @@ public:
     /// file) and its own relMSE where known.
     void addReference(const Image& image, const std::string& description, int spp, std::optional<double> ownRelMse);
 
-    /// Writes `m.image` as <engine>-<label>-<spp>spp.pfm and indexes it with its time and error. The strategy
+    /// Writes `m.image` as <engine>-<label>-<spp>spp-seed<seed>.pfm and indexes it with its seed, time and error. The strategy
     /// is `name` (every setting) and `label` (what tells it apart in this comparison). The index, images.json
     /// (scene, size, the reference and every image in the order added), is written again (atomically) after
     /// each image, so Ctrl-C keeps an index of what was written.
-    void add(EngineKind engine, const std::string& name, const std::string& label, const Measurement& m);
+    void add(EngineKind engine, const std::string& name, const std::string& label, const Measurement& m,
+             std::uint32_t seed);
 
 private:
     void flush();

@@ -4,11 +4,13 @@ time and against spp on log-log axes, one line per engine x strategy, with the s
 Monte Carlo estimator follows drawn through each line's first point; and the efficiency 1 / (relMSE x s) of
 each line's largest spp as bars. Time is the GPU's own clock where the engine has one, else the host's. A
 dashed grey line marks the reference's own relMSE (its `reference_relmse` column, when known): part of every
-value, so lines that come near it flatten out there; the efficiency bars take it out.
+value, so lines that come near it flatten out there; the efficiency bars take it out. Rows of several seeds
+(`--seeds N`: the `seed` column) are drawn as their mean relMSE at their median time.
 
     plot_convergence.py ROWS.csv FIGURE.png
 """
 import csv
+import statistics
 import sys
 from collections import OrderedDict
 
@@ -31,10 +33,15 @@ def read_rows(path):
             if ms <= 0 or relmse <= 0:
                 continue  # not on a log axis
             key = f'{row["engine"]} {row["label"]}'
-            series.setdefault(key, []).append((int(row["spp"]), ms / 1000.0, relmse))
+            series.setdefault(key, OrderedDict()).setdefault(int(row["spp"]), []).append((ms / 1000.0, relmse))
             scenes[row["scene"]] = True
             devices[f'{row["engine"]}: {row["device"]}'] = True
-    return series, list(scenes), list(devices), sorted(floors)
+    # One point per spp: the seeds' mean relMSE at their median time.
+    points = OrderedDict()
+    for key, by_spp in series.items():
+        points[key] = [(spp, statistics.median(s for s, _ in runs), statistics.fmean(r for _, r in runs))
+                       for spp, runs in by_spp.items()]
+    return points, list(scenes), list(devices), sorted(floors)
 
 
 def main(csv_path, png_path):

@@ -70,7 +70,31 @@ for image in index["images"]:
     relmse = sum((v - r) ** 2 / (r * r + 0.01) for v, r in zip(values, reference)) / len(values)
     assert abs(relmse - image["relmse"]) <= 1e-4 * image["relmse"], (image, relmse)
     assert abs(rows[image["label"]] - image["relmse"]) <= 1e-6 * image["relmse"], (image, rows)
-    assert image["spp"] > 0 and image["ms"] > 0 and image["path"] == f"gpu-{image['label']}-{image['spp']}spp.pfm"
+    assert image["spp"] > 0 and image["ms"] > 0 and image["seed"] == 0, image
+    assert image["path"] == f"gpu-{image['label']}-{image['spp']}spp-seed0.pfm", image
+PY
+
+# --seeds: every row rendered with seeds 0, 1, 2 (a CSV row each), the table's relMSE their mean inside its
+# 95 % interval, which is the Student-t interval of the CSV's three values (t = 4.3027 at 2 degrees of freedom).
+"$app" "${common[@]}" --engines multi --estimators nee-mis --spp-list 4,8 --seeds 3 --csv "$work/s.csv" \
+    --table "$work/s.json" >"$work/out4.txt" 2>&1 || { cat "$work/out4.txt"; fail "--seeds"; }
+python3 - "$work/s.csv" "$work/s.json" <<'PY' || fail "--seeds figures"
+import csv, json, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+table = json.load(open(sys.argv[2]))
+assert len(rows) == 2 * 3, len(rows)
+for spp in (4, 8):
+    seeds = [r for r in rows if int(r["spp"]) == spp]
+    assert sorted(int(r["seed"]) for r in seeds) == [0, 1, 2], seeds
+    values = [float(r["relmse"]) for r in seeds]
+    mean = sum(values) / 3
+    sd = math.sqrt(sum((v - mean) ** 2 for v in values) / 2)
+    row = next(r for r in table["rows"] if r["spp"] == spp)["multi"]
+    assert row["seeds"] == 3 and abs(row["relmse"] - mean) <= 1e-9 * mean, (row, mean)
+    lo, hi = row["relmse_ci95"]
+    half = 4.3027 * sd / math.sqrt(3)
+    assert abs(lo - (mean - half)) <= 1e-4 * half and abs(hi - (mean + half)) <= 1e-4 * half, (lo, hi, mean, half)
+    assert len(set(values)) == 3, "the seeds rendered the same image"
 PY
 
 # Ctrl-C in the middle of a ladder: status 130, the rows finished before kept whole, no plot.
@@ -99,6 +123,8 @@ bad --compare --scene cornell-box-lights --estimators mixture,bogus --csv "$work
 bad --compare --scene cornell-box-lights --light-selections nearest
 bad --compare --scene cornell-box-lights --equal-time 100
 bad --compare --scene cornell-box-lights --equal-time -5 --output "$work/x.png"
+bad --compare --scene cornell-box-lights --seeds 0
+bad --compare --scene cornell-box-lights --seeds 101
 bad --scene cornell-box-lights --headless --csv "$work/x.csv"
 touch "$work/x-file"
 bad --compare --scene cornell-box-lights --equal-time 100 --images "$work/x-file"
