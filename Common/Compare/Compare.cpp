@@ -162,19 +162,21 @@ std::vector<std::size_t> measurementOrder(const std::vector<EngineUnderTest>& en
     return order;
 }
 
-/// One row of a comparison rendered with options.seeds independent seeds (the request's seed + k): every
-/// seed's measurement, the first whole (its image: the CPU/GPU comparison, the equal-time figure), the others'
-/// images dropped once measured.
+/// One row of a comparison: its render with each of options.seeds seeds (the request's seed + k), timed in
+/// each of options.rounds interleaved rounds. A seed renders the same image in every round (the same streams);
+/// the rounds measure its time again. The first seed's first round keeps its image (the CPU/GPU comparison, the
+/// equal-time figure); the others' images are dropped once measured.
 struct SeededRow
 {
-    std::vector<Measurement> seeds;
+    std::vector<std::vector<Measurement>> runs; // [seed][round]
 
-    const Measurement& first() const { return seeds.front(); }
+    const Measurement& first() const { return runs.front().front(); }
+    /// Round 0's value of each seed.
     std::vector<double> values(double (*of)(const Measurement&)) const
     {
         std::vector<double> out;
-        for (const Measurement& m : seeds)
-            out.push_back(of(m));
+        for (const auto& seed : runs)
+            out.push_back(of(seed.front()));
         return out;
     }
     static double median(std::vector<double> v)
@@ -183,39 +185,58 @@ struct SeededRow
         const std::size_t n = v.size();
         return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
     }
-    double ms() const { return median(values([](const Measurement& m) { return m.ms(); })); }
-    double wallMs() const { return median(values([](const Measurement& m) { return m.wallMs; })); }
-    double gpuMs() const { return median(values([](const Measurement& m) { return m.gpuMs; })); }
+    /// Every seed's and round's value.
+    std::vector<double> all(double (*of)(const Measurement&)) const
+    {
+        std::vector<double> out;
+        for (const auto& seed : runs)
+            for (const Measurement& m : seed)
+                out.push_back(of(m));
+        return out;
+    }
+    double ms() const { return median(all([](const Measurement& m) { return m.ms(); })); }
+    double wallMs() const { return median(all([](const Measurement& m) { return m.wallMs; })); }
+    double gpuMs() const { return median(all([](const Measurement& m) { return m.gpuMs; })); }
+    /// (max - min) / median of every time: the rounds' (and seeds') spread.
+    double spread() const
+    {
+        const std::vector<double> t = all([](const Measurement& m) { return m.ms(); });
+        return (*std::max_element(t.begin(), t.end()) - *std::min_element(t.begin(), t.end())) / median(t);
+    }
     Interval relMse() const { return meanInterval(values([](const Measurement& m) { return m.error.relMse; })); }
-    /// relMSE x seconds per seed: the inverse of the efficiency 1 / (relMSE s).
+    /// relMSE x seconds per seed, at the median of its rounds' times: the inverse of the efficiency 1 / (relMSE s).
     std::vector<double> relMseSeconds() const
     {
-        return values([](const Measurement& m) { return m.error.relMse * m.ms() * 1e-3; });
+        std::vector<double> out;
+        for (const auto& seed : runs)
+        {
+            std::vector<double> t;
+            for (const Measurement& m : seed)
+                t.push_back(m.ms());
+            out.push_back(seed.front().error.relMse * median(t) * 1e-3);
+        }
+        return out;
+    }
+    /// Files `m`, the render of seed index k in its round, dropping its image unless it is the first's.
+    void add(std::size_t k, Measurement m)
+    {
+        if (runs.size() <= k)
+            runs.resize(k + 1);
+        if (k > 0 || !runs[k].empty())
+            m.image = Image();
+        runs[k].push_back(std::move(m));
     }
 };
 
-/// Renders the seeds after `first` (rendered from `request`, whose seed is the first's) at its spp, calling
-/// `done` on each measurement, the first's included, before an image is dropped. nullopt when Ctrl-C stopped it.
-std::optional<SeededRow> completeSeeds(RenderEngine& engine, Measurement first, RenderRequest request, int seeds,
-                                       const Image& reference,
-                                       const std::function<void(const Measurement&, std::uint32_t seed)>& done)
+/// Untimed renders of every strategy the comparison measures, before any timing: warmUp's half second of the
+/// first (the GPU's clocks), then one render of each other, so that no row pays a pipeline's compilation or a
+/// code path's first use (on an H200, 115 ms charged to whichever row came first: issue 39).
+void warmUpStrategies(RenderEngine& engine, const RenderRequest& base, const std::vector<Strategy>& strategies)
 {
-    SeededRow row;
-    request.settings.spp = first.spp;
-    done(first, request.settings.seed);
-    row.seeds.push_back(std::move(first));
-    for (int k = 1; k < seeds; ++k)
-    {
-        RenderRequest next = request;
-        next.settings.seed = request.settings.seed + std::uint32_t(k);
-        Measurement m = measure(engine, next, &reference);
-        if (m.cancelled)
-            return std::nullopt;
-        done(m, next.settings.seed);
-        m.image = Image();
-        row.seeds.push_back(std::move(m));
-    }
-    return row;
+    warmUp(engine, strategies.front().request(base, 4));
+    for (std::size_t s = 1; s < strategies.size(); ++s)
+        if (measure(engine, strategies[s].request(base, 1), nullptr).cancelled)
+            return;
 }
 
 /// " ±4.1e-05" (half the 95 % interval) when there are several seeds, else nothing.
@@ -234,38 +255,39 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
     const std::size_t strategyCount = options.strategies.size();
     // runs[engine][strategy][spp index]
     std::vector<std::vector<std::vector<SeededRow>>> runs(engines.size());
-    RunLog log(engines.size() * strategyCount * options.spps.size() * std::size_t(options.seeds));
+    RunLog log(engines.size() * strategyCount * options.spps.size() * std::size_t(options.seeds) *
+               std::size_t(options.rounds));
     // Each engine runs all its rows back to back after its warm-up: row by row interleaving with 16-thread CPU
-    // renders cost an H100 2-3x (docs/notebook/PERFORMANCE.md).
+    // renders cost an H100 2-3x (docs/notebook/PERFORMANCE.md). Within an engine the rounds interleave the rows:
+    // every row once, then every row again, so that a drift of the clocks spreads over all of them.
     for (const std::size_t e : measurementOrder(engines))
     {
         RenderEngine& engine = *engines[e].engine;
-        warmUp(engine, options.strategies.front().request(base, 4));
-        runs[e].resize(strategyCount);
-        for (std::size_t s = 0; s < strategyCount; ++s)
-            for (const int spp : options.spps)
-            {
-                const RenderRequest request = options.strategies[s].request(base, spp);
-                Measurement m = measure(engine, request, &reference.image);
-                if (m.cancelled)
-                    return false;
-                std::optional<SeededRow> row = completeSeeds(
-                    engine, std::move(m), request, options.seeds, reference.image,
-                    [&](const Measurement& r, std::uint32_t seed) {
-                        log.done(fmt::format("{} {}, {} spp, seed {}: {:.1f} ms, relMSE {:.3g}",
-                                             toString(engines[e].kind), labels[s], r.spp, seed, r.ms(),
-                                             r.error.relMse));
+        warmUpStrategies(engine, base, options.strategies);
+        runs[e].assign(strategyCount, std::vector<SeededRow>(options.spps.size()));
+        for (int round = 0; round < options.rounds; ++round)
+            for (std::size_t s = 0; s < strategyCount; ++s)
+                for (std::size_t row = 0; row < options.spps.size(); ++row)
+                    for (int k = 0; k < options.seeds; ++k)
+                    {
+                        RenderRequest request = options.strategies[s].request(base, options.spps[row]);
+                        request.settings.seed += std::uint32_t(k);
+                        Measurement m = measure(engine, request, &reference.image);
+                        if (m.cancelled)
+                            return false;
+                        const std::uint32_t seed = request.settings.seed;
+                        log.done(fmt::format("{} {}, {} spp, seed {}, round {}: {:.1f} ms, relMSE {:.3g}",
+                                             toString(engines[e].kind), labels[s], m.spp, seed, round, m.ms(),
+                                             m.error.relMse));
                         if (csv)
                             csv->append({scene.id, toString(engines[e].kind), engine.deviceName(),
-                                         options.strategies[s].name(), labels[s], r.spp, r.wallMs, r.gpuMs,
-                                         r.mpathsPerSecond, r.error.mse, r.error.relMse, r.error.rmse,
-                                         reference.ownRelMse.value_or(-1.0), seed});
-                        images.add(engines[e].kind, options.strategies[s].name(), labels[s], r, seed);
-                    });
-                if (!row)
-                    return false;
-                runs[e][s].push_back(std::move(*row));
-            }
+                                         options.strategies[s].name(), labels[s], m.spp, m.wallMs, m.gpuMs,
+                                         m.mpathsPerSecond, m.error.mse, m.error.relMse, m.error.rmse,
+                                         reference.ownRelMse.value_or(-1.0), seed, round});
+                        if (round == 0)
+                            images.add(engines[e].kind, options.strategies[s].name(), labels[s], m, seed);
+                        runs[e][s][row].add(std::size_t(k), std::move(m));
+                    }
     }
 
     const RenderSettings& b = base.settings;
@@ -291,8 +313,9 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
                     describeStrategy(settings).c_str(), againstReference(reference).c_str());
         std::string header = fmt::format("{:>6}", "spp");
         for (const EngineUnderTest& e : engines)
-            header += fmt::format(" | {:>9} {:>9}{}", fmt::format("{} ms", toString(e.kind)), "relMSE",
-                                  options.seeds > 1 ? fmt::format(" {:<9}", "±95%") : std::string());
+            header += fmt::format(" | {:>9} {:>9}{}{}", fmt::format("{} ms", toString(e.kind)), "relMSE",
+                                  options.seeds > 1 ? fmt::format(" {:<9}", "±95%") : std::string(),
+                                  options.rounds > 1 ? fmt::format(" {:>6}", "range%") : std::string());
         if (ratio)
             header += fmt::format(" | {:>10} | {:>11}", "CPU/GPU", "relMSE C-G");
         std::printf("%s\n%s\n", header.c_str(), std::string(header.size(), '-').c_str());
@@ -310,6 +333,8 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
                 const Measurement& m = seeded.first();
                 const Interval relMse = seeded.relMse();
                 line += fmt::format(" | {:>9.1f} {:>9.2e}{}", seeded.ms(), relMse.mean, plusMinus(relMse));
+                if (options.rounds > 1)
+                    line += fmt::format(" {:>6.1f}", 100.0 * seeded.spread());
                 nlohmann::json& j = jrow[toString(engines[e].kind)];
                 j = {{"render_ms", seeded.wallMs()},
                      {"gpu_ms", seeded.gpuMs()},
@@ -317,12 +342,24 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
                      {"mse", m.error.mse},
                      {"relmse", relMse.mean},
                      {"rmse", m.error.rmse}};
+                if (options.rounds > 1)
+                {
+                    j["rounds"] = options.rounds;
+                    j["ms_spread"] = seeded.spread();
+                    j["ms_rounds"] = nlohmann::json::array();
+                    for (const auto& seedRuns : seeded.runs)
+                    {
+                        nlohmann::json times = nlohmann::json::array();
+                        for (const Measurement& x : seedRuns)
+                            times.push_back(x.ms());
+                        j["ms_rounds"].push_back(times);
+                    }
+                }
                 if (options.seeds > 1)
                 {
                     j["seeds"] = options.seeds;
                     j["relmse_ci95"] = {relMse.lo, relMse.hi};
                     j["relmse_seeds"] = seeded.values([](const Measurement& x) { return x.error.relMse; });
-                    j["ms_seeds"] = seeded.values([](const Measurement& x) { return x.ms(); });
                     j["mse"] = meanInterval(seeded.values([](const Measurement& x) { return x.error.mse; })).mean;
                     j["rmse"] = meanInterval(seeded.values([](const Measurement& x) { return x.error.rmse; })).mean;
                 }
@@ -363,39 +400,44 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
 {
     const std::vector<std::string> labels = distinctLabels(options.strategies);
     std::vector<std::vector<EqualTimeTile>> tilesOf(engines.size());
-    RunLog log(engines.size() * options.strategies.size() * std::size_t(options.seeds));
+    RunLog log(engines.size() * options.strategies.size() * std::size_t(options.seeds) *
+               std::size_t(options.rounds));
     std::string devices;
     for (const EngineUnderTest& e : engines)
         devices += (devices.empty() ? "" : ", ") + e.engine->deviceName();
-    // seeded[engine][strategy]: the first seed's render is the tile.
+    // seeded[engine][strategy]: the first seed's first render is the tile.
     std::vector<std::vector<SeededRow>> seeded(engines.size());
     for (const std::size_t index : measurementOrder(engines))
     {
         EngineUnderTest& e = engines[index];
-        warmUp(*e.engine, options.strategies.front().request(base, 4));
-        for (std::size_t s = 0; s < options.strategies.size(); ++s)
-        {
-            Measurement m =
-                renderForBudget(*e.engine, base, options.strategies[s], options.equalTimeMs, reference.image);
-            if (m.cancelled)
-                return false;
-            // The other seeds at the spp the budget gave the first.
-            std::optional<SeededRow> row = completeSeeds(
-                *e.engine, std::move(m), options.strategies[s].request(base, 1), options.seeds, reference.image,
-                [&](const Measurement& r, std::uint32_t seed) {
-                    log.done(fmt::format("{} {}, seed {}: {} spp in {:.1f} ms, relMSE {:.3g}", toString(e.kind),
-                                         labels[s], seed, r.spp, r.ms(), r.error.relMse));
+        warmUpStrategies(*e.engine, base, options.strategies);
+        seeded[index].resize(options.strategies.size());
+        std::vector<int> spps(options.strategies.size(), 0); // what the budget gave each strategy's first seed
+        for (int round = 0; round < options.rounds; ++round)
+            for (std::size_t s = 0; s < options.strategies.size(); ++s)
+                for (int k = 0; k < options.seeds; ++k)
+                {
+                    RenderRequest request = options.strategies[s].request(base, std::max(spps[s], 1));
+                    request.settings.seed += std::uint32_t(k);
+                    Measurement m = spps[s] == 0 ? renderForBudget(*e.engine, base, options.strategies[s],
+                                                                   options.equalTimeMs, reference.image)
+                                                 : measure(*e.engine, request, &reference.image);
+                    if (m.cancelled)
+                        return false;
+                    spps[s] = m.spp;
+                    const std::uint32_t seed = request.settings.seed;
+                    log.done(fmt::format("{} {}, seed {}, round {}: {} spp in {:.1f} ms, relMSE {:.3g}",
+                                         toString(e.kind), labels[s], seed, round, m.spp, m.ms(), m.error.relMse));
                     if (csv)
                         csv->append({scene.id, toString(e.kind), e.engine->deviceName(), options.strategies[s].name(),
-                                     labels[s], r.spp, r.wallMs, r.gpuMs, r.mpathsPerSecond, r.error.mse,
-                                     r.error.relMse, r.error.rmse, reference.ownRelMse.value_or(-1.0), seed});
-                    images.add(e.kind, options.strategies[s].name(), labels[s], r, seed);
-                });
-            if (!row)
-                return false;
-            tilesOf[index].push_back({e.kind, labels[s], options.strategies[s], row->first()});
-            seeded[index].push_back(std::move(*row));
-        }
+                                     labels[s], m.spp, m.wallMs, m.gpuMs, m.mpathsPerSecond, m.error.mse,
+                                     m.error.relMse, m.error.rmse, reference.ownRelMse.value_or(-1.0), seed, round});
+                    if (round == 0)
+                        images.add(e.kind, options.strategies[s].name(), labels[s], m, seed);
+                    seeded[index][s].add(std::size_t(k), std::move(m));
+                }
+        for (std::size_t s = 0; s < options.strategies.size(); ++s)
+            tilesOf[index].push_back({e.kind, labels[s], options.strategies[s], seeded[index][s].first()});
     }
     std::vector<EqualTimeTile> tiles;
     std::vector<const SeededRow*> rows; // in the tiles' order

@@ -35,6 +35,7 @@ struct CompareOptions
     std::string grid; // the equal-time figure (PNG)
     std::filesystem::path images; // every render's PFM and an index (ImageFolder.h), when not empty
     int seeds = 1; // each row rendered with seeds seed, seed + 1, ...: means with 95 % intervals (Confidence.h)
+    int rounds = 3; // every row timed again in this many interleaved rounds: the median time and its spread
 };
 
 /// Parses "10,50,100" (positive integers). Throws UsageError.

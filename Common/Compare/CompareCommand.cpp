@@ -73,6 +73,13 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
                    "different); the CSV and --images keep every seed's render")
         ->check(CLI::Range(1, 100))
         ->needs(compareFlag);
+    app.add_option("--rounds", flags.rounds,
+                   "With --compare: time every row this many times, 1 to 20, in interleaved rounds (every row, then "
+                   "every row again), after an untimed render of every strategy; the tables report the median time "
+                   "and its spread, the CSV and JSON every round")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 20))
+        ->needs(compareFlag);
     app.add_option("--reference-cache", flags.referenceCache,
                    "With --compare: folder of rendered references, re-used when scene, settings, spp, seed and engine "
                    "match ('off': render the reference every time)")
@@ -96,6 +103,7 @@ int runCompare(const CompareFlags& flags, const CommonOptions& options, const En
     c.grid = options.output;
     c.images = flags.images;
     c.seeds = flags.seeds;
+    c.rounds = flags.rounds;
     if (flags.referenceCache != "off")
         c.referenceCache = flags.referenceCache;
     return runComparison(job.scene, job.request, c,

@@ -29,6 +29,7 @@ struct CompareFlags
     std::string referenceCache;
     std::string images;
     int seeds = 1;
+    int rounds = 3;
 };
 
 /// Adds --compare and the flags that go with it to `app`.

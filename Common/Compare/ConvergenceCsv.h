@@ -1,4 +1,4 @@
-// The rows of a convergence run as CSV (RFC 4180), one per engine x strategy x spp x seed, written and flushed as
+// The rows of a convergence run as CSV (RFC 4180), one per engine x strategy x spp x seed x round, written and flushed as
 // each render finishes, so that an interrupted run keeps every row it measured. Read by plot_convergence.py.
 #pragma once
 
@@ -26,6 +26,7 @@ struct ConvergenceRow
     double rmse = 0.0;
     double referenceRelMse = -1.0; // the reference's own relMSE, part of relMse (Image/Metrics.h); < 0: unknown
     std::uint32_t seed = 0; // the render's --seed (--seeds N renders a row N times: seed, seed + 1, ...)
+    int round = 0; // --rounds R times every row again in R interleaved rounds: 0 .. R - 1
 };
 
 class ConvergenceCsv

@@ -17,8 +17,17 @@ file "$work/c.png" | grep -q "PNG image data" || fail "no plot"
 grep -q "rendering 2 x 512 spp" "$work/err1.txt" || fail "the first run did not render its reference in two halves"
 python3 - "$work/c.csv" <<'PY' || fail "CSV rows"
 import csv, sys
-rows = list(csv.DictReader(open(sys.argv[1])))
-assert len(rows) == 2 * 2 * 3, len(rows)
+every = list(csv.DictReader(open(sys.argv[1])))
+# --rounds' default 3: every row timed in three interleaved rounds, each the same image (the same seed's
+# streams) on either engine, so the same relMSE.
+assert len(every) == 2 * 2 * 3 * 3, len(every)
+by_row = {}
+for r in every:
+    by_row.setdefault((r["engine"], r["label"], r["spp"]), []).append(r)
+for key, rounds in by_row.items():
+    assert sorted(int(r["round"]) for r in rounds) == [0, 1, 2], (key, rounds)
+    assert len({r["relmse"] for r in rounds}) == 1, ("a round rendered another image", key, rounds)
+rows = [r for r in every if r["round"] == "0"]
 lines = {}
 floors = {float(r["reference_relmse"]) for r in rows}
 assert len(floors) == 1, floors
@@ -47,7 +56,7 @@ grep -q "from the cache" "$work/err2.txt" || { cat "$work/err2.txt"; fail "the r
 "$app" "${common[@]}" --engines gpu --estimators mixture,nee-mis --equal-time 300 --output "$work/grid.png" \
     --csv "$work/e.csv" --images "$work/images/new" >"$work/out3.txt" 2>&1 || { cat "$work/out3.txt"; fail "equal time"; }
 file "$work/grid.png" | grep -q "PNG image data" || fail "no equal-time figure"
-[ "$(wc -l <"$work/e.csv")" -eq 3 ] || fail "equal-time CSV rows"
+[ "$(wc -l <"$work/e.csv")" -eq 7 ] || fail "equal-time CSV rows (2 strategies x 3 rounds)"
 # --images: the reference and each render as PFMs, indexed with the relMSE the CSV printed, which the files
 # themselves give again (Common/Image/Metrics.h's formula, recomputed here).
 python3 - "$work/images/new" "$work/e.csv" <<'PY' || fail "--images"
@@ -76,7 +85,7 @@ PY
 
 # --seeds: every row rendered with seeds 0, 1, 2 (a CSV row each), the table's relMSE their mean inside its
 # 95 % interval, which is the Student-t interval of the CSV's three values (t = 4.3027 at 2 degrees of freedom).
-"$app" "${common[@]}" --engines multi --estimators nee-mis --spp-list 4,8 --seeds 3 --csv "$work/s.csv" \
+"$app" "${common[@]}" --engines multi --estimators nee-mis --spp-list 4,8 --seeds 3 --rounds 1 --csv "$work/s.csv" \
     --table "$work/s.json" >"$work/out4.txt" 2>&1 || { cat "$work/out4.txt"; fail "--seeds"; }
 python3 - "$work/s.csv" "$work/s.json" <<'PY' || fail "--seeds figures"
 import csv, json, math, sys
@@ -125,6 +134,7 @@ bad --compare --scene cornell-box-lights --equal-time 100
 bad --compare --scene cornell-box-lights --equal-time -5 --output "$work/x.png"
 bad --compare --scene cornell-box-lights --seeds 0
 bad --compare --scene cornell-box-lights --seeds 101
+bad --compare --scene cornell-box-lights --rounds 0
 bad --scene cornell-box-lights --headless --csv "$work/x.csv"
 touch "$work/x-file"
 bad --compare --scene cornell-box-lights --equal-time 100 --images "$work/x-file"
