@@ -82,6 +82,13 @@ std::optional<Reference> obtainReference(const Scene& scene, const RenderRequest
             throw UsageError(fmt::format("--reference {} is {}x{}; the comparison renders {}x{}", options.referencePath,
                                          reference.width(), reference.height(), base.settings.width,
                                          base.settings.height()));
+        std::size_t notFinite = 0;
+        for (std::size_t i = 0; i < reference.pixelCount(); ++i)
+            notFinite += isFinite(reference.data()[i]) ? 0 : 1;
+        if (notFinite > 0)
+            throw UsageError(fmt::format("--reference {}: {} of its pixels are not finite (NaN or Inf): no relMSE can "
+                                         "be measured against it",
+                                         options.referencePath, notFinite));
         spdlog::info("reference: {}", options.referencePath);
         return Reference{std::move(reference), std::nullopt, options.referencePath, 0};
     }
@@ -519,6 +526,8 @@ std::vector<EngineKind> parseEngineList(const std::string& text)
         const auto e = parseName<EngineKind>(part);
         if (!e)
             throw UsageError(fmt::format("--engines takes single, multi and gpu (got '{}')", part));
+        if (std::find(engines.begin(), engines.end(), *e) != engines.end())
+            throw UsageError(fmt::format("--engines lists {} twice", toString(*e)));
         engines.push_back(*e);
     }
     if (engines.empty())
@@ -536,6 +545,9 @@ void checkComparison(const CompareOptions& options)
     checkOutputPath(options.grid, "--output", {".png"});
     if (!options.plot.empty() && options.csv.empty())
         throw UsageError("--plot draws the rows of --csv: give --csv FILE.csv too");
+    if (!options.grid.empty() && !(options.equalTimeMs > 0.0))
+        throw UsageError("--output draws --equal-time's figure: give --equal-time MS too (the ladder writes --csv, "
+                         "--plot and --table)");
     if (options.equalTimeMs > 0.0 && options.grid.empty() && options.images.empty())
         throw UsageError("--equal-time writes its figure to --output FILE.png or its images to --images DIR: give "
                          "either");

@@ -1,12 +1,16 @@
 #include "Compare/CompareCommand.h"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 
 #include <spdlog/fmt/fmt.h>
 
 #include "Cli/HeadlessRun.h"
+#include "Cli/ValueParsing.h"
 #include "Compare/Compare.h"
 #include "Compare/ReferenceCache.h"
+#include "Error.h"
 #include "Render/EngineRegistry.h"
 #include "Render/SettingsTable.h"
 
@@ -57,7 +61,14 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
                    "With --compare: render every engine x strategy for this many milliseconds instead of the "
                    "--spp-list ladder, and write the images with their false-colour error images as one figure to "
                    "--output FILE.png, or the images alone to --images DIR")
-        ->check(CLI::PositiveNumber)
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                const std::optional<float> value = parseReal(text);
+                return value && std::isfinite(*value) && *value > 0.0
+                           ? std::string()
+                           : fmt::format("must be a positive number of milliseconds (got '{}')", text);
+            },
+            "MS"))
         ->needs(compareFlag);
     app.add_option("--images", flags.images,
                    "With --compare: write every render's linear image (PFM) and the reference to this folder (made "
@@ -93,7 +104,16 @@ int runCompare(const CompareFlags& flags, const CommonOptions& options, const En
     CompareOptions c;
     c.spps = parseSppList(flags.sppList);
     c.engines = flags.engines.empty() ? engines::available() : parseEngineList(flags.engines);
-    c.referenceSpp = flags.referenceSpp > 0 ? flags.referenceSpp : 4 * *std::max_element(c.spps.begin(), c.spps.end());
+    // The reference renders in two halves of referenceSpp / 2 each: each half is a render of at most kMaxSpp.
+    const long long largest = *std::max_element(c.spps.begin(), c.spps.end());
+    const long long referenceSpp = flags.referenceSpp > 0 ? flags.referenceSpp : 4 * largest;
+    if (referenceSpp > 2LL * kMaxSpp)
+        throw UsageError(fmt::format("the reference's {} spp ({}) is more than two renders of at most {} spp: give "
+                                     "--reference-spp up to {} or a smaller --spp-list",
+                                     referenceSpp,
+                                     flags.referenceSpp > 0 ? "--reference-spp" : "4x the largest of --spp-list",
+                                     kMaxSpp, 2LL * kMaxSpp));
+    c.referenceSpp = static_cast<int>(referenceSpp);
     c.json = flags.table;
     c.referencePath = flags.referencePath;
     c.strategies = strategyGrid(flags.strategies, job.request.settings);

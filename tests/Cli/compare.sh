@@ -135,6 +135,16 @@ bad --compare --scene cornell-box-lights --equal-time -5 --output "$work/x.png"
 bad --compare --scene cornell-box-lights --seeds 0
 bad --compare --scene cornell-box-lights --seeds 101
 bad --compare --scene cornell-box-lights --rounds 0
+bad --compare --scene cornell-box-lights --equal-time nan --output "$work/x.png"
+bad --compare --scene cornell-box-lights --spp-list 4 --output "$work/x.png" # --output is the equal-time figure
+bad --compare --scene cornell-box-lights --engines multi,multi
+bad --compare --scene cornell-box-lights --spp-list 16777216 # a reference of 4 x 16777216 spp
+python3 -c '
+import struct, sys
+values = [0.5] * (16 * 16 * 3)
+values[100] = float("nan")
+sys.stdout.buffer.write(b"PF\n16 16\n-1.0\n" + struct.pack("<%df" % len(values), *values))' >"$work/nan.pfm"
+bad --compare --scene cornell-box-lights --width 16 --spp-list 4 --reference "$work/nan.pfm"
 bad --scene cornell-box-lights --headless --csv "$work/x.csv"
 touch "$work/x-file"
 bad --compare --scene cornell-box-lights --equal-time 100 --images "$work/x-file"
