@@ -62,6 +62,12 @@ SceneRef CommonOptions::sceneRef() const
     return ref;
 }
 
+CLI::Validator namesAFile()
+{
+    return CLI::Validator([](std::string& path) { return path.empty() ? std::string("names no file") : std::string(); },
+                          "FILE");
+}
+
 void addCommonOptions(CLI::App& app, CommonOptions& o)
 {
     app.add_flag("--headless", o.headless, "Render without a window, write the files asked for and exit");
@@ -103,9 +109,9 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
         ->check(CLI::Range(kMinRoughnessScale, kMaxRoughnessScale))
         ->type_name("X");
     app.add_option("--pdf", o.pdf, "The books' name for two estimators: on = --estimator mixture, off = bsdf");
-    app.add_option("--output", o.output, "Write the tone-mapped sRGB image here (.png)");
-    app.add_option("--hdr", o.hdr, "Write the linear radiance image here (.pfm)");
-    app.add_option("--stats", o.stats, "Write render statistics as JSON here");
+    app.add_option("--output", o.output, "Write the tone-mapped sRGB image here (.png)")->check(namesAFile());
+    app.add_option("--hdr", o.hdr, "Write the linear radiance image here (.pfm)")->check(namesAFile());
+    app.add_option("--stats", o.stats, "Write render statistics as JSON here")->check(namesAFile());
     app.add_option("--count", o.count,
                    "Object count for scenes that scale (white-spheres: spheres, default 20000; many-lights: lights, "
                    "default 1000), at least 1; refused up front when the scene would not fit in the memory "

@@ -43,6 +43,10 @@ struct CommonOptions
     SceneRef sceneRef() const;
 };
 
+/// CLI11's check of a flag that names a file to write: an empty value (`--output ""`) is refused, not read as
+/// "not given".
+CLI::Validator namesAFile();
+
 /// Registers the shared flags on `app` with help text for each: the render settings' from the settings table.
 void addCommonOptions(CLI::App& app, CommonOptions& options);
 

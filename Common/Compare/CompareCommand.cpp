@@ -34,7 +34,7 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
                    "With --compare: a linear PFM of the same size (e.g. a long --hdr render) to measure against "
                    "instead of rendering a reference")
         ->check(CLI::ExistingFile);
-    app.add_option("--table", flags.table, "With --compare: write every figure as JSON here");
+    app.add_option("--table", flags.table, "With --compare: write every figure as JSON here")->check(namesAFile());
     for (const Setting* setting : strategySettings())
     {
         const std::string flag(setting->compareFlag);
@@ -52,10 +52,12 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
                    "With --compare: one CSV row per engine x strategy x spp (scene, engine, device, strategy, label, "
                    "spp, wall ms, GPU ms, Mpaths/s, MSE, relMSE, RMSE), each written as its render ends (Ctrl-C keeps "
                    "them)")
+        ->check(namesAFile())
         ->needs(compareFlag);
     app.add_option("--plot", flags.plot,
                    "With --compare and --csv: a PNG of relMSE against time and against spp (log-log, slope -1 "
                    "drawn) and of the efficiency 1/(relMSE s), drawn by matplotlib (python3-matplotlib)")
+        ->check(namesAFile())
         ->needs(compareFlag);
     app.add_option("--equal-time", flags.equalTimeMs,
                    "With --compare: render every engine x strategy for this many milliseconds instead of the "
@@ -75,6 +77,7 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
                    "when missing), with images.json listing each one's engine, strategy, spp, time and relMSE, for "
                    "analyses of one's own (the error over regions: tests/Bench/veach_regions.py)")
         ->type_name("DIR")
+        ->check(namesAFile())
         ->needs(compareFlag);
     app.add_option("--seeds", flags.seeds,
                    "With --compare: render every row (engine x strategy x spp, or each strategy of --equal-time) with "

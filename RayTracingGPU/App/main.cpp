@@ -55,10 +55,12 @@ void addWindowOptions(CLI::App& app, WindowFlags& w)
                                   "--screenshot, tests and demos run without a person");
     frames->check(CLI::PositiveNumber);
     app.add_option("--screenshot", w.screenshot, "Window: save what the window shows in the last frame (.png)")
+        ->check(rt::namesAFile())
         ->needs(frames);
     app.add_option("--state-json", w.stateJson,
                    "Window: at exit, write the window's and the image's sizes, where the last frame drew the panel "
-                   "and the image, and the panel's message as JSON here");
+                   "and the image, and the panel's message as JSON here")
+        ->check(rt::namesAFile());
     app.add_option("--window-size", w.windowSize,
                    fmt::format("Window: its size WxH in pixels, each side in [{}, {}] (default: the panel and the "
                                "image side by side at one pixel per image pixel, cut to the screen)",

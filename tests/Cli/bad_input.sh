@@ -77,6 +77,8 @@ expect_error "aspect overflowing a float" "got 1e308" --aspect 1e308
 expect_error "aspect not a number" "must be a number" --aspect 1.5x
 expect_error "negative width" "width" --width -5
 expect_error "unknown flag" "--frobnicate" --frobnicate
+expect_error "an empty output name" "--output: names no file" --output ""
+expect_error "an empty stats name" "--stats: names no file" --stats ""
 expect_error "bad sampling" "sampling" --sampling halton
 expect_error "bad pdf value" "--pdf" --pdf maybe
 expect_error "bad estimator" "--estimator" --estimator path

@@ -37,11 +37,13 @@ void addGuiOptions(CLI::App& app, GuiOptions& o)
                    "Window: once the launch render and --actions have finished, draw N more frames, save "
                    "--screenshot and exit (status 1 if a render or an action failed)")
         ->check(CLI::PositiveNumber);
-    app.add_option("--screenshot", o.screenshot, "Window, with --frames: save what the window shows here (.png)");
+    app.add_option("--screenshot", o.screenshot, "Window, with --frames: save what the window shows here (.png)")
+        ->check(namesAFile());
     app.add_option("--actions", o.actions, "Window: " + actionHelp());
     app.add_option("--state-json", o.stateJson,
                    "Window: at exit, write the panel's settings, those of the image on screen, the timings table and "
-                   "the GPU engine's status as JSON here");
+                   "the GPU engine's status as JSON here")
+        ->check(namesAFile());
     app.add_option("--window-size", o.windowSize,
                    fmt::format("Window: its size WxH in screen pixels, each side in [{}, {}] (default: the panel, the "
                                "image at one pixel per pixel and the timings, at least {}x{}, cut to the screen)",
