@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <limits>
 
 #include <spdlog/fmt/fmt.h>
@@ -70,6 +71,14 @@ CLI::Validator namesAFile()
 
 void addCommonOptions(CLI::App& app, CommonOptions& o)
 {
+    // The program's name is known once CLI11 has read argv[0].
+    app.set_version_flag(
+        "--version",
+        [&app] {
+            return fmt::format("{} (light-sampling lab) {}", std::filesystem::path(app.get_name()).filename().string(),
+                               RT_VERSION);
+        },
+        "Print the program's name and version and exit");
     app.add_flag("--headless", o.headless, "Render without a window, write the files asked for and exit");
     app.add_flag("--list-scenes", o.listScenes, "Print the scene ids with their titles and exit");
     app.add_option("--scene", o.scene,

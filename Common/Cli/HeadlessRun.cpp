@@ -199,6 +199,10 @@ int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>
     {
         return app.exit(e);
     }
+    catch (const CLI::CallForVersion& e)
+    {
+        return app.exit(e);
+    }
     catch (const CLI::ParseError& e)
     {
         std::fprintf(stderr, "error: %s (see --help)\n", e.what());

@@ -31,8 +31,16 @@ TEST(GpuApp, HelpExplainsEveryFlag)
     EXPECT_EQ(r.status, 0) << r.output;
     for (const char* flag : {"--headless", "--list-scenes", "--scene", "--spp", "--depth", "--width", "--aspect",
                              "--sampling", "--pdf", "--unidirectional-light", "--seed", "--output", "--hdr", "--stats",
-                             "--count", "--mesh", "--quiet", "--device", "--validation"})
+                             "--count", "--mesh", "--quiet", "--device", "--validation", "--version"})
         EXPECT_NE(r.output.find(flag), std::string::npos) << flag;
+}
+
+TEST(GpuApp, VersionPrintsTheProjectsVersionAndExits)
+{
+    const AppRun r = runApp("--version");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find(RT_PROJECT_VERSION), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("rendering"), std::string::npos) << "it renders nothing";
 }
 
 TEST(GpuApp, ListsScenes)
