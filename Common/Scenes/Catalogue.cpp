@@ -1,6 +1,7 @@
 #include "Scenes/Catalogue.h"
 
 #include <algorithm>
+#include <vector>
 
 #include <spdlog/fmt/fmt.h>
 
@@ -79,6 +80,26 @@ bool parseFresnelOption(std::string_view text, std::optional<shader::FresnelMode
 
 namespace
 {
+/// Levenshtein distance: the edits (insert, delete, replace one character) from a to b.
+std::size_t editDistance(const std::string& a, const std::string& b)
+{
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+        row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i)
+    {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j)
+        {
+            const std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
 Scene withOptions(Scene scene, const SceneOptions& options)
 {
     transformScene(scene, options.transform);
@@ -107,7 +128,20 @@ Scene makeScene(const std::string& id, const SceneOptions& options)
         std::string known;
         for (const SceneInfo& s : sceneCatalogue())
             known += (known.empty() ? "" : ", ") + s.id;
-        throw SceneError(fmt::format("unknown scene '{}' (known: {}; or a scene file: .json, .gltf, .glb)", id, known));
+        // A typo of a catalogue id (at most a third of its characters edited) is named first.
+        const SceneInfo* nearest = nullptr;
+        std::size_t best = 0;
+        for (const SceneInfo& s : sceneCatalogue())
+            if (const std::size_t d = editDistance(id, s.id); !nearest || d < best)
+            {
+                nearest = &s;
+                best = d;
+            }
+        const std::string suggestion = nearest && 3 * best <= nearest->id.size()
+                                           ? fmt::format(": did you mean '{}'?", nearest->id)
+                                           : std::string();
+        throw SceneError(fmt::format("unknown scene '{}'{} (known: {}; or a scene file: .json, .gltf, .glb)", id,
+                                     suggestion, known));
     }
     return withOptions(info->build(options), options);
 }

@@ -365,3 +365,26 @@ TEST(SceneCatalogue, RoughnessScaleMultipliesEveryMicrofacetAlphaUpToOne)
     matte.validate();
 }
 } // namespace rt
+
+namespace rt
+{
+TEST(SceneCatalogue, AnUnknownIdNamesTheNearestOneWhenItIsATypo)
+{
+    const auto message = [](const std::string& id) {
+        try
+        {
+            makeScene(id);
+        }
+        catch (const SceneError& e)
+        {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_NE(message("cornel-box-lights").find("did you mean 'cornell-box-lights'?"), std::string::npos);
+    EXPECT_NE(message("veach_mis").find("did you mean 'veach-mis'?"), std::string::npos);
+    const std::string far = message("nonsense");
+    EXPECT_NE(far.find("unknown scene 'nonsense' (known: "), std::string::npos) << far;
+    EXPECT_EQ(far.find("did you mean"), std::string::npos) << far;
+}
+} // namespace rt
