@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cstdio>
 #include <functional>
-#include <iterator>
 #include <limits>
 #include <memory>
 #include <numeric>
@@ -406,7 +405,6 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
                   ImageFolder& images)
 {
     const std::vector<std::string> labels = distinctLabels(options.strategies);
-    std::vector<std::vector<EqualTimeTile>> tilesOf(engines.size());
     RunLog log(engines.size() * options.strategies.size() * std::size_t(options.seeds) *
                std::size_t(options.rounds));
     std::string devices;
@@ -443,17 +441,16 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
                         images.add(e.kind, options.strategies[s].name(), labels[s], m, seed);
                     seeded[index][s].add(std::size_t(k), std::move(m));
                 }
-        for (std::size_t s = 0; s < options.strategies.size(); ++s)
-            tilesOf[index].push_back({e.kind, labels[s], options.strategies[s], seeded[index][s].first()});
     }
+    // The tiles in the engines' order, each its strategy's first render.
     std::vector<EqualTimeTile> tiles;
     std::vector<const SeededRow*> rows; // in the tiles' order
     for (std::size_t e = 0; e < engines.size(); ++e)
-    {
-        std::move(tilesOf[e].begin(), tilesOf[e].end(), std::back_inserter(tiles));
-        for (const SeededRow& row : seeded[e])
-            rows.push_back(&row);
-    }
+        for (std::size_t s = 0; s < seeded[e].size(); ++s)
+        {
+            tiles.push_back({engines[e].kind, labels[s], options.strategies[s], seeded[e][s].first()});
+            rows.push_back(&seeded[e][s]);
+        }
     // Efficiency ratios against the most efficient strategy (the lowest mean relMSE x s), with their interval
     // over the seeds: one whose interval holds 1 is no different from the best.
     std::size_t best = 0;

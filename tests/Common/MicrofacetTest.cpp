@@ -171,7 +171,7 @@ struct Metal
 };
 const Metal kMetals[] = {
     {"gold", {0.143f, 0.374f, 1.442f}, {3.983f, 2.385f, 1.603f}},
-    {"copper", {0.200f, 0.924f, 1.102f}, {3.912f, 2.452f, 2.142f}},
+    {"copper", test::kCopperEta, test::kCopperK},
     {"aluminium", {1.657f, 0.880f, 0.521f}, {9.224f, 6.270f, 4.837f}},
 };
 const std::vector<float> kCosines = {1.0f, 0.95f, 0.8f, 0.5f, 0.3f, 0.1f, 0.02f, 0.0f};

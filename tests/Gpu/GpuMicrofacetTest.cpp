@@ -40,9 +40,8 @@ using ::rt::test::DistributionCase;
 using ::rt::test::WarpedDomain;
 
 constexpr long kSamples = 1'000'000;
-// Copper's complex index at red, green and blue (the C++ tests' table): k from 2.1 to 3.9.
-const vec3 kCopperEta(0.200f, 0.924f, 1.102f);
-const vec3 kCopperK(3.912f, 2.452f, 2.142f);
+using ::rt::test::kCopperEta;
+using ::rt::test::kCopperK;
 const vec3 kBaseColor(0.8f, 0.5f, 0.2f);
 constexpr float kMetallic = 0.5f;
 constexpr float kF0 = 0.04f;

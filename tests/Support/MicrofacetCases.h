@@ -13,6 +13,11 @@
 
 namespace rt::test
 {
+/// Copper's complex index of refraction eta + i k at red, green and blue (after Johnson & Christy 1972 and
+/// Rakić 1995, rounded): the conductor of the tests that need one metal.
+inline const glm::vec3 kCopperEta(0.200f, 0.924f, 1.102f);
+inline const glm::vec3 kCopperK(3.912f, 2.452f, 2.142f);
+
 /// The roughnesses every sampler is tested at: 0.001 (a mirror's lobe, a milliradian wide) to 1.
 extern const std::vector<float> kMicrofacetAlphas;
 

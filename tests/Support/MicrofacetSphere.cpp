@@ -2,6 +2,7 @@
 
 #include "Scene/SceneBuilder.h"
 #include "Scenes/SceneFactories.h"
+#include "Support/MicrofacetCases.h"
 #include "Support/MicrofacetReferences.h"
 #include "Support/PixelStatistics.h"
 
@@ -14,9 +15,6 @@ namespace rt::test
 namespace
 {
 constexpr double kPiD = 3.14159265358979323846;
-// Copper's complex index at red, green and blue (after Johnson & Christy 1972, rounded).
-const glm::dvec3 kCopperEta(0.200, 0.924, 1.102);
-const glm::dvec3 kCopperK(3.912, 2.452, 2.142);
 constexpr double kGlassIor = 1.5;
 } // namespace
 
@@ -37,7 +35,7 @@ Scene microfacetSphereScene(const MicrofacetSphereCase& c)
 {
     SceneBuilder b("microfacet-sphere");
     const std::uint32_t material = c.conductor
-                                       ? b.conductor(vec3(kCopperEta), vec3(kCopperK), c.alpha, c.alpha)
+                                       ? b.conductor(kCopperEta, kCopperK, c.alpha, c.alpha)
                                        : b.roughDielectric(c.alpha, float(kGlassIor));
     b.sphere(b.world(), vec3(0.0f), 1.0f, material);
     Scene& s = b.scene();
