@@ -50,6 +50,7 @@ inline float cos(float x) { return std::cos(x); }
 inline float abs(float x) { return std::fabs(x); }
 inline float acos(float x) { return std::acos(x); }
 inline float log(float x) { return std::log(x); }
+inline float pow(float x, float y) { return std::pow(x, y); }
 inline float atan(float y, float x) { return std::atan2(y, x); } // GLSL's two-argument atan
 inline float min(float a, float b) { return b < a ? b : a; } // GLSL's min/max: the first for NaN b, as std::min
 inline float max(float a, float b) { return a < b ? b : a; }

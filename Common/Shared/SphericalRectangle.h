@@ -9,27 +9,10 @@
 #ifndef RT_SHARED_SPHERICAL_RECTANGLE_H
 #define RT_SHARED_SPHERICAL_RECTANGLE_H
 
+#include "Shared/PreciseMath.h"
 #include "Shared/ShaderLang.h"
 
 RT_SHADER_NAMESPACE_BEGIN
-
-/// acos(x) for x in [-1, 1] to 2e-8 absolute on every device (Abramowitz & Stegun 4.4.46: sqrt(1 - |x|) times
-/// a degree-7 polynomial). Vulkan bounds GLSL's acos only loosely (inherited from atan: 4096 ulp), and the
-/// solid angle below, four angles minus 2 pi, cancels: lavapipe's acos moved it by 1e-3 relative.
-RT_FN float preciseAcos(float x)
-{
-    const float a = min(abs(x), 1.0f);
-    float p = -0.0012624911f;
-    p = p * a + 0.0066700901f;
-    p = p * a - 0.0170881256f;
-    p = p * a + 0.0308918810f;
-    p = p * a - 0.0501743046f;
-    p = p * a + 0.0889789874f;
-    p = p * a - 0.2145988016f;
-    p = p * a + 1.5707963050f;
-    const float r = sqrt(1.0f - a) * p;
-    return x < 0.0f ? kPi - r : r;
-}
 
 struct SphericalRectangle
 {

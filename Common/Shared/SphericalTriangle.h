@@ -18,6 +18,7 @@
 #ifndef RT_SHARED_SPHERICAL_TRIANGLE_H
 #define RT_SHARED_SPHERICAL_TRIANGLE_H
 
+#include "Shared/PreciseMath.h"
 #include "Shared/ShaderLang.h"
 
 #ifdef __cplusplus
@@ -49,32 +50,6 @@ struct SphericalTriangle
     Real alpha;      // internal angle at A, radians
     Real solidAngle; // steradians, in [0, 2 pi)
 };
-
-/// sin(x) for x in [-2 pi, 2 pi] to the precision of its type. C++ (double): std::sin. GLSL (float): the
-/// Taylor series to x^13 after reduction to [-pi/2, pi/2] (truncation below 7e-10), relative precision kept
-/// near 0, where Arvo's map takes the sine of small areas: Vulkan allows GLSL's sin an absolute error of
-/// 2^-11, and NVIDIA's (the hardware's approximation) put this sampler's pdfs 1.5e-3 off at a grazing triangle.
-#ifdef __cplusplus
-RT_FN Real preciseSin(Real x)
-{
-    return sin(x);
-}
-#else
-float preciseSin(float x)
-{
-    if (x > kPi)
-        x -= 2.0 * kPi;
-    else if (x < -kPi)
-        x += 2.0 * kPi;
-    if (x > 0.5 * kPi)
-        x = kPi - x;
-    else if (x < -0.5 * kPi)
-        x = -kPi - x;
-    float x2 = x * x;
-    return x * (1.0 + x2 * (-1.0 / 6.0 + x2 * (1.0 / 120.0 + x2 * (-1.0 / 5040.0 + x2 * (1.0 / 362880.0 +
-                x2 * (-1.0 / 39916800.0 + x2 * (1.0 / 6227020800.0)))))));
-}
-#endif
 
 /// 1 - cos(x) for an angle x in [0, pi] given its sine and cosine: sin^2 / (1 + cos), without the
 /// cancellation of 1 - cos near 0, where it matters.

@@ -1,13 +1,14 @@
 // Sphere lights, sampled and evaluated for both engines (Shared/ShaderLang.h; conventions in
 // Shared/Lights/LightSample.h): book 3's sampler (the cone of directions from outside, RTTROYL §12; the whole
 // surface from inside) and NEE's by LightSampler: Area (the whole surface), SolidAngle (the cone), Projected
-// (the receiver's cosine over a cap wholly above its horizon: Ureña & Georgiev 2018, "Stratified Sampling of
-// Projected Spherical Caps", EGSR, §3-4). Each sampler's pdf is beside it.
+// (the receiver's cosine over what its horizon leaves of the cap: Ureña & Georgiev 2018, Shared/Lights/
+// ProjectedCap.h). Each sampler's pdf is beside it.
 #ifndef RT_SHARED_LIGHTS_SPHERE_H
 #define RT_SHARED_LIGHTS_SPHERE_H
 
 #include "Shared/HostDevice.h"
 #include "Shared/Lights/LightSample.h"
+#include "Shared/Lights/ProjectedCap.h"
 #include "Shared/Onb.h"
 #include "Shared/ShaderLang.h"
 #include "Shared/Warps.h"
@@ -75,49 +76,6 @@ RT_FN float sphereNearHit(RT_IN(LightData) s, vec3 p, vec3 wi)
     return b - sqrt(disc);
 }
 
-/// A sphere light seen from p over the horizon of the receiver normal n: the orthographic projection of its
-/// cap onto the tangent plane, an ellipse (Ureña & Georgiev 2018, "Stratified Sampling of Projected Spherical
-/// Caps", EGSR, §3: centre cos(alpha) cos(beta) along the centre's horizontal direction, semi-axes
-/// sin(alpha) sin(beta) along it and sin(alpha) across, with sin(alpha) = R / d and beta the centre's
-/// elevation). `x` is that horizontal direction.
-struct ProjectedCap
-{
-    vec3 x;
-    vec3 y;
-    float centerX;
-    float axisX;
-    float axisY;
-};
-
-/// True when p is outside the sphere and its whole cap lies above the horizon of n (beta >= alpha, i.e.
-/// sin(beta) = n . axis >= sin(alpha)): then the projected cap is the ellipse. n = 0 (no receiver: a medium)
-/// is never above.
-RT_FN bool projectedCap(RT_IN(LightData) s, vec3 p, vec3 n, RT_OUT(ProjectedCap) cap)
-{
-    const vec3 toCenter = s.p0 - p;
-    const float d = length(toCenter);
-    const vec3 axis = toCenter / d;
-    const float sinAlpha = s.radius / d;
-    const float sinBeta = dot(n, axis);
-    cap.x = vec3(1.0f, 0.0f, 0.0f);
-    cap.y = vec3(0.0f, 1.0f, 0.0f);
-    cap.centerX = 0.0f;
-    cap.axisX = 0.0f;
-    cap.axisY = 0.0f;
-    if (!(sinAlpha < 1.0f) || !(sinBeta >= sinAlpha))
-        return false;
-    const vec3 horizontal = axis - sinBeta * n;
-    const float h = length(horizontal);
-    // Straight overhead the ellipse is a circle about the normal: any horizontal axis will do.
-    cap.x = h > 1e-6f ? horizontal / h : onbFromNormal(n).u;
-    cap.y = cross(n, cap.x);
-    const float cosAlpha = safeSqrt(1.0f - sinAlpha * sinAlpha);
-    cap.centerX = cosAlpha * h; // h = cos(beta)
-    cap.axisX = sinAlpha * sinBeta;
-    cap.axisY = sinAlpha;
-    return true;
-}
-
 /// Book 3's solid-angle pdf of the unit direction wi from p: uniform over the cone from outside, the area density
 /// of the far point wi reaches from inside.
 RT_FN float sphereLightPdf(RT_IN(LightData) light, vec3 p, vec3 wi)
@@ -162,21 +120,25 @@ RT_FN bool sampleSphereLight(RT_IN(LightData) light, vec3 p, vec2 u, RT_OUT(Ligh
 }
 
 /// NEE's solid-angle pdf of wi from p with receiver normal n (0 in a medium) by `strategy`: Projected, cos / F
-/// over a cap wholly above the horizon of n, F = pi sin^2(alpha) sin(beta) its projected solid angle; Area, the
-/// area density of the point wi reaches first (the near side) from outside; else book 3's.
+/// over what the horizon of n leaves of the cap, F its projected solid angle (0 elsewhere; book 3's from
+/// inside the sphere or in a medium); Area, the area density of the point wi reaches first (the near side)
+/// from outside; else book 3's.
 RT_FN float sphereLightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec3 wi)
 {
     if (strategy == RT_ENUM(LightSampler, Projected))
     {
         ProjectedCap cap;
-        if (projectedCap(light, p, n, cap))
+        const uint kind = projectedCap(light, p, n, cap);
+        if (kind == kCapBelow)
+            return 0.0f;
+        if (kind != kCapNotApplicable)
         {
             float oneMinusCos;
             float cosThetaMax;
             vec3 axis;
             sphereCone(light, p, oneMinusCos, cosThetaMax, axis);
-            return conePdf(oneMinusCos, axis, wi) > 0.0f ? max(dot(n, wi), 0.0f) / (kPi * cap.axisX * cap.axisY)
-                                                         : 0.0f;
+            const float cosine = dot(n, wi);
+            return conePdf(oneMinusCos, axis, wi) > 0.0f && cosine > 0.0f ? cosine / cap.area : 0.0f;
         }
     }
     if (strategy == RT_ENUM(LightSampler, Area) && lengthSquared(p - light.p0) > light.radius * light.radius)
@@ -191,30 +153,29 @@ RT_FN float sphereLightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy
 }
 
 /// NEE's sample from p by `strategy`, with the density sphereLightPdf(light, strategy, p, n, .) reports.
-/// Projected: uniform over the projected cap, the ellipse, by the concentric map scaled to it (area-preserving,
-/// so stratification survives), lifted to the hemisphere: density cos / F. Area from outside: the whole
-/// surface; a point on the far side faces away from p and returns false, a sample of zero contribution.
+/// Projected: uniform over the projected visible cap (sampleProjectedCap), density cos / F; false, a sample of
+/// zero contribution, for a cap wholly below the horizon. Area from outside: the whole surface; a point on the
+/// far side faces away from p and returns false, likewise.
 RT_FN bool sampleSphereLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec2 u,
                              RT_OUT(LightSample) ls)
 {
     if (strategy == RT_ENUM(LightSampler, Projected))
     {
         ProjectedCap cap;
-        if (projectedCap(light, p, n, cap))
+        const uint kind = projectedCap(light, p, n, cap);
+        if (kind != kCapNotApplicable)
         {
-            const vec2 disk = sampleUniformDiskConcentric(u);
-            const float x = cap.centerX + cap.axisX * disk.x;
-            const float y = cap.axisY * disk.y;
-            const float z = safeSqrt(1.0f - x * x - y * y);
-            ls.wi = normalize(x * cap.x + y * cap.y + z * n);
-            ls.uv = vec2(0.0f);
+            clearLightSample(light, ls);
+            if (kind == kCapBelow)
+                return false;
+            ls.wi = sampleProjectedCap(cap, n, u);
             ls.distance = sphereEntryDistance(light, p, ls.wi);
             ls.normal = normalize(p + ls.distance * ls.wi - light.p0);
             ls.point = light.p0 + light.radius * ls.normal;
             // cos / F, the density of the construction: a rim sample that rounding moved a few ulps out of the
             // cone (where the pdf's chord test says 0: 3 in 1e6 for a cap of 1e-3 rad) keeps it rather than
             // being dropped; the two differ only on that rim, a set of no measure.
-            ls.pdf = max(dot(n, ls.wi), 0.0f) / (kPi * cap.axisX * cap.axisY);
+            ls.pdf = max(dot(n, ls.wi), 0.0f) / cap.area;
             return ls.pdf > 0.0f;
         }
     }
