@@ -27,6 +27,7 @@
 #include "Cli/ValueParsing.h"
 #include "Error.h"
 #include "IO/AtomicFile.h"
+#include "Image/Flip.h"
 #include "Image/ImageIO.h"
 #include "Image/Metrics.h"
 
@@ -148,11 +149,13 @@ std::string describeStrategy(const RenderSettings& settings)
     return fmt::format("{}", fmt::join(parts, ", "));
 }
 
-std::string againstReference(const Reference& reference)
+std::string againstReference(const Reference& reference, ErrorMetric metric)
 {
-    std::string text = fmt::format("relMSE against {} (epsilon {:g}", reference.description, kRelMseEpsilon);
+    std::string text = fmt::format("{} against {} (", displayName(metric), reference.description);
+    text += metric == ErrorMetric::Flip ? std::string("HDR-FLIP, exposures from the reference")
+                                        : fmt::format("epsilon {:g}", kRelMseEpsilon);
     if (reference.ownRelMse)
-        text += fmt::format("; the reference's own relMSE {:.2e} is part of every value", *reference.ownRelMse);
+        text += fmt::format("; the reference's own relMSE {:.2e} is part of every relMSE", *reference.ownRelMse);
     return text + ")";
 }
 
@@ -210,8 +213,17 @@ struct SeededRow
         return (*std::max_element(t.begin(), t.end()) - *std::min_element(t.begin(), t.end())) / median(t);
     }
     Interval relMse() const { return meanInterval(values([](const Measurement& m) { return m.error.relMse; })); }
-    /// relMSE x seconds per seed, at the median of its rounds' times: the inverse of the efficiency 1 / (relMSE s).
-    std::vector<double> relMseSeconds() const
+    /// The metric's mean over the seeds (round 0's value: every round renders the same image).
+    Interval metric(ErrorMetric which) const
+    {
+        std::vector<double> v;
+        for (const auto& seed : runs)
+            v.push_back(metricValue(seed.front().error, which));
+        return meanInterval(v);
+    }
+    /// metric^k x seconds per seed (k = efficiencyPower), at the median of its rounds' times: the inverse of
+    /// the efficiency 1 / (metric^k s).
+    std::vector<double> costs(ErrorMetric which) const
     {
         std::vector<double> out;
         for (const auto& seed : runs)
@@ -219,7 +231,7 @@ struct SeededRow
             std::vector<double> t;
             for (const Measurement& m : seed)
                 t.push_back(m.ms());
-            out.push_back(seed.front().error.relMse * median(t) * 1e-3);
+            out.push_back(std::pow(metricValue(seed.front().error, which), efficiencyPower(which)) * median(t) * 1e-3);
         }
         return out;
     }
@@ -243,6 +255,23 @@ void warmUpStrategies(RenderEngine& engine, const RenderRequest& base, const std
     for (std::size_t s = 1; s < strategies.size(); ++s)
         if (measure(engine, strategies[s].request(base, 1), nullptr).cancelled)
             return;
+}
+
+/// Mean HDR-FLIP of round 0's render against the reference, into m.error.flip, when the comparison measures by
+/// FLIP (0.2 s at 512 x 384: every other round renders the same image again).
+void measureFlip(const CompareOptions& options, int round, const Reference& reference, Measurement& m)
+{
+    if (options.metric == ErrorMetric::Flip && round == 0)
+        m.error.flip = meanHdrFlip(m.image, reference.image);
+}
+
+ConvergenceRow csvRow(const std::string& scene, const EngineUnderTest& e, const Strategy& strategy,
+                      const std::string& label, const Measurement& m, const Reference& reference, std::uint32_t seed,
+                      int round)
+{
+    return {scene, toString(e.kind), e.engine->deviceName(), strategy.name(), label, m.spp, m.wallMs, m.gpuMs,
+            m.mpathsPerSecond, m.error.mse, m.error.relMse, m.error.rmse, reference.ownRelMse.value_or(-1.0), seed,
+            round, m.error.trimmedRelMse, m.error.mape, m.error.flip};
 }
 
 /// " ±4.1e-05" (half the 95 % interval) when there are several seeds, else nothing.
@@ -281,15 +310,14 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
                         Measurement m = measure(engine, request, &reference.image);
                         if (m.cancelled)
                             return false;
+                        measureFlip(options, round, reference, m);
                         const std::uint32_t seed = request.settings.seed;
-                        log.done(fmt::format("{} {}, {} spp, seed {}, round {}: {:.1f} ms, relMSE {:.3g}",
+                        log.done(fmt::format("{} {}, {} spp, seed {}, round {}: {:.1f} ms, {} {:.3g}",
                                              toString(engines[e].kind), labels[s], m.spp, seed, round, m.ms(),
-                                             m.error.relMse));
+                                             displayName(options.metric), metricValue(m.error, options.metric)));
                         if (csv)
-                            csv->append({scene.id, toString(engines[e].kind), engine.deviceName(),
-                                         options.strategies[s].name(), labels[s], m.spp, m.wallMs, m.gpuMs,
-                                         m.mpathsPerSecond, m.error.mse, m.error.relMse, m.error.rmse,
-                                         reference.ownRelMse.value_or(-1.0), seed, round});
+                            csv->append(csvRow(scene.id, engines[e], options.strategies[s], labels[s], m, reference,
+                                               seed, round));
                         if (round == 0)
                             images.add(engines[e].kind, options.strategies[s].name(), labels[s], m, seed);
                         runs[e][s][row].add(std::size_t(k), std::move(m));
@@ -306,6 +334,7 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
     else
         json["reference"] = options.referencePath;
     json["relmse_epsilon"] = kRelMseEpsilon;
+    json["metric"] = toString(options.metric);
     json["reference_relmse"] = reference.ownRelMse ? nlohmann::json(*reference.ownRelMse) : nlohmann::json();
     for (const EngineUnderTest& e : engines)
         json["devices"][toString(e.kind)] = e.engine->deviceName();
@@ -316,10 +345,11 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
     {
         const RenderSettings settings = options.strategies[s].applyTo(b);
         std::printf("\n%s: %dx%d, depth %d, %s; %s\n", scene.id.c_str(), b.width, b.height(), b.depth,
-                    describeStrategy(settings).c_str(), againstReference(reference).c_str());
+                    describeStrategy(settings).c_str(), againstReference(reference, options.metric).c_str());
         std::string header = fmt::format("{:>6}", "spp");
         for (const EngineUnderTest& e : engines)
-            header += fmt::format(" | {:>9} {:>9}{}{}", fmt::format("{} ms", toString(e.kind)), "relMSE",
+            header += fmt::format(" | {:>9} {:>9}{}{}", fmt::format("{} ms", toString(e.kind)),
+                                  displayName(options.metric),
                                   options.seeds > 1 ? fmt::format(" {:<9}", "±95%") : std::string(),
                                   options.rounds > 1 ? fmt::format(" {:>6}", "range%") : std::string());
         if (ratio)
@@ -338,7 +368,8 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
                 const SeededRow& seeded = runs[e][s][row];
                 const Measurement& m = seeded.first();
                 const Interval relMse = seeded.relMse();
-                line += fmt::format(" | {:>9.1f} {:>9.2e}{}", seeded.ms(), relMse.mean, plusMinus(relMse));
+                const Interval shown = seeded.metric(options.metric);
+                line += fmt::format(" | {:>9.1f} {:>9.2e}{}", seeded.ms(), shown.mean, plusMinus(shown));
                 if (options.rounds > 1)
                     line += fmt::format(" {:>6.1f}", 100.0 * seeded.spread());
                 nlohmann::json& j = jrow[toString(engines[e].kind)];
@@ -347,7 +378,11 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
                      {"mpaths_per_second", m.mpathsPerSecond},
                      {"mse", m.error.mse},
                      {"relmse", relMse.mean},
+                     {"trimmed_relmse", seeded.metric(ErrorMetric::TrimmedRelMse).mean},
+                     {"mape", seeded.metric(ErrorMetric::Mape).mean},
                      {"rmse", m.error.rmse}};
+                if (options.metric == ErrorMetric::Flip)
+                    j["flip"] = shown.mean;
                 if (options.rounds > 1)
                 {
                     j["rounds"] = options.rounds;
@@ -366,6 +401,8 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
                     j["seeds"] = options.seeds;
                     j["relmse_ci95"] = {relMse.lo, relMse.hi};
                     j["relmse_seeds"] = seeded.values([](const Measurement& x) { return x.error.relMse; });
+                    if (options.metric != ErrorMetric::RelMse)
+                        j[fmt::format("{}_ci95", toString(options.metric))] = {shown.lo, shown.hi};
                     j["mse"] = meanInterval(seeded.values([](const Measurement& x) { return x.error.mse; })).mean;
                     j["rmse"] = meanInterval(seeded.values([](const Measurement& x) { return x.error.rmse; })).mean;
                 }
@@ -429,14 +466,14 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
                                                  : measure(*e.engine, request, &reference.image);
                     if (m.cancelled)
                         return false;
+                    measureFlip(options, round, reference, m);
                     spps[s] = m.spp;
                     const std::uint32_t seed = request.settings.seed;
-                    log.done(fmt::format("{} {}, seed {}, round {}: {} spp in {:.1f} ms, relMSE {:.3g}",
-                                         toString(e.kind), labels[s], seed, round, m.spp, m.ms(), m.error.relMse));
+                    log.done(fmt::format("{} {}, seed {}, round {}: {} spp in {:.1f} ms, {} {:.3g}", toString(e.kind),
+                                         labels[s], seed, round, m.spp, m.ms(), displayName(options.metric),
+                                         metricValue(m.error, options.metric)));
                     if (csv)
-                        csv->append({scene.id, toString(e.kind), e.engine->deviceName(), options.strategies[s].name(),
-                                     labels[s], m.spp, m.wallMs, m.gpuMs, m.mpathsPerSecond, m.error.mse,
-                                     m.error.relMse, m.error.rmse, reference.ownRelMse.value_or(-1.0), seed, round});
+                        csv->append(csvRow(scene.id, e, options.strategies[s], labels[s], m, reference, seed, round));
                     if (round == 0)
                         images.add(e.kind, options.strategies[s].name(), labels[s], m, seed);
                     seeded[index][s].add(std::size_t(k), std::move(m));
@@ -451,34 +488,38 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
             tiles.push_back({engines[e].kind, labels[s], options.strategies[s], seeded[e][s].first()});
             rows.push_back(&seeded[e][s]);
         }
-    // Efficiency ratios against the most efficient strategy (the lowest mean relMSE x s), with their interval
+    // Efficiency ratios against the most efficient strategy (the lowest mean metric^k x s), with their interval
     // over the seeds: one whose interval holds 1 is no different from the best.
+    const ErrorMetric metric = options.metric;
     std::size_t best = 0;
     for (std::size_t i = 0; i < rows.size(); ++i)
-        if (meanInterval(rows[i]->relMseSeconds()).mean < meanInterval(rows[best]->relMseSeconds()).mean)
+        if (meanInterval(rows[i]->costs(metric)).mean < meanInterval(rows[best]->costs(metric)).mean)
             best = i;
     std::printf("\n%s: %dx%d, each strategy for %.0f ms%s; %s\n", scene.id.c_str(), base.settings.width,
                 base.settings.height(), options.equalTimeMs,
                 options.seeds > 1 ? fmt::format(", {} seeds (mean and 95 % interval)", options.seeds).c_str() : "",
-                againstReference(reference).c_str());
-    std::printf("%-8s %-36s %8s %10s %10s %12s %s\n", "engine", "strategy", "spp", "ms", "relMSE", "1/(relMSE s)",
-                options.seeds > 1 ? "  efficiency / best" : "");
+                againstReference(reference, options.metric).c_str());
+    const std::string efficiency = efficiencyPower(metric) == 1
+                                       ? fmt::format("1/({} s)", displayName(metric))
+                                       : fmt::format("1/({}^2 s)", displayName(metric));
+    std::printf("%-8s %-36s %8s %10s %11s %14s %s\n", "engine", "strategy", "spp", "ms", displayName(metric),
+                efficiency.c_str(), options.seeds > 1 ? "  efficiency / best" : "");
     for (std::size_t i = 0; i < rows.size(); ++i)
     {
         const SeededRow& row = *rows[i];
-        const Interval relMse = row.relMse();
-        std::string line = fmt::format("{:<8} {:<36} {:>8} {:>10.1f} {:>10.3g} {:>12.4g}", toString(tiles[i].engine),
-                                       tiles[i].label, row.first().spp, row.ms(), relMse.mean,
-                                       1.0 / meanInterval(row.relMseSeconds()).mean);
+        const Interval shown = row.metric(metric);
+        std::string line = fmt::format("{:<8} {:<36} {:>8} {:>10.1f} {:>11.3g} {:>14.4g}", toString(tiles[i].engine),
+                                       tiles[i].label, row.first().spp, row.ms(), shown.mean,
+                                       1.0 / meanInterval(row.costs(metric)).mean);
         if (options.seeds > 1)
         {
-            // The efficiency ratio e_i / e_best is the ratio of the best's relMSE x s to this one's.
-            line += fmt::format("  relMSE ±{:.2g}; ", 0.5 * (relMse.hi - relMse.lo));
+            // The efficiency ratio e_i / e_best is the ratio of the best's metric^k x s to this one's.
+            line += fmt::format("  {} ±{:.2g}; ", displayName(metric), 0.5 * (shown.hi - shown.lo));
             if (i == best)
                 line += "1 (best)";
             else
             {
-                const Interval r = ratioInterval(rows[best]->relMseSeconds(), row.relMseSeconds());
+                const Interval r = ratioInterval(rows[best]->costs(metric), row.costs(metric));
                 line += fmt::format("{:.3f} [{:.3f}, {:.3f}]{}", r.mean, r.lo, r.hi,
                                     r.contains(1.0) ? " (no different)" : "");
             }

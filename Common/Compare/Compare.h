@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "Compare/Strategy.h"
+#include "Image/Metrics.h"
 #include "Render/RenderEngine.h"
 #include "Render/RenderRequest.h"
 
@@ -36,6 +37,7 @@ struct CompareOptions
     std::filesystem::path images; // every render's PFM and an index (ImageFolder.h), when not empty
     int seeds = 1; // each row rendered with seeds seed, seed + 1, ...: means with 95 % intervals (Confidence.h)
     int rounds = 3; // every row timed again in this many interleaved rounds: the median time and its spread
+    ErrorMetric metric = ErrorMetric::RelMse; // the error the tables show and the efficiencies use
 };
 
 /// Parses "10,50,100" (positive integers). Throws UsageError.

@@ -94,6 +94,15 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
         ->capture_default_str()
         ->check(CLI::Range(1, 20))
         ->needs(compareFlag);
+    app.add_option("--metric", flags.metric,
+                   "With --compare: the error the tables show and the efficiencies use: relmse (mean (I - R)^2 / (R^2 + "
+                   "0.01)), trimmed-relmse (the same without the worst 0.1 % of pixels: fireflies), mape (mean |I - R| / "
+                   "(|R| + 0.01)) or flip (mean HDR-FLIP, Andersson et al. 2021: 0.2 s per 512x384 render). Efficiency "
+                   "is 1 / (error x s) for the squared errors and 1 / (error^2 x s) for MAPE and FLIP, so that it does "
+                   "not change with spp; the CSV has every metric but FLIP unless it is chosen")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"relmse", "trimmed-relmse", "mape", "flip"}))
+        ->needs(compareFlag);
     app.add_option("--reference-cache", flags.referenceCache,
                    "With --compare: folder of rendered references, re-used when scene, settings, spp, seed and engine "
                    "match ('off': render the reference every time)")
@@ -127,6 +136,9 @@ int runCompare(const CompareFlags& flags, const CommonOptions& options, const En
     c.images = flags.images;
     c.seeds = flags.seeds;
     c.rounds = flags.rounds;
+    for (ErrorMetric m : {ErrorMetric::RelMse, ErrorMetric::TrimmedRelMse, ErrorMetric::Mape, ErrorMetric::Flip})
+        if (flags.metric == toString(m))
+            c.metric = m;
     if (flags.referenceCache != "off")
         c.referenceCache = flags.referenceCache;
     return runComparison(job.scene, job.request, c,

@@ -30,6 +30,7 @@ struct CompareFlags
     std::string images;
     int seeds = 1;
     int rounds = 3;
+    std::string metric = "relmse";
 };
 
 /// Adds --compare and the flags that go with it to `app`.

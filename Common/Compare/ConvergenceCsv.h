@@ -27,6 +27,9 @@ struct ConvergenceRow
     double referenceRelMse = -1.0; // the reference's own relMSE, part of relMse (Image/Metrics.h); < 0: unknown
     std::uint32_t seed = 0; // the render's --seed (--seeds N renders a row N times: seed, seed + 1, ...)
     int round = 0; // --rounds R times every row again in R interleaved rounds: 0 .. R - 1
+    double trimmedRelMse = 0.0; // relMSE without the worst 0.1 % of pixels (Image/Metrics.h)
+    double mape = 0.0;
+    double flip = -1.0; // mean HDR-FLIP; < 0: not computed (only with --metric flip, round 0)
 };
 
 class ConvergenceCsv

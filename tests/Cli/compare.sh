@@ -53,6 +53,30 @@ grep -q "estimator mixture" "$work/out1.txt" && grep -q "estimator nee-mis" "$wo
 "$app" "${common[@]}" --engines gpu --spp-list 4 >/dev/null 2>"$work/err2.txt"
 grep -q "from the cache" "$work/err2.txt" || { cat "$work/err2.txt"; fail "the reference was not re-used"; }
 
+# --metric flip: the table by mean HDR-FLIP, the CSV with every metric (FLIP on round 0), each falling with spp.
+"$app" "${common[@]}" --engines gpu --estimators mixture,nee-mis --spp-list 4,64 --rounds 2 --metric flip \
+    --csv "$work/f.csv" >"$work/outf.txt" 2>&1 || { cat "$work/outf.txt"; fail "--metric flip"; }
+grep -q "FLIP against 1024 spp" "$work/outf.txt" || { cat "$work/outf.txt"; fail "the FLIP table"; }
+python3 - "$work/f.csv" <<'PY' || fail "FLIP CSV rows"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) == 2 * 2 * 2, len(rows)
+by = {}
+for r in rows:
+    flip, trimmed, rel, mape = (float(r[k]) for k in ("flip", "trimmed_relmse", "relmse", "mape"))
+    if r["round"] == "1":
+        assert flip < 0, ("FLIP is measured on round 0 only", r)
+        continue
+    assert 0 < flip < 1 and 0 < trimmed <= rel and mape > 0, r
+    by.setdefault(r["label"], {})[int(r["spp"])] = (flip, trimmed, mape)
+for label, s in by.items():
+    assert all(s[64][i] < s[4][i] for i in range(3)), ("every metric falls with spp", label, s)
+PY
+"$app" "${common[@]}" --engines gpu --estimators mixture,nee-mis --equal-time 100 --rounds 1 --metric mape \
+    --output "$work/mape.png" \
+    >"$work/outm.txt" 2>&1 || { cat "$work/outm.txt"; fail "--metric mape"; }
+grep -q "1/(MAPE^2 s)" "$work/outm.txt" || { cat "$work/outm.txt"; fail "the MAPE efficiency column"; }
+
 "$app" "${common[@]}" --engines gpu --estimators mixture,nee-mis --equal-time 300 --output "$work/grid.png" \
     --csv "$work/e.csv" --images "$work/images/new" >"$work/out3.txt" 2>&1 || { cat "$work/out3.txt"; fail "equal time"; }
 file "$work/grid.png" | grep -q "PNG image data" || fail "no equal-time figure"

@@ -50,7 +50,7 @@ TEST(Metrics, ConstantOffsetGivesItsSquare)
     const ErrorMetrics m = compareImages(t, r);
     EXPECT_DOUBLE_EQ(m.mse, delta * delta);
     EXPECT_DOUBLE_EQ(m.rmse, delta);
-    EXPECT_DOUBLE_EQ(m.relMse, rel);
+    EXPECT_NEAR(m.relMse, rel, 1e-14 * rel); // summed per pixel first: the order of the sum differs
     EXPECT_NEAR(m.psnr, 10.0 * std::log10(1.0 / (delta * delta)), 1e-12);
     EXPECT_EQ(kRelMseEpsilon, 1e-2);
     // The relative error divides by the reference, not the test image: swapping them changes it.
@@ -65,6 +65,62 @@ TEST(Metrics, RelMseUsesTheGivenEpsilon)
     r.at(0, 0) = vec3(0.5f);
     t.at(0, 0) = vec3(1.0f);
     EXPECT_DOUBLE_EQ(compareImages(t, r, 0.75).relMse, 0.25);
+}
+
+TEST(Metrics, MapeIsTheMeanAbsoluteRelativeError)
+{
+    // Two pixels: R = (0.5, 0, 1), (2, 0.25, 0.75); test adds (0.25, -0.5, 0), (-1, 0, 0.25). MAPE, by hand:
+    // (0.25/0.51 + 0.5/0.01 + 0 + 1/2.01 + 0 + 0.25/0.76) / 6.
+    Image r(2, 1), t(2, 1);
+    r.at(0, 0) = vec3(0.5f, 0.0f, 1.0f);
+    r.at(1, 0) = vec3(2.0f, 0.25f, 0.75f);
+    t.at(0, 0) = r.at(0, 0) + vec3(0.25f, -0.5f, 0.0f);
+    t.at(1, 0) = r.at(1, 0) + vec3(-1.0f, 0.0f, 0.25f);
+    const double expected = (0.25 / 0.51 + 0.5 / 0.01 + 1.0 / 2.01 + 0.25 / 0.76) / 6.0;
+    EXPECT_NEAR(compareImages(t, r).mape, expected, 1e-12);
+    EXPECT_EQ(compareImages(r, r).mape, 0.0);
+}
+
+TEST(Metrics, TrimmedRelMseDropsTheWorstThousandth)
+{
+    // 2000 pixels with relMSE 0 but for two fireflies and one small error: 0.1 % of 2000 is 2 pixels, so both
+    // fireflies go and the small error stays, over the 1998 pixels kept.
+    Image r(50, 40), t(50, 40);
+    for (vec3& p : r.pixels())
+        p = vec3(0.5f);
+    t = r;
+    t.at(3, 4) = vec3(100.0f);
+    t.at(30, 20) = vec3(50.0f, 0.5f, 0.5f);
+    t.at(7, 7) = vec3(0.75f, 0.5f, 0.5f); // relMSE of the pixel: 0.0625 / 0.26 over its 3 channels
+    const ErrorMetrics m = compareImages(t, r);
+    EXPECT_NEAR(m.trimmedRelMse, (0.0625 / 0.26) / (3.0 * 1998.0), 1e-15);
+    EXPECT_GT(m.relMse, 1000.0 * m.trimmedRelMse); // the untrimmed one is the fireflies'
+    // Below 1000 pixels nothing is trimmed.
+    Image small(10, 10), smallTest(10, 10);
+    smallTest.at(2, 3) = vec3(1.0f);
+    EXPECT_DOUBLE_EQ(compareImages(smallTest, small).trimmedRelMse, compareImages(smallTest, small).relMse);
+}
+
+TEST(Metrics, EfficiencyPowersMakeEveryMetricScaleLikeVariance)
+{
+    EXPECT_EQ(efficiencyPower(ErrorMetric::RelMse), 1);
+    EXPECT_EQ(efficiencyPower(ErrorMetric::TrimmedRelMse), 1);
+    EXPECT_EQ(efficiencyPower(ErrorMetric::Mape), 2);
+    EXPECT_EQ(efficiencyPower(ErrorMetric::Flip), 2);
+    // Independent uniform noise of width s on a constant image: relMSE ~ s^2, MAPE ~ s, so
+    // relMSE / MAPE^2 stays put when s is quartered (4x the samples would halve s: 16x the samples here).
+    Rng rng(pcgHash(7));
+    Image r(200, 200), a(200, 200), b(200, 200);
+    for (std::size_t i = 0; i < r.pixelCount(); ++i)
+    {
+        r.data()[i] = vec3(1.0f);
+        const vec3 noise(rng.nextFloat() - 0.5f, rng.nextFloat() - 0.5f, rng.nextFloat() - 0.5f);
+        a.data()[i] = vec3(1.0f) + 0.2f * noise;
+        b.data()[i] = vec3(1.0f) + 0.05f * noise;
+    }
+    const ErrorMetrics ma = compareImages(a, r), mb = compareImages(b, r);
+    EXPECT_NEAR(ma.relMse / (ma.mape * ma.mape), mb.relMse / (mb.mape * mb.mape), 1e-4);
+    EXPECT_NEAR(ma.relMse / mb.relMse, 16.0, 1e-3);
 }
 
 TEST(Metrics, SizeMismatchIsAUsageError)
