@@ -87,8 +87,9 @@ struct EnumNames<Estimator>
 template <>
 struct EnumNames<LightSampler>
 {
-    static constexpr std::array<EnumName<LightSampler>, 3> values{
-        {{LightSampler::Area, "area"}, {LightSampler::SolidAngle, "solid-angle"}, {LightSampler::Projected, "projected"}}};
+    static constexpr std::array<EnumName<LightSampler>, 4> values{
+        {{LightSampler::Area, "area"}, {LightSampler::SolidAngle, "solid-angle"}, {LightSampler::Projected, "projected"},
+         {LightSampler::ProjectedExact, "projected-exact"}}};
 };
 
 template <>

@@ -89,11 +89,13 @@ RT_ENUM_END(Estimator)
 // How NEE samples a point on a light (--light-sampler). Book 3's mixture keeps its own: cones for spheres,
 // area for quads and triangles. SolidAngle: sphere cones, spherical rectangles (Ureña et al. 2013) and
 // spherical triangles (Arvo 1995). Projected: by the receiver's cosine over caps above its horizon, and over
-// rectangles and triangles by a bilinear warp of their spherical maps; elsewhere as SolidAngle.
+// rectangles and triangles by a bilinear warp of their spherical maps; elsewhere as SolidAngle. ProjectedExact:
+// quads and triangles by their exact projected solid angle (Lights/ProjectedPolygon.h), spheres as Projected.
 RT_ENUM_BEGIN(LightSampler)
 RT_ENUM_VALUE(LightSampler, Area, 0)       // uniform over the light's area (a sphere's whole surface)
 RT_ENUM_VALUE(LightSampler, SolidAngle, 1) // uniform over the solid angle
 RT_ENUM_VALUE(LightSampler, Projected, 2)  // by the receiver's cosine
+RT_ENUM_VALUE(LightSampler, ProjectedExact, 3) // by the receiver's cosine exactly (Peters 2021) over polygons
 RT_ENUM_END(LightSampler)
 
 // How NEE picks the light it samples (--light-selection).

@@ -11,6 +11,7 @@
 #include "Shared/HostDevice.h"
 #include "Shared/Lights/LightSample.h"
 #include "Shared/Lights/Planar.h"
+#include "Shared/Lights/ProjectedPolygon.h"
 #include "Shared/Lights/Quad.h"
 #include "Shared/Lights/Sphere.h"
 #include "Shared/Lights/Triangle.h"
@@ -48,6 +49,17 @@ RT_FN bool sampleLight(RT_IN(LightData) light, vec3 p, vec2 u, RT_OUT(LightSampl
 /// cannot (each shape's pdf says how it is computed).
 RT_FN float lightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec3 wi)
 {
+    // Polygons with a receiver by their exact projected solid angle (by area when too small, nothing wholly
+    // below the horizon); without one, Quad.h and Triangle.h take projected-exact as solid angle, and Sphere.h
+    // takes it as projected (exact for spheres already). The strategy is not reassigned here: that made
+    // spirv-opt (SPIRV-Tools 2023.1, glslc -O) crash on the megakernel.
+    if (strategy == RT_ENUM(LightSampler, ProjectedExact) && !RT_LIGHT_IS(light.shape, Sphere) && dot(n, n) > 0.0f)
+    {
+        const ProjectedPolygon g = makeProjectedPolygon(light, p, n);
+        if (g.count == 0u) // wholly below the horizon
+            return 0.0f;
+        return projectedPolygonApplies(g) ? projectedPolygonPdf(light, g, p, n, wi) : planarLightPdf(light, p, wi);
+    }
     if (RT_LIGHT_IS(light.shape, Sphere))
         return sphereLightPdf(light, strategy, p, n, wi);
     if (RT_LIGHT_IS(light.shape, Quad))
@@ -63,6 +75,17 @@ RT_FN bool sampleLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, ve
                        RT_OUT(LightSample) ls)
 {
     RT_DCHECK(u.x >= 0.0f && u.x < 1.0f && u.y >= 0.0f && u.y < 1.0f);
+    if (strategy == RT_ENUM(LightSampler, ProjectedExact) && !RT_LIGHT_IS(light.shape, Sphere) && dot(n, n) > 0.0f)
+    {
+        const ProjectedPolygon g = makeProjectedPolygon(light, p, n);
+        if (g.count == 0u) // wholly below the horizon: nothing to sample, as a sphere's cap there
+        {
+            clearLightSample(light, ls);
+            return false;
+        }
+        return projectedPolygonApplies(g) ? sampleProjectedPolygonLight(light, g, p, n, u, ls)
+                                          : samplePlanarLight(light, p, u, ls);
+    }
     if (RT_LIGHT_IS(light.shape, Sphere))
         return sampleSphereLight(light, strategy, p, n, u, ls);
     if (RT_LIGHT_IS(light.shape, Quad))

@@ -15,7 +15,9 @@ namespace rt::shader
 inline float preciseSin(float x) { return std::sin(x); }
 inline double preciseSin(double x) { return std::sin(x); }
 inline float preciseCos(float x) { return std::cos(x); }
+inline double preciseCos(double x) { return std::cos(x); }
 inline float preciseAtan(float y, float x) { return std::atan2(y, x); }
+inline double preciseAtan(double y, double x) { return std::atan2(y, x); }
 inline float preciseAcos(float x) { return std::acos(std::fmax(-1.0f, std::fmin(1.0f, x))); }
 } // namespace rt::shader
 #else

@@ -19,17 +19,8 @@
 #define RT_SHARED_SPHERICAL_TRIANGLE_H
 
 #include "Shared/PreciseMath.h"
+#include "Shared/Real.h"
 #include "Shared/ShaderLang.h"
-
-#ifdef __cplusplus
-RT_SHADER_NAMESPACE_BEGIN
-using Real = double;
-using RealVec3 = glm::dvec3;
-RT_SHADER_NAMESPACE_END
-#else
-#define Real float
-#define RealVec3 vec3
-#endif
 
 RT_SHADER_NAMESPACE_BEGIN
 

@@ -193,7 +193,8 @@ Histogramming histogrammingFor(const SamplerCase& c, std::uint32_t strategy, lon
         const SphereSurfaceDomain domain(c.light, c.p, cells / 2, cells);
         return {[domain](const vec3& wi) { return domain.cell(wi); }, domain.expectedCounts(samples, 4, pdf)};
     }
-    if (c.light.shape == LightShape::Sphere && strategy == std::uint32_t(LightSampler::Projected))
+    if (c.light.shape == LightShape::Sphere && (strategy == std::uint32_t(LightSampler::Projected) ||
+                                                strategy == std::uint32_t(LightSampler::ProjectedExact)))
     {
         // Uniform over the region the visible cap projects to: cells in the tangent plane, the region from its
         // definition in double (a cap cut by the horizon has cells of directions cut by it, where the midpoint
@@ -331,7 +332,8 @@ TEST_P(GpuSamplerChiSquare, SamplesFollowTheCpuPdf)
                 }
                 tolerance += conditioning;
             }
-            if (sphere && run.strategy == std::uint32_t(LightSampler::Projected) && cpu == 0.0f)
+            if (sphere && run.strategy >= std::uint32_t(LightSampler::Projected) && run.strategy != kNoIndex &&
+                cpu == 0.0f)
             {
                 // Projected keeps a rim sample that rounding moved a few ulps out of the cone, with its
                 // density cos / F, where lightPdf's chord test says 0 (LightSampling.h): a set of no measure,
@@ -376,7 +378,8 @@ std::vector<SamplerRun> runs()
 {
     std::vector<SamplerRun> out;
     for (std::uint32_t strategy : {std::uint32_t(LightSampler::Area), std::uint32_t(LightSampler::SolidAngle),
-                                   std::uint32_t(LightSampler::Projected), kNoIndex})
+                                   std::uint32_t(LightSampler::Projected), std::uint32_t(LightSampler::ProjectedExact),
+                                   kNoIndex})
         for (LightShape shape : {LightShape::Sphere, LightShape::Quad, LightShape::Triangle})
             out.push_back({strategy, shape});
     return out;

@@ -125,7 +125,7 @@ RT_FN bool sampleSphereLight(RT_IN(LightData) light, vec3 p, vec2 u, RT_OUT(Ligh
 /// from outside; else book 3's.
 RT_FN float sphereLightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec3 wi)
 {
-    if (strategy == RT_ENUM(LightSampler, Projected))
+    if (strategy == RT_ENUM(LightSampler, Projected) || strategy == RT_ENUM(LightSampler, ProjectedExact))
     {
         ProjectedCap cap;
         const uint kind = projectedCap(light, p, n, cap);
@@ -159,7 +159,7 @@ RT_FN float sphereLightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy
 RT_FN bool sampleSphereLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec2 u,
                              RT_OUT(LightSample) ls)
 {
-    if (strategy == RT_ENUM(LightSampler, Projected))
+    if (strategy == RT_ENUM(LightSampler, Projected) || strategy == RT_ENUM(LightSampler, ProjectedExact))
     {
         ProjectedCap cap;
         const uint kind = projectedCap(light, p, n, cap);
