@@ -100,6 +100,10 @@ inline double clamp(double x, double lo, double hi) { return min(max(x, lo), hi)
 // Exact-error arithmetic (Shared/SphereQuadratic.h) needs every operation rounded as written: C++ builds with
 // -ffp-contract=off project-wide; GLSL marks such variables `precise` (no fused multiply-add, no reordering).
 #define RT_PRECISE
+// A loop the GPU compiler must keep rolled (GL_EXT_control_flow_attributes' [[dont_unroll]]): a sampler's
+// iterations unrolled into the megakernel cost every path registers and code, taken or not (the horizon-clipped
+// cap's, docs/notebook/PERFORMANCE.md §14). C++ compilers decide for themselves.
+#define RT_DONT_UNROLL
 #else
 // Common/Math/Math.h's constants and helpers, for GLSL.
 const float kPi = 3.14159265358979323846;
@@ -148,6 +152,8 @@ float signNotZero(float x)
 #define RT_SHADER_NAMESPACE_BEGIN
 #define RT_SHADER_NAMESPACE_END
 #define RT_PRECISE precise
+#extension GL_EXT_control_flow_attributes : enable
+#define RT_DONT_UNROLL [[dont_unroll]]
 #endif
 
 #endif

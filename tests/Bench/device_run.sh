@@ -4,6 +4,7 @@
 # glibc; layers/: the Khronos validation layer) and Debian's Vulkan loader in .gl/, both made here by
 # tests/Bench/device_carry.sh (figures in docs/notebook/PERFORMANCE.md).
 #   tests/Bench/device_run.sh tests    the GPU test suite (but its heavy part) and the apps' smoke tests
+#   tests/Bench/device_run.sh samplers the light samplers at equal time on the light scenes (issue 37)
 #   tests/Bench/device_run.sh heavy    the heavy part: CPU/GPU agreement of every scene at 128 px, 64 spp
 #   tests/Bench/device_run.sh table    thesis Table 5.4 redone: cornell-box-lights 600x600, depth 50, mixture
 #   tests/Bench/device_run.sh estimators  the same scene on the GPU with each estimator against one reference
@@ -120,6 +121,21 @@ variants)
     ls -d .devcarry/variants/*/ >/dev/null || { echo "no shader variants carried (VARIANTS of device_carry.sh)"; exit 2; }
     ROUNDS=${ROUNDS:-3} bash tests/Bench/shader_variants.sh "$bin" /tmp/variants "${2:?variants needs a RENDERS_FILE}" \
         "$bin/shaders" .devcarry/variants/* | tee "$out/variants.txt"
+    ;;
+samplers)
+    # Issue 37's light samplers at equal time on the light scenes: solid-angle, projected (the bilinear warp for
+    # polygons, the horizon-clipped cap for spheres) and projected-exact (Peters 2021 for polygons), nee-mis,
+    # SEEDS (4) seeds of MS (1000) ms each against a REF_SPP (65536) reference; tables, CSVs and figures in one
+    # archive (the device tool brings back few files).
+    rm -rf /tmp/samplers && mkdir -p /tmp/samplers
+    for scene in ${SCENES:-rect-light-closeup sphere-light-closeup triangle-lights cornell-box-lights}; do
+        "$bin/ray-tracing-gpu" --compare --quiet --scene "$scene" --width "${WIDTH:-600}" --engines gpu \
+            --estimators nee-mis --light-samplers solid-angle,projected,projected-exact --equal-time "${MS:-1000}" \
+            --seeds "${SEEDS:-4}" --rounds 1 --reference-spp "${REF_SPP:-65536}" --reference-cache off \
+            --output "/tmp/samplers/$scene-grid.png" --csv "/tmp/samplers/$scene.csv" | tee "/tmp/samplers/$scene.txt"
+    done
+    cat /tmp/samplers/*.txt >"$out/samplers.txt"
+    (cd /tmp/samplers && tar -czf "$out/samplers.tar.gz" ./*)
     ;;
 ab)
     ROUNDS=${ROUNDS:-3} bash tests/Bench/gpu_ab.sh .devcarry/baseline "$bin" /tmp/ab ${2:-} | tee "$out/ab.txt"

@@ -79,19 +79,24 @@ RT_FN float diskSegmentArea(float theta)
 /// The half-angle theta in [0, pi] of the disk segment of area `area` in [0, pi] (diskSegmentArea's inverse).
 /// By the symmetry g(pi - theta) = pi - g(theta) the root is found on [0, pi/2], where g is increasing and
 /// convex: Newton's method from cbrt(1.5 area), which is below the root (g <= 2/3 theta^3), overshoots once and
-/// then descends monotonically; g' = 2 sin^2(theta). Five steps reach float's precision from a start within 26 %.
+/// then descends monotonically; g' = 2 sin^2(theta). Five steps reach float's precision from a start within 26 %;
+/// a step below 1e-7 of theta ends it (the GPU's warps wait for their slowest thread).
 RT_FN float diskSegmentAngle(float area)
 {
     const bool upper = area > 0.5f * kPi;
     const float a = max(upper ? kPi - area : area, 0.0f);
     float theta = min(pow(1.5f * a, 1.0f / 3.0f), 0.5f * kPi);
-    for (int i = 0; i < 6; ++i)
+    RT_DONT_UNROLL for (int i = 0; i < 6; ++i)
     {
         const float s = preciseSin(theta);
         const float slope = 2.0f * s * s;
         if (!(slope > 0.0f))
             break;
-        theta = clamp(theta - (diskSegmentArea(theta) - a) / slope, 0.0f, 0.5f * kPi);
+        const float next = clamp(theta - (diskSegmentArea(theta) - a) / slope, 0.0f, 0.5f * kPi);
+        const bool converged = abs(next - theta) <= 1e-7f * theta;
+        theta = next;
+        if (converged)
+            break;
     }
     return upper ? kPi - theta : theta;
 }
@@ -105,9 +110,12 @@ RT_FN float capCubicRemainder(float w)
         float sum = 0.0f;
         float power = w * w2;
         float sign = 1.0f;
-        for (int k = 1; k <= 12; ++k) // (1/2)^24 / 25: float's precision
+        RT_DONT_UNROLL for (int k = 1; k <= 12; ++k) // (1/2)^24 / 25: float's precision
         {
-            sum += sign * power / float(2 * k + 1);
+            const float term = power / float(2 * k + 1);
+            sum += sign * term;
+            if (term <= 1e-8f * sum) // alternating, decreasing: the rest is below this term
+                break;
             power *= w2;
             sign = -sign;
         }
@@ -132,9 +140,12 @@ RT_FN float crescentArea(float sinAlpha, float cosAlpha, float s)
         float rPower = r2;
         float sum = 0.0f;
         float sign = 1.0f;
-        for (int k = 1; k <= 14; ++k) // r^2 < 1/4: (1/4)^12 below float's precision of the first terms
+        RT_DONT_UNROLL for (int k = 1; k <= 14; ++k) // r^2 < 1/4: (1/4)^12 below float's precision of the first terms
         {
-            sum += sign * u * rPower * d / float(2 * k + 1);
+            const float term = u * rPower * d / float(2 * k + 1);
+            sum += sign * term;
+            if (k > 2 && term <= 1e-8f * abs(sum)) // the first two terms may nearly cancel; then each is 1/4 of the last
+                break;
             d += sPower * cosBeta2;
             sPower *= s * s;
             rPower *= r2;
@@ -275,7 +286,7 @@ RT_FN vec3 sampleProjectedCap(RT_IN(ProjectedCap) cap, vec3 n, vec2 u)
     float hi = cap.tangentTheta;
     float theta = 0.5f * (lo + hi);
     float ellipseHeight = 0.0f;
-    for (int i = 0; i < 24; ++i)
+    RT_DONT_UNROLL for (int i = 0; i < 24; ++i)
     {
         const float residual = crescentSweptArea(cap, theta, ellipseHeight) - target;
         if (residual > 0.0f)
@@ -286,9 +297,12 @@ RT_FN vec3 sampleProjectedCap(RT_IN(ProjectedCap) cap, vec3 n, vec2 u)
         float next = slope > 0.0f ? theta - residual / slope : 0.5f * (lo + hi);
         if (!(next > lo && next < hi))
             next = 0.5f * (lo + hi);
-        if (next == theta)
-            break;
+        // Float's Newton can cycle between neighbours instead of settling: a step below 1e-7 of the bracket ends
+        // it (the GPU's warps wait for their slowest thread).
+        const bool converged = abs(next - theta) <= 1e-7f * cap.tangentTheta;
         theta = next;
+        if (converged)
+            break;
     }
     crescentSweptArea(cap, theta, ellipseHeight);
     // Over the chord at cos(theta) the crescent is ellipseHeight <= |y| <= sin(theta): u.y picks the side, and

@@ -319,7 +319,7 @@ RT_FN RealVec3 sampleProjectedPolygon(RT_IN(ProjectedPolygon) g, vec2 u)
     Real lo = 0.0;
     Real hi = width;
     Real t = width * (sectorArea[pick] > 0.0 ? target / sectorArea[pick] : 0.5);
-    for (int i = 0; i < 16; ++i)
+    RT_DONT_UNROLL for (int i = 0; i < 16; ++i)
     {
         const RealVec2 d = rotatePlane(dlo, t);
         Real oneMinusFar = 0.0;
@@ -336,9 +336,11 @@ RT_FN RealVec3 sampleProjectedPolygon(RT_IN(ProjectedPolygon) g, vec2 u)
         Real next = slope > 0.0 ? t - residual / slope : 0.5 * (lo + hi);
         if (!(next > lo && next < hi))
             next = 0.5 * (lo + hi);
-        if (next == t)
-            break;
+        // Newton in float can cycle between neighbours instead of settling: a step below 1e-7 of the sector ends it.
+        const bool converged = abs(next - t) <= 1e-7 * width;
         t = next;
+        if (converged)
+            break;
     }
     const RealVec2 d = rotatePlane(dlo, t);
     Real oneMinusFar = 0.0;
