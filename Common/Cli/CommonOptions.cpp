@@ -119,7 +119,13 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
         ->type_name("X");
     app.add_option("--pdf", o.pdf, "The books' name for two estimators: on = --estimator mixture, off = bsdf");
     app.add_option("--output", o.output, "Write the tone-mapped sRGB image here (.png)")->check(namesAFile());
-    app.add_option("--hdr", o.hdr, "Write the linear radiance image here (.pfm)")->check(namesAFile());
+    app.add_option("--hdr", o.hdr, "Write the linear radiance image here: .pfm (float) or .exr (OpenEXR, ZIP)")
+        ->check(namesAFile());
+    app.add_option("--hdr-type", o.hdrType,
+                   "The channel type of an .exr --hdr: half (16-bit, 11 significant bits, values beyond 65504 clamped "
+                   "to it) or float (32-bit, the image bit for bit); a .pfm is always float")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"half", "float"}));
     app.add_option("--stats", o.stats, "Write render statistics as JSON here")->check(namesAFile());
     app.add_option("--count", o.count,
                    "Object count for scenes that scale (white-spheres: spheres, default 20000; many-lights: lights, "

@@ -27,6 +27,7 @@ struct CommonOptions
     std::optional<std::string> pdf; // the books' name for two estimators
     std::string output;
     std::string hdr;
+    std::string hdrType = "half"; // --hdr-type: an .exr's channels
     std::string stats;
     std::optional<int> count; // >= 1 (CLI11 checks); empty: the scene's default
     std::string mesh;

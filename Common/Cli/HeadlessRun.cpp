@@ -119,7 +119,7 @@ void checkOutputPath(const std::string& path, const char* flag, std::initializer
 void checkOutputPaths(const CommonOptions& o)
 {
     checkOutputPath(o.output, "--output", {".png"});
-    checkOutputPath(o.hdr, "--hdr", {".pfm"});
+    checkOutputPath(o.hdr, "--hdr", {".pfm", ".exr"});
     checkOutputPath(o.stats, "--stats", {".json"});
 }
 
@@ -150,7 +150,17 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& r
     if (!o.output.empty())
         outputs.add(o.output, [&](const std::filesystem::path& tmp) { writePng(tmp, result.image); });
     if (!o.hdr.empty())
-        outputs.add(o.hdr, [&](const std::filesystem::path& tmp) { writePfm(tmp, result.image); });
+    {
+        // By --hdr's extension, not the temporary's.
+        std::string extension = std::filesystem::path(o.hdr).extension().string();
+        for (char& c : extension)
+            c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        const bool exr = extension == ".exr";
+        const ExrPixelType type = o.hdrType == "float" ? ExrPixelType::Float : ExrPixelType::Half;
+        outputs.add(o.hdr, [&, exr, type](const std::filesystem::path& tmp) {
+            exr ? writeExr(tmp, result.image, type) : writePfm(tmp, result.image);
+        });
+    }
     if (!o.stats.empty())
         outputs.add(o.stats, [&](const std::filesystem::path& tmp) { writeStatsJson(tmp, result.stats); });
     outputs.commit();

@@ -77,7 +77,7 @@ std::optional<Reference> obtainReference(const Scene& scene, const RenderRequest
 {
     if (!options.referencePath.empty())
     {
-        Image reference = readPfm(options.referencePath);
+        Image reference = readLinearImage(options.referencePath);
         if (reference.width() != base.settings.width || reference.height() != base.settings.height())
             throw UsageError(fmt::format("--reference {} is {}x{}; the comparison renders {}x{}", options.referencePath,
                                          reference.width(), reference.height(), base.settings.width,

@@ -31,7 +31,7 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
                    "last engine in two halves (seeds + 1000 and + 2000) whose difference gives the reference's own "
                    "relMSE");
     app.add_option("--reference", flags.referencePath,
-                   "With --compare: a linear PFM of the same size (e.g. a long --hdr render) to measure against "
+                   "With --compare: a linear PFM or OpenEXR of the same size (e.g. a long --hdr render) to measure against "
                    "instead of rendering a reference")
         ->check(CLI::ExistingFile);
     app.add_option("--table", flags.table, "With --compare: write every figure as JSON here")->check(namesAFile());

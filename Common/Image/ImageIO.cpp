@@ -134,13 +134,20 @@ void writePfm(const std::filesystem::path& path, const Image& image)
     });
 }
 
-std::filesystem::path writePngWithPfm(const std::filesystem::path& png, const Image& image)
+std::vector<std::filesystem::path> writePngWithLinear(const std::filesystem::path& png, const Image& image)
 {
-    std::filesystem::path pfm = png;
+    std::filesystem::path pfm = png, exr = png;
     pfm.replace_extension(".pfm");
+    exr.replace_extension(".exr");
     writePng(png, image);
     writePfm(pfm, image);
-    return pfm;
+    writeExr(exr, image, ExrPixelType::Float);
+    return {pfm, exr};
+}
+
+Image readLinearImage(const std::filesystem::path& path)
+{
+    return path.extension() == ".exr" ? readExr(path) : readPfm(path);
 }
 
 Image readPfm(const std::filesystem::path& path)
@@ -175,14 +182,16 @@ Image readPfm(const std::filesystem::path& path)
     return image;
 }
 
-void writeImage(const std::filesystem::path& path, const Image& image)
+void writeImage(const std::filesystem::path& path, const Image& image, ExrPixelType exrType)
 {
     const std::string ext = path.extension().string();
     if (ext == ".png" || ext == ".PNG")
         writePng(path, image);
     else if (ext == ".pfm" || ext == ".PFM")
         writePfm(path, image);
+    else if (ext == ".exr" || ext == ".EXR")
+        writeExr(path, image, exrType);
     else
-        throw UsageError(fmt::format("cannot write '{}': the image format must be .png or .pfm", path.string()));
+        throw UsageError(fmt::format("cannot write '{}': the image format must be .png, .pfm or .exr", path.string()));
 }
 } // namespace rt

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "Image/ExrIO.h"
 #include "Image/Image.h"
 
 namespace rt
@@ -19,15 +20,20 @@ void writePng8(const std::filesystem::path& path, int width, int height, const s
 /// Portable Float Map ("PF", little-endian, bottom row first per the format): lossless linear radiance.
 void writePfm(const std::filesystem::path& path, const Image& image);
 
-/// What the windows' Save image writes: `png` (writePng) and its linear radiance beside it, the same name
-/// with .pfm (writePfm). Returns the PFM's path.
-std::filesystem::path writePngWithPfm(const std::filesystem::path& png, const Image& image);
+/// What the windows' Save image writes: `png` (writePng) and its linear radiance beside it, the same name with
+/// .pfm (writePfm) and with .exr (float OpenEXR, Image/ExrIO.h, for the tools that read no PFM). Returns the
+/// linear files' paths, PFM first.
+std::vector<std::filesystem::path> writePngWithLinear(const std::filesystem::path& png, const Image& image);
 
 /// Reads a PFM written by writePfm (or any RGB little- or big-endian PFM). Throws AssetError.
 Image readPfm(const std::filesystem::path& path);
 
-/// Writes by extension: .png or .pfm. Throws UsageError for anything else.
-void writeImage(const std::filesystem::path& path, const Image& image);
+/// Reads a linear image by its extension: OpenEXR (.exr, Image/ExrIO.h) or else PFM. Throws AssetError.
+Image readLinearImage(const std::filesystem::path& path);
+
+/// Writes by extension: .png, .pfm or .exr (half unless `exrType` says float). Throws UsageError for anything
+/// else.
+void writeImage(const std::filesystem::path& path, const Image& image, ExrPixelType exrType = ExrPixelType::Half);
 
 /// The sRGB-encoded 8-bit value of a linear value in [0, 1].
 unsigned char linearToSrgb8(float linear);

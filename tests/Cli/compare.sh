@@ -123,7 +123,8 @@ for spp in (4, 8):
     mean = sum(values) / 3
     sd = math.sqrt(sum((v - mean) ** 2 for v in values) / 2)
     row = next(r for r in table["rows"] if r["spp"] == spp)["multi"]
-    assert row["seeds"] == 3 and abs(row["relmse"] - mean) <= 1e-9 * mean, (row, mean)
+    # The CSV holds 9 significant digits: its mean is the table's within 1e-8.
+    assert row["seeds"] == 3 and abs(row["relmse"] - mean) <= 1e-8 * mean, (row, mean)
     lo, hi = row["relmse_ci95"]
     half = 4.3027 * sd / math.sqrt(3)
     assert abs(lo - (mean - half)) <= 1e-4 * half and abs(hi - (mean + half)) <= 1e-4 * half, (lo, hi, mean, half)

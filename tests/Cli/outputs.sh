@@ -19,10 +19,36 @@ for key in scene engine settings true_spp wall_seconds build_seconds mpaths_per_
     grep -q "\"$key\"" "$work/a.json" || { echo "stats.json lacks $key"; exit 1; }
 done
 python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['true_spp']==2 and d['nan_samples']==0" "$work/a.json"
+# The same render as OpenEXR: float is the PFM's values bit for bit, half within half's precision (read back by
+# OpenImageIO where Debian's python3-openimageio is installed, else only the file's magic number).
+for type in float half; do
+    "$app" --headless --quiet --scene rtrol-cornell-box --width 24 --spp 2 --depth 8 --seed 3 \
+        --hdr "$work/a-$type.exr" --hdr-type "$type" >/dev/null
+    head -c 4 "$work/a-$type.exr" | od -An -tx1 | grep -q "76 2f 31 01" || { echo "--hdr .exr wrote no OpenEXR"; exit 1; }
+done
+if /usr/bin/python3 -c "import OpenImageIO, numpy" 2>/dev/null; then
+    /usr/bin/python3 - "$work" <<'PY' || { echo "the EXRs do not hold the PFM's image"; exit 1; }
+import sys, numpy as np, OpenImageIO as oiio
+work = sys.argv[1]
+def pfm(path):
+    data = open(path, "rb").read()
+    parts = data.split(b"\n", 3)
+    w, h = map(int, parts[1].split())
+    return np.frombuffer(parts[3], dtype="<f4").reshape(h, w, 3)[::-1]
+reference = pfm(f"{work}/a.pfm")
+exact = oiio.ImageInput.open(f"{work}/a-float.exr").read_image("float")
+half = oiio.ImageInput.open(f"{work}/a-half.exr").read_image("float")
+assert np.array_equal(exact, reference), "float EXR differs from the PFM"
+assert np.allclose(half, reference, rtol=2.0 ** -11, atol=2.0 ** -24), "half EXR beyond half's precision"
+PY
+fi
+"$app" --headless --quiet --scene rtrol-cornell-box --width 8 --spp 1 --hdr "$work/bad.png" >/dev/null 2>"$work/bad.txt" &&
+    { echo "--hdr .png was accepted"; exit 1; }
+grep -q "must end in .pfm or .exr" "$work/bad.txt" || { cat "$work/bad.txt"; exit 1; }
 
 help=$("$app" --help)
 for flag in --headless --scene --spp --depth --width --aspect --sampling --pdf --unidirectional-light --seed \
-    --output --hdr --stats --list-scenes; do
+    --output --hdr --hdr-type --stats --list-scenes; do
     grep -q -- "$flag" <<<"$help" || { echo "--help does not explain $flag"; exit 1; }
 done
 [ "$("$app" --list-scenes | wc -l)" -ge 22 ]

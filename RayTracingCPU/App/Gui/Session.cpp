@@ -186,7 +186,7 @@ bool Session::saveImage(const std::filesystem::path& png)
         if (const std::string problem = saveImagePathProblem(png.string()); !problem.empty())
             throw UsageError(problem);
         const Preview& p = *m_preview;
-        const std::filesystem::path pfm = writePngWithPfm(png, p.linear);
+        const std::vector<std::filesystem::path> linear = writePngWithLinear(png, p.linear);
         // The image is written as it is on screen; what it is, the message says.
         std::string what;
         if (!p.complete && !p.request.loop)
@@ -196,7 +196,9 @@ bool Session::saveImage(const std::filesystem::path& png)
             what = fmt::format(": {} spp of loop rendering, the last pass partial", p.samples);
         if (imageIsStale())
             what += " (rendered with other settings than the panel's)";
-        note(fmt::format("saved {} and {}{}", png.string(), pfm.filename().string(), what), false);
+        note(fmt::format("saved {}, {} and {}{}", png.string(), linear[0].filename().string(),
+                         linear[1].filename().string(), what),
+             false);
         spdlog::info("{}", message());
         return true;
     }

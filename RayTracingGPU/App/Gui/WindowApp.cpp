@@ -292,8 +292,8 @@ private:
                                  "the first frame)");
             m_presenter.waitIdle();
             const Image image = m_renderer.readImage();
-            const std::filesystem::path pfm = writePngWithPfm(png, image);
-            m_state.message = "saved " + png.string() + " and " + pfm.string() + " (" +
+            const std::vector<std::filesystem::path> linear = writePngWithLinear(png, image);
+            m_state.message = "saved " + png.string() + ", " + linear[0].string() + " and " + linear[1].string() + " (" +
                               std::to_string(m_accumulatedSpp) + " spp)";
             spdlog::info("{}", m_state.message);
         }
