@@ -8,14 +8,15 @@
 // along x and sin(alpha) along y (§3). What the horizon leaves of the cap projects to:
 //   - beta >= alpha (whole): the ellipse;
 //   - 0 <= beta < alpha (clipped): the ellipse left of the chord x = x_t = cos(alpha) / cos(beta), where its rim
-//     touches the unit circle (the horizon), joined to the disk's segment right of that chord (§4.2);
+//     touches the unit circle (the horizon), joined to the disk's segment right of that chord (§4.2); the same
+//     region is the whole ellipse and the crescent of -beta side by side, which is how it is sampled;
 //   - -alpha < beta < 0 (crescent): the disk's segment right of the chord less the ellipse there;
 //   - beta <= -alpha: nothing.
 // Its area F is the cap's projected solid angle (the irradiance of a unit-radiance sphere), and a point uniform
-// over it, lifted to the hemisphere, is a direction of solid-angle density cos / F. The clipped and crescent
-// shapes are swept along x (the paper's "parallel" map): u1 picks the abscissa by inverting the swept area, u2
-// the ordinate uniformly over the region's chord there, so the map of the unit square is area-preserving and
-// monotone in each coordinate (stratification survives). The sweep's areas are disk segments
+// over it, lifted to the hemisphere, is a direction of solid-angle density cos / F. The ellipse is sampled by
+// the concentric map scaled to it; the crescent is swept along x (the paper's "parallel" map): u1 picks the
+// abscissa by inverting the swept area, u2 the ordinate uniformly over the region's chord there, so the map of
+// the unit square is area-preserving and monotone in each coordinate (stratification survives). The sweep's areas are disk and ellipse segments
 // (diskSegmentArea), inverted by Newton's method.
 //
 // Closed forms written for float32 (research notes §0.2): with s = |sin beta|, q = sqrt(sin^2 alpha - s^2) (the
@@ -74,31 +75,6 @@ RT_FN float diskSegmentArea(float theta)
                 w2 * (1.0f / 240.0f - w2 * (1.0f / 10080.0f - w2 * (1.0f / 725760.0f - w2 * (1.0f / 79833600.0f)))));
     }
     return theta - 0.5f * preciseSin(2.0f * theta);
-}
-
-/// The half-angle theta in [0, pi] of the disk segment of area `area` in [0, pi] (diskSegmentArea's inverse).
-/// By the symmetry g(pi - theta) = pi - g(theta) the root is found on [0, pi/2], where g is increasing and
-/// convex: Newton's method from cbrt(1.5 area), which is below the root (g <= 2/3 theta^3), overshoots once and
-/// then descends monotonically; g' = 2 sin^2(theta). Five steps reach float's precision from a start within 26 %;
-/// a step below 1e-7 of theta ends it (the GPU's warps wait for their slowest thread).
-RT_FN float diskSegmentAngle(float area)
-{
-    const bool upper = area > 0.5f * kPi;
-    const float a = max(upper ? kPi - area : area, 0.0f);
-    float theta = min(pow(1.5f * a, 1.0f / 3.0f), 0.5f * kPi);
-    RT_DONT_UNROLL for (int i = 0; i < 6; ++i)
-    {
-        const float s = preciseSin(theta);
-        const float slope = 2.0f * s * s;
-        if (!(slope > 0.0f))
-            break;
-        const float next = clamp(theta - (diskSegmentArea(theta) - a) / slope, 0.0f, 0.5f * kPi);
-        const bool converged = abs(next - theta) <= 1e-7f * theta;
-        theta = next;
-        if (converged)
-            break;
-    }
-    return upper ? kPi - theta : theta;
 }
 
 /// w - atan(w) for w >= 0, by its series below 0.5.
@@ -226,15 +202,6 @@ RT_FN vec3 liftEllipsePoint(RT_IN(ProjectedCap) cap, vec3 n, float ex, float ey)
     return normalize(x * cap.x + y * cap.y + z * n);
 }
 
-/// The hemisphere's direction over the unit disk's point (cos(theta), (2 w - 1) sin(theta)), w in [0, 1); its
-/// height 2 sin(theta) sqrt(w (1 - w)) is exact where the direction nears the horizon.
-RT_FN vec3 liftDiskPoint(RT_IN(ProjectedCap) cap, vec3 n, float theta, float w)
-{
-    const float sinTheta = preciseSin(theta);
-    const float z = max(2.0f * sinTheta * sqrt(w * (1.0f - w)), kMinCapLift * sinTheta);
-    return normalize(preciseCos(theta) * cap.x + (2.0f * w - 1.0f) * sinTheta * cap.y + z * n);
-}
-
 /// The crescent's area right of the chord at cos(theta), theta in [0, tangentTheta]: the disk's segment less
 /// the ellipse's part there, (x - centre) / semi-axis = cos(thetaE).
 RT_FN float crescentSweptArea(RT_IN(ProjectedCap) cap, float theta, RT_OUT(float) ellipseHeight)
@@ -261,27 +228,28 @@ RT_FN vec3 sampleProjectedCap(RT_IN(ProjectedCap) cap, vec3 n, vec2 u)
         const vec2 disk = sampleUniformDiskConcentric(u);
         return liftEllipsePoint(cap, n, disk.x, disk.y);
     }
+    // The clipped shape is the whole ellipse and the crescent side by side: right of the horizon chord the disk's
+    // segment is all visible, and that segment is the ellipse's part there and the crescent of -beta, whose shape
+    // does not depend on beta's sign (its area is the G of the header: F = pi sin^2(alpha) sin(beta) + G). u.x
+    // picks one of the two by area; the ellipse takes the concentric map, so only the crescent needs a sweep.
+    float crescent = cap.area;
+    float ux = u.x;
     if (cap.kind == kCapClipped)
     {
-        // Swept from the ellipse's far-left end: the ellipse left of the chord (area sin^2(alpha) sin(beta)
-        // (pi - g(ellipseTheta))), then the disk's segment right of it (g(tangentTheta)).
-        const float ellipseScale = cap.sinAlpha * cap.sinAlpha * cap.sinBeta;
-        const float ellipsePart = ellipseScale * (kPi - diskSegmentArea(cap.ellipseTheta));
-        const float swept = u.x * cap.area;
-        if (swept < ellipsePart)
+        const float ellipseArea = kPi * cap.sinAlpha * cap.sinAlpha * cap.sinBeta;
+        const float picked = u.x * cap.area;
+        if (picked < ellipseArea)
         {
-            // The ellipse's area left of ex = cos(phi) is scale (pi - g(phi)), phi in [ellipseTheta, pi].
-            const float phi = max(diskSegmentAngle(kPi - swept / ellipseScale), cap.ellipseTheta);
-            return liftEllipsePoint(cap, n, preciseCos(phi), (2.0f * u.y - 1.0f) * preciseSin(phi));
+            const vec2 disk = sampleUniformDiskConcentric(vec2(min(picked / ellipseArea, 0.99999994f), u.y));
+            return liftEllipsePoint(cap, n, disk.x, disk.y);
         }
-        // The segment's area right of cos(theta) is what the sweep has left, theta in [0, tangentTheta].
-        const float theta = min(diskSegmentAngle(cap.area - swept), cap.tangentTheta);
-        return liftDiskPoint(cap, n, theta, u.y);
+        crescent = cap.area - ellipseArea;
+        ux = min((picked - ellipseArea) / crescent, 0.99999994f);
     }
-    // Crescent, swept from the disk's edge inwards: its area right of cos(theta) increases with theta, with
+    // The crescent, swept from the disk's edge inwards: its area right of cos(theta) increases with theta, with
     // derivative 2 sin(theta) (sin(theta) - ellipse height); Newton's method kept inside a shrinking bracket
     // (bisection where a step leaves it).
-    const float target = u.x * cap.area;
+    const float target = ux * crescent;
     float lo = 0.0f;
     float hi = cap.tangentTheta;
     float theta = 0.5f * (lo + hi);
