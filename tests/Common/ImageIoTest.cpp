@@ -103,7 +103,7 @@ TEST(Pfm, RejectsTruncatedAndForeignFiles)
 TEST(WriteImage, AnUnknownExtensionIsAUsageErrorAndWritesNothing)
 {
     const test::ScratchDir dir;
-    for (const char* name : {"image.jpg", "image.exr", "image"})
+    for (const char* name : {"image.jpg", "image.tiff", "image"})
     {
         EXPECT_THROW(writeImage(dir / name, Image(2, 2)), UsageError) << name;
     }

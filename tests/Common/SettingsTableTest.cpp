@@ -77,7 +77,8 @@ TEST(SettingsTable, ValuesOutsideTheRangeOrWordsAreRefusedNamingWhatIsExpected)
     EXPECT_THROW(spp.set(s, "0", "--spp"), UsageError);
     const Setting& sampler = setting("light-sampler");
     EXPECT_FALSE(sampler.assign(sampler, s, "cosine"));
-    EXPECT_EQ(sampler.refusal("cosine"), "light sampler must be area, solid-angle or projected (got 'cosine')");
+    EXPECT_EQ(sampler.refusal("cosine"),
+              "light sampler must be area, solid-angle, projected or projected-exact (got 'cosine')");
     const Setting& aspect = setting("aspect");
     EXPECT_FALSE(aspect.assign(aspect, s, "0"));
     EXPECT_FALSE(aspect.assign(aspect, s, "1e308")); // finite as a double, not as a float

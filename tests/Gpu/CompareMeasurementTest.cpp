@@ -102,7 +102,9 @@ TEST(CompareMeasurement, TheSameStrategyFirstAndLastIsEquallyEfficient)
         const nlohmann::json& first = rows.at(0).at(engine);
         const nlohmann::json& last = rows.at(2).at(engine);
         EXPECT_EQ(first.at("relmse_seeds"), last.at("relmse_seeds")) << "the same seeds render the same images";
-        const Interval ratio = ratioInterval(inverseEfficiency(first), inverseEfficiency(last));
+        // At 99 %: two engines' 95 % intervals would miss 1 one run in ten by chance alone (seen on the H100);
+        // without warm-up and rounds the first row's ratio is far outside either.
+        const Interval ratio = ratioInterval(inverseEfficiency(first), inverseEfficiency(last), 0.99);
         EXPECT_TRUE(ratio.contains(1.0)) << "first / last efficiency " << ratio.mean << " [" << ratio.lo << ", "
                                          << ratio.hi << "]";
     }

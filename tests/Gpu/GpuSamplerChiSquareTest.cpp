@@ -332,7 +332,24 @@ TEST_P(GpuSamplerChiSquare, SamplesFollowTheCpuPdf)
                 }
                 tolerance += conditioning;
             }
-            if (sphere && run.strategy >= std::uint32_t(LightSampler::Projected) && run.strategy != kNoIndex &&
+            const bool projected = run.strategy == std::uint32_t(LightSampler::Projected) ||
+                                   run.strategy == std::uint32_t(LightSampler::ProjectedExact);
+            // Projected's warp of polygons is not cos / P (its pdf is the warp's, floored): only the exact ones.
+            if ((sphere && projected) || run.strategy == std::uint32_t(LightSampler::ProjectedExact))
+            {
+                // The exact projected samplers' pdf is cos / P: a direction near the horizon has a cosine of the order
+                // of its components' rounding, which differs between drivers (NVIDIA's relaxed float arithmetic):
+                // 2e-7 / cos relative. Beyond 1 % the histogram, not the pdf, checks the sample (counted below).
+                const double cosine = glm::dot(dvec3(c.n), dvec3(wi));
+                const double conditioning = 2e-7 / std::max(cosine, 1e-12);
+                if (conditioning >= 1e-2)
+                {
+                    ++illConditioned;
+                    continue;
+                }
+                tolerance += conditioning;
+            }
+            if (sphere && projected && run.strategy != kNoIndex &&
                 cpu == 0.0f)
             {
                 // Projected keeps a rim sample that rounding moved a few ulps out of the cone, with its

@@ -200,10 +200,12 @@ RT_FN ProjectedPolygon makeProjectedPolygon(RT_IN(LightData) light, vec3 p, vec3
 }
 
 /// The local direction over the plane point r d, r^2 = r2, with 1 - r^2 = oneMinus given without cancellation.
+/// Its height is at least 1e-6 r: where the region meets the horizon float rounds the true height to 0, and a
+/// direction with cos = 0 has pdf 0, a dropped sample (as Lights/ProjectedCap.h's kMinCapLift).
 RT_FN RealVec3 liftPlanePoint(RealVec2 d, Real r2, Real oneMinus)
 {
     const Real r = sqrt(max(r2, 0.0));
-    return RealVec3(r * d.x, r * d.y, sqrt(max(oneMinus, 0.0)));
+    return RealVec3(r * d.x, r * d.y, max(sqrt(max(oneMinus, 0.0)), 1e-6 * r));
 }
 
 /// A local direction uniform over the polygon's projection (density cos / area per unit solid angle); g.count >= 3.
