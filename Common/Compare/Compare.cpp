@@ -646,7 +646,7 @@ int runComparison(const Scene& scene, const RenderRequest& base, const CompareOp
     }
     if (!options.plot.empty())
     {
-        drawFigure(options.plot, scriptPath("plot_convergence.py"), {options.csv});
+        drawFigure(options.plot, scriptPath("plot_convergence.py"), {options.csv, toString(options.metric)});
         std::printf("wrote %s\n", options.plot.c_str());
     }
     return 0;

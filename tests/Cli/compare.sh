@@ -55,7 +55,8 @@ grep -q "from the cache" "$work/err2.txt" || { cat "$work/err2.txt"; fail "the r
 
 # --metric flip: the table by mean HDR-FLIP, the CSV with every metric (FLIP on round 0), each falling with spp.
 "$app" "${common[@]}" --engines gpu --estimators mixture,nee-mis --spp-list 4,64 --rounds 2 --metric flip \
-    --csv "$work/f.csv" >"$work/outf.txt" 2>&1 || { cat "$work/outf.txt"; fail "--metric flip"; }
+    --csv "$work/f.csv" --plot "$work/f.png" >"$work/outf.txt" 2>&1 || { cat "$work/outf.txt"; fail "--metric flip"; }
+file "$work/f.png" | grep -q "PNG image data" || fail "no FLIP plot"
 grep -q "FLIP against 1024 spp" "$work/outf.txt" || { cat "$work/outf.txt"; fail "the FLIP table"; }
 python3 - "$work/f.csv" <<'PY' || fail "FLIP CSV rows"
 import csv, sys
