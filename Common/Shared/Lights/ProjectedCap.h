@@ -183,7 +183,7 @@ RT_FN uint projectedCap(RT_IN(LightData) light, vec3 p, vec3 n, RT_OUT(Projected
 }
 
 /// The least height of a sampled direction over the horizon, relative to its distance from the normal: where
-/// the region meets the horizon (the crescent's tips, a disk chord's ends) float rounds the true height, of the
+/// the region meets the horizon (the crescent's tips) float rounds the true height, of the
 /// order of float's precision there, to 0, and a direction with cos = 0 has pdf 0, a dropped sample (0.1 % of
 /// the samples at beta = -0.99 alpha). Lifted by at most this, it keeps pdf = cos / F and so its estimate
 /// L cos / pdf = L F.
