@@ -93,6 +93,15 @@ private:
     std::condition_variable m_wake;
     bool m_stop = false;
 };
+
+/// ".png" of "OUT.PNG": the extension as the checks compare it.
+std::string lowercaseExtension(const std::filesystem::path& path)
+{
+    std::string extension = path.extension().string();
+    for (char& c : extension)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return extension;
+}
 } // namespace
 
 void checkOutputPath(const std::string& path, const char* flag, std::initializer_list<const char*> extensions)
@@ -100,9 +109,7 @@ void checkOutputPath(const std::string& path, const char* flag, std::initializer
     if (path.empty())
         return;
     const std::filesystem::path p(path);
-    std::string extension = p.extension().string();
-    for (char& c : extension)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string extension = lowercaseExtension(p);
     bool known = false;
     for (const char* e : extensions)
         known |= extension == e; // OUT.PNG is a PNG too
@@ -152,10 +159,7 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& r
     if (!o.hdr.empty())
     {
         // By --hdr's extension, not the temporary's.
-        std::string extension = std::filesystem::path(o.hdr).extension().string();
-        for (char& c : extension)
-            c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        const bool exr = extension == ".exr";
+        const bool exr = lowercaseExtension(o.hdr) == ".exr";
         const ExrPixelType type = o.hdrType == "float" ? ExrPixelType::Float : ExrPixelType::Half;
         outputs.add(o.hdr, [&, exr, type](const std::filesystem::path& tmp) {
             exr ? writeExr(tmp, result.image, type) : writePfm(tmp, result.image);

@@ -212,7 +212,7 @@ struct SeededRow
         const std::vector<double> t = all([](const Measurement& m) { return m.ms(); });
         return (*std::max_element(t.begin(), t.end()) - *std::min_element(t.begin(), t.end())) / median(t);
     }
-    Interval relMse() const { return meanInterval(values([](const Measurement& m) { return m.error.relMse; })); }
+    Interval relMse() const { return metric(ErrorMetric::RelMse); }
     /// The metric's mean over the seeds (round 0's value: every round renders the same image).
     Interval metric(ErrorMetric which) const
     {

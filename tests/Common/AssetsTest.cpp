@@ -14,6 +14,7 @@
 #include "Assets/ObjLoader.h"
 #include "Error.h"
 #include "Image/ImageIO.h"
+#include "Support/AssetErrorOf.h"
 #include "Support/CubeObj.h"
 #include "Support/ScratchDir.h"
 
@@ -21,27 +22,6 @@ namespace rt
 {
 namespace
 {
-/// Runs `f`, which must throw AssetError; returns its message.
-template <typename F>
-std::string assetErrorOf(F&& f)
-{
-    try
-    {
-        f();
-    }
-    catch (const AssetError& e)
-    {
-        return e.what();
-    }
-    catch (const std::exception& e)
-    {
-        ADD_FAILURE() << "not an AssetError: " << e.what();
-        return {};
-    }
-    ADD_FAILURE() << "no AssetError";
-    return {};
-}
-
 void expectNamesOnOneLine(const std::string& message, const std::string& name)
 {
     EXPECT_NE(message.find(name), std::string::npos) << "'" << name << "' not in: " << message;
@@ -59,7 +39,7 @@ TEST(ObjLoader, AssimpsInvalidModelsAreRejectedNamingTheFile)
     for (const char* name : {"malformed.obj", "malformed2.obj", "empty.obj"})
     {
         const std::filesystem::path file = kAssimpInvalid / name;
-        expectNamesOnOneLine(assetErrorOf([&] { loadObj(file.string()); }), file.string());
+        expectNamesOnOneLine(test::assetErrorOf([&] { loadObj(file.string()); }), file.string());
     }
 }
 
@@ -72,7 +52,7 @@ TEST(ObjLoader, AFaceOfFewerThanThreeVerticesIsRejected)
     for (const char* face : {"f\n", "f 1 2\n", "f 1 2 # 3 in a comment\n"})
     {
         const auto file = dir.write("short.obj", vertices + "f 1 2 3\n" + face);
-        const std::string message = assetErrorOf([&] { loadObj(file.string()); });
+        const std::string message = test::assetErrorOf([&] { loadObj(file.string()); });
         expectNamesOnOneLine(message, file.string());
         EXPECT_NE(message.find("line 6"), std::string::npos) << message;
     }
@@ -84,7 +64,7 @@ TEST(ObjLoader, AVertexIndexOutOfRangeIsRejected)
 {
     const test::ScratchDir dir;
     const auto file = dir.write("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 4\n");
-    const std::string message = assetErrorOf([&] { loadObj(file.string()); });
+    const std::string message = test::assetErrorOf([&] { loadObj(file.string()); });
     expectNamesOnOneLine(message, file.string());
 }
 
@@ -104,7 +84,7 @@ TEST(ObjLoader, AnIndexOutOfRangeIsQuotedAsWritten)
     for (const auto& c : cases)
     {
         const auto file = dir.write("index.obj", vertices + "vt 0 0\nvn 0 0 1\n" + c.face);
-        const std::string message = assetErrorOf([&] { loadObj(file.string()); });
+        const std::string message = test::assetErrorOf([&] { loadObj(file.string()); });
         expectNamesOnOneLine(message, file.string());
         EXPECT_NE(message.find("line 6"), std::string::npos) << message;
         EXPECT_NE(message.find(c.quoted), std::string::npos) << c.face << " -> " << message;
@@ -119,7 +99,7 @@ TEST(ObjLoader, ACoordinateThatIsNotAFiniteNumberIsRejectedNamingTheLine)
                              "v 0 0 1x\n", "v 1 2 3 4 5\n", "vn 0 nan 1\n", "vn 0 1\n", "vt inf\n", "vt\n"})
     {
         const auto file = dir.write("nan.obj", std::string("v 0 0 0\n") + line + "v 1 0 0\nv 0 1 0\nf 1 3 4\n");
-        const std::string message = assetErrorOf([&] { loadObj(file.string()); });
+        const std::string message = test::assetErrorOf([&] { loadObj(file.string()); });
         expectNamesOnOneLine(message, file.string());
         EXPECT_NE(message.find("line 2"), std::string::npos) << line << " -> " << message;
     }
@@ -167,14 +147,14 @@ TEST(ObjLoader, AFlatMeshIsFittedByItsWidthAndAPointIsRefused)
     EXPECT_FLOAT_EQ(box.max.x - box.min.x, float(1.0 / kFlatMeshRatio));
     EXPECT_FLOAT_EQ(box.max.z - box.min.z, float(0.5 / kFlatMeshRatio));
     const auto point = dir.write("point.obj", "v 1 1 1\nv 1 1 1\nv 1 1 1\nf 1 2 3\n");
-    const std::string message = assetErrorOf([&] { loadObj(point.string()); });
+    const std::string message = test::assetErrorOf([&] { loadObj(point.string()); });
     expectNamesOnOneLine(message, point.string());
     EXPECT_NE(message.find("one point"), std::string::npos) << message;
 }
 
 TEST(ObjLoader, AMissingFileNamesThePath)
 {
-    const std::string message = assetErrorOf([] { loadObj("meshes/no-such-mesh.obj"); });
+    const std::string message = test::assetErrorOf([] { loadObj("meshes/no-such-mesh.obj"); });
     expectNamesOnOneLine(message, "meshes/no-such-mesh.obj");
     EXPECT_NE(message.find(assetRoot().string()), std::string::npos) << "where it looked: " << message;
 }
@@ -195,14 +175,14 @@ TEST(ObjLoader, LoadsTheBunny)
 
 TEST(ImageLoader, AMissingTextureNamesThePath)
 {
-    expectNamesOnOneLine(assetErrorOf([] { loadImage("textures/no-such-texture.png"); }), "textures/no-such-texture.png");
+    expectNamesOnOneLine(test::assetErrorOf([] { loadImage("textures/no-such-texture.png"); }), "textures/no-such-texture.png");
 }
 
 TEST(ImageLoader, AnUndecodableTextureNamesThePath)
 {
     const test::ScratchDir dir;
     const auto file = dir.write("broken.png", "this is not a PNG");
-    expectNamesOnOneLine(assetErrorOf([&] { loadImage(file.string()); }), file.string());
+    expectNamesOnOneLine(test::assetErrorOf([&] { loadImage(file.string()); }), file.string());
 }
 
 TEST(ImageLoader, LoadsSrgbTexelsTopRowFirst)
@@ -238,7 +218,7 @@ TEST(AssetPaths, AnExistingUserPathWinsOverTheAssetFolder)
     const auto file = dir.write("mine.obj", "v 0 0 0\n");
     EXPECT_EQ(resolveAsset(file.string(), "mesh"), file);
     EXPECT_EQ(resolveAsset("meshes/bunny.obj", "mesh"), assetRoot() / "meshes/bunny.obj");
-    const std::string message = assetErrorOf([] { resolveAsset("nowhere.obj", "mesh"); });
+    const std::string message = test::assetErrorOf([] { resolveAsset("nowhere.obj", "mesh"); });
     EXPECT_NE(message.find("mesh"), std::string::npos) << message;
 }
 

@@ -45,6 +45,8 @@
 
 #include "Error.h"
 #include "Image/ExrIO.h"
+#include "Support/AssetErrorOf.h"
+#include "Support/FileContents.h"
 #include "Support/ScratchDir.h"
 
 namespace rt
@@ -97,37 +99,9 @@ Image noisyImage(int width, int height, std::uint32_t seed)
     return image;
 }
 
-std::string readFile(const std::filesystem::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 void writeBytes(const std::filesystem::path& path, const std::string& bytes)
 {
     std::ofstream(path, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(bytes.size()));
-}
-
-/// Runs `read` and returns the AssetError's message; fails the test for no error or another kind.
-std::string assetErrorOf(const std::function<void()>& read)
-{
-    try
-    {
-        read();
-    }
-    catch (const AssetError& e)
-    {
-        return e.what();
-    }
-    catch (const std::exception& e)
-    {
-        ADD_FAILURE() << "not an AssetError: " << e.what();
-        return {};
-    }
-    ADD_FAILURE() << "no error";
-    return {};
 }
 
 bool mentions(const std::string& message, const std::string& what) { return message.find(what) != std::string::npos; }
@@ -660,9 +634,9 @@ numpy.ascontiguousarray(pixels, dtype=numpy.float32).tofile(pixels_out)
         ASSERT_EQ(runPython(python, dir, script,
                             {(dir / "ours.exr").string(), (dir / "spec.txt").string(), (dir / "pixels.f32").string()}),
                   0);
-        std::string spec = readFile(dir / "spec.txt");
+        std::string spec = test::fileContents(dir / "spec.txt");
         EXPECT_EQ(spec, std::string("13 6 0 0 13 6 0 0 R,G,B ") + (isFloat ? "float" : "half") + " zip 0\n");
-        const std::string bytes = readFile(dir / "pixels.f32");
+        const std::string bytes = test::fileContents(dir / "pixels.f32");
         ASSERT_EQ(bytes.size(), image.pixelCount() * sizeof(vec3));
         const Image ours = readExr(dir / "ours.exr");
         for (int y = 0; y < 6; ++y)
@@ -766,15 +740,15 @@ TEST(ExrErrors, MissingForeignEmptyAndFolderAreAssetErrorsNamingTheFile)
 {
     const test::ScratchDir dir;
     const auto missing = dir / "missing.exr";
-    EXPECT_TRUE(mentions(assetErrorOf([&] { readExr(missing); }), missing.string()));
+    EXPECT_TRUE(mentions(test::assetErrorOf([&] { readExr(missing); }), missing.string()));
     const auto text = dir.write("text.exr", "this is not an image, just text long enough to be read");
-    EXPECT_TRUE(mentions(assetErrorOf([&] { readExr(text); }), text.string()));
+    EXPECT_TRUE(mentions(test::assetErrorOf([&] { readExr(text); }), text.string()));
     const auto empty = dir.write("empty.exr", "");
-    EXPECT_TRUE(mentions(assetErrorOf([&] { readExr(empty); }), empty.string()));
+    EXPECT_TRUE(mentions(test::assetErrorOf([&] { readExr(empty); }), empty.string()));
     const auto magicOnly = dir.write("magic.exr", std::string("\x76\x2f\x31\x01", 4));
-    EXPECT_TRUE(mentions(assetErrorOf([&] { readExr(magicOnly); }), magicOnly.string()));
+    EXPECT_TRUE(mentions(test::assetErrorOf([&] { readExr(magicOnly); }), magicOnly.string()));
     std::filesystem::create_directory(dir / "folder.exr");
-    EXPECT_TRUE(mentions(assetErrorOf([&] { readExr(dir / "folder.exr"); }), (dir / "folder.exr").string()));
+    EXPECT_TRUE(mentions(test::assetErrorOf([&] { readExr(dir / "folder.exr"); }), (dir / "folder.exr").string()));
 }
 
 TEST(ExrErrors, TruncatedFilesAreOneLineAssetErrors)
@@ -793,16 +767,16 @@ TEST(ExrErrors, TruncatedFilesAreOneLineAssetErrors)
     for (const char* name : {"float.exr", "half.exr", "tiled.exr"})
     {
         SCOPED_TRACE(name);
-        const std::string bytes = readFile(dir / name);
+        const std::string bytes = test::fileContents(dir / name);
         ASSERT_GT(bytes.size(), 1000u);
         const auto cut = dir / (std::string("cut-") + name);
         writeBytes(cut, bytes.substr(0, bytes.size() / 2));
-        const std::string message = assetErrorOf([&] { readExr(cut); });
+        const std::string message = test::assetErrorOf([&] { readExr(cut); });
         EXPECT_TRUE(mentions(message, cut.string())) << message;
         EXPECT_EQ(message.find('\n'), std::string::npos) << message;
         // One byte short fails too (the last block is incomplete).
         writeBytes(cut, bytes.substr(0, bytes.size() - 1));
-        EXPECT_TRUE(mentions(assetErrorOf([&] { readExr(cut); }), cut.string()));
+        EXPECT_TRUE(mentions(test::assetErrorOf([&] { readExr(cut); }), cut.string()));
     }
 }
 
@@ -813,7 +787,7 @@ TEST(ExrErrors, EveryTruncationAndByteFlipIsAnAssetErrorOrAnImageNeverACrash)
     // else (no other exception, no crash, no runaway allocation from a size field gone wrong).
     const test::ScratchDir dir;
     writeExr(dir / "small.exr", noisyImage(5, 20, 2), ExrPixelType::Half);
-    const std::string bytes = readFile(dir / "small.exr");
+    const std::string bytes = test::fileContents(dir / "small.exr");
     int count = 0;
     // Each case a new file, removed after: rewriting one file in place makes ext4 flush it on every close
     // (auto_da_alloc), 20 times slower.
@@ -852,7 +826,7 @@ TEST(ExrErrors, MissingChannelsAreNamed)
     RawExr noBlue;
     noBlue.channels = {{"R"}, {"G"}, {"A"}};
     writeRawExr(dir / "rga.exr", noBlue);
-    const std::string message = assetErrorOf([&] { readExr(dir / "rga.exr"); });
+    const std::string message = test::assetErrorOf([&] { readExr(dir / "rga.exr"); });
     EXPECT_TRUE(mentions(message, (dir / "rga.exr").string())) << message;
     EXPECT_TRUE(mentions(message, "no B channel")) << message;
     EXPECT_TRUE(mentions(message, "A, G, R")) << "lists what the file has: " << message;
@@ -860,12 +834,12 @@ TEST(ExrErrors, MissingChannelsAreNamed)
     RawExr luminance; // a greyscale EXR (Y), and one whose RGB are only in a layer
     luminance.channels = {{"Y", Imf::HALF}};
     writeRawExr(dir / "y.exr", luminance);
-    const std::string yMessage = assetErrorOf([&] { readExr(dir / "y.exr"); });
+    const std::string yMessage = test::assetErrorOf([&] { readExr(dir / "y.exr"); });
     EXPECT_TRUE(mentions(yMessage, "no R, G, B channels")) << yMessage;
     RawExr layer;
     layer.channels = {{"diffuse.B"}, {"diffuse.G"}, {"diffuse.R"}};
     writeRawExr(dir / "layer.exr", layer);
-    EXPECT_TRUE(mentions(assetErrorOf([&] { readExr(dir / "layer.exr"); }), "diffuse.R"));
+    EXPECT_TRUE(mentions(test::assetErrorOf([&] { readExr(dir / "layer.exr"); }), "diffuse.R"));
 }
 
 TEST(ExrErrors, DeepFilesAreAssetErrors)
@@ -898,7 +872,7 @@ TEST(ExrErrors, DeepFilesAreAssetErrors)
             file.setFrameBuffer(fb);
             file.writePixels(h);
         }
-        const std::string message = assetErrorOf([&] { readExr(dir / "deep.exr"); });
+        const std::string message = test::assetErrorOf([&] { readExr(dir / "deep.exr"); });
         EXPECT_TRUE(mentions(message, (dir / "deep.exr").string())) << message;
         EXPECT_TRUE(mentions(message, "is a deep OpenEXR file")) << message;
     }

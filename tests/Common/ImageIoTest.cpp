@@ -16,6 +16,7 @@
 
 #include "Error.h"
 #include "Image/ImageIO.h"
+#include "Support/FileContents.h"
 #include "Support/ScratchDir.h"
 
 namespace rt
@@ -33,14 +34,6 @@ Image awkwardImage()
     image.at(0, 0) = vec3(-0.0f, std::numeric_limits<float>::denorm_min(), std::numeric_limits<float>::max());
     image.at(6, 2) = vec3(std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(), 1.0f / 3.0f);
     return image;
-}
-
-std::string readFile(const std::filesystem::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
 }
 
 bool bitEqual(const vec3& a, const vec3& b) { return std::memcmp(&a, &b, sizeof(vec3)) == 0; }
@@ -64,7 +57,7 @@ TEST(Pfm, FollowsTheFormatLittleEndianBottomRowFirst)
     const test::ScratchDir dir;
     const Image image = awkwardImage();
     writePfm(dir / "image.pfm", image);
-    const std::string bytes = readFile(dir / "image.pfm");
+    const std::string bytes = test::fileContents(dir / "image.pfm");
     const std::string header = "PF\n7 3\n-1.0\n";
     ASSERT_EQ(bytes.substr(0, header.size()), header);
     ASSERT_EQ(bytes.size(), header.size() + 7 * 3 * 12);

@@ -15,6 +15,7 @@
 #include "Error.h"
 #include "Render/EngineRegistry.h"
 #include "Render/RenderRequest.h"
+#include "Support/FileContents.h"
 
 namespace rt::compare
 {
@@ -28,13 +29,6 @@ std::filesystem::path freshFolder(const std::string& name)
     return dir;
 }
 
-std::string readAll(const std::filesystem::path& path)
-{
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 } // namespace
 
 TEST(StrategyGrid, EmptyListsGiveTheBaseSettings)
@@ -146,7 +140,7 @@ TEST(ConvergenceCsv, WritesTheHeaderAndQuotesFieldsWithCommas)
         csv.append({"cornell-box-lights", "gpu", "llvmpipe (LLVM 15.0.7, 256 bits)", "nee-mis projected bvh random rr-on",
                     "nee-mis", 16, 12.5, 3.25, 1.5, 0.01, 0.02, 0.1, 0.00125, 7, 2, 0.015, 0.25, 0.0625});
     }
-    const std::string text = readAll(path);
+    const std::string text = test::fileContents(path);
     EXPECT_EQ(text.substr(0, text.find('\n')), ConvergenceCsv::header());
     EXPECT_NE(text.find(",\"llvmpipe (LLVM 15.0.7, 256 bits)\",nee-mis projected bvh random rr-on,nee-mis,16,12.5000,"
                         "3.2500,1.5000,0.01,0.02,0.1,0.00125,7,2,0.015,0.25,0.0625\n"),
