@@ -117,6 +117,25 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
                                kMinRoughnessScale, kMaxRoughnessScale))
         ->check(CLI::Range(kMinRoughnessScale, kMaxRoughnessScale))
         ->type_name("X");
+    app.add_option("--strategy", o.strategy,
+                   "Headless: scene renders with the scene's estimator, light sampler, light selection and pixel "
+                   "sampling (and the flags given); auto first runs a short pilot on the render's engine that measures "
+                   "the efficiency 1/(relMSE x time) of each candidate (one setting at a time: every estimator; area, "
+                   "solid-angle, projected and, for quad and triangle lights, projected-exact; every light selection "
+                   "with two lights or more; random and sobol), renders with the best, logs the pilot's table and "
+                   "records it in --stats (strategy_choice). A setting given as a flag is not varied. With --compare: "
+                   "adds a row 'auto' over the same candidates, its time including the pilot's")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"scene", "auto"}));
+    app.add_option("--pilot-budget", o.pilotBudget,
+                   "With --strategy auto: the pilot's time as a fraction of the render's estimated time (from a "
+                   "probe render), 0.001 to 1")
+        ->capture_default_str()
+        ->check(CLI::Range(0.001, 1.0));
+    app.add_option("--pilot-max-seconds", o.pilotMaxSeconds,
+                   "With --strategy auto: the pilot's time at most, in seconds (0.01 to 600)")
+        ->capture_default_str()
+        ->check(CLI::Range(0.01, 600.0));
     app.add_option("--pdf", o.pdf, "The books' name for two estimators: on = --estimator mixture, off = bsdf");
     app.add_option("--output", o.output, "Write the tone-mapped sRGB image here (.png)")->check(namesAFile());
     app.add_option("--hdr", o.hdr, "Write the linear radiance image here: .pfm (float) or .exr (OpenEXR, ZIP)")

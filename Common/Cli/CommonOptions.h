@@ -37,6 +37,9 @@ struct CommonOptions
     std::optional<std::string> fresnel; // schlick | exact; empty: each dielectric's own
     float roughnessScale = 1.0f; // in [kMinRoughnessScale, kMaxRoughnessScale] (CLI11 checks)
     bool quiet = false;
+    std::string strategy = "scene"; // --strategy: scene (the scene's defaults and the flags) | auto (a pilot chooses)
+    double pilotBudget = 0.05; // --pilot-budget: the pilot's share of the render's estimated time
+    double pilotMaxSeconds = 2.0; // --pilot-max-seconds
 
     /// The value given for the setting `name`, or nothing.
     std::optional<std::string> given(std::string_view name) const;

@@ -130,23 +130,34 @@ void checkOutputPaths(const CommonOptions& o)
     checkOutputPath(o.stats, "--stats", {".json"});
 }
 
-int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& request, const CommonOptions& o)
+int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& asked, const CommonOptions& o,
+                const RequestChooser& choose)
 {
     checkOutputPaths(o);
     spdlog::info("scene {}: {} primitives, {} lights; {} engine on {}", scene.id, scene.primitiveCount(),
                  scene.lights.size(), toString(engine.kind()), engine.deviceName());
-    spdlog::info("settings: {}", request.settings); // the scene's defaults with the flags applied
     const double build = engine.setScene(scene);
     spdlog::info("acceleration structures built in {:.3f} s", build);
 
     RenderControl control;
     RenderResult result;
+    ChosenRequest chosen{asked, nullptr, false};
     {
         InterruptScope interrupt;
+        if (choose)
+            chosen = choose(engine, asked);
+        if (chosen.cancelled)
+        {
+            spdlog::warn("cancelled while choosing the strategy: no file written");
+            return 130;
+        }
+        spdlog::info("settings: {}", chosen.request.settings); // the scene's defaults with the flags applied
         InterruptScope::route(&control);
         ProgressPrinter progress(control, !o.quiet);
-        result = render(engine, request, control);
+        result = render(engine, chosen.request, control);
     }
+    const RenderRequest& request = chosen.request;
+    result.stats.strategyChoice = chosen.record;
     if (result.stats.cancelled)
     {
         spdlog::warn("render cancelled after {:.1f} s: no file written", result.stats.renderSeconds);

@@ -2,8 +2,11 @@
 // cleanly on Ctrl-C, write the image, HDR and stats files asked for, print a one-line summary.
 #pragma once
 
+#include <functional>
 #include <initializer_list>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "Cli/CommonOptions.h"
 #include "Render/RenderEngine.h"
@@ -20,10 +23,23 @@ void checkOutputPath(const std::string& path, const char* flag, std::initializer
 /// Throws UsageError or OutputError.
 void checkOutputPaths(const CommonOptions& options);
 
-/// Renders `request` of `scene` (the scene it names, built) and writes the outputs, all or none
-/// (IO/OutputSet.h). Returns the process exit status: 0, or 130 when cancelled by SIGINT (nothing is written
-/// then). Throws rt::Error for failures (OutputError, with no output left behind, when one cannot be written).
-int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& request, const CommonOptions& options);
+/// What a headless run renders once its scene is set: the request, and what chose it (--stats' "strategy_choice").
+struct ChosenRequest
+{
+    RenderRequest request;
+    nlohmann::json record; // null: nothing to record
+    bool cancelled = false; // Ctrl-C stopped the choice
+};
+/// Chooses the request to render on `engine` (whose scene is set) from the command line's (--strategy auto:
+/// Compare/AutoStrategy.h); runs inside the render's Ctrl-C scope.
+using RequestChooser = std::function<ChosenRequest(RenderEngine& engine, const RenderRequest& request)>;
+
+/// Renders `request` of `scene` (the scene it names, built), or what `choose` makes of it when given, and writes
+/// the outputs, all or none (IO/OutputSet.h). Returns the process exit status: 0, or 130 when cancelled by SIGINT
+/// (nothing is written then). Throws rt::Error for failures (OutputError, with no output left behind, when one
+/// cannot be written).
+int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& request, const CommonOptions& options,
+                const RequestChooser& choose = {});
 
 /// Parses the command line, then runs `body`, turning every rt::Error and CLI11 parse error into one
 /// "error: ..." line on stderr and the error's exit status. `--help` prints the help and returns 0.

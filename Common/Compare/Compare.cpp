@@ -257,6 +257,23 @@ void warmUpStrategies(RenderEngine& engine, const RenderRequest& base, const std
             return;
 }
 
+/// The auto row's pilot is part of its cost: its renders' time on the engine's clock joins the GPU's time, and the
+/// whole pilot on the host's clock (pipeline compilations included) the wall time.
+void chargePilot(Measurement& m, const AutoChoice& choice)
+{
+    m.wallMs += choice.pilotWallSeconds * 1e3;
+    if (m.gpuMs >= 0.0)
+        m.gpuMs += choice.pilotMs;
+}
+
+/// "auto: nee projected": what the pilot chose, in the words that tell the grid's strategies apart.
+std::string autoLabel(const std::vector<Strategy>& grid, const Strategy& chosen)
+{
+    std::vector<Strategy> all = grid;
+    all.push_back(chosen);
+    return "auto: " + distinctLabels(all).back();
+}
+
 /// Mean HDR-FLIP of round 0's render against the reference, into m.error.flip, when the comparison measures by
 /// FLIP (0.2 s at 512 x 384: every other round renders the same image again).
 void measureFlip(const CompareOptions& options, int round, const Reference& reference, Measurement& m)
@@ -288,9 +305,13 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
 {
     const std::vector<std::string> labels = distinctLabels(options.strategies);
     const std::size_t strategyCount = options.strategies.size();
+    const bool autoRow = !options.autoCandidates.empty();
+    const std::size_t rowCount = strategyCount + (autoRow ? 1 : 0); // the auto row last
     // runs[engine][strategy][spp index]
     std::vector<std::vector<std::vector<SeededRow>>> runs(engines.size());
-    RunLog log(engines.size() * strategyCount * options.spps.size() * std::size_t(options.seeds) *
+    // The auto row's choices: choices[engine][spp index][seed].
+    std::vector<std::vector<std::vector<AutoChoice>>> choices(engines.size());
+    RunLog log(engines.size() * rowCount * options.spps.size() * std::size_t(options.seeds) *
                std::size_t(options.rounds));
     // Each engine runs all its rows back to back after its warm-up: row by row interleaving with 16-thread CPU
     // renders cost an H100 2-3x (docs/notebook/PERFORMANCE.md). Within an engine the rounds interleave the rows:
@@ -299,27 +320,41 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
     {
         RenderEngine& engine = *engines[e].engine;
         warmUpStrategies(engine, base, options.strategies);
-        runs[e].assign(strategyCount, std::vector<SeededRow>(options.spps.size()));
+        runs[e].assign(rowCount, std::vector<SeededRow>(options.spps.size()));
+        choices[e].assign(options.spps.size(), std::vector<AutoChoice>(std::size_t(options.seeds)));
         for (int round = 0; round < options.rounds; ++round)
-            for (std::size_t s = 0; s < strategyCount; ++s)
+            for (std::size_t s = 0; s < rowCount; ++s)
                 for (std::size_t row = 0; row < options.spps.size(); ++row)
                     for (int k = 0; k < options.seeds; ++k)
                     {
-                        RenderRequest request = options.strategies[s].request(base, options.spps[row]);
+                        const bool isAuto = s == strategyCount;
+                        RenderRequest request = isAuto ? base : options.strategies[s].request(base, options.spps[row]);
+                        request.settings.spp = options.spps[row];
                         request.settings.seed += std::uint32_t(k);
+                        AutoChoice& choice = choices[e][row][std::size_t(k)];
+                        if (isAuto && round == 0)
+                        {
+                            choice = chooseStrategy(engine, request, options.autoCandidates, options.pilotBudget);
+                            if (choice.cancelled)
+                                return false;
+                        }
+                        const Strategy strategy = isAuto ? choice.chosen : options.strategies[s];
+                        const std::string label = isAuto ? autoLabel(options.strategies, choice.chosen) : labels[s];
+                        request.settings = strategy.applyTo(request.settings);
                         Measurement m = measure(engine, request, &reference.image);
                         if (m.cancelled)
                             return false;
+                        if (isAuto)
+                            chargePilot(m, choice);
                         measureFlip(options, round, reference, m);
                         const std::uint32_t seed = request.settings.seed;
                         log.done(fmt::format("{} {}, {} spp, seed {}, round {}: {:.1f} ms, {} {:.3g}",
-                                             toString(engines[e].kind), labels[s], m.spp, seed, round, m.ms(),
+                                             toString(engines[e].kind), label, m.spp, seed, round, m.ms(),
                                              displayName(options.metric), metricValue(m.error, options.metric)));
                         if (csv)
-                            csv->append(csvRow(scene.id, engines[e], options.strategies[s], labels[s], m, reference,
-                                               seed, round));
+                            csv->append(csvRow(scene.id, engines[e], strategy, label, m, reference, seed, round));
                         if (round == 0)
-                            images.add(engines[e].kind, options.strategies[s].name(), labels[s], m, seed);
+                            images.add(engines[e].kind, strategy.name(), label, m, seed);
                         runs[e][s][row].add(std::size_t(k), std::move(m));
                     }
     }
@@ -341,11 +376,23 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
     json["rows"] = nlohmann::json::array();
 
     const bool ratio = engines.size() > 1 && engines.back().kind == EngineKind::Gpu;
-    for (std::size_t s = 0; s < strategyCount; ++s)
+    for (std::size_t s = 0; s < rowCount; ++s)
     {
-        const RenderSettings settings = options.strategies[s].applyTo(b);
+        const bool isAuto = s == strategyCount;
+        std::string strategyText;
+        if (isAuto)
+        {
+            strategyText = "--strategy auto, the pilot's time included; chosen";
+            for (std::size_t e = 0; e < engines.size(); ++e)
+                for (std::size_t row = 0; row < options.spps.size(); ++row)
+                    strategyText += fmt::format("{} {} at {} spp: {}", e + row == 0 ? "" : ",", toString(engines[e].kind),
+                                                options.spps[row],
+                                                autoLabel(options.strategies, choices[e][row].front().chosen).substr(6));
+        }
+        else
+            strategyText = describeStrategy(options.strategies[s].applyTo(b));
         std::printf("\n%s: %dx%d, depth %d, %s; %s\n", scene.id.c_str(), b.width, b.height(), b.depth,
-                    describeStrategy(settings).c_str(), againstReference(reference, options.metric).c_str());
+                    strategyText.c_str(), againstReference(reference, options.metric).c_str());
         std::string header = fmt::format("{:>6}", "spp");
         for (const EngineUnderTest& e : engines)
             header += fmt::format(" | {:>9} {:>9}{}{}", fmt::format("{} ms", toString(e.kind)),
@@ -360,7 +407,7 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
             std::string line = fmt::format("{:>6}", runs.front()[s][row].first().spp);
             nlohmann::json jrow;
             jrow["spp"] = runs.front()[s][row].first().spp;
-            jrow["strategy"] = options.strategies[s].name();
+            jrow["strategy"] = isAuto ? std::string("auto") : options.strategies[s].name();
             const SeededRow* gpu = nullptr;
             const SeededRow* cpu = nullptr; // the fastest CPU engine of the row
             for (std::size_t e = 0; e < engines.size(); ++e)
@@ -406,6 +453,12 @@ bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptio
                     j["mse"] = meanInterval(seeded.values([](const Measurement& x) { return x.error.mse; })).mean;
                     j["rmse"] = meanInterval(seeded.values([](const Measurement& x) { return x.error.rmse; })).mean;
                 }
+                if (isAuto)
+                {
+                    j["strategy_choice"] = nlohmann::json::array();
+                    for (const AutoChoice& c : choices[e][row])
+                        j["strategy_choice"].push_back(c.toJson());
+                }
                 if (engines[e].kind == EngineKind::Gpu)
                     gpu = &seeded;
                 else if (!cpu || seeded.wallMs() < cpu->wallMs())
@@ -442,40 +495,66 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
                   ImageFolder& images)
 {
     const std::vector<std::string> labels = distinctLabels(options.strategies);
-    RunLog log(engines.size() * options.strategies.size() * std::size_t(options.seeds) *
-               std::size_t(options.rounds));
+    const std::size_t strategyCount = options.strategies.size();
+    const bool autoRow = !options.autoCandidates.empty();
+    const std::size_t rowCount = strategyCount + (autoRow ? 1 : 0); // the auto row last
+    RunLog log(engines.size() * rowCount * std::size_t(options.seeds) * std::size_t(options.rounds));
     std::string devices;
     for (const EngineUnderTest& e : engines)
         devices += (devices.empty() ? "" : ", ") + e.engine->deviceName();
     // seeded[engine][strategy]: the first seed's first render is the tile.
     std::vector<std::vector<SeededRow>> seeded(engines.size());
+    // The auto row's choice of each seed: choices[engine][seed].
+    std::vector<std::vector<AutoChoice>> choices(engines.size());
     for (const std::size_t index : measurementOrder(engines))
     {
         EngineUnderTest& e = engines[index];
         warmUpStrategies(*e.engine, base, options.strategies);
-        seeded[index].resize(options.strategies.size());
-        std::vector<int> spps(options.strategies.size(), 0); // what the budget gave each strategy's first seed
+        seeded[index].resize(rowCount);
+        choices[index].resize(std::size_t(options.seeds));
+        // What the budget gave each strategy's first seed; the auto row's per seed (each its own choice).
+        std::vector<int> spps(strategyCount, 0), autoSpps(std::size_t(options.seeds), 0);
         for (int round = 0; round < options.rounds; ++round)
-            for (std::size_t s = 0; s < options.strategies.size(); ++s)
+            for (std::size_t s = 0; s < rowCount; ++s)
                 for (int k = 0; k < options.seeds; ++k)
                 {
-                    RenderRequest request = options.strategies[s].request(base, std::max(spps[s], 1));
+                    const bool isAuto = s == strategyCount;
+                    int& spp = isAuto ? autoSpps[std::size_t(k)] : spps[s];
+                    RenderRequest seededBase = base;
+                    seededBase.settings.seed += std::uint32_t(k);
+                    AutoChoice& choice = choices[index][std::size_t(k)];
+                    if (isAuto && round == 0)
+                    {
+                        // The pilot's budget is a share of the equal time, the render what is left of it.
+                        PilotBudget budget = options.pilotBudget;
+                        budget.renderSeconds = options.equalTimeMs * 1e-3;
+                        choice = chooseStrategy(*e.engine, seededBase, options.autoCandidates, budget);
+                        if (choice.cancelled)
+                            return false;
+                    }
+                    const Strategy strategy = isAuto ? choice.chosen : options.strategies[s];
+                    const std::string label = isAuto ? autoLabel(options.strategies, choice.chosen) : labels[s];
+                    const double budgetMs =
+                        isAuto ? std::max(options.equalTimeMs - choice.pilotMs, 0.01 * options.equalTimeMs)
+                               : options.equalTimeMs;
+                    RenderRequest request = strategy.request(base, std::max(spp, 1));
                     request.settings.seed += std::uint32_t(k);
-                    Measurement m = spps[s] == 0 ? renderForBudget(*e.engine, base, options.strategies[s],
-                                                                   options.equalTimeMs, reference.image)
-                                                 : measure(*e.engine, request, &reference.image);
+                    Measurement m = spp == 0 ? renderForBudget(*e.engine, seededBase, strategy, budgetMs, reference.image)
+                                             : measure(*e.engine, request, &reference.image);
                     if (m.cancelled)
                         return false;
                     measureFlip(options, round, reference, m);
-                    spps[s] = m.spp;
+                    spp = m.spp;
+                    if (isAuto)
+                        chargePilot(m, choice);
                     const std::uint32_t seed = request.settings.seed;
                     log.done(fmt::format("{} {}, seed {}, round {}: {} spp in {:.1f} ms, {} {:.3g}", toString(e.kind),
-                                         labels[s], seed, round, m.spp, m.ms(), displayName(options.metric),
+                                         label, seed, round, m.spp, m.ms(), displayName(options.metric),
                                          metricValue(m.error, options.metric)));
                     if (csv)
-                        csv->append(csvRow(scene.id, e, options.strategies[s], labels[s], m, reference, seed, round));
+                        csv->append(csvRow(scene.id, e, strategy, label, m, reference, seed, round));
                     if (round == 0)
-                        images.add(e.kind, options.strategies[s].name(), labels[s], m, seed);
+                        images.add(e.kind, strategy.name(), label, m, seed);
                     seeded[index][s].add(std::size_t(k), std::move(m));
                 }
     }
@@ -485,7 +564,10 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
     for (std::size_t e = 0; e < engines.size(); ++e)
         for (std::size_t s = 0; s < seeded[e].size(); ++s)
         {
-            tiles.push_back({engines[e].kind, labels[s], options.strategies[s], seeded[e][s].first()});
+            const bool isAuto = s == strategyCount;
+            const Strategy strategy = isAuto ? choices[e].front().chosen : options.strategies[s];
+            tiles.push_back({engines[e].kind, isAuto ? autoLabel(options.strategies, strategy) : labels[s], strategy,
+                             seeded[e][s].first()});
             rows.push_back(&seeded[e][s]);
         }
     // Efficiency ratios against the most efficient strategy (the lowest mean metric^k x s), with their interval
@@ -526,6 +608,15 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
         }
         std::printf("%s\n", line.c_str());
     }
+    for (std::size_t e = 0; e < choices.size(); ++e)
+        for (std::size_t k = 0; k < choices[e].size(); ++k)
+        {
+            const AutoChoice& c = choices[e][k];
+            std::printf("auto, %s engine, seed %u: %s, by a pilot of %.1f ms on the engine's clock (%.2f s on the "
+                        "host's) over %zu candidates at %dx%d, %d spp each\n",
+                        toString(engines[e].kind), base.settings.seed + unsigned(k), c.chosen.name().c_str(), c.pilotMs,
+                        c.pilotWallSeconds, c.rows.size(), c.width, c.height, c.spp);
+        }
     if (!options.grid.empty())
     {
         writeEqualTimeGrid(options.grid,

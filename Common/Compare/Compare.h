@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "Compare/AutoStrategy.h"
 #include "Compare/Strategy.h"
 #include "Image/Metrics.h"
 #include "Render/RenderEngine.h"
@@ -38,6 +39,11 @@ struct CompareOptions
     int seeds = 1; // each row rendered with seeds seed, seed + 1, ...: means with 95 % intervals (Confidence.h)
     int rounds = 3; // every row timed again in this many interleaved rounds: the median time and its spread
     ErrorMetric metric = ErrorMetric::RelMse; // the error the tables show and the efficiencies use
+    /// --strategy auto: a row "auto" after the strategies, on every engine, whose strategy a pilot over these
+    /// candidates chooses (Compare/AutoStrategy.h) for each of its renders (each spp and seed; its later rounds
+    /// reuse the choice), and whose time includes the pilot's. Empty: no such row.
+    StrategyLists autoCandidates;
+    PilotBudget pilotBudget;
 };
 
 /// Parses "10,50,100" (positive integers). Throws UsageError.

@@ -8,6 +8,7 @@
 
 #include "Cli/HeadlessRun.h"
 #include "Cli/ValueParsing.h"
+#include "Compare/AutoCommand.h"
 #include "Compare/Compare.h"
 #include "Compare/ReferenceCache.h"
 #include "Error.h"
@@ -139,6 +140,11 @@ int runCompare(const CompareFlags& flags, const CommonOptions& options, const En
     for (ErrorMetric m : {ErrorMetric::RelMse, ErrorMetric::TrimmedRelMse, ErrorMetric::Mape, ErrorMetric::Flip})
         if (flags.metric == toString(m))
             c.metric = m;
+    if (options.strategy == "auto")
+    {
+        c.autoCandidates = commandLineCandidates(job.scene, options, flags.strategies);
+        c.pilotBudget = pilotBudget(options);
+    }
     if (flags.referenceCache != "off")
         c.referenceCache = flags.referenceCache;
     return runComparison(job.scene, job.request, c,

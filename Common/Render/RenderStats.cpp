@@ -40,6 +40,8 @@ nlohmann::json RenderStats::toJson() const
         j["stage_seconds"] = stageSeconds;
     if (!frameConfiguration.empty())
         j["frame_configuration"] = frameConfiguration;
+    if (!strategyChoice.is_null())
+        j["strategy_choice"] = strategyChoice;
     return j;
 }
 

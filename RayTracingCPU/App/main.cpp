@@ -3,6 +3,7 @@
 // engines are the registry's (Render/EngineRegistry.h): single and multi, and the GPU engine where the build
 // links it (the window's third engine, and --compare's).
 #include "Cli/HeadlessRun.h"
+#include "Compare/AutoCommand.h"
 #include "Compare/CompareCommand.h"
 #include "Error.h"
 #include "Render/EngineRegistry.h"
@@ -59,6 +60,7 @@ int main(int argc, char** argv)
         rt::checkOutputPaths(options);
         const rt::CommandLineRender job = rt::resolveCommandLine(options);
         const std::unique_ptr<rt::RenderEngine> cpu = rt::engines::make(*engine, engineOptions);
-        return rt::runHeadless(*cpu, job.scene, job.request, options);
+        return rt::runHeadless(*cpu, job.scene, job.request, options,
+                               rt::compare::strategyChooser(job.scene, options));
     });
 }

@@ -18,6 +18,7 @@
 #include "Cli/HeadlessRun.h"
 #include "Cli/ValueParsing.h"
 #include "Cli/WindowSize.h"
+#include "Compare/AutoCommand.h"
 #include "Compare/CompareCommand.h"
 #include "Engine/GpuContext.h"
 #include "Error.h"
@@ -202,7 +203,8 @@ int main(int argc, char** argv)
         rt::checkOutputPaths(options);
         const rt::CommandLineRender job = rt::resolveCommandLine(options);
         const std::unique_ptr<rt::RenderEngine> gpu = rt::engines::make(rt::EngineKind::Gpu, engineOptions);
-        const int status = rt::runHeadless(*gpu, job.scene, job.request, options);
+        const int status = rt::runHeadless(*gpu, job.scene, job.request, options,
+                                           rt::compare::strategyChooser(job.scene, options));
         if (gpu->validationMessages() > 0)
         {
             spdlog::error("Vulkan validation reported {} warnings or errors (see above)", gpu->validationMessages());

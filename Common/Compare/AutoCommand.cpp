@@ -1,0 +1,41 @@
+#include "Compare/AutoCommand.h"
+
+#include <spdlog/spdlog.h>
+
+namespace rt::compare
+{
+StrategyLists commandLineCandidates(const Scene& scene, const CommonOptions& options, const StrategyLists& lists)
+{
+    std::vector<std::string> fixed;
+    for (const auto& [name, value] : options.settings)
+        fixed.push_back(name);
+    if (options.pdf)
+        fixed.push_back("estimator");
+    return autoCandidates(scene, lists, fixed);
+}
+
+PilotBudget pilotBudget(const CommonOptions& options)
+{
+    return {.fraction = options.pilotBudget, .maxSeconds = options.pilotMaxSeconds};
+}
+
+RequestChooser strategyChooser(const Scene& scene, const CommonOptions& options)
+{
+    if (options.strategy != "auto")
+        return {};
+    return [candidates = commandLineCandidates(scene, options), budget = pilotBudget(options)](
+               RenderEngine& engine, const RenderRequest& request) {
+        const AutoChoice choice = chooseStrategy(engine, request, candidates, budget);
+        ChosenRequest chosen{request, choice.toJson(), choice.cancelled};
+        chosen.request.settings = choice.chosen.applyTo(request.settings);
+        if (choice.rows.empty())
+            spdlog::info("--strategy auto: the flags leave one candidate, {}", choice.chosen.name());
+        else
+            spdlog::info("--strategy auto: {} (pilot {:.2f} s of a {:.2f} s budget, {}x{} at {} spp per candidate; "
+                         "render estimated at {:.1f} s):\n{}",
+                         choice.chosen.name(), choice.pilotWallSeconds, choice.budgetSeconds, choice.width,
+                         choice.height, choice.spp, choice.estimatedRenderSeconds, choice.table());
+        return chosen;
+    };
+}
+} // namespace rt::compare

@@ -1,0 +1,21 @@
+// --strategy auto on the command line of either app: the candidates its flags leave open, and the chooser the
+// headless run calls once the engine has the scene (Cli/HeadlessRun.h), which runs the pilot (AutoStrategy.h),
+// logs its table and records it for --stats.
+#pragma once
+
+#include "Cli/CommonOptions.h"
+#include "Cli/HeadlessRun.h"
+#include "Compare/AutoStrategy.h"
+
+namespace rt::compare
+{
+/// The candidates of `options` for `scene`: autoCandidates with every strategy setting given as a flag (--pdf
+/// included) fixed, and `lists` (--compare's) where given.
+StrategyLists commandLineCandidates(const Scene& scene, const CommonOptions& options, const StrategyLists& lists = {});
+
+/// The pilot budget of --pilot-budget and --pilot-max-seconds.
+PilotBudget pilotBudget(const CommonOptions& options);
+
+/// For runHeadless: the pilot's choice with --strategy auto, nothing (render as asked) with --strategy scene.
+RequestChooser strategyChooser(const Scene& scene, const CommonOptions& options);
+} // namespace rt::compare
