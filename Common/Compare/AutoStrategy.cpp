@@ -249,21 +249,35 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     choice.width = pilot.width;
     choice.height = pilot.height();
 
+    // A half that runs past 4x its share is stopped: the candidate is too slow to win (it would need 4x less
+    // error per path than the probe's strategy), and the budget holds (book 3's mixture over 1000 lights took
+    // 15x its share on many-lights).
+    const double shareMs = pathsPerHalf * msPerPath;
+    const auto timeLimit = std::chrono::nanoseconds(static_cast<std::int64_t>(std::max(4.0 * shareMs, 5.0) * 1e6));
     std::vector<PilotHalves> images;
+    std::vector<std::size_t> imageRows; // the row of each entry of images
     auto measureCandidate = [&](const RenderSettings& strategy, const std::string& varied) {
         RenderRequest half = request;
         half.settings = Strategy::of(strategy).applyTo(pilot);
-        half.settings.seed = request.settings.seed + 7919u * std::uint32_t(2 * images.size() + 1);
-        Measurement a = measure(engine, half, nullptr);
+        half.settings.seed = request.settings.seed + 7919u * std::uint32_t(2 * choice.rows.size() + 1);
+        Measurement a = measure(engine, half, nullptr, timeLimit);
         ++half.settings.seed;
-        Measurement b = a.cancelled ? Measurement{.cancelled = true} : measure(engine, half, nullptr);
-        if (b.cancelled)
+        Measurement b = a.cancelled ? Measurement{.cancelled = a.cancelled, .timedOut = a.timedOut}
+                                    : measure(engine, half, nullptr, timeLimit);
+        if (b.cancelled && !b.timedOut)
             return false;
-        choice.spp = a.spp + b.spp;
         choice.pilotMs += a.ms() + b.ms();
+        if (b.timedOut)
+        {
+            choice.rows.push_back({Strategy::of(strategy), varied, a.timedOut ? a.wallMs : a.ms() + b.wallMs});
+            choice.rows.back().tooSlow = true;
+            return true;
+        }
+        choice.spp = a.spp + b.spp;
         // The halves are the same work: the faster one's time twice, so that a one-off stall of either (a pool's
         // first use, a clock ramping up: 2x on the first candidate after the probe, measured) does not decide.
         choice.rows.push_back({Strategy::of(strategy), varied, 2.0 * std::min(a.ms(), b.ms())});
+        imageRows.push_back(choice.rows.size() - 1);
         images.push_back({std::move(a.image), std::move(b.image)});
         return true;
     };
@@ -272,25 +286,36 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // away from the scene's strategy, and a tie keeps the first measured.
     auto rescore = [&] {
         const std::vector<PilotError> errors = pilotRelMse(images);
-        for (std::size_t i = 0; i < choice.rows.size(); ++i)
+        for (std::size_t i = 0; i < images.size(); ++i)
         {
-            PilotRow& row = choice.rows[i];
+            PilotRow& row = choice.rows[imageRows[i]];
             row.relMse = errors[i].relMse;
             row.relMseError = errors[i].standardError;
             row.efficiency = row.relMse > 0.0 && row.ms > 0.0 ? 1.0 / (row.relMse * row.ms * 1e-3) : 0.0;
         }
         const Strategy current = Strategy::of(best);
-        const auto incumbent = std::find_if(choice.rows.begin(), choice.rows.end(),
-                                            [&](const PilotRow& r) { return r.strategy == current; });
-        const PilotRow* winner = &*incumbent;
+        const PilotRow* incumbent = nullptr;
+        for (const PilotRow& row : choice.rows)
+            if (row.strategy == current && !row.tooSlow)
+                incumbent = &row;
+        const PilotRow* winner = incumbent;
+        auto relative = [](const PilotRow& r) { return r.relMse > 0.0 ? r.relMseError / r.relMse : 0.0; };
         for (const PilotRow& row : choice.rows)
         {
-            auto relative = [](const PilotRow& r) { return r.relMse > 0.0 ? r.relMseError / r.relMse : 0.0; };
+            if (row.tooSlow)
+                continue;
+            if (!incumbent)
+            {
+                if (!winner || row.efficiency > winner->efficiency)
+                    winner = &row;
+                continue;
+            }
             const double margin = 2.0 * std::hypot(relative(row), relative(*incumbent));
             if (row.efficiency > winner->efficiency && std::log(row.efficiency / incumbent->efficiency) > margin)
                 winner = &row;
         }
-        best = winner->strategy.applyTo(best);
+        if (winner)
+            best = winner->strategy.applyTo(best);
     };
 
     bool finished = true;
@@ -342,7 +367,8 @@ nlohmann::json AutoChoice::toJson() const
                                    {"ms", r.ms},
                                    {"relmse", r.relMse},
                                    {"relmse_standard_error", r.relMseError},
-                                   {"efficiency", r.efficiency}});
+                                   {"efficiency", r.efficiency},
+                                   {"too_slow", r.tooSlow}});
     return j;
 }
 
@@ -352,7 +378,8 @@ std::string AutoChoice::table() const
                                    "±1 s.e.", "1/(relMSE s)");
     for (const PilotRow& r : rows)
         text += fmt::format("{:<44} {:>16} {:>9.2f} {:>10.3g} {:>8.2g} {:>12.4g}{}\n", r.strategy.name(), r.varied,
-                            r.ms, r.relMse, r.relMseError, r.efficiency, r.strategy == chosen ? "  <- chosen" : "");
+                            r.ms, r.relMse, r.relMseError, r.efficiency,
+                            r.tooSlow ? "  stopped: 4x its share" : r.strategy == chosen ? "  <- chosen" : "");
     return text;
 }
 } // namespace rt::compare

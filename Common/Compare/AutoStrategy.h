@@ -50,6 +50,7 @@ struct PilotRow
     double relMse = 0.0;
     double relMseError = 0.0; // relMse's standard error (over the pixels' terms)
     double efficiency = 0.0; // 1 / (relMse x seconds)
+    bool tooSlow = false; // a half ran past 4x its share of the budget and was stopped: efficiency 0
 };
 
 /// What the pilot measured and chose: --stats' "strategy_choice", the log's table, --compare's auto row.

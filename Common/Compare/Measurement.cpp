@@ -9,9 +9,11 @@
 
 namespace rt::compare
 {
-Measurement measure(RenderEngine& engine, const RenderRequest& request, const Image* reference)
+Measurement measure(RenderEngine& engine, const RenderRequest& request, const Image* reference,
+                    std::chrono::nanoseconds timeLimit)
 {
     RenderControl control;
+    control.setTimeLimit(timeLimit);
     if (InterruptScope::interrupted())
         return {.cancelled = true};
     InterruptScope::route(&control);
@@ -19,6 +21,8 @@ Measurement measure(RenderEngine& engine, const RenderRequest& request, const Im
     InterruptScope::route(nullptr);
     Measurement m;
     m.cancelled = r.stats.cancelled || InterruptScope::interrupted();
+    m.timedOut = m.cancelled && !InterruptScope::interrupted() && control.timeLimitPassed();
+    m.wallMs = r.stats.renderSeconds * 1e3;
     if (m.cancelled)
         return m;
     if (r.stats.nanSamples + r.stats.infSamples > 0)

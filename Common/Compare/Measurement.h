@@ -2,6 +2,7 @@
 // (Cli/Interrupt.h).
 #pragma once
 
+#include <chrono>
 #include <string>
 
 #include "Image/Image.h"
@@ -19,6 +20,7 @@ struct Measurement
     double gpuMs = -1.0; // GPU timestamps around the trace dispatches; < 0 when the engine has none
     double mpathsPerSecond = 0.0;
     bool cancelled = false;
+    bool timedOut = false; // cancelled by measure's time limit, not by Ctrl-C
     ErrorMetrics error; // against the reference, when one was given
     Image image;
 
@@ -27,9 +29,11 @@ struct Measurement
 };
 
 /// Renders `request` with `engine`, cancellable by Ctrl-C while an InterruptScope (Cli/Interrupt.h) lives;
-/// compares with `reference` unless null.
+/// compares with `reference` unless null. A `timeLimit` > 0 cancels the render once it has run that long (checked
+/// between the engine's camera samples on the CPU, between batches on the GPU): then cancelled and timedOut.
 /// Warns about NaN and Inf samples (they are left out of the image, and out of the error).
-Measurement measure(RenderEngine& engine, const RenderRequest& request, const Image* reference);
+Measurement measure(RenderEngine& engine, const RenderRequest& request, const Image* reference,
+                    std::chrono::nanoseconds timeLimit = {});
 
 /// Half a second of untimed 4-spp renders: a GPU idle through another engine's turn drops its clocks, and an
 /// H100 then ran its first rows 3-10x slower (docs/notebook/PERFORMANCE.md).

@@ -18,6 +18,13 @@ void RenderControl::begin(std::uint64_t totalUnits)
     m_startNs.store(nowNs());
 }
 
+bool RenderControl::timeLimitPassed() const
+{
+    const std::int64_t limit = m_timeLimitNs.load(std::memory_order_relaxed);
+    const std::int64_t start = m_startNs.load(std::memory_order_relaxed);
+    return limit > 0 && start != 0 && nowNs() - start > limit;
+}
+
 double RenderControl::fraction() const
 {
     const std::uint64_t t = total();

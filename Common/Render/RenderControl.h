@@ -14,7 +14,16 @@ class RenderControl
 {
 public:
     void requestCancel() { m_cancel.store(true, std::memory_order_relaxed); }
-    bool cancelRequested() const { return m_cancel.load(std::memory_order_relaxed); }
+    /// A cancel was asked for, or the time limit has passed.
+    bool cancelRequested() const
+    {
+        return m_cancel.load(std::memory_order_relaxed) ||
+               (m_timeLimitNs.load(std::memory_order_relaxed) > 0 && timeLimitPassed());
+    }
+    /// Cancels the render once it has run `limit` since begin() (0: never). Set before the render.
+    void setTimeLimit(std::chrono::nanoseconds limit) { m_timeLimitNs.store(limit.count()); }
+    /// Whether a time limit set is past (what cancelled the render, when no cancel was asked for).
+    bool timeLimitPassed() const;
 
     /// Called by the render driver before it starts: `totalUnits` units of work (the render's camera paths).
     void begin(std::uint64_t totalUnits);
@@ -42,5 +51,6 @@ private:
     std::atomic<std::int64_t> m_startNs{0};
     std::atomic<std::int64_t> m_previewIntervalNs{0};
     std::atomic<std::int64_t> m_lastPreviewNs{-1}; // -1: none yet
+    std::atomic<std::int64_t> m_timeLimitNs{0}; // 0: none
 };
 } // namespace rt

@@ -1,5 +1,6 @@
 // What engines and watchers read from RenderControl: progress, cancel, and the preview throttle.
 #include <chrono>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -38,6 +39,23 @@ TEST(RenderControl, PreviewsAreDueOncePerInterval)
     EXPECT_FALSE(c.previewDue());
     c.setPreviewInterval(std::chrono::nanoseconds(0));
     EXPECT_TRUE(c.previewDue());
+}
+TEST(RenderControl, ATimeLimitCancelsFromTheRendersStart)
+{
+    RenderControl c;
+    c.setTimeLimit(std::chrono::milliseconds(1));
+    std::this_thread::sleep_for(std::chrono::milliseconds(3));
+    EXPECT_FALSE(c.cancelRequested()) << "the limit counts from begin(), not from when it was set";
+    c.begin(10);
+    std::this_thread::sleep_for(std::chrono::milliseconds(3));
+    EXPECT_TRUE(c.timeLimitPassed());
+    EXPECT_TRUE(c.cancelRequested());
+
+    RenderControl unlimited;
+    unlimited.begin(10);
+    std::this_thread::sleep_for(std::chrono::milliseconds(3));
+    EXPECT_FALSE(unlimited.cancelRequested());
+    EXPECT_FALSE(unlimited.timeLimitPassed());
 }
 } // namespace
 } // namespace rt

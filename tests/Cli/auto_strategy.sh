@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Usage: auto_strategy.sh APP
+# --strategy auto as a user runs it: the pilot's choice is logged and recorded in --stats (strategy_choice), the
+# render uses it, a flag given is never varied, --strategy takes only scene and auto, and --compare --strategy auto
+# adds a row "auto" whose JSON holds the pilot's record.
+set -eu
+app=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# The estimator, light sampler and selection fixed by flags: the pilot varies the pixel sampling alone (two
+# pipelines on a GPU: lavapipe compiles each for seconds).
+"$app" --headless --quiet --scene cornell-box-lights --width 24 --spp 64 --depth 6 --strategy auto \
+    --estimator nee --light-sampler solid-angle --light-selection power --stats "$work/a.json" >/dev/null
+/usr/bin/python3 - "$work/a.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+c = d["strategy_choice"]
+rows = c["candidates"]
+assert len(rows) == 2, rows
+for r in rows:
+    words = r["strategy"].split()
+    assert words[:3] == ["nee", "solid-angle", "power"], f"a flag was varied: {r['strategy']}"
+    assert r["varied"] == "sampling" and r["ms"] > 0 and r["relmse"] > 0, r
+assert c["chosen"].split()[3] == d["settings"]["sampling"], (c["chosen"], d["settings"])
+assert d["settings"]["estimator"] == "nee"
+assert c["budget_seconds"] > 0 and c["pilot_width"] > 0
+PY
+# --strategy scene (the default) records no choice.
+"$app" --headless --quiet --scene cornell-box-lights --width 8 --spp 1 --depth 2 --stats "$work/b.json" >/dev/null
+grep -q strategy_choice "$work/b.json" && { echo "--strategy scene recorded a choice"; exit 1; }
+"$app" --headless --quiet --scene cornell-box-lights --width 8 --spp 1 --strategy best >/dev/null 2>"$work/bad.txt" &&
+    { echo "--strategy best was accepted"; exit 1; }
+grep -q "strategy" "$work/bad.txt" || { cat "$work/bad.txt"; exit 1; }
+# --compare: the auto row over the list's candidates, its choice in the table's JSON.
+"$app" --compare --quiet --engines "$2" --scene cornell-box-lights --width 16 --depth 4 --spp-list 16 \
+    --reference-spp 64 --reference-cache off --rounds 1 --strategy auto --estimator nee-mis --light-sampler projected \
+    --light-selection bvh --samplings sobol,random --table "$work/t.json" >"$work/compare.txt" 2>"$work/compare.err" ||
+    { cat "$work/compare.err"; exit 1; }
+grep -q "strategy auto" "$work/compare.txt" || { cat "$work/compare.txt"; exit 1; }
+/usr/bin/python3 - "$work/t.json" "$2" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+engine = sys.argv[2]
+strategies = [r["strategy"] for r in d["rows"]]
+assert strategies.count("auto") == 1 and len(strategies) == 3, strategies
+auto = next(r for r in d["rows"] if r["strategy"] == "auto")[engine]
+choice = auto["strategy_choice"][0]
+assert len(choice["candidates"]) == 2 and choice["chosen"].split()[3] in ("sobol", "random"), choice
+PY

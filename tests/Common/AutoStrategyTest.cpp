@@ -1,0 +1,153 @@
+// --strategy auto's measurement (Compare/AutoStrategy.h) on synthetic pilot images whose error is known in closed
+// form, and the candidates it draws for a scene.
+//
+// PilotError: each candidate's halves are a constant image R plus independent noise per pixel channel; the mean of
+// two halves has variance sigma^2 / 2 (Gaussian) or (1 - p) / p R^2 / 2 (a firefly estimator: R / p with
+// probability p, else 0), and a bias b adds b^2. relMSE normalises by R^2 + 0.01. 20000 pixel channels per image:
+// the estimates' standard error is a few percent, the tolerances 5-6 of them (stated per test).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "Compare/AutoStrategy.h"
+#include "Error.h"
+#include "Image/Metrics.h"
+#include "Scenes/Catalogue.h"
+
+namespace rt::compare
+{
+namespace
+{
+constexpr int kSide = 82; // 82 x 82 x 3 = 20172 values
+constexpr float kRadiance = 0.5f;
+
+using Noise = std::function<float(std::mt19937&)>;
+
+Image noisyImage(std::mt19937& rng, const Noise& noise)
+{
+    Image image(kSide, kSide);
+    for (vec3& p : image.pixels())
+        for (int c = 0; c < 3; ++c)
+            p[c] = noise(rng);
+    return image;
+}
+
+PilotHalves halves(std::mt19937& rng, const Noise& noise) { return {noisyImage(rng, noise), noisyImage(rng, noise)}; }
+
+Noise gaussian(float sigma, float bias = 0.0f)
+{
+    return [=](std::mt19937& rng) { return kRadiance + bias + sigma * std::normal_distribution<float>()(rng); };
+}
+
+/// R / p with probability p, else 0: unbiased, variance (1 - p) / p R^2 per sample.
+Noise fireflies(float p)
+{
+    return [=](std::mt19937& rng) {
+        return std::uniform_real_distribution<float>()(rng) < p ? kRadiance / p : 0.0f;
+    };
+}
+
+double relMseOf(double varianceOfMean, double bias = 0.0)
+{
+    return (varianceOfMean + bias * bias) / (double(kRadiance) * kRadiance + kRelMseEpsilon);
+}
+
+TEST(PilotError, UnbiasedCandidatesMeasureTheirVariance)
+{
+    std::mt19937 rng(11);
+    const std::vector<float> sigmas{0.05f, 0.1f, 0.2f, 0.4f};
+    std::vector<PilotHalves> candidates;
+    for (float s : sigmas)
+        candidates.push_back(halves(rng, gaussian(s)));
+    const std::vector<PilotError> errors = pilotRelMse(candidates);
+    ASSERT_EQ(errors.size(), sigmas.size());
+    for (std::size_t i = 0; i < sigmas.size(); ++i)
+    {
+        const double expected = relMseOf(0.5 * sigmas[i] * sigmas[i]);
+        // 5 standard errors, and the standard error itself right within a factor 2 (Gaussian squares: sqrt(2)
+        // times the mean over sqrt(n)).
+        EXPECT_NEAR(errors[i].relMse, expected, 5.0 * errors[i].standardError) << "sigma " << sigmas[i];
+        EXPECT_GT(errors[i].standardError, 0.5 * std::sqrt(2.0 / 20172.0) * expected);
+        EXPECT_LT(errors[i].standardError, 2.0 * std::sqrt(2.0 / 20172.0) * expected + 1e-12);
+    }
+}
+
+TEST(PilotError, ABiasTheHalvesCannotSeeIsMeasuredAgainstTheOthers)
+{
+    // The biased candidate's halves agree with each other as well as the unbiased ones' do: only the others'
+    // combined estimate shows its offset.
+    std::mt19937 rng(12);
+    constexpr float kBias = 0.1f, kSigma = 0.05f;
+    std::vector<PilotHalves> candidates;
+    for (int i = 0; i < 3; ++i)
+        candidates.push_back(halves(rng, gaussian(kSigma)));
+    candidates.push_back(halves(rng, gaussian(kSigma, kBias)));
+    const std::vector<PilotError> errors = pilotRelMse(candidates);
+    const double biased = relMseOf(0.5 * kSigma * kSigma, kBias);
+    EXPECT_NEAR(errors[3].relMse, biased, 0.06 * biased);
+    // An unbiased candidate's reference holds the biased one at a third of the weight (the halves cannot tell it
+    // apart): its measured error carries a third of the bias, normalised by the others' mean, R + b / 3.
+    const double shifted = kRadiance + kBias / 3.0;
+    const double unbiased = (0.5 * kSigma * kSigma + kBias * kBias / 9.0) / (shifted * shifted + kRelMseEpsilon);
+    for (int i = 0; i < 3; ++i)
+    {
+        EXPECT_NEAR(errors[i].relMse, unbiased, 0.1 * unbiased) << "candidate " << i;
+        EXPECT_GT(errors[3].relMse, 3.0 * errors[i].relMse);
+    }
+}
+
+TEST(PilotError, FirefliesAreNotDividedByThemselves)
+{
+    // A spiky estimator normalised by an image holding its own spikes looks bounded (a firefly over itself is
+    // about 1): the pilot once chose bsdf over nee-mis that way. Against the others' estimate it keeps its true
+    // relMSE, (1 - p) / (2p) R^2 / (R^2 + 0.01), here 9.6 times the smooth candidates'.
+    std::mt19937 rng(13);
+    constexpr float kP = 0.05f, kSigma = 0.5f;
+    std::vector<PilotHalves> candidates{halves(rng, gaussian(kSigma)), halves(rng, gaussian(kSigma)),
+                                        halves(rng, fireflies(kP))};
+    const std::vector<PilotError> errors = pilotRelMse(candidates);
+    const double spiky = relMseOf(0.5 * (1.0 - kP) / kP * kRadiance * kRadiance);
+    // The firefly estimate is heavy-tailed: 6 of its standard errors.
+    EXPECT_NEAR(errors[2].relMse, spiky, 6.0 * errors[2].standardError);
+    EXPECT_GT(errors[2].relMse, 5.0 * errors[0].relMse);
+}
+
+TEST(PilotError, OneCandidateIsItsOwnVarianceAndSizesMustMatch)
+{
+    std::mt19937 rng(14);
+    const std::vector<PilotError> one = pilotRelMse({halves(rng, gaussian(0.2f))});
+    ASSERT_EQ(one.size(), 1u);
+    EXPECT_NEAR(one[0].relMse, relMseOf(0.5 * 0.2 * 0.2), 5.0 * one[0].standardError);
+    std::vector<PilotHalves> mismatched{halves(rng, gaussian(0.2f)), {Image(4, 4), Image(4, 4)}};
+    EXPECT_THROW(pilotRelMse(mismatched), UsageError);
+}
+
+TEST(AutoCandidates, FollowTheScenesLights)
+{
+    const Scene spheres = makeScene("sphere-light-closeup");
+    const StrategyLists s = autoCandidates(spheres, {}, {});
+    EXPECT_EQ(s.at("--estimators"), "nee-mis,nee,mixture,bsdf");
+    EXPECT_EQ(s.at("--light-samplers"), "projected,solid-angle,area") << "projected-exact is projected on spheres";
+    EXPECT_EQ(s.count("--light-selections"), spheres.emitterCount() > 1 ? 1u : 0u);
+    EXPECT_EQ(s.at("--samplings"), "sobol,random");
+    EXPECT_EQ(s.count("--roulettes"), 0u);
+
+    const Scene quads = makeScene("cornell-box-lights");
+    ASSERT_GT(quads.emitterCount(), 1u);
+    const StrategyLists q = autoCandidates(quads, {}, {});
+    EXPECT_NE(q.at("--light-samplers").find("projected-exact"), std::string::npos);
+    EXPECT_EQ(q.at("--light-selections"), "bvh,power,uniform");
+}
+
+TEST(AutoCandidates, FlagsFixAndListsReplace)
+{
+    const Scene scene = makeScene("cornell-box-lights");
+    const StrategyLists s = autoCandidates(scene, {{"--samplings", "random,stratified"}}, {"estimator", "light-sampler"});
+    EXPECT_EQ(s.count("--estimators"), 0u);
+    EXPECT_EQ(s.count("--light-samplers"), 0u);
+    EXPECT_EQ(s.at("--samplings"), "random,stratified");
+    EXPECT_EQ(s.at("--light-selections"), "bvh,power,uniform");
+}
+} // namespace
+} // namespace rt::compare
