@@ -1,4 +1,4 @@
-// --strategy auto: the light-sampling strategy (estimator x light sampler x light selection x pixel sampling)
+// --strategy auto: the light-sampling strategy (estimator x light sampler x light selection; pixel sampling where asked)
 // chosen for a scene by measurement on the engine that will render it, since which one wins depends on the
 // scene, the engine and the build (issue 37: the project's own tables changed their verdict as the code got
 // faster).
@@ -7,13 +7,16 @@
 // fraction of that estimate (5 % by default), at most a few seconds. Then a coordinate search: one setting at a
 // time (in the settings table's order), every candidate value rendered with the others at the best found so far,
 // each as two independent halves of the same small render (the pilot's size and spp are the same for every
-// candidate, so that their images combine). Each candidate's error is its relMSE against the other candidates'
-// combined estimate (weighted by their inverse errors), less that combination's own noise, known from its halves;
-// never below the candidate's own variance from its halves (Image/Metrics.h's two-half estimate); relMSE's
-// denominator is the others' estimate blurred over 5 x 5 pixels, never the candidate's own image. Its efficiency is
-// 1 / (relMSE x seconds), twice the faster half's time on the engine's clock (Compare/Measurement.h). The most
-// efficient candidate measured wins, where its lead over the best before it is more than twice the standard error
-// of their ratio: otherwise the scene's own strategy (where the search starts) stays.
+// candidate, so that their images combine: about 1024 pixels, the rest of the budget as spp).
+//
+// A candidate's error is the variance of its estimate from its halves (Image/Metrics.h's two-half estimate), as
+// relMSE; where its relMSE against the other candidates' combined estimate (weighted by their inverse errors), less
+// that combination's own noise, is higher by more than twice its standard error, that instead: a bias the halves
+// cannot see. relMSE's denominator is the others' estimate blurred over 5 x 5 pixels, never the candidate's own
+// image (a firefly over itself is about 1). Its efficiency is 1 / (relMSE x seconds), twice the faster half's time
+// on the engine's clock (Compare/Measurement.h). The most efficient candidate measured wins, where its lead over
+// the best before it is more than twice the standard error of their ratio: otherwise the scene's own strategy
+// (where the search starts) stays.
 //
 // The choice depends on timings, so two runs may choose differently where candidates are close: the record names
 // the strategy chosen, and giving its flags renders it again, bit for bit.
@@ -76,8 +79,9 @@ struct AutoChoice
 /// names a list, else the defaults for the scene, of which a setting given on the command line (`fixed`, by
 /// setting name: "estimator") keeps only its value. The defaults: every estimator; area, solid-angle and projected
 /// light sampling, and projected-exact where the scene has quad or triangle lights (on spheres it is projected),
-/// none but the request's when it has no emitter; every light selection where the scene has two emitters or more;
-/// random and sobol pixel sampling; Russian roulette as the request has it.
+/// none but the request's when it has no emitter; every light selection where the scene has two emitters or more.
+/// The pixel sampling and Russian roulette stay the request's: Sobol's gain over random grows with the spp, and a
+/// pilot of a few samples per pixel cannot measure what the render's many will gain (a list given varies them).
 StrategyLists autoCandidates(const Scene& scene, const StrategyLists& given, const std::vector<std::string>& fixed);
 
 /// Runs the pilot for `request` (whose strategy settings start the search) on `engine`, whose scene is set to
@@ -100,8 +104,8 @@ struct PilotError
     double standardError = 0.0; // of relMse, from the spread of its pixels' terms
 };
 
-/// The pilot's error of each candidate (see above: relMSE against the others' combined estimate, less its noise,
-/// floored by the candidate's own variance from its halves). One candidate: its own variance. Every image the same
+/// The pilot's error of each candidate (see above: its halves' variance, or its relMSE against the others' combined
+/// estimate less that estimate's noise where that is significantly higher). One candidate: its own variance. Every image the same
 /// size; throws UsageError otherwise.
 std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& candidates);
 } // namespace rt::compare

@@ -5,6 +5,7 @@
 # tests/Bench/device_carry.sh (figures in docs/notebook/PERFORMANCE.md).
 #   tests/Bench/device_run.sh tests    the GPU test suite (but its heavy part) and the apps' smoke tests
 #   tests/Bench/device_run.sh samplers the light samplers at equal time on the light scenes (issue 37)
+#   tests/Bench/device_run.sh auto     --strategy auto against a full --compare at equal time (auto_strategy.sh)
 #   tests/Bench/device_run.sh heavy    the heavy part: CPU/GPU agreement of every scene at 128 px, 64 spp
 #   tests/Bench/device_run.sh table    thesis Table 5.4 redone: cornell-box-lights 600x600, depth 50, mixture
 #   tests/Bench/device_run.sh estimators  the same scene on the GPU with each estimator against one reference
@@ -136,6 +137,21 @@ samplers)
     done
     cat /tmp/samplers/*.txt >"$out/samplers.txt"
     (cd /tmp/samplers && tar -czf "$out/samplers.tar.gz" ./*)
+    ;;
+auto)
+    # Issue 37's --strategy auto: a headless pilot on cornell-box-lights at 600 px, 1024 spp, twice (the driver's
+    # shader cache cold, then warm: the pilot's wall time includes its pipelines' compilation), then
+    # auto_strategy.sh at equal time (MS, default 500) on SCENES at WIDTH (600), SEEDS (2) seeds, REF_SPP (8192).
+    rm -rf /tmp/auto && mkdir -p /tmp/auto
+    for run in cold warm; do
+        "$bin/ray-tracing-gpu" --headless --quiet --strategy auto --scene cornell-box-lights --width 600 --spp 1024 \
+            --stats "/tmp/auto/headless-$run.json" | tee "/tmp/auto/headless-$run.txt"
+    done
+    # shellcheck disable=SC2086 # SCENES is a list
+    bash tests/Bench/auto_strategy.sh "$bin" /tmp/auto gpu "${WIDTH:-600}" "${MS:-500}" "${SEEDS:-2}" "${REF_SPP:-8192}" \
+        ${SCENES:-rect-light-closeup sphere-light-closeup triangle-lights cornell-box-lights}
+    python3 tests/Bench/auto_strategy_table.py /tmp/auto | tee "$out/auto.md"
+    (cd /tmp/auto && tar -czf "$out/auto.tar.gz" ./*.csv ./*.txt ./*.json)
     ;;
 ab)
     ROUNDS=${ROUNDS:-3} bash tests/Bench/gpu_ab.sh .devcarry/baseline "$bin" /tmp/ab ${2:-} | tee "$out/ab.txt"

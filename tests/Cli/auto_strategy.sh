@@ -8,21 +8,21 @@ app=$1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-# The estimator, light sampler and selection fixed by flags: the pilot varies the pixel sampling alone (two
-# pipelines on a GPU: lavapipe compiles each for seconds).
+# The estimator and light sampler fixed by flags: the pilot varies the light selection alone (three pipelines on
+# a GPU: lavapipe compiles each for seconds).
 "$app" --headless --quiet --scene cornell-box-lights --width 24 --spp 64 --depth 6 --strategy auto \
-    --estimator nee --light-sampler solid-angle --light-selection power --stats "$work/a.json" >/dev/null
+    --estimator nee --light-sampler solid-angle --sampling random --stats "$work/a.json" >/dev/null
 /usr/bin/python3 - "$work/a.json" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
 c = d["strategy_choice"]
 rows = c["candidates"]
-assert len(rows) == 2, rows
+assert len(rows) == 3, rows
 for r in rows:
     words = r["strategy"].split()
-    assert words[:3] == ["nee", "solid-angle", "power"], f"a flag was varied: {r['strategy']}"
-    assert r["varied"] == "sampling" and r["ms"] > 0 and r["relmse"] > 0, r
-assert c["chosen"].split()[3] == d["settings"]["sampling"], (c["chosen"], d["settings"])
+    assert words[:2] == ["nee", "solid-angle"] and words[3] == "random", f"a flag was varied: {r['strategy']}"
+    assert r["varied"] == "light-selection" and r["ms"] > 0 and r["relmse"] > 0, r
+assert c["chosen"].split()[2] == d["settings"]["light_selection"], (c["chosen"], d["settings"])
 assert d["settings"]["estimator"] == "nee"
 assert c["budget_seconds"] > 0 and c["pilot_width"] > 0
 PY

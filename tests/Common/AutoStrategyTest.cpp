@@ -130,7 +130,7 @@ TEST(AutoCandidates, FollowTheScenesLights)
     EXPECT_EQ(s.at("--estimators"), "nee-mis,nee,mixture,bsdf");
     EXPECT_EQ(s.at("--light-samplers"), "projected,solid-angle,area") << "projected-exact is projected on spheres";
     EXPECT_EQ(s.count("--light-selections"), spheres.emitterCount() > 1 ? 1u : 0u);
-    EXPECT_EQ(s.at("--samplings"), "sobol,random");
+    EXPECT_EQ(s.count("--samplings"), 0u) << "a pilot's few spp cannot see what Sobol gains at the render's";
     EXPECT_EQ(s.count("--roulettes"), 0u);
 
     const Scene quads = makeScene("cornell-box-lights");

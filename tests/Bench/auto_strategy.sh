@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Issue 37's check of --strategy auto, per scene, at equal time on one engine:
+#  1. a full --compare over every candidate of auto's defaults (estimators x light samplers x light selections; no
+#     selections where the scene has one light, no projected-exact where its lights are spheres; the scene's pixel
+#     sampling) with the auto row beside them, its time including its pilot's;
+#  2. the best strategy of 1 measured again, and the scene's own strategy and auto with fresh seeds (--seed 1000),
+#     against 1's reference: the best of many noisy rows is biased up (the winner's curse), a new measurement is not.
+# auto_strategy_table.py OUT_DIR then prints auto's efficiency against the best's and the scene's own.
+#   tests/Bench/auto_strategy.sh BIN_DIR OUT_DIR ENGINE WIDTH EQUAL_MS SEEDS REFERENCE_SPP SCENE...
+# e.g. on the CPU: auto_strategy.sh build/bin docs/results/cpu-auto-strategy multi 128 1000 2 8192 cornell-box-lights
+set -eu
+bin=$1 out=$2 engine=$3 width=$4 equalMs=$5 seeds=$6 referenceSpp=$7
+shift 7
+mkdir -p "$out"
+here=$(cd "$(dirname "$0")" && pwd)
+if [ "$engine" = gpu ]; then app="$bin/ray-tracing-gpu"; else app="$bin/ray-tracing-cpu"; fi
+for scene in "$@"; do
+    case "$scene" in
+    rect-light-closeup | rtrol-cornell-box) samplers=projected,solid-angle,area,projected-exact selections=bvh ;;
+    sphere-light-closeup) samplers=projected,solid-angle,area selections=bvh ;;
+    veach-mis) samplers=projected,solid-angle,area selections=bvh,power,uniform ;;
+    *) samplers=projected,solid-angle,area,projected-exact selections=bvh,power,uniform ;;
+    esac
+    common=(--scene "$scene" --engines "$engine" --width "$width" --equal-time "$equalMs" --rounds 1)
+    # The scene's own strategy, as the stats record it.
+    $app --headless --quiet --scene "$scene" --width 8 --spp 1 --depth 1 --stats "$out/$scene-defaults.json" >/dev/null
+    $app --compare "${common[@]}" --seeds "$seeds" --reference-spp "$referenceSpp" --strategy auto \
+        --estimators nee-mis,nee,mixture,bsdf --light-samplers "$samplers" --light-selections "$selections" \
+        --csv "$out/$scene.csv" --images "$out/$scene-images" \
+        >"$out/$scene.txt" 2>"$out/$scene.log"
+    reference="$out/$scene-images/reference.pfm"
+    read -r estimator sampler selection sampling roulette < <(/usr/bin/python3 "$here/auto_strategy_table.py" --best "$out/$scene.csv")
+    $app --compare "${common[@]}" --seeds 3 --seed 1000 --reference "$reference" --estimator "$estimator" \
+        --light-sampler "$sampler" --light-selection "$selection" --sampling "$sampling" --russian-roulette "${roulette#rr-}" \
+        --csv "$out/$scene-recheck-best.csv" --images "$out/$scene-recheck-images" >"$out/$scene-recheck-best.txt" 2>/dev/null
+    $app --compare "${common[@]}" --seeds 3 --seed 1000 --reference "$reference" --strategy auto \
+        --csv "$out/$scene-recheck.csv" --images "$out/$scene-recheck-images" >"$out/$scene-recheck.txt" 2>/dev/null
+    rm -rf "$out/$scene-images" "$out/$scene-recheck-images" # the CSVs keep every figure
+    echo "$scene done" >&2
+done
