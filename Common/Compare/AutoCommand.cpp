@@ -31,9 +31,10 @@ RequestChooser strategyChooser(const Scene& scene, const CommonOptions& options)
         if (choice.rows.empty())
             spdlog::info("--strategy auto: the flags leave one candidate, {}", choice.chosen.name());
         else
-            spdlog::info("--strategy auto: {} (pilot {:.2f} s of a {:.2f} s budget, {}x{} at {} spp per candidate; "
+            spdlog::info("--strategy auto: {} (pilot {:.2f} s of a {:.2f} s budget{}, {}x{} at {} spp per candidate; "
                          "render estimated at {:.1f} s):\n{}",
-                         choice.chosen.name(), choice.pilotWallSeconds, choice.budgetSeconds, choice.width,
+                         choice.chosen.name(), choice.pilotWallSeconds, choice.budgetSeconds,
+                         choice.budgetSpent ? ", stopped there before every candidate" : "", choice.width,
                          choice.height, choice.spp, choice.estimatedRenderSeconds, choice.table());
         return chosen;
     };

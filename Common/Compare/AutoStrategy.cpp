@@ -17,12 +17,15 @@ namespace rt::compare
 {
 namespace
 {
-/// A setting the search varies and its candidate words (two or more).
-struct SearchedSetting
+/// "light-sampler, light-selection": the strategy settings in which `b` differs from `a`.
+std::string differences(const Strategy& a, const Strategy& b)
 {
-    const Setting* setting;
-    std::vector<std::string> words;
-};
+    std::vector<std::string> names;
+    for (const Setting* s : strategySettings())
+        if (s->text(a.settings) != s->text(b.settings))
+            names.emplace_back(s->name);
+    return fmt::format("{}", fmt::join(names, ", "));
+}
 
 std::vector<std::string> candidateWords(const StrategyLists& candidates, const Setting& setting)
 {
@@ -52,32 +55,6 @@ int widthFor(const RenderSettings& settings, double pixels)
 
 double pixelsOf(const RenderSettings& s) { return double(s.width) * double(s.height()); }
 
-/// A 5 x 5 box blur of an RGB image of doubles (width x height x 3, row-major), clamped at the borders.
-std::vector<double> boxBlur(const std::vector<double>& image, int width, int height)
-{
-    constexpr int r = 2;
-    auto pass = [&](const std::vector<double>& in, bool horizontal) {
-        std::vector<double> out(in.size(), 0.0);
-        for (int y = 0; y < height; ++y)
-            for (int x = 0; x < width; ++x)
-                for (int c = 0; c < 3; ++c)
-                {
-                    double sum = 0.0;
-                    int count = 0;
-                    for (int d = -r; d <= r; ++d)
-                    {
-                        const int xx = horizontal ? x + d : x, yy = horizontal ? y : y + d;
-                        if (xx < 0 || yy < 0 || xx >= width || yy >= height)
-                            continue;
-                        sum += in[(std::size_t(yy) * width + xx) * 3 + c];
-                        ++count;
-                    }
-                    out[(std::size_t(y) * width + x) * 3 + c] = sum / count;
-                }
-        return out;
-    };
-    return pass(pass(image, true), false);
-}
 } // namespace
 
 StrategyLists autoCandidates(const Scene& scene, const StrategyLists& given, const std::vector<std::string>& fixed)
@@ -99,7 +76,7 @@ StrategyLists autoCandidates(const Scene& scene, const StrategyLists& given, con
         if (std::find(fixed.begin(), fixed.end(), s->name) != fixed.end())
             continue;
         if (s->name == "estimator")
-            lists[flag] = "nee-mis,nee,mixture,bsdf";
+            lists[flag] = "nee-mis,mixture";
         else if (s->name == "light-sampler" && emitters > 0)
             lists[flag] = polygonLights ? "projected,solid-angle,area,projected-exact" : "projected,solid-angle,area";
         else if (s->name == "light-selection" && emitters > 1)
@@ -124,23 +101,30 @@ std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& candidates)
         return std::vector<PilotError>(n);
     // x: each candidate's estimate (the halves' mean); v: its variance, (a - b)^2 / 4 (Image/Metrics.h).
     std::vector<std::vector<double>> x(n, std::vector<double>(values)), v(n, std::vector<double>(values));
-    std::vector<double> sumX(values, 0.0);
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t k = 0; k < values; ++k)
         {
             const double a = candidates[i].a.data()[k / 3][int(k % 3)], b = candidates[i].b.data()[k / 3][int(k % 3)];
             x[i][k] = 0.5 * (a + b);
             v[i][k] = 0.25 * (a - b) * (a - b);
-            sumX[k] += x[i][k];
         }
-    // relMSE's denominator for candidate i: the others' mean, blurred. Never candidate i's own image: a firefly
+    // relMSE's denominator for candidate i: the others' estimate, per pixel. Never candidate i's own image: a firefly
     // divided by itself would make the spikiest estimator look the best (measured: bsdf chosen over nee-mis, which
     // is 2x as efficient, on cornell-box-lights at 2 spp).
-    auto othersNorm = [&](std::size_t i) {
-        std::vector<double> mean(values);
-        for (std::size_t k = 0; k < values; ++k)
-            mean[k] = n > 1 ? (sumX[k] - x[i][k]) / double(n - 1) : x[i][k];
-        mean = boxBlur(mean, width, height);
+    // (Not blurred: over 5 x 5 pixels of a 40 x 27 pilot a light's bright pixels took their dark neighbours' values,
+    // and their antialiasing noise over those read as relMSE 100x the render's on veach-mis.)
+    auto othersNorm = [&](std::size_t i, const std::vector<double>& w) {
+        std::vector<double> mean(values, 0.0);
+        double weight = 0.0;
+        for (std::size_t j = 0; j < n; ++j)
+            if (j != i || n == 1)
+            {
+                weight += w[j];
+                for (std::size_t k = 0; k < values; ++k)
+                    mean[k] += w[j] * x[j][k];
+            }
+        for (double& m : mean)
+            m /= weight;
         for (double& m : mean)
             m = m * m + kRelMseEpsilon;
         return mean;
@@ -158,47 +142,18 @@ std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& candidates)
         const double variance = std::max(sumSquares / double(values) - mean * mean, 0.0);
         return PilotError{mean, std::sqrt(variance / double(values))};
     };
-    std::vector<std::vector<double>> norms(n);
-    std::vector<PilotError> own(n);
-    std::vector<double> w(n);
-    for (std::size_t i = 0; i < n; ++i)
+    // Twice: the others' plain mean gives every candidate's error, whose inverses weight the others' mean of the
+    // second pass, so that a noisy candidate does not make its neighbours' denominators noisy.
+    std::vector<double> w(n, 1.0);
+    std::vector<PilotError> errors(n);
+    for (int pass = 0; pass < 2; ++pass)
     {
-        norms[i] = othersNorm(i);
-        own[i] = relative(v[i], norms[i]);
-        w[i] = 1.0 / std::max(own[i].relMse, 1e-300);
+        for (std::size_t i = 0; i < n; ++i)
+            errors[i] = relative(v[i], othersNorm(i, w));
+        for (std::size_t i = 0; i < n; ++i)
+            w[i] = 1.0 / std::max(errors[i].relMse, 1e-300);
     }
-    if (n == 1)
-        return own;
-    // The others' inverse-error weighted combination r_-i, independent of x_i: E[(x_i - r_-i)^2] = Var x_i +
-    // bias_i^2 + Var r_-i, the last known from the others' halves and removed.
-    double W = 0.0;
-    std::vector<double> sumWX(values, 0.0), sumW2V(values, 0.0);
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        W += w[i];
-        for (std::size_t k = 0; k < values; ++k)
-        {
-            sumWX[k] += w[i] * x[i][k];
-            sumW2V[k] += w[i] * w[i] * v[i][k];
-        }
-    }
-    std::vector<PilotError> relMse(n);
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        const double rest = W - w[i];
-        std::vector<double> error(values);
-        for (std::size_t k = 0; k < values; ++k)
-        {
-            const double d = x[i][k] - (sumWX[k] - w[i] * x[i][k]) / rest;
-            error[k] = d * d - (sumW2V[k] - w[i] * w[i] * v[i][k]) / (rest * rest);
-        }
-        // The halves' own variance is the quieter estimate (the others' noise is not in it) and right for an
-        // unbiased candidate; the error against the others replaces it where it is higher by more than twice its
-        // standard error: a bias.
-        const PilotError against = relative(error, norms[i]);
-        relMse[i] = against.relMse - own[i].relMse > 2.0 * against.standardError ? against : own[i];
-    }
-    return relMse;
+    return errors;
 }
 
 AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, const StrategyLists& candidates,
@@ -206,22 +161,27 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
 {
     const auto start = std::chrono::steady_clock::now();
     AutoChoice choice;
-    RenderSettings best = request.settings;
-    std::vector<SearchedSetting> searched;
+    // Every combination of the lists (what a strategy does not use kept once: strategyGrid), the request's own
+    // first: it is the one to beat.
+    StrategyLists lists;
     for (const Setting* s : strategySettings())
     {
         const std::vector<std::string> words = candidateWords(candidates, *s);
-        if (words.empty())
-            continue;
-        if (std::find(words.begin(), words.end(), s->text(best)) == words.end())
-            s->set(best, words.front(), s->compareFlag);
-        if (words.size() > 1)
-            searched.push_back({s, words});
+        if (!words.empty())
+            lists[std::string(s->compareFlag)] = fmt::format("{}", fmt::join(words, ","));
     }
-    choice.chosen = Strategy::of(best);
-    std::size_t planned = 1;
-    for (const SearchedSetting& s : searched)
-        planned += s.words.size() - 1;
+    std::vector<Strategy> grid = strategyGrid(lists, request.settings);
+    RenderSettings best = request.settings;
+    for (const Setting* s : strategySettings())
+        if (const std::vector<std::string> words = candidateWords(candidates, *s);
+            !words.empty() && std::find(words.begin(), words.end(), s->text(best)) == words.end())
+            s->set(best, words.front(), s->compareFlag); // the request's value is no candidate: the list's first
+    const Strategy own = Strategy::of(best);
+    if (const auto it = std::find(grid.begin(), grid.end(), own); it != grid.end())
+        grid.erase(it);
+    grid.insert(grid.begin(), own);
+    choice.chosen = own;
+    const std::size_t planned = grid.size();
     if (planned == 1)
         return choice;
 
@@ -242,16 +202,29 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     const double msPerPath = std::max(probed.ms(), 1e-6) / pixelsOf(probe.settings);
     choice.estimatedRenderSeconds = budget.renderSeconds > 0.0 ? budget.renderSeconds : msPerPath * renderPaths * 1e-3;
     choice.budgetSeconds = std::min(budget.maxSeconds, budget.fraction * choice.estimatedRenderSeconds);
-    // Every candidate's two halves share the budget equally; below one sample of the whole image, a smaller image.
-    const double pathsPerHalf = choice.budgetSeconds * 1e3 / msPerPath / double(planned) / 2.0;
-    // At least kPilotPixels pixels (relMSE's terms: its standard error falls with their count), the rest as samples
+    // Successive halving (Jamieson & Talwalkar 2016): every candidate measured once, then the better half again,
+    // and so on down to two (the scene's own stays in every round, as the one to beat). A candidate whose first
+    // measurement was lucky (a pilot sees few of the rare paths that carry a glossy scene's light) is measured
+    // again before it can win: measured once each, uniform light selection won veach-mis's pilot at 6x nee-mis
+    // with the BVH, which the full comparison puts at 0.9x. Every measurement of every round is the same size.
+    std::size_t measurements = 0;
+    for (std::size_t m = planned;; m = (m + 1) / 2)
+    {
+        measurements += m;
+        if (m <= 2)
+            break;
+    }
+    const double pathsPerHalf = choice.budgetSeconds * 1e3 / msPerPath / double(measurements) / 2.0;
+    // At least 1024 pixels (relMSE's terms: its standard error falls with their count), the rest as samples
     // per pixel, up to half the render's: stratification (Sobol's points, the spherical samplers' warps) gains
     // with the spp, and a pilot of 2 spp cannot see it (it chose random over sobol on rect-light-closeup, where
     // sobol is 3.5x as efficient at 1 s).
-    constexpr double kPilotPixels = 1024.0;
+    // A GPU needs more pixels than that to run at its speed (a 45 x 45 pilot on an H100 took 100x the time per
+    // path of the 600 x 600 probe): at least the engine's concurrent paths.
+    const double pilotPixels = std::max(1024.0, double(engine.concurrentPaths()));
     const int sppCap = std::max(1, request.settings.trueSpp() / 2);
     RenderSettings pilot = request.settings;
-    pilot.spp = std::clamp(static_cast<int>(pathsPerHalf / kPilotPixels), 1, sppCap);
+    pilot.spp = std::clamp(static_cast<int>(pathsPerHalf / pilotPixels), 1, sppCap);
     pilot.width = widthFor(request.settings, pathsPerHalf / pilot.spp);
     pilot.spp = std::clamp(static_cast<int>(pathsPerHalf / pixelsOf(pilot)), pilot.spp, sppCap);
     choice.width = pilot.width;
@@ -262,12 +235,21 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // 15x its share on many-lights).
     const double shareMs = pathsPerHalf * msPerPath;
     const auto timeLimit = std::chrono::nanoseconds(static_cast<std::int64_t>(std::max(4.0 * shareMs, 5.0) * 1e6));
-    std::vector<PilotHalves> images;
-    std::vector<std::size_t> imageRows; // the row of each entry of images
-    auto measureCandidate = [&](const RenderSettings& strategy, const std::string& varied) {
+
+    /// A candidate's measurements so far: the sums of its A and B halves, each measurement of the same size.
+    struct Candidate
+    {
+        PilotRow row;
+        Image sumA, sumB;
+    };
+    std::vector<Candidate> runs;
+    for (const Strategy& strategy : grid)
+        runs.push_back({PilotRow{strategy, differences(own, strategy)}, Image(), Image()});
+    std::uint32_t measured = 0; // measurements made, for their seeds
+    auto measureOnce = [&](Candidate& c) {
         RenderRequest half = request;
-        half.settings = Strategy::of(strategy).applyTo(pilot);
-        half.settings.seed = request.settings.seed + 7919u * std::uint32_t(2 * choice.rows.size() + 1);
+        half.settings = c.row.strategy.applyTo(pilot);
+        half.settings.seed = request.settings.seed + 7919u * (2u * measured++ + 1u);
         Measurement a = measure(engine, half, nullptr, timeLimit);
         ++half.settings.seed;
         Measurement b = a.cancelled ? Measurement{.cancelled = a.cancelled, .timedOut = a.timedOut}
@@ -277,73 +259,122 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         choice.pilotMs += a.ms() + b.ms();
         if (b.timedOut)
         {
-            choice.rows.push_back({Strategy::of(strategy), varied, a.timedOut ? a.wallMs : a.ms() + b.wallMs});
-            choice.rows.back().tooSlow = true;
+            c.row.tooSlow = true;
+            c.row.ms += a.timedOut ? a.wallMs : a.ms() + b.wallMs;
             return true;
+        }
+        if (measured == 1 && budget.renderSeconds <= 0.0)
+        {
+            // The first candidate is the probe's strategy on many more paths: a better time per path (the probe's
+            // small render overestimated a 1 s render 2.7x on 2 cores), hence the render's time and the budget.
+            const double perPath = std::min(a.ms(), b.ms()) / (pixelsOf(half.settings) * half.settings.trueSpp());
+            choice.estimatedRenderSeconds = perPath * renderPaths * 1e-3;
+            choice.budgetSeconds = std::min(budget.maxSeconds, budget.fraction * choice.estimatedRenderSeconds);
         }
         choice.spp = a.spp + b.spp;
         // The halves are the same work: the faster one's time twice, so that a one-off stall of either (a pool's
         // first use, a clock ramping up: 2x on the first candidate after the probe, measured) does not decide.
-        choice.rows.push_back({Strategy::of(strategy), varied, 2.0 * std::min(a.ms(), b.ms())});
-        imageRows.push_back(choice.rows.size() - 1);
-        images.push_back({std::move(a.image), std::move(b.image)});
+        c.row.ms += 2.0 * std::min(a.ms(), b.ms());
+        ++c.row.measurements;
+        if (c.sumA.empty())
+        {
+            c.sumA = std::move(a.image);
+            c.sumB = std::move(b.image);
+        }
+        else
+            for (std::size_t k = 0; k < c.sumA.pixelCount(); ++k)
+            {
+                c.sumA.data()[k] += a.image.data()[k];
+                c.sumB.data()[k] += b.image.data()[k];
+            }
         return true;
     };
-    // The best so far stays unless a candidate's efficiency is above it by more than twice the standard error of
-    // their ratio (the relMSEs' errors; the times' are smaller): a pilot's noise alone does not move the choice
-    // away from the scene's strategy, and a tie keeps the first measured.
+    // relMSE of each candidate's mean over its measurements (its cost: their summed time), and the winner: the
+    // most efficient where its lead over the scene's own is more than the standard error of their ratio (the
+    // relMSEs' errors; the times' are smaller): a tie, or a lead within the pilot's noise, keeps the scene's
+    // strategy. (Twice the error kept book 3's mixture on rtrol-cornell-box at 0.46x nee's efficiency.)
     auto rescore = [&] {
-        const std::vector<PilotError> errors = pilotRelMse(images);
-        for (std::size_t i = 0; i < images.size(); ++i)
+        std::vector<PilotHalves> halves;
+        std::vector<Candidate*> scored;
+        for (Candidate& c : runs)
+            if (c.row.measurements > 0 && !c.row.tooSlow)
+            {
+                Image a = c.sumA, b = c.sumB;
+                for (std::size_t k = 0; k < a.pixelCount(); ++k)
+                {
+                    a.data()[k] /= float(c.row.measurements);
+                    b.data()[k] /= float(c.row.measurements);
+                }
+                halves.push_back({std::move(a), std::move(b)});
+                scored.push_back(&c);
+            }
+        const std::vector<PilotError> errors = pilotRelMse(halves);
+        for (std::size_t i = 0; i < scored.size(); ++i)
         {
-            PilotRow& row = choice.rows[imageRows[i]];
+            PilotRow& row = scored[i]->row;
             row.relMse = errors[i].relMse;
             row.relMseError = errors[i].standardError;
             row.efficiency = row.relMse > 0.0 && row.ms > 0.0 ? 1.0 / (row.relMse * row.ms * 1e-3) : 0.0;
         }
-        const Strategy current = Strategy::of(best);
-        const PilotRow* incumbent = nullptr;
-        for (const PilotRow& row : choice.rows)
-            if (row.strategy == current && !row.tooSlow)
-                incumbent = &row;
-        const PilotRow* winner = incumbent;
+    };
+    auto winner = [&]() -> const PilotRow* {
+        const PilotRow* incumbent = runs.front().row.measurements > 0 && !runs.front().row.tooSlow ? &runs.front().row
+                                                                                                    : nullptr;
+        const PilotRow* best = incumbent;
         auto relative = [](const PilotRow& r) { return r.relMse > 0.0 ? r.relMseError / r.relMse : 0.0; };
-        for (const PilotRow& row : choice.rows)
+        for (const Candidate& c : runs)
         {
-            if (row.tooSlow)
+            const PilotRow& row = c.row;
+            if (row.tooSlow || row.measurements == 0)
                 continue;
             if (!incumbent)
             {
-                if (!winner || row.efficiency > winner->efficiency)
-                    winner = &row;
+                if (!best || row.efficiency > best->efficiency)
+                    best = &row;
                 continue;
             }
-            const double margin = 2.0 * std::hypot(relative(row), relative(*incumbent));
-            if (row.efficiency > winner->efficiency && std::log(row.efficiency / incumbent->efficiency) > margin)
-                winner = &row;
+            if (row.efficiency > best->efficiency &&
+                std::log(row.efficiency / incumbent->efficiency) > std::hypot(relative(row), relative(*incumbent)))
+                best = &row;
         }
-        if (winner)
-            best = winner->strategy.applyTo(best);
+        return best;
     };
 
     bool finished = true;
-    for (const SearchedSetting& s : searched)
+    std::vector<std::size_t> active(runs.size());
+    for (std::size_t i = 0; i < active.size(); ++i)
+        active[i] = i;
+    while (finished && !choice.budgetSpent)
     {
-        if (!s.setting->used(best))
-            continue; // e.g. the light sampler once bsdf has won
-        for (const std::string& word : s.words)
+        for (const std::size_t i : active)
         {
-            RenderSettings candidate = best;
-            s.setting->set(candidate, word, s.setting->compareFlag);
-            const Strategy strategy = Strategy::of(candidate);
-            if (std::any_of(choice.rows.begin(), choice.rows.end(), [&](const PilotRow& r) { return r.strategy == strategy; }))
-                continue;
-            if (!(finished = measureCandidate(candidate, std::string(s.setting->name))))
+            // The budget on the host's clock: a GPU compiles each candidate's pipeline (1.3 s each on an H100 with
+            // the driver's cache cold), which no engine clock sees. What is left is not measured.
+            if (measured > 0 &&
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > choice.budgetSeconds)
+            {
+                choice.budgetSpent = true;
+                break;
+            }
+            if (!(finished = measureOnce(runs[i])))
                 break;
         }
-        if (!finished)
+        if (!finished || active.size() <= 2)
             break;
         rescore();
+        // The better half by efficiency goes on, the scene's own with it.
+        std::vector<std::size_t> next;
+        for (const std::size_t i : active)
+            if (!runs[i].row.tooSlow && runs[i].row.measurements > 0)
+                next.push_back(i);
+        std::sort(next.begin(), next.end(),
+                  [&](std::size_t x, std::size_t y) { return runs[x].row.efficiency > runs[y].row.efficiency; });
+        next.resize(std::min(next.size(), (active.size() + 1) / 2));
+        if (std::find(next.begin(), next.end(), std::size_t(0)) == next.end() && !runs.front().row.tooSlow)
+            next.push_back(0);
+        active = std::move(next);
+        if (active.size() <= 1)
+            break;
     }
     choice.pilotWallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!finished)
@@ -352,7 +383,11 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         choice.chosen = Strategy::of(request.settings);
         return choice;
     }
-    choice.chosen = Strategy::of(best);
+    rescore();
+    for (const Candidate& c : runs)
+        choice.rows.push_back(c.row);
+    if (const PilotRow* best = winner())
+        choice.chosen = best->strategy;
     return choice;
 }
 
@@ -367,27 +402,32 @@ nlohmann::json AutoChoice::toJson() const
     j["budget_seconds"] = budgetSeconds;
     j["pilot_ms"] = pilotMs;
     j["pilot_wall_seconds"] = pilotWallSeconds;
+    j["budget_spent"] = budgetSpent;
     j["relmse_epsilon"] = kRelMseEpsilon;
     j["candidates"] = nlohmann::json::array();
     for (const PilotRow& r : rows)
         j["candidates"].push_back({{"strategy", r.strategy.name()},
-                                   {"varied", r.varied},
+                                   {"differs_from_own", r.differs},
                                    {"ms", r.ms},
                                    {"relmse", r.relMse},
                                    {"relmse_standard_error", r.relMseError},
                                    {"efficiency", r.efficiency},
+                                   {"measurements", r.measurements},
                                    {"too_slow", r.tooSlow}});
     return j;
 }
 
 std::string AutoChoice::table() const
 {
-    std::string text = fmt::format("{:<44} {:>16} {:>9} {:>10} {:>8} {:>12}\n", "strategy", "varied", "ms", "relMSE",
-                                   "±1 s.e.", "1/(relMSE s)");
+    std::string text = fmt::format("{:<44} {:>30} {:>3} {:>9} {:>10} {:>8} {:>12}\n", "strategy", "differs from own",
+                                   "n", "ms", "relMSE", "±1 s.e.", "1/(relMSE s)");
     for (const PilotRow& r : rows)
-        text += fmt::format("{:<44} {:>16} {:>9.2f} {:>10.3g} {:>8.2g} {:>12.4g}{}\n", r.strategy.name(), r.varied,
-                            r.ms, r.relMse, r.relMseError, r.efficiency,
-                            r.tooSlow ? "  stopped: 4x its share" : r.strategy == chosen ? "  <- chosen" : "");
+        text += fmt::format("{:<44} {:>30} {:>3} {:>9.2f} {:>10.3g} {:>8.2g} {:>12.4g}{}\n", r.strategy.name(),
+                            r.differs, r.measurements, r.ms, r.relMse, r.relMseError, r.efficiency,
+                            r.tooSlow                ? "  stopped: 4x its share"
+                            : r.measurements == 0    ? "  not measured: the budget was spent"
+                            : r.strategy == chosen   ? "  <- chosen"
+                                                     : "");
     return text;
 }
 } // namespace rt::compare

@@ -4,19 +4,24 @@
 // faster).
 //
 // The pilot: a probe render of the scene's strategy times a path and so estimates the render; the budget is a
-// fraction of that estimate (5 % by default), at most a few seconds. Then a coordinate search: one setting at a
-// time (in the settings table's order), every candidate value rendered with the others at the best found so far,
-// each as two independent halves of the same small render (the pilot's size and spp are the same for every
-// candidate, so that their images combine: about 1024 pixels, the rest of the budget as spp).
+// fraction of that estimate (5 % by default), at most a few seconds. Then every combination of the candidates
+// (strategyGrid: a setting a strategy does not use is not varied), the scene's own first, each rendered as two
+// independent halves of the same small render (the pilot's size and spp are the same for every candidate, so that
+// their images combine: about 1024 pixels, or the engine's concurrent paths, the rest of the budget as spp), by
+// successive halving: all once, the better half again, and so on down to two, the scene's own in every round. Not
+// one setting at a time: the estimator compared at the scene's light sampler kept book 3's mixture on
+// rtrol-cornell-box, where an estimator with NEE and a cheaper sampler is 2x as efficient.
 //
 // A candidate's error is the variance of its estimate from its halves (Image/Metrics.h's two-half estimate), as
-// relMSE; where its relMSE against the other candidates' combined estimate (weighted by their inverse errors), less
-// that combination's own noise, is higher by more than twice its standard error, that instead: a bias the halves
-// cannot see. relMSE's denominator is the others' estimate blurred over 5 x 5 pixels, never the candidate's own
-// image (a firefly over itself is about 1). Its efficiency is 1 / (relMSE x seconds), twice the faster half's time
-// on the engine's clock (Compare/Measurement.h). The most efficient candidate measured wins, where its lead over
-// the best before it is more than twice the standard error of their ratio: otherwise the scene's own strategy
-// (where the search starts) stays.
+// relMSE, whose denominator is the other candidates' combined estimate (weighted by their inverse errors), never
+// the candidate's own image (a firefly over itself is about 1). Every candidate is
+// unbiased (the engines' agreement tests), so its variance is its error: the error against the others' estimate
+// would add their noise, and on a glossy scene's heavy tails (veach-mis) its correction for that noise failed and
+// read as a bias. Its efficiency is 1 / (relMSE x seconds), twice the faster half's time
+// on the engine's clock (Compare/Measurement.h). The most efficient candidate measured wins where its lead over
+// the scene's own is more than the standard error of their ratio: otherwise the scene's own stays. The search
+// stops once the pilot's wall time passes its budget (a GPU compiles a pipeline per candidate): the candidates
+// left are not measured, and the best measured wins.
 //
 // The choice depends on timings, so two runs may choose differently where candidates are close: the record names
 // the strategy chosen, and giving its flags renders it again, bit for bit.
@@ -46,10 +51,10 @@ struct PilotBudget
 struct PilotRow
 {
     Strategy strategy;
-    std::string varied; // the setting its stage varied ("estimator"); empty for a pilot of one candidate
-    double ms = 0.0; // both halves: twice the faster half's, on the engine's clock (Measurement::ms)
-    /// Its relMSE at the pilot's size and spp (both halves together), against the other candidates' combined
-    /// estimate, that estimate's own noise removed (see above).
+    std::string differs; // the settings in which it differs from the scene's own ("estimator, light-sampler")
+    int measurements = 0; // pairs of halves rendered (successive halving measures the better candidates again)
+    double ms = 0.0; // every measurement's: twice its faster half's, on the engine's clock (Measurement::ms)
+    /// The relMSE of its mean over its measurements (see above).
     double relMse = 0.0;
     double relMseError = 0.0; // relMse's standard error (over the pixels' terms)
     double efficiency = 0.0; // 1 / (relMse x seconds)
@@ -69,6 +74,8 @@ struct AutoChoice
     double pilotWallSeconds = 0.0; // the whole pilot on the host's clock (GPU pipelines compiled included)
     std::vector<PilotRow> rows; // in the order measured
     bool cancelled = false; // Ctrl-C stopped the pilot
+    /// The search stopped when the pilot's wall time passed the budget, before every candidate was measured.
+    bool budgetSpent = false;
 
     nlohmann::json toJson() const;
     /// The table of rows, one per line, the chosen one marked: what the headless run logs.
@@ -77,7 +84,10 @@ struct AutoChoice
 
 /// The values auto may choose among, by --compare's list flag ("--estimators" -> "nee-mis,nee"): `given` where it
 /// names a list, else the defaults for the scene, of which a setting given on the command line (`fixed`, by
-/// setting name: "estimator") keeps only its value. The defaults: every estimator; area, solid-angle and projected
+/// setting name: "estimator") keeps only its value. The defaults: the estimators that combine strategies, nee-mis
+/// and book 3's mixture (a single strategy, nee or bsdf, can be unboundedly worse where its rare paths carry the
+/// light, which a pilot does not sample: on veach-mis a pilot chose nee, 0.05x nee-mis's efficiency; they are
+/// candidates when a list names them); area, solid-angle and projected
 /// light sampling, and projected-exact where the scene has quad or triangle lights (on spheres it is projected),
 /// none but the request's when it has no emitter; every light selection where the scene has two emitters or more.
 /// The pixel sampling and Russian roulette stay the request's: Sobol's gain over random grows with the spp, and a
@@ -104,8 +114,8 @@ struct PilotError
     double standardError = 0.0; // of relMse, from the spread of its pixels' terms
 };
 
-/// The pilot's error of each candidate (see above: its halves' variance, or its relMSE against the others' combined
-/// estimate less that estimate's noise where that is significantly higher). One candidate: its own variance. Every image the same
+/// The pilot's error of each candidate (see above: its halves' variance as relMSE, normalised by the others'
+/// combined estimate; one candidate: by its own). Every image the same
 /// size; throws UsageError otherwise.
 std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& candidates);
 } // namespace rt::compare

@@ -608,7 +608,7 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
         }
         std::printf("%s\n", line.c_str());
     }
-    for (std::size_t e = 0; e < choices.size(); ++e)
+    for (std::size_t e = 0; e < (autoRow ? choices.size() : 0); ++e)
         for (std::size_t k = 0; k < choices[e].size(); ++k)
         {
             const AutoChoice& c = choices[e][k];

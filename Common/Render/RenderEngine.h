@@ -51,6 +51,9 @@ public:
     /// Camera paths one batch of traceSamples should hold: enough that the per-batch cost vanishes, few
     /// enough that a batch ends well within a second (cancel, progress, no GPU watchdog).
     virtual std::uint64_t pathsPerBatch() const = 0;
+    /// Camera paths the engine traces at once: a frame of fewer pixels leaves part of the device idle, and its
+    /// time per path says little about a larger frame's (--strategy auto's pilot keeps at least this many pixels).
+    virtual std::uint64_t concurrentPaths() const { return 1024; }
 
     /// Starts a frame of `settings` (validated by the caller) on the current scene: an accumulator of the
     /// settings' size, cleared, and zero tallies. Throws UsageError before setScene, DeviceError naming the

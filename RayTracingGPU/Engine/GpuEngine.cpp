@@ -251,6 +251,11 @@ double GpuEngine::buildSeconds() const { return m_impl->tracer.buildSeconds(); }
 
 std::uint64_t GpuEngine::pathsPerBatch() const { return m_impl->pathsPerBatch; }
 
+std::uint64_t GpuEngine::concurrentPaths() const
+{
+    return m_impl->device().properties().type == vk::DeviceType::Cpu ? std::uint64_t(4096) : std::uint64_t(1) << 18;
+}
+
 double GpuEngine::setScene(const Scene& scene)
 {
     m_impl->descriptors = {};

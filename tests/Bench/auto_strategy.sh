@@ -25,7 +25,7 @@ for scene in "$@"; do
     # The scene's own strategy, as the stats record it.
     $app --headless --quiet --scene "$scene" --width 8 --spp 1 --depth 1 --stats "$out/$scene-defaults.json" >/dev/null
     $app --compare "${common[@]}" --seeds "$seeds" --reference-spp "$referenceSpp" --strategy auto \
-        --estimators nee-mis,nee,mixture,bsdf --light-samplers "$samplers" --light-selections "$selections" \
+        --estimators nee-mis,mixture --light-samplers "$samplers" --light-selections "$selections" \
         --csv "$out/$scene.csv" --images "$out/$scene-images" \
         >"$out/$scene.txt" 2>"$out/$scene.log"
     reference="$out/$scene-images/reference.pfm"

@@ -38,25 +38,18 @@ def best_of(eff):
     return max(grid, key=grid.get)
 
 
-def main():
-    if sys.argv[1] == "--best":
-        eff, _ = efficiencies(Path(sys.argv[2]))
-        print(best_of(eff))
-        return
-    out = Path(sys.argv[1])
-    print("| scene | strategies | best (full comparison) | best, again | scene's own | own / best | auto chose "
-          "(recheck seeds) | auto / best | auto / own |")
-    print("|---|---:|---|---:|---|---:|---|---:|---:|")
-    low, below = [], []
-    for path in sorted(out.glob("*.csv")):
+def scene_rows(out):
+    """One dict per scene of OUT_DIR: scene, strategies, best, best_full, best_again, own, own_eff, chosen, auto_eff."""
+    rows = []
+    for path in sorted(Path(out).glob("*.csv")):
         if "recheck" in path.stem:
             continue
         scene = path.stem
         full, _ = efficiencies(path)
         best = best_of(full)
-        own_name = strategy_of(json.load((out / f"{scene}-defaults.json").open())["settings"])
-        recheck = out / f"{scene}-recheck.csv"
-        again = out / f"{scene}-recheck-best.csv"
+        own_name = strategy_of(json.load((Path(out) / f"{scene}-defaults.json").open())["settings"])
+        recheck = Path(out) / f"{scene}-recheck.csv"
+        again = Path(out) / f"{scene}-recheck-best.csv"
         if recheck.exists() and again.exists():
             r, chosen = efficiencies(recheck)
             b, _ = efficiencies(again)
@@ -64,12 +57,27 @@ def main():
         else:
             chosen = []
             best_eff, own_eff, auto_eff = full[best], full.get(own_name, float("nan")), full["auto"]
-        if auto_eff / best_eff < 0.9:
-            low.append(scene)
-        if auto_eff / own_eff < 1.0:
-            below.append(scene)
-        print(f"| {scene} | {len(full) - 1} | {best} ({full[best]:.4g}) | {best_eff:.4g} | {own_name} | "
-              f"{own_eff / best_eff:.2f} | {'; '.join(chosen)} | {auto_eff / best_eff:.2f} | {auto_eff / own_eff:.2f} |")
+        rows.append({"scene": scene, "strategies": len(full) - 1, "best": best, "best_full": full[best],
+                     "best_again": best_eff, "own": own_name, "own_eff": own_eff, "chosen": chosen,
+                     "auto_eff": auto_eff})
+    return rows
+
+
+def main():
+    if sys.argv[1] == "--best":
+        eff, _ = efficiencies(Path(sys.argv[2]))
+        print(best_of(eff))
+        return
+    print("| scene | strategies | best (full comparison) | best, again | scene's own | own / best | auto chose "
+          "(recheck seeds) | auto / best | auto / own |")
+    print("|---|---:|---|---:|---|---:|---|---:|---:|")
+    rows = scene_rows(sys.argv[1])
+    for r in rows:
+        print(f"| {r['scene']} | {r['strategies']} | {r['best']} ({r['best_full']:.4g}) | {r['best_again']:.4g} | "
+              f"{r['own']} | {r['own_eff'] / r['best_again']:.2f} | {'; '.join(r['chosen'])} | "
+              f"{r['auto_eff'] / r['best_again']:.2f} | {r['auto_eff'] / r['own_eff']:.2f} |")
+    low = [r["scene"] for r in rows if r["auto_eff"] / r["best_again"] < 0.9]
+    below = [r["scene"] for r in rows if r["auto_eff"] / r["own_eff"] < 1.0]
     print()
     print(f"auto below 0.9x the best: {', '.join(low) if low else 'none'}; below the scene's own strategy: "
           f"{', '.join(below) if below else 'none'}")

@@ -140,10 +140,11 @@ samplers)
     ;;
 auto)
     # Issue 37's --strategy auto: a headless pilot on cornell-box-lights at 600 px, 1024 spp, twice (the driver's
-    # shader cache cold, then warm: the pilot's wall time includes its pipelines' compilation), then
+    # shader cache cold, then warm: the pilot's wall time includes its pipelines' compilation; HEADLESS_RUNS= skips
+    # them), then
     # auto_strategy.sh at equal time (MS, default 500) on SCENES at WIDTH (600), SEEDS (2) seeds, REF_SPP (8192).
     rm -rf /tmp/auto && mkdir -p /tmp/auto
-    for run in cold warm; do
+    for run in ${HEADLESS_RUNS-cold warm}; do
         "$bin/ray-tracing-gpu" --headless --quiet --strategy auto --scene cornell-box-lights --width 600 --spp 1024 \
             --stats "/tmp/auto/headless-$run.json" | tee "/tmp/auto/headless-$run.txt"
     done
