@@ -19,7 +19,7 @@
 // would add their noise, and on a glossy scene's heavy tails (veach-mis) its correction for that noise failed and
 // read as a bias. Its efficiency is 1 / (relMSE x seconds), twice the faster half's time
 // on the engine's clock (Compare/Measurement.h). The most efficient candidate measured wins where its lead over
-// the scene's own is more than the standard error of their ratio: otherwise the scene's own stays. The search
+// the scene's own is more than twice the standard error of their ratio: otherwise the scene's own stays. The search
 // stops once the pilot's wall time passes its budget (a GPU compiles a pipeline per candidate): the candidates
 // left are not measured, and the best measured wins.
 //

@@ -8,10 +8,12 @@
 # auto_strategy_table.py OUT_DIR then prints auto's efficiency against the best's and the scene's own.
 #   tests/Bench/auto_strategy.sh BIN_DIR OUT_DIR ENGINE WIDTH EQUAL_MS SEEDS REFERENCE_SPP SCENE...
 # e.g. on the CPU: auto_strategy.sh build/bin docs/results/cpu-auto-strategy multi 128 1000 2 8192 cornell-box-lights
+# The renders' images go to IMAGES (default OUT_DIR) and are deleted after each scene.
 set -eu
 bin=$1 out=$2 engine=$3 width=$4 equalMs=$5 seeds=$6 referenceSpp=$7
 shift 7
-mkdir -p "$out"
+images=${IMAGES:-$out}
+mkdir -p "$out" "$images"
 here=$(cd "$(dirname "$0")" && pwd)
 if [ "$engine" = gpu ]; then app="$bin/ray-tracing-gpu"; else app="$bin/ray-tracing-cpu"; fi
 for scene in "$@"; do
@@ -26,15 +28,15 @@ for scene in "$@"; do
     $app --headless --quiet --scene "$scene" --width 8 --spp 1 --depth 1 --stats "$out/$scene-defaults.json" >/dev/null
     $app --compare "${common[@]}" --seeds "$seeds" --reference-spp "$referenceSpp" --strategy auto \
         --estimators nee-mis,mixture --light-samplers "$samplers" --light-selections "$selections" \
-        --csv "$out/$scene.csv" --images "$out/$scene-images" \
+        --csv "$out/$scene.csv" --images "$images/$scene-images" \
         >"$out/$scene.txt" 2>"$out/$scene.log"
-    reference="$out/$scene-images/reference.pfm"
+    reference="$images/$scene-images/reference.pfm"
     read -r estimator sampler selection sampling roulette < <(/usr/bin/python3 "$here/auto_strategy_table.py" --best "$out/$scene.csv")
     $app --compare "${common[@]}" --seeds 3 --seed 1000 --reference "$reference" --estimator "$estimator" \
         --light-sampler "$sampler" --light-selection "$selection" --sampling "$sampling" --russian-roulette "${roulette#rr-}" \
-        --csv "$out/$scene-recheck-best.csv" --images "$out/$scene-recheck-images" >"$out/$scene-recheck-best.txt" 2>/dev/null
+        --csv "$out/$scene-recheck-best.csv" --images "$images/$scene-recheck-images" >"$out/$scene-recheck-best.txt" 2>/dev/null
     $app --compare "${common[@]}" --seeds 3 --seed 1000 --reference "$reference" --strategy auto \
-        --csv "$out/$scene-recheck.csv" --images "$out/$scene-recheck-images" >"$out/$scene-recheck.txt" 2>/dev/null
-    rm -rf "$out/$scene-images" "$out/$scene-recheck-images" # the CSVs keep every figure
+        --csv "$out/$scene-recheck.csv" --images "$images/$scene-recheck-images" >"$out/$scene-recheck.txt" 2>/dev/null
+    rm -rf "$images/$scene-images" "$images/$scene-recheck-images" # the CSVs keep every figure
     echo "$scene done" >&2
 done

@@ -143,16 +143,19 @@ auto)
     # shader cache cold, then warm: the pilot's wall time includes its pipelines' compilation; HEADLESS_RUNS= skips
     # them), then
     # auto_strategy.sh at equal time (MS, default 500) on SCENES at WIDTH (600), SEEDS (2) seeds, REF_SPP (8192).
+    # The archive is written again after each scene: what a run past the device's time limit leaves under $OUT
+    # still comes back (the tool brings back few files, so one archive).
     rm -rf /tmp/auto && mkdir -p /tmp/auto
     for run in ${HEADLESS_RUNS-cold warm}; do
         "$bin/ray-tracing-gpu" --headless --quiet --strategy auto --scene cornell-box-lights --width 600 --spp 1024 \
             --stats "/tmp/auto/headless-$run.json" | tee "/tmp/auto/headless-$run.txt"
     done
-    # shellcheck disable=SC2086 # SCENES is a list
-    bash tests/Bench/auto_strategy.sh "$bin" /tmp/auto gpu "${WIDTH:-600}" "${MS:-500}" "${SEEDS:-2}" "${REF_SPP:-8192}" \
-        ${SCENES:-rect-light-closeup sphere-light-closeup triangle-lights cornell-box-lights}
+    for scene in ${SCENES:-rect-light-closeup sphere-light-closeup triangle-lights cornell-box-lights}; do
+        IMAGES=/tmp/auto-images bash tests/Bench/auto_strategy.sh "$bin" /tmp/auto gpu "${WIDTH:-600}" "${MS:-500}" \
+            "${SEEDS:-2}" "${REF_SPP:-8192}" "$scene"
+        (cd /tmp/auto && tar -czf "$out/auto.tar.gz" ./*)
+    done
     python3 tests/Bench/auto_strategy_table.py /tmp/auto | tee "$out/auto.md"
-    (cd /tmp/auto && tar -czf "$out/auto.tar.gz" ./*.csv ./*.txt ./*.json)
     ;;
 ab)
     ROUNDS=${ROUNDS:-3} bash tests/Bench/gpu_ab.sh .devcarry/baseline "$bin" /tmp/ab ${2:-} | tee "$out/ab.txt"
