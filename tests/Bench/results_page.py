@@ -800,6 +800,51 @@ def section_light_samplers():
     return out
 
 
+AUTO = {"date": "2026-11-26", "notebook": "## 15.",
+        "runs": [("cpu-auto-strategy", "CI kind: 2-vCPU AMD EPYC, both cores (the multi engine)",
+                  "128 px wide, each strategy for 1 s",
+                  "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy multi 128 1000 2 8192 \\\n"
+                  "    sphere-light-closeup rect-light-closeup rtrol-cornell-box veach-mis cornell-box-lights \\\n"
+                  "    triangle-lights many-lights glossy-cornell"),
+                 ("h100-auto-strategy", "NVIDIA H100 80GB HBM3, driver 580", "600 px wide, each strategy for 2 s",
+                  "HEADLESS_RUNS=warm MS=2000 SCENES=\"cornell-box-lights sphere-light-closeup\" \\\n"
+                  "    bash tests/Bench/device_run.sh auto")]}
+
+
+def section_auto_strategy():
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from auto_strategy_table import scene_rows  # noqa: E402  (the table's own parser, standard library only)
+
+    out = [
+        "## 9. --strategy auto against a full comparison (issue 37)",
+        "",
+        "Each scene at equal time over every candidate of `--strategy auto` (nee-mis and mixture × each light "
+        "sampler × each light selection where the scene has two lights or more; the scene's pixel sampling), 2 seeds, "
+        "with the auto row beside them (its pilot: 5 % of the time; its time includes the pilot's). The best "
+        "strategy, the scene's own and auto are then measured again with 3 fresh seeds against the same reference "
+        "(the best of many noisy rows is biased up). Efficiency 1/(relMSE s), mean over seeds of relMSE × s.",
+    ]
+    for folder, machine, size, command in AUTO["runs"]:
+        if not (RESULTS / folder).is_dir():
+            raise ParseError(f"missing results folder docs/results/{folder}")
+        rows = scene_rows(RESULTS / folder)
+        out += [
+            "",
+            f"**{machine}**, {size}:",
+            "",
+            "| scene | strategies | best | scene's own | own / best | auto chose (3 seeds) | auto / best | auto / own |",
+            "|---|---:|---|---|---:|---|---:|---:|",
+        ]
+        for r in rows:
+            chosen = "; ".join(" ".join(c.split()[:3]) for c in r["chosen"])
+            out.append(f"| {r['scene']} | {r['strategies']} | {' '.join(r['best'].split()[:3])} | "
+                       f"{' '.join(r['own'].split()[:3])} | {r['own_eff'] / r['best_again']:.2f} | {chosen} | "
+                       f"{r['auto_eff'] / r['best_again']:.2f} | {r['auto_eff'] / r['own_eff']:.2f} |")
+        out += ["", sources([("machine", machine), ("date", AUTO["date"]), ("results", link(folder + "/")),
+                             ("notebook", notebook_link(AUTO["notebook"]))]), "", code(command)]
+    return out
+
+
 def render():
     runs = compare_runs()
     parts = [
@@ -827,6 +872,7 @@ def render():
         section_ratio(),
         section_veach(),
         section_light_samplers(),
+        section_auto_strategy(),
     ]
     titles = [p[0][3:] for p in parts[1:]]
     parts[0] += ["", "Contents: " + " · ".join(f"[{t}](#{slugify(t)})" for t in titles)]
