@@ -29,6 +29,8 @@ const std::vector<ActionSpec>& specs()
              "rendering engine (gpu waits for the GPU engine to start; unavailable: a warning)", 0, 1e30,
              [](const std::string& v) { return parseName<EngineKind>(v).has_value(); }},
             {"render", ActionValue::None, "", "start a render with the panel's settings"},
+            {"choose-strategy", ActionValue::None, "",
+             "a pilot chooses estimator, light sampler and selection (--strategy auto), then a render with them"},
             {"cancel", ActionValue::None, "", "cancel the render"},
             {"defaults", ActionValue::None, "", "the scene's own spp, depth, width, aspect and light mode"},
             {"wait", ActionValue::None, "", "until no render runs (loop rendering: until one more finishes)"},
@@ -109,6 +111,11 @@ bool ActionScript::run(const Action& a, Session& session, GlWindow& window)
     if (a.name == "render")
     {
         session.render();
+        return true;
+    }
+    if (a.name == "choose-strategy")
+    {
+        session.chooseStrategy();
         return true;
     }
     if (a.name == "cancel")

@@ -96,6 +96,12 @@ JobProgress RenderJob::progress() const
     return p;
 }
 
+std::shared_ptr<const StrategyChoice> RenderJob::latestChoice() const
+{
+    std::lock_guard lock(m_mutex);
+    return m_choice;
+}
+
 std::shared_ptr<const Preview> RenderJob::latestPreview() const
 {
     std::lock_guard lock(m_mutex);
@@ -167,12 +173,25 @@ void RenderJob::run(const JobRequest& request, std::shared_ptr<RenderControl> co
             engine->setScene(*scene);
             slot.scene = scene;
         }
+        JobRequest job = request;
+        if (request.chooseStrategy)
+        {
+            setPhase(JobPhase::ChoosingStrategy);
+            auto chosen = std::make_shared<StrategyChoice>();
+            chosen->asked = request.image;
+            chosen->choice = compare::chooseStrategy(*engine, request.image, compare::autoCandidates(*scene, {}, {}));
+            job.image.settings = chosen->choice.chosen.applyTo(job.image.settings);
+            job.chooseStrategy = false;
+            std::lock_guard lock(m_mutex);
+            chosen->generation = ++m_generation;
+            m_choice = std::move(chosen);
+        }
 
         Image mean;
         int meanSamples = 0;
         for (int iteration = 0; control; ++iteration)
         {
-            RenderRequest iterationRequest = request.image;
+            RenderRequest iterationRequest = job.image;
             iterationRequest.settings.seed += static_cast<std::uint32_t>(iteration); // independent streams, wrapping is fine
             setPhase(JobPhase::Rendering, iteration);
             control->setPreviewInterval(kPreviewInterval);
@@ -182,18 +201,17 @@ void RenderJob::run(const JobRequest& request, std::shared_ptr<RenderControl> co
                 render(*engine, iterationRequest, *control, [&](const Image& estimate, int samples) {
                     if (samples <= 0)
                         return;
-                    publish(request, combine(mean, meanSamples, estimate, samples), meanSamples + samples, false);
+                    publish(job, combine(mean, meanSamples, estimate, samples), meanSamples + samples, false);
                 });
             const WindowRedraws redraws{m_redraws.load(), m_redrawsOnInput.load()};
             if (result.stats.cancelled)
             {
-                report({.request = request, .cancelled = true, .redraws = redraws});
+                report({.request = job, .cancelled = true, .redraws = redraws});
                 return;
             }
             mean = combine(mean, meanSamples, result.image, result.stats.trueSpp);
             meanSamples += result.stats.trueSpp;
-            publish(request, mean, meanSamples, true,
-                    RenderOutcome{.request = request, .stats = result.stats, .redraws = redraws});
+            publish(job, mean, meanSamples, true, RenderOutcome{.request = job, .stats = result.stats, .redraws = redraws});
             control = nextIteration();
         }
     }

@@ -20,6 +20,7 @@
 #include "App/Gui/FramePacer.h"
 #include "App/Gui/GpuStartup.h"
 #include "App/Gui/PanelSettings.h"
+#include "Compare/AutoStrategy.h"
 #include "Engine/CpuEngine.h"
 #include "Render/RenderControl.h"
 #include "Render/RenderDriver.h"
@@ -33,6 +34,18 @@ struct JobRequest
     RenderRequest image;
     EngineKind engine = EngineKind::Multi;
     bool loop = false; // loop rendering: when a render finishes, render again with the next seed and average
+    /// --strategy auto's pilot first (Compare/AutoStrategy.h: its default candidates, budget and table), then the
+    /// render with the strategy it chose. The pilot runs to its end (its budget, 2 s at most) before a newer
+    /// request can start.
+    bool chooseStrategy = false;
+};
+
+/// What a pilot chose, for the request that asked.
+struct StrategyChoice
+{
+    std::uint64_t generation = 0; // grows with every choice published
+    RenderRequest asked; // the image settings the pilot started from
+    compare::AutoChoice choice;
 };
 
 /// An estimate on its way or finished, with the request it belongs to.
@@ -51,6 +64,7 @@ enum class JobPhase
     Idle,
     WaitingForGpu, // the GPU engine is still starting
     BuildingScene, // makeScene and the engine's acceleration structures
+    ChoosingStrategy, // the pilot of JobRequest::chooseStrategy
     Rendering
 };
 
@@ -107,6 +121,8 @@ public:
     JobProgress progress() const;
     /// The newest preview; nullptr before the first.
     std::shared_ptr<const Preview> latestPreview() const;
+    /// The newest pilot's choice; nullptr before the first.
+    std::shared_ptr<const StrategyChoice> latestChoice() const;
     /// Outcomes since the last call, oldest first.
     std::vector<RenderOutcome> takeOutcomes();
     /// What the window shows of a scene the job has built; empty for one it has not.
@@ -155,6 +171,7 @@ private:
     int m_loopIteration = 0;
     std::shared_ptr<const Preview> m_preview;
     std::uint64_t m_generation = 0;
+    std::shared_ptr<const StrategyChoice> m_choice;
     std::vector<RenderOutcome> m_outcomes;
     std::unordered_map<std::string, SceneSummary> m_sceneSummaries;
     std::function<void()> m_wakeUi;

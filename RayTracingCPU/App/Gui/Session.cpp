@@ -168,6 +168,14 @@ void Session::render()
     m_progress = m_job.progress();
 }
 
+void Session::chooseStrategy()
+{
+    m_requested = m_image;
+    m_message.clear();
+    m_job.submit({.image = m_image, .engine = m_engine, .loop = m_loop, .chooseStrategy = true});
+    m_progress = m_job.progress();
+}
+
 void Session::cancel()
 {
     m_job.cancel();
@@ -237,6 +245,7 @@ std::string Session::progressText() const
     {
     case JobPhase::WaitingForGpu: return "waiting for the GPU engine to start...";
     case JobPhase::BuildingScene: return "building the scene...";
+    case JobPhase::ChoosingStrategy: return "choosing the strategy (a pilot of 5 % of the render, 2 s at most)...";
     case JobPhase::Rendering:
     {
         std::string text = fmt::format("{:.0f}%  {} elapsed, ETA {}", p.fraction * 100.0, duration(p.elapsedSeconds),
@@ -290,6 +299,21 @@ void Session::update()
         m_image.scene.fileVersion = *version;
         ++m_sceneReloads;
     }
+    if (auto choice = m_job.latestChoice(); choice && choice != m_choice)
+    {
+        m_choice = choice;
+        // The job renders the chosen strategy: the panel shows it, unless the user has changed the image settings
+        // since asking (their newer request wins).
+        if (m_requested == choice->asked && m_image == choice->asked)
+        {
+            m_image.settings = choice->choice.chosen.applyTo(m_image.settings);
+            m_requested = m_image;
+        }
+        note(fmt::format("strategy chosen by a pilot of {:.2f} s: {}", choice->choice.pilotWallSeconds,
+                         choice->choice.chosen.name()),
+             false);
+        spdlog::info("{}:\n{}", message(), choice->choice.table());
+    }
     if (m_requested != m_image)
         render();
     // Progress first: once it says idle, the outcomes taken next are all there are.
@@ -342,6 +366,7 @@ nlohmann::json Session::stateJson() const
             {"finished_renders", m_finished},
             {"failed_renders", m_failed},
             {"scene_reloads", m_sceneReloads},
+            {"strategy_choice", m_choice ? m_choice->choice.toJson() : nlohmann::json()},
             {"message", m_message}};
 }
 } // namespace rt::gui

@@ -58,7 +58,13 @@ public:
     bool selectEngine(EngineKind engine);
     void setLoop(bool on);
     void render();
+    /// Renders after --strategy auto's pilot on the selected engine (RenderJob's chooseStrategy): once it has
+    /// chosen, the panel shows the chosen strategy (which the user may change like any setting) and
+    /// strategyChoice() the pilot's table.
+    void chooseStrategy();
     void cancel();
+    /// The last pilot's choice; nullptr before the first.
+    const compare::AutoChoice* strategyChoice() const { return m_choice ? &m_choice->choice : nullptr; }
 
     /// Writes the image on screen: `png` (sRGB) and the same name with .pfm (linear radiance). A partial
     /// image (cancelled, or still rendering) is written as it is, and the message says how many samples it
@@ -124,5 +130,6 @@ private:
     int m_failed = 0;
     int m_sceneReloads = 0; // new versions of the scene file noticed
     RenderEnd m_lastEnd = RenderEnd::None;
+    std::shared_ptr<const StrategyChoice> m_choice; // the last pilot's, applied to the panel once
 };
 } // namespace rt::gui

@@ -217,7 +217,39 @@ void SettingsPanel::drawRenderControls(Session& session)
         session.cancel();
     ImGui::EndDisabled();
 
+    if (ImGui::Button("Choose strategy (pilot), then render", ImVec2(-1.0f, 0.0f)))
+        session.chooseStrategy();
+    tooltip("--strategy auto: a short pilot on the selected engine (5 % of the render's estimated time, 2 s at most) "
+            "measures the efficiency 1/(relMSE s) of nee-mis and mixture with each light sampler and selection, "
+            "sets the panel to the best and renders it; change any setting afterwards to override it");
+
     ImGui::ProgressBar(session.progressFraction(), ImVec2(-1.0f, 0.0f), session.progressText().c_str());
+
+    if (const compare::AutoChoice* choice = session.strategyChoice();
+        choice && ImGui::CollapsingHeader("Strategy pilot", ImGuiTreeNodeFlags_DefaultOpen))
+    {
+        ImGui::TextDisabled("chose %s in %.2f s (%dx%d, %d spp per candidate)", choice->chosen.name().c_str(),
+                            choice->pilotWallSeconds, choice->width, choice->height, choice->spp);
+        if (ImGui::BeginTable("pilot", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit))
+        {
+            for (const char* heading : {"strategy", "n", "relMSE", "1/(relMSE s)"})
+                ImGui::TableSetupColumn(heading);
+            ImGui::TableHeadersRow();
+            for (const compare::PilotRow& row : choice->rows)
+            {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::Text("%s%s", row.strategy == choice->chosen ? "> " : "  ", row.strategy.name().c_str());
+                ImGui::TableNextColumn();
+                ImGui::Text("%d", row.measurements);
+                ImGui::TableNextColumn();
+                ImGui::Text("%.3g", row.relMse);
+                ImGui::TableNextColumn();
+                ImGui::Text("%.4g", row.efficiency);
+            }
+            ImGui::EndTable();
+        }
+    }
 
     if (const auto& last = session.lastFinished())
     {
