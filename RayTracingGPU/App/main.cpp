@@ -86,6 +86,9 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
 {
     if (!options.hdr.empty() || !options.stats.empty())
         spdlog::warn("--hdr and --stats are for --headless; the window's Save writes the PFM beside the PNG");
+    if (options.strategy == "auto")
+        throw rt::UsageError("--strategy auto runs with --headless, --compare or in ray-tracing-cpu's window; this "
+                             "window has no strategy pilot yet");
     rt::checkOutputPaths(options);
     rt::gpu::gui::WindowOptions w;
     if (!flags.windowSize.empty())

@@ -46,12 +46,12 @@ public:
     /// `size` and `script`: the options' --window-size and --actions, parsed (and so checked) before;
     /// `fitToMonitor` for the default size.
     GuiApp(const GuiOptions& options, WindowSize size, bool fitToMonitor, std::optional<ActionScript> script,
-           const RenderRequest& initial, std::shared_ptr<const Scene> scene, EngineKind engine)
+           const RenderRequest& initial, std::shared_ptr<const Scene> scene, EngineKind engine, bool chooseStrategy)
         : m_options(options),
           m_window(size, fitToMonitor, "ray-tracing-cpu: light-sampling lab"),
           m_job({.enabled = !options.noGpu, .validation = options.validation}, initial, std::move(scene),
                 [] { GlWindow::wake(); }),
-          m_session(m_job, initial, engine, false)
+          m_session(m_job, initial, engine, false, chooseStrategy)
     {
         m_session.setFont(availableFonts().front().name);
         m_script = std::move(script);
@@ -231,7 +231,7 @@ int runGui(const CommonOptions& options, const std::string& engineName, const Gu
     const RenderSettings& s = initial.settings;
     const WindowSize fitting = defaultWindowSize(s.width, s.height(), DisplaySettings{}.fontSize);
     GuiApp app(gui, size.value_or(fitting), !size, std::move(script), initial,
-               std::make_shared<const Scene>(std::move(job.scene)), *engine);
+               std::make_shared<const Scene>(std::move(job.scene)), *engine, options.strategy == "auto");
     return app.run();
 }
 } // namespace rt::gui

@@ -58,11 +58,14 @@ const char* toString(GpuStartup::State state)
 }
 } // namespace
 
-Session::Session(RenderJob& job, const RenderRequest& image, EngineKind engine, bool loop)
+Session::Session(RenderJob& job, const RenderRequest& image, EngineKind engine, bool loop, bool chooseStrategy)
     : m_job(job), m_image(image), m_engine(engine), m_loop(loop), m_gpu(job.gpuStatus())
 {
     m_watch.watch(m_image.scene.id, m_image.scene.fileVersion);
-    render(); // the window opens on the command line's render
+    if (chooseStrategy)
+        this->chooseStrategy();
+    else
+        render(); // the window opens on the command line's render
 }
 
 bool Session::tryImage(const RenderRequest& candidate)

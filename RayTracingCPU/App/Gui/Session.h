@@ -32,8 +32,9 @@ enum class RenderEnd
 class Session
 {
 public:
-    /// Starts rendering `image` with `engine` at once.
-    Session(RenderJob& job, const RenderRequest& image, EngineKind engine, bool loop);
+    /// Starts rendering `image` with `engine` at once, after the strategy pilot with `chooseStrategy`
+    /// (--strategy auto).
+    Session(RenderJob& job, const RenderRequest& image, EngineKind engine, bool loop, bool chooseStrategy = false);
 
     // Image settings. Each returns false, with message(), for a value the engines would refuse.
     /// A catalogue id or an existing scene file (.json, .gltf, .glb), which update() then reloads whenever

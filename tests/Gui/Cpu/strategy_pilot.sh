@@ -19,6 +19,10 @@ check_run strategy_pilot "$status" "$work/app.err"
     --actions "wait;choose-strategy;wait;estimator=mixture;wait" --frames 2 \
     --state-json "$work/overridden.json" 2>"$work/app2.err" || status=$?
 check_run strategy_pilot_override "$status" "$work/app2.err"
+# --strategy auto opens the window on the pilot's choice.
+"$app" --no-gpu --window-size 1100x760 --scene rtrol-cornell-box --width 96 --spp 1024 --depth 8 --strategy auto \
+    --actions "wait" --frames 2 --state-json "$work/launch.json" 2>"$work/app3.err" || status=$?
+check_run strategy_pilot_launch "$status" "$work/app3.err"
 python3 - "$work" <<'PY'
 import json, sys
 work = sys.argv[1]
@@ -34,6 +38,8 @@ assert len(choice["candidates"]) >= 2 and choice["candidates"][0]["strategy"].st
 over = json.load(open(f"{work}/overridden.json"))
 assert over["panel"]["estimator"] == "mixture" and over["image_matches_panel"], over["panel"]
 assert over["strategy_choice"] is not None, "the override must keep the pilot's record"
+launch = json.load(open(f"{work}/launch.json"))
+assert launch["strategy_choice"] is not None and launch["image_matches_panel"], launch
 PY
 python3 "$here/window_checks.py" settled "$work/chosen.json"
 keep_pngs "$work"
