@@ -7,7 +7,6 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/fmt/ranges.h>
 
-#include "Cli/ValueParsing.h"
 #include "Compare/Measurement.h"
 #include "Error.h"
 #include "Image/Metrics.h"
@@ -25,23 +24,6 @@ std::string differences(const Strategy& a, const Strategy& b)
         if (s->text(a.settings) != s->text(b.settings))
             names.emplace_back(s->name);
     return fmt::format("{}", fmt::join(names, ", "));
-}
-
-std::vector<std::string> candidateWords(const StrategyLists& candidates, const Setting& setting)
-{
-    const auto it = candidates.find(setting.compareFlag);
-    if (it == candidates.end())
-        return {};
-    std::vector<std::string> words;
-    for (const std::string& word : splitCommas(it->second))
-    {
-        if (!setting.accepts(word))
-            throw UsageError(fmt::format("--strategy auto: {} takes {} (got '{}')", setting.compareFlag,
-                                         setting.expected(), word));
-        if (std::find(words.begin(), words.end(), word) == words.end())
-            words.push_back(word);
-    }
-    return words;
 }
 
 /// A width of `request`'s aspect holding about `pixels` pixels, at least 16 and at most the request's.
@@ -163,18 +145,11 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     AutoChoice choice;
     // Every combination of the lists (what a strategy does not use kept once: strategyGrid), the request's own
     // first: it is the one to beat.
-    StrategyLists lists;
-    for (const Setting* s : strategySettings())
-    {
-        const std::vector<std::string> words = candidateWords(candidates, *s);
-        if (!words.empty())
-            lists[std::string(s->compareFlag)] = fmt::format("{}", fmt::join(words, ","));
-    }
-    std::vector<Strategy> grid = strategyGrid(lists, request.settings);
+    std::vector<Strategy> grid = strategyGrid(candidates, request.settings);
     RenderSettings best = request.settings;
     for (const Setting* s : strategySettings())
-        if (const std::vector<std::string> words = candidateWords(candidates, *s);
-            !words.empty() && std::find(words.begin(), words.end(), s->text(best)) == words.end())
+        if (const std::vector<std::string> words = listedWords(candidates, *s, request.settings);
+            std::find(words.begin(), words.end(), s->text(best)) == words.end())
             s->set(best, words.front(), s->compareFlag); // the request's value is no candidate: the list's first
     const Strategy own = Strategy::of(best);
     if (const auto it = std::find(grid.begin(), grid.end(), own); it != grid.end())

@@ -11,9 +11,6 @@
 
 namespace rt::compare
 {
-namespace
-{
-/// The words of `setting`'s list, checked and without repeats, or the base's word when there is none.
 std::vector<std::string> listedWords(const StrategyLists& lists, const Setting& setting, const RenderSettings& base)
 {
     const auto it = lists.find(setting.compareFlag);
@@ -34,6 +31,8 @@ std::vector<std::string> listedWords(const StrategyLists& lists, const Setting& 
     return words;
 }
 
+namespace
+{
 /// The word a label shows for `setting`: the value's, or TAG-on / TAG-off.
 std::string labelWord(const Setting& setting, const RenderSettings& s)
 {

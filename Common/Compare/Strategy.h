@@ -11,6 +11,11 @@
 #include "Render/RenderRequest.h"
 #include "Render/RenderSettings.h"
 
+namespace rt
+{
+struct Setting; // Render/SettingsTable.h
+}
+
 namespace rt::compare
 {
 struct Strategy
@@ -32,6 +37,10 @@ struct Strategy
 /// --compare's lists by flag ("--estimators" -> "bsdf,nee-mis"): comma separated words; a flag absent or empty
 /// stands for the base request's value.
 using StrategyLists = std::map<std::string, std::string, std::less<>>;
+
+/// The words of `setting`'s list, checked and without repeats, or the base's word when the list is absent or empty.
+/// Throws UsageError naming the flag and the bad word, or an empty entry.
+std::vector<std::string> listedWords(const StrategyLists& lists, const Setting& setting, const RenderSettings& base);
 
 /// Every combination of the lists (in the settings table's order, estimators outermost), the base's value where a
 /// list is empty. Combinations that differ only in what their estimator does not use (the light sampler and
