@@ -301,7 +301,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     auto winner = [&]() -> const PilotRow* {
         const PilotRow* incumbent = runs.front().row.measurements > 0 && !runs.front().row.tooSlow ? &runs.front().row
                                                                                                     : nullptr;
-        const PilotRow* best = incumbent;
+        const PilotRow* leader = incumbent;
         auto relative = [](const PilotRow& r) { return r.relMse > 0.0 ? r.relMseError / r.relMse : 0.0; };
         for (const Candidate& c : runs)
         {
@@ -310,16 +310,16 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
                 continue;
             if (!incumbent)
             {
-                if (!best || row.efficiency > best->efficiency)
-                    best = &row;
+                if (!leader || row.efficiency > leader->efficiency)
+                    leader = &row;
                 continue;
             }
-            if (row.efficiency > best->efficiency &&
+            if (row.efficiency > leader->efficiency &&
                 std::log(row.efficiency / incumbent->efficiency) >
                     2.0 * std::hypot(relative(row), relative(*incumbent)))
-                best = &row;
+                leader = &row;
         }
-        return best;
+        return leader;
     };
 
     bool finished = true;
@@ -368,8 +368,8 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     rescore();
     for (const Candidate& c : runs)
         choice.rows.push_back(c.row);
-    if (const PilotRow* best = winner())
-        choice.chosen = best->strategy;
+    if (const PilotRow* leader = winner())
+        choice.chosen = leader->strategy;
     return choice;
 }
 
