@@ -80,7 +80,8 @@ struct fmt::formatter<rt::RenderSettings> : fmt::formatter<std::string_view>
     {
         std::string text;
         for (const rt::Setting& setting : rt::settingsTable())
-            text += fmt::format("{}{} {}", text.empty() ? "" : ", ", setting.name, setting.text(s));
+            if (setting.used(s)) // the settings the render reads: no light sampler for bsdf, no restir-* for nee
+                text += fmt::format("{}{} {}", text.empty() ? "" : ", ", setting.name, setting.text(s));
         text += fmt::format(" ({}x{})", s.width, s.height());
         return fmt::formatter<std::string_view>::format(text, ctx);
     }

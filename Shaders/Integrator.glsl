@@ -22,7 +22,7 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
             return vec3(uintBitsToFloat(0x7FC00000u)); // a quiet NaN
         traceToFirstHit(path.origin, path.direction);
         ShadowRay shadow;
-        bool goesOn = shadePathVertex(path, segment, payload, shadow);
+        bool goesOn = shadePathVertex(path, segment, payload, shadow, false);
         if (shadow.pending && unoccluded(shadow.origin, shadow.direction, shadow.distance))
             path.radiance += shadow.contribution;
         if (!goesOn)

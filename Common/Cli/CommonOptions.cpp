@@ -216,7 +216,8 @@ CommandLineRender resolveCommandLine(const CommonOptions& options)
     r.request = resolveRequest(options, r.scene);
     const RenderSettings& s = r.request.settings;
     const std::uint64_t pixels = std::uint64_t(s.width) * std::uint64_t(s.height());
-    checkMemory(renderBytes(pixels, r.scene.primitiveCount() + r.scene.lights.size()),
+    const std::uint64_t restirPixels = s.estimator == Estimator::RestirDi ? pixels * (kRestirBytesPerPixel / kRenderBytesPerPixel) : 0;
+    checkMemory(renderBytes(pixels + restirPixels, r.scene.primitiveCount() + r.scene.lights.size()),
                 fmt::format("a {}x{} render of {}", s.width, s.height(), r.scene.id), available);
     return r;
 }

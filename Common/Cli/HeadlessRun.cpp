@@ -187,7 +187,7 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& a
             written += (written.empty() ? ", wrote " : ", ") + file;
     std::printf("%s: %dx%d, %d spp (%s, %s), depth %d, %s engine: render %.3f s, build %.3f s, %.2f Mpaths/s, "
                 "NaN %llu, Inf %llu%s\n",
-                request.scene.id.c_str(), s.width, s.height, s.trueSpp, toString(settings.sampling), toString(settings.estimator),
+                request.scene.id.c_str(), s.width, s.height, s.trueSpp, toString(settings.sampling), estimatorLabel(settings).c_str(),
                 settings.depth, toString(s.engine), s.renderSeconds, s.buildSeconds, s.mpathsPerSecond(),
                 static_cast<unsigned long long>(s.nanSamples), static_cast<unsigned long long>(s.infSamples),
                 written.c_str());

@@ -36,6 +36,8 @@ namespace
 /// The word a label shows for `setting`: the value's, or TAG-on / TAG-off.
 std::string labelWord(const Setting& setting, const RenderSettings& s)
 {
+    if (setting.name == "estimator")
+        return estimatorLabel(s);
     const std::string word = setting.text(s);
     return setting.compareTag.empty() ? word : fmt::format("{}-{}", setting.compareTag, word);
 }

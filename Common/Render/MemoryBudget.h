@@ -13,6 +13,8 @@ namespace rt
 /// (the accumulator, its copy for cancellation, the estimate and the written PNG/PFM), 47 on the GPU app
 /// (readback and estimate, and lavapipe's device memory, which is host memory).
 inline constexpr std::uint64_t kRenderBytesPerPixel = 64;
+/// restir-di's frame adds two reservoirs (64 bytes) and a surface (64 bytes) per pixel (Shared/HostDevice.h).
+inline constexpr std::uint64_t kRestirBytesPerPixel = 128;
 /// Host bytes per scene object (sphere, quad, triangle, medium or light), an upper bound of what was
 /// measured with a million objects: 170 (white-spheres) to 590 (many-lights: light BVH, alias table and
 /// lookup) on the CPU, up to 980 through the GPU app (the scene's upload and BLAS build on lavapipe).

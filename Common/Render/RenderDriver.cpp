@@ -34,7 +34,9 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
     const int height = settings.height();
     const auto totalSamples = static_cast<std::uint32_t>(settings.trueSpp());
     const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
-    BatchPlan plan(totalSamples, pixels, engine.pathsPerBatch(), settings.sampling == PixelSampling::Accumulate);
+    // restir-di's iterations are one sample per pixel each, its reservoirs carried from one to the next.
+    BatchPlan plan(totalSamples, pixels, engine.pathsPerBatch(),
+                   settings.sampling == PixelSampling::Accumulate || settings.estimator == Estimator::RestirDi);
     control.begin(pixels * totalSamples); // progress in camera paths, advanced by the engine
 
     std::uint32_t samplesDone = 0;
@@ -89,6 +91,7 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
     st.threadsUsed = tally.threadsUsed;
     st.stageSeconds = engine.stageSeconds();
     st.frameConfiguration = engine.frameConfiguration();
+    st.frameBytesPerPixel = engine.frameBytesPerPixel();
     st.cancelled = samplesDone < totalSamples; // a cancel during the last batch came too late to matter
     st.wallSeconds = secondsSince(wallStart) + st.buildSeconds; // the build belongs to the render's cost
     return result;

@@ -76,5 +76,8 @@ public:
     /// Warnings and errors the device's validation has reported since the engine was made (the GPU engine with
     /// --validation); 0 where there is none.
     virtual std::uint64_t validationMessages() const { return 0; }
+    /// Bytes the last frame holds per pixel beyond its image, by buffer ("reservoirs", "surfaces": restir-di's);
+    /// empty where the frame holds none.
+    virtual std::map<std::string, std::uint64_t> frameBytesPerPixel() const { return {}; }
 };
 } // namespace rt

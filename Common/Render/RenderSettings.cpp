@@ -42,6 +42,14 @@ void RenderSettings::validate() const
         throw UsageError(fmt::format("height {} (width / aspect) exceeds {}", h, kMaxImageSide));
 }
 
+std::string estimatorLabel(const RenderSettings& settings)
+{
+    std::string label = toString(settings.estimator);
+    if (settings.estimator == Estimator::RestirDi && settings.restirBiased)
+        label += "-biased";
+    return label;
+}
+
 nlohmann::json toJson(const RenderSettings& settings)
 {
     nlohmann::json out = nlohmann::json::object();

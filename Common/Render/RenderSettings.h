@@ -41,6 +41,9 @@ struct RenderSettings
     Estimator estimator = Estimator::NeeMis;
     LightSampler lightSampler = LightSampler::Projected; // how NEE samples a light
     LightSelection lightSelection = LightSelection::Bvh; // how NEE picks the light it samples
+    int restirCandidates = 32; // restir-di: candidates per pixel and iteration (Bitterli et al. 2020's M)
+    int restirSpatial = 5; // restir-di: neighbours of spatial reuse per pixel and iteration
+    bool restirBiased = false; // restir-di: the biased combination (Alg. 4) instead of the unbiased (Alg. 6)
     bool russianRoulette = true; // paths end by Russian roulette from their third segment (Shared/RussianRoulette.h)
     bool unidirectionalLight = true; // emitters emit from their front side only
     std::uint32_t seed = 0;
@@ -78,10 +81,11 @@ struct EnumNames<PixelSampling>
 template <>
 struct EnumNames<Estimator>
 {
-    static constexpr std::array<EnumName<Estimator>, 4> values{{{Estimator::BsdfOnly, "bsdf"},
+    static constexpr std::array<EnumName<Estimator>, 5> values{{{Estimator::BsdfOnly, "bsdf"},
                                                                 {Estimator::Mixture, "mixture"},
                                                                 {Estimator::Nee, "nee"},
-                                                                {Estimator::NeeMis, "nee-mis"}}};
+                                                                {Estimator::NeeMis, "nee-mis"},
+                                                                {Estimator::RestirDi, "restir-di"}}};
 };
 
 template <>
@@ -106,6 +110,10 @@ constexpr PixelSampling progressiveSampling(PixelSampling sampling)
 {
     return sampling == PixelSampling::Sobol ? PixelSampling::Sobol : PixelSampling::Accumulate;
 }
+
+/// The estimator's word, "restir-di-biased" for restir-di's biased combination: what every output that names a
+/// render's estimator shows (the headless summary, --compare's labels).
+std::string estimatorLabel(const RenderSettings& settings);
 
 /// Every field by its JSON key (Render/SettingsTable.h: spp, depth, width, aspect, sampling, estimator,
 /// light_sampler, light_selection, russian_roulette, unidirectional_light, seed): the stats JSON's "settings"

@@ -42,6 +42,20 @@ nlohmann::json RenderStats::toJson() const
         j["frame_configuration"] = frameConfiguration;
     if (!strategyChoice.is_null())
         j["strategy_choice"] = strategyChoice;
+    if (request.settings.estimator == Estimator::RestirDi)
+    {
+        // restir-di's memory per pixel (the bound: reservoirs at most 64 bytes) and the whole frame's,
+        // and which combination ran: a biased render says so wherever its numbers go.
+        nlohmann::json restir;
+        restir["combination"] = request.settings.restirBiased ? "biased" : "unbiased";
+        const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
+        for (const auto& [buffer, bytes] : frameBytesPerPixel)
+        {
+            restir[buffer + "_bytes_per_pixel"] = bytes;
+            restir[buffer + "_bytes"] = bytes * pixels;
+        }
+        j["restir"] = restir;
+    }
     return j;
 }
 

@@ -34,6 +34,7 @@ struct RenderStats
     std::map<std::string, double> stageSeconds; // RenderEngine::stageSeconds (the GPU engine's: docs/GPU.md)
     std::string frameConfiguration; // RenderEngine::frameConfiguration
     nlohmann::json strategyChoice; // --strategy auto's pilot (Compare/AutoStrategy.h); null otherwise
+    std::map<std::string, std::uint64_t> frameBytesPerPixel; // RenderEngine::frameBytesPerPixel
 
     double mpathsPerSecond() const { return renderSeconds > 0.0 ? double(paths) / renderSeconds * 1e-6 : 0.0; }
     nlohmann::json toJson() const;

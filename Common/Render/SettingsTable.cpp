@@ -144,6 +144,8 @@ Setting field(Setting s)
 
 bool usesLights(const RenderSettings& s) { return shader::usesNee(s.estimator); }
 
+bool usesRestir(const RenderSettings& s) { return s.estimator == Estimator::RestirDi; }
+
 std::vector<Setting> makeTable()
 {
     return {
@@ -196,10 +198,13 @@ std::vector<Setting> makeTable()
                     "bsdf: follow sampled BSDF directions only (books 1-2); mixture: book 3's one-sample mix of "
                     "BSDF and light directions, no shadow rays; nee: a shadow ray to one sampled light at every "
                     "diffuse vertex, BSDF rays ignore the lights; nee-mis: NEE and BSDF rays both count, weighted "
-                    "by the power heuristic",
+                    "by the power heuristic; restir-di: at each camera path's first diffuse or glossy vertex, "
+                    "direct light by spatiotemporal reservoir resampling (Bitterli et al. 2020: --restir-candidates, "
+                    "--restir-spatial, --restir-biased), nee-mis beyond; iterations of one sample per pixel",
             .tooltip = "bsdf: BSDF sampling only (books 1 and 2); mixture: book 3's mix of BSDF and light "
                        "directions, no shadow rays; nee: a shadow ray to one light per diffuse vertex; nee-mis: NEE "
-                       "and BSDF rays weighted by the power heuristic",
+                       "and BSDF rays weighted by the power heuristic; restir-di: reservoir resampling of direct light at "
+                       "the first vertex, nee-mis beyond",
             .fromScene = true,
             .compareFlag = "--estimators",
         }),
@@ -231,6 +236,38 @@ std::vector<Setting> makeTable()
                        "a light BVH's bound of what it contributes at the vertex",
             .compareFlag = "--light-selections",
             .usedBy = &usesLights,
+        }),
+        field<&RenderSettings::restirCandidates, &shader::RenderUniforms::restirCandidates>({
+            .name = "restir-candidates",
+            .jsonKey = "restir_candidates",
+            .label = "ReSTIR candidates",
+            .help = "restir-di: light samples resampled per pixel and iteration, from the light selection and "
+                    "sampler (M of Bitterli et al. 2020), 1 to 1024",
+            .tooltip = "restir-di: light samples resampled per pixel and iteration",
+            .minimum = 1,
+            .maximum = 1024,
+            .usedBy = &usesRestir,
+        }),
+        field<&RenderSettings::restirSpatial, &shader::RenderUniforms::restirSpatial>({
+            .name = "restir-spatial",
+            .jsonKey = "restir_spatial",
+            .label = "ReSTIR neighbours",
+            .help = "restir-di: neighbours' reservoirs combined per pixel and iteration (spatial reuse within 30 px), "
+                    "0 to 64",
+            .tooltip = "restir-di: neighbours' reservoirs reused per pixel and iteration",
+            .minimum = 0,
+            .maximum = 64,
+            .usedBy = &usesRestir,
+        }),
+        field<&RenderSettings::restirBiased, &shader::RenderUniforms::restirBiased>({
+            .name = "restir-biased",
+            .jsonKey = "restir_biased",
+            .label = "ReSTIR biased",
+            .help = "restir-di: on: the biased combination (1 / the inputs' summed M, Bitterli et al. 2020 Alg. 4), "
+                    "without the shadow rays that find which inputs could have produced the chosen point; off: the "
+                    "unbiased one (Alg. 6)",
+            .tooltip = "restir-di: on: cheaper, biased reuse (labelled biased in every output); off: unbiased",
+            .usedBy = &usesRestir,
         }),
         field<&RenderSettings::sampling, &shader::RenderUniforms::sampling>({
             .name = "sampling",

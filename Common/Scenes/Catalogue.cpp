@@ -39,6 +39,8 @@ const std::vector<SceneInfo>& sceneCatalogue()
         {"furnace", "White furnace: Le / (1 - a) everywhere", "research notes §4.5", furnace},
         {"rect-light-closeup", "Rectangular light upright on a floor, seen near its foot", "scenes.md", rectLightCloseup},
         {"many-lights", "cornell-box-lights' room with N small lights (--count, default 1000)", "scenes.md", manyLights, kTakesCount},
+        {"lamp-room", "N lamps in shades open on one side (--count, default 4096): visibility decides", "scenes.md", lampRoom,
+         kTakesCount},
         {"sphere-light-closeup", "Sphere light just above a floor", "scenes.md", sphereLightCloseup},
         {"triangle-lights", "Cornell box lit by triangles: ceiling halves, a sliver, an emitting mesh",
          "scenes.md", triangleLights, kTakesMesh},

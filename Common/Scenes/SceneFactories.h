@@ -38,6 +38,7 @@ Scene cornellBoxAndMesh(const SceneOptions&);
 Scene furnace(const SceneOptions&);
 Scene rectLightCloseup(const SceneOptions&);
 Scene manyLights(const SceneOptions&);
+Scene lampRoom(const SceneOptions&);
 Scene sphereLightCloseup(const SceneOptions&);
 Scene triangleLights(const SceneOptions&);
 

@@ -176,4 +176,61 @@ Scene manyLights(const SceneOptions& options)
     s.defaults = {.spp = 100, .depth = 50, .width = 600, .aspect = 1.0f, .unidirectionalLight = false};
     return b.finish();
 }
+
+Scene lampRoom(const SceneOptions& options)
+{
+    // shared/spec/scenes.md: N small lamps, each inside a white shade open on one side, so that most lamps are
+    // hidden from most points: visibility, not power, decides which light matters (ReSTIR against the light BVH).
+    SceneBuilder b("lamp-room");
+    const std::uint32_t w = b.world();
+    rtrolCornellWalls(b, w);
+    b.sphere(w, {150, 100, 277.5f}, 100.0f, b.lambertian(vec3(0.73f)));
+    const int count = options.count >= 0 ? options.count : 4096;
+    SceneRandom rnd(2u);
+    constexpr float kRadius = 3.0f;
+    constexpr float kHalfSide = 8.0f; // the shade: a box of side 16 about the lamp
+    struct Lamp
+    {
+        vec3 center;
+        int open; // the open face: 0 -y, 1 +x, 2 -x, 3 +z, 4 -z
+        vec3 color;
+        float factor;
+    };
+    std::vector<Lamp> lamps;
+    double power = 0.0;
+    for (int i = 0; i < count; ++i)
+    {
+        Lamp l{};
+        l.center = {rnd.uniform(30.0f, 525.0f), rnd.uniform(60.0f, 525.0f), rnd.uniform(30.0f, 525.0f)};
+        l.open = std::min(4, static_cast<int>(rnd.uniform() * 5.0f));
+        l.color = 0.5f * hueColor(rnd.uniform()) + vec3(0.5f);
+        l.factor = std::pow(10.0f, 2.0f * rnd.uniform()); // log-uniform over two decades
+        power += 4.0 * kPi * double(kRadius) * kRadius * luminance(l.factor * l.color);
+        lamps.push_back(l);
+    }
+    const float scale = power > 0.0 ? static_cast<float>(cornellBoxLightsPower() / power) : 1.0f;
+    const std::uint32_t shade = b.lambertian(vec3(0.73f));
+    const float h = kHalfSide;
+    for (const Lamp& l : lamps)
+    {
+        b.sphere(w, l.center, kRadius, b.diffuseLight(scale * l.factor * l.color));
+        const vec3 c = l.center;
+        // The six faces as quads, corner and two edges each; the open one is left out.
+        const vec3 faces[6][3] = {
+            {c + vec3(-h, -h, -h), {2 * h, 0, 0}, {0, 0, 2 * h}}, // -y
+            {c + vec3(h, -h, -h), {0, 2 * h, 0}, {0, 0, 2 * h}},  // +x
+            {c + vec3(-h, -h, -h), {0, 2 * h, 0}, {0, 0, 2 * h}}, // -x
+            {c + vec3(-h, -h, h), {2 * h, 0, 0}, {0, 2 * h, 0}},  // +z
+            {c + vec3(-h, -h, -h), {2 * h, 0, 0}, {0, 2 * h, 0}}, // -z
+            {c + vec3(-h, h, -h), {2 * h, 0, 0}, {0, 0, 2 * h}},  // +y: never open
+        };
+        for (int f = 0; f < 6; ++f)
+            if (f != l.open)
+                b.quad(w, faces[f][0], faces[f][1], faces[f][2], shade);
+    }
+    Scene& s = b.scene();
+    cornellCamera(s);
+    s.defaults = {.spp = 100, .depth = 50, .width = 600, .aspect = 1.0f, .unidirectionalLight = true};
+    return b.finish();
+}
 } // namespace rt::scenes

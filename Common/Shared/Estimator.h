@@ -8,11 +8,20 @@
 
 RT_SHADER_NAMESPACE_BEGIN
 
-/// Whether the estimator samples a light at its diffuse vertices (next-event estimation: nee, nee-mis): the
+/// Whether the estimator samples a light at its diffuse vertices (next-event estimation: nee, nee-mis, and
+/// restir-di, whose first such vertex resamples what NEE would sample): the
 /// shadow rays, and the weight of an emitter that a BSDF ray finds after such a vertex.
 RT_FN bool usesNee(RT_TAG(Estimator) estimator)
 {
-    return estimator == RT_ENUM(Estimator, Nee) || estimator == RT_ENUM(Estimator, NeeMis);
+    return estimator == RT_ENUM(Estimator, Nee) || estimator == RT_ENUM(Estimator, NeeMis) ||
+           estimator == RT_ENUM(Estimator, RestirDi);
+}
+
+/// Whether NEE's samples and the emitters BSDF rays find are weighted by the power heuristic (nee-mis; restir-di
+/// after its resampled vertex), rather than NEE's alone counting (nee).
+RT_FN bool weighsNeeByMis(RT_TAG(Estimator) estimator)
+{
+    return estimator == RT_ENUM(Estimator, NeeMis) || estimator == RT_ENUM(Estimator, RestirDi);
 }
 
 RT_SHADER_NAMESPACE_END

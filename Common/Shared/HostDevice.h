@@ -84,6 +84,9 @@ RT_ENUM_VALUE(Estimator, BsdfOnly, 0) // books 1-2: follow the sampled BSDF dire
 RT_ENUM_VALUE(Estimator, Mixture, 1)  // book 3: 1/2 BSDF pdf + 1/2 uniform pick over the light list, no shadow ray
 RT_ENUM_VALUE(Estimator, Nee, 2)      // a shadow ray to one sampled light per diffuse vertex; BSDF rays skip lights
 RT_ENUM_VALUE(Estimator, NeeMis, 3)   // NEE and BSDF sampling weighted by the power heuristic (Veach 1997, §9.2)
+// At the first vertex where NEE would run, direct light by spatiotemporal reservoir resampling (Bitterli et al.
+// 2020; Shared/Shading/Restir.h); nee-mis at the path's later vertices
+RT_ENUM_VALUE(Estimator, RestirDi, 4)
 RT_ENUM_END(Estimator)
 
 // How NEE samples a point on a light (--light-sampler). Book 3's mixture keeps its own: cones for spheres,
@@ -241,9 +244,9 @@ struct RenderUniforms
     uint russianRoulette; // 1: paths end by Russian roulette on their throughput (RussianRoulette.h)
     RT_TAG(LightSampler) lightSampler; // NEE's
     RT_TAG(LightSelection) lightSelection; // NEE's
-    uint pad0;
-    uint pad1;
-    uint pad2;
+    uint restirCandidates; // restir-di: light samples per pixel and iteration (M of Bitterli et al. 2020)
+    uint restirSpatial; // restir-di: neighbours of spatial reuse per pixel and iteration (k)
+    uint restirBiased; // restir-di: 1: the biased combination (1 / sum of M), without the neighbours' shadow rays
 };
 
 /// What a traced path ray brings back to the path vertex (Shared/Shading/PathVertex.h): the GPU's payload at
@@ -260,6 +263,28 @@ struct HitPayload
     uint lightSlot; // where the host finds the hit primitive's light, if any (emitterOfSlot; only read by NEE)
 };
 RT_CONST(uint, kHitMedium, 1u) // HitPayload::flags: scattered inside a constant medium (frontFace, origin = position)
+
+/// restir-di's record of a pixel's vertex whose direct light is resampled (Shared/Shading/Restir.h): what a
+/// neighbour needs to evaluate its target function there. 64 bytes.
+struct RestirSurface
+{
+    HitPayload hit; // material kNoIndex: the pixel's path reached no such vertex
+    vec3 incoming; // direction of the ray that found the vertex (not necessarily unit)
+    float depth; // length of the camera path to the vertex, for the neighbours' similarity test
+};
+
+/// restir-di's reservoir (Bitterli et al. 2020, §3 and Alg. 2): one light point chosen by resampling, its
+/// unbiased contribution weight W (per unit area at the point) and the count M of candidates behind it. 32
+/// bytes: a pixel holds two (after temporal reuse; after spatial reuse, which the next iteration reads).
+struct Reservoir
+{
+    vec3 point; // y, on light `light` (world space)
+    uint light; // kNoIndex: empty
+    float weight; // W: 0 when the point is occluded from the reservoir's own vertex (visibility reuse)
+    float count; // M
+    float target; // the target function at the reservoir's own vertex: luminance of restirIntegrand(y)
+    float pad;
+};
 
 // ==== GPU engine only (RayTracingGPU, Shaders): bindings, uniforms and geometry records ====================
 // Nothing above depends on this section; the CPU engine ignores it. Layout rule as above (scalar).
@@ -540,6 +565,8 @@ static_assert(sizeof(RenderUniforms) == 176);
 static_assert(offsetof(RenderUniforms, background0) == 96);
 static_assert(offsetof(RenderUniforms, sampling) == 128);
 static_assert(sizeof(HitPayload) == 48);
+static_assert(sizeof(RestirSurface) == 64);
+static_assert(sizeof(Reservoir) == 32);
 static_assert(sizeof(TextureData) == 40);
 static_assert(sizeof(MaterialData) == 64);
 static_assert(sizeof(LightData) == 104);

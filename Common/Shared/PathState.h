@@ -23,7 +23,7 @@ struct PathState
     // The vertex the current ray left, for the MIS weight of the emission it finds: the ray's origin, the
     // receiver normal there for the projected samplers (0 in a medium) and the BSDF strategy's solid-angle pdf
     // of the ray's direction; 0 when NEE did not run there (the camera, a specular vertex): the emission counts
-    // in full.
+    // in full; negated after restir-di's resampled vertex, where that emission counts 0 (Shading/PathVertex.h).
     vec3 previousPoint;
     vec3 previousNormal;
     float previousBsdfPdf;

@@ -75,6 +75,8 @@ void CpuEngine::beginFrame(const RenderSettings& settings)
                           .rowStates = std::vector<RowState>(height),
                           .rowIndices = std::vector<int>(height)});
     std::iota(m_frame->rowIndices.begin(), m_frame->rowIndices.end(), 0);
+    if (settings.estimator == Estimator::RestirDi)
+        m_frame->restir.emplace(width, height);
     spdlog::debug("CPU {}", frameConfiguration());
 }
 
@@ -82,13 +84,25 @@ std::string CpuEngine::frameConfiguration() const
 {
     if (!m_frame)
         return {};
+    if (m_frame->restir)
+        return fmt::format("restir-di passes ({} combination), general shading (scene: {})",
+                           m_frame->settings.restirBiased ? "biased" : "unbiased", m_features.describe());
     return fmt::format("path loop: {} (scene: {})", m_frame->variant.describe(), m_features.describe());
+}
+
+std::map<std::string, std::uint64_t> CpuEngine::frameBytesPerPixel() const
+{
+    if (!m_frame || !m_frame->restir)
+        return {};
+    return {{"reservoirs", RestirBuffers::kReservoirBytesPerPixel}, {"surfaces", RestirBuffers::kSurfaceBytesPerPixel}};
 }
 
 BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control)
 {
     if (!m_frame)
         throw UsageError("CpuEngine::traceSamples called before beginFrame");
+    if (m_frame->restir)
+        return traceRestir(firstSample, count, control);
     Frame& f = *m_frame;
     const int width = f.width;
     // The batch's inputs as locals, read once rather than through the frame in the inner loop.
@@ -161,6 +175,73 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
             std::copy_n(f.before.get() + rowStart, width, sums.data() + rowStart);
             tallies[y] = f.rowsBefore[y];
         }
+    return {.complete = false};
+}
+
+BatchResult CpuEngine::traceRestir(std::uint32_t firstSample, std::uint32_t count, RenderControl& control)
+{
+    Frame& f = *m_frame;
+    RestirBuffers& buffers = *f.restir;
+    const shader::RenderUniforms uniforms = f.uniforms;
+    const CpuScene& scene = *m_scene;
+    if (firstSample == 0)
+        buffers.history = false;
+    // The batch's start, put back if it is cancelled: its iterations change every pixel's reservoirs.
+    std::copy(f.sum.begin(), f.sum.end(), f.before.get());
+    f.rowsBefore = f.rows;
+    bool cancelled = false;
+    const auto forRows = [&](const auto& row) {
+        if (m_kind == EngineKind::Single)
+            std::for_each(std::execution::seq, f.rowIndices.begin(), f.rowIndices.end(), row);
+        else
+            std::for_each(std::execution::par, f.rowIndices.begin(), f.rowIndices.end(), row);
+    };
+    for (std::uint32_t s = firstSample; s < firstSample + count && !cancelled; ++s)
+    {
+        forRows([&](int y) {
+            if (control.cancelRequested())
+                return;
+            RestirRowTally t;
+            restirCandidatesRow(scene, uniforms, buffers, y, s, t);
+            f.rows[y].segments += t.segments;
+        });
+        if (control.cancelRequested())
+        {
+            cancelled = true;
+            break;
+        }
+        forRows([&](int y) {
+            if (control.cancelRequested())
+                return;
+            RowTally& tally = f.rows[y];
+            tally.thread = std::hash<std::thread::id>{}(std::this_thread::get_id());
+            RestirRowTally t;
+            std::vector<vec3> radiance(std::size_t(f.width));
+            restirShadeRow(scene, uniforms, buffers, y, s, radiance.data(), t);
+            tally.segments += t.segments;
+            const std::size_t rowStart = std::size_t(y) * std::size_t(f.width);
+            for (int x = 0; x < f.width; ++x)
+            {
+                const vec3& l = radiance[std::size_t(x)];
+                if (isFinite(l))
+                    f.sum[rowStart + std::size_t(x)] += dvec3(l);
+                else if (std::isnan(l.x) || std::isnan(l.y) || std::isnan(l.z))
+                    ++tally.nan;
+                else
+                    ++tally.inf;
+            }
+            control.advance(std::uint64_t(f.width));
+        });
+        if (control.cancelRequested())
+            cancelled = true;
+        else
+            buffers.history = true;
+    }
+    if (!cancelled)
+        return {.complete = true};
+    std::copy_n(f.before.get(), f.sum.size(), f.sum.begin());
+    f.rows = f.rowsBefore;
+    buffers.history = false;
     return {.complete = false};
 }
 

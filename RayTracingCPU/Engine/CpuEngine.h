@@ -10,6 +10,7 @@
 
 #include "Integrator/PathIntegrator.h"
 #include "Integrator/PathVariants.h"
+#include "Integrator/RestirPasses.h"
 #include "Render/RenderEngine.h"
 #include "Scene/Camera.h"
 #include "Engine/CpuScene.h"
@@ -45,6 +46,8 @@ public:
     /// The path loop the current frame runs ("path loop: general" or what it is specialised for, and the
     /// scene's features); empty before beginFrame. --stats' frame_configuration.
     std::string frameConfiguration() const override;
+    /// restir-di's reservoirs (two per pixel, 64 bytes) and surfaces (64 bytes); empty for other estimators.
+    std::map<std::string, std::uint64_t> frameBytesPerPixel() const override;
     /// The path loop alone: "general" or e.g. "nee-mis, no media, solid colours only".
     std::string pathVariant() const { return m_frame ? m_frame->variant.describe() : std::string(); }
 
@@ -82,7 +85,12 @@ private:
         std::vector<RowTally> rowsBefore;
         std::vector<RowState> rowStates;
         std::vector<int> rowIndices; // 0 .. height - 1, the range the execution policy walks
+        std::optional<RestirBuffers> restir; // restir-di's reservoirs, kept across batches
     };
+
+    /// traceSamples for restir-di: iteration by iteration, each two passes over the image
+    /// (Integrator/RestirPasses.h); a cancelled batch is put back whole and the next starts without history.
+    BatchResult traceRestir(std::uint32_t firstSample, std::uint32_t count, RenderControl& control);
 
     EngineKind m_kind;
     bool m_specialize;

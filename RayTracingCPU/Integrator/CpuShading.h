@@ -24,6 +24,7 @@
 #include "Shared/Perlin.h"
 #include "Shared/Random.h"
 #include "Shared/RayOffset.h"
+#include "Shared/Restir.h"
 #include "Shared/RussianRoulette.h"
 #include "Shared/SpecularScattering.h"
 #include "Shared/Warps.h"
@@ -114,6 +115,7 @@ public:
 #include "Shared/Shading/Background.h"
 #include "Shared/Shading/Camera.h"
 #include "Shared/Shading/PathVertex.h"
+#include "Shared/Shading/Restir.h"
 
 private:
     const ImageData* m_images;

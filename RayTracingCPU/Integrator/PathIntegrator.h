@@ -69,7 +69,7 @@ inline bool continuePath(CpuShading<C>& shading, const CpuScene& cs, shader::Pat
         payload.lightSlot = si.light;
     }
     shader::ShadowRay shadow{}; // its fields but pending are set only when pending, which GCC cannot follow
-    const bool goesOn = shading.shadePathVertex(path, segment, payload, shadow);
+    const bool goesOn = shading.shadePathVertex(path, segment, payload, shadow, false);
     if (shadow.pending)
     {
         ++segments;

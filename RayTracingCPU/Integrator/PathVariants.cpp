@@ -27,6 +27,7 @@ PathVariant choosePathVariant(const SceneFeatures& features, Estimator estimator
     case Estimator::Mixture: return estimatorVariant<Estimator::Mixture>(media, textures, rayLanes);
     case Estimator::Nee: return estimatorVariant<Estimator::Nee>(media, textures, rayLanes);
     case Estimator::NeeMis: return estimatorVariant<Estimator::NeeMis>(media, textures, rayLanes);
+    case Estimator::RestirDi: break; // its passes run the general shading (Integrator/RestirPasses.h)
     }
     return {&traceJobs<PathCode{}>, PathCode{}};
 }

@@ -267,6 +267,8 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     Impl& e = *m_impl;
     if (!e.tracer.scene())
         throw UsageError("GpuEngine::beginFrame called before setScene");
+    if (settings.estimator == Estimator::RestirDi)
+        throw UsageError("the gpu engine does not run --estimator restir-di yet: render it with --engine single or multi");
     const auto width = static_cast<std::uint32_t>(settings.width);
     const auto height = static_cast<std::uint32_t>(settings.height());
     if (const auto problem = checkTargetLimits(width, height, targetLimits(e.device())))

@@ -25,7 +25,7 @@ void main()
     uint pixel = waveField(kWaveOriginPixel, p).w;
     uint sampleIndex = waveField(kWaveDirectionSample, p).w;
     ShadowRay shadow;
-    bool goesOn = shadePathVertex(path, push.waveSegment, loadHit(p), shadow);
+    bool goesOn = shadePathVertex(path, push.waveSegment, loadHit(p), shadow, false);
     if (goesOn && !(isFiniteVec(path.origin) && isFiniteVec(path.direction)))
     {
         path.radiance = vec3(uintBitsToFloat(0x7FC00000u)); // a quiet NaN, as the megakernel returns

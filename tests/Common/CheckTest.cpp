@@ -151,8 +151,15 @@ TEST(Format, RenderSettings)
     s.unidirectionalLight = false;
     s.seed = 7;
     EXPECT_EQ(fmt::format("{}", s),
-              "spp 10, depth 8, width 400, aspect 1.7777778, estimator bsdf, light-sampler projected, light-selection "
-              "bvh, sampling stratified, russian-roulette on, unidirectional-light off, seed 7 (400x225)");
+              "spp 10, depth 8, width 400, aspect 1.7777778, estimator bsdf, sampling stratified, russian-roulette on, "
+              "unidirectional-light off, seed 7 (400x225)");
+
+    s.estimator = Estimator::RestirDi;
+    s.restirBiased = true;
+    EXPECT_EQ(fmt::format("{}", s),
+              "spp 10, depth 8, width 400, aspect 1.7777778, estimator restir-di, light-sampler projected, "
+              "light-selection bvh, restir-candidates 32, restir-spatial 5, restir-biased on, sampling stratified, "
+              "russian-roulette on, unidirectional-light off, seed 7 (400x225)");
 }
 } // namespace
 } // namespace rt

@@ -51,8 +51,11 @@ TEST_P(CpuEstimatorAgreement, EveryEstimatorMatchesNeeMis)
     // light samples that fall in the lobe are heavy-tailed, and at 32 spp the Z-test's variance, from the same
     // samples, misses them (block means 0.46 against NEE + MIS's 0.77, |Z| 7; at 16,384 spp the two agree to
     // 0.5 %).
+    // lamp-room hides most of its 4,096 lamps in shades from most points: NEE alone by power finds an open one
+    // rarely, and at 32 spp its blocks came out at a third to a half of NEE + MIS's with |Z| 4-9, while at
+    // 4,096 spp the two agree to 3 %.
     const SceneFeatures features = featuresOf(scene);
-    const int neeFactor = features.conductor || features.roughDielectric || features.gltfPbr ? 8 : 1;
+    const int neeFactor = features.conductor || features.roughDielectric || features.gltfPbr || scene.id == "lamp-room" ? 8 : 1;
     cpu::CpuEngine engine(EngineKind::Multi);
     const auto blocksOf = [&](Variant v) {
         RenderSettings settings = s;

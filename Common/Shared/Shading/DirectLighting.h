@@ -63,7 +63,7 @@ RT_FN bool sampleDirect(vec3 origin, vec3 receiver, vec3 ns, bool phase, vec3 al
     if (!(max(le.x, max(le.y, le.z)) > 0.0f))
         return false;
     const float lightPdfTotal = pmf * ls.pdf;
-    const float weight = settingEstimator() == RT_ENUM(Estimator, NeeMis) ? powerHeuristic(lightPdfTotal, bsdfPdf) : 1.0f;
+    const float weight = weighsNeeByMis(settingEstimator()) ? powerHeuristic(lightPdfTotal, bsdfPdf) : 1.0f;
     shadow.pending = true;
     shadow.direction = ls.wi;
     // The shadow ray stops short of the light's surface by a relative margin far above the rounding of the

@@ -10,6 +10,9 @@
 //    Emission a BSDF ray finds after such a vertex counts 0 (nee: NEE already did) or with the power
 //    heuristic's weight against NEE's pdf of the same direction (nee-mis); NEE's own sample gets the
 //    complementary weight. After specular vertices and from the camera, emission counts in full.
+//  - restir-di (Bitterli et al. 2020): at a camera path's first vertex where NEE would run, the host adds the
+//    direct light its reservoirs chose (Shading/Restir.h) and calls this vertex with `directResampled`: no NEE
+//    here, and emission the next BSDF ray finds counts 0, as after nee's vertices. Later vertices are nee-mis's.
 // Russian roulette (Shared/RussianRoulette.h) may end any path from its third segment: drawn after scattering,
 // it ends the path at once (NEE estimators, pbrt-v4) or after the next hit's emission (rouletteAfterNextHit).
 // No ray is traced here: the next segment's ray and NEE's shadow ray are handed back to the caller.
@@ -30,8 +33,10 @@
 /// The vertex where segment `segment` (0: the camera ray) of `path`, the ray (path.origin, path.direction),
 /// found `hit` (material kNoIndex: it left the scene): adds the emission or background it finds to path.radiance, scatters, and returns true when the path goes on, with path.origin and
 /// path.direction its next ray. `shadow` is the vertex's shadow ray, pending also when the path ends here; its
-/// contribution counts (if unoccluded) before the next vertex's.
-RT_FN bool shadePathVertex(RT_INOUT(PathState) path, uint segment, RT_IN(HitPayload) hit, RT_OUT(ShadowRay) shadow)
+/// contribution counts (if unoccluded) before the next vertex's. `directResampled`: the host estimates this
+/// vertex's direct light by resampling (restir-di; only where resamplesDirectAt holds): no NEE here.
+RT_FN bool shadePathVertex(RT_INOUT(PathState) path, uint segment, RT_IN(HitPayload) hit, RT_OUT(ShadowRay) shadow,
+                           bool directResampled)
 {
     // Every field set on entry (Shading/Scatter.h says why); the caller reads them only when pending.
     shadow.pending = false;
@@ -58,9 +63,9 @@ RT_FN bool shadePathVertex(RT_INOUT(PathState) path, uint segment, RT_IN(HitPayl
     if (m.emissionTexture != kNoIndex && (uniforms.unidirectionalLight == 0u || surface.frontFace))
     {
         float weight = 1.0f;
-        const uint light = path.previousBsdfPdf > 0.0f ? emitterOfSlot(hit.lightSlot) : kNoIndex;
+        const uint light = path.previousBsdfPdf != 0.0f ? emitterOfSlot(hit.lightSlot) : kNoIndex;
         if (light != kNoIndex) // after a NEE vertex: the direction is the BSDF's unit sample
-            weight = settingEstimator() == RT_ENUM(Estimator, NeeMis)
+            weight = weighsNeeByMis(settingEstimator()) && path.previousBsdfPdf > 0.0f
                          ? powerHeuristic(path.previousBsdfPdf,
                                           selectionPmf(light, path.previousPoint, path.previousNormal) *
                                               lightPdf(lights[light], settingLightSampler(), path.previousPoint,
@@ -101,7 +106,7 @@ RT_FN bool shadePathVertex(RT_INOUT(PathState) path, uint segment, RT_IN(HitPayl
         if (microfacet)
             bsdf = microfacetBsdfAt(m, surface);
         const vec3 wo = microfacet ? -normalize(path.direction) : vec3(0.0f); // read by glossy lobes only
-        if (nee)
+        if (nee && !directResampled)
         {
             // Glass transmits: its light samples see no horizon and leave from the hit point itself, as in a
             // medium. The BSDF ray leaves from this origin too (below): sampleDiffuse and a reflecting BSDF keep
@@ -138,6 +143,8 @@ RT_FN bool shadePathVertex(RT_INOUT(PathState) path, uint segment, RT_IN(HitPayl
             path.beta *= albedo;
             path.previousBsdfPdf = diffusePdf(phase, surface.shadingNormal, direction);
         }
+        if (directResampled)
+            path.previousBsdfPdf = -path.previousBsdfPdf;
     }
     else
     {

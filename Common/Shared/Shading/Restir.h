@@ -1,0 +1,162 @@
+// restir-di's per-sample math, written once for both engines: a host's shading scope (Shading/README.md). The
+// estimator (Bitterli et al. 2020; the reservoirs in Shared/Restir.h): at a camera path's first vertex where NEE
+// would run, direct light is estimated by one light point y chosen by resampling, with f(y) W, where f is the
+// integrand in the area measure of y,
+//     f(y) = f_s(wo, wi) |cos theta_i| Le(y, -wi) |cos theta_y| / |y - x|^2 V(x, y),
+// and W the reservoir's unbiased contribution weight. The target function p-hat is the luminance of f without V.
+// Candidates come from the render's light selection and sampler, so their area pdf is
+// p(y) = pmf pdf_omega |cos theta_y| / |y - x|^2 and their resampling weight p-hat / p needs no distance.
+// The engines' passes: candidates and temporal reuse, then spatial reuse and shading (RayTracingCPU/Integrator/
+// RestirPasses.cpp on the CPU).
+#ifndef RT_SHADING_RESTIR_H
+#define RT_SHADING_RESTIR_H
+
+#include "Shared/Bsdf/MicrofacetBsdf.h"
+#include "Shared/DiffuseScattering.h"
+#include "Shared/HostDevice.h"
+#include "Shared/LightSampling.h"
+#include "Shared/LightSelection.h"
+#include "Shared/PathState.h"
+#include "Shared/RayOffset.h"
+#include "Shared/Restir.h"
+#include "Shared/Shading/DirectLighting.h"
+#include "Shared/Shading/Scatter.h"
+#include "Shared/Shading/Textures.h"
+
+/// Whether the path vertex would run NEE at `hit`, reached by segment `segment` of `path`: the vertex whose
+/// direct light restir-di resamples (the first such of a camera path). shadePathVertex's own conditions.
+RT_FN bool resamplesDirectAt(RT_IN(HitPayload) hit, uint segment, RT_IN(PathState) path)
+{
+    if (hit.material == kNoIndex || uniforms.emitterCount == 0u || segment + 1u >= uniforms.depth ||
+        path.pendingSurvival == 0.0f)
+        return false;
+    const RT_TAG(MaterialType) type = materials[hit.material].type;
+    return (kHasLambertian && type == RT_ENUM(MaterialType, Lambertian)) ||
+           (kHasIsotropic && type == RT_ENUM(MaterialType, Isotropic)) || isMicrofacet(type);
+}
+
+/// The shading point of `s` as NEE sees it at that vertex (Shading/PathVertex.h, Shading/DirectLighting.h).
+RT_FN RestirVertex restirVertexOf(RT_IN(RestirSurface) s)
+{
+    RestirVertex v;
+    v.valid = s.hit.material != kNoIndex;
+    v.phase = false;
+    v.microfacet = false;
+    v.transmits = false;
+    v.position = s.hit.position;
+    v.normal = s.hit.normal;
+    v.offsetScale = s.hit.offsetScale;
+    v.origin = s.hit.position;
+    v.receiver = vec3(0.0f);
+    v.ns = s.hit.normal;
+    v.albedo = vec3(0.0f);
+    v.wo = vec3(0.0f);
+    if (!v.valid)
+        return v;
+    const MaterialData m = materials[s.hit.material];
+    const bool medium = kHasMedia && (s.hit.flags & kHitMedium) != 0u;
+    SurfaceHit surface;
+    surface.position = s.hit.position;
+    surface.normal = s.hit.normal;
+    surface.frontFace = medium || dot(s.incoming, s.hit.normal) < 0.0f;
+    surface.shadingNormal = surface.frontFace ? s.hit.normal : -s.hit.normal;
+    surface.uv = s.hit.uv;
+    surface.incoming = s.incoming;
+    v.phase = kHasIsotropic && m.type == RT_ENUM(MaterialType, Isotropic);
+    v.microfacet = isMicrofacet(m.type);
+    v.transmits = v.microfacet && m.type == RT_ENUM(MaterialType, RoughDielectric);
+    v.ns = surface.shadingNormal;
+    v.origin = medium || v.transmits ? surface.position
+                                     : offsetRayOrigin(surface.position, surface.shadingNormal, s.hit.offsetScale);
+    v.receiver = v.phase || v.transmits ? vec3(0.0f) : surface.shadingNormal;
+    if (v.microfacet)
+    {
+        v.bsdf = microfacetBsdfAt(m, surface);
+        v.wo = -normalize(s.incoming);
+    }
+    else
+        v.albedo = evaluateTexture(m.albedoTexture, surface.uv, surface.position);
+    return v;
+}
+
+/// f(y) without visibility (the header's integrand, linear RGB, per unit area at y) of point `point` on light
+/// `light` seen from `v`: 0 where the light faces away (one-sided emitters), the BSDF is 0 or nothing is emitted.
+/// Its luminance is restir-di's target function.
+RT_FN vec3 restirIntegrand(RT_IN(RestirVertex) v, uint light, vec3 point)
+{
+    if (!v.valid || light == kNoIndex)
+        return vec3(0.0f);
+    const LightData l = lights[light];
+    const vec3 d = point - v.origin;
+    const float dist2 = dot(d, d);
+    if (!(dist2 > 0.0f))
+        return vec3(0.0f);
+    const vec3 wi = d / sqrt(dist2);
+    const vec3 ny = RT_LIGHT_IS(l.shape, Sphere) ? normalize(point - l.p0) : l.normal;
+    const float cosLight = -dot(ny, wi);
+    if (uniforms.unidirectionalLight != 0u ? !(cosLight > 0.0f) : cosLight == 0.0f)
+        return vec3(0.0f);
+    vec3 f;
+    if (v.microfacet)
+    {
+        float bsdfPdf;
+        f = evalMicrofacetBsdf(v.bsdf, v.wo, wi, bsdfPdf);
+    }
+    else
+        f = v.albedo * diffusePdf(v.phase, v.ns, wi); // the lobe's f |cos| is albedo x its pdf
+    if (!(max(f.x, max(f.y, f.z)) > 0.0f))
+        return vec3(0.0f);
+    // The light's surface coordinates as its samplers report them (Lights/LightSample.h): (a, b) on quads,
+    // barycentrics on triangles (both through the plane's duals), 0 on spheres.
+    const vec3 planar = point - l.p0;
+    const vec2 uvLight = RT_LIGHT_IS(l.shape, Sphere) ? vec2(0.0f) : vec2(dot(planar, l.dualU), dot(planar, l.dualV));
+    const vec3 le = evaluateTexture(materials[l.material].emissionTexture, uvLight, point);
+    return f * le * (abs(cosLight) / dist2);
+}
+
+/// One candidate of restir-di's initial resampling at `v` (Bitterli et al. 2020, Alg. 3's candidates): a light
+/// selected with uSelect and a point on it sampled with u, as NEE does. Returns its resampling weight
+/// p-hat(y) / p(y) (0 when it contributes nothing); `light`, `point` and `target` (p-hat(y)) describe it.
+RT_FN float restirCandidate(RT_IN(RestirVertex) v, float uSelect, vec2 u, RT_OUT(uint) light, RT_OUT(vec3) point,
+                            RT_OUT(float) target)
+{
+    light = kNoIndex;
+    point = vec3(0.0f);
+    target = 0.0f;
+    float pmf;
+    const uint picked = selectLight(RT_PASS(lightAlias) RT_PASS(lightBvh) settingLightSelection(), uSelect,
+                                    uniforms.emitterCount, v.origin, v.receiver, uniforms.unidirectionalLight == 0u, pmf);
+    if (picked == kNoIndex)
+        return 0.0f;
+    LightSample ls;
+    if (!sampleLight(lights[picked], settingLightSampler(), v.origin, v.receiver, u, ls))
+        return 0.0f;
+    const float cosLight = abs(dot(ls.normal, ls.wi));
+    const float areaPdf = pmf * ls.pdf * cosLight / (ls.distance * ls.distance);
+    if (!(areaPdf > 0.0f))
+        return 0.0f;
+    light = picked;
+    point = ls.point;
+    target = luminance(restirIntegrand(v, picked, ls.point));
+    return target / areaPdf;
+}
+
+/// The shadow ray from `v` to `point` (NEE's: Shading/PathVertex.h, Shading/DirectLighting.h); pending, its
+/// contribution 0 (the caller knows what it weighs).
+RT_FN ShadowRay restirShadowRay(RT_IN(RestirVertex) v, vec3 point)
+{
+    ShadowRay shadow;
+    shadow.pending = true;
+    shadow.contribution = vec3(0.0f);
+    const vec3 d = point - v.origin;
+    const float distance = length(d);
+    shadow.direction = distance > 0.0f ? d / distance : v.ns;
+    shadow.distance = distance * (1.0f - 1e-4f);
+    shadow.origin = v.origin;
+    if (v.transmits)
+        shadow.origin = offsetRayOrigin(v.position, dot(shadow.direction, v.normal) > 0.0f ? v.normal : -v.normal,
+                                        v.offsetScale);
+    return shadow;
+}
+
+#endif

@@ -1,0 +1,309 @@
+#include "Integrator/RestirPasses.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "Integrator/PathIntegrator.h"
+#include "Shared/Medium.h"
+
+namespace rt::cpu
+{
+namespace
+{
+// The restir-di streams of a (seed, pixel, sample), apart from the camera path's own: the path's numbers, and so
+// its vertex, are the same in both passes and the same as nee-mis's.
+constexpr std::uint32_t kCandidateStream = 0x52535431u;
+constexpr std::uint32_t kSpatialStream = 0x52535432u;
+/// Neighbours whose shading normals differ by more than 25 degrees are not reused (Bitterli et al. 2020, §6).
+const float kNeighbourMinCos = std::cos(25.0f * std::numbers::pi_v<float> / 180.0f);
+constexpr float kNeighbourMaxDepthRatio = 0.1f;
+/// Spatial reuse's inputs at most: the pixel's own and its neighbours.
+constexpr int kMaxInputs = 1 + 64;
+
+using Shading = CpuShading<PathCode{}>;
+
+/// One input of a combination: a reservoir and the vertex it was resampled for, with what its shadow rays took
+/// from that vertex's camera sample (its pixel's medium seed, its shutter time): an input's domain is where its
+/// own vertex sees the point, as its own shadow ray saw it.
+struct Input
+{
+    shader::Reservoir reservoir;
+    shader::RestirVertex vertex;
+    std::uint32_t mediumSeed = 0;
+    float time = 0.0f;
+};
+
+/// The scene, the shading and what a pass's shadow rays share.
+struct PassContext
+{
+    const CpuScene& scene;
+    Shading shading;
+    const shader::RenderUniforms& uniforms;
+    bool media;
+    RestirRowTally& tally;
+
+    bool visible(const shader::RestirVertex& v, const vec3& point, float time, std::uint32_t mediumSeed)
+    {
+        const shader::ShadowRay s = shading.restirShadowRay(v, point);
+        ++tally.segments;
+        return !scene.occluded(TraceRay(Ray{s.origin, s.direction, time}, scene.rayNeeds()), 0.0f, s.distance,
+                               mediumSeed);
+    }
+
+    /// Combines inputs[0, n) at inputs[0]'s vertex, whose target input 0's reservoir carries (Bitterli et al.
+    /// 2020, Alg. 6; Alg. 4 when uniforms.restirBiased): the chosen point y with W = (sum of the weights M_i
+    /// p-hat(y_i) W_i) / (Z p-hat(y)), then 0 if y is occluded from the vertex, and M = the inputs' M summed.
+    shader::Reservoir combine(const Input* inputs, int n, shader::Rng& rng)
+    {
+        shader::Reservoir out = shader::emptyReservoir();
+        const shader::RestirVertex& q = inputs[0].vertex;
+        float weightSum = 0.0f;
+        float countSum = 0.0f;
+        int chosen = -1;
+        for (int i = 0; i < n; ++i)
+        {
+            const shader::Reservoir& r = inputs[i].reservoir;
+            countSum += r.count;
+            const float u = shader::nextFloat(rng);
+            if (!(r.weight > 0.0f))
+                continue;
+            const float target = i == 0 ? r.target : luminance(shading.restirIntegrand(q, r.light, r.point));
+            if (shader::offerCandidate(out, weightSum, r.light, r.point, target, r.count * target * r.weight, u))
+                chosen = i;
+        }
+        out.count = countSum;
+        if (chosen < 0)
+            return out;
+        // Input 0's domain test is the shading's visibility: p-hat(y) > 0 there, y having been chosen.
+        const bool visibleHere = chosen == 0 || visible(q, out.point, inputs[0].time, inputs[0].mediumSeed);
+        float z = countSum;
+        if (uniforms.restirBiased == 0u)
+        {
+            z = visibleHere ? inputs[0].reservoir.count : 0.0f;
+            for (int i = 1; i < n; ++i)
+            {
+                const Input& in = inputs[i];
+                if (i == chosen)
+                    z += in.reservoir.count; // its own point: visible, or its W would be 0
+                else if (in.reservoir.count > 0.0f &&
+                         luminance(shading.restirIntegrand(in.vertex, out.light, out.point)) > 0.0f &&
+                         visible(in.vertex, out.point, in.time, in.mediumSeed))
+                    z += in.reservoir.count;
+            }
+        }
+        out.weight = visibleHere ? shader::contributionWeight(weightSum, out.target, z) : 0.0f;
+        return out;
+    }
+};
+
+/// The camera path of sample `sampleIndex` of pixel (x, y) up to its first vertex where NEE would run: the
+/// surface there (material kNoIndex if it has none), `path` and `segment` as they arrive at it.
+shader::RestirSurface findSurface(PassContext& c, const PathJob& job, shader::PathState& path, std::uint32_t& segment)
+{
+    shader::RestirSurface surface{};
+    surface.hit.material = kNoIndex;
+    float depth = 0.0f;
+    const TraceRay::Needs needs = c.scene.rayNeeds();
+    for (segment = 0; segment < c.uniforms.depth; ++segment)
+    {
+        HitRecord hit{};
+        ++c.tally.segments;
+        const bool found = c.scene.intersect(TraceRay(Ray{path.origin, path.direction, job.ray.time}, needs), 0.0f,
+                                             kInfinity, hit, job.mediumSeed);
+        shader::HitPayload payload{};
+        payload.material = kNoIndex;
+        if (found)
+        {
+            const SurfaceInteraction si = c.scene.interaction(Ray{path.origin, path.direction, job.ray.time}, hit);
+            payload.position = si.p;
+            payload.material = si.material;
+            payload.normal = si.n;
+            payload.flags = si.medium ? shader::kHitMedium : 0u;
+            payload.uv = si.uv;
+            payload.offsetScale = si.offsetScale;
+            payload.lightSlot = si.light;
+            depth += length(si.p - path.origin);
+        }
+        if (c.shading.resamplesDirectAt(payload, segment, path))
+        {
+            surface.hit = payload;
+            surface.incoming = path.direction;
+            surface.depth = depth;
+            return surface;
+        }
+        shader::ShadowRay shadow{};
+        if (!c.shading.shadePathVertex(path, segment, payload, shadow, false))
+            break; // no shadow ray is pending: NEE runs only where the vertex would be resampled
+    }
+    return surface;
+}
+
+std::uint32_t mediumSeedOf(const shader::RenderUniforms& u, bool media, std::uint32_t x, std::uint32_t y)
+{
+    return media ? shader::mediumPathSeed(u.seed, uvec2(x, y)) : 0u;
+}
+} // namespace
+
+RestirBuffers::RestirBuffers(int w, int h)
+    : surfaces(std::size_t(w) * h), temporal(std::size_t(w) * h, shader::emptyReservoir()),
+      final(std::size_t(w) * h, shader::emptyReservoir()), width(w), height(h)
+{
+    for (shader::RestirSurface& s : surfaces)
+        s.hit.material = kNoIndex;
+}
+
+void restirCandidatesRow(const CpuScene& scene, const shader::RenderUniforms& uniforms, RestirBuffers& buffers, int y,
+                         std::uint32_t sampleIndex, RestirRowTally& tally)
+{
+    PassContext c{scene, Shading(scene, uniforms), uniforms, scene.hasMedia(), tally};
+    const float candidates = float(uniforms.restirCandidates);
+    for (int x = 0; x < buffers.width; ++x)
+    {
+        const std::size_t i = std::size_t(y) * buffers.width + x;
+        const PathJob job = cameraJob(c.shading, c.media, std::uint32_t(x), std::uint32_t(y), sampleIndex);
+        shader::PathState path = shader::startPath(job.ray.origin, job.ray.direction, job.rng);
+        std::uint32_t segment = 0;
+        const shader::RestirSurface last = buffers.surfaces[i];
+        const shader::Reservoir lastReservoir = buffers.final[i];
+        const shader::RestirSurface surface = findSurface(c, job, path, segment);
+        buffers.surfaces[i] = surface;
+        Input inputs[2];
+        inputs[0].vertex = c.shading.restirVertexOf(surface);
+        inputs[0].mediumSeed = mediumSeedOf(uniforms, c.media, x, y);
+        inputs[0].time = job.ray.time;
+        inputs[0].reservoir = shader::emptyReservoir();
+        if (!inputs[0].vertex.valid)
+        {
+            buffers.temporal[i] = inputs[0].reservoir;
+            continue;
+        }
+        // Initial resampling (Alg. 3): M candidates from the render's light selection and sampler.
+        shader::Rng rng = shader::rngForSample(uniforms.seed ^ kCandidateStream, std::uint32_t(i), sampleIndex);
+        shader::Reservoir& r = inputs[0].reservoir;
+        float weightSum = 0.0f;
+        for (std::uint32_t k = 0; k < uniforms.restirCandidates; ++k)
+        {
+            const float uSelect = shader::nextFloat(rng);
+            const vec2 uLight = shader::nextFloat2(rng);
+            const float uTake = shader::nextFloat(rng);
+            std::uint32_t light;
+            vec3 point;
+            float target;
+            const float w = c.shading.restirCandidate(inputs[0].vertex, uSelect, uLight, light, point, target);
+            shader::offerCandidate(r, weightSum, light, point, target, w, uTake);
+        }
+        r.count = candidates;
+        r.weight = shader::contributionWeight(weightSum, r.target, candidates);
+        if (r.weight > 0.0f && !c.visible(inputs[0].vertex, r.point, job.ray.time, inputs[0].mediumSeed))
+            r.weight = 0.0f; // visibility reuse (§4.1)
+        // Temporal reuse (Alg. 5 with Alg. 6's weights): the pixel's last final reservoir, its M capped.
+        int n = 1;
+        if (buffers.history && lastReservoir.count > 0.0f && last.hit.material != kNoIndex)
+        {
+            inputs[1].reservoir = lastReservoir;
+            inputs[1].reservoir.count = std::min(lastReservoir.count, kRestirTemporalCap * candidates);
+            inputs[1].vertex = c.shading.restirVertexOf(last);
+            inputs[1].mediumSeed = inputs[0].mediumSeed;
+            inputs[1].time = c.shading.cameraSampleTime(uvec2(std::uint32_t(x), std::uint32_t(y)), sampleIndex - 1u);
+            n = 2;
+        }
+        buffers.temporal[i] = n == 1 ? r : c.combine(inputs, n, rng);
+    }
+}
+
+void restirShadeRow(const CpuScene& scene, const shader::RenderUniforms& uniforms, RestirBuffers& buffers, int y,
+                    std::uint32_t sampleIndex, vec3* radiance, RestirRowTally& tally)
+{
+    PassContext c{scene, Shading(scene, uniforms), uniforms, scene.hasMedia(), tally};
+    const int k = std::min<int>(int(uniforms.restirSpatial), kMaxInputs - 1);
+    Input inputs[kMaxInputs];
+    const TraceRay::Needs needs = scene.rayNeeds();
+    for (int x = 0; x < buffers.width; ++x)
+    {
+        const std::size_t i = std::size_t(y) * buffers.width + x;
+        const shader::RestirSurface& surface = buffers.surfaces[i];
+        inputs[0].reservoir = buffers.temporal[i];
+        inputs[0].vertex = c.shading.restirVertexOf(surface);
+        inputs[0].mediumSeed = mediumSeedOf(uniforms, c.media, x, y);
+        const PathJob job = cameraJob(c.shading, c.media, std::uint32_t(x), std::uint32_t(y), sampleIndex);
+        inputs[0].time = job.ray.time;
+        shader::Reservoir final = inputs[0].reservoir;
+        if (inputs[0].vertex.valid && k > 0)
+        {
+            // Spatial reuse (Alg. 5's neighbours, Alg. 6's weights): k pixels drawn in a disk, similar ones kept.
+            shader::Rng rng = shader::rngForSample(uniforms.seed ^ kSpatialStream, std::uint32_t(i), sampleIndex);
+            int n = 1;
+            for (int j = 0; j < k; ++j)
+            {
+                const vec2 u = shader::nextFloat2(rng);
+                const float radius = kRestirSpatialRadius * std::sqrt(u.x);
+                const float angle = 2.0f * std::numbers::pi_v<float> * u.y;
+                const int nx = x + int(std::lround(radius * std::cos(angle)));
+                const int ny = y + int(std::lround(radius * std::sin(angle)));
+                if (nx < 0 || ny < 0 || nx >= buffers.width || ny >= buffers.height || (nx == x && ny == y))
+                    continue;
+                const std::size_t ni = std::size_t(ny) * buffers.width + nx;
+                const shader::RestirSurface& other = buffers.surfaces[ni];
+                if (other.hit.material == kNoIndex || buffers.temporal[ni].count <= 0.0f ||
+                    std::abs(other.depth - surface.depth) > kNeighbourMaxDepthRatio * surface.depth)
+                    continue;
+                Input& in = inputs[n];
+                in.vertex = c.shading.restirVertexOf(other);
+                if (dot(in.vertex.ns, inputs[0].vertex.ns) < kNeighbourMinCos)
+                    continue;
+                in.reservoir = buffers.temporal[ni];
+                in.mediumSeed = mediumSeedOf(uniforms, c.media, std::uint32_t(nx), std::uint32_t(ny));
+                in.time = c.shading.cameraSampleTime(uvec2(std::uint32_t(nx), std::uint32_t(ny)), sampleIndex);
+                ++n;
+            }
+            if (n > 1)
+                final = c.combine(inputs, n, rng);
+        }
+        buffers.final[i] = final;
+
+        // The camera path again, from its first segment: its numbers find the same vertex, whose direct light is
+        // f(y) W of the final reservoir; nee-mis's at every later vertex.
+        shader::PathState path = shader::startPath(job.ray.origin, job.ray.direction, job.rng);
+        bool resampled = false;
+        for (std::uint32_t segment = 0; segment < uniforms.depth; ++segment)
+        {
+            HitRecord hit{};
+            ++tally.segments;
+            const bool found = scene.intersect(TraceRay(Ray{path.origin, path.direction, job.ray.time}, needs), 0.0f,
+                                               kInfinity, hit, job.mediumSeed);
+            shader::HitPayload payload{};
+            payload.material = kNoIndex;
+            if (found)
+            {
+                const SurfaceInteraction si = scene.interaction(Ray{path.origin, path.direction, job.ray.time}, hit);
+                payload.position = si.p;
+                payload.material = si.material;
+                payload.normal = si.n;
+                payload.flags = si.medium ? shader::kHitMedium : 0u;
+                payload.uv = si.uv;
+                payload.offsetScale = si.offsetScale;
+                payload.lightSlot = si.light;
+            }
+            const bool here = !resampled && c.shading.resamplesDirectAt(payload, segment, path);
+            vec3 direct(0.0f);
+            if (here && final.weight > 0.0f)
+                direct = path.beta * c.shading.restirIntegrand(inputs[0].vertex, final.light, final.point) * final.weight;
+            shader::ShadowRay shadow{};
+            const bool goesOn = c.shading.shadePathVertex(path, segment, payload, shadow, here);
+            path.radiance += direct;
+            resampled = resampled || here;
+            if (shadow.pending)
+            {
+                ++tally.segments;
+                if (!scene.occluded(TraceRay(Ray{shadow.origin, shadow.direction, job.ray.time}, needs), 0.0f,
+                                    shadow.distance, job.mediumSeed))
+                    path.radiance += shadow.contribution;
+            }
+            if (!goesOn)
+                break;
+        }
+        radiance[x] = path.radiance;
+    }
+}
+} // namespace rt::cpu

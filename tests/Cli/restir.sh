@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Usage: restir.sh APP cpu|gpu
+# --estimator restir-di as a user runs it (issue 36). CPU: a render names its combination in the summary line and
+# the stats (with the reservoirs' memory), and --compare ranks it beside nee-mis with its label. GPU: refused in
+# one line naming what to use instead, with status 2 and no file written, until the GPU's passes exist.
+set -eu
+app=$1
+kind=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+if [ "$kind" = gpu ]; then
+    set +e
+    "$app" --headless --quiet --scene cornell-box-lights --width 16 --spp 1 --estimator restir-di --output "$work/a.png" \
+        >"$work/out" 2>"$work/err"
+    status=$?
+    set -e
+    [ "$status" -eq 2 ] || { echo "expected status 2, got $status"; cat "$work/err"; exit 1; }
+    [ "$(grep -c . "$work/err")" -eq 1 ] || { echo "expected one error line:"; cat "$work/err"; exit 1; }
+    grep -q "restir-di" "$work/err" && grep -q "single or multi" "$work/err" || { cat "$work/err"; exit 1; }
+    [ ! -e "$work/a.png" ] || { echo "an image was written"; exit 1; }
+    exit 0
+fi
+
+line=$("$app" --headless --quiet --scene lamp-room --count 64 --width 24 --spp 3 --estimator restir-di \
+    --restir-biased on --restir-candidates 4 --output "$work/a.png" --stats "$work/a.json")
+echo "$line" | grep -q "restir-di-biased" || { echo "summary without the combination: $line"; exit 1; }
+/usr/bin/python3 - "$work/a.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+r = d["restir"]
+assert r["combination"] == "biased", r
+assert r["reservoirs_bytes_per_pixel"] <= 64, r
+assert r["reservoirs_bytes"] == r["reservoirs_bytes_per_pixel"] * d["width"] * d["height"], r
+assert d["settings"]["restir_candidates"] == 4 and d["settings"]["restir_biased"] is True, d["settings"]
+assert d["true_spp"] == 3 and d["nan_samples"] == 0, d
+PY
+
+"$app" --headless --quiet --scene cornell-box-lights --width 16 --depth 4 --compare --engines multi \
+    --estimators nee-mis,restir-di --spp-list 2,4 --reference-spp 64 --reference-cache off --rounds 1 \
+    --csv "$work/c.csv" >"$work/table"
+/usr/bin/python3 - "$work/c.csv" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert sorted(r["strategy"].split()[0] for r in rows) == ["nee-mis", "nee-mis", "restir-di", "restir-di"], rows
+for r in rows:
+    assert float(r["relmse"]) > 0, r
+PY
