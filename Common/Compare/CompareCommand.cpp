@@ -5,6 +5,7 @@
 #include <optional>
 
 #include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
 
 #include "Cli/HeadlessRun.h"
 #include "Cli/ValueParsing.h"
@@ -85,7 +86,8 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
                    "this many independent seeds (--seed, --seed + 1, ...), 1 to 100; the tables and the JSON give the "
                    "mean relMSE with its 95 % Student-t interval and the median time, --equal-time each strategy's "
                    "efficiency against the best with the interval of the ratio (one that holds 1 is marked no "
-                   "different); the CSV and --images keep every seed's render")
+                   "different); the CSV and --images keep every seed's render (default: 1, or 4 where restir-di is "
+                   "compared: its pixels and iterations are correlated, so one render's relMSE tells little)")
         ->check(CLI::Range(1, 100))
         ->needs(compareFlag);
     app.add_option("--rounds", flags.rounds,
@@ -136,6 +138,17 @@ int runCompare(const CompareFlags& flags, const CommonOptions& options, const En
     c.grid = options.output;
     c.images = flags.images;
     c.seeds = flags.seeds;
+    if (c.seeds == 0)
+    {
+        const bool restir = std::any_of(c.strategies.begin(), c.strategies.end(), [](const Strategy& x) {
+            return x.settings.estimator == Estimator::RestirDi;
+        });
+        c.seeds = restir ? kRestirSeeds : 1;
+        if (restir)
+            spdlog::info("--seeds {}: restir-di's pixels and iterations are correlated, so every row is the mean of "
+                         "{} independent renders (give --seeds to change it)",
+                         kRestirSeeds, kRestirSeeds);
+    }
     c.rounds = flags.rounds;
     for (ErrorMetric m : {ErrorMetric::RelMse, ErrorMetric::TrimmedRelMse, ErrorMetric::Mape, ErrorMetric::Flip})
         if (flags.metric == toString(m))

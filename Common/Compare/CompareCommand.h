@@ -13,6 +13,9 @@
 
 namespace rt::compare
 {
+/// --compare's seeds per row where a strategy is restir-di and --seeds is not given.
+inline constexpr int kRestirSeeds = 4;
+
 /// What the --compare flags set.
 struct CompareFlags
 {
@@ -28,7 +31,7 @@ struct CompareFlags
     double equalTimeMs = 0.0;
     std::string referenceCache;
     std::string images;
-    int seeds = 1;
+    int seeds = 0; // 0: 1, or kRestirSeeds where a strategy is restir-di
     int rounds = 3;
     std::string metric = "relmse";
 };

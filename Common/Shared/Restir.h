@@ -17,6 +17,13 @@
 
 RT_SHADER_NAMESPACE_BEGIN
 
+/// Spatial neighbours are drawn in a disk of this radius in pixels (Bitterli et al. 2020, §6).
+RT_CONST(float, kRestirSpatialRadius, 30.0f)
+/// The temporal input's M is capped at this multiple of the candidates per iteration (Bitterli et al. 2020, §6).
+RT_CONST(float, kRestirTemporalCap, 20.0f)
+/// Neighbours whose shading normals differ by more than 25 degrees are not reused: cos 25 degrees.
+RT_CONST(float, kRestirMinNormalCos, 0.906307787f)
+
 /// The shading point of a RestirSurface (Shared/Shading/Restir.h restirVertexOf): what its target function and
 /// shadow rays read. Its BSDF is a diffuse lobe of `albedo` about ns (`phase`: the isotropic phase function) or,
 /// when `microfacet`, `bsdf` seen from wo; NEE's (Shading/DirectLighting.h) in every respect.
@@ -74,6 +81,35 @@ RT_FN bool offerCandidate(RT_INOUT(Reservoir) r, RT_INOUT(float) weightSum, uint
 RT_FN float contributionWeight(float weightSum, float target, float count)
 {
     return target > 0.0f && count > 0.0f ? weightSum / (target * count) : 0.0f;
+}
+
+/// A combination of reservoirs in progress at one vertex (Bitterli et al. 2020, Alg. 6; Alg. 4 when biased): the
+/// inputs are offered one by one (Shading/Restir.h offerInput), then each says whether its domain holds the chosen
+/// point (inputDomainCount), then finishCombination gives the reservoir.
+struct RestirCombination
+{
+    Reservoir out; // the chosen sample, its target at the combining vertex; count: the inputs' M summed
+    float weightSum; // sum of M_i p-hat(y_i) W_i
+    int chosen; // the input the sample came from, -1: none
+};
+
+RT_FN RestirCombination beginCombination()
+{
+    RestirCombination c;
+    c.out = emptyReservoir();
+    c.weightSum = 0.0f;
+    c.chosen = -1;
+    return c;
+}
+
+/// The combination's reservoir: W = weightSum / (z p-hat(y)) where z is the M of the inputs whose domain holds y
+/// (Alg. 6), or every input's M (Alg. 4, `biased`); 0 when y is not visible from the combining vertex, which keeps
+/// the stored reservoir's domain where its vertex sees its points (docs/RESTIR.md).
+RT_FN Reservoir finishCombination(RT_IN(RestirCombination) c, float z, bool visibleHere, bool biased)
+{
+    Reservoir r = c.out;
+    r.weight = c.chosen >= 0 && visibleHere ? contributionWeight(c.weightSum, r.target, biased ? r.count : z) : 0.0f;
+    return r;
 }
 
 RT_SHADER_NAMESPACE_END

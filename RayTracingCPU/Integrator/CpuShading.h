@@ -56,7 +56,7 @@ public:
         : materials(scene.source().materials.data()), textures(scene.source().textures.data()),
           lights(scene.source().lights.data()), mixtureLights(lights), lightAlias(scene.lightAlias()),
           lightBvh(scene.lightBvh()), lightBvhLeaves(scene.lightBvhLeaves()), perlinTables(scene.perlinTables()),
-          uniforms(renderUniforms), m_images(scene.source().images.data())
+          uniforms(renderUniforms), m_images(scene.source().images.data()), m_scene(&scene)
     {
     }
 
@@ -112,6 +112,17 @@ public:
         return {srgb8ToLinear(texel[0]), srgb8ToLinear(texel[1]), srgb8ToLinear(texel[2])};
     }
 
+    /// restir-di's visibility test (Shared/Shading/Restir.h): the shadow ray from v to `point` at shutter time
+    /// `time` through media with `mediumSeed`, counted in restirShadowRays.
+    bool restirVisible(const RestirVertex& v, vec3 point, float time, uint mediumSeed)
+    {
+        const ShadowRay s = restirShadowRay(v, point);
+        ++restirShadowRays;
+        return !m_scene->occluded(cpu::TraceRay(rt::Ray{s.origin, s.direction, time}, m_scene->rayNeeds()), 0.0f,
+                                  s.distance, mediumSeed);
+    }
+    std::uint64_t restirShadowRays = 0;
+
 #include "Shared/Shading/Background.h"
 #include "Shared/Shading/Camera.h"
 #include "Shared/Shading/PathVertex.h"
@@ -119,6 +130,7 @@ public:
 
 private:
     const ImageData* m_images;
+    const cpu::CpuScene* m_scene;
 };
 } // namespace rt::shader
 

@@ -1,8 +1,6 @@
 #include "Integrator/RestirPasses.h"
 
 #include <algorithm>
-#include <cmath>
-#include <numbers>
 
 #include "Integrator/PathIntegrator.h"
 #include "Shared/Medium.h"
@@ -15,9 +13,6 @@ namespace
 // its vertex, are the same in both passes and the same as nee-mis's.
 constexpr std::uint32_t kCandidateStream = 0x52535431u;
 constexpr std::uint32_t kSpatialStream = 0x52535432u;
-/// Neighbours whose shading normals differ by more than 25 degrees are not reused (Bitterli et al. 2020, §6).
-const float kNeighbourMinCos = std::cos(25.0f * std::numbers::pi_v<float> / 180.0f);
-constexpr float kNeighbourMaxDepthRatio = 0.1f;
 /// Spatial reuse's inputs at most: the pixel's own and its neighbours.
 constexpr int kMaxInputs = 1 + 64;
 
@@ -41,65 +36,34 @@ struct PassContext
     Shading shading;
     const shader::RenderUniforms& uniforms;
     bool media;
-    RestirRowTally& tally;
 
-    bool visible(const shader::RestirVertex& v, const vec3& point, float time, std::uint32_t mediumSeed)
-    {
-        const shader::ShadowRay s = shading.restirShadowRay(v, point);
-        ++tally.segments;
-        return !scene.occluded(TraceRay(Ray{s.origin, s.direction, time}, scene.rayNeeds()), 0.0f, s.distance,
-                               mediumSeed);
-    }
-
-    /// Combines inputs[0, n) at inputs[0]'s vertex, whose target input 0's reservoir carries (Bitterli et al.
-    /// 2020, Alg. 6; Alg. 4 when uniforms.restirBiased): the chosen point y with W = (sum of the weights M_i
-    /// p-hat(y_i) W_i) / (Z p-hat(y)), then 0 if y is occluded from the vertex, and M = the inputs' M summed.
+    /// Combines inputs[0, n) at inputs[0]'s vertex (Bitterli et al. 2020, Alg. 6; Alg. 4 when
+    /// uniforms.restirBiased), the shared steps of Shading/Restir.h: the chosen point's W, 0 if it is occluded
+    /// from the vertex, and M = the inputs' M summed.
     shader::Reservoir combine(const Input* inputs, int n, shader::Rng& rng)
     {
-        shader::Reservoir out = shader::emptyReservoir();
-        const shader::RestirVertex& q = inputs[0].vertex;
-        float weightSum = 0.0f;
-        float countSum = 0.0f;
-        int chosen = -1;
+        shader::RestirCombination c = shader::beginCombination();
         for (int i = 0; i < n; ++i)
-        {
-            const shader::Reservoir& r = inputs[i].reservoir;
-            countSum += r.count;
-            const float u = shader::nextFloat(rng);
-            if (!(r.weight > 0.0f))
-                continue;
-            const float target = i == 0 ? r.target : luminance(shading.restirIntegrand(q, r.light, r.point));
-            if (shader::offerCandidate(out, weightSum, r.light, r.point, target, r.count * target * r.weight, u))
-                chosen = i;
-        }
-        out.count = countSum;
-        if (chosen < 0)
-            return out;
+            shading.offerInput(c, inputs[0].vertex, inputs[i].reservoir, i == 0, i, shader::nextFloat(rng));
+        if (c.chosen < 0)
+            return shader::finishCombination(c, 0.0f, false, false);
         // Input 0's domain test is the shading's visibility: p-hat(y) > 0 there, y having been chosen.
-        const bool visibleHere = chosen == 0 || visible(q, out.point, inputs[0].time, inputs[0].mediumSeed);
-        float z = countSum;
-        if (uniforms.restirBiased == 0u)
-        {
-            z = visibleHere ? inputs[0].reservoir.count : 0.0f;
+        const bool visibleHere =
+            c.chosen == 0 || shading.restirVisible(inputs[0].vertex, c.out.point, inputs[0].time, inputs[0].mediumSeed);
+        const bool biased = uniforms.restirBiased != 0u;
+        float z = visibleHere ? inputs[0].reservoir.count : 0.0f;
+        if (!biased)
             for (int i = 1; i < n; ++i)
-            {
-                const Input& in = inputs[i];
-                if (i == chosen)
-                    z += in.reservoir.count; // its own point: visible, or its W would be 0
-                else if (in.reservoir.count > 0.0f &&
-                         luminance(shading.restirIntegrand(in.vertex, out.light, out.point)) > 0.0f &&
-                         visible(in.vertex, out.point, in.time, in.mediumSeed))
-                    z += in.reservoir.count;
-            }
-        }
-        out.weight = visibleHere ? shader::contributionWeight(weightSum, out.target, z) : 0.0f;
-        return out;
+                z += shading.inputDomainCount(c, inputs[i].vertex, inputs[i].reservoir, i, inputs[i].time,
+                                              inputs[i].mediumSeed);
+        return shader::finishCombination(c, z, visibleHere, biased);
     }
 };
 
 /// The camera path of sample `sampleIndex` of pixel (x, y) up to its first vertex where NEE would run: the
 /// surface there (material kNoIndex if it has none), `path` and `segment` as they arrive at it.
-shader::RestirSurface findSurface(PassContext& c, const PathJob& job, shader::PathState& path, std::uint32_t& segment)
+shader::RestirSurface findSurface(PassContext& c, const PathJob& job, shader::PathState& path, std::uint32_t& segment,
+                                  RestirRowTally& tally)
 {
     shader::RestirSurface surface{};
     surface.hit.material = kNoIndex;
@@ -108,7 +72,7 @@ shader::RestirSurface findSurface(PassContext& c, const PathJob& job, shader::Pa
     for (segment = 0; segment < c.uniforms.depth; ++segment)
     {
         HitRecord hit{};
-        ++c.tally.segments;
+        ++tally.segments;
         const bool found = c.scene.intersect(TraceRay(Ray{path.origin, path.direction, job.ray.time}, needs), 0.0f,
                                              kInfinity, hit, job.mediumSeed);
         shader::HitPayload payload{};
@@ -156,7 +120,7 @@ RestirBuffers::RestirBuffers(int w, int h)
 void restirCandidatesRow(const CpuScene& scene, const shader::RenderUniforms& uniforms, RestirBuffers& buffers, int y,
                          std::uint32_t sampleIndex, RestirRowTally& tally)
 {
-    PassContext c{scene, Shading(scene, uniforms), uniforms, scene.hasMedia(), tally};
+    PassContext c{scene, Shading(scene, uniforms), uniforms, scene.hasMedia()};
     const float candidates = float(uniforms.restirCandidates);
     for (int x = 0; x < buffers.width; ++x)
     {
@@ -166,7 +130,7 @@ void restirCandidatesRow(const CpuScene& scene, const shader::RenderUniforms& un
         std::uint32_t segment = 0;
         const shader::RestirSurface last = buffers.surfaces[i];
         const shader::Reservoir lastReservoir = buffers.final[i];
-        const shader::RestirSurface surface = findSurface(c, job, path, segment);
+        const shader::RestirSurface surface = findSurface(c, job, path, segment, tally);
         buffers.surfaces[i] = surface;
         Input inputs[2];
         inputs[0].vertex = c.shading.restirVertexOf(surface);
@@ -195,14 +159,14 @@ void restirCandidatesRow(const CpuScene& scene, const shader::RenderUniforms& un
         }
         r.count = candidates;
         r.weight = shader::contributionWeight(weightSum, r.target, candidates);
-        if (r.weight > 0.0f && !c.visible(inputs[0].vertex, r.point, job.ray.time, inputs[0].mediumSeed))
+        if (r.weight > 0.0f && !c.shading.restirVisible(inputs[0].vertex, r.point, job.ray.time, inputs[0].mediumSeed))
             r.weight = 0.0f; // visibility reuse (§4.1)
         // Temporal reuse (Alg. 5 with Alg. 6's weights): the pixel's last final reservoir, its M capped.
         int n = 1;
         if (buffers.history && lastReservoir.count > 0.0f && last.hit.material != kNoIndex)
         {
             inputs[1].reservoir = lastReservoir;
-            inputs[1].reservoir.count = std::min(lastReservoir.count, kRestirTemporalCap * candidates);
+            inputs[1].reservoir.count = std::min(lastReservoir.count, shader::kRestirTemporalCap * candidates);
             inputs[1].vertex = c.shading.restirVertexOf(last);
             inputs[1].mediumSeed = inputs[0].mediumSeed;
             inputs[1].time = c.shading.cameraSampleTime(uvec2(std::uint32_t(x), std::uint32_t(y)), sampleIndex - 1u);
@@ -210,12 +174,13 @@ void restirCandidatesRow(const CpuScene& scene, const shader::RenderUniforms& un
         }
         buffers.temporal[i] = n == 1 ? r : c.combine(inputs, n, rng);
     }
+    tally.segments += c.shading.restirShadowRays;
 }
 
 void restirShadeRow(const CpuScene& scene, const shader::RenderUniforms& uniforms, RestirBuffers& buffers, int y,
                     std::uint32_t sampleIndex, vec3* radiance, RestirRowTally& tally)
 {
-    PassContext c{scene, Shading(scene, uniforms), uniforms, scene.hasMedia(), tally};
+    PassContext c{scene, Shading(scene, uniforms), uniforms, scene.hasMedia()};
     const int k = std::min<int>(int(uniforms.restirSpatial), kMaxInputs - 1);
     Input inputs[kMaxInputs];
     const TraceRay::Needs needs = scene.rayNeeds();
@@ -236,25 +201,21 @@ void restirShadeRow(const CpuScene& scene, const shader::RenderUniforms& uniform
             int n = 1;
             for (int j = 0; j < k; ++j)
             {
-                const vec2 u = shader::nextFloat2(rng);
-                const float radius = kRestirSpatialRadius * std::sqrt(u.x);
-                const float angle = 2.0f * std::numbers::pi_v<float> * u.y;
-                const int nx = x + int(std::lround(radius * std::cos(angle)));
-                const int ny = y + int(std::lround(radius * std::sin(angle)));
-                if (nx < 0 || ny < 0 || nx >= buffers.width || ny >= buffers.height || (nx == x && ny == y))
+                uvec2 neighbour;
+                if (!c.shading.restirNeighbour(uvec2(std::uint32_t(x), std::uint32_t(y)), shader::nextFloat2(rng),
+                                               std::uint32_t(buffers.width), std::uint32_t(buffers.height), neighbour))
                     continue;
-                const std::size_t ni = std::size_t(ny) * buffers.width + nx;
+                const std::size_t ni = std::size_t(neighbour.y) * buffers.width + neighbour.x;
                 const shader::RestirSurface& other = buffers.surfaces[ni];
-                if (other.hit.material == kNoIndex || buffers.temporal[ni].count <= 0.0f ||
-                    std::abs(other.depth - surface.depth) > kNeighbourMaxDepthRatio * surface.depth)
+                if (other.hit.material == kNoIndex || !(buffers.temporal[ni].count > 0.0f))
                     continue;
                 Input& in = inputs[n];
                 in.vertex = c.shading.restirVertexOf(other);
-                if (dot(in.vertex.ns, inputs[0].vertex.ns) < kNeighbourMinCos)
+                if (!c.shading.restirSimilar(surface, inputs[0].vertex, other, in.vertex))
                     continue;
                 in.reservoir = buffers.temporal[ni];
-                in.mediumSeed = mediumSeedOf(uniforms, c.media, std::uint32_t(nx), std::uint32_t(ny));
-                in.time = c.shading.cameraSampleTime(uvec2(std::uint32_t(nx), std::uint32_t(ny)), sampleIndex);
+                in.mediumSeed = mediumSeedOf(uniforms, c.media, neighbour.x, neighbour.y);
+                in.time = c.shading.cameraSampleTime(neighbour, sampleIndex);
                 ++n;
             }
             if (n > 1)
@@ -305,5 +266,6 @@ void restirShadeRow(const CpuScene& scene, const shader::RenderUniforms& uniform
         }
         radiance[x] = path.radiance;
     }
+    tally.segments += c.shading.restirShadowRays;
 }
 } // namespace rt::cpu

@@ -19,14 +19,10 @@
 
 #include "Engine/CpuScene.h"
 #include "Shared/HostDevice.h"
+#include "Shared/Restir.h"
 
 namespace rt::cpu
 {
-/// Where neighbours of spatial reuse are drawn: a disk of this radius in pixels (Bitterli et al. 2020, §6).
-inline constexpr float kRestirSpatialRadius = 30.0f;
-/// The temporal input's M is capped at this multiple of the candidates per iteration (Bitterli et al. 2020, §6).
-inline constexpr float kRestirTemporalCap = 20.0f;
-
 /// restir-di's buffers for one frame: a surface and two reservoirs per pixel, kept across iterations.
 struct RestirBuffers
 {

@@ -7,7 +7,8 @@
 // Candidates come from the render's light selection and sampler, so their area pdf is
 // p(y) = pmf pdf_omega |cos theta_y| / |y - x|^2 and their resampling weight p-hat / p needs no distance.
 // The engines' passes: candidates and temporal reuse, then spatial reuse and shading (RayTracingCPU/Integrator/
-// RestirPasses.cpp on the CPU).
+// RestirPasses.cpp on the CPU). A host provides restirVisible(v, point, time, mediumSeed): whether the shadow ray
+// restirShadowRay(v, point) of a camera sample with that shutter time and medium seed reaches the point.
 #ifndef RT_SHADING_RESTIR_H
 #define RT_SHADING_RESTIR_H
 
@@ -17,6 +18,7 @@
 #include "Shared/LightSampling.h"
 #include "Shared/LightSelection.h"
 #include "Shared/PathState.h"
+#include "Shared/PreciseMath.h"
 #include "Shared/RayOffset.h"
 #include "Shared/Restir.h"
 #include "Shared/Shading/DirectLighting.h"
@@ -157,6 +159,55 @@ RT_FN ShadowRay restirShadowRay(RT_IN(RestirVertex) v, vec3 point)
         shadow.origin = offsetRayOrigin(v.position, dot(shadow.direction, v.normal) > 0.0f ? v.normal : -v.normal,
                                         v.offsetScale);
     return shadow;
+}
+
+/// Offers input `index` of a combination at vertex q (Alg. 6's loop): its reservoir r (resampled at its own
+/// vertex) with weight M p-hat_q(y) W, p-hat_q(y) being r.target itself for q's own reservoir (`own`). u in [0, 1)
+/// decides whether it replaces the sample so far; every input draws its u, taken or not.
+RT_FN void offerInput(RT_INOUT(RestirCombination) c, RT_IN(RestirVertex) q, RT_IN(Reservoir) r, bool own, int index,
+                      float u)
+{
+    c.out.count += r.count;
+    if (!(r.weight > 0.0f))
+        return;
+    const float target = own ? r.target : luminance(restirIntegrand(q, r.light, r.point));
+    if (offerCandidate(c.out, c.weightSum, r.light, r.point, target, r.count * target * r.weight, u))
+        c.chosen = index;
+}
+
+/// Input `index`'s M if its domain holds the chosen point, else 0 (Alg. 6's Z, one input at a time; not for the
+/// combining vertex's own input, whose test is the visibility the shading needs). Its domain is where its own
+/// vertex v has a positive target and sees the point: a shadow ray from v with that vertex's camera sample's
+/// `time` and `mediumSeed`, traced by the host's restirVisible. The chosen input needs none: its W > 0 says so.
+RT_FN float inputDomainCount(RT_IN(RestirCombination) c, RT_IN(RestirVertex) v, RT_IN(Reservoir) r, int index,
+                             float time, uint mediumSeed)
+{
+    if (index == c.chosen)
+        return r.count;
+    if (!(r.count > 0.0f) || !(luminance(restirIntegrand(v, c.out.light, c.out.point)) > 0.0f))
+        return 0.0f;
+    return restirVisible(v, c.out.point, time, mediumSeed) ? r.count : 0.0f;
+}
+
+/// Whether a neighbour's vertex b may be reused at vertex a (Bitterli et al. 2020, §6): both exist, their shading
+/// normals within 25 degrees and their camera-path lengths within 10 %. A heuristic for variance only: the
+/// unbiased combination stays unbiased whatever it keeps.
+RT_FN bool restirSimilar(RT_IN(RestirSurface) a, RT_IN(RestirVertex) va, RT_IN(RestirSurface) b, RT_IN(RestirVertex) vb)
+{
+    return va.valid && vb.valid && abs(b.depth - a.depth) <= 0.1f * a.depth && dot(va.ns, vb.ns) >= kRestirMinNormalCos;
+}
+
+/// The pixel a spatial neighbour is drawn at, uniformly in the disk of radius kRestirSpatialRadius about `pixel`,
+/// from u in [0, 1)^2; false when it falls outside the width x height image or on the pixel itself.
+RT_FN bool restirNeighbour(uvec2 pixel, vec2 u, uint width, uint height, RT_OUT(uvec2) neighbour)
+{
+    const float radius = kRestirSpatialRadius * sqrt(u.x);
+    const float angle = 2.0f * kPi * u.y;
+    const int x = int(pixel.x) + int(floor(radius * preciseCos(angle) + 0.5f));
+    const int y = int(pixel.y) + int(floor(radius * preciseSin(angle) + 0.5f));
+    const bool inside = x >= 0 && y >= 0 && x < int(width) && y < int(height);
+    neighbour = inside ? uvec2(uint(x), uint(y)) : pixel;
+    return inside && (x != int(pixel.x) || y != int(pixel.y));
 }
 
 #endif
