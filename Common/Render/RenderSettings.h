@@ -43,7 +43,8 @@ struct RenderSettings
     LightSelection lightSelection = LightSelection::Bvh; // how NEE picks the light it samples
     int restirCandidates = 32; // restir-di: candidates per pixel and iteration (Bitterli et al. 2020's M)
     int restirSpatial = 5; // restir-di: neighbours of spatial reuse per pixel and iteration
-    bool restirBiased = false; // restir-di: the biased combination (Alg. 4) instead of the unbiased (Alg. 6)
+    bool restirBiased = false; // restir-di: the biased combination (Alg. 4) instead of the unbiased one
+    int restirTemporalCap = 20; // restir-di: temporal reuse's M cap, in multiples of restirCandidates (0: no reuse)
     bool russianRoulette = true; // paths end by Russian roulette from their third segment (Shared/RussianRoulette.h)
     bool unidirectionalLight = true; // emitters emit from their front side only
     std::uint32_t seed = 0;

@@ -265,8 +265,20 @@ std::vector<Setting> makeTable()
             .label = "ReSTIR biased",
             .help = "restir-di: on: the biased combination (1 / the inputs' summed M, Bitterli et al. 2020 Alg. 4), "
                     "without the shadow rays that find which inputs could have produced the chosen point; off: the "
-                    "unbiased one (Alg. 6)",
+                    "unbiased one (pairwise MIS over targets with visibility: docs/RESTIR.md)",
             .tooltip = "restir-di: on: cheaper, biased reuse (labelled biased in every output); off: unbiased",
+            .usedBy = &usesRestir,
+        }),
+        field<&RenderSettings::restirTemporalCap, &shader::RenderUniforms::restirTemporalCap>({
+            .name = "restir-temporal-cap",
+            .jsonKey = "restir_temporal_cap",
+            .label = "ReSTIR history",
+            .help = "restir-di: temporal reuse's cap on the last iteration's M, in multiples of --restir-candidates "
+                    "(Bitterli et al. 2020 recommend 20); 0 turns temporal reuse off. A long history lowers one "
+                    "iteration's error but correlates the iterations a render adds up (docs/RESTIR.md), 0 to 1000",
+            .tooltip = "restir-di: how much of the last iterations a pixel's reservoir keeps (x candidates); 0: none",
+            .minimum = 0,
+            .maximum = 1000,
             .usedBy = &usesRestir,
         }),
         field<&RenderSettings::sampling, &shader::RenderUniforms::sampling>({

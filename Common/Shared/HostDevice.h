@@ -247,6 +247,10 @@ struct RenderUniforms
     uint restirCandidates; // restir-di: light samples per pixel and iteration (M of Bitterli et al. 2020)
     uint restirSpatial; // restir-di: neighbours of spatial reuse per pixel and iteration (k)
     uint restirBiased; // restir-di: 1: the biased combination (1 / sum of M), without the neighbours' shadow rays
+    uint restirTemporalCap; // restir-di: the last iteration's M capped at this many times restirCandidates; 0: none
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
 
 /// What a traced path ray brings back to the path vertex (Shared/Shading/PathVertex.h): the GPU's payload at
@@ -561,7 +565,7 @@ static_assert(sizeof(PreviewPushConstants) == 80 && offsetof(PreviewPushConstant
 
 #ifdef __cplusplus
 static_assert(sizeof(PerlinData) == 256 * 12 + 3 * 256 * 4);
-static_assert(sizeof(RenderUniforms) == 176);
+static_assert(sizeof(RenderUniforms) == 192);
 static_assert(offsetof(RenderUniforms, background0) == 96);
 static_assert(offsetof(RenderUniforms, sampling) == 128);
 static_assert(sizeof(HitPayload) == 48);

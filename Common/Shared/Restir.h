@@ -1,7 +1,7 @@
 // restir-di's reservoirs and the shading point they are resampled for, written once for both engines
 // (Shared/ShaderLang.h): weighted reservoir sampling (Bitterli, Wyman, Pharr, Shirley, Lefohn & Jarosz 2020,
 // "Spatiotemporal reservoir resampling for real-time ray tracing with dynamic direct lighting", ACM TOG 39(4),
-// §3, Alg. 2) and the combination of reservoirs (§4, Alg. 4 and, unbiased, Alg. 6). What reads the scene (the
+// §3, Alg. 2) and their combination (unbiased: GRIS with pairwise MIS; biased: Alg. 4). What reads the scene (the
 // target function, candidates, shadow rays) is Shared/Shading/Restir.h; the passes are each engine's own.
 //
 // Every reservoir's W is an unbiased contribution weight in the area measure of the light point y: E[g(y) W] is
@@ -19,8 +19,6 @@ RT_SHADER_NAMESPACE_BEGIN
 
 /// Spatial neighbours are drawn in a disk of this radius in pixels (Bitterli et al. 2020, §6).
 RT_CONST(float, kRestirSpatialRadius, 30.0f)
-/// The temporal input's M is capped at this multiple of the candidates per iteration (Bitterli et al. 2020, §6).
-RT_CONST(float, kRestirTemporalCap, 20.0f)
 /// Neighbours whose shading normals differ by more than 25 degrees are not reused: cos 25 degrees.
 RT_CONST(float, kRestirMinNormalCos, 0.906307787f)
 
@@ -75,7 +73,7 @@ RT_FN bool offerCandidate(RT_INOUT(Reservoir) r, RT_INOUT(float) weightSum, uint
 }
 
 /// W of a combination whose weights sum to weightSum and whose chosen sample has target `target` at the combining
-/// vertex, normalised by `count` (Alg. 6's Z: the M of the inputs whose domain holds the sample; Alg. 4's sum of
+/// vertex, normalised by `count` (1 after MIS weights; Alg. 4's sum of
 /// every input's M in the biased combination; the candidates' number M for plain RIS, Alg. 2, whose weights
 /// are then p-hat / p). 0 where nothing was chosen.
 RT_FN float contributionWeight(float weightSum, float target, float count)
@@ -83,13 +81,13 @@ RT_FN float contributionWeight(float weightSum, float target, float count)
     return target > 0.0f && count > 0.0f ? weightSum / (target * count) : 0.0f;
 }
 
-/// A combination of reservoirs in progress at one vertex (Bitterli et al. 2020, Alg. 6; Alg. 4 when biased): the
-/// inputs are offered one by one (Shading/Restir.h offerInput), then each says whether its domain holds the chosen
-/// point (inputDomainCount), then finishCombination gives the reservoir.
+/// A combination of reservoirs in progress at one vertex q (GRIS, Lin et al. 2022, §4-5: each input offered with
+/// resampling weight m_i(y_i) p-hat_q(y_i) W_i, then W = the weights' sum / p-hat_q(y)): offerInput for each input
+/// in turn, then finishCombination.
 struct RestirCombination
 {
-    Reservoir out; // the chosen sample, its target at the combining vertex; count: the inputs' M summed
-    float weightSum; // sum of M_i p-hat(y_i) W_i
+    Reservoir out; // the chosen sample, its target at q; count: the inputs' M summed
+    float weightSum;
     int chosen; // the input the sample came from, -1: none
 };
 
@@ -102,14 +100,49 @@ RT_FN RestirCombination beginCombination()
     return c;
 }
 
-/// The combination's reservoir: W = weightSum / (z p-hat(y)) where z is the M of the inputs whose domain holds y
-/// (Alg. 6), or every input's M (Alg. 4, `biased`); 0 when y is not visible from the combining vertex, which keeps
-/// the stored reservoir's domain where its vertex sees its points (docs/RESTIR.md).
-RT_FN Reservoir finishCombination(RT_IN(RestirCombination) c, float z, bool visibleHere, bool biased)
+/// Offers input `index`, reservoir r, whose point has target `targetHere` at q (0 where q cannot use it), with MIS
+/// weight `mis` (or its M, in the biased combination); u in [0, 1) decides whether it replaces the sample so far.
+RT_FN void offerInput(RT_INOUT(RestirCombination) c, RT_IN(Reservoir) r, float targetHere, float mis, int index, float u)
+{
+    c.out.count += r.count;
+    if (offerCandidate(c.out, c.weightSum, r.light, r.point, targetHere, mis * targetHere * r.weight, u))
+        c.chosen = index;
+}
+
+/// The combination's reservoir: W = weightSum / (p-hat_q(y) normalisation), normalisation 1 after MIS weights,
+/// the inputs' summed M after the biased combination's (Bitterli et al. 2020, Alg. 4).
+RT_FN Reservoir finishCombination(RT_IN(RestirCombination) c, float normalisation)
 {
     Reservoir r = c.out;
-    r.weight = c.chosen >= 0 && visibleHere ? contributionWeight(c.weightSum, r.target, biased ? r.count : z) : 0.0f;
+    r.weight = c.chosen >= 0 ? contributionWeight(c.weightSum, r.target, normalisation) : 0.0f;
     return r;
+}
+
+// Pairwise MIS (Bitterli 2022, "Correlations and reuse for fast and accurate physically based light transport", PhD
+// thesis, Dartmouth College, §9.1.3; Lin et al. 2022, §7.4): the canonical input c (the vertex's own) and k
+// neighbours, each pair (c, i) weighted by the balance heuristic with confidences M_i and M_c / k, the k pairs
+// averaged. The weights of an x sum to 1 over the inputs whose domain holds x (each pair's two sum to 1), so the
+// combination is unbiased; each needs the other side's target of the point, with that side's visibility. Targets
+// here are p-hat times visibility at the named vertex.
+
+/// m_i(y_i) of neighbour i's own point: counts M_i, M_c; neighbourTarget = p-hat_i(y_i), canonicalTarget =
+/// p-hat_c(y_i) V_c(y_i).
+RT_FN float pairwiseNeighbourMis(float k, float neighbourCount, float neighbourTarget, float canonicalCount,
+                                 float canonicalTarget)
+{
+    const float a = neighbourCount * neighbourTarget;
+    const float b = canonicalCount / k * canonicalTarget;
+    return a + b > 0.0f ? a / (k * (a + b)) : 0.0f;
+}
+
+/// Pair i's term of the canonical input's m_c(y_c), summed over the k neighbours: canonicalTarget = p-hat_c(y_c),
+/// neighbourTarget = p-hat_i(y_c) V_i(y_c).
+RT_FN float pairwiseCanonicalTerm(float k, float canonicalCount, float canonicalTarget, float neighbourCount,
+                                  float neighbourTarget)
+{
+    const float a = canonicalCount / k * canonicalTarget;
+    const float b = neighbourCount * neighbourTarget;
+    return a + b > 0.0f ? a / (k * (a + b)) : 0.0f;
 }
 
 RT_SHADER_NAMESPACE_END

@@ -37,26 +37,53 @@ struct PassContext
     const shader::RenderUniforms& uniforms;
     bool media;
 
-    /// Combines inputs[0, n) at inputs[0]'s vertex (Bitterli et al. 2020, Alg. 6; Alg. 4 when
-    /// uniforms.restirBiased), the shared steps of Shading/Restir.h: the chosen point's W, 0 if it is occluded
-    /// from the vertex, and M = the inputs' M summed.
+    /// Combines inputs[0, n) at inputs[0]'s vertex q, the canonical input (Shared/Restir.h): with pairwise MIS
+    /// and targets that include visibility (2 (n - 1) shadow rays at most), or, when uniforms.restirBiased,
+    /// Bitterli et al. 2020's Alg. 4 (weights M p-hat_q W, W normalised by the inputs' summed M, the chosen point
+    /// then tested for visibility at q). Every input draws one number, in order.
     shader::Reservoir combine(const Input* inputs, int n, shader::Rng& rng)
     {
         shader::RestirCombination c = shader::beginCombination();
-        for (int i = 0; i < n; ++i)
-            shading.offerInput(c, inputs[0].vertex, inputs[i].reservoir, i == 0, i, shader::nextFloat(rng));
-        if (c.chosen < 0)
-            return shader::finishCombination(c, 0.0f, false, false);
-        // Input 0's domain test is the shading's visibility: p-hat(y) > 0 there, y having been chosen.
-        const bool visibleHere =
-            c.chosen == 0 || shading.restirVisible(inputs[0].vertex, c.out.point, inputs[0].time, inputs[0].mediumSeed);
-        const bool biased = uniforms.restirBiased != 0u;
-        float z = visibleHere ? inputs[0].reservoir.count : 0.0f;
-        if (!biased)
+        const Input& q = inputs[0];
+        if (uniforms.restirBiased != 0u)
+        {
+            for (int i = 0; i < n; ++i)
+            {
+                const shader::Reservoir& r = inputs[i].reservoir;
+                const float target =
+                    i == 0 || !(r.weight > 0.0f) ? r.target : luminance(shading.restirIntegrand(q.vertex, r.light, r.point));
+                shader::offerInput(c, r, target, r.count, i, shader::nextFloat(rng));
+            }
+            shader::Reservoir out = shader::finishCombination(c, c.out.count);
+            if (c.chosen > 0 && !shading.restirVisible(q.vertex, out.point, q.time, q.mediumSeed))
+                out.weight = 0.0f;
+            return out;
+        }
+        const float k = float(n - 1);
+        const shader::Reservoir& own = q.reservoir;
+        float canonicalMis = 0.0f;
+        if (own.weight > 0.0f)
+        {
+            canonicalMis = n == 1 ? 1.0f : 0.0f;
             for (int i = 1; i < n; ++i)
-                z += shading.inputDomainCount(c, inputs[i].vertex, inputs[i].reservoir, i, inputs[i].time,
-                                              inputs[i].mediumSeed);
-        return shader::finishCombination(c, z, visibleHere, biased);
+                canonicalMis += shader::pairwiseCanonicalTerm(
+                    k, own.count, own.target, inputs[i].reservoir.count,
+                    shading.visibleTarget(inputs[i].vertex, own.light, own.point, inputs[i].time, inputs[i].mediumSeed));
+        }
+        shader::offerInput(c, own, own.target, canonicalMis, 0, shader::nextFloat(rng));
+        for (int i = 1; i < n; ++i)
+        {
+            const shader::Reservoir& r = inputs[i].reservoir;
+            float targetHere = 0.0f;
+            float mis = 0.0f;
+            if (r.weight > 0.0f)
+            {
+                targetHere = shading.visibleTarget(q.vertex, r.light, r.point, q.time, q.mediumSeed);
+                mis = shader::pairwiseNeighbourMis(k, r.count, r.target, own.count, targetHere);
+            }
+            shader::offerInput(c, r, targetHere, mis, i, shader::nextFloat(rng));
+        }
+        return shader::finishCombination(c, 1.0f);
     }
 };
 
@@ -161,12 +188,13 @@ void restirCandidatesRow(const CpuScene& scene, const shader::RenderUniforms& un
         r.weight = shader::contributionWeight(weightSum, r.target, candidates);
         if (r.weight > 0.0f && !c.shading.restirVisible(inputs[0].vertex, r.point, job.ray.time, inputs[0].mediumSeed))
             r.weight = 0.0f; // visibility reuse (§4.1)
-        // Temporal reuse (Alg. 5 with Alg. 6's weights): the pixel's last final reservoir, its M capped.
+        // Temporal reuse (Alg. 5; pairwise MIS with k = 1): the pixel's last final reservoir, its M capped.
         int n = 1;
-        if (buffers.history && lastReservoir.count > 0.0f && last.hit.material != kNoIndex)
+        if (buffers.history && uniforms.restirTemporalCap > 0u && lastReservoir.count > 0.0f &&
+            last.hit.material != kNoIndex)
         {
             inputs[1].reservoir = lastReservoir;
-            inputs[1].reservoir.count = std::min(lastReservoir.count, shader::kRestirTemporalCap * candidates);
+            inputs[1].reservoir.count = std::min(lastReservoir.count, float(uniforms.restirTemporalCap) * candidates);
             inputs[1].vertex = c.shading.restirVertexOf(last);
             inputs[1].mediumSeed = inputs[0].mediumSeed;
             inputs[1].time = c.shading.cameraSampleTime(uvec2(std::uint32_t(x), std::uint32_t(y)), sampleIndex - 1u);
@@ -196,7 +224,7 @@ void restirShadeRow(const CpuScene& scene, const shader::RenderUniforms& uniform
         shader::Reservoir final = inputs[0].reservoir;
         if (inputs[0].vertex.valid && k > 0)
         {
-            // Spatial reuse (Alg. 5's neighbours, Alg. 6's weights): k pixels drawn in a disk, similar ones kept.
+            // Spatial reuse (Alg. 5's neighbours; pairwise MIS): k pixels drawn in a disk, similar ones kept.
             shader::Rng rng = shader::rngForSample(uniforms.seed ^ kSpatialStream, std::uint32_t(i), sampleIndex);
             int n = 1;
             for (int j = 0; j < k; ++j)

@@ -7,11 +7,8 @@
 //  2. Spatial reuse and shading: the combination with k neighbours' reservoirs of pass 1 (within 30 px, with
 //     normals within 25 degrees and camera-path lengths within 10 %, §4.2), then the camera path again (the
 //     same random numbers find the same vertex) with f(y) W as its direct light there, nee-mis beyond.
-// Combinations are unbiased (Alg. 6): the chosen point y is weighted by 1 / Z, where Z sums the M of the inputs
-// whose domain holds y. Each stored reservoir has W = 0 where its point is occluded from its own vertex, so its
-// domain is exactly where its vertex's target times visibility is positive; Z is thus found by evaluating the
-// target at each input's vertex and tracing a shadow ray from it (the derivation: docs/RESTIR.md). The biased
-// combination (--restir-biased, Alg. 4) divides by every input's M instead and traces no such ray.
+// Combinations are unbiased: GRIS with pairwise MIS over targets that include visibility (Shared/Restir.h,
+// docs/RESTIR.md), at most two shadow rays per reused input; --restir-biased runs Alg. 4 instead.
 #pragma once
 
 #include <cstdint>

@@ -144,6 +144,29 @@ TEST(CpuRestirBiased, TheSameTestFindsTheBiasedCombinationDarker)
         << "biased " << biased.imageMean << ", nee-mis " << ref.imageMean;
 }
 
+// --restir-temporal-cap changes how long a pixel keeps its point, not what it estimates: cap 1 and no temporal
+// reuse (0) pass the same test, and render other images than the default 20.
+TEST(CpuRestirHistory, TheTemporalCapChangesTheImageNotItsExpectation)
+{
+    const Scene scene = makeScene("cornell-box-lights");
+    cpu::CpuEngine engine(EngineKind::Multi);
+    engine.setScene(scene);
+    const OverSeeds ref = reference(engine, scene);
+    for (int cap : {0, 1})
+    {
+        RenderSettings s = restirSettings(scene);
+        s.restirTemporalCap = cap;
+        const OverSeeds restir = renderSeeds(engine, s, 32, 100);
+        const double z = zScore(restir.imageMean, restir.imageVariance, ref.imageMean, ref.imageVariance);
+        EXPECT_LT(std::abs(z), 4.0) << "cap " << cap << ": restir-di " << restir.imageMean << ", nee-mis " << ref.imageMean;
+        RenderSettings one = s;
+        one.spp = 4;
+        RenderSettings longHistory = one;
+        longHistory.restirTemporalCap = 20;
+        EXPECT_FALSE(bitIdentical(renderCpu(scene, one).image, renderCpu(scene, longHistory).image)) << "cap " << cap;
+    }
+}
+
 TEST(CpuRestirDeterminism, SingleAndMultiCoreRenderTheSameImageAndTheSeedDecides)
 {
     const Scene scene = makeScene("cornell-box-lights");

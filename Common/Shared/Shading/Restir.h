@@ -161,32 +161,14 @@ RT_FN ShadowRay restirShadowRay(RT_IN(RestirVertex) v, vec3 point)
     return shadow;
 }
 
-/// Offers input `index` of a combination at vertex q (Alg. 6's loop): its reservoir r (resampled at its own
-/// vertex) with weight M p-hat_q(y) W, p-hat_q(y) being r.target itself for q's own reservoir (`own`). u in [0, 1)
-/// decides whether it replaces the sample so far; every input draws its u, taken or not.
-RT_FN void offerInput(RT_INOUT(RestirCombination) c, RT_IN(RestirVertex) q, RT_IN(Reservoir) r, bool own, int index,
-                      float u)
+/// p-hat_v(y) V_v(y): the target of point `point` on light `light` at vertex v if v sees it (a shadow ray with the
+/// vertex's camera sample's `time` and `mediumSeed`, traced by the host's restirVisible), else 0. Pairwise MIS and
+/// the combinations' resampling weights read targets with visibility: a point occluded where it would be reused
+/// is never chosen there, and never weighs on the points that are (docs/RESTIR.md).
+RT_FN float visibleTarget(RT_IN(RestirVertex) v, uint light, vec3 point, float time, uint mediumSeed)
 {
-    c.out.count += r.count;
-    if (!(r.weight > 0.0f))
-        return;
-    const float target = own ? r.target : luminance(restirIntegrand(q, r.light, r.point));
-    if (offerCandidate(c.out, c.weightSum, r.light, r.point, target, r.count * target * r.weight, u))
-        c.chosen = index;
-}
-
-/// Input `index`'s M if its domain holds the chosen point, else 0 (Alg. 6's Z, one input at a time; not for the
-/// combining vertex's own input, whose test is the visibility the shading needs). Its domain is where its own
-/// vertex v has a positive target and sees the point: a shadow ray from v with that vertex's camera sample's
-/// `time` and `mediumSeed`, traced by the host's restirVisible. The chosen input needs none: its W > 0 says so.
-RT_FN float inputDomainCount(RT_IN(RestirCombination) c, RT_IN(RestirVertex) v, RT_IN(Reservoir) r, int index,
-                             float time, uint mediumSeed)
-{
-    if (index == c.chosen)
-        return r.count;
-    if (!(r.count > 0.0f) || !(luminance(restirIntegrand(v, c.out.light, c.out.point)) > 0.0f))
-        return 0.0f;
-    return restirVisible(v, c.out.point, time, mediumSeed) ? r.count : 0.0f;
+    const float target = luminance(restirIntegrand(v, light, point));
+    return target > 0.0f && restirVisible(v, point, time, mediumSeed) ? target : 0.0f;
 }
 
 /// Whether a neighbour's vertex b may be reused at vertex a (Bitterli et al. 2020, §6): both exist, their shading
