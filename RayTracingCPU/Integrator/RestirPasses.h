@@ -3,7 +3,7 @@
 //  1. Candidates and temporal reuse (Alg. 3 and 5): the camera path to its first vertex where NEE would run
 //     (stored as the pixel's RestirSurface), M candidates resampled into a reservoir, its point's visibility
 //     (visibility reuse, §4.1: W = 0 if occluded), then the combination with the pixel's final reservoir of the
-//     last iteration (its M capped at 20 M, §4.2).
+//     last iteration (its M capped at --restir-temporal-cap times M, by default 20, §4.2).
 //  2. Spatial reuse and shading: the combination with k neighbours' reservoirs of pass 1 (within 30 px, with
 //     normals within 25 degrees and camera-path lengths within 10 %, §4.2), then the camera path again (the
 //     same random numbers find the same vertex) with f(y) W as its direct light there, nee-mis beyond.

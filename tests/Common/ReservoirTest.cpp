@@ -86,5 +86,34 @@ TEST(Reservoir, ResampledImportanceSamplingIsUnbiased)
             EXPECT_LT(variance, plainVariance) << "M = " << m;
     }
 }
+// Pairwise MIS (Shared/Restir.h): for any point x, the canonical input's weight and the k neighbours' weights sum to
+// 1 whatever the counts and targets, wherever the canonical target is positive (its domain holds every x the
+// integrand reaches); a neighbour whose target is 0 at x (x outside its domain) gets weight 0. Unbiasedness rests
+// on exactly this.
+TEST(Reservoir, PairwiseMisWeightsSumToOneOverTheInputsWhoseDomainHoldsThePoint)
+{
+    shader::Rng rng = shader::rngForSample(3u, 0u, 0u);
+    for (int trial = 0; trial < 10000; ++trial)
+    {
+        const int k = 1 + int(shader::nextFloat(rng) * 8.0f);
+        const float canonicalCount = 1.0f + 640.0f * shader::nextFloat(rng);
+        const float canonicalTarget = 1e-3f + 100.0f * shader::nextFloat(rng) * shader::nextFloat(rng);
+        double sum = 0.0;
+        for (int i = 0; i < k; ++i)
+        {
+            const float count = 1.0f + 640.0f * shader::nextFloat(rng);
+            // A third of the neighbours cannot produce x: their target (with visibility) is 0 there.
+            const float target = shader::nextFloat(rng) < 0.33f ? 0.0f : 100.0f * shader::nextFloat(rng);
+            const float mi = shader::pairwiseNeighbourMis(float(k), count, target, canonicalCount, canonicalTarget);
+            if (target == 0.0f)
+            {
+                EXPECT_EQ(mi, 0.0f);
+            }
+            sum += mi;
+            sum += shader::pairwiseCanonicalTerm(float(k), canonicalCount, canonicalTarget, count, target);
+        }
+        ASSERT_NEAR(sum, 1.0, 1e-5) << "trial " << trial << ", k " << k;
+    }
+}
 } // namespace
 } // namespace rt::test
