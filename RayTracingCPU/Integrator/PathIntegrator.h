@@ -48,18 +48,14 @@ RT_FLATTEN inline PathJob cameraJob(CpuShading<PathCode{}>& shading, bool media,
     return {Ray{origin, direction, cs.time}, rng, media ? shader::mediumPathSeed(shading.uniforms.seed, pixel) : 0u};
 }
 
-/// What the path does with the hit of its ray (`found` false: the ray left the scene): the shared vertex, then
-/// its shadow ray if it sampled a light. Returns false when the path ends (path.radiance is then its estimate).
-/// `segments` counts the shadow rays it traces.
-template <PathCode C>
-inline bool continuePath(CpuShading<C>& shading, const CpuScene& cs, shader::PathState& path, const PathJob& job,
-                         std::uint32_t segment, bool found, const HitRecord& hit, std::uint64_t& segments)
+/// The hit of `ray` (`found` false: it left the scene) as the shared vertex reads it.
+inline shader::HitPayload hitPayload(const CpuScene& cs, const Ray& ray, bool found, const HitRecord& hit)
 {
-    shader::HitPayload payload;
+    shader::HitPayload payload{};
     payload.material = kNoIndex;
     if (found)
     {
-        const SurfaceInteraction si = cs.interaction(Ray{path.origin, path.direction, job.ray.time}, hit);
+        const SurfaceInteraction si = cs.interaction(ray, hit);
         payload.position = si.p;
         payload.material = si.material;
         payload.normal = si.n;
@@ -68,8 +64,19 @@ inline bool continuePath(CpuShading<C>& shading, const CpuScene& cs, shader::Pat
         payload.offsetScale = si.offsetScale;
         payload.lightSlot = si.light;
     }
+    return payload;
+}
+
+/// What the path does at `payload`, the hit of its ray: the shared vertex (`directResampled`: restir-di's
+/// resampled vertex, Shared/Shading/PathVertex.h), then its shadow ray if it sampled a light. Returns false when
+/// the path ends (path.radiance is then its estimate). `segments` counts the shadow rays it traces.
+template <PathCode C>
+inline bool continuePath(CpuShading<C>& shading, const CpuScene& cs, shader::PathState& path, const PathJob& job,
+                         std::uint32_t segment, const shader::HitPayload& payload, bool directResampled,
+                         std::uint64_t& segments)
+{
     shader::ShadowRay shadow{}; // its fields but pending are set only when pending, which GCC cannot follow
-    const bool goesOn = shading.shadePathVertex(path, segment, payload, shadow, false);
+    const bool goesOn = shading.shadePathVertex(path, segment, payload, shadow, directResampled);
     if (shadow.pending)
     {
         ++segments;
@@ -78,6 +85,15 @@ inline bool continuePath(CpuShading<C>& shading, const CpuScene& cs, shader::Pat
             path.radiance += shadow.contribution;
     }
     return goesOn;
+}
+
+/// continuePath at the hit of the path's ray (`found` false: the ray left the scene), no vertex resampled.
+template <PathCode C>
+inline bool continuePath(CpuShading<C>& shading, const CpuScene& cs, shader::PathState& path, const PathJob& job,
+                         std::uint32_t segment, bool found, const HitRecord& hit, std::uint64_t& segments)
+{
+    return continuePath<C>(shading, cs, path, job, segment,
+                           hitPayload(cs, Ray{path.origin, path.direction, job.ray.time}, found, hit), false, segments);
 }
 
 /// Traces the path of `job` to its end and returns its radiance (linear RGB). `segments` is incremented per ray

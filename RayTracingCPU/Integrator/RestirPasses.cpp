@@ -102,20 +102,10 @@ shader::RestirSurface findSurface(PassContext& c, const PathJob& job, shader::Pa
         ++tally.segments;
         const bool found = c.scene.intersect(TraceRay(Ray{path.origin, path.direction, job.ray.time}, needs), 0.0f,
                                              kInfinity, hit, job.mediumSeed);
-        shader::HitPayload payload{};
-        payload.material = kNoIndex;
+        const shader::HitPayload payload =
+            hitPayload(c.scene, Ray{path.origin, path.direction, job.ray.time}, found, hit);
         if (found)
-        {
-            const SurfaceInteraction si = c.scene.interaction(Ray{path.origin, path.direction, job.ray.time}, hit);
-            payload.position = si.p;
-            payload.material = si.material;
-            payload.normal = si.n;
-            payload.flags = si.medium ? shader::kHitMedium : 0u;
-            payload.uv = si.uv;
-            payload.offsetScale = si.offsetScale;
-            payload.lightSlot = si.light;
-            depth += length(si.p - path.origin);
-        }
+            depth += length(payload.position - path.origin);
         if (c.shading.resamplesDirectAt(payload, segment, path))
         {
             surface.hit = payload;
@@ -261,34 +251,16 @@ void restirShadeRow(const CpuScene& scene, const shader::RenderUniforms& uniform
             ++tally.segments;
             const bool found = scene.intersect(TraceRay(Ray{path.origin, path.direction, job.ray.time}, needs), 0.0f,
                                                kInfinity, hit, job.mediumSeed);
-            shader::HitPayload payload{};
-            payload.material = kNoIndex;
-            if (found)
-            {
-                const SurfaceInteraction si = scene.interaction(Ray{path.origin, path.direction, job.ray.time}, hit);
-                payload.position = si.p;
-                payload.material = si.material;
-                payload.normal = si.n;
-                payload.flags = si.medium ? shader::kHitMedium : 0u;
-                payload.uv = si.uv;
-                payload.offsetScale = si.offsetScale;
-                payload.lightSlot = si.light;
-            }
+            const shader::HitPayload payload =
+                hitPayload(scene, Ray{path.origin, path.direction, job.ray.time}, found, hit);
             const bool here = !resampled && c.shading.resamplesDirectAt(payload, segment, path);
             vec3 direct(0.0f);
             if (here && final.weight > 0.0f)
                 direct = path.beta * c.shading.restirIntegrand(inputs[0].vertex, final.light, final.point) * final.weight;
-            shader::ShadowRay shadow{};
-            const bool goesOn = c.shading.shadePathVertex(path, segment, payload, shadow, here);
+            // No shadow ray is pending at the resampled vertex: `direct` is added after its emission, as NEE's would be.
+            const bool goesOn = continuePath(c.shading, scene, path, job, segment, payload, here, tally.segments);
             path.radiance += direct;
             resampled = resampled || here;
-            if (shadow.pending)
-            {
-                ++tally.segments;
-                if (!scene.occluded(TraceRay(Ray{shadow.origin, shadow.direction, job.ray.time}, needs), 0.0f,
-                                    shadow.distance, job.mediumSeed))
-                    path.radiance += shadow.contribution;
-            }
             if (!goesOn)
                 break;
         }
