@@ -41,6 +41,10 @@ layout(binding = kBindingImages) uniform sampler2D images[];
 layout(binding = kBindingWavePaths, std430) buffer WavePathBlock { uvec4 waveFields[]; };
 layout(binding = kBindingWaveQueues, scalar) buffer WaveQueueBlock { uint waveQueues[]; };
 layout(binding = kBindingWaveCounters, scalar) buffer WaveCounterBlock { WaveCounters waveCounters; };
+layout(binding = kBindingRestirSurfaces, scalar) buffer RestirSurfaceBlock { RestirSurface restirSurfaces[]; };
+layout(binding = kBindingRestirTemporal, scalar) buffer RestirTemporalBlock { Reservoir restirTemporal[]; };
+layout(binding = kBindingRestirFinal, scalar) buffer RestirFinalBlock { Reservoir restirFinal[]; };
+layout(binding = kBindingRestirTraced, scalar) buffer RestirTracedBlock { uvec2 restirTraced[]; };
 
 layout(push_constant, scalar) uniform PushBlock { TracePushConstants push; };
 
@@ -64,12 +68,23 @@ uvec2 launchPixel()
 }
 
 /// The pixel and the sample index of the path whose ray this invocation traces, for the intersection shaders,
-/// which cannot read the payload: in the wavefront, the path of the launch's queue entry; in the megakernel,
+/// which cannot read the payload: in the wavefront, the path of the launch's queue entry; in restir-di's passes,
+/// the camera sample its launch pixel's slot of restirTraced names (Restir/RestirHost.glsl); in the megakernel,
 /// the launch's pixel and first sample (a scene whose intersection shaders need the sample, a moving one, is
 /// traced there one sample per launch).
 uint tracedWavePath() { return waveQueues[push.waveQueue * push.waveCapacity + gl_LaunchIDEXT.x]; }
+uint restirTracedSlot()
+{
+    uvec2 pixel = launchPixel();
+    return pixel.y * uniforms.width + pixel.x;
+}
 uvec2 tracedPixel()
 {
+    if (kRestirPass)
+    {
+        uint pixel = restirTraced[restirTracedSlot()].x;
+        return uvec2(pixel % uniforms.width, pixel / uniforms.width);
+    }
     if (kWavefront)
     {
         uint pixel = waveFields[kWaveOriginPixel * push.waveCapacity + tracedWavePath()].w;
@@ -79,6 +94,8 @@ uvec2 tracedPixel()
 }
 uint tracedSample()
 {
+    if (kRestirPass)
+        return restirTraced[restirTracedSlot()].y;
     if (kWavefront)
         return waveFields[kWaveDirectionSample * push.waveCapacity + tracedWavePath()].w;
     return push.firstSample;

@@ -21,6 +21,9 @@ layout(constant_id = kSpecIdHitUv) const uint kSpecHitUv = kSpecDynamic;
 // Not a render setting: 1 in the wavefront integrator's pipelines, 0 in the megakernel's.
 layout(constant_id = kSpecIdWavefront) const uint kSpecWavefront = 0u;
 const bool kWavefront = kSpecWavefront != 0u;
+// Not a render setting either: 1 in restir-di's pipelines (Shaders/Restir/).
+layout(constant_id = kSpecIdRestir) const uint kSpecRestir = 0u;
+const bool kRestirPass = kSpecRestir != 0u;
 
 uint settingEstimator() { return kSpecEstimator != kSpecDynamic ? kSpecEstimator : uniforms.estimator; }
 uint settingLightSampler() { return kSpecLightSampler != kSpecDynamic ? kSpecLightSampler : uniforms.lightSampler; }

@@ -318,8 +318,12 @@ RT_CONST(uint, kBindingMixtureLights, 20u)    // uniform LightData[kMixtureUnifo
 RT_CONST(uint, kBindingWavePaths, 21u)        // uvec4[kWaveFieldCount * capacity]: the wavefront's paths
 RT_CONST(uint, kBindingWaveQueues, 22u)       // uint[kWaveQueueCount * capacity]: its queues of path indices
 RT_CONST(uint, kBindingWaveCounters, 23u)     // WaveCounters: its queue lengths and indirect launch sizes
-RT_CONST(uint, kBindingImages, 24u)           // sampler2D[]: the scene's images, 8-bit sRGB
-RT_CONST(uint, kBindingCount, 25u)
+RT_CONST(uint, kBindingRestirSurfaces, 24u)   // RestirSurface[width * height]: restir-di's vertices (Shaders/Restir/)
+RT_CONST(uint, kBindingRestirTemporal, 25u)   // Reservoir[width * height]: after candidates and temporal reuse
+RT_CONST(uint, kBindingRestirFinal, 26u)      // Reservoir[width * height]: after spatial reuse, the next history
+RT_CONST(uint, kBindingRestirTraced, 27u)     // uvec2[width * height]: the camera sample a restir ray is traced as
+RT_CONST(uint, kBindingImages, 28u)           // sampler2D[]: the scene's images, 8-bit sRGB
+RT_CONST(uint, kBindingCount, 29u)
 // The mixture's pdf reads every light at every vertex, all threads the same light at once: from a uniform
 // buffer (a GPU's constant cache, which broadcasts) when the scene has at most this many. 64 x 104 bytes fit
 // in the 16 KiB that Vulkan guarantees for a uniform buffer range.
@@ -370,6 +374,9 @@ RT_CONST(uint, kSpecIdCount, 7u)
 // Set by the pipeline's kind, not by the render (not in PipelineSpecialization's key): 1 in the wavefront
 // integrator's pipelines, where the intersection shaders find their path's pixel and sample in the queues.
 RT_CONST(uint, kSpecIdWavefront, 7u)
+// 1 in restir-di's pipelines (Shaders/Restir/): the intersection shaders find the camera sample a ray is traced as
+// in kBindingRestirTraced (a neighbour's shadow ray is traced as the neighbour's sample).
+RT_CONST(uint, kSpecIdRestir, 8u)
 
 // The bits of kSpecIdFeatures (PipelineSpecialization.cpp sets them from rt::SceneFeatures and the uniforms).
 RT_CONST(uint, kFeatureTriangles, 0x1u)          // quads or meshes: Triangle.rchit's hit group
@@ -416,6 +423,7 @@ struct TracePushConstants
     uint waveSegment;
     uint waveQueue;
     uint waveCapacity;
+    uint restirHistory; // restir-di's candidates pass: 1 when the final reservoirs hold the last iteration's
 };
 
 // A wavefront wave's paths between its kernels, stored field by field (structure of arrays): field f of path
@@ -548,7 +556,7 @@ struct PreviewPushConstants
 
 #ifdef __cplusplus
 static_assert(sizeof(LightBvhNode) == 48);
-static_assert(sizeof(TracePushConstants) == 36);
+static_assert(sizeof(TracePushConstants) == 40);
 static_assert(sizeof(WaveCounters) == 64 && offsetof(WaveCounters, shadowRays) == 32);
 static_assert(sizeof(InstanceRecord) == 32);
 static_assert(sizeof(SphereRecord) == 32);

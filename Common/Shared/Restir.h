@@ -86,7 +86,7 @@ RT_FN float contributionWeight(float weightSum, float target, float count)
 /// in turn, then finishCombination.
 struct RestirCombination
 {
-    Reservoir out; // the chosen sample, its target at q; count: the inputs' M summed
+    Reservoir result; // the chosen sample, its target at q; count: the inputs' M summed
     float weightSum;
     int chosen; // the input the sample came from, -1: none
 };
@@ -94,7 +94,7 @@ struct RestirCombination
 RT_FN RestirCombination beginCombination()
 {
     RestirCombination c;
-    c.out = emptyReservoir();
+    c.result = emptyReservoir();
     c.weightSum = 0.0f;
     c.chosen = -1;
     return c;
@@ -104,8 +104,8 @@ RT_FN RestirCombination beginCombination()
 /// weight `mis` (or its M, in the biased combination); u in [0, 1) decides whether it replaces the sample so far.
 RT_FN void offerInput(RT_INOUT(RestirCombination) c, RT_IN(Reservoir) r, float targetHere, float mis, int index, float u)
 {
-    c.out.count += r.count;
-    if (offerCandidate(c.out, c.weightSum, r.light, r.point, targetHere, mis * targetHere * r.weight, u))
+    c.result.count += r.count;
+    if (offerCandidate(c.result, c.weightSum, r.light, r.point, targetHere, mis * targetHere * r.weight, u))
         c.chosen = index;
 }
 
@@ -113,7 +113,7 @@ RT_FN void offerInput(RT_INOUT(RestirCombination) c, RT_IN(Reservoir) r, float t
 /// the inputs' summed M after the biased combination's (Bitterli et al. 2020, Alg. 4).
 RT_FN Reservoir finishCombination(RT_IN(RestirCombination) c, float normalisation)
 {
-    Reservoir r = c.out;
+    Reservoir r = c.result;
     r.weight = c.chosen >= 0 ? contributionWeight(c.weightSum, r.target, normalisation) : 0.0f;
     return r;
 }

@@ -95,6 +95,7 @@ CpuScene::CpuScene(const Scene& scene)
             Aabb box(rec.center0 - r, rec.center0 + r);
             box.expand(Aabb(rec.center0 + rec.velocity - r, rec.center0 + rec.velocity + r));
             add(PrimType::Sphere, m_spheres.size(), box);
+            m_hasMotion = m_hasMotion || rec.velocity != vec3(0.0f);
             m_spheres.push_back(rec);
         }
         for (std::uint32_t k = 0; k < group.quads.size(); ++k)

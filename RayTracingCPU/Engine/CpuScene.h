@@ -41,6 +41,8 @@ public:
     const std::vector<QuadRec>& quads() const { return m_quads; }
     const std::vector<TriangleRec>& triangles() const { return m_triangles; }
     bool hasMedia() const { return !m_media.empty(); }
+    /// Whether a sphere moves during the shutter: only then does a ray's time change what it hits.
+    bool hasMotion() const { return m_hasMotion; }
     /// Scene::emitterCount(), counted once: NEE and the MIS weight need it at every vertex.
     std::uint32_t emitterCount() const { return m_emitterCount; }
     /// The emitters' power alias table (Sampling/LightPower.h) for NEE's power selection.
@@ -197,6 +199,7 @@ private:
     std::vector<QuadRec> m_quads;
     std::vector<TriangleRec> m_triangles;
     std::vector<MediumRec> m_media;
+    bool m_hasMotion = false;
     // Per record of m_spheres, m_quads, m_triangles: its index into Scene::lights, or kNoIndex.
     std::vector<std::uint32_t> m_sphereLights;
     std::vector<std::uint32_t> m_quadLights;

@@ -19,6 +19,7 @@
 #include "Shared/HostDevice.h"
 #include "Shared/LightSampling.h"
 #include "Shared/LightSelection.h"
+#include "Shared/Medium.h"
 #include "Shared/Mis.h"
 #include "Shared/PathState.h"
 #include "Shared/Perlin.h"
@@ -112,15 +113,34 @@ public:
         return {srgb8ToLinear(texel[0]), srgb8ToLinear(texel[1]), srgb8ToLinear(texel[2])};
     }
 
-    /// restir-di's visibility test (Shared/Shading/Restir.h): the shadow ray from v to `point` at shutter time
-    /// `time` through media with `mediumSeed`, counted in restirShadowRays.
-    bool restirVisible(const RestirVertex& v, vec3 point, float time, uint mediumSeed)
+    /// restir-di's visibility test (Shared/Shading/Restir.h): the shadow ray from v to `point` as camera sample
+    /// `sampleIndex` of `pixel` traces it (its shutter time where a sphere moves, its medium seed where the scene
+    /// has media), counted in restirShadowRays.
+    bool restirVisible(const RestirVertex& v, vec3 point, uvec2 pixel, uint sampleIndex)
     {
         const ShadowRay s = restirShadowRay(v, point);
         ++restirShadowRays;
+        const float time = m_scene->hasMotion() ? cameraSampleTime(pixel, sampleIndex) : 0.0f;
+        const uint mediumSeed = kHasMedia && m_scene->hasMedia() ? mediumPathSeed(uniforms.seed, pixel) : 0u;
         return !m_scene->occluded(cpu::TraceRay(rt::Ray{s.origin, s.direction, time}, m_scene->rayNeeds()), 0.0f,
                                   s.distance, mediumSeed);
     }
+
+    /// One input of a restir-di combination (combineReservoirs): a reservoir, the vertex it was resampled for and
+    /// the camera sample whose path found that vertex.
+    struct RestirInput
+    {
+        Reservoir reservoir;
+        RestirVertex vertex;
+        uvec2 pixel;
+        uint sampleIndex = 0;
+    };
+    /// The inputs combineReservoirs reads: the passes point it at theirs before they combine.
+    const RestirInput* restirInputs = nullptr;
+    const Reservoir& restirInputReservoir(int i) const { return restirInputs[i].reservoir; }
+    const RestirVertex& restirInputVertex(int i) const { return restirInputs[i].vertex; }
+    uvec2 restirInputPixel(int i) const { return restirInputs[i].pixel; }
+    uint restirInputSample(int i) const { return restirInputs[i].sampleIndex; }
     std::uint64_t restirShadowRays = 0;
 
 #include "Shared/Shading/Background.h"

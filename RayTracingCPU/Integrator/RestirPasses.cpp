@@ -18,18 +18,9 @@ constexpr int kMaxInputs = 1 + 64;
 
 using Shading = CpuShading<PathCode{}>;
 
-/// One input of a combination: a reservoir and the vertex it was resampled for, with what its shadow rays took
-/// from that vertex's camera sample (its pixel's medium seed, its shutter time): an input's domain is where its
-/// own vertex sees the point, as its own shadow ray saw it.
-struct Input
-{
-    shader::Reservoir reservoir;
-    shader::RestirVertex vertex;
-    std::uint32_t mediumSeed = 0;
-    float time = 0.0f;
-};
+using Input = Shading::RestirInput;
 
-/// The scene, the shading and what a pass's shadow rays share.
+/// The scene, the shading and the medium flag a pass shares.
 struct PassContext
 {
     const CpuScene& scene;
@@ -37,53 +28,11 @@ struct PassContext
     const shader::RenderUniforms& uniforms;
     bool media;
 
-    /// Combines inputs[0, n) at inputs[0]'s vertex q, the canonical input (Shared/Restir.h): with pairwise MIS
-    /// and targets that include visibility (2 (n - 1) shadow rays at most), or, when uniforms.restirBiased,
-    /// Bitterli et al. 2020's Alg. 4 (weights M p-hat_q W, W normalised by the inputs' summed M, the chosen point
-    /// then tested for visibility at q). Every input draws one number, in order.
+    /// Shared/Shading/Restir.h combineReservoirs over inputs[0, n) at inputs[0]'s vertex.
     shader::Reservoir combine(const Input* inputs, int n, shader::Rng& rng)
     {
-        shader::RestirCombination c = shader::beginCombination();
-        const Input& q = inputs[0];
-        if (uniforms.restirBiased != 0u)
-        {
-            for (int i = 0; i < n; ++i)
-            {
-                const shader::Reservoir& r = inputs[i].reservoir;
-                const float target =
-                    i == 0 || !(r.weight > 0.0f) ? r.target : luminance(shading.restirIntegrand(q.vertex, r.light, r.point));
-                shader::offerInput(c, r, target, r.count, i, shader::nextFloat(rng));
-            }
-            shader::Reservoir out = shader::finishCombination(c, c.out.count);
-            if (c.chosen > 0 && !shading.restirVisible(q.vertex, out.point, q.time, q.mediumSeed))
-                out.weight = 0.0f;
-            return out;
-        }
-        const float k = float(n - 1);
-        const shader::Reservoir& own = q.reservoir;
-        float canonicalMis = 0.0f;
-        if (own.weight > 0.0f)
-        {
-            canonicalMis = n == 1 ? 1.0f : 0.0f;
-            for (int i = 1; i < n; ++i)
-                canonicalMis += shader::pairwiseCanonicalTerm(
-                    k, own.count, own.target, inputs[i].reservoir.count,
-                    shading.visibleTarget(inputs[i].vertex, own.light, own.point, inputs[i].time, inputs[i].mediumSeed));
-        }
-        shader::offerInput(c, own, own.target, canonicalMis, 0, shader::nextFloat(rng));
-        for (int i = 1; i < n; ++i)
-        {
-            const shader::Reservoir& r = inputs[i].reservoir;
-            float targetHere = 0.0f;
-            float mis = 0.0f;
-            if (r.weight > 0.0f)
-            {
-                targetHere = shading.visibleTarget(q.vertex, r.light, r.point, q.time, q.mediumSeed);
-                mis = shader::pairwiseNeighbourMis(k, r.count, r.target, own.count, targetHere);
-            }
-            shader::offerInput(c, r, targetHere, mis, i, shader::nextFloat(rng));
-        }
-        return shader::finishCombination(c, 1.0f);
+        shading.restirInputs = inputs;
+        return shading.combineReservoirs(inputs[0].vertex, n, rng);
     }
 };
 
@@ -120,10 +69,6 @@ shader::RestirSurface findSurface(PassContext& c, const PathJob& job, shader::Pa
     return surface;
 }
 
-std::uint32_t mediumSeedOf(const shader::RenderUniforms& u, bool media, std::uint32_t x, std::uint32_t y)
-{
-    return media ? shader::mediumPathSeed(u.seed, uvec2(x, y)) : 0u;
-}
 } // namespace
 
 RestirBuffers::RestirBuffers(int w, int h)
@@ -151,8 +96,8 @@ void restirCandidatesRow(const CpuScene& scene, const shader::RenderUniforms& un
         buffers.surfaces[i] = surface;
         Input inputs[2];
         inputs[0].vertex = c.shading.restirVertexOf(surface);
-        inputs[0].mediumSeed = mediumSeedOf(uniforms, c.media, x, y);
-        inputs[0].time = job.ray.time;
+        inputs[0].pixel = uvec2(std::uint32_t(x), std::uint32_t(y));
+        inputs[0].sampleIndex = sampleIndex;
         inputs[0].reservoir = shader::emptyReservoir();
         if (!inputs[0].vertex.valid)
         {
@@ -176,7 +121,7 @@ void restirCandidatesRow(const CpuScene& scene, const shader::RenderUniforms& un
         }
         r.count = candidates;
         r.weight = shader::contributionWeight(weightSum, r.target, candidates);
-        if (r.weight > 0.0f && !c.shading.restirVisible(inputs[0].vertex, r.point, job.ray.time, inputs[0].mediumSeed))
+        if (r.weight > 0.0f && !c.shading.restirVisible(inputs[0].vertex, r.point, inputs[0].pixel, sampleIndex))
             r.weight = 0.0f; // visibility reuse (§4.1)
         // Temporal reuse (Alg. 5; pairwise MIS with k = 1): the pixel's last final reservoir, its M capped.
         int n = 1;
@@ -186,8 +131,8 @@ void restirCandidatesRow(const CpuScene& scene, const shader::RenderUniforms& un
             inputs[1].reservoir = lastReservoir;
             inputs[1].reservoir.count = std::min(lastReservoir.count, float(uniforms.restirTemporalCap) * candidates);
             inputs[1].vertex = c.shading.restirVertexOf(last);
-            inputs[1].mediumSeed = inputs[0].mediumSeed;
-            inputs[1].time = c.shading.cameraSampleTime(uvec2(std::uint32_t(x), std::uint32_t(y)), sampleIndex - 1u);
+            inputs[1].pixel = inputs[0].pixel;
+            inputs[1].sampleIndex = sampleIndex - 1u;
             n = 2;
         }
         buffers.temporal[i] = n == 1 ? r : c.combine(inputs, n, rng);
@@ -208,9 +153,9 @@ void restirShadeRow(const CpuScene& scene, const shader::RenderUniforms& uniform
         const shader::RestirSurface& surface = buffers.surfaces[i];
         inputs[0].reservoir = buffers.temporal[i];
         inputs[0].vertex = c.shading.restirVertexOf(surface);
-        inputs[0].mediumSeed = mediumSeedOf(uniforms, c.media, x, y);
+        inputs[0].pixel = uvec2(std::uint32_t(x), std::uint32_t(y));
+        inputs[0].sampleIndex = sampleIndex;
         const PathJob job = cameraJob(c.shading, c.media, std::uint32_t(x), std::uint32_t(y), sampleIndex);
-        inputs[0].time = job.ray.time;
         shader::Reservoir final = inputs[0].reservoir;
         if (inputs[0].vertex.valid && k > 0)
         {
@@ -232,8 +177,8 @@ void restirShadeRow(const CpuScene& scene, const shader::RenderUniforms& uniform
                 if (!c.shading.restirSimilar(surface, inputs[0].vertex, other, in.vertex))
                     continue;
                 in.reservoir = buffers.temporal[ni];
-                in.mediumSeed = mediumSeedOf(uniforms, c.media, neighbour.x, neighbour.y);
-                in.time = c.shading.cameraSampleTime(neighbour, sampleIndex);
+                in.pixel = neighbour;
+                in.sampleIndex = sampleIndex;
                 ++n;
             }
             if (n > 1)

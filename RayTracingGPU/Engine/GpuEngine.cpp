@@ -10,6 +10,8 @@
 #include "Engine/GpuScene.h"
 #include "Engine/RenderLimits.h"
 #include "Engine/RenderTarget.h"
+#include "Engine/RestirBuffers.h"
+#include "Engine/RestirPipeline.h"
 #include "Engine/SceneTracer.h"
 #include "Engine/WaveStageTimer.h"
 #include "Engine/WavefrontPipeline.h"
@@ -46,6 +48,7 @@ struct GpuEngine::Impl
     BandPlan bands{1}; // the frame's (beginFrame)
     std::uint32_t fixedBandRows = 0; // setBandRows: rows per submit; 0: by time
     std::unique_ptr<RenderTarget> target;
+    std::unique_ptr<RestirBuffers> restir; // restir-di's, of the target's size, while a frame runs it
     TracingDescriptors descriptors; // the scene and the target; empty after setScene
     shader::RenderUniforms uniforms{}; // the frame's, as in the target's uniform buffer
     GpuIntegrator integrator = GpuIntegrator::Megakernel; // the frame's (SceneTracer::integratorFor)
@@ -67,20 +70,29 @@ struct GpuEngine::Impl
 
     const vk::Device& device() const { return context.device(); }
 
-    /// A target of the settings' size (kept while the size stays, across scenes) and a descriptor set for it
-    /// and the scene (setScene drops the set).
-    void prepareTarget(std::uint32_t width, std::uint32_t height)
+    /// A target of the settings' size (kept while the size stays, across scenes), restir-di's buffers when
+    /// `restirDi` (dropped when not), and a descriptor set for them and the scene (setScene drops the set).
+    void prepareTarget(std::uint32_t width, std::uint32_t height, bool restirDi)
     {
         const bool resized = !target || target->width() != width || target->height() != height;
-        if (!resized && descriptors.set != VK_NULL_HANDLE)
+        const bool restirChanged = restirDi != bool(restir) || (restir && resized);
+        if (!resized && !restirChanged && descriptors.set != VK_NULL_HANDLE)
             return;
-        descriptors = {}; // its set names the old target or the old scene
+        descriptors = {}; // its set names the old target, the old restir buffers or the old scene
         if (resized)
         {
             target.reset();
             target = std::make_unique<RenderTarget>(device(), width, height);
         }
-        descriptors = tracer.makeDescriptors(target->bindings());
+        if (restirChanged)
+        {
+            restir.reset();
+            if (restirDi)
+                restir = std::make_unique<RestirBuffers>(device(), std::uint64_t(width) * height);
+        }
+        TargetBindings bindings = target->bindings();
+        bindings.restir = restir.get();
+        descriptors = tracer.makeDescriptors(bindings);
     }
 
     /// Records and runs one dispatch: `samples` samples per pixel from `firstSample` on, over `rows` rows from
@@ -193,6 +205,86 @@ struct GpuEngine::Impl
             frameStages[stage] += timestamps.secondsBetween(2, device().properties().limits.timestampPeriod);
     }
 
+    /// restir-di's batch: per sample, an iteration of two passes over the image (RestirPipeline), each in bands
+    /// of rows with cancellation polled between them. A batch cancelled after its first shading band is put back
+    /// from the snapshot that band took, counters too; a cancelled iteration leaves no history (the next one
+    /// starts without temporal reuse, as the CPU's does).
+    BatchResult traceRestir(std::uint32_t firstSample, std::uint32_t count, RenderControl& control)
+    {
+        const std::uint32_t height = target->height();
+        const std::uint32_t width = target->width();
+        const shader::SampleCounters countersBefore = target->readCounters();
+        const PipelineScene& scene = tracer.gpuScene().pipelineScene();
+        const RestirPipeline& pipeline = tracer.restir();
+        const bool timed = device().properties().timestampValidBits > 0;
+        double deviceSeconds = 0.0;
+        bool touched = false; // the accumulation image has changed since the batch began
+        for (std::uint32_t s = 0; s < count; ++s)
+        {
+            const std::uint32_t sampleIndex = firstSample + s;
+            for (const RestirPass pass : {RestirPass::Candidates, RestirPass::Shade})
+            {
+                std::uint32_t interleave = 1;
+                for (std::uint32_t row = 0; row < height;)
+                {
+                    if (control.cancelRequested())
+                    {
+                        restir->history = false;
+                        if (touched)
+                        {
+                            restore();
+                            target->writeCounters(countersBefore);
+                        }
+                        return {.complete = false};
+                    }
+                    const std::uint32_t rows = fixedBandRows > 0 ? std::min(fixedBandRows, height - row)
+                                                                 : bands.nextRows(1, height - row);
+                    if (row == 0)
+                        interleave = BandPlan::interleaveFor(rows, height);
+                    // Only a batch that may still be cancelled once this band has run needs the image as it was.
+                    const bool snapshot =
+                        !touched && pass == RestirPass::Shade && row == 0 && (rows < height || s + 1 < count);
+                    const auto start = std::chrono::steady_clock::now();
+                    vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) {
+                        if (snapshot)
+                            target->recordReadback(cmd);
+                        if (timed)
+                        {
+                            vkCmdResetQueryPool(cmd, timestamps.Handle(), 0, 2);
+                            vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps.Handle(), 0);
+                        }
+                        pipeline.recordPass(cmd, {&descriptors.set, 1}, uniforms, scene, pass, sampleIndex,
+                                            {width, rows}, row, interleave, restir->history);
+                        if (timed)
+                            vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 1);
+                        vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
+                                          VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT); // the NaN/Inf counters
+                    });
+                    const double hostSeconds =
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                    if (timed)
+                    {
+                        const double seconds =
+                            timestamps.secondsBetween(0, device().properties().limits.timestampPeriod);
+                        deviceSeconds += seconds;
+                        frameStages[pass == RestirPass::Candidates ? "restir_candidates_gpu" : "restir_shade_gpu"] +=
+                            seconds;
+                        frameStages["trace_gpu"] += seconds;
+                    }
+                    if (pass == RestirPass::Shade)
+                    {
+                        touched = true;
+                        control.advance(std::uint64_t(width) * rows);
+                    }
+                    row += rows;
+                    bands.record(rows, 1, hostSeconds);
+                }
+            }
+            restir->history = true;
+        }
+        return {.complete = true, .deviceSeconds = timed ? deviceSeconds : -1.0};
+    }
+
     void clear()
     {
         timedSubmit("clear_gpu", [&](VkCommandBuffer cmd) { target->recordClear(cmd); });
@@ -267,17 +359,23 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     Impl& e = *m_impl;
     if (!e.tracer.scene())
         throw UsageError("GpuEngine::beginFrame called before setScene");
-    if (settings.estimator == Estimator::RestirDi)
-        throw UsageError("the gpu engine does not run --estimator restir-di yet: render it with --engine single or multi");
     const auto width = static_cast<std::uint32_t>(settings.width);
     const auto height = static_cast<std::uint32_t>(settings.height());
     if (const auto problem = checkTargetLimits(width, height, targetLimits(e.device())))
         throw DeviceError(*problem);
-    e.prepareTarget(width, height);
+    const bool restirDi = settings.estimator == Estimator::RestirDi;
+    if (restirDi)
+        if (const auto problem = RestirBuffers::tooLargeFor(e.device(), std::uint64_t(width) * height))
+            throw DeviceError(*problem);
+    e.prepareTarget(width, height, restirDi);
+    if (e.restir)
+        e.restir->history = false;
     e.uniforms = e.tracer.uniforms(e.tracer.scene()->camera, settings, {width, height});
     e.frameStages.clear();
     const auto compileStart = std::chrono::steady_clock::now();
-    e.integrator = e.tracer.integratorFor(e.uniforms, std::uint64_t(width) * height * settings.trueSpp());
+    // restir-di runs its own two passes (RestirPipeline), whatever the integrator setting.
+    e.integrator = restirDi ? GpuIntegrator::Megakernel
+                            : e.tracer.integratorFor(e.uniforms, std::uint64_t(width) * height * settings.trueSpp());
     e.tracer.prepare(e.uniforms, e.integrator); // the compilation stays out of the render's time
     e.frameStages["pipeline_host"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - compileStart).count();
@@ -295,6 +393,8 @@ BatchResult GpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
     Impl& e = *m_impl;
     if (!e.target || e.descriptors.set == VK_NULL_HANDLE)
         throw UsageError("GpuEngine::traceSamples called before beginFrame");
+    if (e.restir)
+        return e.traceRestir(firstSample, count, control);
     // One submit per band of rows, each about kBatchTargetSeconds: the render driver sizes batches by time
     // but no smaller than one sample per pixel, which on lavapipe is seconds for a 200x200 image of a heavy
     // scene. Cancellation is polled between bands; a batch cancelled part way is put back from the snapshot
@@ -353,7 +453,7 @@ std::string GpuEngine::frameConfiguration() const
         return {};
     const SceneTracer& t = m_impl->tracer;
     return "pipeline " + t.pipeline().specializationFor(m_impl->uniforms, t.gpuScene().pipelineScene()).describe() +
-           ", integrator " + toString(m_impl->integrator);
+           ", integrator " + (m_impl->restir ? std::string("restir-di passes") : toString(m_impl->integrator));
 }
 
 std::map<std::string, double> GpuEngine::stageSeconds() const
@@ -368,6 +468,11 @@ std::map<std::string, double> GpuEngine::stageSeconds() const
     if (scene.buildTimes().tlasGpuSeconds >= 0.0)
         stages["tlas_build_gpu"] = scene.buildTimes().tlasGpuSeconds;
     return stages;
+}
+
+std::map<std::string, std::uint64_t> GpuEngine::frameBytesPerPixel() const
+{
+    return m_impl->restir ? RestirBuffers::bytesPerPixel() : std::map<std::string, std::uint64_t>{};
 }
 
 SampleTally GpuEngine::tally() const

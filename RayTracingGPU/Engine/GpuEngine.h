@@ -84,6 +84,8 @@ public:
     /// sum to the host: previews and the result) and resolve_host (sum / samples into the image). Device
     /// times are left out on a queue without timestamps.
     std::map<std::string, double> stageSeconds() const override;
+    /// restir-di's buffers per pixel while the frame runs it (RestirBuffers::bytesPerPixel), else none.
+    std::map<std::string, std::uint64_t> frameBytesPerPixel() const override;
     /// The pipeline of the frame: PipelineSpecialization::describe() ("general", or the constants in words).
     std::string frameConfiguration() const override;
 

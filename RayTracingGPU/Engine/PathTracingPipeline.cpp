@@ -5,6 +5,7 @@
 #include <spdlog/spdlog.h>
 
 #include "Engine/GpuScene.h"
+#include "Engine/RestirBuffers.h"
 #include "Engine/WaveBuffers.h"
 #include "RayTracing/RayTracingPipeline.h"
 #include "Shared/HostDevice.h"
@@ -42,7 +43,8 @@ std::vector<vk::DescriptorBinding> bindingsOf(std::uint32_t maxImages)
          {kBindingMaterials, kBindingTextures, kBindingLights, kBindingPerlin, kBindingInstances, kBindingPositions,
           kBindingUvs, kBindingTriangles, kBindingTriangleMaterials, kBindingSpheres, kBindingMedia, kBindingCounters,
           kBindingPrimitiveLights, kBindingLightAlias, kBindingLightBvh, kBindingLightBvhLeaves, kBindingWavePaths,
-          kBindingWaveQueues, kBindingWaveCounters})
+          kBindingWaveQueues, kBindingWaveCounters, kBindingRestirSurfaces, kBindingRestirTemporal, kBindingRestirFinal,
+          kBindingRestirTraced})
         add(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     add(kBindingImages, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, maxImages,
         VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT | VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT);
@@ -150,7 +152,8 @@ void PathTracingPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDe
 }
 
 void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescriptorSet set, const GpuScene& scene,
-                                           const TargetBindings& target, const WaveBuffers& waves) const
+                                           const TargetBindings& target, const WaveBuffers& waves,
+                                           const RestirBuffers& restir) const
 {
     const VkAccelerationStructureKHR tlas = scene.tlas();
     VkWriteDescriptorSetAccelerationStructureKHR tlasInfo{
@@ -180,6 +183,10 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
         {kBindingWavePaths, &waves.paths()},
         {kBindingWaveQueues, &waves.queues()},
         {kBindingWaveCounters, &waves.counters()},
+        {kBindingRestirSurfaces, &restir.surfaces()},
+        {kBindingRestirTemporal, &restir.temporal()},
+        {kBindingRestirFinal, &restir.final()},
+        {kBindingRestirTraced, &restir.traced()},
     };
     std::vector<VkDescriptorBufferInfo> bufferInfos;
     bufferInfos.reserve(std::size(storage) + 3);

@@ -25,6 +25,7 @@
 namespace rt::gpu
 {
 class GpuScene;
+class RestirBuffers;
 class WaveBuffers;
 
 /// Every stage of the path tracer: the ray-tracing stages and the wavefront's compute kernels. Set 0 and the
@@ -34,13 +35,14 @@ inline constexpr VkShaderStageFlags kPathTracerStages =
     VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_COMPUTE_BIT;
 
 /// Where a render writes: bound to kBindingAccumulation, kBindingCompensation, kBindingUniforms and
-/// kBindingCounters.
+/// kBindingCounters, and restir-di's buffers to kBindingRestirSurfaces .. kBindingRestirTraced.
 struct TargetBindings
 {
     VkImageView accumulation = VK_NULL_HANDLE; // rgba32f storage image in GENERAL layout
     VkImageView compensation = VK_NULL_HANDLE; // rgba32f storage image in GENERAL layout, the sum's Kahan term
     VkBuffer uniforms = VK_NULL_HANDLE; // RenderUniforms
     VkBuffer counters = VK_NULL_HANDLE; // SampleCounters
+    const RestirBuffers* restir = nullptr; // the frame's, for restir-di; null: the tracer's of one pixel
 };
 
 /// What a launch needs to know of the scene on the device (GpuScene::pipelineScene()).
@@ -89,9 +91,9 @@ public:
     /// Size of the variable-count sampler array (the most images a scene may have).
     std::uint32_t maxImages() const { return m_maxImages; }
 
-    /// Points every binding of `set` at the resources of `scene`, `target` and `waves`.
+    /// Points every binding of `set` at the resources of `scene`, `target`, `waves` and `restir`.
     void writeDescriptors(const vk::Device& device, VkDescriptorSet set, const GpuScene& scene,
-                          const TargetBindings& target, const WaveBuffers& waves) const;
+                          const TargetBindings& target, const WaveBuffers& waves, const RestirBuffers& restir) const;
 
     /// Records launches over `extent` tracing `count` camera samples per pixel, sample indices from
     /// `firstSample` on, at most `samplesPerLaunch` of them per launch (each thread loops over its samples:

@@ -2,6 +2,7 @@
 
 #include "Engine/GpuScene.h"
 #include "Render/RenderUniforms.h"
+#include "Engine/RestirPipeline.h"
 #include "Engine/WavefrontPipeline.h"
 #include "Error.h"
 
@@ -14,7 +15,7 @@ SceneTracer::SceneTracer(const vk::Device& device, const vk::CommandPool& pool, 
                          Specialize specialize, GpuIntegrator integrator, std::uint32_t waveCapacity)
     : m_device(&device), m_pool(&pool), m_shaderDir(std::move(shaderDir)),
       m_pipeline(device, m_shaderDir, RayGenVariant::Radiance, specialize), m_integrator(GpuIntegrator::Megakernel),
-      m_waves(device, 1)
+      m_waves(device, 1), m_noRestir(device, 1)
 {
     setIntegrator(integrator, waveCapacity);
 }
@@ -109,7 +110,7 @@ TracingDescriptors SceneTracer::makeDescriptors(const TargetBindings& target) co
     const auto imageCount = static_cast<std::uint32_t>(scene.imageViews().size());
     TracingDescriptors d{vk::DescriptorPool(*m_device, m_pipeline.bindings(), imageCount)};
     d.set = d.pool.allocate(m_pipeline.setLayout(), imageCount);
-    m_pipeline.writeDescriptors(*m_device, d.set, scene, target, m_waves);
+    m_pipeline.writeDescriptors(*m_device, d.set, scene, target, m_waves, target.restir ? *target.restir : m_noRestir);
     return d;
 }
 
@@ -120,8 +121,17 @@ shader::RenderUniforms SceneTracer::uniforms(const CameraDesc& camera, const Ren
     return makeUniforms(*m_sceneDesc, camera, settings, extent.width, extent.height);
 }
 
+const RestirPipeline& SceneTracer::restir() const
+{
+    if (!m_restir)
+        m_restir = std::make_unique<RestirPipeline>(*m_device, m_shaderDir, m_pipeline);
+    return *m_restir;
+}
+
 bool SceneTracer::prepare(const shader::RenderUniforms& uniforms, GpuIntegrator integrator) const
 {
+    if (uniforms.estimator == Estimator::RestirDi)
+        return restir().prepare(uniforms, gpuScene().pipelineScene());
     if (integrator == GpuIntegrator::Wavefront)
         return m_wavefront->prepare(uniforms, gpuScene().pipelineScene());
     return m_pipeline.prepare(uniforms, gpuScene().pipelineScene());

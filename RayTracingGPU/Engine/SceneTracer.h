@@ -13,6 +13,7 @@
 
 #include "Engine/GpuIntegrator.h"
 #include "Engine/PathTracingPipeline.h"
+#include "Engine/RestirBuffers.h"
 #include "Engine/WaveBuffers.h"
 #include "Render/RenderSettings.h"
 #include "Scene/Scene.h"
@@ -23,6 +24,7 @@
 namespace rt::gpu
 {
 class GpuScene;
+class RestirPipeline;
 class WavefrontPipeline;
 
 /// A descriptor set of the pipeline's set 0 and the pool it lives in (freed together).
@@ -91,10 +93,14 @@ public:
     const WavefrontPipeline* wavefront() const { return m_wavefront.get(); }
     const WaveBuffers& waves() const { return m_waves; }
     /// Compiles the pipeline a render with `uniforms` of the current scene needs on `integrator`
-    /// (integratorFor; PathTracingPipeline::prepare); true when it compiled one.
+    /// (integratorFor; PathTracingPipeline::prepare), or restir-di's (RestirPipeline) for that estimator; true
+    /// when it compiled one.
     bool prepare(const shader::RenderUniforms& uniforms, GpuIntegrator integrator) const;
+    /// restir-di's passes (made at the first use). Throws rt::AssetError, rt::DeviceError as the constructor.
+    const RestirPipeline& restir() const;
 
-    /// Set 0 for the current scene and `target`. Throws rt::UsageError before setScene.
+    /// Set 0 for the current scene and `target` (restir-di's buffers: target.restir, else one pixel's). Throws
+    /// rt::UsageError before setScene.
     TracingDescriptors makeDescriptors(const TargetBindings& target) const;
     /// The uniforms of an image of `extent` seen by `camera` with `settings` (the current scene's background,
     /// light count).
@@ -116,6 +122,8 @@ private:
     PathTracingPipeline m_pipeline;
     GpuIntegrator m_integrator;
     WaveBuffers m_waves; // one path's worth for the megakernel: the descriptors name them either way
+    RestirBuffers m_noRestir; // one pixel's: what the descriptors of a frame without restir-di name
+    mutable std::unique_ptr<RestirPipeline> m_restir;
     std::unique_ptr<WavefrontPipeline> m_wavefront; // made the first time the wavefront may run, then kept
     bool m_wavesReady = false; // the wavefront may run: the device has what it needs and its memory
     const Scene* m_sceneDesc = nullptr;

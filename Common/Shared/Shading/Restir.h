@@ -7,8 +7,11 @@
 // Candidates come from the render's light selection and sampler, so their area pdf is
 // p(y) = pmf pdf_omega |cos theta_y| / |y - x|^2 and their resampling weight p-hat / p needs no distance.
 // The engines' passes: candidates and temporal reuse, then spatial reuse and shading (RayTracingCPU/Integrator/
-// RestirPasses.cpp on the CPU). A host provides restirVisible(v, point, time, mediumSeed): whether the shadow ray
-// restirShadowRay(v, point) of a camera sample with that shutter time and medium seed reaches the point.
+// RestirPasses.cpp on the CPU, Shaders/Restir/ on the GPU). A host provides
+//   restirVisible(v, point, pixel, sampleIndex): whether the shadow ray restirShadowRay(v, point) reaches the
+//     point, traced as camera sample `sampleIndex` of `pixel` traces its rays (its shutter time, its medium seed);
+// and, for combineReservoirs, the inputs of the combination in progress:
+//   restirInputReservoir(i), restirInputVertex(i) (i >= 1), restirInputPixel(i), restirInputSample(i).
 #ifndef RT_SHADING_RESTIR_H
 #define RT_SHADING_RESTIR_H
 
@@ -19,6 +22,7 @@
 #include "Shared/LightSelection.h"
 #include "Shared/PathState.h"
 #include "Shared/PreciseMath.h"
+#include "Shared/Random.h"
 #include "Shared/RayOffset.h"
 #include "Shared/Restir.h"
 #include "Shared/Shading/DirectLighting.h"
@@ -161,14 +165,64 @@ RT_FN ShadowRay restirShadowRay(RT_IN(RestirVertex) v, vec3 point)
     return shadow;
 }
 
-/// p-hat_v(y) V_v(y): the target of point `point` on light `light` at vertex v if v sees it (a shadow ray with the
-/// vertex's camera sample's `time` and `mediumSeed`, traced by the host's restirVisible), else 0. Pairwise MIS and
+/// p-hat_v(y) V_v(y): the target of point `point` on light `light` at vertex v if v sees it (a shadow ray traced as
+/// camera sample `sampleIndex` of `pixel`, whose path found v: the host's restirVisible), else 0. Pairwise MIS and
 /// the combinations' resampling weights read targets with visibility: a point occluded where it would be reused
 /// is never chosen there, and never weighs on the points that are (docs/RESTIR.md).
-RT_FN float visibleTarget(RT_IN(RestirVertex) v, uint light, vec3 point, float time, uint mediumSeed)
+RT_FN float visibleTarget(RT_IN(RestirVertex) v, uint light, vec3 point, uvec2 pixel, uint sampleIndex)
 {
     const float target = luminance(restirIntegrand(v, light, point));
-    return target > 0.0f && restirVisible(v, point, time, mediumSeed) ? target : 0.0f;
+    return target > 0.0f && restirVisible(v, point, pixel, sampleIndex) ? target : 0.0f;
+}
+
+/// Combines the host's inputs [0, n) at vertex q, input 0's (the canonical input, q = its vertex), with `rng`:
+/// with pairwise MIS and targets that include visibility (2 (n - 1) shadow rays at most: Shared/Restir.h,
+/// docs/RESTIR.md), or, when uniforms.restirBiased, Bitterli et al. 2020's Alg. 4 (weights M p-hat_q W, W
+/// normalised by the inputs' summed M, the chosen point then tested for visibility at q). Every input draws one
+/// number, in order. Temporal reuse is the case n = 2 (Alg. 5 with its pixel's last reservoir), spatial reuse
+/// n = 1 + the neighbours kept.
+RT_FN Reservoir combineReservoirs(RT_IN(RestirVertex) q, int n, RT_INOUT(Rng) rng)
+{
+    RestirCombination c = beginCombination();
+    const Reservoir own = restirInputReservoir(0);
+    if (uniforms.restirBiased != 0u)
+    {
+        offerInput(c, own, own.target, own.count, 0, nextFloat(rng));
+        for (int i = 1; i < n; ++i)
+        {
+            const Reservoir r = restirInputReservoir(i);
+            const float target = r.weight > 0.0f ? luminance(restirIntegrand(q, r.light, r.point)) : r.target;
+            offerInput(c, r, target, r.count, i, nextFloat(rng));
+        }
+        Reservoir combined = finishCombination(c, c.result.count);
+        if (c.chosen > 0 && !restirVisible(q, combined.point, restirInputPixel(0), restirInputSample(0)))
+            combined.weight = 0.0f;
+        return combined;
+    }
+    const float k = float(n - 1);
+    float canonicalMis = 0.0f;
+    if (own.weight > 0.0f)
+    {
+        canonicalMis = n == 1 ? 1.0f : 0.0f;
+        for (int i = 1; i < n; ++i)
+            canonicalMis += pairwiseCanonicalTerm(k, own.count, own.target, restirInputReservoir(i).count,
+                                                  visibleTarget(restirInputVertex(i), own.light, own.point,
+                                                                restirInputPixel(i), restirInputSample(i)));
+    }
+    offerInput(c, own, own.target, canonicalMis, 0, nextFloat(rng));
+    for (int i = 1; i < n; ++i)
+    {
+        const Reservoir r = restirInputReservoir(i);
+        float targetHere = 0.0f;
+        float mis = 0.0f;
+        if (r.weight > 0.0f)
+        {
+            targetHere = visibleTarget(q, r.light, r.point, restirInputPixel(0), restirInputSample(0));
+            mis = pairwiseNeighbourMis(k, r.count, r.target, own.count, targetHere);
+        }
+        offerInput(c, r, targetHere, mis, i, nextFloat(rng));
+    }
+    return finishCombination(c, 1.0f);
 }
 
 /// Whether a neighbour's vertex b may be reused at vertex a (Bitterli et al. 2020, §6): both exist, their shading
