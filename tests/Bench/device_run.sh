@@ -12,6 +12,7 @@
 #   tests/Bench/device_run.sh specialization  issue 11: every scene with the general, strategy-only and
 #                                      strategy + features pipelines (600 px, 256 spp; SPEC_WIDTH, SPEC_SPP,
 #                                      ROUNDS), then the figure: cornell-box-lights 600x600, 1000 spp, mixture
+#   tests/Bench/device_run.sh restir   issue 36: restir-di against nee-mis at equal time (tests/Bench/restir.sh)
 #   tests/Bench/device_run.sh ab [RENDERS_FILE]  the baseline build (.devcarry/baseline, BASELINE_BIN of
 #                                      device_carry.sh) against this one, render by render (gpu_ab.sh)
 #   tests/Bench/device_run.sh bars     issue 9's efficiency bars in one run: cornell-box-lights (mixture
@@ -156,6 +157,18 @@ auto)
         (cd /tmp/auto && tar -czf "$out/auto.tar.gz" ./*)
     done
     python3 tests/Bench/auto_strategy_table.py /tmp/auto | tee "$out/auto.md"
+    ;;
+restir)
+    # Issue 36: restir-di against nee-mis with the light BVH at equal time on the GPU (tests/Bench/restir.sh): WIDTH
+    # (400) px, MS (1000) ms a render, SEEDS (4) seeds, against a nee-mis reference of REF_SPP (4096) spp, on SCENES.
+    # The archive is written again after each scene (a run past the time limit still brings back what it did).
+    rm -rf /tmp/restir && mkdir -p /tmp/restir
+    for scene in ${SCENES:-lamp-room many-lights:10000 cornell-box-lights}; do
+        bash tests/Bench/restir.sh "$bin" /tmp/restir gpu "${WIDTH:-400}" "${MS:-1000}" "${SEEDS:-4}" \
+            "${REF_SPP:-4096}" "$scene"
+        cat /tmp/restir/*.txt >"$out/restir.txt"
+        (cd /tmp/restir && tar -czf "$out/restir.tar.gz" ./*)
+    done
     ;;
 ab)
     ROUNDS=${ROUNDS:-3} bash tests/Bench/gpu_ab.sh .devcarry/baseline "$bin" /tmp/ab ${2:-} | tee "$out/ab.txt"

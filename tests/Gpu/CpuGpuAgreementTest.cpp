@@ -223,6 +223,18 @@ std::vector<AgreementCase> cases()
     return out;
 }
 
+/// cases() and restir-di on every scene lit by emitters (issue 36): both engines draw the same numbers for it, so
+/// its images agree pixel by pixel where no medium is (GpuRestirTest); in the smoke they agree in expectation.
+std::vector<AgreementCase> heavyCases()
+{
+    std::vector<AgreementCase> out = cases();
+    for (const char* id : {"cornell-box-lights", "many-lights", "lamp-room", "glossy-cornell", "veach-mis",
+                           "rect-light-closeup", "sphere-light-closeup", "triangle-lights", "rtnw-simple-light",
+                           "rtrol-cornell-box", "rtnw-cornell-smoke"})
+        out.push_back({id, Estimator::RestirDi});
+    return out;
+}
+
 std::string caseName(const ::testing::TestParamInfo<AgreementCase>& param)
 {
     const AgreementCase& c = param.param;
@@ -241,6 +253,6 @@ std::string caseName(const ::testing::TestParamInfo<AgreementCase>& param)
 }
 
 INSTANTIATE_TEST_SUITE_P(Catalogue, GpuCpuAgreement, ::testing::ValuesIn(cases()), caseName);
-INSTANTIATE_TEST_SUITE_P(Heavy, GpuCpuAgreementFine, ::testing::ValuesIn(cases()), caseName);
+INSTANTIATE_TEST_SUITE_P(Heavy, GpuCpuAgreementFine, ::testing::ValuesIn(heavyCases()), caseName);
 } // namespace
 } // namespace rt::gpu::test
