@@ -6,7 +6,8 @@
 #   tests/Bench/device_run.sh tests    the GPU test suite (but its heavy part) and the apps' smoke tests
 #   tests/Bench/device_run.sh samplers the light samplers at equal time on the light scenes (issue 37)
 #   tests/Bench/device_run.sh auto     --strategy auto against a full --compare at equal time (auto_strategy.sh)
-#   tests/Bench/device_run.sh heavy    the heavy part: CPU/GPU agreement of every scene at 128 px, 64 spp
+#   tests/Bench/device_run.sh heavy    the heavy part: CPU/GPU agreement of every scene at 128 px, 64 spp (FILTER:
+#                                      a gtest filter within it)
 #   tests/Bench/device_run.sh table    thesis Table 5.4 redone: cornell-box-lights 600x600, depth 50, mixture
 #   tests/Bench/device_run.sh estimators  the same scene on the GPU with each estimator against one reference
 #   tests/Bench/device_run.sh specialization  issue 11: every scene with the general, strategy-only and
@@ -52,7 +53,7 @@ tests)
     RT_GLTF_MODELS=$PWD/.devcarry/gltf bash tests/Cli/scene_files.sh "$bin/ray-tracing-gpu" . | grep -v "^ok"
     ;;
 heavy)
-    "$bin/rt_gpu_tests" --gtest_brief=1 --gtest_filter='Heavy/*' 2>&1 | tail -40
+    "$bin/rt_gpu_tests" --gtest_brief=1 --gtest_filter="${FILTER:-Heavy/*}" 2>&1 | tail -40
     ;;
 table)
     # The thesis' estimator (book 3's mixture) with the random samples of the table's first runs.
