@@ -98,8 +98,6 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
     w.actions = rt::gpu::gui::parseActions(flags.actions);
     rt::CommandLineRender job = rt::resolveCommandLine(options);
     const rt::RenderSettings& settings = job.request.settings;
-    if (settings.estimator == rt::Estimator::RestirDi)
-        throw rt::UsageError("the gpu engine does not run --estimator restir-di yet: render it with ray-tracing-cpu");
     rt::gpu::gui::ImageSettings& image = w.initial.image;
     image.request = job.request;
     // The window traces progressively: random jitter per pass, or Sobol's points (indexed by the sample).

@@ -5,7 +5,10 @@
 #include <cstring>
 
 #include "Engine/GpuEngine.h"
+#include "Engine/GpuScene.h"
 #include "Engine/RenderLimits.h"
+#include "Engine/RestirPipeline.h"
+#include "Error.h"
 #include "Shared/HostDevice.h"
 #include "Vulkan/Barriers.h"
 #include "Vulkan/CommandBuffer.h"
@@ -56,15 +59,34 @@ void ProgressiveFrame::prepare(VkExtent2D extent)
                            VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
         m_costView = vk::ImageView(device, m_cost);
         m_imagesUndefined = true;
+        m_restir.reset(); // made again at this size when a frame asks for it
     }
+    makeSets();
+    if (m_costPipeline)
+        writeCostDescriptors();
+}
 
+void ProgressiveFrame::makeSets()
+{
     // Set 0 follows the scene (its image count is the set's variable count) and the images.
     m_sets.clear();
     for (const vk::Buffer& uniforms : m_uniforms)
-        m_sets.push_back(m_engine->tracer().makeDescriptors(
-            {m_accumulationView.Handle(), m_compensationView.Handle(), uniforms.Handle(), m_counters.Handle()}));
-    if (m_costPipeline)
-        writeCostDescriptors();
+        m_sets.push_back(m_engine->tracer().makeDescriptors({m_accumulationView.Handle(), m_compensationView.Handle(),
+                                                             uniforms.Handle(), m_counters.Handle(), m_restir.get()}));
+}
+
+void ProgressiveFrame::ensureRestir()
+{
+    const VkExtent2D size = extent();
+    if (m_restir)
+        return;
+    const vk::Device& device = m_engine->context().device();
+    if (const auto problem = RestirBuffers::tooLargeFor(device, std::uint64_t(size.width) * size.height))
+        throw DeviceError(*problem);
+    vkDeviceWaitIdle(device.Handle()); // the frames in flight use the sets made again below
+    m_restir = std::make_unique<RestirBuffers>(device, std::uint64_t(size.width) * size.height);
+    m_restirHistory = false;
+    makeSets();
 }
 
 void ProgressiveFrame::createCostResources()
@@ -135,6 +157,7 @@ void ProgressiveFrame::recordClear(VkCommandBuffer cmd)
                   VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     m_imagesUndefined = false;
+    m_restirHistory = false;
 }
 
 shader::RenderUniforms ProgressiveFrame::uniformsOf(const FrameRequest& request) const
@@ -170,7 +193,20 @@ void ProgressiveFrame::recordSamples(VkCommandBuffer cmd, std::uint32_t slot, co
     // After the previous frame's display reads (write-after-read) and its samples or clears.
     vk::memoryBarrier(cmd, kImageStages, VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-    if (request.cost)
+    if (request.settings.estimator == Estimator::RestirDi)
+    {
+        ensureRestir();
+        const RestirPipeline& restir = m_engine->tracer().restir();
+        const PipelineScene& scene = m_engine->tracer().gpuScene().pipelineScene();
+        for (std::uint32_t s = 0; s < count; ++s)
+        {
+            for (const RestirPass pass : {RestirPass::Candidates, RestirPass::Shade})
+                restir.recordPass(cmd, {&m_sets.at(slot).set, 1}, uniforms, scene, pass, firstSample + s, size, 0, 1,
+                                  m_restirHistory);
+            m_restirHistory = true;
+        }
+    }
+    else if (request.cost)
     {
         if (!m_costPipeline)
             createCostResources();

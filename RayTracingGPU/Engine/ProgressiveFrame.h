@@ -6,7 +6,9 @@
 // flight has its own uniforms and descriptor sets, so the camera and settings written for frame n + 1 never
 // change what frame n is still reading. With the cost on, the timed ray-generation shader also sums each
 // pixel's shader-clock ticks into a cost image (the window's heatmap). A display pass reads both images where
-// they are (GENERAL layout).
+// they are (GENERAL layout). restir-di runs its two passes per sample (RestirPipeline) over buffers of the image's
+// size, made when a frame first asks for it; the history starts again at every clear (a new image, a moved
+// camera). It has no heatmap: a frame that asks for the cost with restir-di traces without it.
 #pragma once
 
 #include <cstdint>
@@ -18,6 +20,7 @@
 #include "Scene/Camera.h"
 #include "Shared/HostDevice.h"
 #include "Engine/GpuIntegrator.h"
+#include "Engine/RestirBuffers.h"
 #include "Engine/SceneTracer.h"
 #include "Vulkan/Buffer.h"
 #include "Vulkan/DescriptorPool.h"
@@ -90,6 +93,11 @@ private:
     GpuIntegrator integratorOf(const shader::RenderUniforms& uniforms, int spp) const;
     void createCostResources();
     void writeCostDescriptors() const;
+    /// Set 0 of every slot for the images, the slot's uniforms and restir-di's buffers if made.
+    void makeSets();
+    /// restir-di's buffers of extent(), made (and the sets with them) the first time a frame needs them: waits for
+    /// the device, so that no frame in flight still uses the old sets.
+    void ensureRestir();
 
     const GpuEngine* m_engine;
     std::vector<vk::Buffer> m_uniforms; // per slot
@@ -102,6 +110,8 @@ private:
     vk::ImageView m_costView;
     bool m_imagesUndefined = true; // not cleared since they were created
     std::vector<TracingDescriptors> m_sets; // per slot
+    std::unique_ptr<RestirBuffers> m_restir; // restir-di's, of extent(), once a frame has asked for it
+    bool m_restirHistory = false; // its final reservoirs hold an iteration of the current image
     // The heatmap's pipeline and set kSetCost per slot, made when first asked for (lavapipe compiles a
     // ray-tracing pipeline for seconds at its first launch).
     std::unique_ptr<PathTracingPipeline> m_costPipeline;

@@ -91,13 +91,6 @@ bool Controls::setSetting(const Setting& setting, std::string_view value)
         spdlog::warn("{}", m_state->message);
         return false;
     }
-    if (changed.estimator == Estimator::RestirDi)
-    {
-        // The GPU engine has no reservoir passes yet (issue 36): its shaders would run nee-mis under this name.
-        m_state->message = "restir-di runs on the CPU engines only for now (ray-tracing-cpu)";
-        spdlog::warn("{}", m_state->message);
-        return false;
-    }
     m_state->image.request.settings = changed;
     return true;
 }

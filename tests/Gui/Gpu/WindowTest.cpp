@@ -330,6 +330,29 @@ TEST(GpuWindow, AccumulatedImageMatchesTheSettingsShown)
     EXPECT_LE(largest, 1e-5f);
 }
 
+TEST(GpuWindow, RestirDiAccumulatesTheHeadlessImage)
+{
+    // The panel's estimator switched to restir-di (issue 36): the window runs its two passes per sample with a
+    // history that starts at the switch's clear, and its image is the headless render of restir-di, bit for bit.
+    const ::rt::test::ScratchDir dir;
+    RT_RUN_WINDOW(run, "--width 96 --aspect 1.5 --validation --scene cornell-box-lights --spp 4 --depth 8 --seed 3 "
+                       "--frames 1 --actions 'frames=2;estimator=restir-di;frames=8;save=" +
+                           (dir / "window.png").string() + "'");
+    EXPECT_NE(run.output.find("(4 spp)"), std::string::npos) << run.output;
+    const AppRun headless = runApp("--headless --quiet --scene cornell-box-lights --width 96 --aspect 1.5 --spp 4 "
+                                   "--depth 8 --seed 3 --estimator restir-di --hdr '" +
+                                   (dir / "headless.pfm").string() + "'");
+    ASSERT_EQ(headless.status, 0) << headless.output;
+    const Image window = readPfm(dir / "window.pfm");
+    const Image reference = readPfm(dir / "headless.pfm");
+    ASSERT_EQ(window.pixelCount(), reference.pixelCount());
+    float largest = 0.0f;
+    for (std::size_t i = 0; i < window.pixelCount(); ++i)
+        largest = std::max(largest, glm::length(window.data()[i] - reference.data()[i]));
+    EXPECT_LE(largest, 1e-5f);
+    EXPECT_GT(reference.mean().x, 0.0f);
+}
+
 TEST(GpuWindow, RoughnessSliderRendersWhatTheFlagRenders)
 {
     // roughness-scale=X is what the panel's slider calls: the scene is built again with every microfacet alpha
