@@ -3,7 +3,8 @@
 // dispatch into an RGBA32F accumulation image (each launch loops over its samples per pixel; one sample per
 // launch for scenes with moving spheres), read back for previews and at the end. A batch whose one
 // submission would be long is split into bands of rows (about kBatchTargetSeconds each), so that cancel,
-// polled between them, is never far away.
+// polled between them, is never far away. restir-di runs its own passes instead (RestirPipeline): per sample, the
+// candidates pass over every band, then the shading pass, over per-pixel buffers kept across batches (RestirBuffers).
 // docs/GPU.md describes the mapping of the scene, the shader groups and the bindings.
 #pragma once
 
