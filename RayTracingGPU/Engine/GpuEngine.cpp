@@ -30,6 +30,8 @@ namespace
 /// of a segment whose queue is empty cost the H100 about 25 us each.
 constexpr std::uint32_t kFirstWaveSegments = 8;
 constexpr std::uint32_t kWaveSegmentChunk = 8;
+/// Timestamp queries: 0-1 around a dispatch, 2-3 around a clear or readback, from 4 on around restir-di's passes.
+constexpr std::uint32_t kRestirQueries = 4;
 
 TargetLimits targetLimits(const vk::Device& device)
 {
@@ -61,7 +63,7 @@ struct GpuEngine::Impl
           tracer(context.device(), context.commandPool(),
                  options.shaderDir.empty() ? executableDir() / "shaders" : options.shaderDir, options.specialize,
                  options.integrator, options.wavePaths),
-          timestamps(context.device(), 4),
+          timestamps(context.device(), kRestirQueries + std::size(kRestirPasses) + 1),
           pathsPerBatch(options.pathsPerBatch > 0 ? options.pathsPerBatch
                         : context.device().properties().type == vk::DeviceType::Cpu ? kPathsPerBatchCpu
                                                                                     : kPathsPerBatchGpu)
@@ -205,38 +207,108 @@ struct GpuEngine::Impl
             frameStages[stage] += timestamps.secondsBetween(2, device().properties().limits.timestampPeriod);
     }
 
-    /// restir-di's batch: per sample, an iteration of two passes over the image (RestirPipeline), each in bands
-    /// of rows with cancellation polled between them. A batch cancelled after its first shading band is put back
-    /// from the snapshot that band took, counters too; a cancelled iteration leaves no history (the next one
-    /// starts without temporal reuse, as the CPU's does).
+    /// Records `passes` of restir-di's sample `sampleIndex` over `rows` rows from position `row` on (row order
+    /// `interleave`) in one submission, waited for; `snapshot` first copies the accumulation image to the readback
+    /// buffer. Adds each pass's device seconds to frameStages (timestamps 4 .. 4 + passes) and returns the device
+    /// seconds (negative without timestamps) and the host seconds.
+    std::pair<double, double> submitRestir(std::span<const RestirPass> passes, std::uint32_t sampleIndex,
+                                           std::uint32_t row, std::uint32_t rows, std::uint32_t interleave,
+                                           bool snapshot)
+    {
+        const RestirPipeline& pipeline = tracer.restir();
+        const PipelineScene& scene = tracer.gpuScene().pipelineScene();
+        const bool timed = device().properties().timestampValidBits > 0;
+        const auto count = static_cast<std::uint32_t>(passes.size());
+        const auto start = std::chrono::steady_clock::now();
+        vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) {
+            if (snapshot)
+                target->recordReadback(cmd);
+            if (timed)
+            {
+                vkCmdResetQueryPool(cmd, timestamps.Handle(), kRestirQueries, count + 1);
+                vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps.Handle(), kRestirQueries);
+            }
+            for (std::uint32_t k = 0; k < count; ++k)
+            {
+                pipeline.recordPass(cmd, {&descriptors.set, 1}, uniforms, scene, passes[k], sampleIndex,
+                                    {target->width(), rows}, row, interleave, restir->history);
+                if (timed)
+                    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(),
+                                        kRestirQueries + k + 1);
+            }
+            vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
+                              VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT); // the NaN/Inf counters
+        });
+        const double hostSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (!timed)
+            return {-1.0, hostSeconds};
+        const double secondsPerTick = double(device().properties().limits.timestampPeriod) * 1e-9;
+        const std::vector<std::uint64_t> ticks = timestamps.ticks(kRestirQueries, count + 1);
+        const auto between = [&](std::uint32_t a, std::uint32_t b) {
+            return ticks[b] >= ticks[a] ? double(ticks[b] - ticks[a]) * secondsPerTick : 0.0;
+        };
+        for (std::uint32_t k = 0; k < count; ++k)
+            frameStages[passes[k] == RestirPass::Candidates ? "restir_candidates_gpu"
+                        : passes[k] == RestirPass::Spatial  ? "restir_spatial_gpu"
+                                                            : "restir_shade_gpu"] += between(k, k + 1);
+        const double seconds = between(0, count);
+        frameStages["trace_gpu"] += seconds;
+        return {seconds, hostSeconds};
+    }
+
+    /// restir-di's batch: per sample, an iteration of three passes over the image (RestirPipeline). Where a band
+    /// would cover the whole image the three are one submission; else each pass runs in bands of rows, with
+    /// cancellation polled between them. A batch cancelled after its first shading band is put back from the
+    /// snapshot that band took, counters too; a cancelled iteration leaves no history (the next one starts without
+    /// temporal reuse, as the CPU's does).
     BatchResult traceRestir(std::uint32_t firstSample, std::uint32_t count, RenderControl& control)
     {
         const std::uint32_t height = target->height();
         const std::uint32_t width = target->width();
         const shader::SampleCounters countersBefore = target->readCounters();
-        const PipelineScene& scene = tracer.gpuScene().pipelineScene();
-        const RestirPipeline& pipeline = tracer.restir();
-        const bool timed = device().properties().timestampValidBits > 0;
         double deviceSeconds = 0.0;
+        bool deviceTimed = true;
         bool touched = false; // the accumulation image has changed since the batch began
+        const auto cancelled = [&] {
+            if (!control.cancelRequested())
+                return false;
+            restir->history = false;
+            if (touched)
+            {
+                restore();
+                target->writeCounters(countersBefore);
+            }
+            return true;
+        };
+        const auto add = [&](std::pair<double, double> seconds) {
+            deviceTimed = deviceTimed && seconds.first >= 0.0;
+            deviceSeconds += seconds.first;
+            return seconds.second;
+        };
         for (std::uint32_t s = 0; s < count; ++s)
         {
             const std::uint32_t sampleIndex = firstSample + s;
-            for (const RestirPass pass : {RestirPass::Candidates, RestirPass::Shade})
+            const std::uint32_t wholeRows =
+                fixedBandRows > 0 ? std::min(fixedBandRows, height) : bands.nextRows(1, height);
+            if (wholeRows >= height)
+            {
+                if (cancelled())
+                    return {.complete = false};
+                const bool snapshot = !touched && s + 1 < count;
+                const double host = add(submitRestir(kRestirPasses, sampleIndex, 0, height, 1, snapshot));
+                touched = true;
+                control.advance(std::uint64_t(width) * height);
+                bands.record(height, 1, host);
+                restir->history = true;
+                continue;
+            }
+            for (const RestirPass pass : kRestirPasses)
             {
                 std::uint32_t interleave = 1;
                 for (std::uint32_t row = 0; row < height;)
                 {
-                    if (control.cancelRequested())
-                    {
-                        restir->history = false;
-                        if (touched)
-                        {
-                            restore();
-                            target->writeCounters(countersBefore);
-                        }
+                    if (cancelled())
                         return {.complete = false};
-                    }
                     const std::uint32_t rows = fixedBandRows > 0 ? std::min(fixedBandRows, height - row)
                                                                  : bands.nextRows(1, height - row);
                     if (row == 0)
@@ -244,45 +316,19 @@ struct GpuEngine::Impl
                     // Only a batch that may still be cancelled once this band has run needs the image as it was.
                     const bool snapshot =
                         !touched && pass == RestirPass::Shade && row == 0 && (rows < height || s + 1 < count);
-                    const auto start = std::chrono::steady_clock::now();
-                    vk::submitAndWait(device(), context.commandPool(), [&](VkCommandBuffer cmd) {
-                        if (snapshot)
-                            target->recordReadback(cmd);
-                        if (timed)
-                        {
-                            vkCmdResetQueryPool(cmd, timestamps.Handle(), 0, 2);
-                            vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps.Handle(), 0);
-                        }
-                        pipeline.recordPass(cmd, {&descriptors.set, 1}, uniforms, scene, pass, sampleIndex,
-                                            {width, rows}, row, interleave, restir->history);
-                        if (timed)
-                            vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 1);
-                        vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
-                                          VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT); // the NaN/Inf counters
-                    });
-                    const double hostSeconds =
-                        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-                    if (timed)
-                    {
-                        const double seconds =
-                            timestamps.secondsBetween(0, device().properties().limits.timestampPeriod);
-                        deviceSeconds += seconds;
-                        frameStages[pass == RestirPass::Candidates ? "restir_candidates_gpu" : "restir_shade_gpu"] +=
-                            seconds;
-                        frameStages["trace_gpu"] += seconds;
-                    }
+                    const double host = add(submitRestir({&pass, 1}, sampleIndex, row, rows, interleave, snapshot));
                     if (pass == RestirPass::Shade)
                     {
                         touched = true;
                         control.advance(std::uint64_t(width) * rows);
                     }
                     row += rows;
-                    bands.record(rows, 1, hostSeconds);
+                    bands.record(rows, 1, host);
                 }
             }
             restir->history = true;
         }
-        return {.complete = true, .deviceSeconds = timed ? deviceSeconds : -1.0};
+        return {.complete = true, .deviceSeconds = deviceTimed ? deviceSeconds : -1.0};
     }
 
     void clear()
@@ -373,7 +419,7 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     e.uniforms = e.tracer.uniforms(e.tracer.scene()->camera, settings, {width, height});
     e.frameStages.clear();
     const auto compileStart = std::chrono::steady_clock::now();
-    // restir-di runs its own two passes (RestirPipeline), whatever the integrator setting.
+    // restir-di runs its own passes (RestirPipeline), whatever the integrator setting.
     e.integrator = restirDi ? GpuIntegrator::Megakernel
                             : e.tracer.integratorFor(e.uniforms, std::uint64_t(width) * height * settings.trueSpp());
     e.tracer.prepare(e.uniforms, e.integrator); // the compilation stays out of the render's time

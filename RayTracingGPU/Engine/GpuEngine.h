@@ -4,7 +4,8 @@
 // launch for scenes with moving spheres), read back for previews and at the end. A batch whose one
 // submission would be long is split into bands of rows (about kBatchTargetSeconds each), so that cancel,
 // polled between them, is never far away. restir-di runs its own passes instead (RestirPipeline): per sample, the
-// candidates pass over every band, then the shading pass, over per-pixel buffers kept across batches (RestirBuffers).
+// candidates, spatial and shading passes, each over every band, on per-pixel buffers kept across batches
+// (RestirBuffers).
 // docs/GPU.md describes the mapping of the scene, the shader groups and the bindings.
 #pragma once
 

@@ -200,7 +200,7 @@ void ProgressiveFrame::recordSamples(VkCommandBuffer cmd, std::uint32_t slot, co
         const PipelineScene& scene = m_engine->tracer().gpuScene().pipelineScene();
         for (std::uint32_t s = 0; s < count; ++s)
         {
-            for (const RestirPass pass : {RestirPass::Candidates, RestirPass::Shade})
+            for (const RestirPass pass : kRestirPasses)
                 restir.recordPass(cmd, {&m_sets.at(slot).set, 1}, uniforms, scene, pass, firstSample + s, size, 0, 1,
                                   m_restirHistory);
             m_restirHistory = true;

@@ -6,7 +6,7 @@
 // flight has its own uniforms and descriptor sets, so the camera and settings written for frame n + 1 never
 // change what frame n is still reading. With the cost on, the timed ray-generation shader also sums each
 // pixel's shader-clock ticks into a cost image (the window's heatmap). A display pass reads both images where
-// they are (GENERAL layout). restir-di runs its two passes per sample (RestirPipeline) over buffers of the image's
+// they are (GENERAL layout). restir-di runs its three passes per sample (RestirPipeline) over buffers of the image's
 // size, made when a frame first asks for it; the history starts again at every clear (a new image, a moved
 // camera). It has no heatmap: a frame that asks for the cost with restir-di traces without it.
 #pragma once

@@ -29,11 +29,7 @@ struct RestirPipeline::Compiled
 {
     vk::Pipeline pipeline;
     HitGroupLayout hitGroups; // the pipeline's own
-    struct Tables
-    {
-        ShaderBindingTable candidates;
-        ShaderBindingTable shade;
-    };
+    using Tables = std::array<ShaderBindingTable, std::size(kRestirPasses)>; // per pass
     mutable std::map<HitGroupLayout, Tables> tables; // per scene layout
 
     const Tables& tablesFor(const vk::Device& device, const HitGroupLayout& scene) const
@@ -42,12 +38,15 @@ struct RestirPipeline::Compiled
         if (it == tables.end())
         {
             const std::vector<std::uint32_t> hitRecords = hitRecordGroups(scene, hitGroups, kMissGroupCount);
-            const std::uint32_t shadeGroup = secondRayGenGroup(hitGroups);
+            const std::uint32_t groups = extraRayGenGroup(hitGroups, 2); // the last raygen is group (.., 1)
             const VkPipeline p = pipeline.Handle();
             it = tables
-                     .emplace(scene, Tables{ShaderBindingTable(device, p, shadeGroup + 1, kMissGroupCount, hitRecords),
-                                            ShaderBindingTable(device, p, shadeGroup + 1, kMissGroupCount, hitRecords,
-                                                               shadeGroup)})
+                     .emplace(scene,
+                              Tables{ShaderBindingTable(device, p, groups, kMissGroupCount, hitRecords),
+                                     ShaderBindingTable(device, p, groups, kMissGroupCount, hitRecords,
+                                                        extraRayGenGroup(hitGroups, 0)),
+                                     ShaderBindingTable(device, p, groups, kMissGroupCount, hitRecords,
+                                                        extraRayGenGroup(hitGroups, 1))})
                      .first;
         }
         return it->second;
@@ -57,7 +56,7 @@ struct RestirPipeline::Compiled
 RestirPipeline::RestirPipeline(const vk::Device& device, const std::filesystem::path& shaderDir,
                                const PathTracingPipeline& layout)
     : m_device(&device), m_layout(&layout),
-      m_shaders(device, shaderDir, "Restir/Candidates.rgen.spv", "Restir/Shade.rgen.spv")
+      m_shaders(device, shaderDir, "Restir/Candidates.rgen.spv", {"Restir/Spatial.rgen.spv", "Restir/Shade.rgen.spv"})
 {
 }
 
@@ -92,7 +91,7 @@ void RestirPipeline::recordPass(VkCommandBuffer cmd, std::span<const VkDescripto
 {
     const Compiled& c = compiled(m_layout->specializationFor(uniforms, scene));
     const Compiled::Tables& tables = c.tablesFor(*m_device, scene.hitGroups);
-    const ShaderBindingTable& sbt = pass == RestirPass::Candidates ? tables.candidates : tables.shade;
+    const ShaderBindingTable& sbt = tables[static_cast<std::size_t>(pass)];
     const VkPipelineLayout layout = m_layout->layout().Handle();
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, c.pipeline.Handle());
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, layout, 0,
@@ -105,7 +104,7 @@ void RestirPipeline::recordPass(VkCommandBuffer cmd, std::span<const VkDescripto
     push.restirHistory = history ? 1u : 0u;
     vkCmdPushConstants(cmd, layout, kPathTracerStages, 0, sizeof(push), &push);
     vkCmdTraceRaysKHR(cmd, &sbt.raygen(), &sbt.miss(), &sbt.hit(), &sbt.callable(), extent.width, extent.height, 1);
-    // The shading pass reads the candidates pass's buffers at other pixels; the next iteration reads both.
+    // The spatial pass reads the candidates pass's buffers at other pixels; each pass reads the one before.
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                       VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 }

@@ -1,8 +1,9 @@
 // restir-di's ray-tracing pipeline (Shaders/Restir/): per specialisation (PipelineSpecialization, the megakernel's
-// key, with kSpecIdRestir = 1), one pipeline with two raygens, Restir/Candidates.rgen (group 0) and
-// Restir/Shade.rgen (the last group), over the megakernel's miss and hit stages, on PathTracingPipeline's set 0 and
-// push constants; an SBT per raygen. An iteration (one sample per pixel) is every band of the candidates pass,
-// then every band of the shading pass: spatial reuse reads the neighbours' results of the first.
+// key, with kSpecIdRestir = 1), one pipeline with three raygens, Restir/Candidates.rgen (group 0), Spatial.rgen and
+// Shade.rgen (the last groups), over the megakernel's miss and hit stages, on PathTracingPipeline's set 0 and push
+// constants; an SBT per raygen. An iteration (one sample per pixel) is every band of each pass in turn: spatial
+// reuse reads the neighbours' results of the candidates pass. Spatial reuse has a pass of its own so that the
+// shading pass's path loop does not carry the combination's registers.
 #pragma once
 
 #include <filesystem>
@@ -20,8 +21,12 @@ namespace rt::gpu
 enum class RestirPass
 {
     Candidates, // candidates, visibility, temporal reuse
-    Shade // spatial reuse, the camera path with the resampled direct light, the accumulation image
+    Spatial, // spatial reuse: the final reservoirs
+    Shade // the camera path with the resampled direct light, the accumulation image
 };
+
+/// An iteration's passes, in order.
+inline constexpr RestirPass kRestirPasses[] = {RestirPass::Candidates, RestirPass::Spatial, RestirPass::Shade};
 
 class RestirPipeline final
 {
@@ -53,7 +58,7 @@ private:
 
     const vk::Device* m_device;
     const PathTracingPipeline* m_layout;
-    PathTracingShaders m_shaders; // Candidates.rgen, the megakernel's miss and hit stages, Shade.rgen
+    PathTracingShaders m_shaders; // Candidates.rgen, the megakernel's miss and hit stages, Spatial.rgen, Shade.rgen
     mutable std::map<PipelineSpecialization, std::unique_ptr<Compiled>> m_compiled;
 };
 } // namespace rt::gpu

@@ -65,7 +65,7 @@ struct WavefrontPipeline::Compiled
 WavefrontPipeline::WavefrontPipeline(const vk::Device& device, const std::filesystem::path& shaderDir,
                                      const PathTracingPipeline& layout)
     : m_device(&device), m_layout(&layout),
-      m_rayTracingShaders(device, shaderDir, "Wavefront/Extend.rgen.spv", "Wavefront/Shadow.rgen.spv"),
+      m_rayTracingShaders(device, shaderDir, "Wavefront/Extend.rgen.spv", {"Wavefront/Shadow.rgen.spv"}),
       m_generate(device, shaderDir / "Wavefront/Generate.comp.spv"),
       m_shade(device, shaderDir / "Wavefront/Shade.comp.spv"),
       m_prepare(device, shaderDir / "Wavefront/Prepare.comp.spv"),
@@ -102,7 +102,7 @@ const WavefrontPipeline::Tables& WavefrontPipeline::tablesFor(const Compiled& c,
     if (it == c.tables.end())
     {
         const std::vector<std::uint32_t> hitGroups = hitRecordGroups(scene, c.hitGroups, kMissGroupCount);
-        const std::uint32_t shadowGroup = secondRayGenGroup(c.hitGroups);
+        const std::uint32_t shadowGroup = extraRayGenGroup(c.hitGroups, 0);
         const std::uint32_t groupCount = shadowGroup + 1;
         const VkPipeline pipeline = c.rayTracing.Handle();
         it = c.tables

@@ -55,17 +55,17 @@ constexpr Stage kStages[StageCount] = {
 } // namespace
 
 PathTracingShaders::PathTracingShaders(const vk::Device& device, const std::filesystem::path& shaderDir,
-                                       const char* rayGenFile, const char* secondRayGenFile)
+                                       const char* rayGenFile, std::initializer_list<const char*> extraRayGenFiles)
 {
     for (const Stage& s : kStages)
         m_modules.emplace_back(device, shaderDir / (s.file ? s.file : rayGenFile));
-    if (secondRayGenFile)
-        m_secondRayGen = vk::ShaderModule(device, shaderDir / secondRayGenFile);
+    for (const char* file : extraRayGenFiles)
+        m_extraRayGens.emplace_back(device, shaderDir / file);
 }
 
-std::uint32_t secondRayGenGroup(const HitGroupLayout& hitGroups)
+std::uint32_t extraRayGenGroup(const HitGroupLayout& hitGroups, std::uint32_t i)
 {
-    return 1 + kMissGroupCount + hitGroups.count();
+    return 1 + kMissGroupCount + hitGroups.count() + i;
 }
 
 vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::PipelineLayout& layout,
@@ -114,11 +114,11 @@ vk::Pipeline createPathTracingPipeline(const vk::Device& device, const vk::Pipel
         groups.back().intersectionShader = stage(MediumIntersection);
         groups.back().closestHitShader = stage(MediumHit);
     }
-    RT_CHECK_EQ(groups.size(), secondRayGenGroup(hitGroups));
-    if (shaders.secondRayGen().Handle() != VK_NULL_HANDLE)
+    RT_CHECK_EQ(groups.size(), extraRayGenGroup(hitGroups, 0));
+    for (const vk::ShaderModule& rayGen : shaders.extraRayGens())
     {
         groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR));
-        groups.back().generalShader = addStage(VK_SHADER_STAGE_RAYGEN_BIT_KHR, shaders.secondRayGen());
+        groups.back().generalShader = addStage(VK_SHADER_STAGE_RAYGEN_BIT_KHR, rayGen);
     }
 
     VkRayTracingPipelineCreateInfoKHR info{VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR};

@@ -7,12 +7,14 @@
 //      hit      Triangle.rchit      triangle BLASes (meshes, quads)          HitGroupKind::Triangles
 //      hit      Sphere.rint/.rchit  procedural geometry 0 (spheres)          HitGroupKind::Spheres
 //      hit      Medium.rint/.rchit  procedural geometry 1 (constant media)   HitGroupKind::Media
-//   last, in the wavefront's pipeline: a second raygen, Wavefront/Shadow.rgen (its shadow rays)
+//   last, further raygens: the wavefront's Wavefront/Shadow.rgen (its shadow rays); restir-di's Spatial.rgen and
+//   Shade.rgen after its Candidates.rgen
 // Maximum recursion depth 1: hit shaders never trace, raygen loops over bounces.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
+#include <initializer_list>
 #include <span>
 #include <vector>
 
@@ -29,24 +31,25 @@ inline constexpr std::uint32_t kMissGroupCount = 2;
 class PathTracingShaders final
 {
 public:
-    /// Loads the stages from `shaderDir`, with `rayGenFile` as group 0 and `secondRayGenFile`, if any, as the
-    /// last group. Throws rt::AssetError for a missing or malformed shader, rt::DeviceError when the driver
-    /// rejects a module.
+    /// Loads the stages from `shaderDir`, with `rayGenFile` as group 0 and `extraRayGenFiles` as the last groups,
+    /// in order. Throws rt::AssetError for a missing or malformed shader, rt::DeviceError when the driver rejects
+    /// a module.
     PathTracingShaders(const vk::Device& device, const std::filesystem::path& shaderDir,
-                       const char* rayGenFile = "RayGen.rgen.spv", const char* secondRayGenFile = nullptr);
+                       const char* rayGenFile = "RayGen.rgen.spv",
+                       std::initializer_list<const char*> extraRayGenFiles = {});
 
     const std::vector<vk::ShaderModule>& modules() const { return m_modules; }
-    /// The second raygen's module; a null handle when there is none.
-    const vk::ShaderModule& secondRayGen() const { return m_secondRayGen; }
+    /// The further raygens' modules, in order.
+    const std::vector<vk::ShaderModule>& extraRayGens() const { return m_extraRayGens; }
 
 private:
     std::vector<vk::ShaderModule> m_modules; // in the order of the stages above
-    vk::ShaderModule m_secondRayGen;
+    std::vector<vk::ShaderModule> m_extraRayGens;
 };
 
-/// The shader group of the second raygen of a pipeline with `hitGroups` (after the first raygen, the miss
-/// groups and the hit groups).
-std::uint32_t secondRayGenGroup(const HitGroupLayout& hitGroups);
+/// The shader group of further raygen `i` of a pipeline with `hitGroups` (after the first raygen, the miss
+/// groups, the hit groups and the further raygens before it).
+std::uint32_t extraRayGenGroup(const HitGroupLayout& hitGroups, std::uint32_t i);
 
 /// Compiles the pipeline from `shaders` with the specialization constants `constants` (constant id i takes
 /// constants[i], in every stage; ids a stage does not declare are ignored) and the hit groups of `hitGroups`

@@ -1,10 +1,11 @@
 // restir-di on the GPU (Bitterli et al. 2020; docs/RESTIR.md): the host of Shared/Shading/Restir.h's per-sample
-// math and what both passes share. An iteration is one sample per pixel in two launches over the image, each
-// invocation a pixel, the same two passes as the CPU's (RayTracingCPU/Integrator/RestirPasses.cpp):
+// math and what its passes share. An iteration is one sample per pixel in three launches over the image, each
+// invocation a pixel, the CPU's two passes (RayTracingCPU/Integrator/RestirPasses.cpp) with spatial reuse apart:
 //   Candidates.rgen: the camera path to its resampled vertex (restirSurfaces), M candidates resampled into a
 //                    reservoir, its visibility, the combination with the pixel's last final reservoir (restirTemporal);
-//   Shade.rgen:      the combination with k neighbours' reservoirs (restirFinal), then the camera path again with
-//                    f(y) W as its direct light there, nee-mis beyond, added to the accumulation image.
+//   Spatial.rgen:    the combination with k neighbours' reservoirs (restirFinal);
+//   Shade.rgen:      the camera path again with f(y) W as its direct light there, nee-mis beyond, added to the
+//                    accumulation image.
 // A ray traced for another camera sample (a neighbour's, the pixel's last) names that sample in the launch pixel's
 // slot of restirTraced, where the intersection shaders read it (Bindings.glsl tracedPixel): its shutter time
 // where a sphere moves, its medium seed in media.
