@@ -51,6 +51,9 @@ struct GpuEngine::Impl
     std::uint32_t fixedBandRows = 0; // setBandRows: rows per submit; 0: by time
     std::unique_ptr<RenderTarget> target;
     std::unique_ptr<RestirBuffers> restir; // restir-di's, of the target's size, while a frame runs it
+    // Whether restir's final reservoirs and surfaces hold a whole iteration of the frame, which the next one's
+    // temporal reuse reads (false at the frame's start and after a cancelled iteration).
+    bool restirHistory = false;
     TracingDescriptors descriptors; // the scene and the target; empty after setScene
     shader::RenderUniforms uniforms{}; // the frame's, as in the target's uniform buffer
     GpuIntegrator integrator = GpuIntegrator::Megakernel; // the frame's (SceneTracer::integratorFor)
@@ -231,7 +234,7 @@ struct GpuEngine::Impl
             for (std::uint32_t k = 0; k < count; ++k)
             {
                 pipeline.recordPass(cmd, {&descriptors.set, 1}, uniforms, scene, passes[k], sampleIndex,
-                                    {target->width(), rows}, row, interleave, restir->history);
+                                    {target->width(), rows}, row, interleave, restirHistory);
                 if (timed)
                     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(),
                                         kRestirQueries + k + 1);
@@ -272,7 +275,7 @@ struct GpuEngine::Impl
         const auto cancelled = [&] {
             if (!control.cancelRequested())
                 return false;
-            restir->history = false;
+            restirHistory = false;
             if (touched)
             {
                 restore();
@@ -299,7 +302,7 @@ struct GpuEngine::Impl
                 touched = true;
                 control.advance(std::uint64_t(width) * height);
                 bands.record(height, 1, host);
-                restir->history = true;
+                restirHistory = true;
                 continue;
             }
             for (const RestirPass pass : kRestirPasses)
@@ -326,7 +329,7 @@ struct GpuEngine::Impl
                     bands.record(rows, 1, host);
                 }
             }
-            restir->history = true;
+            restirHistory = true;
         }
         return {.complete = true, .deviceSeconds = deviceTimed ? deviceSeconds : -1.0};
     }
@@ -414,8 +417,7 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
         if (const auto problem = RestirBuffers::tooLargeFor(e.device(), std::uint64_t(width) * height))
             throw DeviceError(*problem);
     e.prepareTarget(width, height, restirDi);
-    if (e.restir)
-        e.restir->history = false;
+    e.restirHistory = false;
     e.uniforms = e.tracer.uniforms(e.tracer.scene()->camera, settings, {width, height});
     e.frameStages.clear();
     const auto compileStart = std::chrono::steady_clock::now();

@@ -77,9 +77,9 @@ void ProgressiveFrame::makeSets()
 
 void ProgressiveFrame::ensureRestir()
 {
-    const VkExtent2D size = extent();
     if (m_restir)
         return;
+    const VkExtent2D size = extent();
     const vk::Device& device = m_engine->context().device();
     if (const auto problem = RestirBuffers::tooLargeFor(device, std::uint64_t(size.width) * size.height))
         throw DeviceError(*problem);

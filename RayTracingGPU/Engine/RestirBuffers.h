@@ -32,9 +32,6 @@ public:
     const vk::Buffer& temporal() const { return m_temporal; }
     const vk::Buffer& final() const { return m_final; }
     const vk::Buffer& traced() const { return m_traced; }
-    /// Whether the final reservoirs and the surfaces hold a whole iteration of the frame: the next one's temporal
-    /// reuse reads them (false at the frame's start and after a cancelled iteration).
-    bool history = false;
 
     /// Why `pixels` pixels do not fit one storage buffer of `device` (its largest binding range), or nothing.
     static std::optional<std::string> tooLargeFor(const vk::Device& device, std::uint64_t pixels);

@@ -10,14 +10,14 @@
 #include "Engine/CpuEngine.h"
 #include "Scenes/Catalogue.h"
 #include "Support/RenderWithSettings.h"
-#include "Support/RestirUnbiased.h"
+#include "Support/RestirChecks.h"
 #include "RenderTestSupport.h"
 
 namespace rt::test
 {
 namespace
 {
-/// RestirUnbiased.h's test on the CPU engine.
+/// Support/RestirChecks.h's unbiasedness test on the CPU engine.
 void expectUnbiased(const std::string& id)
 {
     cpu::CpuEngine engine(EngineKind::Multi);
@@ -28,7 +28,7 @@ class CpuRestir : public ::testing::TestWithParam<std::string>
 {
 };
 
-// The test (Support/RestirUnbiased.h): the mean of 32 independent restir-di renders at low spp agrees
+// The test (Support/RestirChecks.h): the mean of 32 independent restir-di renders at low spp agrees
 // with a nee-mis reference, block by block and over the image (|Z| < 4 with 31 degrees of freedom: the 10 tests would fail by chance
 // about once in 250 runs).
 TEST_P(CpuRestir, UnbiasedAgainstNeeMis)
@@ -110,19 +110,8 @@ TEST(CpuRestirDeterminism, SingleAndMultiCoreRenderTheSameImageAndTheSeedDecides
 
 TEST(CpuRestirStats, ReservoirsTakeAtMost64BytesPerPixelAndTheCombinationIsNamed)
 {
-    const Scene scene = makeScene("cornell-box-lights");
-    RenderSettings s = restirSettings(scene);
-    s.spp = 1;
-    const nlohmann::json j = renderCpu(scene, s).stats.toJson();
-    ASSERT_TRUE(j.contains("restir")) << j.dump();
-    EXPECT_LE(j["restir"]["reservoirs_bytes_per_pixel"].get<int>(), 64);
-    EXPECT_EQ(j["restir"]["reservoirs_bytes"].get<std::uint64_t>(),
-              j["restir"]["reservoirs_bytes_per_pixel"].get<std::uint64_t>() * 48u * 48u);
-    EXPECT_EQ(j["restir"]["combination"], "unbiased");
-    s.restirBiased = true;
-    EXPECT_EQ(renderCpu(scene, s).stats.toJson()["restir"]["combination"], "biased");
-    s.estimator = Estimator::NeeMis;
-    EXPECT_FALSE(renderCpu(scene, s).stats.toJson().contains("restir"));
+    cpu::CpuEngine engine(EngineKind::Multi);
+    expectRestirStats(engine);
 }
 } // namespace
 } // namespace rt::test

@@ -4,14 +4,13 @@
 // batch put back, and its memory stated. The CPU's side: tests/Cpu/RestirTest.cpp.
 #include <cmath>
 #include <string>
-#include <thread>
 
 #include <gtest/gtest.h>
 
 #include "Render/EngineRegistry.h"
 #include "Scenes/Catalogue.h"
 #include "GpuTestEnvironment.h"
-#include "Support/RestirUnbiased.h"
+#include "Support/RestirChecks.h"
 #include "Support/SmallSettings.h"
 
 namespace rt::gpu::test
@@ -79,50 +78,20 @@ TEST(GpuRestir, TheImageIsTheCpuEnginesPixelForPixel)
 TEST(GpuRestir, ACancelledBatchIsPutBack)
 {
     RT_REQUIRE_GPU();
-    const Scene scene = makeScene("cornell-box-lights");
-    sharedEngine()->setScene(scene);
-    sharedEngine()->setBandRows(2);
-    RenderSettings s = agreementSettings(scene);
-    s.spp = 100000;
-    RenderControl control;
-    const std::uint64_t pixels = std::uint64_t(s.width) * std::uint64_t(s.height());
-    std::thread canceller([&] { // a few bands into the shading pass of a batch after the first
-        while (control.done() < pixels + std::uint64_t(s.width) * 6)
-            std::this_thread::yield();
-        control.requestCancel();
-    });
-    const RenderResult cancelled = renderWithSettings(*sharedEngine(), s, control);
-    canceller.join();
-    sharedEngine()->setBandRows(0);
-    ASSERT_TRUE(cancelled.stats.cancelled);
-    ASSERT_GE(cancelled.stats.trueSpp, 1);
-    EXPECT_GT(control.done(), cancelled.stats.paths) << "the cancel landed inside a batch: bands were undone";
-    RenderSettings same = s;
-    same.spp = cancelled.stats.trueSpp;
-    EXPECT_EQ(cancelled.image.pixels(), renderOnGpu(scene, same).image.pixels());
+    expectCancelInsideABandedBatchPutsTheBatchBack("cornell-box-lights", 32, Estimator::RestirDi);
 }
 
 TEST(GpuRestir, ReservoirsTakeAtMost64BytesPerPixelAndTheCombinationIsNamed)
 {
     RT_REQUIRE_GPU();
-    const Scene scene = makeScene("cornell-box-lights");
-    RenderSettings s = agreementSettings(scene);
-    s.spp = 1;
-    const nlohmann::json j = renderOnGpu(scene, s).stats.toJson();
-    ASSERT_TRUE(j.contains("restir")) << j.dump();
-    EXPECT_LE(j["restir"]["reservoirs_bytes_per_pixel"].get<int>(), 64);
-    EXPECT_EQ(j["restir"]["reservoirs_bytes"].get<std::uint64_t>(),
-              j["restir"]["reservoirs_bytes_per_pixel"].get<std::uint64_t>() * 32u * 32u);
-    EXPECT_EQ(j["restir"]["combination"], "unbiased");
-    s.estimator = Estimator::NeeMis;
-    EXPECT_FALSE(renderOnGpu(scene, s).stats.toJson().contains("restir"));
+    ::rt::test::expectRestirStats(*sharedEngine());
 }
 
 class GpuRestirUnbiased : public ::testing::TestWithParam<std::string>
 {
 };
 
-// The unbiasedness test (Support/RestirUnbiased.h) on the GPU engine alone: its restir-di against its own
+// The unbiasedness test (Support/RestirChecks.h) on the GPU engine alone: its restir-di against its own
 // nee-mis. Minutes on lavapipe: label heavy.
 TEST_P(GpuRestirUnbiased, AgainstNeeMis)
 {

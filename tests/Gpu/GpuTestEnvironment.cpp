@@ -83,12 +83,15 @@ void expectFurnaceOnGpu(float albedo, float radiance, Estimator estimator, int s
     }
 }
 
-void expectCancelInsideABandedBatchPutsTheBatchBack(const std::string& sceneId, int width)
+void expectCancelInsideABandedBatchPutsTheBatchBack(const std::string& sceneId, int width,
+                                                    std::optional<Estimator> estimator)
 {
     const Scene scene = makeScene(sceneId);
     sharedEngine()->setScene(scene);
     sharedEngine()->setBandRows(2);
-    const RenderSettings s = ::rt::test::settingsFor(scene, width, 100000, 8);
+    RenderSettings s = ::rt::test::settingsFor(scene, width, 100000, 8);
+    if (estimator)
+        s.estimator = *estimator;
     RenderControl control;
     const std::uint64_t pixels = std::uint64_t(s.width) * std::uint64_t(s.height());
     std::thread canceller([&] { // a few bands into a batch after the first

@@ -3,6 +3,7 @@
 // Vulkan/Device.h). Tests call RT_REQUIRE_GPU() first: it skips, with the reason, when no device fits.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -30,10 +31,11 @@ RenderResult renderOnGpu(const Scene& scene, const RenderSettings& settings);
 /// a^depth tail) within 3 standard errors (1e-5 relative where the estimator has no variance).
 void expectFurnaceOnGpu(float albedo, float radiance, Estimator estimator, int spp);
 
-/// Renders `sceneId` at `width` px, depth 8, in bands of two rows per submission on the shared engine, cancels
-/// a few bands into the second batch and expects the batch put back: the image a clean render of the true spp
-/// gives, bit for bit, and its NaN/Inf counters (GpuEngine's snapshot).
-void expectCancelInsideABandedBatchPutsTheBatchBack(const std::string& sceneId, int width);
+/// Renders `sceneId` at `width` px, depth 8, with `estimator` (the scene's when empty), in bands of two rows per
+/// submission on the shared engine, cancels a few bands into the second batch and expects the batch put back: the
+/// image a clean render of the true spp gives, bit for bit, and its NaN/Inf counters (GpuEngine's snapshot).
+void expectCancelInsideABandedBatchPutsTheBatchBack(const std::string& sceneId, int width,
+                                                    std::optional<Estimator> estimator = std::nullopt);
 
 /// Renders `sceneId` at `width` px (an odd number of rows), 3 spp, depth 8, once in bands of three rows per
 /// submission (the interleaved row order of Shared/BandOrder.h) and once in one submission per batch, and

@@ -186,6 +186,15 @@ void expectLetterboxed(const Layout& l)
                 2.0 / l.imageRect.height);
 }
 
+/// The largest length of a pixel's difference between two images of as many pixels.
+float largestDifference(const Image& a, const Image& b)
+{
+    float largest = 0.0f;
+    for (std::size_t i = 0; i < a.pixelCount(); ++i)
+        largest = std::max(largest, glm::length(a.data()[i] - b.data()[i]));
+    return largest;
+}
+
 std::string stateJsonArgument(const ::rt::test::ScratchDir& dir)
 {
     return " --state-json '" + (dir / "state.json").string() + "'";
@@ -324,15 +333,12 @@ TEST(GpuWindow, AccumulatedImageMatchesTheSettingsShown)
     const Image reference = readPfm(dir / "headless.pfm");
     ASSERT_EQ(window.width(), reference.width());
     ASSERT_EQ(window.height(), reference.height());
-    float largest = 0.0f;
-    for (std::size_t i = 0; i < window.pixelCount(); ++i)
-        largest = std::max(largest, glm::length(window.data()[i] - reference.data()[i]));
-    EXPECT_LE(largest, 1e-5f);
+    EXPECT_LE(largestDifference(window, reference), 1e-5f);
 }
 
 TEST(GpuWindow, RestirDiAccumulatesTheHeadlessImage)
 {
-    // The panel's estimator switched to restir-di (issue 36): the window runs its two passes per sample with a
+    // The panel's estimator switched to restir-di (issue 36): the window runs its passes per sample with a
     // history that starts at the switch's clear, and its image is the headless render of restir-di, bit for bit.
     const ::rt::test::ScratchDir dir;
     RT_RUN_WINDOW(run, "--width 96 --aspect 1.5 --validation --scene cornell-box-lights --spp 4 --depth 8 --seed 3 "
@@ -346,10 +352,7 @@ TEST(GpuWindow, RestirDiAccumulatesTheHeadlessImage)
     const Image window = readPfm(dir / "window.pfm");
     const Image reference = readPfm(dir / "headless.pfm");
     ASSERT_EQ(window.pixelCount(), reference.pixelCount());
-    float largest = 0.0f;
-    for (std::size_t i = 0; i < window.pixelCount(); ++i)
-        largest = std::max(largest, glm::length(window.data()[i] - reference.data()[i]));
-    EXPECT_LE(largest, 1e-5f);
+    EXPECT_LE(largestDifference(window, reference), 1e-5f);
     EXPECT_GT(reference.mean().x, 0.0f);
 }
 

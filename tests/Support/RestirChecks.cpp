@@ -1,9 +1,10 @@
-#include "Support/RestirUnbiased.h"
+#include "Support/RestirChecks.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "Math/Math.h"
 #include "Scenes/Catalogue.h"
@@ -98,5 +99,28 @@ void expectRestirUnbiased(RenderEngine& engine, const std::string& id)
             << id << " block " << i << ": restir-di " << restir.mean[i] << ", nee-mis " << ref.mean[i];
     const double z = zScore(restir.imageMean, restir.imageVariance, ref.imageMean, ref.imageVariance);
     EXPECT_LT(std::abs(z), 4.0) << id << " image: restir-di " << restir.imageMean << ", nee-mis " << ref.imageMean;
+}
+
+void expectRestirStats(RenderEngine& engine)
+{
+    const Scene scene = makeScene("cornell-box-lights");
+    engine.setScene(scene);
+    RenderSettings s = restirSettings(scene);
+    s.spp = 1;
+    const auto statsOf = [&](const RenderSettings& settings) {
+        RenderControl control;
+        return renderWithSettings(engine, settings, control).stats.toJson();
+    };
+    const nlohmann::json j = statsOf(s);
+    ASSERT_TRUE(j.contains("restir")) << j.dump();
+    EXPECT_LE(j["restir"]["reservoirs_bytes_per_pixel"].get<int>(), 64);
+    EXPECT_EQ(j["restir"]["reservoirs_bytes"].get<std::uint64_t>(),
+              j["restir"]["reservoirs_bytes_per_pixel"].get<std::uint64_t>() * std::uint64_t(s.width) *
+                  std::uint64_t(s.height()));
+    EXPECT_EQ(j["restir"]["combination"], "unbiased");
+    s.restirBiased = true;
+    EXPECT_EQ(statsOf(s)["restir"]["combination"], "biased");
+    s.estimator = Estimator::NeeMis;
+    EXPECT_FALSE(statsOf(s).contains("restir"));
 }
 } // namespace rt::test

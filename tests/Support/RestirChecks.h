@@ -1,4 +1,4 @@
-// Issue 36's unbiasedness test of restir-di, for either engine: the mean of 32 independent restir-di renders
+// restir-di's checks for either engine. Issue 36's unbiasedness test: the mean of 32 independent restir-di renders
 // (seeds) agrees with a nee-mis reference (8 renders of 128 spp), block by block and over the image, with |Z| < 4
 // and the variance of each mean from the spread between renders. ReSTIR's pixels are correlated (a reservoir
 // serves its neighbours and the next iteration), so the spread is never taken over the pixels of one render.
@@ -40,4 +40,9 @@ OverSeeds neeMisReference(RenderEngine& engine, const Scene& scene);
 /// The mean of 32 restir-di renders of catalogue scene `id` on `engine` against its nee-mis reference, block by
 /// block and over the image (gtest expectations).
 void expectRestirUnbiased(RenderEngine& engine, const std::string& id);
+
+/// One sample of cornell-box-lights with restirSettings on `engine`: the stats state the reservoirs' memory (at most
+/// 64 bytes per pixel, as many bytes in all as the pixels take) and name the combination, unbiased and biased; a
+/// nee-mis render states none (gtest expectations).
+void expectRestirStats(RenderEngine& engine);
 } // namespace rt::test
