@@ -25,7 +25,7 @@ app_packages=(
     cmake g++ make pkg-config file python3 python3-matplotlib
     libglm-dev libspdlog-dev libstb-dev libtinyobjloader-dev libtbb-dev libcli11-dev nlohmann-json3-dev zlib1g-dev
     libvulkan-dev glslc spirv-tools libglfw3-dev libimgui-dev fonts-dejavu-core xplanet-images assimp-testmodels libtinygltf-dev
-    libopenexr-dev
+    libopenexr-dev libopenmpi-dev openmpi-bin
 )
 test_packages=(
     libgtest-dev libbenchmark-dev vulkan-tools vulkan-validationlayers xvfb xauth x11-utils imagemagick hyperfine

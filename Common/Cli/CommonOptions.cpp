@@ -11,6 +11,7 @@
 #include <spdlog/spdlog.h>
 
 #include "Cli/ValueParsing.h"
+#include "Cluster/Job.h"
 #include "Error.h"
 #include "Render/MemoryBudget.h"
 #include "Render/SettingsTable.h"
@@ -230,10 +231,16 @@ std::string sceneListing()
     return out;
 }
 
+void configureLogging(bool quiet)
+{
+    const cluster::Job& job = cluster::job();
+    spdlog::set_pattern(job.root() ? std::string("%^%l%$: %v") : fmt::format("%^%l%$: {}: %v", job.name(job.rank())));
+    spdlog::set_level(quiet || !job.root() ? spdlog::level::warn : spdlog::level::info);
+}
+
 bool runCommonCommands(const CommonOptions& options)
 {
-    spdlog::set_pattern("%^%l%$: %v");
-    spdlog::set_level(options.quiet ? spdlog::level::warn : spdlog::level::info);
+    configureLogging(options.quiet);
     if (options.listScenes)
     {
         std::fputs(sceneListing().c_str(), stdout);

@@ -73,6 +73,10 @@ CommandLineRender resolveCommandLine(const CommonOptions& options);
 /// One line per catalogue scene: id, title, source.
 std::string sceneListing();
 
+/// The log lines on stderr: warnings and errors, and the info lines unless `quiet`. Of an MPI job's ranks, root's
+/// alone say what every rank would say alike; the others log warnings and errors only, each naming its rank.
+void configureLogging(bool quiet);
+
 /// What every command of both apps does first: log level from --quiet, --list-scenes printed to stdout, and
 /// --export-scene's file written. Returns true when the command is done (it was one of the two).
 /// Throws what buildScene and exportScene throw.

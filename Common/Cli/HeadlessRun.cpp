@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <mutex>
 #include <new>
+#include <optional>
 #include <set>
 #include <thread>
 
@@ -17,6 +18,7 @@
 #include <spdlog/spdlog.h>
 
 #include "Cli/Interrupt.h"
+#include "Cluster/SplitRender.h"
 #include "Error.h"
 #include "Format.h"
 #include "IO/OutputSet.h"
@@ -130,10 +132,55 @@ void checkOutputPaths(const CommonOptions& o)
     checkOutputPath(o.stats, "--stats", {".json"});
 }
 
+namespace
+{
+/// Root of a split render: the shares' sums added (Cluster/Job.h's sumToRoot) and divided as one process's
+/// engine divides its own (CpuEngine::estimate), and the stats of the whole job from every rank's.
+void mergeShares(RenderEngine& engine, cluster::Job& job, const cluster::Verdict& verdict, RenderResult& result,
+                 std::uint32_t frameSamples)
+{
+    std::vector<double> sums = engine.radianceSums();
+    job.sumToRoot(sums);
+    if (!job.root())
+        return;
+    RenderStats& st = result.stats;
+    Image image(st.width, st.height);
+    for (std::size_t i = 0; i < image.pixelCount(); ++i)
+        image.data()[i] = vec3(dvec3(sums[3 * i], sums[3 * i + 1], sums[3 * i + 2]) / double(frameSamples));
+    result.image = std::move(image);
+    st.trueSpp = static_cast<int>(frameSamples);
+    st.paths = st.segments = st.nanSamples = st.infSamples = 0;
+    st.threadsUsed = 0;
+    st.renderSeconds = 0.0;
+    for (const nlohmann::json& r : verdict.ranks)
+    {
+        st.paths += r.at("paths").get<std::uint64_t>();
+        st.segments += r.at("segments").get<std::uint64_t>();
+        st.nanSamples += r.at("nan_samples").get<std::uint64_t>();
+        st.infSamples += r.at("inf_samples").get<std::uint64_t>();
+        st.threadsUsed += r.at("threads_used").get<int>();
+        // The job's render takes as long as its slowest share.
+        st.renderSeconds = std::max(st.renderSeconds, r.at("render_seconds").get<double>());
+        if (st.gpuSeconds >= 0.0)
+            st.gpuSeconds =
+                r.contains("gpu_seconds") ? std::max(st.gpuSeconds, r.at("gpu_seconds").get<double>()) : -1.0;
+    }
+    st.ranks = verdict.ranks;
+}
+} // namespace
+
 int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& asked, const CommonOptions& o,
                 const RequestChooser& choose)
 {
-    checkOutputPaths(o);
+    cluster::Job& job = cluster::job();
+    if (job.root())
+        checkOutputPaths(o); // root alone writes (on its host's folders)
+    if (job.distributed() && choose)
+        throw UsageError("--strategy auto chooses on one process: run it without mpirun, then render the strategy "
+                         "it names on the ranks");
+    if (job.distributed() && asked.settings.estimator == Estimator::RestirDi)
+        throw UsageError("restir-di's reservoirs carry each sample to the next, so its samples cannot be split over "
+                         "mpirun's ranks: run it as one process");
     spdlog::info("scene {}: {} primitives, {} lights; {} engine on {}", scene.id, scene.primitiveCount(),
                  scene.lights.size(), toString(engine.kind()), engine.deviceName());
     const double build = engine.setScene(scene);
@@ -142,6 +189,17 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& a
     RenderControl control;
     RenderResult result;
     ChosenRequest chosen{asked, nullptr, false};
+    std::optional<cluster::SplitRender> split;
+    FramePart part;
+    const auto frameSamples = static_cast<std::uint32_t>(asked.settings.trueSpp());
+    if (job.distributed())
+    {
+        split.emplace(job, control);
+        part = cluster::shareOf(frameSamples, job.rank(), job.size());
+        part.beforeBatch = [&] { split->beforeBatch(); };
+        spdlog::info("{} ranks: samples {}..{} of {} on this one", job.size(), part.firstSample,
+                     part.firstSample + *part.samples, frameSamples);
+    }
     {
         InterruptScope interrupt;
         if (choose)
@@ -153,8 +211,33 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& a
         }
         spdlog::info("settings: {}", chosen.request.settings); // the scene's defaults with the flags applied
         InterruptScope::route(&control);
-        ProgressPrinter progress(control, !o.quiet);
-        result = render(engine, chosen.request, control);
+        ProgressPrinter progress(control, !o.quiet && job.root());
+        result = render(engine, chosen.request, control, {}, part);
+        if (split)
+        {
+            using Status = cluster::PartEnd::Status;
+            const cluster::Verdict verdict =
+                split->end({.status = result.stats.cancelled ? Status::Cancelled : Status::Finished,
+                            .stats = cluster::rankStats(job, part, result.stats)});
+            if (verdict.status == Status::Failed)
+            {
+                if (job.root())
+                    std::fprintf(stderr, "error: %s\n", verdict.message.c_str());
+                if (verdict.silentRank)
+                    job.abandon(verdict.exitCode);
+                return verdict.exitCode;
+            }
+            if (verdict.status == Status::Cancelled)
+            {
+                if (job.root())
+                    spdlog::warn("render cancelled after {:.1f} s: no file written", result.stats.renderSeconds);
+                // mpirun, ending the job, no longer lets MPI_Finalize finish: exit before its SIGKILL.
+                job.leave(130);
+            }
+            mergeShares(engine, job, verdict, result, frameSamples);
+            if (!job.root())
+                return 0;
+        }
     }
     const RenderRequest& request = chosen.request;
     result.stats.strategyChoice = chosen.record;
@@ -185,10 +268,11 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& a
     for (const std::string& file : {o.output, o.hdr, o.stats})
         if (!file.empty())
             written += (written.empty() ? ", wrote " : ", ") + file;
-    std::printf("%s: %dx%d, %d spp (%s, %s), depth %d, %s engine: render %.3f s, build %.3f s, %.2f Mpaths/s, "
+    const std::string ranks = job.distributed() ? fmt::format(" on {} ranks", job.size()) : std::string();
+    std::printf("%s: %dx%d, %d spp (%s, %s), depth %d, %s engine%s: render %.3f s, build %.3f s, %.2f Mpaths/s, "
                 "NaN %llu, Inf %llu%s\n",
                 request.scene.id.c_str(), s.width, s.height, s.trueSpp, toString(settings.sampling), estimatorLabel(settings).c_str(),
-                settings.depth, toString(s.engine), s.renderSeconds, s.buildSeconds, s.mpathsPerSecond(),
+                settings.depth, toString(s.engine), ranks.c_str(), s.renderSeconds, s.buildSeconds, s.mpathsPerSecond(),
                 static_cast<unsigned long long>(s.nanSamples), static_cast<unsigned long long>(s.infSamples),
                 written.c_str());
     return 0;
@@ -199,7 +283,23 @@ int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>
     // Every log line (info, warnings, errors) on stderr: stdout carries only what a script reads (the summary
     // line, the tables of --compare, --list-scenes).
     spdlog::set_default_logger(spdlog::stderr_color_mt("rt"));
-    spdlog::set_pattern("%^%l%$: %v");
+    // Joins mpirun's job, when it started this process, before any thread (docs/SCALING.md).
+    std::optional<cluster::JobScope> joined;
+    try
+    {
+        joined.emplace();
+    }
+    catch (const Error& e)
+    {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return e.exitCode();
+    }
+    cluster::Job& job = cluster::job();
+    const bool speaks = job.root(); // of a job's ranks, root alone prints what every rank would print alike
+    configureLogging(false);
+    // The other ranks' stdout (help, lists, summaries) is root's.
+    if (!speaks && !std::freopen("/dev/null", "w", stdout))
+        std::fclose(stdout);
     // A flag of one value given twice is refused (which one was meant?), in words rather than CLI11's "At Most 1
     // required but received 2".
     std::set<std::string> seen;
@@ -212,7 +312,8 @@ int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>
         const CLI::Option* option = app.get_option_no_throw(name);
         if (option && option->get_items_expected_max() <= 1 && !seen.insert(name).second)
         {
-            std::fprintf(stderr, "error: %s is given more than once: give it once (see --help)\n", name.c_str());
+            if (speaks)
+                std::fprintf(stderr, "error: %s is given more than once: give it once (see --help)\n", name.c_str());
             return 2;
         }
     }
@@ -230,28 +331,41 @@ int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>
     }
     catch (const CLI::ParseError& e)
     {
-        std::fprintf(stderr, "error: %s (see --help)\n", e.what());
+        if (speaks)
+            std::fprintf(stderr, "error: %s (see --help)\n", e.what());
         return 2;
     }
+    // An error on one of a job's ranks ends the job (Cluster/SplitRender.h): root prints the one line.
+    const auto fail = [&](const std::string& message, int exitCode) {
+        if (const std::optional<cluster::Verdict> verdict =
+                cluster::SplitRender::endAfterError(job, message, exitCode))
+        {
+            if (job.root())
+                std::fprintf(stderr, "error: %s\n", verdict->message.c_str());
+            if (verdict->silentRank)
+                job.abandon(verdict->exitCode);
+            return verdict->exitCode;
+        }
+        std::fprintf(stderr, "error: %s%s\n", job.distributed() ? (job.name(job.rank()) + ": ").c_str() : "",
+                     message.c_str());
+        return exitCode;
+    };
     try
     {
         return body();
     }
     catch (const Error& e)
     {
-        std::fprintf(stderr, "error: %s\n", e.what());
-        return e.exitCode();
+        return fail(e.what(), e.exitCode());
     }
     catch (const std::bad_alloc&)
     {
         // Past the up-front estimate (Render/MemoryBudget.h), e.g. memory taken by another process meanwhile.
-        std::fprintf(stderr, "error: out of memory (the render needed more than the machine could give)\n");
-        return 1;
+        return fail("out of memory (the render needed more than the machine could give)", 1);
     }
     catch (const std::exception& e)
     {
-        std::fprintf(stderr, "error: %s\n", e.what());
-        return 1;
+        return fail(e.what(), 1);
     }
 }
 } // namespace rt

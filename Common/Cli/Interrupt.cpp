@@ -10,6 +10,7 @@ namespace
 std::atomic<RenderControl*> g_control{nullptr};
 std::atomic<bool> g_interrupted{false};
 void (*g_previousHandler)(int) = SIG_DFL;
+void (*g_previousTermHandler)(int) = SIG_DFL;
 
 extern "C" void onInterrupt(int)
 {
@@ -23,11 +24,14 @@ InterruptScope::InterruptScope()
 {
     g_interrupted.store(false);
     g_previousHandler = std::signal(SIGINT, onInterrupt);
+    // mpirun passes Ctrl-C on to its ranks as SIGTERM (and a rank's death too, a second before SIGKILL).
+    g_previousTermHandler = std::signal(SIGTERM, onInterrupt);
 }
 
 InterruptScope::~InterruptScope()
 {
     std::signal(SIGINT, g_previousHandler);
+    std::signal(SIGTERM, g_previousTermHandler);
     g_control.store(nullptr);
 }
 

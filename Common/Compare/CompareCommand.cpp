@@ -9,6 +9,7 @@
 
 #include "Cli/HeadlessRun.h"
 #include "Cli/ValueParsing.h"
+#include "Cluster/Job.h"
 #include "Compare/AutoCommand.h"
 #include "Compare/Compare.h"
 #include "Compare/ReferenceCache.h"
@@ -115,6 +116,8 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
 
 int runCompare(const CompareFlags& flags, const CommonOptions& options, const EngineOptions& engineOptions)
 {
+    if (cluster::job().distributed())
+        throw UsageError("--compare does not hand its rows to mpirun's ranks yet (issue 40): run it as one process");
     const CommandLineRender job = resolveCommandLine(options);
     CompareOptions c;
     c.spps = parseSppList(flags.sppList);

@@ -1,5 +1,7 @@
 #include "Render/RenderControl.h"
 
+#include <algorithm>
+
 namespace rt
 {
 namespace
@@ -14,6 +16,7 @@ std::int64_t nowNs()
 void RenderControl::begin(std::uint64_t totalUnits)
 {
     m_done.store(0);
+    m_doneElsewhere.store(0);
     m_total.store(totalUnits);
     m_startNs.store(nowNs());
 }
@@ -28,7 +31,8 @@ bool RenderControl::timeLimitPassed() const
 double RenderControl::fraction() const
 {
     const std::uint64_t t = total();
-    return t == 0 ? 0.0 : static_cast<double>(done()) / static_cast<double>(t);
+    const std::uint64_t all = done() + m_doneElsewhere.load(std::memory_order_relaxed);
+    return t == 0 ? 0.0 : std::min(1.0, static_cast<double>(all) / static_cast<double>(t));
 }
 
 double RenderControl::elapsedSeconds() const

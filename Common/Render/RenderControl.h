@@ -30,6 +30,9 @@ public:
     void advance(std::uint64_t units = 1) { m_done.fetch_add(units, std::memory_order_relaxed); }
 
     std::uint64_t done() const { return m_done.load(std::memory_order_relaxed); }
+    /// Units of the same total done by other processes (an MPI job's other ranks, Cluster/SplitRender.h): counted
+    /// in fraction() and etaSeconds(), not in done().
+    void setDoneElsewhere(std::uint64_t units) { m_doneElsewhere.store(units, std::memory_order_relaxed); }
     std::uint64_t total() const { return m_total.load(std::memory_order_relaxed); }
     /// In [0, 1]; 0 before begin().
     double fraction() const;
@@ -47,6 +50,7 @@ public:
 private:
     std::atomic<bool> m_cancel{false};
     std::atomic<std::uint64_t> m_done{0};
+    std::atomic<std::uint64_t> m_doneElsewhere{0};
     std::atomic<std::uint64_t> m_total{0};
     std::atomic<std::int64_t> m_startNs{0};
     std::atomic<std::int64_t> m_previewIntervalNs{0};

@@ -1,5 +1,6 @@
 #include "Render/RenderDriver.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include <spdlog/fmt/fmt.h>
@@ -18,7 +19,7 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 } // namespace
 
 RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderControl& control,
-                    const PreviewCallback& preview)
+                    const PreviewCallback& preview, const FramePart& part)
 {
     const Clock::time_point wallStart = Clock::now();
     const RenderSettings& settings = request.settings;
@@ -32,12 +33,15 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
 
     const int width = settings.width;
     const int height = settings.height();
-    const auto totalSamples = static_cast<std::uint32_t>(settings.trueSpp());
+    const auto frameSamples = static_cast<std::uint32_t>(settings.trueSpp());
+    RT_CHECK_LE(part.firstSample, frameSamples);
+    const std::uint32_t totalSamples = part.samples.value_or(frameSamples - part.firstSample);
+    RT_CHECK_LE(totalSamples, frameSamples - part.firstSample);
     const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
     // restir-di's iterations are one sample per pixel each, its reservoirs carried from one to the next.
-    BatchPlan plan(totalSamples, pixels, engine.pathsPerBatch(),
+    BatchPlan plan(std::max(totalSamples, 1u), pixels, engine.pathsPerBatch(),
                    settings.sampling == PixelSampling::Accumulate || settings.estimator == Estimator::RestirDi);
-    control.begin(pixels * totalSamples); // progress in camera paths, advanced by the engine
+    control.begin(pixels * frameSamples); // progress in camera paths of the whole frame, advanced by the engine
 
     std::uint32_t samplesDone = 0;
     Image previewImage; // the last preview's estimate, the result too when no batch followed it
@@ -47,10 +51,16 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
     const Clock::time_point renderStart = Clock::now();
     while (samplesDone < totalSamples && !control.cancelRequested())
     {
+        if (part.beforeBatch)
+        {
+            part.beforeBatch();
+            if (control.cancelRequested())
+                break;
+        }
         const std::uint32_t samples = plan.next(samplesDone);
         RT_DCHECK_GT(samples, 0u);
         const Clock::time_point batchStart = Clock::now();
-        const BatchResult traced = engine.traceSamples(samplesDone, samples, control);
+        const BatchResult traced = engine.traceSamples(part.firstSample + samplesDone, samples, control);
         if (!traced.complete)
             break;
         plan.record(samples, secondsSince(batchStart));

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 
 #include "Image/Image.h"
 #include "Render/RenderControl.h"
@@ -25,10 +26,22 @@ struct RenderResult
 /// thread: copy what you need.
 using PreviewCallback = std::function<void(const Image& estimate, int samplesSoFar)>;
 
+/// The part of the frame one render call traces: camera samples firstSample .. firstSample + samples - 1 of every
+/// pixel (an MPI rank's share: Cluster/SplitRender.h; by default all of them). Progress counts the whole frame's
+/// camera paths, of which this call advances its own. `beforeBatch`, when given, runs on the rendering thread
+/// before each batch (a rank's messages: it may cancel through the control).
+struct FramePart
+{
+    std::uint32_t firstSample = 0;
+    std::optional<std::uint32_t> samples; // empty: the frame's trueSpp() - firstSample
+    std::function<void()> beforeBatch;
+};
+
 /// Renders `request.settings` of the scene last given to engine.setScene, which `request.scene` names (the
 /// stats report it). Blocks; stops between batches when control.requestCancel() is called, with
 /// stats.cancelled set and the estimate of the finished batches. Throws UsageError for invalid settings or an
-/// engine without a scene, DeviceError when the image exceeds a device limit.
+/// engine without a scene, DeviceError when the image exceeds a device limit. With a `part`, the result holds that
+/// part's samples only (stats.trueSpp is their count; the estimate is their mean).
 RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderControl& control,
-                    const PreviewCallback& preview = {});
+                    const PreviewCallback& preview = {}, const FramePart& part = {});
 } // namespace rt

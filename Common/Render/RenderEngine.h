@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "Image/Image.h"
 #include "Render/RenderControl.h"
@@ -66,6 +67,10 @@ public:
     virtual BatchResult traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control) = 0;
     /// The accumulator divided by `samples` (> 0): linear radiance, the frame's width x height.
     virtual Image estimate(std::uint32_t samples) = 0;
+    /// The accumulator itself: each pixel's sum of the samples traced since beginFrame, RGB, row by row from the
+    /// top (width x height x 3 values), the sum estimate() divides. An MPI job adds its ranks' shares from these
+    /// (Cluster/SplitRender.h).
+    virtual std::vector<double> radianceSums() = 0;
     virtual SampleTally tally() const = 0;
     /// The engine's own times of the stages of its last setScene and frame, in seconds, by name (each engine's
     /// documentation names its stages); empty where the engine has none to tell.

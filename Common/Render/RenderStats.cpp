@@ -40,6 +40,8 @@ nlohmann::json RenderStats::toJson() const
         j["stage_seconds"] = stageSeconds;
     if (!frameConfiguration.empty())
         j["frame_configuration"] = frameConfiguration;
+    if (!ranks.is_null())
+        j["ranks"] = ranks;
     if (!strategyChoice.is_null())
         j["strategy_choice"] = strategyChoice;
     if (request.settings.estimator == Estimator::RestirDi)

@@ -3,6 +3,7 @@
 // engines are the registry's (Render/EngineRegistry.h): single and multi, and the GPU engine where the build
 // links it (the window's third engine, and --compare's).
 #include "Cli/HeadlessRun.h"
+#include "Cluster/Job.h"
 #include "Compare/AutoCommand.h"
 #include "Compare/CompareCommand.h"
 #include "Error.h"
@@ -43,6 +44,8 @@ int main(int argc, char** argv)
         const rt::EngineOptions engineOptions{.specialize = *rt::parseName<rt::Specialize>(specialize)}; // checked by CLI11
         if (compareFlags.compare)
             return rt::compare::runCompare(compareFlags, options, engineOptions);
+        if (!options.headless && rt::cluster::job().distributed())
+            throw rt::UsageError("the window runs as one process: start it without mpirun, or add --headless");
         if (!options.headless)
         {
 #ifdef RT_WITH_GUI

@@ -255,6 +255,17 @@ Image CpuEngine::estimate(std::uint32_t samples)
     return image;
 }
 
+std::vector<double> CpuEngine::radianceSums()
+{
+    if (!m_frame)
+        throw UsageError("CpuEngine::radianceSums needs a frame");
+    std::vector<double> sums;
+    sums.reserve(3 * m_frame->sum.size());
+    for (const dvec3& s : m_frame->sum)
+        sums.insert(sums.end(), {s.x, s.y, s.z});
+    return sums;
+}
+
 SampleTally CpuEngine::tally() const
 {
     SampleTally total;

@@ -42,6 +42,7 @@ public:
     /// puts back the rows it had started.
     BatchResult traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control) override;
     Image estimate(std::uint32_t samples) override;
+    std::vector<double> radianceSums() override;
     SampleTally tally() const override;
     /// The path loop the current frame runs ("path loop: general" or what it is specialised for, and the
     /// scene's features); empty before beginFrame. --stats' frame_configuration.

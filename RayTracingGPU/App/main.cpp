@@ -18,6 +18,7 @@
 #include "Cli/HeadlessRun.h"
 #include "Cli/ValueParsing.h"
 #include "Cli/WindowSize.h"
+#include "Cluster/Job.h"
 #include "Compare/AutoCommand.h"
 #include "Compare/CompareCommand.h"
 #include "Engine/GpuContext.h"
@@ -148,6 +149,10 @@ int main(int argc, char** argv)
     app.add_option("--device", device,
                    "Vulkan device index in vkEnumeratePhysicalDevices order (default: the first suitable "
                    "discrete GPU, else any suitable device); an unsuitable one is refused with what it lacks");
+    bool listDevicesFlag = false;
+    app.add_flag("--list-devices", listDevicesFlag,
+                 "Print every Vulkan device this process sees, what each lacks for the ray tracer and which one a "
+                 "headless render takes (under mpirun: each rank's, by rank)");
     rt::compare::CompareFlags compareFlags;
     rt::compare::addCompareOptions(app, compareFlags);
     app.add_flag("--validation", validation,
@@ -192,6 +197,24 @@ int main(int argc, char** argv)
     return rt::guardedMain(app, argc, argv, [&] {
         if (rt::runCommonCommands(options))
             return 0;
+        if (listDevicesFlag)
+        {
+            rt::cluster::Job& job = rt::cluster::job();
+            std::string mine;
+            try
+            {
+                mine = rt::gpu::listDevices(device, job.localRank());
+            }
+            catch (const rt::Error& e)
+            {
+                mine = std::string("  ") + e.what();
+            }
+            const std::vector<std::string> all = job.gather(mine);
+            for (std::size_t r = 0; r < all.size(); ++r)
+                std::printf("%s:\n%s\n", job.distributed() ? job.name(static_cast<int>(r)).c_str() : "Vulkan devices",
+                            all[r].c_str());
+            return 0;
+        }
         const rt::EngineOptions engineOptions{.specialize = *rt::parseName<rt::Specialize>(specialize), // checked by CLI11
                                               .device = device,
                                               .validation = validation,
@@ -200,6 +223,8 @@ int main(int argc, char** argv)
                                               .wavePaths = wavePaths};
         if (compareFlags.compare)
             return rt::compare::runCompare(compareFlags, options, engineOptions);
+        if (!options.headless && rt::cluster::job().distributed())
+            throw rt::UsageError("the window runs as one process: start it without mpirun, or add --headless");
         if (!options.headless)
             return runWindow(options, window, device, validation || rt::gpu::validationWanted(),
                              engineOptions.integrator, shaderDir);

@@ -5,18 +5,21 @@
 
 #include <spdlog/spdlog.h>
 
+#include "Error.h"
+
 namespace rt::gpu
 {
 namespace
 {
-vk::Device createDevice(const vk::Instance& instance, std::optional<int> deviceIndex, VkSurfaceKHR surface)
+vk::Device createDevice(const vk::Instance& instance, std::optional<int> deviceIndex, int deviceShare,
+                        VkSurfaceKHR surface)
 {
     std::vector<vk::PhysicalDevice> devices = vk::enumeratePhysicalDevices(instance.Handle(), surface);
     std::vector<vk::DeviceCandidate> candidates;
     for (const vk::PhysicalDevice& d : devices)
         candidates.push_back(d.candidate);
     const vk::DeviceRequirements requirements{.presentation = surface != VK_NULL_HANDLE};
-    const std::size_t chosen = vk::selectDevice(candidates, deviceIndex, requirements);
+    const std::size_t chosen = vk::selectDevice(candidates, deviceIndex, requirements, deviceShare);
     spdlog::debug("Vulkan devices:\n{}", vk::describeDevices(candidates, requirements));
     return vk::Device(devices[chosen], requirements.presentation);
 }
@@ -35,6 +38,25 @@ vk::Surface createSurface(const vk::Instance& instance, const GpuContextOptions&
 }
 } // namespace
 
+std::string listDevices(std::optional<int> deviceIndex, int deviceShare)
+{
+    const vk::Instance instance(false, {});
+    std::vector<vk::DeviceCandidate> candidates;
+    for (const vk::PhysicalDevice& d : vk::enumeratePhysicalDevices(instance.Handle()))
+        candidates.push_back(d.candidate);
+    std::string out = vk::describeDevices(candidates, {});
+    try
+    {
+        const std::size_t chosen = vk::selectDevice(candidates, deviceIndex, {}, deviceShare);
+        out += fmt::format("\n  a headless render takes device {}", chosen);
+    }
+    catch (const Error& e)
+    {
+        out += fmt::format("\n  a headless render would fail: {}", e.what());
+    }
+    return out;
+}
+
 bool validationWanted()
 {
 #ifndef NDEBUG
@@ -47,7 +69,7 @@ bool validationWanted()
 
 GpuContext::GpuContext(const GpuContextOptions& options)
     : m_instance(createInstance(options)), m_surface(createSurface(m_instance, options)),
-      m_device(createDevice(m_instance, options.deviceIndex, m_surface.Handle())), m_pool(m_device)
+      m_device(createDevice(m_instance, options.deviceIndex, options.deviceShare, m_surface.Handle())), m_pool(m_device)
 {
 }
 } // namespace rt::gpu

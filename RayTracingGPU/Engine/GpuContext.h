@@ -27,12 +27,19 @@ struct Presentation
 struct GpuContextOptions
 {
     std::optional<int> deviceIndex; // --device N; empty: the preferred suitable device
+    int deviceShare = 0; // without deviceIndex, which of the preferred devices (vk::selectDevice): an MPI rank's
+                         // index on its host
     bool validation = false; // VK_LAYER_KHRONOS_validation with a counting messenger
     std::optional<Presentation> presentation; // window mode; headless requires nothing of the kind
 };
 
 /// True in Debug builds and when the environment has RT_VULKAN_VALIDATION=1.
 bool validationWanted();
+
+/// --list-devices: every Vulkan device this process sees, what each lacks for the ray tracer, and which one a
+/// headless render with `deviceIndex` and `deviceShare` (GpuContextOptions) takes, or why none. Throws
+/// rt::DeviceError when Vulkan has no loader or driver.
+std::string listDevices(std::optional<int> deviceIndex, int deviceShare);
 
 class GpuContext final
 {

@@ -62,7 +62,7 @@ struct GpuEngine::Impl
     std::uint32_t waveSegments = kFirstWaveSegments; // the wavefront's first submission per wave: its segments
 
     explicit Impl(const GpuEngineOptions& options)
-        : context({options.deviceIndex, options.validation, options.presentation}),
+        : context({options.deviceIndex, options.deviceShare, options.validation, options.presentation}),
           tracer(context.device(), context.commandPool(),
                  options.shaderDir.empty() ? executableDir() / "shaders" : options.shaderDir, options.specialize,
                  options.integrator, options.wavePaths),
@@ -493,6 +493,14 @@ Image GpuEngine::estimate(std::uint32_t samples)
     m_impl->frameStages["resolve_host"] +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return image;
+}
+
+std::vector<double> GpuEngine::radianceSums()
+{
+    if (!m_impl->target || m_impl->descriptors.set == VK_NULL_HANDLE)
+        throw UsageError("GpuEngine::radianceSums called before beginFrame");
+    m_impl->readback();
+    return m_impl->target->readSums();
 }
 
 std::string GpuEngine::frameConfiguration() const

@@ -29,6 +29,7 @@ struct AccelerationStructureBuilds;
 struct GpuEngineOptions
 {
     std::optional<int> deviceIndex; // --device N (vkEnumeratePhysicalDevices order); empty: best suitable
+    int deviceShare = 0; // without deviceIndex: which of the best suitable devices (an MPI rank's index on its host)
     bool validation = false; // Khronos validation layer + counting messenger (see validationWanted())
     std::filesystem::path shaderDir; // empty: executableDir()/shaders, never the working directory
     std::uint64_t pathsPerBatch = 0; // camera paths per dispatch; 0: by device type (kPathsPerBatchGpu/Cpu)
@@ -78,6 +79,7 @@ public:
     BatchResult traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control) override;
     /// Reads the accumulation image back (one submission, waited for).
     Image estimate(std::uint32_t samples) override;
+    std::vector<double> radianceSums() override;
     SampleTally tally() const override;
     /// Where the time went, in seconds: of setScene, upload_host (buffers and images, host clock) and, where
     /// they were built, blas_build_gpu and tlas_build_gpu (device clock); of the frame, pipeline_host (the

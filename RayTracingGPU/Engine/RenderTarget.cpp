@@ -101,4 +101,15 @@ Image RenderTarget::readEstimate(std::uint32_t samples) const
         image.data()[i] = vec3(texels[4 * i], texels[4 * i + 1], texels[4 * i + 2]) / count;
     return image;
 }
+
+std::vector<double> RenderTarget::readSums() const
+{
+    const auto* texels = static_cast<const float*>(m_readback.mapped());
+    const std::size_t pixels = std::size_t(width()) * height();
+    std::vector<double> sums(3 * pixels);
+    for (std::size_t i = 0; i < pixels; ++i)
+        for (std::size_t c = 0; c < 3; ++c)
+            sums[3 * i + c] = texels[4 * i + c];
+    return sums;
+}
 } // namespace rt::gpu

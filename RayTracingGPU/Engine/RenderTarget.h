@@ -49,6 +49,9 @@ public:
     void writeCounters(const shader::SampleCounters& counters);
     /// The estimate from the readback buffer: sum / `samples`, RGB (call after recordReadback completed).
     Image readEstimate(std::uint32_t samples) const;
+    /// The sums of the readback buffer, RGB per pixel, as readEstimate divides them (the Kahan compensation, which
+    /// the estimate leaves out too, is not added).
+    std::vector<double> readSums() const;
 
 private:
     vk::Image m_image;

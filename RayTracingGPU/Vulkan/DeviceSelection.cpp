@@ -76,7 +76,7 @@ DeviceVerdict judge(const DeviceCandidate& candidate, const DeviceRequirements& 
 }
 
 std::size_t selectDevice(const std::vector<DeviceCandidate>& candidates, std::optional<int> requested,
-                         const DeviceRequirements& requirements)
+                         const DeviceRequirements& requirements, int share)
 {
     if (candidates.empty())
         throw DeviceError("Vulkan reports no physical device: no driver (ICD) is installed or none loads");
@@ -99,7 +99,11 @@ std::size_t selectDevice(const std::vector<DeviceCandidate>& candidates, std::op
         throw DeviceError(
             fmt::format("no Vulkan device can run the ray tracer{}:\n{}",
                         requirements.presentation ? " in a window" : "", describeDevices(candidates, requirements)));
-    return *best;
+    std::vector<std::size_t> alike; // the suitable devices of the best type
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+        if (candidates[i].type == candidates[*best].type && judge(candidates[i], requirements).suitable())
+            alike.push_back(i);
+    return alike[static_cast<std::size_t>(std::max(share, 0)) % alike.size()];
 }
 
 std::string describeDevices(const std::vector<DeviceCandidate>& candidates, const DeviceRequirements& requirements)

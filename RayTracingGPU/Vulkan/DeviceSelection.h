@@ -108,12 +108,14 @@ struct DeviceVerdict
 /// "feature VkPhysicalDeviceVulkan12Features::scalarBlockLayout".
 DeviceVerdict judge(const DeviceCandidate& candidate, const DeviceRequirements& requirements = {});
 
-/// Picks `requested` if given (it must exist and be suitable), else the first suitable device of the most
-/// preferred type (discrete, integrated, virtual, other, CPU). Returns the index into `candidates`.
+/// Picks `requested` if given (it must exist and be suitable), else among the suitable devices of the most
+/// preferred type (discrete, integrated, virtual, other, CPU), in index order, the one `share` names modulo their
+/// count (an MPI rank's index on its host: one GPU per rank, ranks beyond the GPUs sharing them). Returns the index
+/// into `candidates`.
 /// Throws rt::UsageError for a requested index that does not exist, rt::DeviceError listing every device
 /// and what it lacks when nothing fits.
 std::size_t selectDevice(const std::vector<DeviceCandidate>& candidates, std::optional<int> requested,
-                         const DeviceRequirements& requirements = {});
+                         const DeviceRequirements& requirements = {}, int share = 0);
 
 /// One line per device: index, name, type, and "ok" or what it lacks.
 std::string describeDevices(const std::vector<DeviceCandidate>& candidates,

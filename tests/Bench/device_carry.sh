@@ -43,4 +43,8 @@ for m in BoxTextured-glTF BoxTextured-glTF-Binary cameras; do
     cp -r "/usr/share/assimp/models/glTF2/$m" .devcarry/gltf/ 2>/dev/null || true
 done
 (cd .gl && apt-get download libvulkan1 libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2 2>/dev/null)
+# Debian's Open MPI for the MPI runs (device_run.sh scaling): mpirun (orterun), its libraries and plugins, its
+# PMIx; the plugins for fabrics the host lacks (UCX, libfabric, InfiniBand) fail to load, silently.
+(cd .gl && apt-get download openmpi-bin openmpi-common libopenmpi3 libpmix2 libhwloc15 libevent-core-2.1-7 \
+    libevent-pthreads-2.1-7 libmunge2 2>/dev/null)
 du -sh .devcarry .gl

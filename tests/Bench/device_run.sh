@@ -24,6 +24,10 @@
 #   tests/Bench/device_run.sh veach     issue 35: Veach's MIS scene, bsdf / nee / nee-mis each for BUDGET_MS
 #                                      (1000) on the GPU, SEEDS (4) seeds, against one nee-mis reference of
 #                                      REF_SPP (262144); relMSE per plate x light region (veach_regions.py)
+#   tests/Bench/device_run.sh scaling [RANKS]  issue 40: cornell-box-lights WIDTH (1200) px at SPP (65536) spp on
+#                                      one GPU and split over mpirun's ranks, one GPU each (RANKS, default "2 4",
+#                                      "1" the single process only), tests/Bench/scaling.sh
+#   tests/Bench/device_run.sh mpi      tests/Cli/mpi.sh on this driver: split renders, errors, Ctrl-C, a killed rank
 #   tests/Bench/device_run.sh variants RENDERS_FILE  the shader variants carried in .devcarry/variants/ (VARIANTS
 #                                      of device_carry.sh) against the build's own shaders, render by render
 #                                      (shader_variants.sh)
@@ -170,6 +174,16 @@ restir)
         cat /tmp/restir/*.txt >"$out/restir.txt"
         (cd /tmp/restir && tar -czf "$out/restir.tar.gz" ./*)
     done
+    ;;
+scaling)
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mca_base_component_show_load_errors=0
+    bash tests/Bench/scaling.sh "$bin" /tmp/scaling ${2:-2 4} | tee "$out/scaling.txt"
+    cp /tmp/scaling/*.json /tmp/scaling/*.wall "$out/"
+    ;;
+mpi)
+    # The MPI suite of the default tests on this driver (tests/Cli/mpi.sh), ranks on the host's GPUs.
+    export OMPI_MCA_mca_base_component_show_load_errors=0
+    bash tests/Cli/mpi.sh "$bin/ray-tracing-gpu" gpu
     ;;
 ab)
     ROUNDS=${ROUNDS:-3} bash tests/Bench/gpu_ab.sh .devcarry/baseline "$bin" /tmp/ab ${2:-} | tee "$out/ab.txt"

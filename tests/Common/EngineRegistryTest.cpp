@@ -24,6 +24,7 @@ public:
     void beginFrame(const RenderSettings&) override {}
     BatchResult traceSamples(std::uint32_t, std::uint32_t, RenderControl&) override { return {}; }
     Image estimate(std::uint32_t) override { return Image(1, 1); }
+    std::vector<double> radianceSums() override { return {0.0, 0.0, 0.0}; }
     SampleTally tally() const override { return {}; }
     const EngineOptions& options() const { return m_options; }
 

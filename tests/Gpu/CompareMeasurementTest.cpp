@@ -38,6 +38,7 @@ public:
         return m_engine.traceSamples(first, count, control);
     }
     Image estimate(std::uint32_t samples) override { return m_engine.estimate(samples); }
+    std::vector<double> radianceSums() override { return m_engine.radianceSums(); }
     SampleTally tally() const override { return m_engine.tally(); }
 
 private:

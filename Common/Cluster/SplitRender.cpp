@@ -1,0 +1,271 @@
+#include "Cluster/SplitRender.h"
+
+#include <algorithm>
+#include <chrono>
+#include <thread>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "Check.h"
+#include "Error.h"
+
+namespace rt::cluster
+{
+namespace
+{
+SplitRender* g_current = nullptr;
+bool g_partEnded = false; // this process has ended its part (at most one per process)
+
+const char* statusName(PartEnd::Status s)
+{
+    switch (s)
+    {
+    case PartEnd::Status::Finished:
+        return "finished";
+    case PartEnd::Status::Cancelled:
+        return "cancelled";
+    case PartEnd::Status::Failed:
+        return "failed";
+    }
+    return "failed";
+}
+
+PartEnd::Status statusNamed(const std::string& name)
+{
+    if (name == "finished")
+        return PartEnd::Status::Finished;
+    if (name == "cancelled")
+        return PartEnd::Status::Cancelled;
+    return PartEnd::Status::Failed;
+}
+
+nlohmann::json toJson(const PartEnd& e)
+{
+    return {{"status", statusName(e.status)},
+            {"message", e.message},
+            {"exit_code", e.exitCode},
+            {"stats", e.stats}};
+}
+
+PartEnd partEndFrom(const std::string& bytes)
+{
+    const nlohmann::json j = nlohmann::json::parse(bytes);
+    return {.status = statusNamed(j.at("status").get<std::string>()),
+            .message = j.at("message").get<std::string>(),
+            .exitCode = j.at("exit_code").get<int>(),
+            .stats = j.at("stats")};
+}
+
+Verdict judge(const Job& job, const std::vector<std::optional<PartEnd>>& ends)
+{
+    Verdict v;
+    std::vector<int> failed;
+    for (int r = 0; r < job.size(); ++r)
+    {
+        const std::optional<PartEnd>& e = ends[static_cast<std::size_t>(r)];
+        if (!e)
+        {
+            v.status = PartEnd::Status::Failed;
+            v.exitCode = 1;
+            v.silentRank = true;
+            v.message =
+                fmt::format("{} sent no word within {:.1f} s of the job's stop (it died, or its batch was "
+                            "still running): nothing written",
+                            job.name(r), kSilenceSeconds);
+            return v;
+        }
+        if (e->status == PartEnd::Status::Failed)
+            failed.push_back(r);
+    }
+    if (!failed.empty())
+    {
+        const PartEnd& first = *ends[static_cast<std::size_t>(failed.front())];
+        bool alike = static_cast<int>(failed.size()) == job.size();
+        for (int r : failed)
+            alike = alike && ends[static_cast<std::size_t>(r)]->message == first.message;
+        v.status = PartEnd::Status::Failed;
+        v.exitCode = first.exitCode == 0 ? 1 : first.exitCode;
+        v.message = alike ? first.message : job.name(failed.front()) + ": " + first.message;
+        return v;
+    }
+    for (const std::optional<PartEnd>& e : ends)
+        if (e->status == PartEnd::Status::Cancelled)
+        {
+            v.status = PartEnd::Status::Cancelled;
+            v.exitCode = 130;
+            return v;
+        }
+    v.ranks = nlohmann::json::array();
+    for (const std::optional<PartEnd>& e : ends)
+        v.ranks.push_back(e->stats);
+    return v;
+}
+
+nlohmann::json toJson(const Verdict& v)
+{
+    return {{"status", statusName(v.status)},
+            {"message", v.message},
+            {"exit_code", v.exitCode},
+            {"ranks", v.ranks}};
+}
+
+Verdict verdictFrom(const std::string& bytes)
+{
+    const nlohmann::json j = nlohmann::json::parse(bytes);
+    return {.status = statusNamed(j.at("status").get<std::string>()),
+            .message = j.at("message").get<std::string>(),
+            .exitCode = j.at("exit_code").get<int>(),
+            .ranks = j.at("ranks")};
+}
+} // namespace
+
+FramePart shareOf(std::uint32_t total, int rank, int ranks)
+{
+    RT_CHECK(ranks >= 1 && rank >= 0 && rank < ranks);
+    const auto n = static_cast<std::uint32_t>(ranks);
+    const auto r = static_cast<std::uint32_t>(rank);
+    const std::uint32_t base = total / n;
+    const std::uint32_t extra = total % n;
+    FramePart part;
+    part.firstSample = r * base + std::min(r, extra);
+    part.samples = base + (r < extra ? 1u : 0u);
+    return part;
+}
+
+SplitRender::SplitRender(Job& job, RenderControl& control) : m_job(job), m_control(control)
+{
+    RT_CHECK(g_current == nullptr); // one part per process
+    g_current = this;
+    if (m_job.root())
+    {
+        m_progress.assign(static_cast<std::size_t>(m_job.size()), 0);
+        m_ends.resize(static_cast<std::size_t>(m_job.size()));
+    }
+}
+
+SplitRender::~SplitRender()
+{
+    g_current = nullptr;
+}
+
+std::optional<Verdict> SplitRender::endAfterError(Job& job, const std::string& message, int exitCode)
+{
+    if (!job.distributed() || g_partEnded)
+        return std::nullopt;
+    RenderControl unused;
+    SplitRender part(job, unused);
+    return part.end({.status = PartEnd::Status::Failed, .message = message, .exitCode = exitCode});
+}
+
+void SplitRender::stopOthers()
+{
+    if (m_stopped)
+        return;
+    m_stopped = true;
+    for (int r = 1; r < m_job.size(); ++r)
+        if (!m_ends[static_cast<std::size_t>(r)])
+            m_job.send(r, Tag::Stop, {});
+}
+
+void SplitRender::take(const Message& m)
+{
+    const auto from = static_cast<std::size_t>(m.from);
+    if (m.tag == Tag::Progress)
+    {
+        m_progress[from] = std::stoull(m.bytes);
+        std::uint64_t others = 0;
+        for (std::size_t r = 1; r < m_progress.size(); ++r)
+            others += m_progress[r];
+        m_control.setDoneElsewhere(others);
+    }
+    else if (m.tag == Tag::End)
+    {
+        m_ends[from] = partEndFrom(m.bytes);
+        if (m_ends[from]->status != PartEnd::Status::Finished)
+        {
+            stopOthers();
+            m_control.requestCancel(); // root's own part too: the job writes nothing now
+        }
+    }
+}
+
+void SplitRender::beforeBatch()
+{
+    if (!m_job.root())
+    {
+        m_job.send(0, Tag::Progress, std::to_string(m_control.done()));
+        while (const std::optional<Message> m = m_job.poll())
+            if (m->tag == Tag::Stop)
+                m_control.requestCancel();
+        return;
+    }
+    while (const std::optional<Message> m = m_job.poll())
+        take(*m);
+}
+
+Verdict SplitRender::end(const PartEnd& mine)
+{
+    RT_CHECK(!m_ended && !g_partEnded);
+    m_ended = true;
+    g_partEnded = true;
+    std::string verdict;
+    if (!m_job.root())
+    {
+        m_job.send(0, Tag::End, toJson(mine).dump());
+        m_job.broadcast(verdict);
+        return verdictFrom(verdict);
+    }
+    m_ends[0] = mine;
+    if (mine.status != PartEnd::Status::Finished)
+        stopOthers();
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point start = Clock::now();
+    const auto missing = [&]
+    {
+        for (const std::optional<PartEnd>& e : m_ends)
+            if (!e)
+                return true;
+        return false;
+    };
+    while (missing())
+    {
+        if (const std::optional<Message> m = m_job.poll())
+        {
+            take(*m);
+            continue;
+        }
+        // Root was cancelled (Ctrl-C, or mpirun's SIGTERM after a rank died): the others answer within a
+        // batch, or are gone.
+        if (mine.status == PartEnd::Status::Cancelled &&
+            std::chrono::duration<double>(Clock::now() - start).count() > kSilenceSeconds)
+            break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    const Verdict v = judge(m_job, m_ends);
+    if (!missing())
+    {
+        verdict = toJson(v).dump();
+        m_job.broadcast(verdict);
+    }
+    return v;
+}
+
+nlohmann::json rankStats(const Job& job, const FramePart& share, const RenderStats& stats)
+{
+    nlohmann::json j = {{"rank", job.rank()},
+                        {"host", job.host(job.rank())},
+                        {"device", stats.device},
+                        {"first_sample", share.firstSample},
+                        {"samples", share.samples.value_or(0)},
+                        {"build_seconds", stats.buildSeconds},
+                        {"render_seconds", stats.renderSeconds},
+                        {"paths", stats.paths},
+                        {"segments", stats.segments},
+                        {"nan_samples", stats.nanSamples},
+                        {"inf_samples", stats.infSamples},
+                        {"threads_used", stats.threadsUsed}};
+    if (stats.gpuSeconds >= 0.0)
+        j["gpu_seconds"] = stats.gpuSeconds;
+    return j;
+}
+} // namespace rt::cluster
