@@ -18,6 +18,7 @@ for exe in .devcarry/bin/ray-tracing-gpu .devcarry/bin/ray-tracing-cpu .devcarry
     [ -e "$exe" ] || continue # a build without tests or without the CPU app
     ldd "$exe" | awk '/=>/ {print $3}'
 done | sort -u | grep -vE '/(libc|libm|libdl|libpthread|librt|libstdc\+\+|libgcc_s)\.so' |
+    grep -vE '/(libmpi|libopen-rte|libopen-pal|libpmix|libhwloc|libevent[a-z_]*-2\.1|libudev)\.so' |
     xargs -r -I{} cp -L {} .devcarry/lib/
 cp /usr/lib/x86_64-linux-gnu/libVkLayer_khronos_validation.so .devcarry/layers/
 sed 's|"library_path": "[^"]*"|"library_path": "./libVkLayer_khronos_validation.so"|' \
@@ -43,8 +44,14 @@ for m in BoxTextured-glTF BoxTextured-glTF-Binary cameras; do
     cp -r "/usr/share/assimp/models/glTF2/$m" .devcarry/gltf/ 2>/dev/null || true
 done
 (cd .gl && apt-get download libvulkan1 libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2 2>/dev/null)
-# Debian's Open MPI for the MPI runs (device_run.sh scaling): mpirun (orterun), its libraries and plugins, its
-# PMIx; the plugins for fabrics the host lacks (UCX, libfabric, InfiniBand) fail to load, silently.
-(cd .gl && apt-get download openmpi-bin openmpi-common libopenmpi3 libpmix2 libhwloc15 libevent-core-2.1-7 \
-    libevent-pthreads-2.1-7 libmunge2 2>/dev/null)
+# Open MPI: the lent machines' image has Ubuntu's 4.1.6 (libmpi.so.40, the ABI of Debian's 4.1.4), whose mpirun
+# must launch the apps with its own libraries: Debian's carried beside it crashed its mpirun (two PMIx in one
+# process, seen 2026-11-27). For a machine without one, MPI_DEBS=1 carries Debian's in .mpi/, which
+# device_run.sh unpacks only where no mpirun is found.
+rm -rf .mpi
+if [ "${MPI_DEBS:-0}" = 1 ]; then
+    mkdir -p .mpi
+    (cd .mpi && apt-get download openmpi-bin openmpi-common libopenmpi3 libpmix2 libhwloc15 libevent-core-2.1-7 \
+        libevent-pthreads-2.1-7 libmunge2 2>/dev/null)
+fi
 du -sh .devcarry .gl

@@ -36,6 +36,8 @@ mode=${1:-tests}
 out=${OUT:-/tmp/out}
 mkdir -p "$out"
 for f in .gl/*.deb; do dpkg -x "$f" /; done
+# Open MPI: the host's (docs/SCALING.md), else Debian's carried in .mpi/ (MPI_DEBS=1 of device_carry.sh).
+if ! command -v mpirun >/dev/null; then for f in .mpi/*.deb; do [ -e "$f" ] && dpkg -x "$f" /; done; fi
 ldconfig
 export LD_LIBRARY_PATH=$PWD/.devcarry/lib
 export VK_LAYER_PATH=$PWD/.devcarry/layers
