@@ -248,6 +248,8 @@ bool runCommonCommands(const CommonOptions& options)
     }
     if (options.exportScene.empty())
         return false;
+    if (!cluster::job().root())
+        return true; // one file, written once
     exportScene(buildScene(options.sceneRef()), options.exportScene);
     spdlog::info("wrote {}", options.exportScene);
     return true;

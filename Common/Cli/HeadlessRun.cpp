@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <mutex>
+#include <limits>
 #include <new>
 #include <optional>
 #include <set>
@@ -136,10 +137,9 @@ namespace
 {
 /// Root of a split render: the shares' sums added (Cluster/Job.h's sumToRoot) and divided as one process's
 /// engine divides its own (CpuEngine::estimate), and the stats of the whole job from every rank's.
-void mergeShares(RenderEngine& engine, cluster::Job& job, const cluster::Verdict& verdict, RenderResult& result,
+void mergeShares(std::vector<double> sums, cluster::Job& job, const cluster::Verdict& verdict, RenderResult& result,
                  std::uint32_t frameSamples)
 {
-    std::vector<double> sums = engine.radianceSums();
     job.sumToRoot(sums);
     if (!job.root())
         return;
@@ -178,6 +178,11 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& a
     if (job.distributed() && choose)
         throw UsageError("--strategy auto chooses on one process: run it without mpirun, then render the strategy "
                          "it names on the ranks");
+    if (job.distributed() && 3ull * std::uint64_t(asked.settings.width) * std::uint64_t(asked.settings.height()) >
+                                 std::uint64_t(std::numeric_limits<int>::max()))
+        throw UsageError(fmt::format("a {}x{} image is more values than one MPI reduction holds (2^31 - 1): split it "
+                                     "over mpirun's ranks in tiles of your own, or render it as one process",
+                                     asked.settings.width, asked.settings.height()));
     if (job.distributed() && asked.settings.estimator == Estimator::RestirDi)
         throw UsageError("restir-di's reservoirs carry each sample to the next, so its samples cannot be split over "
                          "mpirun's ranks: run it as one process");
@@ -216,9 +221,21 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& a
         if (split)
         {
             using Status = cluster::PartEnd::Status;
-            const cluster::Verdict verdict =
-                split->end({.status = result.stats.cancelled ? Status::Cancelled : Status::Finished,
-                            .stats = cluster::rankStats(job, part, result.stats)});
+            cluster::PartEnd mine{.status = result.stats.cancelled ? Status::Cancelled : Status::Finished,
+                                  .stats = cluster::rankStats(job, part, result.stats)};
+            std::vector<double> sums; // read before the verdict: a rank that cannot is a failed part, not a hang
+            if (mine.status == Status::Finished)
+            {
+                try
+                {
+                    sums = engine.radianceSums();
+                }
+                catch (const Error& e)
+                {
+                    mine = {.status = Status::Failed, .message = e.what(), .exitCode = e.exitCode()};
+                }
+            }
+            const cluster::Verdict verdict = split->end(mine);
             if (verdict.status == Status::Failed)
             {
                 if (job.root())
@@ -234,7 +251,16 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& a
                 // mpirun, ending the job, no longer lets MPI_Finalize finish: exit before its SIGKILL.
                 job.leave(130);
             }
-            mergeShares(engine, job, verdict, result, frameSamples);
+            try
+            {
+                mergeShares(std::move(sums), job, verdict, result, frameSamples);
+            }
+            catch (const std::exception& e)
+            {
+                // Past the verdict the ranks are in the reduction: one that fails there ends the job.
+                std::fprintf(stderr, "error: %s: %s\n", job.name(job.rank()).c_str(), e.what());
+                job.abandon(1);
+            }
             if (!job.root())
                 return 0;
         }
@@ -295,11 +321,26 @@ int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>
         return e.exitCode();
     }
     cluster::Job& job = cluster::job();
-    const bool speaks = job.root(); // of a job's ranks, root alone prints what every rank would print alike
     configureLogging(false);
     // The other ranks' stdout (help, lists, summaries) is root's.
-    if (!speaks && !std::freopen("/dev/null", "w", stdout))
+    if (!job.root() && !std::freopen("/dev/null", "w", stdout))
         std::fclose(stdout);
+    // An error on one of a job's ranks ends the job (Cluster/SplitRender.h): root prints the one line, naming the
+    // rank unless every rank failed alike (a bad flag).
+    const auto fail = [&](const std::string& message, int exitCode) {
+        if (const std::optional<cluster::Verdict> verdict =
+                cluster::SplitRender::endAfterError(job, message, exitCode))
+        {
+            if (job.root())
+                std::fprintf(stderr, "error: %s\n", verdict->message.c_str());
+            if (verdict->silentRank)
+                job.abandon(verdict->exitCode);
+            return verdict->exitCode;
+        }
+        std::fprintf(stderr, "error: %s%s\n", job.distributed() ? (job.name(job.rank()) + ": ").c_str() : "",
+                     message.c_str());
+        return exitCode;
+    };
     // A flag of one value given twice is refused (which one was meant?), in words rather than CLI11's "At Most 1
     // required but received 2".
     std::set<std::string> seen;
@@ -311,11 +352,7 @@ int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>
         const std::string name = token.substr(0, token.find('='));
         const CLI::Option* option = app.get_option_no_throw(name);
         if (option && option->get_items_expected_max() <= 1 && !seen.insert(name).second)
-        {
-            if (speaks)
-                std::fprintf(stderr, "error: %s is given more than once: give it once (see --help)\n", name.c_str());
-            return 2;
-        }
+            return fail(name + " is given more than once: give it once (see --help)", 2);
     }
     try
     {
@@ -331,25 +368,8 @@ int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>
     }
     catch (const CLI::ParseError& e)
     {
-        if (speaks)
-            std::fprintf(stderr, "error: %s (see --help)\n", e.what());
-        return 2;
+        return fail(std::string(e.what()) + " (see --help)", 2);
     }
-    // An error on one of a job's ranks ends the job (Cluster/SplitRender.h): root prints the one line.
-    const auto fail = [&](const std::string& message, int exitCode) {
-        if (const std::optional<cluster::Verdict> verdict =
-                cluster::SplitRender::endAfterError(job, message, exitCode))
-        {
-            if (job.root())
-                std::fprintf(stderr, "error: %s\n", verdict->message.c_str());
-            if (verdict->silentRank)
-                job.abandon(verdict->exitCode);
-            return verdict->exitCode;
-        }
-        std::fprintf(stderr, "error: %s%s\n", job.distributed() ? (job.name(job.rank()) + ": ").c_str() : "",
-                     message.c_str());
-        return exitCode;
-    };
     try
     {
         return body();

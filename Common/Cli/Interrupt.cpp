@@ -3,6 +3,8 @@
 #include <atomic>
 #include <csignal>
 
+#include "Cluster/Job.h"
+
 namespace rt
 {
 namespace
@@ -24,14 +26,17 @@ InterruptScope::InterruptScope()
 {
     g_interrupted.store(false);
     g_previousHandler = std::signal(SIGINT, onInterrupt);
-    // mpirun passes Ctrl-C on to its ranks as SIGTERM (and a rank's death too, a second before SIGKILL).
-    g_previousTermHandler = std::signal(SIGTERM, onInterrupt);
+    // mpirun passes Ctrl-C on to its ranks as SIGTERM (and a rank's death too, a second before SIGKILL). A process
+    // of its own keeps SIGTERM's default: kill, timeout and service managers end it at once.
+    if (cluster::job().distributed())
+        g_previousTermHandler = std::signal(SIGTERM, onInterrupt);
 }
 
 InterruptScope::~InterruptScope()
 {
     std::signal(SIGINT, g_previousHandler);
-    std::signal(SIGTERM, g_previousTermHandler);
+    if (cluster::job().distributed())
+        std::signal(SIGTERM, g_previousTermHandler);
     g_control.store(nullptr);
 }
 

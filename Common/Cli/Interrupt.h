@@ -1,4 +1,4 @@
-// Ctrl-C for the headless runs: while an InterruptScope lives, SIGINT (and SIGTERM, mpirun's) cancels the render whose RenderControl
+// Ctrl-C for the headless runs: while an InterruptScope lives, SIGINT (and, in an MPI job, SIGTERM: mpirun's) cancels the render whose RenderControl
 // is routed to it (the driver stops at its next check) and marks the scope interrupted, so a run of many
 // renders (ray-tracing-gpu --compare) stops after the one in progress. The previous handler comes back when
 // the scope ends. One scope at a time.

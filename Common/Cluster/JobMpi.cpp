@@ -50,6 +50,8 @@ JobScope::JobScope()
     // abort.
     if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS)
         throw Error("MPI_Init_thread failed: is this process started by Open MPI's mpirun?");
+    if (provided < MPI_THREAD_FUNNELED)
+        throw Error("this MPI library gives no thread support (MPI_THREAD_FUNNELED): the engines render on threads");
     Job& j = job();
     j.m_joined = true;
     check(MPI_Comm_dup(MPI_COMM_WORLD, &g_comm), "MPI_Comm_dup");

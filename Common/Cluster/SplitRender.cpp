@@ -60,22 +60,25 @@ Verdict judge(const Job& job, const std::vector<std::optional<PartEnd>>& ends)
 {
     Verdict v;
     std::vector<int> failed;
+    std::optional<int> silent;
     for (int r = 0; r < job.size(); ++r)
     {
         const std::optional<PartEnd>& e = ends[static_cast<std::size_t>(r)];
-        if (!e)
-        {
-            v.status = PartEnd::Status::Failed;
-            v.exitCode = 1;
-            v.silentRank = true;
-            v.message =
-                fmt::format("{} sent no word within {:.1f} s of the job's stop (it died, or its batch was "
-                            "still running): nothing written",
-                            job.name(r), kSilenceSeconds);
-            return v;
-        }
-        if (e->status == PartEnd::Status::Failed)
+        if (!e && !silent)
+            silent = r;
+        else if (e && e->status == PartEnd::Status::Failed)
             failed.push_back(r);
+    }
+    // A rank's own error explains the job's end better than a rank that did not answer in time.
+    if (silent && failed.empty())
+    {
+        v.status = PartEnd::Status::Failed;
+        v.exitCode = 1;
+        v.silentRank = true;
+        v.message = fmt::format("{} sent no word within {:.1f} s of mpirun's stop (it died, or its batch was still "
+                                "running): nothing written",
+                                job.name(*silent), kSilenceSeconds);
+        return v;
     }
     if (!failed.empty())
     {
@@ -86,6 +89,7 @@ Verdict judge(const Job& job, const std::vector<std::optional<PartEnd>>& ends)
         v.status = PartEnd::Status::Failed;
         v.exitCode = first.exitCode == 0 ? 1 : first.exitCode;
         v.message = alike ? first.message : job.name(failed.front()) + ": " + first.message;
+        v.silentRank = silent.has_value();
         return v;
     }
     for (const std::optional<PartEnd>& e : ends)
@@ -184,6 +188,7 @@ void SplitRender::take(const Message& m)
         if (m_ends[from]->status != PartEnd::Status::Finished)
         {
             stopOthers();
+            m_cancelledByJob = true;
             m_control.requestCancel(); // root's own part too: the job writes nothing now
         }
     }
@@ -219,7 +224,7 @@ Verdict SplitRender::end(const PartEnd& mine)
     if (mine.status != PartEnd::Status::Finished)
         stopOthers();
     using Clock = std::chrono::steady_clock;
-    const Clock::time_point start = Clock::now();
+    std::optional<Clock::time_point> signalled; // when root saw a cancel it did not cause: Ctrl-C or a rank's death
     const auto missing = [&]
     {
         for (const std::optional<PartEnd>& e : m_ends)
@@ -234,10 +239,11 @@ Verdict SplitRender::end(const PartEnd& mine)
             take(*m);
             continue;
         }
-        // Root was cancelled (Ctrl-C, or mpirun's SIGTERM after a rank died): the others answer within a
-        // batch, or are gone.
-        if (mine.status == PartEnd::Status::Cancelled &&
-            std::chrono::duration<double>(Clock::now() - start).count() > kSilenceSeconds)
+        // mpirun's SIGTERM (Ctrl-C, or a rank died), before or after root's part ended: the others answer within a
+        // batch, or are gone and mpirun's SIGKILL follows in a second.
+        if (!signalled && m_control.cancelRequested() && !m_cancelledByJob)
+            signalled = Clock::now();
+        if (signalled && std::chrono::duration<double>(Clock::now() - *signalled).count() > kSilenceSeconds)
             break;
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }

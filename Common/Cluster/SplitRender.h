@@ -90,9 +90,10 @@ class SplitRender
 
     Job& m_job;
     RenderControl& m_control;
-    std::vector<std::uint64_t> m_progress;      // root: each rank's paths traced
+    std::vector<std::uint64_t> m_progress; // root: each rank's paths traced
     std::vector<std::optional<PartEnd>> m_ends; // root: each rank's End, once it came
-    bool m_stopped = false;                     // root: Stop sent to the others
+    bool m_stopped = false; // root: Stop sent to the others
+    bool m_cancelledByJob = false; // root: its own part cancelled because another rank failed or was cancelled
     bool m_ended = false;
 };
 

@@ -60,7 +60,8 @@ int main(int argc, char** argv)
         const auto engine = rt::parseName<rt::EngineKind>(engineName);
         if (!engine || *engine == rt::EngineKind::Gpu)
             throw rt::UsageError("--engine must be single or multi (got '" + engineName + "')");
-        rt::checkOutputPaths(options);
+        if (rt::cluster::job().root())
+            rt::checkOutputPaths(options); // root alone writes
         const rt::CommandLineRender job = rt::resolveCommandLine(options);
         const std::unique_ptr<rt::RenderEngine> cpu = rt::engines::make(*engine, engineOptions);
         return rt::runHeadless(*cpu, job.scene, job.request, options,

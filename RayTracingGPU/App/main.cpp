@@ -228,7 +228,8 @@ int main(int argc, char** argv)
         if (!options.headless)
             return runWindow(options, window, device, validation || rt::gpu::validationWanted(),
                              engineOptions.integrator, shaderDir);
-        rt::checkOutputPaths(options);
+        if (rt::cluster::job().root())
+            rt::checkOutputPaths(options); // root alone writes
         const rt::CommandLineRender job = rt::resolveCommandLine(options);
         const std::unique_ptr<rt::RenderEngine> gpu = rt::engines::make(rt::EngineKind::Gpu, engineOptions);
         const int status = rt::runHeadless(*gpu, job.scene, job.request, options,

@@ -14,7 +14,8 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 # CI runs as ro
 export OMPI_MCA_rmaps_base_oversubscribe=1 # more ranks than this machine's 2 cores
 work=$(mktemp -d)
 pid=
-trap '[ -n "$pid" ] && kill -KILL "$pid" 2>/dev/null; rm -rf "$work"' EXIT
+# On the way out, the job of a failed check and its ranks (they name $work in their flags).
+trap '[ -n "$pid" ] && kill -KILL "$pid" 2>/dev/null; pkill -KILL -f -- "$work" 2>/dev/null; rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*"; [ -f "$work/stderr" ] && cat "$work/stderr"; exit 1; }
 mpi() { mpirun -q "$@"; }
 # A build without MPI refuses to be started as several copies: skip then.
@@ -89,6 +90,15 @@ expect_one_error() {
 mpi -np 1 "$app" "${common[@]}" --spp 4096 --hdr "$work/out.pfm" --stats "$work/out.json" : \
     -np 1 "$app" --headless --quiet --scene no-such-scene --hdr "$work/out.pfm" >/dev/null 2>"$work/stderr"
 expect_one_error $? "^error: rank 1 \(.+\): .*no-such-scene"
+# ... among three, the others rendering: root names rank 1, not a rank still in its batch when it was stopped.
+mpi -np 1 "$app" "${common[@]}" --spp 4096 --hdr "$work/out.pfm" : \
+    -np 1 "$app" --headless --quiet --scene no-such-scene --hdr "$work/out.pfm" : \
+    -np 1 "$app" "${common[@]}" --spp 4096 --hdr "$work/out.pfm" >/dev/null 2>"$work/stderr"
+expect_one_error $? "^error: rank 1 \(.+\): .*no-such-scene"
+# ... and a rank that stops before any render, at its flags: the job still ends, in one line naming it.
+mpi -np 1 "$app" "${common[@]}" --spp 4096 --hdr "$work/out.pfm" : \
+    -np 1 "$app" "${common[@]}" --spp 4096 --no-such-flag >/dev/null 2>"$work/stderr"
+expect_one_error $? "^error: rank 1 \(.+\): .*no-such-flag"
 echo "ok: one rank's error"
 
 # What cannot be split is refused, once.
@@ -148,14 +158,23 @@ long_render
 kill -INT "$pid"
 wait_bounded 3
 [ "$status" != 0 ] || fail "Ctrl-C: status 0"
+grep -q "render cancelled" "$work/stderr" || fail "Ctrl-C: root did not report the cancel (killed before it?)"
+! grep -q '^error:' "$work/stderr" || fail "Ctrl-C: an error line where every rank was cancelled"
 ! files_left || fail "Ctrl-C: files left behind: $(ls "$work")"
 echo "ok: Ctrl-C"
 
-# A rank killed: one error line naming it, no file.
+# A rank killed: one error line naming it, no file. Root names the silent rank once it is out of its batch, within
+# the second between mpirun's SIGTERM and its SIGKILL: on the CPU engine (cancelled between camera samples) always;
+# lavapipe's batches can outlast that second on this 2-core machine, so there the line may be missing, never wrong.
 long_render
 victim=$(rank_pid 1)
 [ -n "$victim" ] || fail "no rank 1 found"
 kill -KILL "$victim"
 wait_bounded 3
-expect_one_error "$status" "^error: rank 1 \(.+\)"
+if [ "$kind" = cpu ] || grep -q '^error:' "$work/stderr"; then
+    expect_one_error "$status" "^error: rank 1 \(.+\)"
+else
+    [ "$status" != 0 ] || fail "a killed rank: status 0"
+    ! files_left || fail "a killed rank: files left behind: $(ls "$work")"
+fi
 echo "ok: a killed rank"
