@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <thread>
 
 #include <spdlog/fmt/fmt.h>
@@ -56,55 +57,6 @@ PartEnd partEndFrom(const std::string& bytes)
             .stats = j.at("stats")};
 }
 
-Verdict judge(const Job& job, const std::vector<std::optional<PartEnd>>& ends)
-{
-    Verdict v;
-    std::vector<int> failed;
-    std::optional<int> silent;
-    for (int r = 0; r < job.size(); ++r)
-    {
-        const std::optional<PartEnd>& e = ends[static_cast<std::size_t>(r)];
-        if (!e && !silent)
-            silent = r;
-        else if (e && e->status == PartEnd::Status::Failed)
-            failed.push_back(r);
-    }
-    // A rank's own error explains the job's end better than a rank that did not answer in time.
-    if (silent && failed.empty())
-    {
-        v.status = PartEnd::Status::Failed;
-        v.exitCode = 1;
-        v.silentRank = true;
-        v.message = fmt::format("{} sent no word within {:.1f} s of mpirun's stop (it died, or its batch was still "
-                                "running): nothing written",
-                                job.name(*silent), kSilenceSeconds);
-        return v;
-    }
-    if (!failed.empty())
-    {
-        const PartEnd& first = *ends[static_cast<std::size_t>(failed.front())];
-        bool alike = static_cast<int>(failed.size()) == job.size();
-        for (int r : failed)
-            alike = alike && ends[static_cast<std::size_t>(r)]->message == first.message;
-        v.status = PartEnd::Status::Failed;
-        v.exitCode = first.exitCode == 0 ? 1 : first.exitCode;
-        v.message = alike ? first.message : job.name(failed.front()) + ": " + first.message;
-        v.silentRank = silent.has_value();
-        return v;
-    }
-    for (const std::optional<PartEnd>& e : ends)
-        if (e->status == PartEnd::Status::Cancelled)
-        {
-            v.status = PartEnd::Status::Cancelled;
-            v.exitCode = 130;
-            return v;
-        }
-    v.ranks = nlohmann::json::array();
-    for (const std::optional<PartEnd>& e : ends)
-        v.ranks.push_back(e->stats);
-    return v;
-}
-
 nlohmann::json toJson(const Verdict& v)
 {
     return {{"status", statusName(v.status)},
@@ -134,6 +86,56 @@ FramePart shareOf(std::uint32_t total, int rank, int ranks)
     part.firstSample = r * base + std::min(r, extra);
     part.samples = base + (r < extra ? 1u : 0u);
     return part;
+}
+
+Verdict judgeEnds(const std::vector<std::optional<PartEnd>>& ends, const std::function<std::string(int)>& nameOf)
+{
+    Verdict v;
+    std::vector<int> failed;
+    std::optional<int> silent;
+    const int ranks = static_cast<int>(ends.size());
+    for (int r = 0; r < ranks; ++r)
+    {
+        const std::optional<PartEnd>& e = ends[static_cast<std::size_t>(r)];
+        if (!e && !silent)
+            silent = r;
+        else if (e && e->status == PartEnd::Status::Failed)
+            failed.push_back(r);
+    }
+    // A rank's own error explains the job's end better than a rank that did not answer in time.
+    if (silent && failed.empty())
+    {
+        v.status = PartEnd::Status::Failed;
+        v.exitCode = 1;
+        v.silentRank = true;
+        v.message = fmt::format("{} sent no word within {:.1f} s of mpirun's stop (it died, or its batch was still "
+                                "running): nothing written",
+                                nameOf(*silent), kSilenceSeconds);
+        return v;
+    }
+    if (!failed.empty())
+    {
+        const PartEnd& first = *ends[static_cast<std::size_t>(failed.front())];
+        bool alike = static_cast<int>(failed.size()) == ranks;
+        for (int r : failed)
+            alike = alike && ends[static_cast<std::size_t>(r)]->message == first.message;
+        v.status = PartEnd::Status::Failed;
+        v.exitCode = first.exitCode == 0 ? 1 : first.exitCode;
+        v.message = alike ? first.message : nameOf(failed.front()) + ": " + first.message;
+        v.silentRank = silent.has_value();
+        return v;
+    }
+    for (const std::optional<PartEnd>& e : ends)
+        if (e->status == PartEnd::Status::Cancelled)
+        {
+            v.status = PartEnd::Status::Cancelled;
+            v.exitCode = 130;
+            return v;
+        }
+    v.ranks = nlohmann::json::array();
+    for (const std::optional<PartEnd>& e : ends)
+        v.ranks.push_back(e->stats);
+    return v;
 }
 
 SplitRender::SplitRender(Job& job, RenderControl& control) : m_job(job), m_control(control)
@@ -247,7 +249,7 @@ Verdict SplitRender::end(const PartEnd& mine)
             break;
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
-    const Verdict v = judge(m_job, m_ends);
+    const Verdict v = judgeEnds(m_ends, [&](int r) { return m_job.name(r); });
     if (!missing())
     {
         verdict = toJson(v).dump();

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -55,6 +56,11 @@ struct Verdict
     nlohmann::json ranks;    // Finished: every rank's stats, in rank order
     bool silentRank = false; // Failed because a rank sent no End: the job cannot end in step (Job::abandon)
 };
+
+/// Root's verdict from every rank's End (`ends[r]`; empty: rank r sent none in time), naming ranks with `nameOf`:
+/// Failed when a rank failed (the first failing rank's error, unnamed when every rank failed alike) or, failing
+/// none, when one is silent; else Cancelled when one was; else Finished, with every rank's stats.
+Verdict judgeEnds(const std::vector<std::optional<PartEnd>>& ends, const std::function<std::string(int)>& nameOf);
 
 /// Seconds root, cancelled, waits for a missing End before it reports the rank as silent (mpirun's SIGKILL
 /// follows its SIGTERM by a second).

@@ -12,6 +12,8 @@ command -v mpirun >/dev/null || { echo "no mpirun: skipped"; exit 77; }
 "$app" --help | grep -q -- "--headless" || exit 1
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 # CI runs as root
 export OMPI_MCA_rmaps_base_oversubscribe=1 # more ranks than this machine's 2 cores
+# Containers often forbid the cross-memory attach (ptrace) Open MPI's shared-memory transport tries first.
+export OMPI_MCA_btl_vader_single_copy_mechanism=none
 work=$(mktemp -d)
 pid=
 # On the way out, the job of a failed check and its ranks (they name $work in their flags).

@@ -35,6 +35,71 @@ TEST(SampleShares, ConsecutiveRunsThatCoverTheFrameOnce)
         }
 }
 
+std::string nameOf(int r)
+{
+    return "rank " + std::to_string(r) + " (h)";
+}
+
+PartEnd finished(int rank)
+{
+    return {.status = PartEnd::Status::Finished, .stats = {{"rank", rank}}};
+}
+
+PartEnd failed(const std::string& message, int exitCode)
+{
+    return {.status = PartEnd::Status::Failed, .message = message, .exitCode = exitCode};
+}
+
+TEST(JobVerdict, EveryRankFinishedGivesEveryRanksStatsInRankOrder)
+{
+    const Verdict v = judgeEnds({finished(0), finished(1), finished(2)}, nameOf);
+    EXPECT_EQ(v.status, PartEnd::Status::Finished);
+    EXPECT_EQ(v.exitCode, 0);
+    ASSERT_EQ(v.ranks.size(), 3u);
+    for (int r = 0; r < 3; ++r)
+        EXPECT_EQ(v.ranks[static_cast<std::size_t>(r)].at("rank"), r);
+}
+
+TEST(JobVerdict, ARanksErrorNamesItAndOutranksTheCancelsItCaused)
+{
+    const PartEnd cancelled{.status = PartEnd::Status::Cancelled};
+    const Verdict v = judgeEnds({cancelled, failed("no such scene", 2), cancelled}, nameOf);
+    EXPECT_EQ(v.status, PartEnd::Status::Failed);
+    EXPECT_EQ(v.exitCode, 2);
+    EXPECT_EQ(v.message, "rank 1 (h): no such scene");
+    EXPECT_FALSE(v.silentRank);
+}
+
+TEST(JobVerdict, AnErrorEveryRankHadIsSaidOnceWithoutARank)
+{
+    const Verdict v = judgeEnds({failed("--spp must be positive", 2), failed("--spp must be positive", 2)}, nameOf);
+    EXPECT_EQ(v.message, "--spp must be positive");
+    EXPECT_EQ(v.exitCode, 2);
+}
+
+TEST(JobVerdict, ASilentRankIsNamedUnlessAnotherRankFailed)
+{
+    const PartEnd cancelled{.status = PartEnd::Status::Cancelled};
+    const Verdict silent = judgeEnds({cancelled, std::nullopt, cancelled}, nameOf);
+    EXPECT_EQ(silent.status, PartEnd::Status::Failed);
+    EXPECT_TRUE(silent.silentRank) << "the job cannot end in step: it is abandoned";
+    EXPECT_NE(silent.message.find("rank 1 (h) sent no word"), std::string::npos) << silent.message;
+    EXPECT_NE(silent.exitCode, 0);
+
+    // A rank still in its batch when root gave up does not hide the error that stopped the job.
+    const Verdict both = judgeEnds({cancelled, failed("device lost", 4), std::nullopt}, nameOf);
+    EXPECT_EQ(both.message, "rank 1 (h): device lost");
+    EXPECT_EQ(both.exitCode, 4);
+    EXPECT_TRUE(both.silentRank);
+}
+
+TEST(JobVerdict, CancelledWhenARankWasAndNoneFailed)
+{
+    const Verdict v = judgeEnds({finished(0), {PartEnd{.status = PartEnd::Status::Cancelled}}}, nameOf);
+    EXPECT_EQ(v.status, PartEnd::Status::Cancelled);
+    EXPECT_EQ(v.exitCode, 130);
+}
+
 TEST(Job, AProcessMpirunDidNotStartIsAJobOfOne)
 {
     const Job& j = job();
