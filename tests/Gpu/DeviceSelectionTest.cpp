@@ -101,6 +101,24 @@ TEST(DeviceSelection, SkipsUnsuitablePreferredDevice)
     EXPECT_EQ(selectDevice({dgpu, capable(1, "llvmpipe", DeviceType::Cpu)}, std::nullopt), 1u);
 }
 
+TEST(DeviceSelection, EachRankOfAHostTakesItsOwnGpuOfTheBestKind)
+{
+    // An MPI job's ranks on one host (their index: the share): one GPU each, never the CPU device or the slower
+    // kind while a GPU of the best kind is there; ranks beyond the GPUs share them, in turn.
+    DeviceCandidate broken = capable(2, "dgpu without RT", DeviceType::DiscreteGpu);
+    broken.features.rayTracingPipeline = false;
+    const std::vector<DeviceCandidate> devices = {capable(0, "llvmpipe", DeviceType::Cpu),
+                                                  capable(1, "dgpu A", DeviceType::DiscreteGpu), broken,
+                                                  capable(3, "igpu", DeviceType::IntegratedGpu),
+                                                  capable(4, "dgpu B", DeviceType::DiscreteGpu)};
+    EXPECT_EQ(selectDevice(devices, std::nullopt, {}, 0), 1u);
+    EXPECT_EQ(selectDevice(devices, std::nullopt, {}, 1), 4u);
+    EXPECT_EQ(selectDevice(devices, std::nullopt, {}, 2), 1u);
+    EXPECT_EQ(selectDevice(devices, std::nullopt, {}, 3), 4u);
+    EXPECT_EQ(selectDevice(devices, 3, {}, 1), 3u) << "--device overrides the rank's share";
+    EXPECT_EQ(selectDevice({devices[0]}, std::nullopt, {}, 5), 0u) << "one device: every rank shares it";
+}
+
 TEST(DeviceSelection, HonoursRequestedIndex)
 {
     const std::vector<DeviceCandidate> devices = {capable(0, "llvmpipe", DeviceType::Cpu),
