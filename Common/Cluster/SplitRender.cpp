@@ -12,67 +12,16 @@
 
 namespace rt::cluster
 {
+// How Ends and verdicts travel between ranks.
+NLOHMANN_JSON_SERIALIZE_ENUM(PartEnd::Status, {{PartEnd::Status::Finished, "finished"},
+                                               {PartEnd::Status::Cancelled, "cancelled"},
+                                               {PartEnd::Status::Failed, "failed"}})
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(PartEnd, status, message, exitCode, stats)
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(Verdict, status, message, exitCode, ranks, silentRank)
+
 namespace
 {
-SplitRender* g_current = nullptr;
 bool g_partEnded = false; // this process has ended its part (at most one per process)
-
-const char* statusName(PartEnd::Status s)
-{
-    switch (s)
-    {
-    case PartEnd::Status::Finished:
-        return "finished";
-    case PartEnd::Status::Cancelled:
-        return "cancelled";
-    case PartEnd::Status::Failed:
-        return "failed";
-    }
-    return "failed";
-}
-
-PartEnd::Status statusNamed(const std::string& name)
-{
-    if (name == "finished")
-        return PartEnd::Status::Finished;
-    if (name == "cancelled")
-        return PartEnd::Status::Cancelled;
-    return PartEnd::Status::Failed;
-}
-
-nlohmann::json toJson(const PartEnd& e)
-{
-    return {{"status", statusName(e.status)},
-            {"message", e.message},
-            {"exit_code", e.exitCode},
-            {"stats", e.stats}};
-}
-
-PartEnd partEndFrom(const std::string& bytes)
-{
-    const nlohmann::json j = nlohmann::json::parse(bytes);
-    return {.status = statusNamed(j.at("status").get<std::string>()),
-            .message = j.at("message").get<std::string>(),
-            .exitCode = j.at("exit_code").get<int>(),
-            .stats = j.at("stats")};
-}
-
-nlohmann::json toJson(const Verdict& v)
-{
-    return {{"status", statusName(v.status)},
-            {"message", v.message},
-            {"exit_code", v.exitCode},
-            {"ranks", v.ranks}};
-}
-
-Verdict verdictFrom(const std::string& bytes)
-{
-    const nlohmann::json j = nlohmann::json::parse(bytes);
-    return {.status = statusNamed(j.at("status").get<std::string>()),
-            .message = j.at("message").get<std::string>(),
-            .exitCode = j.at("exit_code").get<int>(),
-            .ranks = j.at("ranks")};
-}
 } // namespace
 
 FramePart shareOf(std::uint32_t total, int rank, int ranks)
@@ -140,18 +89,11 @@ Verdict judgeEnds(const std::vector<std::optional<PartEnd>>& ends, const std::fu
 
 SplitRender::SplitRender(Job& job, RenderControl& control) : m_job(job), m_control(control)
 {
-    RT_CHECK(g_current == nullptr); // one part per process
-    g_current = this;
     if (m_job.root())
     {
         m_progress.assign(static_cast<std::size_t>(m_job.size()), 0);
         m_ends.resize(static_cast<std::size_t>(m_job.size()));
     }
-}
-
-SplitRender::~SplitRender()
-{
-    g_current = nullptr;
 }
 
 std::optional<Verdict> SplitRender::endAfterError(Job& job, const std::string& message, int exitCode)
@@ -186,7 +128,7 @@ void SplitRender::take(const Message& m)
     }
     else if (m.tag == Tag::End)
     {
-        m_ends[from] = partEndFrom(m.bytes);
+        m_ends[from] = nlohmann::json::parse(m.bytes).get<PartEnd>();
         if (m_ends[from]->status != PartEnd::Status::Finished)
         {
             stopOthers();
@@ -212,15 +154,14 @@ void SplitRender::beforeBatch()
 
 Verdict SplitRender::end(const PartEnd& mine)
 {
-    RT_CHECK(!m_ended && !g_partEnded);
-    m_ended = true;
+    RT_CHECK(!g_partEnded);
     g_partEnded = true;
     std::string verdict;
     if (!m_job.root())
     {
-        m_job.send(0, Tag::End, toJson(mine).dump());
+        m_job.send(0, Tag::End, nlohmann::json(mine).dump());
         m_job.broadcast(verdict);
-        return verdictFrom(verdict);
+        return nlohmann::json::parse(verdict).get<Verdict>();
     }
     m_ends[0] = mine;
     if (mine.status != PartEnd::Status::Finished)
@@ -252,7 +193,7 @@ Verdict SplitRender::end(const PartEnd& mine)
     const Verdict v = judgeEnds(m_ends, [&](int r) { return m_job.name(r); });
     if (!missing())
     {
-        verdict = toJson(v).dump();
+        verdict = nlohmann::json(v).dump();
         m_job.broadcast(verdict);
     }
     return v;

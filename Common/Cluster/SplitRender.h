@@ -73,7 +73,6 @@ class SplitRender
     /// Starts this rank's part of the job; `control` is the render's (cancelled by a Stop, and on root
     /// counting the other ranks' progress).
     SplitRender(Job& job, RenderControl& control);
-    ~SplitRender();
     SplitRender(const SplitRender&) = delete;
     SplitRender& operator=(const SplitRender&) = delete;
 
@@ -100,7 +99,6 @@ class SplitRender
     std::vector<std::optional<PartEnd>> m_ends; // root: each rank's End, once it came
     bool m_stopped = false; // root: Stop sent to the others
     bool m_cancelledByJob = false; // root: its own part cancelled because another rank failed or was cancelled
-    bool m_ended = false;
 };
 
 /// A rank's figures for the stats' "ranks" list: its host, device, samples and times.
