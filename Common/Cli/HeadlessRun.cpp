@@ -135,17 +135,6 @@ void checkOutputPaths(const CommonOptions& o)
 
 namespace
 {
-/// The end of this rank's run when its job failed: root prints the job's one error line; a job with a rank that went
-/// silent cannot end in step and is abandoned. Returns the exit status.
-int endFailedJob(cluster::Job& job, const cluster::Verdict& verdict)
-{
-    if (job.root())
-        std::fprintf(stderr, "error: %s\n", verdict.message.c_str());
-    if (verdict.silentRank)
-        job.abandon(verdict.exitCode);
-    return verdict.exitCode;
-}
-
 /// Root of a split render: the shares' sums added (Cluster/Job.h's sumToRoot) and divided as one process's
 /// engine divides its own (CpuEngine::estimate), and the stats of the whole job from every rank's.
 void mergeShares(std::vector<double> sums, cluster::Job& job, const cluster::Verdict& verdict, RenderResult& result,
@@ -248,7 +237,7 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& a
             }
             const cluster::Verdict verdict = split->end(mine);
             if (verdict.status == Status::Failed)
-                return endFailedJob(job, verdict);
+                return cluster::endFailedJob(job, verdict);
             if (verdict.status == Status::Cancelled)
             {
                 if (job.root())
@@ -335,7 +324,7 @@ int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>
     const auto fail = [&](const std::string& message, int exitCode) {
         if (const std::optional<cluster::Verdict> verdict =
                 cluster::SplitRender::endAfterError(job, message, exitCode))
-            return endFailedJob(job, *verdict);
+            return cluster::endFailedJob(job, *verdict);
         std::fprintf(stderr, "error: %s%s\n", job.distributed() ? (job.name(job.rank()) + ": ").c_str() : "",
                      message.c_str());
         return exitCode;

@@ -19,6 +19,10 @@ enum class Tag : int
     Progress = 1, // rank -> root: camera paths traced so far (decimal text)
     End = 2,      // rank -> root: how the rank's part ended (JSON: SplitRender.cpp)
     Stop = 3,     // root -> rank: stop the part now (another rank failed or was cancelled)
+    Ask = 4,      // rank -> root: free for a task (Cluster/TaskPool.h)
+    Task = 5,     // root -> rank: a task to run (its description), or none left (empty)
+    Result = 6,   // rank -> root: what a task gave (its index, a line, then its bytes)
+    Share = 7,    // root -> rank: data every task needs (a comparison's reference image)
 };
 
 struct Message

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <functional>
 #include <thread>
 
@@ -87,7 +88,8 @@ Verdict judgeEnds(const std::vector<std::optional<PartEnd>>& ends, const std::fu
     return v;
 }
 
-SplitRender::SplitRender(Job& job, RenderControl& control) : m_job(job), m_control(control)
+SplitRender::SplitRender(Job& job, RenderControl& control, bool progress)
+    : m_job(job), m_control(control), m_sendProgress(progress)
 {
     if (m_job.root())
     {
@@ -136,16 +138,21 @@ void SplitRender::take(const Message& m)
             m_control.requestCancel(); // root's own part too: the job writes nothing now
         }
     }
+    else if (m_others)
+        m_others(m);
 }
 
 void SplitRender::beforeBatch()
 {
     if (!m_job.root())
     {
-        m_job.send(0, Tag::Progress, std::to_string(m_control.done()));
+        if (m_sendProgress)
+            m_job.send(0, Tag::Progress, std::to_string(m_control.done()));
         while (const std::optional<Message> m = m_job.poll())
             if (m->tag == Tag::Stop)
                 m_control.requestCancel();
+            else if (m_others)
+                m_others(*m);
         return;
     }
     while (const std::optional<Message> m = m_job.poll())
@@ -156,6 +163,7 @@ Verdict SplitRender::end(const PartEnd& mine)
 {
     RT_CHECK(!g_partEnded);
     g_partEnded = true;
+    m_others = nullptr;
     std::string verdict;
     if (!m_job.root())
     {
@@ -197,6 +205,15 @@ Verdict SplitRender::end(const PartEnd& mine)
         m_job.broadcast(verdict);
     }
     return v;
+}
+
+int endFailedJob(Job& job, const Verdict& verdict)
+{
+    if (job.root())
+        std::fprintf(stderr, "error: %s\n", verdict.message.c_str());
+    if (verdict.silentRank)
+        job.abandon(verdict.exitCode);
+    return verdict.exitCode;
 }
 
 nlohmann::json rankStats(const Job& job, const FramePart& share, const RenderStats& stats)

@@ -71,8 +71,8 @@ class SplitRender
 {
   public:
     /// Starts this rank's part of the job; `control` is the render's (cancelled by a Stop, and on root
-    /// counting the other ranks' progress).
-    SplitRender(Job& job, RenderControl& control);
+    /// counting the other ranks' progress, which the ranks send before each batch when `progress`).
+    SplitRender(Job& job, RenderControl& control, bool progress = true);
     SplitRender(const SplitRender&) = delete;
     SplitRender& operator=(const SplitRender&) = delete;
 
@@ -80,8 +80,12 @@ class SplitRender
     /// the others' progress and Ends (stopping everyone once one failed or was cancelled).
     void beforeBatch();
     /// Ends this rank's part with `mine` and returns the verdict (every rank; blocks until root has every
-    /// End).
+    /// End). Messages of other tags that arrive meanwhile are dropped.
     Verdict end(const PartEnd& mine);
+
+    /// Where the messages of tags other than Progress, End and Stop go when beforeBatch polls (a TaskPool's);
+    /// empty: dropped.
+    void setOtherMessages(std::function<void(const Message&)> handler) { m_others = std::move(handler); }
 
     /// Ends this process's part of the job with a failure, when an error escaped before its end (guardedMain:
     /// a scene that does not load on this rank, a device lost): sends the End a part would have, or, on root,
@@ -95,11 +99,17 @@ class SplitRender
 
     Job& m_job;
     RenderControl& m_control;
+    bool m_sendProgress = true;
+    std::function<void(const Message&)> m_others;
     std::vector<std::uint64_t> m_progress; // root: each rank's paths traced
     std::vector<std::optional<PartEnd>> m_ends; // root: each rank's End, once it came
     bool m_stopped = false; // root: Stop sent to the others
     bool m_cancelledByJob = false; // root: its own part cancelled because another rank failed or was cancelled
 };
+
+/// The end of this rank's run when its job failed: root prints the job's one error line ("error: ..." on stderr); a
+/// job with a rank that went silent cannot end in step and is abandoned. Returns the exit status.
+int endFailedJob(Job& job, const Verdict& verdict);
 
 /// A rank's figures for the stats' "ranks" list: its host, device, samples and times.
 nlohmann::json rankStats(const Job& job, const FramePart& share, const RenderStats& stats);

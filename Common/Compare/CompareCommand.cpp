@@ -9,7 +9,6 @@
 
 #include "Cli/HeadlessRun.h"
 #include "Cli/ValueParsing.h"
-#include "Cluster/Job.h"
 #include "Compare/AutoCommand.h"
 #include "Compare/Compare.h"
 #include "Compare/ReferenceCache.h"
@@ -24,7 +23,8 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
     flags.referenceCache = defaultReferenceCacheDir().string();
     CLI::Option* compareFlag = app.add_flag("--compare", flags.compare,
                  "Headless comparison: render --scene at every count of --spp-list on every engine of --engines, "
-                 "print time, CPU/GPU ratio and relMSE against a --reference-spp render");
+                 "print time, CPU/GPU ratio and relMSE against a --reference-spp render; under mpirun, the ranks share its "
+                 "renders (docs/SCALING.md)");
     app.add_option("--spp-list", flags.sppList, "With --compare: sample counts, comma separated")->capture_default_str();
     app.add_option("--engines", flags.engines,
                    "With --compare: engines, comma separated (single, multi, gpu; default: every engine this app "
@@ -116,8 +116,6 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
 
 int runCompare(const CompareFlags& flags, const CommonOptions& options, const EngineOptions& engineOptions)
 {
-    if (cluster::job().distributed())
-        throw UsageError("--compare does not hand its rows to mpirun's ranks yet (issue 40): run it as one process");
     const CommandLineRender job = resolveCommandLine(options);
     CompareOptions c;
     c.spps = parseSppList(flags.sppList);

@@ -30,6 +30,7 @@ struct ConvergenceRow
     double trimmedRelMse = 0.0; // relMSE without the worst 0.1 % of pixels (Image/Metrics.h)
     double mape = 0.0;
     double flip = -1.0; // mean HDR-FLIP; < 0: not computed (only with --metric flip, round 0)
+    int rank = 0; // the MPI rank that rendered it (0 for a run of one process: docs/SCALING.md)
 };
 
 class ConvergenceCsv

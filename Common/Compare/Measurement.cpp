@@ -9,6 +9,21 @@
 
 namespace rt::compare
 {
+namespace
+{
+std::function<bool()> g_keepGoing; // BatchHookScope's
+} // namespace
+
+BatchHookScope::BatchHookScope(std::function<bool()> keepGoing)
+{
+    g_keepGoing = std::move(keepGoing);
+}
+
+BatchHookScope::~BatchHookScope()
+{
+    g_keepGoing = nullptr;
+}
+
 Measurement measure(RenderEngine& engine, const RenderRequest& request, const Image* reference,
                     std::chrono::nanoseconds timeLimit)
 {
@@ -17,11 +32,21 @@ Measurement measure(RenderEngine& engine, const RenderRequest& request, const Im
     if (InterruptScope::interrupted())
         return {.cancelled = true};
     InterruptScope::route(&control);
-    RenderResult r = render(engine, request, control);
+    FramePart frame;
+    bool stopped = false; // by the hook
+    if (g_keepGoing)
+        frame.beforeBatch = [&] {
+            if (!stopped && !g_keepGoing())
+            {
+                stopped = true;
+                control.requestCancel();
+            }
+        };
+    RenderResult r = render(engine, request, control, {}, frame);
     InterruptScope::route(nullptr);
     Measurement m;
-    m.cancelled = r.stats.cancelled || InterruptScope::interrupted();
-    m.timedOut = m.cancelled && !InterruptScope::interrupted() && control.timeLimitPassed();
+    m.cancelled = r.stats.cancelled || InterruptScope::interrupted() || stopped;
+    m.timedOut = m.cancelled && !InterruptScope::interrupted() && !stopped && control.timeLimitPassed();
     m.wallMs = r.stats.renderSeconds * 1e3;
     if (m.cancelled)
         return m;

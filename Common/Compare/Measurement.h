@@ -3,6 +3,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <string>
 
 #include "Image/Image.h"
@@ -34,6 +35,18 @@ struct Measurement
 /// Warns about NaN and Inf samples (they are left out of the image, and out of the error).
 Measurement measure(RenderEngine& engine, const RenderRequest& request, const Image* reference,
                     std::chrono::nanoseconds timeLimit = {});
+
+/// While one lives, every measure() calls `keepGoing` before each batch of its render and cancels the render
+/// (cancelled, not timedOut) when it returns false: a rank of a distributed comparison serving the job's messages
+/// (Cluster/TaskPool.h). On the thread that renders; one at a time.
+class BatchHookScope
+{
+public:
+    explicit BatchHookScope(std::function<bool()> keepGoing);
+    ~BatchHookScope();
+    BatchHookScope(const BatchHookScope&) = delete;
+    BatchHookScope& operator=(const BatchHookScope&) = delete;
+};
 
 /// Half a second of untimed 4-spp renders: a GPU idle through another engine's turn drops its clocks, and an
 /// H100 then ran its first rows 3-10x slower (docs/notebook/PERFORMANCE.md).

@@ -106,9 +106,6 @@ echo "ok: one rank's error"
 # What cannot be split is refused, once.
 mpi -np 2 "$app" "${common[@]}" --spp 4 --estimator restir-di --hdr "$work/out.pfm" >/dev/null 2>"$work/stderr"
 expect_one_error $? "^error: restir-di"
-mpi -np 2 "$app" "${common[@]}" --compare --spp-list 1 --engines "$( [ "$kind" = cpu ] && echo multi || echo gpu)" \
-    >/dev/null 2>"$work/stderr"
-expect_one_error $? "^error: --compare"
 mpi -np 2 "$app" --scene cornell-box-lights >/dev/null 2>"$work/stderr"
 expect_one_error $? "^error: the window runs as one process"
 echo "ok: refusals"

@@ -1,8 +1,10 @@
-// The shares of an MPI job's ranks (Cluster/SplitRender.h) and the job of a process mpirun did not start.
+// The shares of an MPI job's ranks (Cluster/SplitRender.h), the job of a process mpirun did not start, and a task
+// pool on it (root alone runs every task; the ranks' side is tests/Cli/mpi_compare.sh's).
 #include <gtest/gtest.h>
 
 #include "Cluster/Job.h"
 #include "Cluster/SplitRender.h"
+#include "Cluster/TaskPool.h"
 
 namespace rt::cluster
 {
@@ -108,6 +110,38 @@ TEST(Job, AProcessMpirunDidNotStartIsAJobOfOne)
     EXPECT_TRUE(j.root());
     EXPECT_FALSE(j.distributed());
     EXPECT_FALSE(SplitRender::endAfterError(job(), "boom", 1).has_value()) << "no job to end";
+}
+TEST(TaskPool, OnAJobOfOneRootRunsEveryTaskInTheOrderAdded)
+{
+    RenderControl control;
+    SplitRender part(job(), control, false);
+    TaskPool pool(job(), part, control);
+    EXPECT_EQ(pool.add("a"), 0u);
+    EXPECT_EQ(pool.add("b"), 1u);
+    const std::optional<Task> first = pool.next();
+    ASSERT_TRUE(first.has_value());
+    EXPECT_EQ(first->index, 0u);
+    EXPECT_EQ(first->description, "a");
+    EXPECT_EQ(pool.add("c"), 2u) << "tasks added later join the queue's end";
+    EXPECT_EQ(pool.next()->description, "b");
+    EXPECT_EQ(pool.next()->description, "c");
+    EXPECT_FALSE(pool.next().has_value()) << "the queue is empty";
+    EXPECT_EQ(pool.outstanding(), 0u);
+    EXPECT_TRUE(pool.drain());
+    EXPECT_TRUE(pool.close()) << "no other rank to tell";
+    EXPECT_TRUE(pool.takeResults().empty());
+}
+
+TEST(TaskPool, ACancelledPartTakesNoTaskAndClosesCancelled)
+{
+    RenderControl control;
+    SplitRender part(job(), control, false);
+    TaskPool pool(job(), part, control);
+    pool.add("a");
+    control.requestCancel();
+    EXPECT_FALSE(pool.next().has_value());
+    EXPECT_FALSE(pool.drain());
+    EXPECT_FALSE(pool.close());
 }
 } // namespace
 } // namespace rt::cluster

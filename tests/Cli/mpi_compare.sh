@@ -1,0 +1,160 @@
+#!/usr/bin/env bash
+# Usage: mpi_compare.sh APP cpu|gpu
+# Issue 40's distributed --compare on this machine's cores: with 2 and 3 ranks, the reference's halves and the
+# ladder's renders shared out by root, the CSV holds the rows of one process (every column but the times and the
+# rank) with the ranks that rendered them named, --images holds the same images, and the tables and --table's JSON
+# are one process's but for the times. On the CPU engine, one rank's error, a killed rank and Ctrl-C end the job:
+# an error line naming the rank and no CSV, or (Ctrl-C) status 130 and the rows finished before; the reference
+# cache keeps the reference that completed. What is not shared is refused in one line.
+# Exits 77 (skipped) where the build or the machine has no MPI.
+set -u
+app=$1
+kind=$2
+command -v mpirun >/dev/null || { echo "no mpirun: skipped"; exit 77; }
+"$app" --help | grep -q -- "--compare" || exit 1
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 # CI runs as root
+export OMPI_MCA_rmaps_base_oversubscribe=1 # more ranks than this machine's 2 cores
+export OMPI_MCA_btl_vader_single_copy_mechanism=none # containers forbid the cross-memory attach
+work=$(mktemp -d)
+pid=
+trap '[ -n "$pid" ] && kill -KILL "$pid" 2>/dev/null; pkill -KILL -f -- "$work" 2>/dev/null; rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*"; [ -f "$work/stderr" ] && grep -v "^\[" "$work/stderr" | tail -20; exit 1; }
+mpi() { mpirun -q "$@"; }
+if mpi -np 2 "$app" --headless --quiet --scene cornell-box-lights --width 4 --spp 1 2>&1 | grep -q "built without MPI"; then
+    echo "built without MPI: skipped"; exit 77
+fi
+
+# The same comparison as one process and over 2 and 3 ranks: 2 estimators x 2 spp x 2 seeds x 2 rounds.
+if [ "$kind" = cpu ]; then
+    compare=(--compare --scene cornell-box-lights --width 40 --engines single --spp-list 4,8 --reference-spp 1024)
+else
+    compare=(--compare --scene cornell-box-lights --width 16 --engines gpu --spp-list 2,4 --reference-spp 64)
+fi
+compare+=(--estimators nee,nee-mis --seeds 2 --rounds 2 --seed 5 --depth 8)
+run_compare() { # NAME [mpirun -np N]: the comparison into $work/NAME.*
+    local name=$1; shift
+    "$@" "$app" "${compare[@]}" --reference-cache "$work/cache-$name" --csv "$work/$name.csv" \
+        --table "$work/$name.json" --images "$work/$name-images" >"$work/$name.out" 2>"$work/stderr" ||
+        fail "$name: status $?"
+}
+run_compare one
+for np_ in 2 3; do
+    run_compare "np$np_" mpi -np "$np_"
+    python3 - "$work" "np$np_" "$np_" <<'PY' || fail "np$np_: not one process's comparison"
+import csv, json, sys
+work, name, ranks = sys.argv[1], sys.argv[2], int(sys.argv[3])
+times = {"wall_ms", "gpu_ms", "mpaths_per_s", "rank"}
+def rows(path):
+    out = {}
+    for r in csv.DictReader(open(path)):
+        key = (r["engine"], r["strategy"], r["spp"], r["seed"], r["round"])
+        assert key not in out, f"{path}: {key} twice"
+        out[key] = r
+    return out
+one, many = rows(f"{work}/one.csv"), rows(f"{work}/{name}.csv")
+assert set(one) == set(many), f"rows differ: {set(one) ^ set(many)}"
+assert len(one) == 16, len(one)
+for key in one:
+    for column in one[key]:
+        if column not in times:
+            assert one[key][column] == many[key][column], (key, column, one[key][column], many[key][column])
+used = {int(r["rank"]) for r in many.values()}
+assert used <= set(range(ranks)), used
+assert {0, 1} <= used, f"rank 1 rendered no row: {used}"
+assert {int(r["rank"]) for r in one.values()} == {0}
+# --table: the same figures but the times.
+def strip(j):
+    j.pop("ranks", None)
+    for row in j["rows"]:
+        for engine in ("single", "multi", "gpu"):
+            for k in ("render_ms", "gpu_ms", "mpaths_per_second", "ms_spread", "ms_rounds"):
+                row.get(engine, {}).pop(k, None)
+    return j
+a, b = json.load(open(f"{work}/one.json")), json.load(open(f"{work}/{name}.json"))
+assert b.get("ranks") == ranks, b.get("ranks")
+assert strip(a) == strip(b), "the --table JSON differs beyond the times"
+# --images: the same files, the same index but the times.
+ia, ib = json.load(open(f"{work}/one-images/images.json")), json.load(open(f"{work}/{name}-images/images.json"))
+assert len(ia["images"]) == len(ib["images"]) == 8 and ia["reference"] == ib["reference"], (ia, ib)
+for x in ia["images"]:
+    y = [i for i in ib["images"] if i["path"] == x["path"]]
+    assert len(y) == 1, x["path"]
+    for k in x:
+        if k not in ("wall_ms", "gpu_ms", "ms", "mpaths_per_second"):
+            assert x[k] == y[0][k], (x["path"], k)
+    p = x["path"]
+    assert open(f"{work}/one-images/{p}", "rb").read() == open(f"{work}/{name}-images/{p}", "rb").read(), p
+print(f"{name}: {len(many)} rows as one process's; rows per rank", {r: sum(int(x['rank']) == r for x in many.values()) for r in sorted(used)})
+PY
+    # The tables on stdout: one process's but for the time columns.
+    strip_times() { sed -E -e 's/ +[0-9.]+$//' -e 's/^( *[0-9]+ \|) +[0-9.]+/\1/' "$1"; } # ms and range%
+    diff <(strip_times "$work/one.out") <(strip_times "$work/np$np_.out") >/dev/null ||
+        fail "np$np_: the tables differ beyond the times: $(diff "$work/one.out" "$work/np$np_.out")"
+done
+echo "ok: 2 and 3 ranks write one process's rows, tables and images"
+
+# expect_one_error STATUS PATTERN: one "error:" line matching PATTERN, no CSV.
+expect_one_error() {
+    [ "$1" != 0 ] || fail "exit status 0 where the job should fail"
+    [ "$(grep -c '^error:' "$work/stderr")" = 1 ] || fail "one error line expected"
+    grep '^error:' "$work/stderr" | grep -Eq "$2" || fail "the error line does not match '$2'"
+    [ ! -e "$work/out.csv" ] || fail "the CSV of a failed job is left behind"
+}
+mpi -np 2 "$app" "${compare[@]}" --equal-time 10 --images "$work/eq" >/dev/null 2>"$work/stderr"
+expect_one_error $? "^error: --equal-time"
+mpi -np 2 "$app" "${compare[@]}" --strategy auto >/dev/null 2>"$work/stderr"
+expect_one_error $? "^error: --strategy auto"
+# Rank 1 fails at its scene (mpirun's MPMD form): root, rendering, ends the job naming it.
+mpi -np 1 "$app" "${compare[@]}" --reference-cache off --csv "$work/out.csv" : \
+    -np 1 "$app" "${compare[@]/cornell-box-lights/no-such-scene}" >/dev/null 2>"$work/stderr"
+expect_one_error $? "^error: rank 1 \(.+\): .*no-such-scene"
+echo "ok: refusals and a rank's error"
+[ "$kind" = cpu ] || exit 0
+
+# A long comparison on 2 ranks in the background, once its reference is cached and its rows have begun.
+long_compare() {
+    rm -rf "$work/out.csv" "$work/long-cache"
+    mpirun -q -np 2 "$app" --compare --scene cornell-box-lights --width 64 --engines single --spp-list 64,128 \
+        --seeds 8 --rounds 5 --reference-spp 512 --reference-cache "$work/long-cache" --csv "$work/out.csv" \
+        >"$work/stdout" 2>"$work/stderr" &
+    pid=$!
+    for _ in $(seq 600); do
+        grep -q "^\[2/" "$work/stderr" 2>/dev/null && break
+        sleep 0.1
+    done
+    grep -q "^\[2/" "$work/stderr" || fail "the long comparison's rows never began"
+}
+wait_bounded() { # SECONDS: wait for the job; its status, or fail past the bound
+    for _ in $(seq $(( $1 * 20 ))); do
+        kill -0 "$pid" 2>/dev/null || break
+        sleep 0.05
+    done
+    kill -0 "$pid" 2>/dev/null && fail "the job still runs $1 s later"
+    wait "$pid"
+    status=$?
+    pid=
+}
+rank_pid() { # the process mpirun started as rank $1
+    local p
+    for p in $(pgrep -f "$(basename "$app") --compare --scene cornell-box-lights --width 64"); do
+        tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=$1" && echo "$p"
+    done
+}
+
+long_compare
+kill -INT "$pid"
+wait_bounded 3
+[ "$status" != 0 ] || fail "Ctrl-C: status 0" # mpirun, stopped, says 1 whatever its ranks said
+! grep -q '^error:' "$work/stderr" || fail "Ctrl-C: an error line where every rank was cancelled"
+grep -q "comparison cancelled: .*keeps the rows" "$work/stderr" || fail "Ctrl-C: root did not report the cancel"
+[ "$(grep -c . "$work/out.csv")" -ge 2 ] || fail "Ctrl-C: the CSV lost the rows finished before"
+echo "ok: Ctrl-C"
+
+long_compare
+victim=$(rank_pid 1)
+[ -n "$victim" ] || fail "no rank 1 found"
+kill -KILL "$victim"
+wait_bounded 3
+expect_one_error "$status" "^error: rank 1 \(.+\)"
+[ "$(find "$work/long-cache" -type f | grep -c .)" -ge 1 ] || fail "a killed rank: the cache lost the reference"
+echo "ok: a killed rank"
