@@ -27,6 +27,8 @@
 #   tests/Bench/device_run.sh scaling [RANKS]  issue 40: cornell-box-lights WIDTH (1200) px at SPP (65536) spp on
 #                                      one GPU and split over mpirun's ranks, one GPU each (RANKS, default "2 4",
 #                                      "1" the single process only), tests/Bench/scaling.sh
+#   tests/Bench/device_run.sh compare-scaling [RANKS]  issue 40: a --compare sweep of 24 rows on one GPU and over
+#                                      mpirun's ranks (RANKS, default "1 2"), tests/Bench/compare_scaling.sh
 #   tests/Bench/device_run.sh mpi      tests/Cli/mpi.sh on this driver: split renders, errors, Ctrl-C, a killed rank
 #   tests/Bench/device_run.sh variants RENDERS_FILE  the shader variants carried in .devcarry/variants/ (VARIANTS
 #                                      of device_carry.sh) against the build's own shaders, render by render
@@ -181,6 +183,11 @@ scaling)
     export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mca_base_component_show_load_errors=0
     bash tests/Bench/scaling.sh "$bin" /tmp/scaling ${2:-2 4} | tee "$out/scaling.txt"
     cp /tmp/scaling/*.json /tmp/scaling/*.wall "$out/"
+    ;;
+compare-scaling)
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mca_base_component_show_load_errors=0
+    bash tests/Bench/compare_scaling.sh "$bin" /tmp/compare-scaling ${2:-1 2} | tee "$out/compare-scaling.txt"
+    cp /tmp/compare-scaling/sweep-* "$out/"
     ;;
 mpi)
     # The MPI suite of the default tests on this driver (tests/Cli/mpi.sh), ranks on the host's GPUs.
