@@ -29,7 +29,8 @@
 #                                      "1" the single process only), tests/Bench/scaling.sh
 #   tests/Bench/device_run.sh compare-scaling [RANKS]  issue 40: a --compare sweep of 24 rows on one GPU and over
 #                                      mpirun's ranks (RANKS, default "1 2"), tests/Bench/compare_scaling.sh
-#   tests/Bench/device_run.sh mpi      tests/Cli/mpi.sh on this driver: split renders, errors, Ctrl-C, a killed rank
+#   tests/Bench/device_run.sh mpi      tests/Cli/mpi.sh and mpi_compare.sh on this driver: split renders, errors,
+#                                      Ctrl-C, a killed rank; a distributed --compare
 #   tests/Bench/device_run.sh variants RENDERS_FILE  the shader variants carried in .devcarry/variants/ (VARIANTS
 #                                      of device_carry.sh) against the build's own shaders, render by render
 #                                      (shader_variants.sh)
@@ -192,7 +193,7 @@ compare-scaling)
 mpi)
     # The MPI suite of the default tests on this driver (tests/Cli/mpi.sh), ranks on the host's GPUs.
     export OMPI_MCA_mca_base_component_show_load_errors=0
-    bash tests/Cli/mpi.sh "$bin/ray-tracing-gpu" gpu
+    bash tests/Cli/mpi.sh "$bin/ray-tracing-gpu" gpu && bash tests/Cli/mpi_compare.sh "$bin/ray-tracing-gpu" gpu
     ;;
 ab)
     ROUNDS=${ROUNDS:-3} bash tests/Bench/gpu_ab.sh .devcarry/baseline "$bin" /tmp/ab ${2:-} | tee "$out/ab.txt"
