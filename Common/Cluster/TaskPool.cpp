@@ -108,17 +108,29 @@ std::optional<Task> TaskPool::next()
         m_queue.pop_front();
         return Task{index, m_tasks[index]};
     }
-    m_answer.reset();
-    m_job.send(0, Tag::Ask, {});
-    while (!m_answer)
+    if (m_answers.empty() && !m_asking)
+        ask();
+    while (m_answers.empty())
     {
         if (m_control.cancelRequested())
             return std::nullopt;
         serve();
-        if (!m_answer)
+        if (m_answers.empty())
             pause();
     }
-    return m_control.cancelRequested() ? std::nullopt : *m_answer;
+    std::optional<Task> answer = std::move(m_answers.front());
+    m_answers.pop_front();
+    if (answer && !m_asking)
+        ask(); // the next one, while this one runs
+    if (m_control.cancelRequested())
+        return std::nullopt;
+    return answer;
+}
+
+void TaskPool::ask()
+{
+    m_job.send(0, Tag::Ask, {});
+    m_asking = true;
 }
 
 void TaskPool::sendResult(std::size_t task, const std::string& bytes)
@@ -143,12 +155,13 @@ void TaskPool::take(const Message& m)
         break;
     }
     case Tag::Task:
+        m_asking = false;
         if (m.bytes.empty())
-            m_answer.emplace(std::nullopt);
+            m_answers.emplace_back(std::nullopt);
         else
         {
             auto [index, description] = unnumbered(m.bytes);
-            m_answer.emplace(Task{index, std::move(description)});
+            m_answers.emplace_back(Task{index, std::move(description)});
         }
         break;
     case Tag::Share:

@@ -63,7 +63,9 @@ class TaskPool
 
     /// The next task for this rank: on root the queue's next, or none when it is empty (tasks handed out may
     /// still run elsewhere: drain); elsewhere root's answer to an Ask, waited for, or none when none is left or
-    /// the part was cancelled. Shares that come meanwhile go to `onShare`.
+    /// the part was cancelled. Shares that come meanwhile go to `onShare`. A rank other than root asks for its
+    /// next task as it takes one, so that the answer, which root gives between the batches of its own renders,
+    /// is there when this one ends: a rank holds at most one task besides the one it runs.
     std::optional<Task> next();
     /// A rank other than root: sends root the result of `task`.
     void sendResult(std::size_t task, const std::string& bytes);
@@ -88,7 +90,9 @@ class TaskPool
     bool m_closed = false;
     int m_toldNone = 0; // ranks told that no task is left
     // Other ranks:
-    std::optional<std::optional<Task>> m_answer; // root's answer to the last Ask (a task, or none left)
+    void ask();
+    std::deque<std::optional<Task>> m_answers; // root's answers not taken yet (a task, or none left)
+    bool m_asking = false; // an Ask is unanswered
     std::function<void(std::string)> m_onShare;
 };
 } // namespace rt::cluster

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 #include <spdlog/fmt/fmt.h>
+#include <spdlog/spdlog.h>
 
 #include "Cluster/Job.h"
 #include "IO/AtomicFile.h"
@@ -115,6 +116,8 @@ void LadderTable::record(const RowJob& job, Measurement m, const std::optional<A
         m_csv->append(csvRow(m_scene.id, kind, device, strategy, label, m, m_reference, seed, job.round, rank));
     if (job.round == 0)
         m_images.add(kind, strategy.name(), label, m, seed);
+    m_byRank[rank].first += 1;
+    m_byRank[rank].second += m.wallMs * 1e-3;
     m_runs[job.engine][job.strategy][job.spp].set(std::size_t(job.seed), job.round, std::move(m));
 }
 
@@ -250,6 +253,14 @@ void LadderTable::print()
     warnNearReferenceNoise(m_reference, relMses);
     if (!m_options.json.empty())
         writeFileAtomically(m_options.json, json.dump(2) + "\n");
+    if (cluster::job().distributed())
+    {
+        std::string shares;
+        for (const auto& [rank, work] : m_byRank)
+            shares += fmt::format("{}{}: {} renders, {:.1f} s", shares.empty() ? "" : "; ", cluster::job().name(rank),
+                                  work.first, work.second);
+        spdlog::info("the renders by rank: {}", shares);
+    }
 }
 
 bool runLadder(const Scene& scene, const RenderRequest& base, const CompareOptions& options,

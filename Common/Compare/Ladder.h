@@ -4,6 +4,7 @@
 // the tables and the JSON once all have come.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -78,6 +79,7 @@ private:
     std::vector<std::vector<std::vector<SeededRow>>> m_runs; // [engine][strategy][spp]
     std::vector<std::vector<std::vector<AutoChoice>>> m_choices; // [engine][spp][seed]
     RunLog m_log;
+    std::map<int, std::pair<int, double>> m_byRank; // rank: renders, their wall seconds
 };
 
 /// The ladder on one process: every job of ladderJobs in order, then the tables. False when Ctrl-C stopped it.

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Usage: compare_scaling.sh BIN WORK [RANKS...]
 # Issue 40's sweep on one host: a --compare of 24 rows (cornell-box-lights WIDTH (900) px, the GPU engine, light
-# samplers area and projected x selections power and bvh x 64, 256 and 1024 spp x 2 seeds; 3 rounds each, the
-# reference of 4096 spp rendered, not cached), by one process on one GPU (RANKS "1") and over mpirun's N ranks,
+# samplers area and projected x selections power and bvh x SPP_LIST (64,256,1024) spp x 2 seeds; 3 rounds each,
+# the reference of 4x the largest spp rendered, not cached), by one process on one GPU (RANKS "1") and over mpirun's N ranks,
 # one GPU each, for each N of RANKS. Prints a row per run: wall seconds of the whole command (mpirun, every
 # rank's start, build, warm-up and the reference included), the speed-up against the one-GPU run where WORK
 # holds it, the renders each rank did, and whether every row's error columns equal the one-GPU run's.
@@ -12,9 +12,10 @@ out=$2
 shift 2
 ranks=${*:-2}
 width=${WIDTH:-900}
+spps=${SPP_LIST:-64,256,1024}
 mkdir -p "$out"
 args=(--compare --scene cornell-box-lights --width "$width" --engines gpu --light-samplers area,projected
-    --light-selections power,bvh --spp-list 64,256,1024 --seeds 2 --rounds 3 --seed 40 --reference-cache off)
+    --light-selections power,bvh --spp-list "$spps" --seeds 2 --rounds 3 --seed 40 --reference-cache off)
 # The driver's pipeline cache, once, out of every timed command.
 "$bin/ray-tracing-gpu" --headless --quiet --scene cornell-box-lights --width "$width" --spp 1 >/dev/null
 for n in $ranks; do

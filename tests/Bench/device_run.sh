@@ -187,6 +187,7 @@ scaling)
     ;;
 compare-scaling)
     export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mca_base_component_show_load_errors=0
+    rm -rf /tmp/compare-scaling
     bash tests/Bench/compare_scaling.sh "$bin" /tmp/compare-scaling ${2:-1 2} | tee "$out/compare-scaling.txt"
     cp /tmp/compare-scaling/sweep-* "$out/"
     ;;
