@@ -1030,9 +1030,13 @@ def section_mpi_scaling():
         "What does not shrink with the GPUs is about 8 s of each command: mpirun and the processes' start, each rank's "
         "warm-up of the four strategies (0.9 to 4 s), and the time between renders (the error against the reference, "
         "about 40 ms each). So the 59-s sweep reaches 1.71x and the 103-s one 1.84x. Every error value of the 72 "
-        "renders equals the one-GPU run's: each render is whole on one rank with the same seed. The first sweep was "
-        "run twice: before the ranks asked for their next render while running one, the second rank waited for root "
-        "to finish a render of its own before it got work (51 and 21 renders, 1.66x).",
+        "renders equals the one-GPU run's: each render is whole on one rank with the same seed. Repeats on fresh "
+        "machines, every strategy's pipeline compiled before the timed commands: the 103-s sweep 1.86x and 1.88x "
+        "(orders 2 then 1 GPUs, and 1 then 2; `spp-128-2048-repeats/`); the 59-s one 1.50x and 1.78x "
+        "(`spp-64-1024-rerun/`): in its 1.50x run the first renders of both ranks, their warm-up included, came "
+        "back only 7 s into the sweep against 1.3 s for one process, a start-up cost this short sweep cannot hide "
+        "(not yet explained). Before the ranks asked for their next render while running one, the second rank "
+        "waited for root to finish a render of its own before it got work (51 and 21 renders, 1.66x).",
         "",
         sources([
             ("Machine", MPI_SWEEP["machine"]),
