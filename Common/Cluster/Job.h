@@ -7,6 +7,7 @@
 // never call in.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,6 +49,13 @@ class Job
 
     /// Sends `bytes` to rank `to` (small messages: returns at once). Throws rt::Error on an MPI failure.
     void send(int to, Tag tag, const std::string& bytes);
+    /// Sends `bytes` to rank `to` however large, without waiting on a rank that no longer receives (one that failed
+    /// and waits for the verdict): while the send is under way, `whileWaiting` runs (it takes this rank's messages)
+    /// and says whether to wait on. When it says no, the send is abandoned and false returned: the job is ending,
+    /// and ends without MPI_Finalize (abandonedSends). Throws rt::Error on an MPI failure.
+    bool sendWhile(int to, Tag tag, std::string bytes, const std::function<bool()>& whileWaiting);
+    /// Whether a send was abandoned: MPI_Finalize could wait for it, so the process leaves instead.
+    bool abandonedSends() const { return !m_abandoned.empty(); }
     /// The next message that has arrived from any rank, if one has; never blocks.
     std::optional<Message> poll();
     /// Root's `bytes` on every rank (collective: every rank calls it).
@@ -76,6 +84,7 @@ class Job
     int m_localRank = 0;
     std::vector<std::string> m_hosts{std::string("localhost")};
     bool m_joined = false; // MPI initialised by this process
+    std::vector<std::string> m_abandoned; // the buffers of abandoned sends, which MPI may still read
 };
 
 /// The job of this process: the one a JobScope joined, or a job of one rank.

@@ -1,9 +1,11 @@
 // The MPI job (Open MPI): MPI_Init_thread at the JobScope, the hosts gathered once, the messages of Job.h.
 #include <mpi.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <thread>
 
 #include <spdlog/fmt/fmt.h>
 
@@ -91,6 +93,29 @@ void Job::send(int to, Tag tag, const std::string& bytes)
     check(
         MPI_Send(bytes.data(), count(bytes.size(), "a message"), MPI_CHAR, to, static_cast<int>(tag), g_comm),
         "MPI_Send");
+}
+
+bool Job::sendWhile(int to, Tag tag, std::string bytes, const std::function<bool()>& whileWaiting)
+{
+    MPI_Request request = MPI_REQUEST_NULL;
+    check(MPI_Isend(bytes.data(), count(bytes.size(), "a message"), MPI_CHAR, to, static_cast<int>(tag), g_comm,
+                    &request),
+          "MPI_Isend");
+    while (true)
+    {
+        int done = 0;
+        check(MPI_Test(&request, &done, MPI_STATUS_IGNORE), "MPI_Test");
+        if (done)
+            return true;
+        if (!whileWaiting())
+        {
+            // The receiver is gone or failed: MPI keeps the request (and reads the buffer) until it completes.
+            MPI_Request_free(&request);
+            m_abandoned.push_back(std::move(bytes));
+            return false;
+        }
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
 }
 
 std::optional<Message> Job::poll()

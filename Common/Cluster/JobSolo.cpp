@@ -30,6 +30,10 @@ void Job::send(int, Tag, const std::string&)
 {
     throw UsageError("a job of one rank has no other rank to message");
 }
+bool Job::sendWhile(int, Tag, std::string, const std::function<bool()>&)
+{
+    throw UsageError("a job of one rank has no other rank to message");
+}
 std::optional<Message> Job::poll()
 {
     return std::nullopt;

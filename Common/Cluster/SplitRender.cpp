@@ -213,6 +213,8 @@ int endFailedJob(Job& job, const Verdict& verdict)
         std::fprintf(stderr, "error: %s\n", verdict.message.c_str());
     if (verdict.silentRank)
         job.abandon(verdict.exitCode);
+    if (job.abandonedSends())
+        job.leave(verdict.exitCode);
     return verdict.exitCode;
 }
 

@@ -50,11 +50,24 @@ std::size_t TaskPool::add(std::string description)
     return m_tasks.size() - 1;
 }
 
-void TaskPool::share(const std::string& bytes)
+bool TaskPool::share(const std::string& bytes)
 {
     RT_CHECK(m_job.root());
     for (int r = 1; r < m_job.size(); ++r)
-        m_job.send(r, Tag::Share, bytes);
+        if (!sendServing(r, Tag::Share, bytes))
+            return false;
+    return true;
+}
+
+bool TaskPool::sendServing(int to, Tag tag, std::string bytes)
+{
+    serve(); // an End that came already: a failed rank receives nothing
+    if (m_control.cancelRequested())
+        return false;
+    return m_job.sendWhile(to, tag, std::move(bytes), [this] {
+        serve();
+        return !m_control.cancelRequested();
+    });
 }
 
 void TaskPool::serve()
@@ -133,9 +146,9 @@ void TaskPool::ask()
     m_asking = true;
 }
 
-void TaskPool::sendResult(std::size_t task, const std::string& bytes)
+bool TaskPool::sendResult(std::size_t task, const std::string& bytes)
 {
-    m_job.send(0, Tag::Result, numbered(task, bytes));
+    return sendServing(0, Tag::Result, numbered(task, bytes));
 }
 
 void TaskPool::take(const Message& m)

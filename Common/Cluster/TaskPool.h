@@ -40,8 +40,9 @@ class TaskPool
 
     /// Root: appends a task and hands it at once to a rank that is waiting for one. Returns its index.
     std::size_t add(std::string description);
-    /// Root: sends `bytes` to every other rank, before any task added later.
-    void share(const std::string& bytes);
+    /// Root: sends `bytes` to every other rank, before any task added later, serving meanwhile. False when the
+    /// part was cancelled first (a rank that failed receives nothing more).
+    bool share(const std::string& bytes);
     /// Root: takes the messages that have arrived (also done before each batch of root's renders).
     void serve();
     /// Root: waits, serving, until every task handed to another rank has sent its result. False when the part
@@ -67,8 +68,9 @@ class TaskPool
     /// next task as it takes one, so that the answer, which root gives between the batches of its own renders,
     /// is there when this one ends: a rank holds at most one task besides the one it runs.
     std::optional<Task> next();
-    /// A rank other than root: sends root the result of `task`.
-    void sendResult(std::size_t task, const std::string& bytes);
+    /// A rank other than root: sends root the result of `task`, serving meanwhile (root takes it between the
+    /// batches of its own renders). False when the part was cancelled first.
+    bool sendResult(std::size_t task, const std::string& bytes);
     void onShare(std::function<void(std::string)> handler) { m_onShare = std::move(handler); }
 
     /// Tasks handed to another rank whose result has not come.
@@ -77,6 +79,7 @@ class TaskPool
   private:
     void take(const Message& m);
     void handOut();
+    bool sendServing(int to, Tag tag, std::string bytes);
 
     Job& m_job;
     SplitRender& m_split;

@@ -69,7 +69,8 @@ bool leadLadder(const Scene& scene, const RenderRequest& base, const CompareOpti
         }
         reference = finishReference(scene, base, options, last.kind, *halves[0], *halves[1]);
     }
-    pool.share(packReference(*reference));
+    if (!pool.share(packReference(*reference)))
+        return false;
     images.addReference(reference->image, reference->description, reference->spp, reference->ownRelMse);
     if (!options.csv.empty())
         csv = std::make_unique<ConvergenceCsv>(options.csv);
@@ -129,7 +130,8 @@ bool followLadder(const RenderRequest& base, const CompareOptions& options, std:
             const Measurement m = measure(*last.engine, referenceHalf(base, options, job.half), nullptr);
             if (m.cancelled)
                 return false;
-            pool.sendResult(task->index, packMeasurement(m, true, last.engine->deviceName()));
+            if (!pool.sendResult(task->index, packMeasurement(m, true, last.engine->deviceName())))
+                return false;
             continue;
         }
         if (!runner)
@@ -137,8 +139,9 @@ bool followLadder(const RenderRequest& base, const CompareOptions& options, std:
         LadderRender done = runner->run(job);
         if (done.measurement.cancelled)
             return false;
-        pool.sendResult(task->index, packMeasurement(done.measurement, job.keepImage,
-                                                     engines[job.engine].engine->deviceName()));
+        if (!pool.sendResult(task->index, packMeasurement(done.measurement, job.keepImage,
+                                                          engines[job.engine].engine->deviceName())))
+            return false;
     }
     return !control.cancelRequested();
 }
@@ -153,7 +156,8 @@ int runDistributedLadder(const Scene& scene, const RenderRequest& base, const Co
     std::unique_ptr<ConvergenceCsv> csv;
     std::optional<LadderTable> table;
     std::optional<Reference> reference;
-    bool finished = false;
+    PartEnd mine;
+    try
     {
         cluster::TaskPool pool(job, part, control);
         // Every render serves the job's messages before each batch, and stops when the part is cancelled.
@@ -161,23 +165,34 @@ int runDistributedLadder(const Scene& scene, const RenderRequest& base, const Co
             pool.serve();
             return !control.cancelRequested();
         });
-        finished = job.root() ? leadLadder(scene, base, options, engines, images, pool, control, csv, table, reference)
-                              : followLadder(base, options, engines, pool, control);
+        bool finished = job.root()
+                            ? leadLadder(scene, base, options, engines, images, pool, control, csv, table, reference)
+                            : followLadder(base, options, engines, pool, control);
         if (job.root())
             finished = interruptible(control, [&] { return pool.close(); }) && finished;
+        mine.status = finished ? PartEnd::Status::Finished : PartEnd::Status::Cancelled;
     }
-    const PartEnd mine{.status = finished ? PartEnd::Status::Finished : PartEnd::Status::Cancelled};
+    catch (const Error& e)
+    {
+        // This part's own failure ends it here, where the Ends root has already taken are known.
+        mine = {.status = PartEnd::Status::Failed, .message = e.what(), .exitCode = e.exitCode()};
+    }
+    catch (const std::exception& e)
+    {
+        mine = {.status = PartEnd::Status::Failed, .message = e.what(), .exitCode = 1};
+    }
     // mpirun's SIGTERM (Ctrl-C, or a rank died) tells root's end not to wait for a silent rank beyond a moment.
     const cluster::Verdict verdict = interruptible(control, [&] { return part.end(mine); });
     if (verdict.status == PartEnd::Status::Failed)
     {
+        // No partial outputs from a failed job (Ctrl-C's keep their rows and images).
         if (csv)
         {
-            // No partial outputs from a failed job (Ctrl-C's keep their rows).
             csv.reset();
             std::error_code ignored;
             std::filesystem::remove(options.csv, ignored);
         }
+        images.discard();
         return cluster::endFailedJob(job, verdict);
     }
     if (verdict.status == PartEnd::Status::Cancelled)

@@ -79,6 +79,18 @@ void ImageFolder::add(EngineKind engine, const std::string& name, const std::str
     flush();
 }
 
+void ImageFolder::discard()
+{
+    if (!enabled())
+        return;
+    std::error_code ignored;
+    for (const nlohmann::json& image : m_index["images"])
+        std::filesystem::remove(m_dir / image.at("path").get<std::string>(), ignored);
+    if (m_index.contains("reference"))
+        std::filesystem::remove(m_dir / "reference.pfm", ignored);
+    std::filesystem::remove(m_dir / "images.json", ignored);
+}
+
 void ImageFolder::flush()
 {
     writeFileAtomically(m_dir / "images.json", m_index.dump(2) + "\n");

@@ -35,6 +35,10 @@ public:
     void add(EngineKind engine, const std::string& name, const std::string& label, const Measurement& m,
              std::uint32_t seed);
 
+    /// Removes what this folder wrote (the images, the reference, images.json): a failed distributed comparison
+    /// leaves no partial output. The folder itself stays.
+    void discard();
+
 private:
     void flush();
 

@@ -5,7 +5,8 @@
 # rank) with the ranks that rendered them named, --images holds the same images, and the tables and --table's JSON
 # are one process's but for the times. On the CPU engine, one rank's error, a killed rank and Ctrl-C end the job:
 # an error line naming the rank and no CSV, or (Ctrl-C) status 130 and the rows finished before; the reference
-# cache keeps the reference that completed. What is not shared is refused in one line.
+# cache keeps the reference that completed; root's own error mid-run ends it as a rank's does. What is not shared
+# is refused in one line.
 # Exits 77 (skipped) where the build or the machine has no MPI.
 set -u
 app=$1
@@ -108,14 +109,21 @@ expect_one_error $? "^error: --strategy auto"
 mpi -np 1 "$app" "${compare[@]}" --reference-cache off --csv "$work/out.csv" : \
     -np 1 "$app" "${compare[@]/cornell-box-lights/no-such-scene}" >/dev/null 2>"$work/stderr"
 expect_one_error $? "^error: rank 1 \(.+\): .*no-such-scene"
+# ... and where root finds the reference in the cache and sends it at once, to a rank that has already failed and
+# waits for the verdict (a send that would wait for it forever).
+timeout 120 mpirun -q -np 1 "$app" "${compare[@]}" --reference-cache "$work/cache-one" --csv "$work/out.csv" : \
+    -np 1 "$app" "${compare[@]/cornell-box-lights/no-such-scene}" >/dev/null 2>"$work/stderr"
+status=$?
+[ "$status" != 124 ] || fail "a failed rank and a cached reference: the job hung"
+expect_one_error $status "^error: rank 1 \(.+\): .*no-such-scene"
 echo "ok: refusals and a rank's error"
 [ "$kind" = cpu ] || exit 0
 
 # A long comparison on 2 ranks in the background, once its reference is cached and its rows have begun.
-long_compare() {
+long_compare() { # [FLAG...]
     rm -rf "$work/out.csv" "$work/long-cache"
     mpirun -q -np 2 "$app" --compare --scene cornell-box-lights --width 64 --engines single --spp-list 64,128 \
-        --seeds 8 --rounds 5 --reference-spp 512 --reference-cache "$work/long-cache" --csv "$work/out.csv" \
+        --seeds 8 --rounds 5 --reference-spp 512 --reference-cache "$work/long-cache" --csv "$work/out.csv" "$@" \
         >"$work/stdout" 2>"$work/stderr" &
     pid=$!
     for _ in $(seq 600); do
@@ -149,6 +157,14 @@ wait_bounded 3
 grep -q "comparison cancelled: .*keeps the rows" "$work/stderr" || fail "Ctrl-C: root did not report the cancel"
 [ "$(grep -c . "$work/out.csv")" -ge 2 ] || fail "Ctrl-C: the CSV lost the rows finished before"
 echo "ok: Ctrl-C"
+
+# Root's own failure in the middle (its --images folder turned into a file): one line naming root, no CSV.
+long_compare --images "$work/images"
+rm -rf "$work/images" && touch "$work/images"
+wait_bounded 60
+expect_one_error "$status" "^error: rank 0 \(.+\): .*images"
+rm -f "$work/images"
+echo "ok: root's error"
 
 long_compare
 victim=$(rank_pid 1)
