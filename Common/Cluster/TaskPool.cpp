@@ -75,32 +75,29 @@ void TaskPool::serve()
     m_split.beforeBatch();
 }
 
-bool TaskPool::drain()
+bool TaskPool::serveUntil(const std::function<bool()>& done)
 {
-    while (m_outstanding > 0)
+    while (!done())
     {
         if (m_control.cancelRequested())
             return false;
         serve();
-        if (m_outstanding > 0)
+        if (!done())
             pause();
     }
     return !m_control.cancelRequested();
+}
+
+bool TaskPool::drain()
+{
+    return serveUntil([this] { return m_outstanding == 0; });
 }
 
 bool TaskPool::close()
 {
     m_closed = true;
     handOut();
-    while (m_toldNone < m_job.size() - 1)
-    {
-        if (m_control.cancelRequested())
-            return false;
-        serve();
-        if (m_toldNone < m_job.size() - 1)
-            pause();
-    }
-    return !m_control.cancelRequested();
+    return serveUntil([this] { return m_toldNone >= m_job.size() - 1; });
 }
 
 std::vector<TaskPool::Result> TaskPool::takeResults()
@@ -123,20 +120,12 @@ std::optional<Task> TaskPool::next()
     }
     if (m_answers.empty() && !m_asking)
         ask();
-    while (m_answers.empty())
-    {
-        if (m_control.cancelRequested())
-            return std::nullopt;
-        serve();
-        if (m_answers.empty())
-            pause();
-    }
+    if (!serveUntil([this] { return !m_answers.empty(); }))
+        return std::nullopt;
     std::optional<Task> answer = std::move(m_answers.front());
     m_answers.pop_front();
     if (answer && !m_asking)
         ask(); // the next one, while this one runs
-    if (m_control.cancelRequested())
-        return std::nullopt;
     return answer;
 }
 

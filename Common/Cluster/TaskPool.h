@@ -80,6 +80,8 @@ class TaskPool
     void take(const Message& m);
     void handOut();
     bool sendServing(int to, Tag tag, std::string bytes);
+    /// Serves until `done`; false when the part was cancelled first (or meanwhile).
+    bool serveUntil(const std::function<bool()>& done);
 
     Job& m_job;
     SplitRender& m_split;

@@ -124,7 +124,7 @@ void LadderTable::record(const RowJob& job, Measurement m, const std::optional<A
 void LadderTable::print()
 {
     const std::size_t strategyCount = m_options.strategies.size();
-    const std::size_t rowCount = strategyCount + (m_options.autoCandidates.empty() ? 0 : 1);
+    const std::size_t rowCount = rowCountOf(m_options);
     const RenderSettings& b = m_base.settings;
     nlohmann::json json = toJson(b); // the base settings by the settings table's keys; each row names its spp
     json.erase("spp");

@@ -8,23 +8,9 @@
 set -u
 app=$1
 kind=$2
-command -v mpirun >/dev/null || { echo "no mpirun: skipped"; exit 77; }
 "$app" --help | grep -q -- "--headless" || exit 1
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 # CI runs as root
-export OMPI_MCA_rmaps_base_oversubscribe=1 # more ranks than this machine's 2 cores
-# Containers often forbid the cross-memory attach (ptrace) Open MPI's shared-memory transport tries first.
-export OMPI_MCA_btl_vader_single_copy_mechanism=none
-work=$(mktemp -d)
-pid=
-# On the way out, the job of a failed check and its ranks (they name $work in their flags).
-trap '[ -n "$pid" ] && kill -KILL "$pid" 2>/dev/null; pkill -KILL -f -- "$work" 2>/dev/null; rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*"; [ -f "$work/stderr" ] && cat "$work/stderr"; exit 1; }
-mpi() { mpirun -q "$@"; }
-# A build without MPI refuses to be started as several copies: skip then.
-if mpi -np 2 "$app" --headless --quiet --scene cornell-box-lights --width 4 --spp 1 2>&1 | grep -q "built without MPI"; then
-    echo "built without MPI: skipped"; exit 77
-fi
-files_left() { find "$work" -name 'out*' | grep -q .; }
+source "$(dirname "$0")/mpi_lib.sh"
+left_behind() { find "$work" -name 'out*' | grep -q .; }
 
 common=(--headless --quiet --scene cornell-box-lights --width 40 --seed 11 --depth 8)
 "$app" "${common[@]}" --spp 7 --hdr "$work/one.pfm" --output "$work/one.png" --stats "$work/one.json" \
@@ -79,14 +65,6 @@ mpi -np 2 "$app" "${common[@]}" --spp 1 --hdr "$work/np2-1spp.pfm" >/dev/null 2>
 same_image "$work/one-1spp.pfm" "$work/np2-1spp.pfm" || fail "1 spp on 2 ranks: not one process's image"
 echo "ok: a rank with no sample"
 
-# expect_one_error STATUS PATTERN: the job failed, with one "error:" line matching PATTERN and no file.
-expect_one_error() {
-    [ "$1" != 0 ] || fail "exit status 0 where the job should fail"
-    [ "$(grep -c '^error:' "$work/stderr")" = 1 ] || fail "one error line expected"
-    grep '^error:' "$work/stderr" | grep -Eq "$2" || fail "the error line does not match '$2'"
-    ! files_left || fail "files left behind: $(ls "$work")"
-}
-
 # One rank's error (mpirun's MPMD form gives rank 1 a scene that does not exist): the job ends at root's next
 # batch, one line names rank 1 and its host.
 mpi -np 1 "$app" "${common[@]}" --spp 4096 --hdr "$work/out.pfm" --stats "$work/out.json" : \
@@ -133,25 +111,6 @@ long_render() {
     grep -q "acceleration structures built" "$work/stderr" || fail "the long render never started"
     sleep 3 # rank 1 builds too, and the batches settle to their planned length
 }
-rank_pid() { # the process mpirun started as rank $1
-    local p
-    for p in $(pgrep -f "$(basename "$app") --headless --scene many-lights"); do
-        tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=$1" && echo "$p"
-    done
-}
-wait_bounded() { # SECONDS: wait for the job; its status, or fail past the bound
-    local start=$EPOCHREALTIME
-    for _ in $(seq $(( $1 * 20 ))); do
-        kill -0 "$pid" 2>/dev/null || break
-        sleep 0.05
-    done
-    kill -0 "$pid" 2>/dev/null && fail "the job still runs $1 s later"
-    wait "$pid"
-    status=$?
-    pid=
-    echo "    ended in $(python3 -c "print(f'{$EPOCHREALTIME - $start:.2f}')") s"
-}
-
 # Ctrl-C to mpirun: every rank stops within a second (mpirun kills what is left a second after), no file.
 long_render
 kill -INT "$pid"
@@ -159,14 +118,14 @@ wait_bounded 3
 [ "$status" != 0 ] || fail "Ctrl-C: status 0"
 grep -q "render cancelled" "$work/stderr" || fail "Ctrl-C: root did not report the cancel (killed before it?)"
 ! grep -q '^error:' "$work/stderr" || fail "Ctrl-C: an error line where every rank was cancelled"
-! files_left || fail "Ctrl-C: files left behind: $(ls "$work")"
+! left_behind || fail "Ctrl-C: files left behind: $(ls "$work")"
 echo "ok: Ctrl-C"
 
 # A rank killed: one error line naming it, no file. Root names the silent rank once it is out of its batch, within
 # the second between mpirun's SIGTERM and its SIGKILL: on the CPU engine (cancelled between camera samples) always;
 # lavapipe's batches can outlast that second on this 2-core machine, so there the line may be missing, never wrong.
 long_render
-victim=$(rank_pid 1)
+victim=$(rank_pid 1 "--headless --scene many-lights")
 [ -n "$victim" ] || fail "no rank 1 found"
 kill -KILL "$victim"
 wait_bounded 3
@@ -174,6 +133,6 @@ if [ "$kind" = cpu ] || grep -q '^error:' "$work/stderr"; then
     expect_one_error "$status" "^error: rank 1 \(.+\)"
 else
     [ "$status" != 0 ] || fail "a killed rank: status 0"
-    ! files_left || fail "a killed rank: files left behind: $(ls "$work")"
+    ! left_behind || fail "a killed rank: files left behind: $(ls "$work")"
 fi
 echo "ok: a killed rank"

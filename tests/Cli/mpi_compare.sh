@@ -11,19 +11,9 @@
 set -u
 app=$1
 kind=$2
-command -v mpirun >/dev/null || { echo "no mpirun: skipped"; exit 77; }
 "$app" --help | grep -q -- "--compare" || exit 1
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 # CI runs as root
-export OMPI_MCA_rmaps_base_oversubscribe=1 # more ranks than this machine's 2 cores
-export OMPI_MCA_btl_vader_single_copy_mechanism=none # containers forbid the cross-memory attach
-work=$(mktemp -d)
-pid=
-trap '[ -n "$pid" ] && kill -KILL "$pid" 2>/dev/null; pkill -KILL -f -- "$work" 2>/dev/null; rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*"; [ -f "$work/stderr" ] && grep -v "^\[" "$work/stderr" | tail -20; exit 1; }
-mpi() { mpirun -q "$@"; }
-if mpi -np 2 "$app" --headless --quiet --scene cornell-box-lights --width 4 --spp 1 2>&1 | grep -q "built without MPI"; then
-    echo "built without MPI: skipped"; exit 77
-fi
+source "$(dirname "$0")/mpi_lib.sh"
+left_behind() { [ -e "$work/out.csv" ]; }
 
 # The same comparison as one process and over 2 and 3 ranks: 2 estimators x 2 spp x 2 seeds x 2 rounds.
 if [ "$kind" = cpu ]; then
@@ -94,13 +84,6 @@ PY
 done
 echo "ok: 2 and 3 ranks write one process's rows, tables and images"
 
-# expect_one_error STATUS PATTERN: one "error:" line matching PATTERN, no CSV.
-expect_one_error() {
-    [ "$1" != 0 ] || fail "exit status 0 where the job should fail"
-    [ "$(grep -c '^error:' "$work/stderr")" = 1 ] || fail "one error line expected"
-    grep '^error:' "$work/stderr" | grep -Eq "$2" || fail "the error line does not match '$2'"
-    [ ! -e "$work/out.csv" ] || fail "the CSV of a failed job is left behind"
-}
 mpi -np 2 "$app" "${compare[@]}" --equal-time 10 --images "$work/eq" >/dev/null 2>"$work/stderr"
 expect_one_error $? "^error: --equal-time"
 mpi -np 2 "$app" "${compare[@]}" --strategy auto >/dev/null 2>"$work/stderr"
@@ -136,22 +119,6 @@ long_compare() { # [FLAG...]
     done
     grep -q "^\[2/" "$work/stderr" || fail "the long comparison's rows never began"
 }
-wait_bounded() { # SECONDS: wait for the job; its status, or fail past the bound
-    for _ in $(seq $(( $1 * 20 ))); do
-        kill -0 "$pid" 2>/dev/null || break
-        sleep 0.05
-    done
-    kill -0 "$pid" 2>/dev/null && fail "the job still runs $1 s later"
-    wait "$pid"
-    status=$?
-    pid=
-}
-rank_pid() { # the process mpirun started as rank $1
-    local p
-    for p in $(pgrep -f "$(basename "$app") --compare --scene cornell-box-lights --width 64"); do
-        tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=$1" && echo "$p"
-    done
-}
 
 long_compare
 kill -INT "$pid"
@@ -171,7 +138,7 @@ rm -f "$work/images"
 echo "ok: root's error"
 
 long_compare
-victim=$(rank_pid 1)
+victim=$(rank_pid 1 "--compare --scene cornell-box-lights --width 64")
 [ -n "$victim" ] || fail "no rank 1 found"
 kill -KILL "$victim"
 wait_bounded 12
