@@ -22,6 +22,7 @@
 #include "Compare/Ladder.h"
 #include "Compare/PythonScript.h"
 #include "Error.h"
+#include "IO/TemporaryFolder.h"
 
 namespace rt::compare
 {
@@ -67,9 +68,6 @@ void checkComparison(const CompareOptions& options)
     checkOutputPath(options.grid, "--output", {".png"});
     if (!options.plot.empty() && options.csv.empty())
         throw UsageError("--plot draws the rows of --csv: give --csv FILE.csv too");
-    if (!options.grid.empty() && !(options.equalTimeMs > 0.0))
-        throw UsageError("--output draws --equal-time's figure: give --equal-time MS too (the ladder writes --csv, "
-                         "--plot and --table)");
     if (options.equalTimeMs > 0.0 && options.grid.empty() && options.images.empty())
         throw UsageError("--equal-time writes its figure to --output FILE.png or its images to --images DIR: give "
                          "either");
@@ -80,8 +78,8 @@ void checkComparison(const CompareOptions& options)
     }
     if (!options.grid.empty())
     {
-        scriptPath("equal_time_grid.py");
-        requireMatplotlib("--equal-time");
+        scriptPath(options.equalTimeMs > 0.0 ? "equal_time_grid.py" : "ladder_grid.py");
+        requireMatplotlib("--output");
     }
 }
 
@@ -119,8 +117,12 @@ int runComparison(const Scene& scene, const RenderRequest& base, const CompareOp
         checkComparison(options); // root alone writes (on its host's folders)
     else if (options.strategies.empty())
         throw UsageError("--compare has no strategy to render");
-    ImageFolder images(job.root() ? options.images : std::filesystem::path(), scene.id, base.settings.width,
-                       base.settings.height());
+    // The ladder's --output figure is drawn from its images: kept in a temporary folder without --images.
+    std::optional<TemporaryFolder> gridImages;
+    if (job.root() && !options.grid.empty() && !(options.equalTimeMs > 0.0) && options.images.empty())
+        gridImages.emplace("ray-tracing-ladder");
+    ImageFolder images(!job.root() ? std::filesystem::path() : gridImages ? gridImages->path() : options.images,
+                       scene.id, base.settings.width, base.settings.height());
     // One engine of each kind, its acceleration structures built once.
     std::vector<EngineUnderTest> engines;
     for (const EngineKind kind : options.engines)
@@ -131,6 +133,7 @@ int runComparison(const Scene& scene, const RenderRequest& base, const CompareOp
             const double build = engine->setScene(scene);
             spdlog::info("{} engine on {}: acceleration structures in {:.3f} s", toString(kind), engine->deviceName(),
                          build);
+            images.setDevice(kind, engine->deviceName());
             engines.push_back({kind, std::move(engine)});
         }
         catch (const DeviceError& e)
@@ -164,7 +167,7 @@ int runComparison(const Scene& scene, const RenderRequest& base, const CompareOp
                                                    : std::string(": nothing written"));
         return 130;
     }
-    drawPlot(options);
+    drawFigures(options, images);
     return 0;
 }
 

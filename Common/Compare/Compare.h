@@ -34,7 +34,7 @@ struct CompareOptions
     std::string csv; // one CSV row per engine x strategy x spp, written as each render ends
     std::string plot; // a PNG of the CSV's rows drawn by scripts/plot_convergence.py (needs csv)
     double equalTimeMs = 0.0; // > 0: the equal-time comparison instead of the ladder
-    std::string grid; // the equal-time figure (PNG)
+    std::string grid; // --output's figure (PNG): the equal-time tiles, or the ladder's images at every spp
     std::filesystem::path images; // every render's PFM and an index (ImageFolder.h), when not empty
     int seeds = 1; // each row rendered with seeds seed, seed + 1, ...: means with 95 % intervals (Confidence.h)
     int rounds = 3; // every row timed again in this many interleaved rounds: the median time and its spread

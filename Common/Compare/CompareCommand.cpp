@@ -23,8 +23,9 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
     flags.referenceCache = defaultReferenceCacheDir().string();
     CLI::Option* compareFlag = app.add_flag("--compare", flags.compare,
                  "Headless comparison: render --scene at every count of --spp-list on every engine of --engines, "
-                 "print time, CPU/GPU ratio and relMSE against a --reference-spp render; under mpirun, the ranks share its "
-                 "renders (docs/SCALING.md)");
+                 "print time, CPU/GPU ratio and relMSE against a --reference-spp render; with --output FILE.png, "
+                 "every engine x strategy's image at every spp with its false-colour error image in one figure (the "
+                 "thesis' Tables 5.1-5.3); under mpirun, the ranks share its renders (docs/SCALING.md)");
     app.add_option("--spp-list", flags.sppList, "With --compare: sample counts, comma separated")->capture_default_str();
     app.add_option("--engines", flags.engines,
                    "With --compare: engines, comma separated (single, multi, gpu; default: every engine this app "

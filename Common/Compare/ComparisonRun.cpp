@@ -167,11 +167,17 @@ std::string plusMinus(const Interval& i)
     return i.count > 1 ? fmt::format(" ±{:<8.2g}", 0.5 * (i.hi - i.lo)) : std::string();
 }
 
-void drawPlot(const CompareOptions& options)
+void drawFigures(const CompareOptions& options, const ImageFolder& images)
 {
-    if (options.plot.empty())
-        return;
-    drawFigure(options.plot, scriptPath("plot_convergence.py"), {options.csv, toString(options.metric)});
-    std::printf("wrote %s\n", options.plot.c_str());
+    if (!options.plot.empty())
+    {
+        drawFigure(options.plot, scriptPath("plot_convergence.py"), {options.csv, toString(options.metric)});
+        std::printf("wrote %s\n", options.plot.c_str());
+    }
+    if (!options.grid.empty() && !(options.equalTimeMs > 0.0))
+    {
+        drawFigure(options.grid, scriptPath("ladder_grid.py"), {images.indexPath().string()});
+        std::printf("wrote %s\n", options.grid.c_str());
+    }
 }
 } // namespace rt::compare

@@ -15,6 +15,7 @@
 #include "Compare/Compare.h"
 #include "Compare/Confidence.h"
 #include "Compare/ConvergenceCsv.h"
+#include "Compare/ImageFolder.h"
 #include "Compare/Measurement.h"
 #include "Compare/RowJob.h"
 #include "Compare/Strategy.h"
@@ -97,8 +98,11 @@ ConvergenceRow csvRow(const std::string& scene, EngineKind engine, const std::st
                       const std::string& label, const Measurement& m, const Reference& reference, std::uint32_t seed,
                       int round, int rank);
 
-/// --plot's figure of --csv's rows (plot_convergence.py), when asked for; says so on stdout.
-void drawPlot(const CompareOptions& options);
+/// The figures of a finished comparison, each when asked for: --plot's of --csv's rows (plot_convergence.py) and,
+/// for a ladder, --output's of the images of every engine x strategy at every spp with their error images
+/// (ladder_grid.py, from `images`' index; --equal-time draws its own). Says so on stdout. Throws OutputError
+/// when a script fails (nothing written in its place).
+void drawFigures(const CompareOptions& options, const ImageFolder& images);
 
 /// " ±4.1e-05" (half the 95 % interval) when there are several seeds, else nothing.
 std::string plusMinus(const Interval& i);

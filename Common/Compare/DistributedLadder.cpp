@@ -207,7 +207,7 @@ int runDistributedLadder(const Scene& scene, const RenderRequest& base, const Co
     if (!job.root())
         return 0;
     table->print();
-    drawPlot(options);
+    drawFigures(options, images);
     return 0;
 }
 } // namespace rt::compare

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
-#include <random>
 
 #include <nlohmann/json.hpp>
 #include <spdlog/fmt/fmt.h>
@@ -11,6 +10,7 @@
 
 #include "Compare/PythonScript.h"
 #include "IO/AtomicFile.h"
+#include "IO/TemporaryFolder.h"
 #include "Image/ImageIO.h"
 #include "Image/Metrics.h"
 
@@ -21,29 +21,6 @@ namespace
 constexpr int kCalibrationSpp = 4;
 constexpr double kTolerance = 0.15; // a render this far off its budget is rendered again with a corrected spp
 constexpr int kCorrections = 3;
-
-/// A fresh folder under the system's temporary directory, removed with its contents at the end of the scope.
-class TemporaryFolder
-{
-public:
-    TemporaryFolder()
-    {
-        std::random_device random;
-        m_path = std::filesystem::temp_directory_path() / fmt::format("ray-tracing-grid-{:08x}", random());
-        std::filesystem::create_directories(m_path);
-    }
-    ~TemporaryFolder()
-    {
-        std::error_code ignored;
-        std::filesystem::remove_all(m_path, ignored);
-    }
-    TemporaryFolder(const TemporaryFolder&) = delete;
-    TemporaryFolder& operator=(const TemporaryFolder&) = delete;
-    const std::filesystem::path& path() const { return m_path; }
-
-private:
-    std::filesystem::path m_path;
-};
 } // namespace
 
 int sppForBudget(double budgetMs, double msPerSample)
@@ -82,7 +59,7 @@ void writeEqualTimeGrid(const std::filesystem::path& png, const GridCaption& cap
                         const std::vector<EqualTimeTile>& tiles)
 {
     const std::filesystem::path script = scriptPath("equal_time_grid.py");
-    TemporaryFolder folder;
+    TemporaryFolder folder("ray-tracing-grid");
     nlohmann::json meta;
     meta["scene"] = caption.scene;
     meta["device"] = caption.device;

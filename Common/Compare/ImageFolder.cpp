@@ -6,6 +6,7 @@
 #include "IO/AtomicFile.h"
 #include "IO/OutputSet.h"
 #include "Image/ImageIO.h"
+#include "Image/Metrics.h"
 
 namespace rt::compare
 {
@@ -43,7 +44,19 @@ ImageFolder::ImageFolder(std::filesystem::path dir, const std::string& scene, in
     if (ec)
         throw OutputError(fmt::format("--images '{}': cannot create the folder: {}", m_dir.string(), ec.message()));
     checkWritable(m_dir / "images.json", "--images");
-    m_index = {{"scene", scene}, {"width", width}, {"height", height}, {"images", nlohmann::json::array()}};
+    m_index = {{"scene", scene},
+               {"width", width},
+               {"height", height},
+               {"epsilon", kRelMseEpsilon},
+               {"images", nlohmann::json::array()}};
+    flush();
+}
+
+void ImageFolder::setDevice(EngineKind engine, const std::string& device)
+{
+    if (!enabled())
+        return;
+    m_index["devices"][toString(engine)] = device;
     flush();
 }
 
@@ -88,11 +101,11 @@ void ImageFolder::discard()
         std::filesystem::remove(m_dir / image.at("path").get<std::string>(), ignored);
     if (m_index.contains("reference"))
         std::filesystem::remove(m_dir / "reference.pfm", ignored);
-    std::filesystem::remove(m_dir / "images.json", ignored);
+    std::filesystem::remove(indexPath(), ignored);
 }
 
 void ImageFolder::flush()
 {
-    writeFileAtomically(m_dir / "images.json", m_index.dump(2) + "\n");
+    writeFileAtomically(indexPath(), m_index.dump(2) + "\n");
 }
 } // namespace rt::compare

@@ -23,6 +23,11 @@ public:
     ImageFolder(std::filesystem::path dir, const std::string& scene, int width, int height);
 
     bool enabled() const { return !m_dir.empty(); }
+    /// images.json: scene, size, the relMSE's epsilon, each engine's device, the reference and every image.
+    std::filesystem::path indexPath() const { return m_dir / "images.json"; }
+
+    /// Records the device `engine` renders on (the figures' captions).
+    void setDevice(EngineKind engine, const std::string& device);
 
     /// Writes the reference as reference.pfm (linear radiance, W/(sr m^2) per channel) with its spp (0 for a
     /// file) and its own relMSE where known.

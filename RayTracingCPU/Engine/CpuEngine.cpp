@@ -10,6 +10,10 @@
 #include <thread>
 #include <unordered_set>
 
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
@@ -31,6 +35,19 @@ std::string cpuModel()
     return "CPU";
 }
 
+/// The threads the multi engine's parallel loops run on: the cores this process may use (taskset, cgroups'
+/// cpusets), which TBB's default arena follows, rather than the machine's.
+unsigned usableThreads()
+{
+#if defined(__linux__)
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    if (sched_getaffinity(0, sizeof set, &set) == 0)
+        return static_cast<unsigned>(std::max(1, CPU_COUNT(&set)));
+#endif
+    return std::max(1u, std::thread::hardware_concurrency());
+}
+
 } // namespace
 
 CpuEngine::CpuEngine(EngineKind kind, bool specialize) : m_kind(kind), m_specialize(specialize)
@@ -41,7 +58,7 @@ CpuEngine::CpuEngine(EngineKind kind, bool specialize) : m_kind(kind), m_special
 
 std::string CpuEngine::deviceName() const
 {
-    const unsigned threads = m_kind == EngineKind::Single ? 1u : std::max(1u, std::thread::hardware_concurrency());
+    const unsigned threads = m_kind == EngineKind::Single ? 1u : usableThreads();
     return fmt::format("{} ({} thread{})", cpuModel(), threads, threads == 1 ? "" : "s");
 }
 

@@ -29,6 +29,8 @@
 #                                      "1" the single process only), tests/Bench/scaling.sh
 #   tests/Bench/device_run.sh compare-scaling [RANKS]  issue 40: a --compare sweep of 24 rows on one GPU and over
 #                                      mpirun's ranks (RANKS, default "1 2"), tests/Bench/compare_scaling.sh
+#   tests/Bench/device_run.sh thesis   issue 39: the thesis' figures and Table 5.4, its values beside ours
+#                                      (tests/Bench/thesis_figures.sh; its images packed by pfm_pack.py)
 #   tests/Bench/device_run.sh mpi      tests/Cli/mpi.sh and mpi_compare.sh on this driver: split renders, errors,
 #                                      Ctrl-C, a killed rank; a distributed --compare
 #   tests/Bench/device_run.sh variants RENDERS_FILE  the shader variants carried in .devcarry/variants/ (VARIANTS
@@ -190,6 +192,16 @@ compare-scaling)
     rm -rf /tmp/compare-scaling
     bash tests/Bench/compare_scaling.sh "$bin" /tmp/compare-scaling ${2:-1 2} | tee "$out/compare-scaling.txt"
     cp /tmp/compare-scaling/sweep-* "$out/"
+    ;;
+thesis)
+    # The thesis' figures (tests/Bench/thesis_figures.sh). This machine has no matplotlib: the runs' JSON come
+    # back in thesis.tar and the images packed as float16 (pfm_pack.py); drawn here by
+    #   pfm_pack.py unpack DIR/images images-*.npz && thesis_figures.py DIR
+    rm -rf /tmp/thesis
+    bash tests/Bench/thesis_figures.sh /tmp/thesis "$bin"
+    cat /tmp/thesis/cpu-gpu.txt /tmp/thesis/gpu.txt
+    tar -C /tmp/thesis -cf "$out/thesis.tar" --exclude='*.pfm' .
+    python3 tests/Bench/pfm_pack.py pack /tmp/thesis/images "$out/images"
     ;;
 mpi)
     # The MPI suite of the default tests on this driver (tests/Cli/mpi.sh), ranks on the host's GPUs.

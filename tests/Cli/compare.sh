@@ -73,6 +73,31 @@ for r in rows:
 for label, s in by.items():
     assert all(s[64][i] < s[4][i] for i in range(3)), ("every metric falls with spp", label, s)
 PY
+# The ladder's --output: every engine x strategy at every spp over its error image, drawn from images kept in a
+# temporary folder that is gone afterwards (TMPDIR), or in --images, whose index names each engine's device.
+mkdir "$work/tmp"
+TMPDIR="$work/tmp" "$app" "${common[@]}" --engines multi,gpu --spp-list 4,16 --rounds 1 --output "$work/ladder.png" \
+    >"$work/outl.txt" 2>&1 || { cat "$work/outl.txt"; fail "the ladder's --output"; }
+grep -q "wrote $work/ladder.png" "$work/outl.txt" || fail "the ladder's figure not reported"
+[ -z "$(ls -A "$work/tmp")" ] || fail "the ladder's images left in TMPDIR: $(ls "$work/tmp")"
+"$app" "${common[@]}" --engines multi,gpu --estimators mixture,nee-mis --spp-list 4,16 --rounds 1 \
+    --output "$work/ladder2.png" --images "$work/ladder-images" >"$work/outl2.txt" 2>&1 ||
+    { cat "$work/outl2.txt"; fail "the ladder's --output with --images"; }
+python3 - "$work/ladder.png" "$work/ladder2.png" "$work/ladder-images/images.json" <<'PY' || fail "the ladder's figure"
+import json, struct, sys
+def size(path):
+    head = open(path, "rb").read(24)
+    assert head[:8] == b"\x89PNG\r\n\x1a\n", path
+    return struct.unpack(">II", head[16:24])
+# Two rows (image, error) per engine x strategy, a column per spp and the reference's: 2 x 2 rows against 3
+# columns, then 2 x 4 rows against 3 columns.
+(w1, h1), (w2, h2) = size(sys.argv[1]), size(sys.argv[2])
+assert h1 > w1 and abs(w2 - w1) <= 2 and h2 > 1.8 * h1, (w1, h1, w2, h2)
+index = json.load(open(sys.argv[3]))
+assert set(index["devices"]) == {"multi", "gpu"} and "thread" in index["devices"]["multi"], index["devices"]
+assert index["epsilon"] == 0.01 and len(index["images"]) == 2 * 2 * 2, index
+PY
+
 "$app" "${common[@]}" --engines gpu --estimators mixture,nee-mis --equal-time 100 --rounds 1 --metric mape \
     --output "$work/mape.png" \
     >"$work/outm.txt" 2>&1 || { cat "$work/outm.txt"; fail "--metric mape"; }
@@ -162,7 +187,7 @@ bad --compare --scene cornell-box-lights --seeds 0
 bad --compare --scene cornell-box-lights --seeds 101
 bad --compare --scene cornell-box-lights --rounds 0
 bad --compare --scene cornell-box-lights --equal-time nan --output "$work/x.png"
-bad --compare --scene cornell-box-lights --spp-list 4 --output "$work/x.png" # --output is the equal-time figure
+bad --compare --scene cornell-box-lights --spp-list 4 --output "$work/x.jpg" # the ladder's figure is a PNG
 bad --compare --scene cornell-box-lights --engines multi,multi
 bad --compare --scene cornell-box-lights --spp-list 16777216 # a reference of 4 x 16777216 spp
 python3 -c '
