@@ -1053,6 +1053,96 @@ def section_mpi_scaling():
     return out
 
 
+THESIS = {
+    "dir": "h100-thesis-figures",
+    "machine": "NVIDIA H100 80GB HBM3 (driver 580); the CPU columns: the same host's 16 Xeon cores (multi engine)",
+    "date": "2026-11-27",
+    "notebook": "## 22.",
+}
+
+
+def section_thesis_figures():
+    rel = THESIS["dir"]
+    t = read_json(f"{rel}/thesis.json")
+    rows = t["table_5_4"]
+    between = {int(k): v for k, v in t["cpu_gpu_image_relmse"].items()}
+
+    def ms(v):
+        return "-" if v is None else (f"{v:,.0f}" if v >= 100 else f"{v:.1f}")
+
+    def ratio(a, b):
+        return f"{a / b:.1f}x" if a and b else "-"
+
+    out = [
+        "## 12. The thesis' figures, regenerated (issue 39)",
+        "",
+        f"Every figure of the thesis' chapters 4-5 by one command, on its sample scene: `{t['scene']}`, "
+        f"{t['width']}x{t['height']}, depth {t['depth']}, book 3's {t['estimator']} with random samples, as Table 5.4. "
+        "The thesis' values stand beside ours where it printed them (Table 5.4, which its figure 5.2 plots; figure "
+        "4.6 and Tables 5.1-5.3 are pictures only). Thesis: its own machine, not named for Table 5.4 (section 4.3.4 "
+        "names an Intel i9-14900HX with 32 threads; the GPU is an RTX card). Ours: "
+        f"{t['devices']['multi']} and {t['devices']['gpu']}, which has no RT cores. GPU ms from timestamp queries "
+        "(median of 3 rounds; its wall time beside), CPU ms from the host clock (median of 2 rounds). relMSE "
+        f"against a {t['reference_spp']:,}-spp GPU render whose own relMSE ({t['reference_relmse']:.2g}) is part of "
+        "every value. The CPU rendered the counts up to 2,000 (its column to 20,000 spp would take about 25 min "
+        "more).",
+        "",
+        "| spp | CPU ms, thesis | CPU ms, ours | thesis / ours | GPU ms, thesis | GPU ms, ours | GPU wall ms | "
+        "thesis / ours | CPU/GPU, thesis | CPU/GPU, ours | relMSE | relMSE CPU-GPU |",
+        "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|",
+    ]
+    for r in rows:
+        rel_mse = r["gpu_relmse"] if r["gpu_relmse"] is not None else r["cpu_relmse"]
+        apart = f"{between[r['spp']]:.2g}" if r["spp"] in between else "-"
+        out.append(
+            f"| {r['spp']} | {ms(r['thesis_cpu_ms'])} | {ms(r['cpu_ms'])} | {ratio(r['thesis_cpu_ms'], r['cpu_ms'])} | "
+            f"{ms(r['thesis_gpu_ms'])} | {ms(r['gpu_ms'])} | {ms(r['gpu_wall_ms'])} | "
+            f"{ratio(r['thesis_gpu_ms'], r['gpu_ms'])} | {ratio(r['thesis_cpu_ms'], r['thesis_gpu_ms'])} | "
+            f"**{ratio(r['cpu_ms'], r['gpu_ms'])}** | {'-' if rel_mse is None else f'{rel_mse:.3g}'} | "
+            f"{apart} |")
+    both = [r for r in rows if r["cpu_ms"] and r["thesis_cpu_ms"]]
+    gpus = [r for r in rows if r["gpu_ms"] and r["thesis_gpu_ms"]]
+    cores = t["figure_4_6"]
+    last = max(p[0] for p in cores[0]["points"])
+    one = next(p[1] for p in cores[0]["points"] if p[0] == last)
+    most = next(p[1] for p in cores[-1]["points"] if p[0] == last)
+    thesis_lead = [r["thesis_cpu_ms"] / r["thesis_gpu_ms"] for r in rows if r["thesis_cpu_ms"]]
+    our_lead = [r["cpu_ms"] / r["gpu_ms"] for r in rows if r["cpu_ms"] and r["gpu_ms"]]
+    out += [
+        "",
+        f"Against the thesis, our CPU engine is {min(r['thesis_cpu_ms'] / r['cpu_ms'] for r in both):.1f}-"
+        f"{max(r['thesis_cpu_ms'] / r['cpu_ms'] for r in both):.1f}x faster on 16 threads, and our GPU "
+        f"{min(r['thesis_gpu_ms'] / r['gpu_ms'] for r in gpus):.1f}-{max(r['thesis_gpu_ms'] / r['gpu_ms'] for r in gpus):.1f}x; "
+        f"so the GPU's lead over the CPU shrank from the thesis' {min(thesis_lead):.0f}-{max(thesis_lead):.0f}x to "
+        f"{min(our_lead):.0f}-{max(our_lead):.0f}x: our CPU engine gained far more than our GPU engine. Both engines "
+        "render the same image from the same seeds: their relMSE against each other (last column) is far below "
+        "either's against the reference and falls about as 1/spp. Figure 4.6: the CPU's time is linear in spp on every "
+        f"core count, and {cores[-1]['cores']} cores are {one / most:.1f}x one core at {last} spp.",
+        "",
+        f"![Figure 5.2 redone](results/{rel}/figure-5.2.png)",
+        "",
+        f"![Figure 4.6 redone](results/{rel}/figure-4.6.png)",
+        "",
+        "Tables 5.1-5.3 redone: the CPU's and the GPU's image at every spp, each over its error image (drawn 2000 px "
+        "wide from the images in half precision; `thesis_figures.py` draws them at full size by default).",
+        "",
+        f"![Tables 5.1-5.3 redone](results/{rel}/tables-5.1-5.3.png)",
+        "",
+        sources([
+            ("Machine", THESIS["machine"]),
+            ("Date", THESIS["date"]),
+            ("Results", link(rel)),
+            ("Notebook", notebook_link(THESIS["notebook"])),
+            ("Command", ""),
+        ]),
+        "",
+        code("tests/Bench/thesis_figures.sh OUT   # on a machine with the GPU; here, through the lent one:\n"
+             "bash tests/Bench/device_carry.sh; bash tests/Bench/device_run.sh thesis\n"
+             "tests/Bench/pfm_pack.py unpack OUT/images images-*.npz; tests/Bench/thesis_figures.py OUT Common/Compare 2000"),
+    ]
+    return out
+
+
 def render():
     runs = compare_runs()
     parts = [
@@ -1083,6 +1173,7 @@ def render():
         section_auto_strategy(),
         section_restir(),
         section_mpi_scaling(),
+        section_thesis_figures(),
     ]
     titles = [p[0][3:] for p in parts[1:]]
     parts[0] += ["", "Contents: " + " · ".join(f"[{t}](#{slugify(t)})" for t in titles)]
