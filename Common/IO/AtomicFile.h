@@ -1,20 +1,36 @@
+// Every file the apps write goes through here: written whole to a temporary sibling in the destination's own
+// folder, flushed to the disk and checked (each write, fsync, close), then renamed into place, so that a full
+// disk, a failed writer or Ctrl-C never leaves a half-written file behind and never reports one as written. A
+// destination that exists must be a regular file (a symbolic link to one is followed, keeping the link):
+// renaming over a device, a folder, a pipe or a socket would replace it, and is refused.
 #pragma once
 
 #include <filesystem>
 #include <functional>
+#include <string>
 #include <string_view>
 
 namespace rt
 {
-/// Runs `write` on a sibling temporary file and renames it over `path` (over its target, for a symbolic link:
-/// outputTarget) only if `write` returned true, so a failed, cancelled or crashed write never leaves a
-/// half-written file behind. Throws OutputError naming `path` and, where the C library gave one, the reason
-/// (missing folder, write failure, rename failure).
+/// Runs `write` on a temporary sibling of outputTarget(`path`), flushes it to the disk (fsync, checked) and
+/// renames it over that target only if `write` returned true and the flush held, so a failed, cancelled or
+/// crashed write never leaves a half-written file behind. Throws OutputError naming `path` and, where the C
+/// library gave one, the reason (missing folder, not a regular file, write, flush or rename failure).
 void writeAtomically(const std::filesystem::path& path, const std::function<bool(const std::filesystem::path&)>& write);
+
+/// Why `path` cannot be replaced by a written file, or "" when it can: it (or, for a symbolic link, what the
+/// link points to, followed to its end) exists and is not a regular file, or the link points nowhere.
+/// `target` receives where the file must land (the link's target, else `path`).
+std::string outputTargetProblem(const std::filesystem::path& path, std::filesystem::path& target);
 
 /// Where writing `path` must land: the file a symbolic link points to (followed to its end), so that the
 /// rename of writeAtomically and OutputSet replaces the target and keeps the link; `path` itself otherwise.
+/// Throws OutputError ("cannot write 'path': ...") where outputTargetProblem names a problem.
 std::filesystem::path outputTarget(const std::filesystem::path& path);
+
+/// Writes `bytes` to `file` (created or truncated) and closes it, checking every write and the close. Returns
+/// false with errno set on a failure (a full disk: ENOSPC; a file size limit: EFBIG).
+bool writeBytes(const std::filesystem::path& file, std::string_view bytes);
 
 /// writeAtomically for a text or binary blob.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);

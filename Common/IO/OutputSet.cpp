@@ -32,20 +32,23 @@ void removeQuietly(const std::filesystem::path& path)
 }
 } // namespace
 
-void checkWritable(const std::filesystem::path& path, const char* flag)
+void checkWritable(const std::filesystem::path& shown, const char* flag)
 {
-    const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
     std::error_code ec;
+    if (std::filesystem::is_directory(shown, ec))
+        throw OutputError(fmt::format("{} '{}' is a folder, not a file", flag, shown.string()));
+    std::filesystem::path path; // where the file lands: the link's target, for a symbolic link
+    if (const std::string problem = outputTargetProblem(shown, path); !problem.empty())
+        throw OutputError(fmt::format("{} '{}': {}", flag, shown.string(), problem));
+    const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
     if (!std::filesystem::is_directory(folder, ec))
-        throw OutputError(fmt::format("{} '{}': folder '{}' {}", flag, path.string(), folder.string(),
+        throw OutputError(fmt::format("{} '{}': folder '{}' {}", flag, shown.string(), folder.string(),
                                       std::filesystem::exists(folder, ec) ? "is not a folder" : "does not exist"));
-    if (std::filesystem::is_directory(path, ec))
-        throw OutputError(fmt::format("{} '{}' is a folder, not a file", flag, path.string()));
 #ifndef _WIN32
     std::string probe = (folder / ".rt-write-probe-XXXXXX").string();
     const int fd = ::mkstemp(probe.data());
     if (fd < 0)
-        throw OutputError(fmt::format("{} '{}': cannot create a file in folder '{}': {}", flag, path.string(),
+        throw OutputError(fmt::format("{} '{}': cannot create a file in folder '{}': {}", flag, shown.string(),
                                       folder.string(), std::strerror(errno)));
     ::close(fd);
     ::unlink(probe.c_str());

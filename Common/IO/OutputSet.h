@@ -11,9 +11,10 @@
 
 namespace rt
 {
-/// Throws OutputError (naming `flag` and `path`) unless a file can be created at `path` now: its folder
-/// exists and takes a new file (tried with a probe file, removed at once: permission bits say nothing for
-/// root, nor for /proc or a read-only mount) and `path` is not a folder.
+/// Throws OutputError (naming `flag` and `path`) unless a file can be created at `path` now: `path` is not a
+/// folder, nor anything but a regular file, nor a symbolic link to one or to nothing (outputTargetProblem), and
+/// the folder it lands in exists and takes a new file (tried with a probe file, removed at once: permission
+/// bits say nothing for root, nor for /proc or a read-only mount).
 void checkWritable(const std::filesystem::path& path, const char* flag);
 
 class OutputSet

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <string_view>
 #include <vector>
 
 #include <spdlog/fmt/fmt.h>
@@ -62,6 +64,24 @@ namespace
     return true;
 }();
 
+/// Encodes an 8-bit image as PNG in memory and writes it with every write and the close checked (stb's own
+/// file writer ignores fwrite's and fclose's errors: a full disk left a truncated PNG reported as written).
+bool writePngBytes(const std::filesystem::path& file, const unsigned char* pixels, int width, int height, int channels)
+{
+    int length = 0;
+    unsigned char* png = stbi_write_png_to_mem(pixels, width * channels, width, height, channels, &length);
+    if (!png)
+    {
+        errno = ENOMEM;
+        return false;
+    }
+    const bool written = writeBytes(file, std::string_view(reinterpret_cast<const char*>(png), std::size_t(length)));
+    const int reason = errno;
+    std::free(png);
+    errno = reason;
+    return written;
+}
+
 float srgbEncode(float linear)
 {
     return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
@@ -106,8 +126,7 @@ void writePng(const std::filesystem::path& path, const Image& image)
                 bytes[3 * i + c] = linearToSrgb8(image.data()[i][c]);
     });
     writeAtomically(path, [&](const std::filesystem::path& tmp) {
-        return stbi_write_png(tmp.string().c_str(), image.width(), image.height(), 3, bytes.data(),
-                              image.width() * 3) != 0;
+        return writePngBytes(tmp, bytes.data(), image.width(), image.height(), 3);
     });
 }
 
@@ -117,7 +136,7 @@ void writePng8(const std::filesystem::path& path, int width, int height, const s
         throw UsageError(fmt::format("cannot write '{}': {} bytes for a {}x{} RGBA image", path.string(), rgba.size(),
                                      width, height));
     writeAtomically(path, [&](const std::filesystem::path& tmp) {
-        return stbi_write_png(tmp.string().c_str(), width, height, 4, rgba.data(), width * 4) != 0;
+        return writePngBytes(tmp, rgba.data(), width, height, 4);
     });
 }
 

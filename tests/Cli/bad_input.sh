@@ -120,6 +120,26 @@ rmdir "$work/d.json"
 expect_error "hdr in /proc" "/proc" "${long[@]}" --hdr /proc/out.pfm
 expect_error "output in /proc" "/proc" "${long[@]}" --output /proc/out.png
 expect_error "output folder is a file" "is not a folder" "${long[@]}" --output "$0/out.png"
+# Only a regular file is replaced (issue 41): a link to a device had the device itself replaced by a PNG.
+ln -s /dev/full "$work/full.png"
+expect_error "output is a link to a device" "'/dev/full', a device" "${long[@]}" --output "$work/full.png"
+[ -c /dev/full ] || { echo "FAIL: /dev/full is no longer a device"; failures=$((failures + 1)); }
+ln -s "$work/nowhere/x.json" "$work/dangling.json"
+expect_error "stats is a dangling link" "does not exist" --stats "$work/dangling.json"
+[ "$(find "$work" -newer "$work/dangling.json" -type f | grep -vc 'std')" -eq 0 ] ||
+    { echo "FAIL: a file beside the links: $(ls "$work")"; failures=$((failures + 1)); }
+rm -f "$work/full.png" "$work/dangling.json"
+# A disk that takes 4 KB of each file (RLIMIT_FSIZE, SIGXFSZ ignored: write() fails with EFBIG, as ENOSPC does
+# on a full disk): the PNG was cut at 4 KB and reported as written with status 0. Not for the GPU app: the limit
+# also binds lavapipe's device memory (memfd), which then faults; the files are written by the same code.
+if [[ "$(basename "$app")" != *gpu* ]]; then
+    (
+        ulimit -f 4
+        trap '' XFSZ
+        expect_error "a disk that takes 4 KB" "File too large" --width 96 --spp 4 --stats "$work/out.json"
+        exit "$failures"
+    ) || failures=$((failures + 1))
+fi
 
 # Huge requests are refused with the figures before anything is built (issue 13); counts must be positive.
 expect_error "negative count" "--count" --scene many-lights --count -3

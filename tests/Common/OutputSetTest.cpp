@@ -52,11 +52,12 @@ TEST(OutputSet, AFailingFileLeavesNoneOfTheSetBehind)
         EXPECT_THROW(set.commit(), OutputError);
         EXPECT_EQ(filesIn(dir.path()), 0u) << "file " << failing << " failing";
     }
-    // A rename that fails (the stats path is a folder) removes the files already put in place.
-    std::filesystem::create_directory(dir / "d.json");
+    // A rename that fails (the stats path became a folder after it was added) removes the files already put in
+    // place.
     OutputSet set;
     set.add(dir / "a.png", [](const std::filesystem::path& tmp) { writeFileAtomically(tmp, "png"); });
     set.add(dir / "d.json", [](const std::filesystem::path& tmp) { writeFileAtomically(tmp, "{}"); });
+    std::filesystem::create_directory(dir / "d.json");
     EXPECT_THROW(set.commit(), OutputError);
     EXPECT_FALSE(std::filesystem::exists(dir / "a.png"));
     EXPECT_EQ(filesIn(dir.path()), 1u); // the folder alone

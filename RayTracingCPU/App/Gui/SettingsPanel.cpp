@@ -280,7 +280,7 @@ void SettingsPanel::drawSaveImage(Session& session)
         m_savePath = session.suggestedImageName();
     if (ImGui::InputText("File", &m_savePath))
         m_savePathEdited = true;
-    tooltip("PNG (sRGB) of the image on screen; the linear radiance goes beside it as .pfm");
+    tooltip("PNG (sRGB) of the image on screen; the linear radiance goes beside it as .pfm and .exr (float)");
     ImGui::BeginDisabled(!session.preview());
     if (ImGui::Button("Save PNG + PFM"))
         session.saveImage(m_savePath);
