@@ -41,6 +41,31 @@ std::filesystem::path assetRoot()
 #endif
 }
 
+namespace
+{
+bool isInside(const std::filesystem::path& file, const std::filesystem::path& folder)
+{
+    std::error_code ec;
+    const std::filesystem::path root = std::filesystem::weakly_canonical(folder, ec);
+    if (ec || root.empty())
+        return false;
+    const std::filesystem::path relative = file.lexically_relative(root);
+    return !relative.empty() && *relative.begin() != "..";
+}
+} // namespace
+
+std::string outsideSceneFolders(const std::filesystem::path& file, const std::filesystem::path& sceneFolder)
+{
+    std::error_code ec;
+    const std::filesystem::path resolved = std::filesystem::weakly_canonical(file, ec);
+    if (!ec && (isInside(resolved, sceneFolder.empty() ? std::filesystem::path(".") : sceneFolder) ||
+                isInside(resolved, assetRoot())))
+        return {};
+    return fmt::format("'{}' lies outside the scene's folder and the asset folder (a scene reads files only from "
+                       "there)",
+                       ec ? file.string() : resolved.string());
+}
+
 std::filesystem::path resolveAsset(const std::string& path, const std::string& what)
 {
     const std::filesystem::path given(path);

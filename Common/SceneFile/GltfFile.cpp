@@ -1,5 +1,7 @@
 #include "SceneFile/GltfFile.h"
 
+#include <algorithm>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -8,23 +10,38 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
+#include "Assets/AssetPaths.h"
 #include "Error.h"
+#include "SceneFile/JsonNode.h"
 
 namespace rt
 {
 namespace
 {
-/// The files tinygltf looked for and could not read (its error text does not say which kind of failure it was).
+/// The files tinygltf looked for and could not read, and why (its error text does not say which kind of failure
+/// it was): missing, not a regular file, or outside the scene's folders.
 struct MissingFiles
 {
+    std::filesystem::path folder; // the glTF file's
     std::vector<std::string> paths;
+    std::vector<std::string> reasons; // "" for a missing file
 };
 
+/// A buffer or image file tinygltf may read: a regular file inside the scene's folder or the asset folder.
 bool fileExists(const std::string& path, void* user)
 {
-    if (tinygltf::FileExists(path, nullptr))
+    auto& missing = *static_cast<MissingFiles*>(user);
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    std::string reason;
+    if (!std::filesystem::exists(status))
+        reason = "";
+    else if (!std::filesystem::is_regular_file(status))
+        reason = fmt::format("'{}' is not a regular file", path);
+    else if (reason = outsideSceneFolders(path, missing.folder); reason.empty())
         return true;
-    static_cast<MissingFiles*>(user)->paths.push_back(path);
+    missing.paths.push_back(path);
+    missing.reasons.push_back(reason);
     return false;
 }
 
@@ -32,9 +49,14 @@ std::string expandFilePath(const std::string& path, void*) { return path; } // n
 
 bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user)
 {
-    if (tinygltf::ReadWholeFile(out, err, path, nullptr))
+    if (fileExists(path, user) && tinygltf::ReadWholeFile(out, err, path, nullptr))
         return true;
-    static_cast<MissingFiles*>(user)->paths.push_back(path);
+    auto& missing = *static_cast<MissingFiles*>(user);
+    if (missing.paths.empty() || missing.paths.back() != path)
+    {
+        missing.paths.push_back(path);
+        missing.reasons.push_back("");
+    }
     return false;
 }
 
@@ -54,6 +76,11 @@ bool keepEncodedImage(tinygltf::Image* image, const int, std::string*, std::stri
     if (image->bufferView < 0 && bytes && size > 0)
         image->image.assign(bytes, bytes + size);
     return true;
+}
+
+bool isGlb(const std::vector<unsigned char>& bytes)
+{
+    return bytes.size() >= 4 && bytes[0] == 'g' && bytes[1] == 'l' && bytes[2] == 'T' && bytes[3] == 'F';
 }
 
 std::vector<unsigned char> readBytes(const std::filesystem::path& file)
@@ -102,14 +129,25 @@ GltfDocument loadGltfFile(const std::filesystem::path& file, GltfNotes& notes)
         throw SceneError(fmt::format("{}: {} bytes: tinygltf reads files of less than 4 GiB", file.string(),
                                      bytes.size()));
 
-    MissingFiles missing;
+    // The JSON (a .glb's first chunk) nested no deeper than the parser's recursion can take.
+    std::string_view json(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    if (isGlb(bytes))
+    {
+        std::uint32_t length = 0;
+        if (bytes.size() >= 20)
+            std::memcpy(&length, bytes.data() + 12, 4);
+        json = json.substr(std::min<std::size_t>(20, bytes.size()), length);
+    }
+    checkJsonNesting(json, file.string());
+
+    MissingFiles missing{.folder = file.parent_path()};
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile, &missing});
     loader.SetImageLoader(&keepEncodedImage, nullptr);
     GltfDocument doc{{}, file};
     std::string err, warn;
     const std::string folder = file.parent_path().string();
-    const bool binary = bytes.size() >= 4 && bytes[0] == 'g' && bytes[1] == 'l' && bytes[2] == 'T' && bytes[3] == 'F';
+    const bool binary = isGlb(bytes);
     bool ok = false;
     try
     {
@@ -124,6 +162,9 @@ GltfDocument loadGltfFile(const std::filesystem::path& file, GltfNotes& notes)
     }
     if (!ok)
     {
+        if (!missing.paths.empty() && !missing.reasons.front().empty())
+            throw SceneError(fmt::format("{}: a buffer or image refers to '{}': {}", file.string(),
+                                         missing.paths.front(), missing.reasons.front()));
         if (!missing.paths.empty())
             throw AssetError(fmt::format("{}: buffer file '{}' not found ({})", file.string(), missing.paths.front(),
                                          gltfOneLine(err)));

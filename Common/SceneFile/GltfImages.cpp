@@ -6,6 +6,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "Assets/ImageLoader.h"
+#include "Assets/AssetPaths.h"
 #include "Error.h"
 #include "Image/ImageIO.h"
 
@@ -33,6 +34,8 @@ ImageData fromFile(const GltfDocument& doc, int index, const std::string& uri)
     const std::filesystem::path path = doc.file.parent_path() / percentDecoded(uri);
     if (!std::filesystem::is_regular_file(path))
         throw AssetError(fmt::format("{}: {}: image file '{}' not found", doc.file.string(), pointer, path.string()));
+    if (const std::string outside = outsideSceneFolders(path, doc.file.parent_path()); !outside.empty())
+        throw SceneError(fmt::format("{}: {}: '{}': {}", doc.file.string(), pointer, uri, outside));
     std::ifstream in(path, std::ios::binary);
     const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     try

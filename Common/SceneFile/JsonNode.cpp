@@ -162,8 +162,41 @@ vec3 JsonNode::vector3(float lo, float hi) const
     return {(*this)[std::size_t{0}].number(lo, hi), (*this)[1].number(lo, hi), (*this)[2].number(lo, hi)};
 }
 
+void checkJsonNesting(std::string_view text, const std::string& file)
+{
+    int depth = 0;
+    bool inString = false;
+    for (std::size_t i = 0; i < text.size(); ++i)
+    {
+        const char c = text[i];
+        if (inString)
+        {
+            if (c == '\\')
+                ++i;
+            else if (c == '"')
+                inString = false;
+        }
+        else if (c == '"')
+            inString = true;
+        else if (c == '[' || c == '{')
+        {
+            if (++depth > kMaxJsonNesting)
+            {
+                std::size_t line = 1, column = 1;
+                for (std::size_t k = 0; k < i; ++k)
+                    column = text[k] == '\n' ? (++line, 1) : column + 1;
+                throw SceneError(fmt::format("{}:{}:{}: arrays and objects nested deeper than {} levels", file, line,
+                                             column, kMaxJsonNesting));
+            }
+        }
+        else if (c == ']' || c == '}')
+            --depth;
+    }
+}
+
 nlohmann::json parseJsonText(const std::string& text, const std::string& file)
 {
+    checkJsonNesting(text, file);
     try
     {
         return nlohmann::json::parse(text);

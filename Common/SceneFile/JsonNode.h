@@ -59,6 +59,14 @@ private:
 };
 
 /// Parses `text` (the contents of `file`); a syntax error throws SceneError with the file, line and column.
+/// The deepest nesting of arrays and objects a scene file may have: far beyond any scene, far below what the
+/// parsers' and serialisers' recursion can take on a thread's stack (60,000 levels overflowed it).
+inline constexpr int kMaxJsonNesting = 512;
+
+/// Throws SceneError ("file:line:column: nested deeper than 512 ...") where `text`, JSON, nests arrays and
+/// objects deeper than kMaxJsonNesting, before any parser recurses into it. Brackets inside strings do not count.
+void checkJsonNesting(std::string_view text, const std::string& file);
+
 nlohmann::json parseJsonText(const std::string& text, const std::string& file);
 
 /// A short rendering of a value for error messages: its JSON text, cut to about 40 characters.

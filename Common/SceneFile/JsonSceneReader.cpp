@@ -149,7 +149,11 @@ private:
         }
         for (const auto& p : tried)
             if (std::filesystem::is_regular_file(p))
+            {
+                if (const std::string outside = outsideSceneFolders(p, m_folder); !outside.empty())
+                    node.fail(fmt::format("{} '{}': {}", what, path.string(), outside));
                 return p;
+            }
         std::string places;
         for (const auto& p : tried)
             places += fmt::format("{}{}", places.empty() ? "" : ", ", p.string());
