@@ -43,6 +43,23 @@ Reach reach(const Scene& s)
 }
 } // namespace
 
+void checkFloatReach(const Scene& s, const std::string& source)
+{
+    const Aabb box = s.bounds();
+    if (!(box.min.x <= box.max.x && box.min.y <= box.max.y && box.min.z <= box.max.z))
+        return; // nothing placed
+    const Reach r = reach(s);
+    if (!std::isfinite(r.farthest) || !std::isfinite(r.size) || r.size > kMaxSceneSize || r.size < kMinSceneSize)
+        throw SceneError(fmt::format("{}: the scene as placed is {:g} world units across; float32 renders it right "
+                                     "between {:g} and {:g} (docs/ROBUSTNESS.md)",
+                                     source, r.size, kMinSceneSize, kMaxSceneSize));
+    if (r.farthest > kMaxOffsetToSize * r.size)
+        throw SceneError(fmt::format("{}: the scene as placed (size {:g}) reaches {:g} world units from the origin, "
+                                     "{:.0f} times its size; float32 renders it right up to {:g} times its size "
+                                     "(docs/ROBUSTNESS.md)",
+                                     source, r.size, r.farthest, r.farthest / r.size, kMaxOffsetToSize));
+}
+
 void transformScene(Scene& s, const SceneTransform& t, FloatLimits limits)
 {
     if (!finite(t.translation))

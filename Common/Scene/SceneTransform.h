@@ -4,6 +4,8 @@
 // names, so the headless runs and both windows render the same moved scene.
 #pragma once
 
+#include <string>
+
 #include "Math/Math.h"
 #include "Math/Transform.h"
 
@@ -36,4 +38,10 @@ enum class FloatLimits
     Ignore
 };
 void transformScene(Scene& scene, const SceneTransform& t, FloatLimits limits = FloatLimits::Enforce);
+
+/// The same limits on a scene as built, whatever placed it (a scene file's instance or node transforms): throws
+/// SceneError naming `source` (the file) when its size (bounds diagonal) is outside what float32 renders right,
+/// or its bounds or camera lie farther from the origin than kMaxOffsetToSize times its size. A scene with no
+/// geometry passes.
+void checkFloatReach(const Scene& scene, const std::string& source);
 } // namespace rt

@@ -7,6 +7,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "Error.h"
+#include "Scene/SceneTransform.h"
 #include "SceneFile/GltfImport.h"
 #include "SceneFile/JsonSceneReader.h"
 #include "Scenes/Catalogue.h"
@@ -50,8 +51,9 @@ Scene loadSceneFile(const std::filesystem::path& file)
     if (!std::filesystem::is_regular_file(file))
         throw SceneError(fmt::format("scene file '{}' not found", file.string()));
     const std::string ext = lowerExtension(file.string());
-    if (ext == ".json")
-        return readJsonScene(file);
-    return importGltf(file); // .gltf or .glb: GltfFile tells them apart by their first bytes
+    // .gltf or .glb: GltfFile tells them apart by their first bytes
+    Scene scene = ext == ".json" ? readJsonScene(file) : importGltf(file);
+    checkFloatReach(scene, file.string());
+    return scene;
 }
 } // namespace rt

@@ -144,5 +144,29 @@ TEST(SceneFileBounds, NestingPastTheLimitIsRefusedBeforeAnyParserRecurses)
     EXPECT_EQ(e.find("nested deeper"), std::string::npos) << e;
     EXPECT_NE(e.find("/camera"), std::string::npos) << e;
 }
+TEST(SceneFileBounds, GeometryBeyondFloat32sReachIsRefusedWhateverPlacedIt)
+{
+    // What --scale-scene and --translate-scene refuse, a scene file's own transforms placed silently (a glTF
+    // node scaled by 1e20 rendered black with status 0).
+    const ScratchDir dir;
+    const auto scene = [](const std::string& transform) {
+        return R"({"camera": {"look_from": [0, 1, 5], "look_at": [0, 1, 0], "vfov": 40},
+            "materials": [{"name": "lamp", "type": "diffuse_light", "radiance": [4, 4, 4]}],
+            "groups": [{"name": "g", "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 0.5,
+                                                 "material": "lamp"}]}],
+            "instances": [{"group": "g", "transform": [)" + transform + "]}]}";
+    };
+    EXPECT_NO_THROW(loadSceneFile(dir.write("fine.json", scene(R"({"scale": 1000})"))));
+    std::string e = sceneErrorOf(dir.write("huge.json", scene(R"({"scale": 1e10})")));
+    EXPECT_NE(e.find("huge.json: the scene as placed is 1.73205e+10 world units across"), std::string::npos) << e;
+    e = sceneErrorOf(dir.write("far.json", scene(R"({"translate": [1e6, 0, 0]})")));
+    EXPECT_NE(e.find("far.json: the scene as placed (size"), std::string::npos) << e;
+    EXPECT_NE(e.find("times its size; float32 renders it right up to 32 times"), std::string::npos) << e;
+    GltfWriter w;
+    const int mesh = w.mesh({triangle()});
+    w.scene({w.node({{"mesh", mesh}, {"scale", {1e20, 1e20, 1e20}}})});
+    e = sceneErrorOf(w.writeGltf(dir.path(), "scaled"));
+    EXPECT_NE(e.find("scaled.gltf: the scene as placed is"), std::string::npos) << e;
+}
 } // namespace
 } // namespace rt::test
