@@ -41,15 +41,19 @@ auto located(const JsonNode& n, F&& load)
 }
 
 /// Names to indices for one kind of entry (textures, materials, meshes, groups); a reference is a name or
-/// an index. A name given twice is refused only where it is used (an exported catalogue scene has several
-/// groups named after one mesh, and refers to them by index).
+/// an index, which counts from 0 in the file's list (docs/SCENES.md), whatever index the scene gave the entry
+/// (a group's is shifted by the "world" group that top-level shapes make). A name given twice is refused only
+/// where it is used (an exported catalogue scene has several groups named after one mesh, and refers to them by
+/// index).
 class NameTable
 {
 public:
     explicit NameTable(const char* what) : m_what(what) {}
 
+    /// Records the file's next entry, `index` in the scene.
     void add(const JsonNode& entry, std::uint32_t index)
     {
+        m_order.push_back(index);
         if (!entry.has("name"))
             return;
         const auto [it, added] = m_indices.emplace(entry["name"].string(), index);
@@ -57,7 +61,8 @@ public:
             it->second = kAmbiguous;
     }
 
-    std::uint32_t resolve(const JsonNode& ref, std::size_t count) const
+    /// The scene's index of the entry `ref` names, among those added so far.
+    std::uint32_t resolve(const JsonNode& ref) const
     {
         if (ref.value().is_string())
         {
@@ -68,14 +73,15 @@ public:
                 ref.fail(fmt::format("more than one {} is named '{}': refer to it by its index", m_what, ref.string()));
             return it->second;
         }
-        if (count == 0)
+        if (m_order.empty())
             ref.fail(fmt::format("the scene defines no {} to refer to", m_what));
-        return static_cast<std::uint32_t>(ref.integer(0, static_cast<std::int64_t>(count) - 1));
+        return m_order[static_cast<std::size_t>(ref.integer(0, static_cast<std::int64_t>(m_order.size()) - 1))];
     }
 
 private:
     static constexpr std::uint32_t kAmbiguous = kNoIndex;
     const char* m_what;
+    std::vector<std::uint32_t> m_order; // the scene's index of each entry, in the file's order
     std::unordered_map<std::string, std::uint32_t> m_indices;
 };
 
@@ -292,7 +298,7 @@ private:
         if (m.has(key) && m.has(textureKey))
             m.fail(fmt::format("give '{}' or '{}', not both", key, textureKey));
         if (m.has(textureKey))
-            return m_textureNames.resolve(m[textureKey], scene().textures.size());
+            return m_textureNames.resolve(m[textureKey]);
         return m_builder.solid(m[key].vector3(0.0f, maxValue));
     }
 
@@ -395,8 +401,7 @@ private:
             else
                 mat.alphaX = mat.alphaY = 1.0f; // glTF's default roughnessFactor 1
             mat.metallicRoughnessTexture = m.has("metallic_roughness_texture")
-                                               ? m_textureNames.resolve(m["metallic_roughness_texture"],
-                                                                        scene().textures.size())
+                                               ? m_textureNames.resolve(m["metallic_roughness_texture"])
                                                : kNoIndex;
             mat.ior = m.has("ior") ? m["ior"].number(1.0f, kMaxIor) : 1.5f;
         }
@@ -404,7 +409,7 @@ private:
         scene().materials.push_back(mat);
     }
 
-    std::uint32_t materialRef(const JsonNode& n) { return m_materialNames.resolve(n, scene().materials.size()); }
+    std::uint32_t materialRef(const JsonNode& n) { return m_materialNames.resolve(n); }
 
     void readMesh(const JsonNode& m)
     {
@@ -445,7 +450,7 @@ private:
     void readInstance(const JsonNode& i)
     {
         i.allowOnly({"group", "transform"});
-        const std::uint32_t group = m_groupNames.resolve(i["group"], scene().groups.size());
+        const std::uint32_t group = m_groupNames.resolve(i["group"]);
         const Transform t = i.has("transform") ? readTransform(i["transform"]) : Transform::identity();
         const GroupDesc& g = scene().groups[group];
         if (!g.spheres.empty() && !t.uniformScale())
@@ -531,7 +536,7 @@ void Reader::readShapes(const JsonNode& shapes, std::uint32_t group)
         }
         case 5:
             s.allowOnly({"type", "mesh", "material"});
-            m_builder.mesh(group, m_meshNames.resolve(s["mesh"], scene().meshes.size()), materialRef(s["material"]));
+            m_builder.mesh(group, m_meshNames.resolve(s["mesh"]), materialRef(s["material"]));
             break;
         default:
             readMedium(s, group);

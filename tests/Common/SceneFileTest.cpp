@@ -78,6 +78,25 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 }
 
 std::string smallSceneWith(const std::string& from, const std::string& to) { return replaced(kSmallScene, from, to); }
+TEST(JsonSceneReader, AnIndexCountsInTheFilesListAsTheSameReferenceByName)
+{
+    // Top-level shapes make the scene's "world" group first, so the file's groups are the scene's 1 and 2: the
+    // index 1 took the scene's group 1 (the file's group 0) while the name "b" took the file's group 1.
+    const std::string doc = R"({"materials": [{"name": "lamp", "type": "diffuse_light", "radiance": [4, 4, 4]}],
+        "shapes": [{"type": "sphere", "center": [0, 5, 0], "radius": 1, "material": 0}],
+        "groups": [{"name": "a", "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": 0}]},
+                   {"name": "b", "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 2, "material": 0}]}],
+        "instances": [{"group": 1}, {"group": "b"}, {"group": 0}, {"group": "a"}]})";
+    const Scene s = readText(doc);
+    ASSERT_GE(s.instances.size(), 4u);
+    const auto groupOf = [&s](std::size_t k) { return s.instances[s.instances.size() - 4 + k].group; };
+    EXPECT_EQ(groupOf(0), groupOf(1));
+    EXPECT_EQ(groupOf(2), groupOf(3));
+    EXPECT_NE(groupOf(0), groupOf(2));
+    EXPECT_EQ(s.groups[groupOf(1)].name, "b");
+    const std::string e = errorOf(replaced(doc, R"({"group": 0}, {"group": "a"})", R"({"group": 2})"));
+    EXPECT_NE(e.find("/instances/2/group"), std::string::npos) << "the file has two groups: " << e;
+}
 } // namespace
 
 TEST(SceneFile, ReadsEveryPartOfTheSmallScene)
