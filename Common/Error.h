@@ -4,9 +4,33 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace rt
 {
+/// `text` as one line safe for a terminal: control characters (a scene file's or a flag's raw bytes, which a
+/// message may quote) written as \xNN, so that no input can move the cursor, clear the screen or split the
+/// line. Bytes of 0x80 and above (UTF-8) are kept.
+inline std::string printableLine(std::string_view text)
+{
+    static constexpr char kHex[] = "0123456789abcdef";
+    std::string out;
+    out.reserve(text.size());
+    for (const char c : text)
+    {
+        const auto byte = static_cast<unsigned char>(c);
+        if (byte < 0x20 || byte == 0x7f)
+        {
+            out += "\\x";
+            out += kHex[byte >> 4];
+            out += kHex[byte & 15];
+        }
+        else
+            out += c;
+    }
+    return out;
+}
+
 class Error : public std::runtime_error
 {
 public:

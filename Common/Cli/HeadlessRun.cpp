@@ -326,7 +326,7 @@ int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>
                 cluster::SplitRender::endAfterError(job, message, exitCode))
             return cluster::endFailedJob(job, *verdict);
         std::fprintf(stderr, "error: %s%s\n", job.distributed() ? (job.name(job.rank()) + ": ").c_str() : "",
-                     message.c_str());
+                     printableLine(message).c_str());
         return exitCode;
     };
     // A flag of one value given twice is refused (which one was meant?), in words rather than CLI11's "At Most 1
@@ -353,6 +353,14 @@ int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>
     catch (const CLI::CallForVersion& e)
     {
         return app.exit(e);
+    }
+    catch (const CLI::ExtrasError&)
+    {
+        // CLI11 lists them last first ("32 -w"): in the order given.
+        std::string given;
+        for (const std::string& extra : app.remaining())
+            given += (given.empty() ? "" : " ") + extra;
+        return fail(fmt::format("not a flag of this app, or a value no flag takes: '{}' (see --help)", given), 2);
     }
     catch (const CLI::ParseError& e)
     {

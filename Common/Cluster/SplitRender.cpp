@@ -210,7 +210,7 @@ Verdict SplitRender::end(const PartEnd& mine)
 int endFailedJob(Job& job, const Verdict& verdict)
 {
     if (job.root())
-        std::fprintf(stderr, "error: %s\n", verdict.message.c_str());
+        std::fprintf(stderr, "error: %s\n", printableLine(verdict.message).c_str());
     if (verdict.silentRank)
         job.abandon(verdict.exitCode);
     if (job.abandonedSends())

@@ -24,6 +24,18 @@ namespace
 constexpr std::string_view kReadExtensions[] = {"KHR_materials_emissive_strength", "KHR_materials_transmission",
                                                 "KHR_materials_ior", "KHR_mesh_quantization"};
 
+/// glTF 2.0 §3.12: a file that requires an extension must not be loaded by an importer that does not read it.
+void refuseUnreadRequired(const GltfDocument& doc)
+{
+    const std::vector<std::string>& required = doc.model.extensionsRequired;
+    for (std::size_t i = 0; i < required.size(); ++i)
+        if (std::find(std::begin(kReadExtensions), std::end(kReadExtensions), required[i]) == std::end(kReadExtensions))
+            doc.fail(fmt::format("/extensionsRequired/{}", i),
+                     fmt::format("the file requires {}, which this importer does not read (glTF 2.0 section 3.12: "
+                                 "such a file must not be loaded)",
+                                 required[i]));
+}
+
 void noteFileWide(const tinygltf::Model& m, GltfNotes& notes)
 {
     if (!m.animations.empty())
@@ -52,6 +64,7 @@ GltfImport readGltf(const std::filesystem::path& file)
     const auto start = std::chrono::steady_clock::now();
     GltfNotes notes;
     const GltfDocument doc = loadGltfFile(file, notes);
+    refuseUnreadRequired(doc);
     const std::vector<GltfPlacedNode> nodes = gltfSceneNodes(doc);
 
     SceneBuilder builder(file.string());

@@ -162,7 +162,14 @@ private:
             }
         std::string places;
         for (const auto& p : tried)
+        {
+            std::error_code ec;
+            if (std::filesystem::exists(p, ec))
+                node.fail(fmt::format("{} '{}': '{}' is {}", what, path.string(), p.string(),
+                                      std::filesystem::is_directory(p, ec) ? "a folder, not a file"
+                                                                           : "not a regular file"));
             places += fmt::format("{}{}", places.empty() ? "" : ", ", p.string());
+        }
         node.fail(fmt::format("{} '{}' not found (looked in: {})", what, path.string(), places));
     }
 

@@ -38,9 +38,15 @@ std::string sceneShortName(std::string_view idOrPath)
 std::string sceneProblem(std::string_view idOrPath)
 {
     if (isSceneFilePath(idOrPath))
-        return std::filesystem::is_regular_file(std::filesystem::path(idOrPath))
-                   ? std::string()
-                   : fmt::format("scene file '{}' not found", idOrPath);
+    {
+        const std::filesystem::path file(idOrPath);
+        std::error_code ec;
+        if (std::filesystem::is_regular_file(file, ec))
+            return {};
+        return std::filesystem::is_directory(file, ec) ? fmt::format("scene file '{}' is a folder, not a file", idOrPath)
+               : std::filesystem::exists(file, ec)     ? fmt::format("scene file '{}' is not a regular file", idOrPath)
+                                                       : fmt::format("scene file '{}' not found", idOrPath);
+    }
     return findScene(std::string(idOrPath)) != nullptr
                ? std::string()
                : fmt::format("unknown scene '{}' (--list-scenes lists them)", idOrPath);
@@ -48,6 +54,11 @@ std::string sceneProblem(std::string_view idOrPath)
 
 Scene loadSceneFile(const std::filesystem::path& file)
 {
+    std::error_code ec;
+    if (std::filesystem::is_directory(file, ec))
+        throw SceneError(fmt::format("scene file '{}' is a folder, not a file", file.string()));
+    if (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))
+        throw SceneError(fmt::format("scene file '{}' is not a regular file", file.string()));
     if (!std::filesystem::is_regular_file(file))
         throw SceneError(fmt::format("scene file '{}' not found", file.string()));
     const std::string ext = lowerExtension(file.string());

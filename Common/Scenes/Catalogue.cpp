@@ -1,6 +1,7 @@
 #include "Scenes/Catalogue.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <vector>
 
 #include <spdlog/fmt/fmt.h>
@@ -139,9 +140,16 @@ Scene makeScene(const std::string& id, const SceneOptions& options)
                 nearest = &s;
                 best = d;
             }
-        const std::string suggestion = nearest && 3 * best <= nearest->id.size()
-                                           ? fmt::format(": did you mean '{}'?", nearest->id)
-                                           : std::string();
+        std::string suggestion = nearest && 3 * best <= nearest->id.size()
+                                     ? fmt::format(": did you mean '{}'?", nearest->id)
+                                     : std::string();
+        // A path that names something else than a scene file says what it names.
+        std::error_code ec;
+        if (std::filesystem::is_directory(id, ec))
+            suggestion = ": it is a folder, not a scene file";
+        else if (std::filesystem::exists(id, ec))
+            suggestion = std::filesystem::is_regular_file(id, ec) ? ": it is a file without a scene file's extension"
+                                                                  : ": it is not a regular file";
         throw SceneError(fmt::format("unknown scene '{}'{} (known: {}; or a scene file: .json, .gltf, .glb)", id,
                                      suggestion, known));
     }

@@ -186,6 +186,25 @@ expect_error "glTF: malformed JSON" "malformed.gltf: not a valid glTF 2.0 JSON f
 expect_error "glTF: missing buffer file" "missing-bin.gltf: buffer file '.*gone.bin' not found" --scene "$work/missing-bin.gltf"
 expect_error "glTF: accessor overrunning its data" "overrun.gltf: /accessors/0: 4 elements of 12 bytes" --scene "$work/overrun.gltf"
 expect_error "glTF: accessor index out of range" "POSITION: accessor 7 does not exist" --scene "$work/no-accessor.gltf"
+# Issue 41: a required extension the importer does not read refuses the file (glTF 2.0 section 3.12); a buffer
+# outside the scene's folder, a buffer that is a folder, and nesting past 512 levels are refused; a folder or a
+# device given as the scene says so; control characters of the input reach the terminal escaped.
+gltf_file required "\"extensionsRequired\": [\"EXT_unknown_thing\"], $(triangle "$vertices" 3 0)"
+mkdir -p "$work/inner"
+gltf_file inner/outside "$(triangle ../../../../../../../../etc/passwd 3 0)"
+gltf_file dot "$(triangle . 3 0)"
+python3 -c 'import sys; sys.stdout.write("{\"asset\": {\"version\": \"2.0\"}, \"extras\": " + "[" * 30000 + "]" * 30000 + "}")' \
+    >"$work/deep.gltf"
+expect_error "glTF: a required extension not read" "requires EXT_unknown_thing, which this importer does not read" \
+    --scene "$work/required.gltf"
+expect_error "glTF: a buffer outside the scene's folder" "/etc/passwd' lies outside the scene's folder" \
+    --scene "$work/inner/outside.gltf"
+expect_error "glTF: a buffer that is a folder" "is not a regular file" --scene "$work/dot.gltf"
+expect_error "glTF: nested 30,000 deep" "nested deeper than 512 levels" --scene "$work/deep.gltf"
+expect_error "a folder as the scene" "it is a folder, not a scene file" --scene "$work/inner"
+expect_error "a device as the scene" "it is not a regular file" --scene /dev/null
+expect_error "control characters escaped" "unknown scene 'a\\\\x1b\[2Jb'" --scene "$(printf 'a\033[2Jb')"
+expect_error "extra arguments in the order given" "'-w 32'" -w 32
 printf 'glTF\002\000\000\000' >"$work/cut.glb"
 expect_error "glTF: a cut .glb" "cut.glb: not a valid glTF 2.0 binary file" --scene "$work/cut.glb"
 # The cases above are broken only where they say: unbroken, the triangle renders.
