@@ -181,6 +181,17 @@ Image readPfm(const std::filesystem::path& path)
     in.get(); // the single whitespace character before the data
     if (magic != "PF" || width <= 0 || height <= 0 || scale == 0.0f)
         throw AssetError(fmt::format("'{}' is not an RGB PFM file", path.string()));
+    // The pixels the header claims must be in the file before they are allocated: a corrupt header of 99999 x
+    // 99999 was "out of memory" instead of the broken file it is.
+    const std::streamoff start = in.tellg();
+    in.seekg(0, std::ios::end);
+    const std::streamoff end = in.tellg();
+    in.seekg(start);
+    const std::uint64_t needed = std::uint64_t(width) * std::uint64_t(height) * sizeof(vec3);
+    if (start < 0 || end < start || std::uint64_t(end - start) < needed)
+        throw AssetError(fmt::format("'{}' is truncated: its header says {}x{} pixels ({} bytes), the file holds {} "
+                                     "bytes of pixels",
+                                     path.string(), width, height, needed, start < 0 || end < start ? 0 : end - start));
     Image image(width, height);
     const bool bigEndian = scale > 0.0f;
     for (int y = height - 1; y >= 0; --y)
