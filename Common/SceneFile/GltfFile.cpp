@@ -12,6 +12,7 @@
 
 #include "Assets/AssetPaths.h"
 #include "Error.h"
+#include "SceneFile/GltfTypes.h"
 #include "SceneFile/JsonNode.h"
 
 namespace rt
@@ -139,6 +140,7 @@ GltfDocument loadGltfFile(const std::filesystem::path& file, GltfNotes& notes)
         json = json.substr(std::min<std::size_t>(20, bytes.size()), length);
     }
     checkJsonNesting(json, file.string());
+    checkGltfTypes(json, file);
 
     MissingFiles missing{.folder = file.parent_path()};
     tinygltf::TinyGLTF loader;

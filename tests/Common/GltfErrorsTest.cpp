@@ -3,6 +3,7 @@
 // files, which must be refused with an rt::Error and never crash.
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <random>
 
@@ -140,6 +141,37 @@ TEST(GltfErrors, MissingBufferFileIsAnAssetError)
     EXPECT_NE(e.find("lost.gltf: buffer file"), std::string::npos) << e;
     EXPECT_NE(e.find("lost.bin"), std::string::npos) << e;
     EXPECT_EQ(e.find('\n'), std::string::npos) << "one line";
+}
+
+TEST(GltfErrors, APropertyOfTheWrongTypeIsRefusedNotReadPast)
+{
+    // tinygltf left each at its default without a word: the file rendered something else than it says.
+    ScratchDir dir;
+    const auto fileWith = [&dir](const char* name, const std::function<void(nlohmann::json&)>& edit) {
+        GltfWriter w;
+        const int mat = w.material({{"pbrMetallicRoughness", {{"baseColorFactor", {1, 0, 0, 1}}}}});
+        oneTriangle(dir, mat, w, name);
+        edit(w.json());
+        return w.writeGltf(dir.path(), name);
+    };
+    const auto errorWith = [&fileWith](const char* name, const std::function<void(nlohmann::json&)>& edit) {
+        return errorOf(fileWith(name, edit));
+    };
+    std::string e = errorWith("pbr", [](nlohmann::json& j) { j["materials"][0]["pbrMetallicRoughness"] = {1, 2}; });
+    EXPECT_NE(e.find("pbr.gltf: /materials/0/pbrMetallicRoughness: expected an object, got an array of 2"),
+              std::string::npos) << e;
+    e = errorWith("factor", [](nlohmann::json& j) { j["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = "red"; });
+    EXPECT_NE(e.find("/materials/0/pbrMetallicRoughness/baseColorFactor: expected an array of numbers of length 4"),
+              std::string::npos) << e;
+    e = errorWith("scale", [](nlohmann::json& j) { j["nodes"][0]["scale"] = {2, 2}; });
+    EXPECT_NE(e.find("/nodes/0/scale: expected an array of numbers of length 3, got an array of 2"), std::string::npos)
+        << e;
+    e = errorWith("index", [](nlohmann::json& j) { j["meshes"][0]["primitives"][0]["material"] = 0.5; });
+    EXPECT_NE(e.find("/meshes/0/primitives/0/material: expected an integer, got 0.5"), std::string::npos) << e;
+    e = errorWith("nodes", [](nlohmann::json& j) { j["nodes"] = nlohmann::json::object(); });
+    EXPECT_NE(e.find("nodes.gltf: /nodes: expected an array, got an object"), std::string::npos) << e;
+    // Unchanged, the same file imports.
+    EXPECT_NO_THROW(readGltf(fileWith("fine", [](nlohmann::json&) {})));
 }
 
 TEST(GltfErrors, NoTrianglesToRender)
