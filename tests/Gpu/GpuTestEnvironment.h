@@ -1,6 +1,7 @@
 // One GPU engine per test process, with validation on: creating a device and compiling the ray-tracing
 // pipeline costs seconds on lavapipe, so every device test shares it (one device per process anyway:
-// Vulkan/Device.h). Tests call RT_REQUIRE_GPU() first: it skips, with the reason, when no device fits.
+// Vulkan/Device.h). Tests call RT_REQUIRE_GPU() first: it skips, with the reason, when no device fits (fails
+// under CI=true: Support/SkipOrFail.h).
 #pragma once
 
 #include <optional>
@@ -12,6 +13,7 @@
 #include "Image/Image.h"
 #include "Support/PixelStatistics.h"
 #include "Support/RenderWithSettings.h"
+#include "Support/SkipOrFail.h"
 
 namespace rt::gpu::test
 {
@@ -57,6 +59,6 @@ using ::rt::test::renderWithSettings;
     {                                                                                                          \
         if (!::rt::gpu::test::sharedEngine())                                                                  \
         {                                                                                                      \
-            GTEST_SKIP() << "no usable Vulkan ray-tracing device: " << ::rt::gpu::test::engineError();         \
+            RT_SKIP_OR_FAIL("no usable Vulkan ray-tracing device: " << ::rt::gpu::test::engineError());       \
         }                                                                                                      \
     } while (false)

@@ -24,6 +24,7 @@
 #include "Image/ImageIO.h"
 #include "Support/AppProcess.h"
 #include "Support/ScratchDir.h"
+#include "Support/SkipOrFail.h"
 
 namespace rt::gpu::gui::test
 {
@@ -68,7 +69,7 @@ std::string unavailable(const AppRun& run)
 #define RT_RUN_WINDOW(run, arguments)                                                                          \
     const AppRun run = runApp(arguments);                                                                      \
     if (const std::string why = unavailable(run); !why.empty())                                                \
-        GTEST_SKIP() << "no display-capable Vulkan device: " << why;                                           \
+        RT_SKIP_OR_FAIL("no display-capable Vulkan device: " << why);                                          \
     ASSERT_EQ(run.status, 0) << run.output;                                                                    \
     EXPECT_EQ(run.output.find("Vulkan validation"), std::string::npos) << run.output
 
@@ -270,7 +271,7 @@ TEST(GpuWindow, SavingWithNothingToSaveSaysWhyAndWritesNothing)
     // must not ask to turn it on.
     const AppRun early = runApp(std::string(kWindow) + "--scene rtow-camera-test --frames 1 --actions 'save=" + png + "'");
     if (const std::string why = unavailable(early); !why.empty())
-        GTEST_SKIP() << "no display-capable Vulkan device: " << why;
+        RT_SKIP_OR_FAIL("no display-capable Vulkan device: " << why);
     EXPECT_NE(early.status, 0);
     EXPECT_NE(early.output.find("no frame rendered yet"), std::string::npos) << early.output;
     EXPECT_EQ(early.output.find("turn ray tracing on"), std::string::npos) << early.output;
@@ -466,7 +467,7 @@ TEST(GpuWindow, ReloadsTheSceneFileWhenItChangesOnDisk)
                               ";sleep=4;frames=3;save=" + second.string() + ";fresnel=exact;frames=2'");
     editor.join();
     if (const std::string why = unavailable(run); !why.empty())
-        GTEST_SKIP() << "no display-capable Vulkan device: " << why;
+        RT_SKIP_OR_FAIL("no display-capable Vulkan device: " << why);
     ASSERT_EQ(run.status, 0) << run.output;
     EXPECT_EQ(run.output.find("Vulkan validation"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("lamp.json changed on disk: reloading it"), std::string::npos) << run.output;
