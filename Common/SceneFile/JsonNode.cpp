@@ -224,6 +224,16 @@ nlohmann::json parseJsonText(const std::string& text, const std::string& file)
             what = what.substr(colon + 2);
         throw SceneError(fmt::format("{}:{}:{}: {}", file, line, column, what));
     }
+    catch (const nlohmann::json::exception& e)
+    {
+        // A number beyond a double ("number overflow parsing '6666...'", out_of_range.406) is no parse_error.
+        std::string what = e.what();
+        if (const auto bracket = what.find("] "); bracket != std::string::npos)
+            what = what.substr(bracket + 2);
+        if (what.size() > 120)
+            what = what.substr(0, 117) + "...";
+        throw SceneError(fmt::format("{}: {}", file, what));
+    }
 }
 
 std::string describeJson(const nlohmann::json& value)
