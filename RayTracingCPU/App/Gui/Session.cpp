@@ -8,6 +8,7 @@
 #include "Cli/ActionGrammar.h"
 #include "Error.h"
 #include "Image/ImageIO.h"
+#include "Render/MemoryBudget.h"
 #include "SceneFile/SceneFile.h"
 
 namespace rt::gui
@@ -125,6 +126,24 @@ bool Session::setSetting(const Setting& setting, std::string_view value)
 
 bool Session::setCount(int count)
 {
+    // As --count: at least 1 (-1 for the scene's own), and refused up front where the scene would not fit.
+    if (count == 0)
+    {
+        note("count must be at least 1 (-1: the scene's own)", true);
+        return false;
+    }
+    if (count > 0)
+    {
+        try
+        {
+            checkMemory(renderBytes(0, std::uint64_t(count)), fmt::format("count={}", count), availableMemoryBytes());
+        }
+        catch (const Error& e)
+        {
+            note(e.what(), true);
+            return false;
+        }
+    }
     RenderRequest s = m_image;
     s.scene.options.count = count < 0 ? -1 : count;
     return tryImage(s);

@@ -4,6 +4,7 @@
 
 #include <spdlog/fmt/fmt.h>
 
+#include "App/Gui/CameraController.h"
 #include "Cli/ValueParsing.h"
 #include "Error.h"
 #include "Scenes/Catalogue.h"
@@ -65,7 +66,8 @@ const std::vector<ActionSpec>& specs()
                  return v == "auto" || (ticks && std::isfinite(*ticks) && *ticks >= 1.0f);
              }},
             {"samples", ActionValue::Integer, "N", "samples per pixel per frame", 1, double(kMaxSamplesPerFrame)},
-            {"fov", ActionValue::Real, "DEGREES", "vertical field of view", 0},
+            {"fov", ActionValue::Real, "DEGREES",
+             fmt::format("vertical field of view, {:g} to {:g} (the panel's range)", kMinFov, kMaxFov), kMinFov, kMaxFov},
             {"aperture", ActionValue::Real, "UNITS", "lens diameter (0: pinhole)", 0},
             {"focus", ActionValue::Real, "UNITS", "focus distance", 1e-4},
             {"camera", ActionValue::Text, "MOVE:AMOUNT|reset",

@@ -41,7 +41,7 @@ TEST(WindowActions, ParseSplitsAtSemicolonsAndSkipsBlanks)
 TEST(WindowActions, BadNamesAndValuesAreUsageErrorsNamingThem)
 {
     for (const char* bad : {"depth=0", "depth=x", "bogus=1", "heatmap=yes", "resize=10", "resize=-1x5",
-                            "camera=sideways:1", "camera=forward", "fov=abc", "theme=pink", "nothing", "scene=", "scene=no-such-scene",
+                            "camera=sideways:1", "camera=forward", "fov=abc", "fov=0", "fov=170", "theme=pink", "nothing", "scene=", "scene=no-such-scene",
                             "samples=1000", "font-size=1.5", "save=x.jpg"})
     {
         try
