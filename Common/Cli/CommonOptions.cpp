@@ -216,6 +216,12 @@ CommandLineRender resolveCommandLine(const CommonOptions& options)
         spdlog::warn("--roughness-scale is ignored: scene {} has no microfacet material", r.scene.id);
     r.request = resolveRequest(options, r.scene);
     const RenderSettings& s = r.request.settings;
+    // The BSDF-only estimator picks no light: a light sampler or selection given for it changes nothing.
+    if (s.estimator == Estimator::BsdfOnly)
+        for (const char* setting : {"light-sampler", "light-selection"})
+            if (options.given(setting))
+                spdlog::warn("--{} is ignored: estimator bsdf samples no light (nee, nee-mis, mixture and restir-di do)",
+                             setting);
     const std::uint64_t pixels = std::uint64_t(s.width) * std::uint64_t(s.height());
     const std::uint64_t restirPixels = s.estimator == Estimator::RestirDi ? pixels * (kRestirBytesPerPixel / kRenderBytesPerPixel) : 0;
     checkMemory(renderBytes(pixels + restirPixels, r.scene.primitiveCount() + r.scene.lights.size()),

@@ -123,6 +123,13 @@ int runComparison(const Scene& scene, const RenderRequest& base, const CompareOp
         gridImages.emplace("ray-tracing-ladder");
     ImageFolder images(!job.root() ? std::filesystem::path() : gridImages ? gridImages->path() : options.images,
                        scene.id, base.settings.width, base.settings.height());
+    // relMSE is a mean over pixels whose squared errors are heavy-tailed (a firefly counts its square): over a
+    // few thousand pixels a handful decide it, and rows differ by which ones they caught.
+    constexpr int kFewPixels = 64 * 64;
+    if (job.root() && base.settings.width * base.settings.height() < kFewPixels)
+        spdlog::warn("a {}x{} comparison: its errors rest on {} pixels, where a few of the worst decide them; 64x64 or "
+                     "more (or --metric trimmed-relmse) measures steadier",
+                     base.settings.width, base.settings.height(), base.settings.width * base.settings.height());
     // One engine of each kind, its acceleration structures built once.
     std::vector<EngineUnderTest> engines;
     for (const EngineKind kind : options.engines)

@@ -15,6 +15,11 @@ file "$work/a.png" | grep -q "PNG image data, 24 x 24"
 [ "$(wc -l <"$work/out.txt")" -eq 1 ] || { echo "stdout is not the summary alone:"; cat "$work/out.txt"; exit 1; }
 grep -q "^info: settings" "$work/err.txt" || { echo "no log line on stderr"; exit 1; }
 head -c 2 "$work/a.pfm" | grep -q "PF"
+# A setting the estimator does not use is named as ignored (issue 41), as --count is for a scene without one.
+"$app" --headless --scene rtrol-cornell-box --width 8 --spp 1 --depth 2 --estimator bsdf --light-sampler area \
+    >/dev/null 2>"$work/err.txt"
+grep -q "warning: --light-sampler is ignored: estimator bsdf samples no light" "$work/err.txt" ||
+    { cat "$work/err.txt"; echo "--light-sampler with the bsdf estimator not named as ignored"; exit 1; }
 for key in scene engine settings true_spp wall_seconds build_seconds mpaths_per_second nan_samples inf_samples; do
     grep -q "\"$key\"" "$work/a.json" || { echo "stats.json lacks $key"; exit 1; }
 done
