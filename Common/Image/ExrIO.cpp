@@ -176,6 +176,8 @@ Image readExr(const std::filesystem::path& path)
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec))
         throw AssetError(fmt::format("cannot open '{}': it is a folder", name));
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+        throw AssetError(fmt::format("cannot open '{}': it is not a regular file", name)); // a pipe would block
     errno = 0;
     std::ifstream in(path, std::ios::binary);
     if (!in)

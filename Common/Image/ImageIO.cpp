@@ -171,6 +171,10 @@ Image readLinearImage(const std::filesystem::path& path)
 
 Image readPfm(const std::filesystem::path& path)
 {
+    // Not a pipe, a device or a folder: opening a pipe waits for a writer that may never come.
+    std::error_code ec;
+    if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+        throw AssetError(fmt::format("cannot open '{}': it is not a regular file", path.string()));
     std::ifstream in(path, std::ios::binary);
     if (!in)
         throw AssetError(fmt::format("cannot open '{}'", path.string()));

@@ -198,6 +198,12 @@ values = [0.5] * (16 * 16 * 3)
 values[100] = float("nan")
 sys.stdout.buffer.write(b"PF\n16 16\n-1.0\n" + struct.pack("<%df" % len(values), *values))' >"$work/nan.pfm"
 bad --compare --scene cornell-box-lights --width 16 --spp-list 4 --reference "$work/nan.pfm"
+# A pipe as the reference: refused, not waited on (opening a pipe blocks until a writer comes).
+mkfifo "$work/x-pipe.pfm"
+out=$(timeout 20 "$app" --compare --scene cornell-box-lights --width 16 --spp-list 4 --reference "$work/x-pipe.pfm" 2>&1) &&
+    fail "a pipe as the reference was accepted"
+grep -q "not a regular file" <<<"$out" || fail "a pipe as the reference: $out"
+rm "$work/x-pipe.pfm"
 bad --scene cornell-box-lights --headless --csv "$work/x.csv"
 touch "$work/x-file"
 bad --compare --scene cornell-box-lights --equal-time 100 --images "$work/x-file"
