@@ -424,16 +424,26 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     // restir-di runs its own passes (RestirPipeline), whatever the integrator setting.
     e.integrator = restirDi ? GpuIntegrator::Megakernel
                             : e.tracer.integratorFor(e.uniforms, std::uint64_t(width) * height * settings.trueSpp());
-    e.tracer.prepare(e.uniforms, e.integrator); // the compilation stays out of the render's time
-    e.frameStages["pipeline_host"] =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - compileStart).count();
+    const bool compiled = e.tracer.prepare(e.uniforms, e.integrator); // out of the render's time
     e.target->reset(e.uniforms);
     e.clear();
+    e.waveSegments = kFirstWaveSegments;
+    if (compiled && !restirDi)
+    {
+        // A driver may finish a new pipeline's compilation at its first launch (lavapipe: a 16-px render took
+        // 1.6 s at first use against 0.009 s cached): one row of one sample keeps that in the compilation's time
+        // too. Its sums and counters are cleared again below; its stage times are dropped.
+        e.dispatch(0, 1, 0, 1, 1, false);
+        e.frameStages.clear();
+        e.target->reset(e.uniforms);
+        e.clear();
+    }
+    e.frameStages["pipeline_host"] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - compileStart).count();
     // The first band: the frame's first sample, but at most a sixteenth of the engine's paths per batch (a CPU
     // device's 64 K are a fraction of a second; a GPU's 268 M bind only above 16 M pixels).
     const std::uint64_t firstBandRows = e.pathsPerBatch / (std::uint64_t(shader::kBandInterleave) * width);
     e.bands = BandPlan(height, static_cast<std::uint32_t>(std::clamp<std::uint64_t>(firstBandRows, 1, height)));
-    e.waveSegments = kFirstWaveSegments;
 }
 
 BatchResult GpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control)
