@@ -289,9 +289,8 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& a
         if (!file.empty())
             written += (written.empty() ? ", wrote " : ", ") + file;
     const std::string ranks = job.distributed() ? fmt::format(" on {} ranks", job.size()) : std::string();
-    // The GPU's pipeline creation (on a driver's first use of them, seconds on lavapipe; then from its cache) is
-    // named apart from the render's time. lavapipe still compiles part of a new pipeline at its first dispatch,
-    // inside the render's time (1.6 s against 0.009 s cached for a 16-px render).
+    // The GPU's pipeline creation and a first launch of each new one, where a driver may finish compiling (on
+    // its first use of them, seconds on lavapipe; then from its cache), are named apart from the render's time.
     std::string setup = fmt::format("{:.3f} s", s.buildSeconds);
     if (const auto compile = s.stageSeconds.find("pipeline_host"); compile != s.stageSeconds.end())
         setup += fmt::format(", pipelines {:.3f} s", compile->second);
