@@ -7,6 +7,8 @@
 #                       timing table. About 8 minutes on a bare 2-core machine, installs included.
 #   ./build.sh test     ... then the test suite (everything but the label "heavy")
 #   ./build.sh heavy    ... then the heavy suites only
+#   ./build.sh fuzz     installs clang and libFuzzer, then fuzzes every reader of outside input for FUZZ_SECONDS
+#                       (default 600) each in a build of its own, build-fuzz/ (tests/Fuzz/run.sh; label fuzz)
 #
 # Environment: BUILD_DIR (default build), BUILD_TYPE (default Release), JOBS (default: number of cores),
 # RT_SKIP_APT=1 to never call apt-get.
@@ -32,6 +34,7 @@ test_packages=(
     python3-openimageio
 )
 backports_packages=(mesa-vulkan-drivers)
+fuzz_packages=(clang libclang-rt-14-dev)
 
 as_root() {
     if [ "$(id -u)" -eq 0 ]; then "$@"; elif command -v sudo >/dev/null; then sudo "$@"; else
@@ -118,6 +121,7 @@ run) install_dependencies "${app_packages[@]}" && build ray-tracing-cpu ray-trac
 build | test | heavy) install_dependencies "${app_packages[@]}" "${test_packages[@]}" && build ;;&
 test) run_tests -LE heavy ;;
 heavy) run_tests -L heavy ;;
+fuzz) install_dependencies "${app_packages[@]}" "${fuzz_packages[@]}" && tests/Fuzz/run.sh "${FUZZ_SECONDS:-600}" ;;
 build) ;;
-*) echo "usage: $0 [build|run|test|heavy]" >&2; exit 2 ;;
+*) echo "usage: $0 [build|run|test|heavy|fuzz]" >&2; exit 2 ;;
 esac

@@ -7,6 +7,8 @@
 # tests/Fuzz/regressions/<target>/, which the default suite replays (fuzz.replay.<target>). Each run's final
 # coverage line ("cov: ... ft: ... corp: ...") is in BUILD_DIR/Testing/Temporary/LastTest.log.
 set -eu
+command -v clang++ >/dev/null ||
+    { echo "tests/Fuzz/run.sh: needs clang and libFuzzer (Debian: clang libclang-rt-14-dev; ./build.sh fuzz installs them)" >&2; exit 2; }
 seconds=${1:-600}
 here=$(cd "$(dirname "$0")/../.." && pwd)
 build=${2:-$here/build-fuzz}
