@@ -8,9 +8,9 @@
 
 namespace rt
 {
-/// `text` as one line safe for a terminal: control characters (a scene file's or a flag's raw bytes, which a
-/// message may quote) written as \xNN, so that no input can move the cursor, clear the screen or split the
-/// line. Bytes of 0x80 and above (UTF-8) are kept.
+/// `text` safe for a terminal: control characters (a scene file's or a flag's raw bytes, which a message may
+/// quote) written as \xNN, so that no input can move the cursor or clear the screen. Line breaks and tabs stay
+/// (a message may list devices one per line); bytes of 0x80 and above (UTF-8) are kept.
 inline std::string printableLine(std::string_view text)
 {
     static constexpr char kHex[] = "0123456789abcdef";
@@ -19,7 +19,7 @@ inline std::string printableLine(std::string_view text)
     for (const char c : text)
     {
         const auto byte = static_cast<unsigned char>(c);
-        if (byte < 0x20 || byte == 0x7f)
+        if ((byte < 0x20 && c != '\n' && c != '\t') || byte == 0x7f)
         {
             out += "\\x";
             out += kHex[byte >> 4];

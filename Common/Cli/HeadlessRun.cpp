@@ -316,7 +316,7 @@ int guardedMain(CLI::App& app, int argc, char** argv, const std::function<int()>
     }
     catch (const Error& e)
     {
-        std::fprintf(stderr, "error: %s\n", e.what());
+        std::fprintf(stderr, "error: %s\n", printableLine(e.what()).c_str());
         return e.exitCode();
     }
     cluster::Job& job = cluster::job();

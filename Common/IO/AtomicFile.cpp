@@ -27,7 +27,8 @@ bool syncToDisk(const std::filesystem::path& file)
     const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0)
         return false;
-    const bool synced = ::fsync(fd) == 0;
+    // A file system that cannot sync (some FUSE and shared folders: EINVAL, ENOTSUP) has written what it took.
+    const bool synced = ::fsync(fd) == 0 || errno == EINVAL || errno == ENOTSUP;
     const int reason = errno;
     if (::close(fd) != 0 && synced)
         return false;

@@ -13,12 +13,14 @@ namespace rt
 class TemporaryFolder
 {
 public:
-    /// Creates <temp>/<prefix>-<8 random hex digits>. Throws std::filesystem::filesystem_error when it cannot.
+    /// Creates <temp>/<prefix>-<8 random hex digits>, a folder no one else has (a name taken is drawn again).
+    /// Throws std::filesystem::filesystem_error when it cannot.
     explicit TemporaryFolder(const std::string& prefix)
     {
         std::random_device random;
-        m_path = std::filesystem::temp_directory_path() / fmt::format("{}-{:08x}", prefix, random());
-        std::filesystem::create_directories(m_path);
+        do
+            m_path = std::filesystem::temp_directory_path() / fmt::format("{}-{:08x}", prefix, random());
+        while (!std::filesystem::create_directory(m_path));
     }
     ~TemporaryFolder()
     {

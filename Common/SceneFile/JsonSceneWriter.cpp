@@ -283,14 +283,15 @@ ojson sceneToJson(const Scene& scene, const std::vector<std::string>& imagePaths
 
 void exportScene(const Scene& scene, const std::filesystem::path& file)
 {
-    // An image that is no file of its own (a glTF file's embedded image, or one its base colour factor tinted)
-    // is written beside the scene file as a PNG of the texels as held (8-bit sRGB RGBA), which reads back texel
-    // for texel; the document names it relative to itself, where the reader looks first.
+    // An image that is no file of its own (a glTF file's embedded image, or one its base colour factor tinted),
+    // or a file the exported scene may not read (outside its folder and the asset folder: AssetPaths.h), is
+    // written beside the scene file as a PNG of the texels as held (8-bit sRGB RGBA), which reads back texel for
+    // texel; the document names it relative to itself, where the reader looks first.
     std::vector<std::string> paths;
     for (std::size_t i = 0; i < scene.images.size(); ++i)
     {
         const ImageData& image = scene.images[i];
-        if (std::filesystem::is_regular_file(image.path))
+        if (std::filesystem::is_regular_file(image.path) && outsideSceneFolders(image.path, file.parent_path()).empty())
         {
             paths.push_back(image.path);
             continue;

@@ -7,7 +7,6 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "Error.h"
-#include "Scene/SceneTransform.h"
 #include "SceneFile/GltfImport.h"
 #include "SceneFile/JsonSceneReader.h"
 #include "Scenes/Catalogue.h"
@@ -62,9 +61,6 @@ Scene loadSceneFile(const std::filesystem::path& file)
     if (!std::filesystem::is_regular_file(file))
         throw SceneError(fmt::format("scene file '{}' not found", file.string()));
     const std::string ext = lowerExtension(file.string());
-    // .gltf or .glb: GltfFile tells them apart by their first bytes
-    Scene scene = ext == ".json" ? readJsonScene(file) : importGltf(file);
-    checkFloatReach(scene, file.string());
-    return scene;
+    return ext == ".json" ? readJsonScene(file) : importGltf(file); // GltfFile tells .gltf from .glb by their bytes
 }
 } // namespace rt

@@ -7,6 +7,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "Error.h"
+#include "Scene/SceneTransform.h"
 #include "SceneFile/SceneFile.h"
 #include "Scenes/SceneFactories.h"
 
@@ -124,7 +125,13 @@ Scene withOptions(Scene scene, const SceneOptions& options)
 Scene makeScene(const std::string& id, const SceneOptions& options)
 {
     if (isSceneFilePath(id))
-        return withOptions(loadSceneFile(id), options);
+    {
+        // float32's reach as rendered: after --scale-scene and --translate-scene, which may bring a file's scene
+        // back into it.
+        Scene scene = withOptions(loadSceneFile(id), options);
+        checkFloatReach(scene, id);
+        return scene;
+    }
     const SceneInfo* info = findScene(id);
     if (!info)
     {

@@ -437,6 +437,7 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
         e.frameStages.clear();
         e.target->reset(e.uniforms);
         e.clear();
+        e.waveSegments = kFirstWaveSegments; // the render plans its first wave as with a cached pipeline
     }
     e.frameStages["pipeline_host"] =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - compileStart).count();

@@ -4,6 +4,8 @@
 // returns EFBIG), which, unlike a full tmpfs, needs no privilege.
 #include <gtest/gtest.h>
 
+#ifndef _WIN32 // RLIMIT_FSIZE and mkfifo: POSIX
+
 #include <sys/resource.h>
 #include <sys/stat.h>
 
@@ -142,3 +144,5 @@ TEST(AtomicFile, OnlyARegularFileIsReplaced)
 }
 } // namespace
 } // namespace rt
+
+#endif

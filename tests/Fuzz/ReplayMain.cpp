@@ -25,7 +25,7 @@ int main(int argc, char** argv)
         {
             if (!entry.is_regular_file())
                 continue;
-            std::fprintf(stderr, "replay: %s\n", entry.path().c_str());
+            std::fprintf(stderr, "replay: %s\n", entry.path().string().c_str());
             std::ifstream in(entry.path(), std::ios::binary);
             const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
             try
@@ -34,7 +34,7 @@ int main(int argc, char** argv)
             }
             catch (const std::exception& e)
             {
-                std::fprintf(stderr, "replay: FAIL %s: uncaught %s\n", entry.path().c_str(), e.what());
+                std::fprintf(stderr, "replay: FAIL %s: uncaught %s\n", entry.path().string().c_str(), e.what());
                 return 1;
             }
             ++files;
