@@ -34,18 +34,24 @@ std::string sceneShortName(std::string_view idOrPath)
     return isSceneFilePath(idOrPath) ? std::filesystem::path(idOrPath).stem().string() : std::string(idOrPath);
 }
 
+namespace
+{
+/// Why `file` cannot be read as a scene file, or "" when it is a regular file.
+std::string sceneFileProblem(const std::filesystem::path& file)
+{
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(file, ec))
+        return {};
+    return std::filesystem::is_directory(file, ec) ? fmt::format("scene file '{}' is a folder, not a file", file.string())
+           : std::filesystem::exists(file, ec)     ? fmt::format("scene file '{}' is not a regular file", file.string())
+                                                   : fmt::format("scene file '{}' not found", file.string());
+}
+} // namespace
+
 std::string sceneProblem(std::string_view idOrPath)
 {
     if (isSceneFilePath(idOrPath))
-    {
-        const std::filesystem::path file(idOrPath);
-        std::error_code ec;
-        if (std::filesystem::is_regular_file(file, ec))
-            return {};
-        return std::filesystem::is_directory(file, ec) ? fmt::format("scene file '{}' is a folder, not a file", idOrPath)
-               : std::filesystem::exists(file, ec)     ? fmt::format("scene file '{}' is not a regular file", idOrPath)
-                                                       : fmt::format("scene file '{}' not found", idOrPath);
-    }
+        return sceneFileProblem(std::filesystem::path(idOrPath));
     return findScene(std::string(idOrPath)) != nullptr
                ? std::string()
                : fmt::format("unknown scene '{}' (--list-scenes lists them)", idOrPath);
@@ -53,13 +59,8 @@ std::string sceneProblem(std::string_view idOrPath)
 
 Scene loadSceneFile(const std::filesystem::path& file)
 {
-    std::error_code ec;
-    if (std::filesystem::is_directory(file, ec))
-        throw SceneError(fmt::format("scene file '{}' is a folder, not a file", file.string()));
-    if (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))
-        throw SceneError(fmt::format("scene file '{}' is not a regular file", file.string()));
-    if (!std::filesystem::is_regular_file(file))
-        throw SceneError(fmt::format("scene file '{}' not found", file.string()));
+    if (const std::string problem = sceneFileProblem(file); !problem.empty())
+        throw SceneError(problem);
     const std::string ext = lowerExtension(file.string());
     return ext == ".json" ? readJsonScene(file) : importGltf(file); // GltfFile tells .gltf from .glb by their bytes
 }

@@ -1,16 +1,14 @@
 // IO/AtomicFile (issue 41): a write that the disk does not take whole is an error with no file left, never a
 // short file reported as written; only a regular file (or a link to one) is replaced, never what a link to a
 // device, a pipe or nothing points to. The disk's refusal is made with RLIMIT_FSIZE (SIGXFSZ ignored: write()
-// returns EFBIG), which, unlike a full tmpfs, needs no privilege.
+// returns EFBIG: Support/FileSizeLimit.h), which, unlike a full tmpfs, needs no privilege.
 #include <gtest/gtest.h>
 
 #ifndef _WIN32 // RLIMIT_FSIZE and mkfifo: POSIX
 
-#include <sys/resource.h>
 #include <sys/stat.h>
 
 #include <cerrno>
-#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -20,45 +18,13 @@
 #include "IO/OutputSet.h"
 #include "Image/Image.h"
 #include "Image/ImageIO.h"
+#include "Support/FileSizeLimit.h"
 #include "Support/ScratchDir.h"
 
 namespace rt
 {
 namespace
 {
-std::size_t filesIn(const std::filesystem::path& folder)
-{
-    std::size_t n = 0;
-    for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder))
-        ++n;
-    return n;
-}
-
-/// Files of this process may grow to `bytes` at most while it lives; a write past it fails with EFBIG.
-class FileSizeLimit
-{
-public:
-    explicit FileSizeLimit(rlim_t bytes)
-    {
-        getrlimit(RLIMIT_FSIZE, &m_old);
-        m_handler = std::signal(SIGXFSZ, SIG_IGN);
-        rlimit limit = m_old;
-        limit.rlim_cur = bytes;
-        setrlimit(RLIMIT_FSIZE, &limit);
-    }
-    ~FileSizeLimit()
-    {
-        setrlimit(RLIMIT_FSIZE, &m_old);
-        std::signal(SIGXFSZ, m_handler);
-    }
-    FileSizeLimit(const FileSizeLimit&) = delete;
-    FileSizeLimit& operator=(const FileSizeLimit&) = delete;
-
-private:
-    rlimit m_old{};
-    void (*m_handler)(int) = nullptr;
-};
-
 /// An image whose PNG is far larger than 4 KB: noise does not compress.
 Image noise(int size)
 {
@@ -85,7 +51,7 @@ TEST(AtomicFile, APngTheDiskDoesNotTakeWholeIsAnErrorWithNoFileLeft)
     const test::ScratchDir dir;
     const Image image = noise(64);
     {
-        const FileSizeLimit limit(4096);
+        const test::FileSizeLimit limit(4096);
         try
         {
             writePng(dir / "a.png", image);
@@ -98,7 +64,7 @@ TEST(AtomicFile, APngTheDiskDoesNotTakeWholeIsAnErrorWithNoFileLeft)
         EXPECT_THROW(writePfm(dir / "a.pfm", image), OutputError);
         EXPECT_THROW(writeFileAtomically(dir / "a.json", std::string(8192, 'x')), OutputError);
     }
-    EXPECT_EQ(filesIn(dir.path()), 0u); // nothing half-written, no temporary
+    EXPECT_TRUE(dir.entries().empty()); // nothing half-written, no temporary
     writePng(dir / "a.png", image); // the same write with room
     EXPECT_GT(std::filesystem::file_size(dir / "a.png"), 4096u);
 }
@@ -133,7 +99,7 @@ TEST(AtomicFile, OnlyARegularFileIsReplaced)
     std::filesystem::create_symlink(dir / "nothing" / "x.png", dir / "dangling.png");
     EXPECT_THROW(writeFileAtomically(dir / "dangling.png", "x"), OutputError);
     EXPECT_TRUE(std::filesystem::is_symlink(dir / "dangling.png"));
-    EXPECT_EQ(filesIn(dir.path()), 4u); // the pipe and the three links: no temporary left
+    EXPECT_EQ(dir.entries().size(), 4u); // the pipe and the three links: no temporary left
     // A link to a regular file is written through and stays a link.
     writeFileAtomically(dir / "file.txt", "old");
     std::filesystem::create_symlink("file.txt", dir / "file-link.txt");

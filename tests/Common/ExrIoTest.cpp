@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -39,7 +38,7 @@
 #include <half.h>
 
 #ifndef _WIN32
-#include <sys/resource.h>
+#include "Support/FileSizeLimit.h"
 #include <unistd.h>
 #endif
 
@@ -938,31 +937,7 @@ TEST(ExrErrors, AnUnwritableFolderIsAnOutputErrorAndLeavesNoFile)
     EXPECT_TRUE(std::filesystem::is_empty(folder));
 }
 
-/// Limits the size of files this process writes (RLIMIT_FSIZE, SIGXFSZ ignored so that the write fails with
-/// EFBIG instead of killing the process), like a disk that fills up mid-write; restores both when destroyed.
-class FileSizeLimit
-{
-public:
-    explicit FileSizeLimit(rlim_t bytes)
-    {
-        getrlimit(RLIMIT_FSIZE, &m_saved);
-        m_savedHandler = std::signal(SIGXFSZ, SIG_IGN);
-        rlimit limit = m_saved;
-        limit.rlim_cur = bytes;
-        setrlimit(RLIMIT_FSIZE, &limit);
-    }
-    ~FileSizeLimit()
-    {
-        setrlimit(RLIMIT_FSIZE, &m_saved);
-        std::signal(SIGXFSZ, m_savedHandler);
-    }
-    FileSizeLimit(const FileSizeLimit&) = delete;
-    FileSizeLimit& operator=(const FileSizeLimit&) = delete;
-
-private:
-    rlimit m_saved{};
-    void (*m_savedHandler)(int) = nullptr;
-};
+using test::FileSizeLimit;
 
 TEST(ExrErrors, AFailedWriteLeavesTheOldFileOrNothingNeverAPartialOne)
 {
