@@ -7,7 +7,6 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "Error.h"
-#include "Scene/RenderSpace.h"
 #include "Scene/SceneTransform.h"
 #include "SceneFile/SceneFile.h"
 #include "Scenes/SceneFactories.h"
@@ -107,7 +106,7 @@ std::size_t editDistance(const std::string& a, const std::string& b)
 
 Scene withOptions(Scene scene, const SceneOptions& options)
 {
-    placeScene(scene, options.transform);
+    transformScene(scene, options.transform);
     if (options.fresnel)
         for (MaterialData& m : scene.materials)
             if (m.type == MaterialType::Dielectric)
@@ -123,10 +122,16 @@ Scene withOptions(Scene scene, const SceneOptions& options)
 }
 } // namespace
 
-Scene placedScene(const std::string& id, const SceneOptions& options)
+Scene makeScene(const std::string& id, const SceneOptions& options)
 {
     if (isSceneFilePath(id))
-        return withOptions(loadSceneFile(id), options);
+    {
+        // float32's reach as rendered: after --scale-scene and --translate-scene, which may bring a file's scene
+        // back into it.
+        Scene scene = withOptions(loadSceneFile(id), options);
+        checkFloatReach(scene, id);
+        return scene;
+    }
     const SceneInfo* info = findScene(id);
     if (!info)
     {
@@ -156,14 +161,5 @@ Scene placedScene(const std::string& id, const SceneOptions& options)
                                      suggestion, known));
     }
     return withOptions(info->build(options), options);
-}
-
-Scene makeScene(const std::string& id, const SceneOptions& options)
-{
-    Scene scene = placedScene(id, options);
-    toRenderSpace(scene);
-    // float32's reach as rendered: in render space, after --scale-scene, which may bring a file's scene back into it.
-    checkFloatReach(scene, id);
-    return scene;
 }
 } // namespace rt
