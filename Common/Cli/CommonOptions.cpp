@@ -154,9 +154,9 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
         ->check(CLI::Range(1, std::numeric_limits<int>::max()));
     app.add_option("--mesh", o.mesh, "OBJ file for the mesh scenes (default: the Stanford bunny in Assets)");
     app.add_option("--translate-scene", o.translateScene,
-                   "X,Y,Z: move the whole scene and its camera by this vector (world units). The image stays "
-                   "the same in exact arithmetic, so what changes is float32 precision far from the origin: a "
-                   "stress test. Refused past the distance float32 renders right (docs/ROBUSTNESS.md)");
+                   "X,Y,Z: move the whole scene and its camera by this vector (world units), kept in double as "
+                   "the scene's origin. Both engines render relative to the camera (render space), so the image "
+                   "is the same however far the scene goes: a stress test of that (docs/ROBUSTNESS.md)");
     app.add_option("--scale-scene", o.scaleScene,
                    "S > 0: scale the whole scene and its camera by S about the origin (before --translate-scene); "
                    "media densities scale by 1/S, so the image stays the same: a float32 precision stress test");
@@ -256,7 +256,7 @@ bool runCommonCommands(const CommonOptions& options)
         return false;
     if (!cluster::job().root())
         return true; // one file, written once
-    exportScene(buildScene(options.sceneRef()), options.exportScene);
+    exportScene(placedScene(options.sceneRef().id, options.sceneRef().options), options.exportScene);
     spdlog::info("wrote {}", options.exportScene);
     return true;
 }

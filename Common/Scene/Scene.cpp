@@ -125,9 +125,13 @@ void require(bool ok, const std::string& sceneId, const std::string& what)
 void Scene::validate() const
 {
     const auto textureOk = [&](std::uint32_t t) { return t == kNoIndex || t < textures.size(); };
+    require(std::isfinite(origin.x) && std::isfinite(origin.y) && std::isfinite(origin.z), id,
+            "the scene's origin is not finite");
     for (std::size_t i = 0; i < textures.size(); ++i)
     {
         const TextureData& t = textures[i];
+        require(std::isfinite(t.origin.x) && std::isfinite(t.origin.y) && std::isfinite(t.origin.z), id,
+                fmt::format("texture {}'s origin is not finite", i));
         require(t.type != TextureType::Image || t.image < images.size(), id,
                 fmt::format("texture {} refers to image {} of {}", i, t.image, images.size()));
     }

@@ -190,6 +190,11 @@ struct Scene
     std::vector<InstanceDesc> instances;
     std::vector<LightData> lights;
     std::vector<LightSource> lightSources; // one per light
+    /// Where this scene's coordinate origin lies in the world, in double: every position above is relative to
+    /// it (3D Tiles' RTC_CENTER idea). 0 as built; --translate-scene and a scene file's "origin" move it, so a
+    /// scene far from the world's origin keeps float32's precision near its own; toRenderSpace moves it to the
+    /// camera (Scene/RenderSpace.h).
+    dvec3 origin{0.0};
 
     bool hasMedia() const;
     bool hasMotion() const;

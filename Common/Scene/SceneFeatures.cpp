@@ -9,10 +9,11 @@ namespace rt
 {
 namespace
 {
-bool isIdentity(const Transform& t)
+/// Whether the linear part is the identity: translations are not counted, as render space gives every instance one.
+bool isIdentityLinear(const Transform& t)
 {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r)
             if (t.m[c][r] != (c == r ? 1.0f : 0.0f))
                 return false;
     return true;
@@ -142,7 +143,7 @@ SceneFeatures featuresOf(const Scene& scene)
     std::vector<bool> seenGroup(scene.groups.size(), false);
     for (const InstanceDesc& instance : scene.instances)
     {
-        f.transformedInstances = f.transformedInstances || !isIdentity(instance.worldFromObject);
+        f.transformedInstances = f.transformedInstances || !isIdentityLinear(instance.worldFromObject);
         if (seenGroup[instance.group])
             continue;
         seenGroup[instance.group] = true;

@@ -32,7 +32,7 @@ struct SceneFeatures
     // (a 1e6-radius ground under a 6-unit light, 1.5 units below the camera). The GPU computes the exact c only
     // then (Shared/SphereQuadratic.h); rtow's radius-1000 ground beside 22 units of spheres is not huge.
     bool hugeSpheres = false;
-    bool transformedInstances = false; // an instance whose transform is not the identity
+    bool transformedInstances = false; // an instance rotated, scaled or sheared (not only translated)
     // Materials that some primitive uses
     bool lambertian = false;
     bool metal = false;

@@ -50,26 +50,18 @@ void checkFloatReach(const Scene& s, const std::string& source)
         return; // nothing placed
     const Reach r = reach(s);
     if (!std::isfinite(r.farthest) || !std::isfinite(r.size) || r.size > kMaxSceneSize || r.size < kMinSceneSize)
-        throw SceneError(fmt::format("{}: the scene as placed is {:g} world units across; float32 renders it right "
+        throw SceneError(fmt::format("{}: the scene is {:g} world units across; float32 renders it right "
                                      "between {:g} and {:g} (docs/ROBUSTNESS.md)",
                                      source, r.size, kMinSceneSize, kMaxSceneSize));
     if (r.farthest > kMaxOffsetToSize * r.size)
-        throw SceneError(fmt::format("{}: the scene as placed (size {:g}) reaches {:g} world units from the origin, "
-                                     "{:.0f} times its size; float32 renders it right up to {:g} times its size "
-                                     "(docs/ROBUSTNESS.md)",
+        throw SceneError(fmt::format("{}: the scene (size {:g}) reaches {:g} world units from the origin of its "
+                                     "coordinates (the camera, as rendered), {:.0f} times its size; float32 renders "
+                                     "it right up to {:g} times its size (docs/ROBUSTNESS.md)",
                                      source, r.size, r.farthest, r.farthest / r.size, kMaxOffsetToSize));
 }
 
-void transformScene(Scene& s, const SceneTransform& t, FloatLimits limits)
+void moveScene(Scene& s, const SceneTransform& t)
 {
-    if (!finite(t.translation))
-        throw UsageError(fmt::format("--translate-scene must be finite (got {},{},{})", t.translation.x,
-                                     t.translation.y, t.translation.z));
-    if (!(std::isfinite(t.scale) && t.scale > 0.0f))
-        throw UsageError(fmt::format("--scale-scene must be a finite number > 0 (got {})", t.scale));
-    if (t.isIdentity())
-        return;
-    const Reach before = reach(s);
     const Transform w = t.worldFromScene();
 
     for (InstanceDesc& inst : s.instances)
@@ -102,6 +94,19 @@ void transformScene(Scene& s, const SceneTransform& t, FloatLimits limits)
                                          t.scale, s.id));
         s.lights[i] = *light;
     }
+}
+
+void transformScene(Scene& s, const SceneTransform& t, FloatLimits limits)
+{
+    if (!finite(t.translation))
+        throw UsageError(fmt::format("--translate-scene must be finite (got {},{},{})", t.translation.x,
+                                     t.translation.y, t.translation.z));
+    if (!(std::isfinite(t.scale) && t.scale > 0.0f))
+        throw UsageError(fmt::format("--scale-scene must be a finite number > 0 (got {})", t.scale));
+    if (t.isIdentity())
+        return;
+    const Reach before = reach(s);
+    moveScene(s, t);
 
     // Refuse rather than render what float32 cannot: the limits are measured (above).
     const Reach after = reach(s);
@@ -124,5 +129,16 @@ void transformScene(Scene& s, const SceneTransform& t, FloatLimits limits)
             "size; float32 renders it right up to {:g} times its size (docs/ROBUSTNESS.md)",
             s.id, after.size, after.farthest, after.farthest / after.size, allowed));
     s.validate();
+}
+
+void placeScene(Scene& s, const SceneTransform& t)
+{
+    if (!finite(t.translation))
+        throw UsageError(fmt::format("--translate-scene must be finite (got {},{},{})", t.translation.x,
+                                     t.translation.y, t.translation.z));
+    transformScene(s, {vec3(0.0f), t.scale});
+    // world = origin + p scales about the world's origin with p, then moves by the translation; in double, so that
+    // the scene's own coordinates (and the image) do not depend on where it is placed.
+    s.origin = static_cast<double>(t.scale) * s.origin + dvec3(t.translation);
 }
 } // namespace rt

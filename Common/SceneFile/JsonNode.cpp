@@ -162,6 +162,23 @@ vec3 JsonNode::vector3(float lo, float hi) const
     return {(*this)[std::size_t{0}].number(lo, hi), (*this)[1].number(lo, hi), (*this)[2].number(lo, hi)};
 }
 
+dvec3 JsonNode::dvector3() const
+{
+    if (!m_value->is_array() || m_value->size() != 3)
+        fail(fmt::format("expected an array of 3 numbers, got {}", describeJson(*m_value)));
+    dvec3 v;
+    for (int i = 0; i < 3; ++i)
+    {
+        const JsonNode x = (*this)[static_cast<std::size_t>(i)];
+        if (!x.value().is_number())
+            x.fail(fmt::format("expected a number, got {}", describeJson(x.value())));
+        v[i] = x.value().get<double>();
+        if (!std::isfinite(v[i]))
+            x.fail(fmt::format("expected a finite number, got {}", describeJson(x.value())));
+    }
+    return v;
+}
+
 void checkJsonNesting(std::string_view text, const std::string& file)
 {
     int depth = 0;

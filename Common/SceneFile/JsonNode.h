@@ -46,6 +46,8 @@ public:
     std::size_t choice(std::initializer_list<std::string_view> choices) const;
     /// Three finite numbers, each in [lo, hi].
     vec3 vector3(float lo = -kMaxFloat, float hi = kMaxFloat) const;
+    /// Three finite numbers, kept in double (a position far from the world's origin: Scene::origin).
+    dvec3 dvector3() const;
 
     /// Throws SceneError "<file>: <pointer>: <what>".
     [[noreturn]] void fail(const std::string& what) const;

@@ -95,8 +95,8 @@ public:
 
     Scene read()
     {
-        m_root.allowOnly({"format", "version", "description", "camera", "render", "background", "textures",
-                          "materials", "meshes", "shapes", "groups", "instances", "light_targets"});
+        m_root.allowOnly({"format", "version", "description", "origin", "camera", "render", "background",
+                          "textures", "materials", "meshes", "shapes", "groups", "instances", "light_targets"});
         if (m_root.has("format") && m_root["format"].string() != "ray-tracing-scene")
             m_root["format"].fail("expected \"ray-tracing-scene\"");
         if (m_root.has("version"))
@@ -117,6 +117,8 @@ public:
         forEach("groups", [this](const JsonNode& g) { readGroup(g); });
         forEach("instances", [this](const JsonNode& i) { readInstance(i); });
         forEach("light_targets", [this](const JsonNode& t) { readLightTarget(t); });
+        if (m_root.has("origin"))
+            scene().origin = m_root["origin"].dvector3();
         if (m_builder.scene().primitiveCount() == 0)
             m_root.fail("the scene has nothing to render: give \"shapes\", or \"groups\" and \"instances\"");
         try
@@ -262,7 +264,7 @@ private:
             tex.color0 = t["color"].vector3(0.0f, kMaxRadiance);
             break;
         case 1:
-            t.allowOnly({"name", "type", "scale", "even", "odd"});
+            t.allowOnly({"name", "type", "scale", "even", "odd", "offset"});
             tex.type = TextureType::Checker;
             tex.scale = positive(t["scale"]);
             tex.color0 = t["even"].vector3(0.0f, kMaxRadiance);
@@ -280,12 +282,14 @@ private:
         }
         default:
         {
-            t.allowOnly({"name", "type", "scale"});
+            t.allowOnly({"name", "type", "scale", "offset"});
             static constexpr TextureType kNoise[] = {TextureType::Noise, TextureType::Turbulence, TextureType::Marble};
             tex.type = kNoise[t["type"].choice({"noise", "turbulence", "marble"})];
             tex.scale = positive(t["scale"]);
         }
         }
+        if (t.has("offset"))
+            tex.origin = t["offset"].vector3(); // the pattern at p + offset
         m_textureNames.add(t, static_cast<std::uint32_t>(scene().textures.size()));
         scene().textures.push_back(tex);
     }

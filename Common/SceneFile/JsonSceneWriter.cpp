@@ -34,7 +34,7 @@ ojson number(float f) { return exactFloat(f); }
 ojson vector(const vec3& v) { return ojson::array({number(v.x), number(v.y), number(v.z)}); }
 
 /// `paths[i]` is where image i is to be found: its own file, or one exportScene wrote beside the scene file.
-ojson texture(const TextureData& t, const Scene& scene, const std::vector<std::string>& paths)
+ojson textureByType(const TextureData& t, const Scene& scene, const std::vector<std::string>& paths)
 {
     switch (t.type)
     {
@@ -57,6 +57,14 @@ ojson texture(const TextureData& t, const Scene& scene, const std::vector<std::s
     case TextureType::Marble: return {{"type", "marble"}, {"scale", number(t.scale)}};
     }
     throw SceneError(fmt::format("texture type {} cannot be written", static_cast<unsigned>(t.type)));
+}
+
+ojson texture(const TextureData& t, const Scene& scene, const std::vector<std::string>& paths)
+{
+    ojson j = textureByType(t, scene, paths);
+    if (t.origin != vec3(0.0f))
+        j["offset"] = vector(t.origin); // a solid texture's pattern at p + offset
+    return j;
 }
 
 ojson material(const MaterialData& m)
@@ -248,6 +256,8 @@ ojson sceneToJson(const Scene& scene, const std::vector<std::string>& imagePaths
 {
     ojson doc = {{"format", "ray-tracing-scene"}, {"version", kSceneFormatVersion}};
     doc["description"] = fmt::format("scene '{}', written by --export-scene", scene.id);
+    if (scene.origin != dvec3(0.0))
+        doc["origin"] = ojson::array({scene.origin.x, scene.origin.y, scene.origin.z});
     doc["camera"] = camera(scene.camera);
     doc["render"] = render(scene.defaults);
     doc["background"] = background(scene.background);

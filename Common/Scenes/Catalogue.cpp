@@ -7,6 +7,7 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "Error.h"
+#include "Scene/RenderSpace.h"
 #include "Scene/SceneTransform.h"
 #include "SceneFile/SceneFile.h"
 #include "Scenes/SceneFactories.h"
@@ -106,7 +107,7 @@ std::size_t editDistance(const std::string& a, const std::string& b)
 
 Scene withOptions(Scene scene, const SceneOptions& options)
 {
-    transformScene(scene, options.transform);
+    placeScene(scene, options.transform);
     if (options.fresnel)
         for (MaterialData& m : scene.materials)
             if (m.type == MaterialType::Dielectric)
@@ -122,16 +123,10 @@ Scene withOptions(Scene scene, const SceneOptions& options)
 }
 } // namespace
 
-Scene makeScene(const std::string& id, const SceneOptions& options)
+Scene placedScene(const std::string& id, const SceneOptions& options)
 {
     if (isSceneFilePath(id))
-    {
-        // float32's reach as rendered: after --scale-scene and --translate-scene, which may bring a file's scene
-        // back into it.
-        Scene scene = withOptions(loadSceneFile(id), options);
-        checkFloatReach(scene, id);
-        return scene;
-    }
+        return withOptions(loadSceneFile(id), options);
     const SceneInfo* info = findScene(id);
     if (!info)
     {
@@ -161,5 +156,14 @@ Scene makeScene(const std::string& id, const SceneOptions& options)
                                      suggestion, known));
     }
     return withOptions(info->build(options), options);
+}
+
+Scene makeScene(const std::string& id, const SceneOptions& options)
+{
+    Scene scene = placedScene(id, options);
+    toRenderSpace(scene);
+    // float32's reach as rendered: in render space, after --scale-scene, which may bring a file's scene back into it.
+    checkFloatReach(scene, id);
+    return scene;
 }
 } // namespace rt

@@ -57,11 +57,18 @@ bool parseFresnelOption(std::string_view text, std::optional<shader::FresnelMode
 inline constexpr float kMinRoughnessScale = 0.01f;
 inline constexpr float kMaxRoughnessScale = 100.0f;
 
-/// Builds scene `id` (a catalogue id, or a scene file: SceneFile/SceneFile.h), moved by options.transform, with
-/// options.fresnel's model on every dielectric if given and every microfacet material's alpha (conductor, rough
-/// dielectric, glTF metallic-roughness: both tangents, and through it a roughness texture's) times
-/// options.roughnessScale, at most 1. Throws SceneError naming the id and listing the known ones
-/// if unknown, AssetError if a texture or mesh it needs is missing, UsageError if the transform is refused.
+/// Builds scene `id` (a catalogue id, or a scene file: SceneFile/SceneFile.h), placed by options.transform
+/// (placeScene: the scale in its coordinates, the translation in Scene::origin), with options.fresnel's model on
+/// every dielectric if given and every microfacet material's alpha (conductor, rough dielectric, glTF
+/// metallic-roughness: both tangents, and through it a roughness texture's) times options.roughnessScale, at
+/// most 1; in the scene's own coordinates, as --export-scene writes it. Throws SceneError naming the id and
+/// listing the known ones if unknown, AssetError if a texture or mesh it needs is missing, UsageError if the
+/// transform is refused.
+Scene placedScene(const std::string& id, const SceneOptions& options = {});
+
+/// placedScene's scene in render space (Scene/RenderSpace.h: the camera at the origin), what both engines
+/// render. Throws as placedScene, and SceneError when float32 cannot hold the scene in render space
+/// (checkFloatReach: far from its camera for its size, or too small or large).
 Scene makeScene(const std::string& id, const SceneOptions& options = {});
 
 /// The white furnace: the camera inside a closed sphere of Lambertian albedo `albedo` that emits `radiance`

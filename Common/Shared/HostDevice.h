@@ -127,6 +127,10 @@ struct TextureData
     uint linear; // Image: 1 when the texels are linear data (glTF's metallic-roughness), 0 sRGB-encoded colour
     vec3 color0;
     vec3 color1;
+    // Checker, Noise, Turbulence, Marble (solid textures): the pattern is evaluated at p + origin, p the render-space
+    // point (Scene/RenderSpace.h), so that it stays attached to the scene's own coordinates wherever the scene
+    // and its camera lie (the camera's position in them, plus a scene file's texture "offset").
+    vec3 origin;
 };
 
 struct MaterialData
@@ -579,7 +583,7 @@ static_assert(offsetof(RenderUniforms, sampling) == 128);
 static_assert(sizeof(HitPayload) == 48);
 static_assert(sizeof(RestirSurface) == 64);
 static_assert(sizeof(Reservoir) == 32);
-static_assert(sizeof(TextureData) == 40);
+static_assert(sizeof(TextureData) == 52);
 static_assert(sizeof(MaterialData) == 64);
 static_assert(sizeof(LightData) == 104);
 static_assert(sizeof(AliasEntry) == 12);

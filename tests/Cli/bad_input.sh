@@ -102,7 +102,7 @@ expect_error "translation with a space" "--translate-scene" --translate-scene "1
 expect_error "translation infinite" "--translate-scene" --translate-scene 0,inf,0
 expect_error "translation not a number (nan)" "--translate-scene" --translate-scene nan,0,0
 expect_error "translation overflows float" "--translate-scene" --translate-scene 1e39,0,0
-expect_error "translation past float32's reach" "times its size" --translate-scene 1e6,0,0
+expect_error "scale too large for float32" "world units across" --scale-scene 1e7
 expect_error "zero scale" "--scale-scene" --scale-scene 0
 expect_error "negative scale" "--scale-scene" --scale-scene -2
 expect_error "infinite scale" "--scale-scene" --scale-scene inf

@@ -330,7 +330,7 @@ TEST(LightBvh, FavoursTheLightsNearAPointInManyLights)
 {
     // many-lights: 1000 small emitters in the upper part of the Cornell room. From a point among them, the
     // BVH should give the nearest far more than their share of the count.
-    const Scene scene = makeScene("many-lights");
+    const Scene scene = placedScene("many-lights"); // the point below is in the scene's own coordinates
     const LightBvh bvh = buildLightBvh(scene);
     const std::uint32_t emitters = scene.emitterCount();
     ASSERT_GE(emitters, 1000u);

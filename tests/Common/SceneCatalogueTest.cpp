@@ -134,7 +134,7 @@ TEST(SceneCatalogue, LightListHoldsEveryEmitter)
 TEST(SceneCatalogue, CornellBoxLightsHasNineStripsAndThreeSpheres)
 {
     // scenes.md: 9 strips (15,15,15) on the back wall facing the camera (-z), then spheres r50 red, blue, green.
-    const Scene s = makeScene("cornell-box-lights");
+    const Scene s = placedScene("cornell-box-lights");
     ASSERT_EQ(s.lights.size(), 12u);
     for (int i = 0; i < 9; ++i)
     {
@@ -161,7 +161,7 @@ TEST(SceneCatalogue, TriangleLightsHasTheCeilingHalvesTheSliverAndTheEmittingMes
     // scenes.md: the book-3 ceiling light as two triangles (15), facing down; a 300 x 3 sliver (8) on the
     // back wall at y = 400 facing the camera; every triangle of the mesh (2), 150 tall on the floor about
     // (278, 278).
-    const Scene s = makeScene("triangle-lights");
+    const Scene s = placedScene("triangle-lights");
     for (const LightData& l : s.lights)
         ASSERT_EQ(l.shape, LightShape::Triangle);
     ASSERT_GT(s.lights.size(), 3u + 1000u); // the bunny has 3,674 triangles
@@ -196,7 +196,7 @@ TEST(SceneCatalogue, TriangleLightsHasTheCeilingHalvesTheSliverAndTheEmittingMes
 TEST(SceneCatalogue, CornellGlassSamplesTheLightThenTheGlass)
 {
     // RTTROYL §12.5: the ceiling light (facing down) and the glass sphere, a sampling target that emits nothing.
-    const Scene s = makeScene("rtrol-cornell-glass");
+    const Scene s = placedScene("rtrol-cornell-glass");
     ASSERT_EQ(s.lights.size(), 2u);
     EXPECT_EQ(s.lights[0].shape, LightShape::Quad);
     EXPECT_NE(s.lights[0].material, kNoIndex);

@@ -92,9 +92,9 @@ TEST(RayLanes, EveryLaneFindsTheHitItsRayFindsAlone)
     const Scene lanes = oneLeafOfEveryCase();
     expectLanesFindTheScalarHits(CpuScene(lanes), spreadRays(vec3(-3.0f, 0.0f, -3.0f), vec3(3.0f, 3.0f, 3.0f), 8000),
                                  "every case");
-    const Scene glass = makeScene("rtrol-cornell-glass");
+    const Scene glass = placedScene("rtrol-cornell-glass"); // the rays are in the scene's own coordinates
     expectLanesFindTheScalarHits(CpuScene(glass), spreadRays(vec3(1.0f), vec3(554.0f), 8000), "rtrol-cornell-glass");
-    const Scene closeup = makeScene("rect-light-closeup");
+    const Scene closeup = placedScene("rect-light-closeup");
     expectLanesFindTheScalarHits(CpuScene(closeup), spreadRays(vec3(-5.0f), vec3(5.0f), 8000), "rect-light-closeup");
 }
 

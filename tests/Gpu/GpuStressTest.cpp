@@ -45,6 +45,7 @@ using GpuStressMovedCornell = GpuStressTest;
 TEST_F(GpuStressMovedCornell, RendersTheSameImageMovedAndScaled)
 {
     const SceneTransform transforms[] = {{vec3(1e4f, -1e4f, 1e4f), 1.0f},
+                                         {vec3(1e6f, -1e6f, 1e6f), 1.0f}, // render space: issue 41
                                          {vec3(0.0f), 1e-3f},
                                          {vec3(0.0f), 1e3f},
                                          {vec3(0.0f, 1e7f, 0.0f), 1e3f}};
