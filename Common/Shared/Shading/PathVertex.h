@@ -121,9 +121,7 @@ RT_FN bool shadePathVertex(RT_INOUT(PathState) path, uint segment, RT_IN(HitPayl
             {
                 shadow.contribution *= path.beta;
                 if (transmits)
-                    shadow.origin = offsetRayOrigin(
-                        surface.position, dot(shadow.direction, hit.normal) > 0.0f ? hit.normal : -hit.normal,
-                        hit.offsetScale);
+                    leaveGlass(shadow, surface.position, hit.normal, hit.offsetScale);
             }
             path.previousNormal = receiver;
         }

@@ -160,8 +160,7 @@ RT_FN ShadowRay restirShadowRay(RT_IN(RestirVertex) v, vec3 point)
     shadow.distance = distance * (1.0f - 1e-4f);
     shadow.origin = v.origin;
     if (v.transmits)
-        shadow.origin = offsetRayOrigin(v.position, dot(shadow.direction, v.normal) > 0.0f ? v.normal : -v.normal,
-                                        v.offsetScale);
+        leaveGlass(shadow, v.position, v.normal, v.offsetScale);
     return shadow;
 }
 
