@@ -27,9 +27,5 @@ void main()
     payload.material = sphere.material;
     payload.lightSlot = primitiveLightSlot(record, uint(gl_PrimitiveID));
     payload.flags = 0u;
-    // The re-projection errs by ulps of the centre and radius, not of p: where a coordinate of p nears 0 by
-    // cancellation (a sphere across a coordinate plane, as render space puts them) p's own ulps are too few.
-    const vec3 worldCenter = gl_ObjectToWorldEXT * vec4(hitCenter, 1.0);
-    const vec3 c = abs(worldCenter);
-    payload.offsetScale = max(c.x, max(c.y, c.z)) + sphere.radius * length(gl_ObjectToWorldEXT[0]);
+    payload.offsetScale = 1.0; // our own sphere test: its error scales with p (RayOffset.glsl)
 }

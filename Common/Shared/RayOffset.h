@@ -16,8 +16,8 @@ RT_SHADER_NAMESPACE_BEGIN
 /// from) far enough that the new ray, started with tmin = 0, does not hit the surface it leaves: 256 ulps of
 /// each coordinate, except below |p_i| = scale/32, where the offset is an absolute scale/65536 (Wächter &
 /// Binder's constants are those of scale = 1). `scale` is the largest coordinate magnitude the surface's
-/// intersection test computes with (the largest |vertex coordinate| of a triangle or quad; the largest |centre
-/// coordinate| plus the radius of a sphere, whose hit point is re-projected from its centre): a triangle test in a driver (NVIDIA's) errs by
+/// intersection test computes with (the largest |vertex coordinate| of a triangle or quad; 1 for surfaces whose
+/// test errs in proportion to p, such as our own sphere test): a triangle test in a driver (NVIDIA's) errs by
 /// ulps of the vertices, and a wall at x = 0 of a 555-unit Cornell box re-hit itself from the 1/65536 offset
 /// often enough to lose 6-10 % of its radiance on the H100. Values below 1 count as 1. The constants are powers
 /// of two, so s times them is exact. One coordinate at a time: what GLSL runs, and C++ without SSE 4.1.

@@ -120,9 +120,6 @@ public:
             const vec3 n = glm::normalize(r.origin + hit.t * r.direction - center);
             si.n = n;
             si.p = center + s.radius * n; // re-projected onto the surface: o + t d carries error ~ t |d|
-            // The re-projection errs by ulps of the centre and radius, not of p: where a coordinate of p nears 0 by
-            // cancellation (a sphere across a coordinate plane, as render space puts them) p's own ulps are too few.
-            si.offsetScale = maxComponent(glm::abs(center)) + s.radius;
             si.material = s.material;
             si.light = m_sphereLights[ref.index()];
             if (m_materialNeedsUv[s.material]) // acos + atan2 only where an image texture reads them
