@@ -1143,6 +1143,46 @@ def section_thesis_figures():
     return out
 
 
+RENDER_SPACE = {"dir": "render-space-ab", "date": "2026-11-27", "notebook": "## 23."}
+
+
+def section_render_space():
+    rel = RENDER_SPACE["dir"]
+    cpu = results_path(f"{rel}/cpu-ab.md").read_text().rstrip()
+    gpu = results_path(f"{rel}/h100-ab.md").read_text().rstrip()
+    return [
+        "## 13. Render space against the build before (issue 41)",
+        "",
+        "Both engines trace in camera-relative coordinates since issue 41 (`Common/Scene/RenderSpace.h`), and NEE's "
+        "shadow rays at glass stop short of their light again (`leaveGlass`). The same renders with the build "
+        "before (A, 7d35481) and the build with both (B), rounds interleaved, the fastest of each. The images "
+        "differ by rounding (every coordinate moved by the camera), and on glass scenes by the shadow rays that "
+        "were lost.",
+        "",
+        "CPU engine, one core of the CI kind (`images`: the same linear image bit for bit or not):",
+        "",
+        cpu,
+        "",
+        sources([("Machine", "CI kind, 2 vCPU, one core (taskset -c 0)"), ("Date", RENDER_SPACE["date"]),
+                 ("Results", link(f"{rel}/cpu-ab.md")), ("Notebook", notebook_link(RENDER_SPACE["notebook"])),
+                 ("Command", "")]),
+        "",
+        code("tests/Bench/cpu_ab.sh before/ray-tracing-cpu build/bin/ray-tracing-cpu "
+             "tests/Bench/renders/cpu-catalogue.txt 3"),
+        "",
+        "GPU engine, NVIDIA H100 80GB HBM3 (GPU time of the trace dispatches; relMSE between the two builds' images):",
+        "",
+        gpu,
+        "",
+        sources([("Machine", "NVIDIA H100 80GB HBM3, driver 580"), ("Date", RENDER_SPACE["date"]),
+                 ("Results", link(f"{rel}/h100-ab.md")), ("Notebook", notebook_link(RENDER_SPACE["notebook"])),
+                 ("Command", "")]),
+        "",
+        code("BASELINE_BIN=before/bin bash tests/Bench/device_carry.sh; "
+             "bash tests/Bench/device_run.sh ab tests/Bench/renders/catalogue-256.txt"),
+    ]
+
+
 def render():
     runs = compare_runs()
     parts = [
@@ -1174,6 +1214,7 @@ def render():
         section_restir(),
         section_mpi_scaling(),
         section_thesis_figures(),
+        section_render_space(),
     ]
     titles = [p[0][3:] for p in parts[1:]]
     parts[0] += ["", "Contents: " + " · ".join(f"[{t}](#{slugify(t)})" for t in titles)]

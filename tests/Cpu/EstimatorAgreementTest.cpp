@@ -49,8 +49,8 @@ TEST_P(CpuEstimatorAgreement, EveryEstimatorMatchesNeeMis)
     s.unidirectionalLight = scene.defaults.unidirectionalLight;
     // NEE alone at a near-specular lobe (glossy-cornell's glass of alpha 0.05) is Veach's bad case: its rare
     // light samples that fall in the lobe are heavy-tailed, and at 32 spp the Z-test's variance, from the same
-    // samples, misses them (block means 0.46 against NEE + MIS's 0.77, |Z| 7; at 16,384 spp the two agree to
-    // 0.5 %).
+    // samples, misses them (block means 0.46 against NEE + MIS's 0.77, |Z| 7, measured while the glass's shadow
+    // rays still hit their own light: ROBUSTNESS.md §3).
     // lamp-room hides most of its 4,096 lamps in shades from most points: NEE alone by power finds an open one
     // rarely, and at 32 spp its blocks came out at a third to a half of NEE + MIS's with |Z| 4-9, while at
     // 4,096 spp the two agree to 3 %.
