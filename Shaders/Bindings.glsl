@@ -27,6 +27,7 @@ layout(binding = kBindingTriangleMaterials, scalar) readonly buffer TriangleMate
 layout(binding = kBindingSpheres, scalar) readonly buffer SphereBlock { SphereRecord spheres[]; };
 layout(binding = kBindingMedia, scalar) readonly buffer MediumBlock { MediumRecord media[]; };
 layout(binding = kBindingCounters, scalar) buffer CounterBlock { SampleCounters counters; };
+layout(binding = kBindingRayCounters, scalar) buffer RayCounterBlock { RayCounters rayCounters; };
 layout(binding = kBindingPrimitiveLights, scalar) readonly buffer PrimitiveLightBlock { uint primitiveLights[]; };
 layout(binding = kBindingLightAlias, scalar) readonly buffer LightAliasBlock { AliasEntry lightAlias[]; };
 layout(binding = kBindingLightBvh, scalar) readonly buffer LightBvhBlock { LightBvhNode lightBvh[]; };

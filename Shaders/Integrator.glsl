@@ -20,7 +20,7 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
     {
         if (!isFiniteVec(path.origin) || !isFiniteVec(path.direction))
             return vec3(uintBitsToFloat(0x7FC00000u)); // a quiet NaN
-        traceToFirstHit(path.origin, path.direction);
+        traceToFirstHit(path.origin, path.direction, segment == 0u);
         ShadowRay shadow;
         bool goesOn = shadePathVertex(path, segment, payload, shadow, false);
         if (shadow.pending && unoccluded(shadow.origin, shadow.direction, shadow.distance))

@@ -18,6 +18,7 @@ layout(constant_id = kSpecIdSampling) const uint kSpecSampling = kSpecDynamic;
 layout(constant_id = kSpecIdFeatures) const uint kSpecFeatures = kSpecDynamic;
 layout(constant_id = kSpecIdExactSphereC) const uint kSpecExactSphereC = kSpecDynamic;
 layout(constant_id = kSpecIdHitUv) const uint kSpecHitUv = kSpecDynamic;
+layout(constant_id = kSpecIdCountRays) const uint kSpecCountRays = kSpecDynamic;
 // Not a render setting: 1 in the wavefront integrator's pipelines, 0 in the megakernel's.
 layout(constant_id = kSpecIdWavefront) const uint kSpecWavefront = 0u;
 const bool kWavefront = kSpecWavefront != 0u;
@@ -32,6 +33,8 @@ uint settingLightSelection()
     return kSpecLightSelection != kSpecDynamic ? kSpecLightSelection : uniforms.lightSelection;
 }
 uint settingSampling() { return kSpecSampling != kSpecDynamic ? kSpecSampling : uniforms.sampling; }
+/// Whether the render counts its rays (--count-rays): a constant 0 in every specialised pipeline that does not.
+bool settingCountRays() { return (kSpecCountRays != kSpecDynamic ? kSpecCountRays : uniforms.countRays) != 0u; }
 /// Whether the render's estimator samples a light at its vertices (Shared/Estimator.h usesNee).
 bool settingUsesNee()
 {

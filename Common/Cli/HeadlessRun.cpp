@@ -149,13 +149,18 @@ void mergeShares(std::vector<double> sums, cluster::Job& job, const cluster::Ver
         image.data()[i] = vec3(dvec3(sums[3 * i], sums[3 * i + 1], sums[3 * i + 2]) / double(frameSamples));
     result.image = std::move(image);
     st.trueSpp = static_cast<int>(frameSamples);
-    st.paths = st.segments = st.nanSamples = st.infSamples = 0;
+    st.paths = st.nanSamples = st.infSamples = 0;
+    st.rays = {};
+    st.raysCounted = !verdict.ranks.empty();
     st.threadsUsed = 0;
     st.renderSeconds = 0.0;
     for (const nlohmann::json& r : verdict.ranks)
     {
         st.paths += r.at("paths").get<std::uint64_t>();
-        st.segments += r.at("segments").get<std::uint64_t>();
+        // The job's rays are every rank's, counted only where every rank counted them.
+        st.raysCounted = st.raysCounted && r.contains("rays");
+        if (r.contains("rays"))
+            st.rays += rayCountsFromJson(r.at("rays"));
         st.nanSamples += r.at("nan_samples").get<std::uint64_t>();
         st.infSamples += r.at("inf_samples").get<std::uint64_t>();
         st.threadsUsed += r.at("threads_used").get<int>();
@@ -294,11 +299,15 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& a
     std::string setup = fmt::format("{:.3f} s", s.buildSeconds);
     if (const auto compile = s.stageSeconds.find("pipeline_host"); compile != s.stageSeconds.end())
         setup += fmt::format(", pipelines {:.3f} s", compile->second);
-    std::printf("%s: %dx%d, %d spp (%s, %s), depth %d, %s engine%s: render %.3f s, build %s, %.2f Mpaths/s, "
+    const std::string rays = s.raysCounted ? fmt::format(" ({:.2f} Mrays/s: camera {:.2f}, extension {:.2f}, shadow {:.2f})",
+                                                          s.mraysPerSecond(s.rays.total()), s.mraysPerSecond(s.rays.camera),
+                                                          s.mraysPerSecond(s.rays.extension), s.mraysPerSecond(s.rays.shadow))
+                                           : std::string();
+    std::printf("%s: %dx%d, %d spp (%s, %s), depth %d, %s engine%s: render %.3f s, build %s, %.2f Mpaths/s%s, "
                 "NaN %llu, Inf %llu%s\n",
                 request.scene.id.c_str(), s.width, s.height, s.trueSpp, toString(settings.sampling), estimatorLabel(settings).c_str(),
                 settings.depth, toString(s.engine), ranks.c_str(), s.renderSeconds, setup.c_str(), s.mpathsPerSecond(),
-                static_cast<unsigned long long>(s.nanSamples), static_cast<unsigned long long>(s.infSamples),
+                rays.c_str(), static_cast<unsigned long long>(s.nanSamples), static_cast<unsigned long long>(s.infSamples),
                 written.c_str());
     return 0;
 }

@@ -228,12 +228,13 @@ nlohmann::json rankStats(const Job& job, const FramePart& share, const RenderSta
                         {"build_seconds", stats.buildSeconds},
                         {"render_seconds", stats.renderSeconds},
                         {"paths", stats.paths},
-                        {"segments", stats.segments},
                         {"nan_samples", stats.nanSamples},
                         {"inf_samples", stats.infSamples},
                         {"threads_used", stats.threadsUsed}};
     if (stats.gpuSeconds >= 0.0)
         j["gpu_seconds"] = stats.gpuSeconds;
+    if (stats.raysCounted)
+        j["rays"] = toJson(stats.rays, stats.renderSeconds);
     return j;
 }
 } // namespace rt::cluster

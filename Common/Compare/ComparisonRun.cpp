@@ -159,7 +159,8 @@ ConvergenceRow csvRow(const std::string& scene, EngineKind engine, const std::st
 {
     return {scene, toString(engine), device, strategy.name(), label, m.spp, m.wallMs, m.gpuMs,
             m.mpathsPerSecond, m.error.mse, m.error.relMse, m.error.rmse, reference.ownRelMse.value_or(-1.0), seed,
-            round, m.error.trimmedRelMse, m.error.mape, m.error.flip, rank};
+            round, m.error.trimmedRelMse, m.error.mape, m.error.flip, rank, m.mraysPerSecond.camera,
+            m.mraysPerSecond.extension, m.mraysPerSecond.shadow};
 }
 
 std::string plusMinus(const Interval& i)

@@ -26,7 +26,7 @@ std::string field(const std::string& text)
 
 const char* ConvergenceCsv::header()
 {
-    return "scene,engine,device,strategy,label,spp,wall_ms,gpu_ms,mpaths_per_s,mse,relmse,rmse,reference_relmse,seed,round,trimmed_relmse,mape,flip,rank";
+    return "scene,engine,device,strategy,label,spp,wall_ms,gpu_ms,mpaths_per_s,mse,relmse,rmse,reference_relmse,seed,round,trimmed_relmse,mape,flip,rank,camera_mrays_per_s,extension_mrays_per_s,shadow_mrays_per_s";
 }
 
 ConvergenceCsv::ConvergenceCsv(const std::filesystem::path& path)
@@ -41,10 +41,11 @@ ConvergenceCsv::ConvergenceCsv(const std::filesystem::path& path)
 void ConvergenceCsv::append(const ConvergenceRow& r)
 {
     const std::string line =
-        fmt::format("{},{},{},{},{},{},{:.4f},{:.4f},{:.4f},{:.9g},{:.9g},{:.9g},{:.9g},{},{},{:.9g},{:.9g},{:.9g},{}\n",
+        fmt::format("{},{},{},{},{},{},{:.4f},{:.4f},{:.4f},{:.9g},{:.9g},{:.9g},{:.9g},{},{},{:.9g},{:.9g},{:.9g},{},{:.4f},{:.4f},{:.4f}\n",
                     field(r.scene), field(r.engine), field(r.device), field(r.strategy), field(r.label), r.spp,
                     r.wallMs, r.gpuMs, r.mpathsPerSecond, r.mse, r.relMse, r.rmse, r.referenceRelMse, r.seed, r.round,
-                    r.trimmedRelMse, r.mape, r.flip, r.rank);
+                    r.trimmedRelMse, r.mape, r.flip, r.rank, r.cameraMraysPerSecond, r.extensionMraysPerSecond,
+                    r.shadowMraysPerSecond);
     if (std::fputs(line.c_str(), m_file.get()) < 0 || std::fflush(m_file.get()) != 0)
         throw OutputError(fmt::format("cannot write {}: {}", m_path.string(), std::strerror(errno)));
 }

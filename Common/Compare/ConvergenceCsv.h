@@ -31,6 +31,9 @@ struct ConvergenceRow
     double mape = 0.0;
     double flip = -1.0; // mean HDR-FLIP; < 0: not computed (only with --metric flip, round 0)
     int rank = 0; // the MPI rank that rendered it (0 for a run of one process: docs/SCALING.md)
+    double cameraMraysPerSecond = -1.0; // rays traced per second by kind, in millions; < 0: not counted (the GPU
+    double extensionMraysPerSecond = -1.0; // engine without --count-rays)
+    double shadowMraysPerSecond = -1.0;
 };
 
 class ConvergenceCsv

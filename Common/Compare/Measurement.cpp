@@ -57,6 +57,9 @@ Measurement measure(RenderEngine& engine, const RenderRequest& request, const Im
     m.wallMs = r.stats.renderSeconds * 1e3;
     m.gpuMs = r.stats.gpuSeconds >= 0.0 ? r.stats.gpuSeconds * 1e3 : -1.0;
     m.mpathsPerSecond = r.stats.mpathsPerSecond();
+    if (r.stats.raysCounted)
+        m.mraysPerSecond = {r.stats.mraysPerSecond(r.stats.rays.camera), r.stats.mraysPerSecond(r.stats.rays.extension),
+                            r.stats.mraysPerSecond(r.stats.rays.shadow)};
     if (reference)
         m.error = compareImages(r.image, *reference);
     m.image = std::move(r.image);

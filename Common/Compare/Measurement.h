@@ -14,12 +14,21 @@
 
 namespace rt::compare
 {
+/// Rays traced per second by kind, in millions (RenderStats::mraysPerSecond); < 0: the engine did not count them.
+struct RayRates
+{
+    double camera = -1.0;
+    double extension = -1.0;
+    double shadow = -1.0;
+};
+
 struct Measurement
 {
     int spp = 0; // true spp
     double wallMs = 0.0; // host clock around the tracing
     double gpuMs = -1.0; // GPU timestamps around the trace dispatches; < 0 when the engine has none
     double mpathsPerSecond = 0.0;
+    RayRates mraysPerSecond;
     bool cancelled = false;
     bool timedOut = false; // cancelled by measure's time limit, not by Ctrl-C
     ErrorMetrics error; // against the reference, when one was given

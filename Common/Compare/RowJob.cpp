@@ -54,7 +54,7 @@ Unpacked unpack(const std::string& bytes, std::size_t numberCount)
     return u;
 }
 
-constexpr std::size_t kMeasurementNumbers = 10;
+constexpr std::size_t kMeasurementNumbers = 13;
 } // namespace
 
 std::string packMeasurement(const Measurement& m, bool withImage, const std::string& device)
@@ -66,7 +66,7 @@ std::string packMeasurement(const Measurement& m, bool withImage, const std::str
                                  {"height", image ? m.image.height() : 0}};
     const ErrorMetrics& e = m.error;
     return pack(head, {m.wallMs, m.gpuMs, m.mpathsPerSecond, e.mse, e.rmse, e.relMse, e.trimmedRelMse, e.mape, e.psnr,
-                       e.flip},
+                       e.flip, m.mraysPerSecond.camera, m.mraysPerSecond.extension, m.mraysPerSecond.shadow},
                 image ? &m.image : nullptr);
 }
 
@@ -87,6 +87,7 @@ Measurement unpackMeasurement(const std::string& bytes, std::string& device)
     m.error.mape = n[7];
     m.error.psnr = n[8];
     m.error.flip = n[9];
+    m.mraysPerSecond = {n[10], n[11], n[12]};
     m.image = std::move(u.image);
     return m;
 }

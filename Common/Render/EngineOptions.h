@@ -52,5 +52,6 @@ struct EngineOptions
     std::filesystem::path shaderDir; // GPU: --shader-dir; empty: the shaders beside the executable
     GpuIntegrator integrator = GpuIntegrator::Auto; // GPU
     std::uint32_t wavePaths = 0; // GPU: the wavefront's paths per wave; 0: by the device
+    bool countRays = false; // GPU: count rays by kind (--count-rays); the CPU engines always count them
 };
 } // namespace rt

@@ -95,7 +95,8 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
     st.renderSeconds = renderSeconds;
     st.gpuSeconds = deviceTimed ? deviceSeconds : -1.0;
     st.paths = pixels * samplesDone;
-    st.segments = tally.segments;
+    st.rays = tally.rays;
+    st.raysCounted = tally.raysCounted;
     st.nanSamples = tally.nanSamples;
     st.infSamples = tally.infSamples;
     st.threadsUsed = tally.threadsUsed;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "Image/Image.h"
+#include "Render/RayCounts.h"
 #include "Render/RenderControl.h"
 #include "Render/RenderSettings.h"
 #include "Scene/Scene.h"
@@ -19,7 +20,8 @@ namespace rt
 /// What an engine counted while tracing since beginFrame.
 struct SampleTally
 {
-    std::uint64_t segments = 0; // ray segments traced (0 when the engine does not count them)
+    RayCounts rays; // rays traced, by kind
+    bool raysCounted = false; // false: the engine did not count them (the GPU engine without --count-rays)
     std::uint64_t nanSamples = 0; // camera samples whose radiance had a NaN (dropped from the accumulator)
     std::uint64_t infSamples = 0; // ... or an infinity
     int threadsUsed = 1; // host threads that traced

@@ -27,10 +27,12 @@ nlohmann::json RenderStats::toJson() const
         j["gpu_seconds"] = gpuSeconds;
     j["paths"] = paths;
     j["mpaths_per_second"] = mpathsPerSecond();
-    if (segments > 0)
+    if (raysCounted)
     {
+        const std::uint64_t segments = rays.total();
         j["segments"] = segments;
         j["segments_per_path"] = paths ? double(segments) / double(paths) : 0.0;
+        j["rays"] = rt::toJson(rays, renderSeconds);
     }
     j["nan_samples"] = nanSamples;
     j["inf_samples"] = infSamples;

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "Render/RayCounts.h"
 #include "Render/RenderRequest.h"
 
 namespace rt
@@ -26,7 +27,8 @@ struct RenderStats
     double renderSeconds = 0.0; // tracing only, host clock
     double gpuSeconds = -1.0; // tracing only, the device's own clock (GPU timestamp queries); < 0: none
     std::uint64_t paths = 0; // camera paths traced (pixels x true spp)
-    std::uint64_t segments = 0; // ray segments traced (0 when the engine does not count them)
+    RayCounts rays; // rays traced by kind (the camera ray and the extension rays are a path's segments)
+    bool raysCounted = false; // false: the engine did not count them (the GPU engine without --count-rays)
     std::uint64_t nanSamples = 0; // camera samples whose radiance had a NaN (dropped from the image)
     std::uint64_t infSamples = 0; // ... or an infinity
     int threadsUsed = 1;
@@ -38,6 +40,8 @@ struct RenderStats
     nlohmann::json ranks; // a render split over MPI ranks: each rank's share, host, device, times; null otherwise
 
     double mpathsPerSecond() const { return renderSeconds > 0.0 ? double(paths) / renderSeconds * 1e-6 : 0.0; }
+    /// Millions of rays of `n` per second of tracing (renderSeconds, the host's clock, as mpathsPerSecond).
+    double mraysPerSecond(std::uint64_t n) const { return renderSeconds > 0.0 ? double(n) / renderSeconds * 1e-6 : 0.0; }
     nlohmann::json toJson() const;
 };
 

@@ -252,7 +252,7 @@ struct RenderUniforms
     uint restirSpatial; // restir-di: neighbours of spatial reuse per pixel and iteration (k)
     uint restirBiased; // restir-di: 1: the biased combination (1 / sum of M), without the neighbours' shadow rays
     uint restirTemporalCap; // restir-di: the last iteration's M capped at this many times restirCandidates; 0: none
-    uint pad0;
+    uint countRays; // 1: count the rays traced by kind in RayCounters (GPU, --count-rays)
     uint pad1;
     uint pad2;
 };
@@ -326,8 +326,9 @@ RT_CONST(uint, kBindingRestirSurfaces, 24u)   // RestirSurface[width * height]: 
 RT_CONST(uint, kBindingRestirTemporal, 25u)   // Reservoir[width * height]: after candidates and temporal reuse
 RT_CONST(uint, kBindingRestirFinal, 26u)      // Reservoir[width * height]: after spatial reuse, the next history
 RT_CONST(uint, kBindingRestirTraced, 27u)     // uvec2[width * height]: the camera sample a restir ray is traced as
-RT_CONST(uint, kBindingImages, 28u)           // sampler2D[]: the scene's images, 8-bit sRGB
-RT_CONST(uint, kBindingCount, 29u)
+RT_CONST(uint, kBindingRayCounters, 28u)      // RayCounters: rays traced by kind (--count-rays)
+RT_CONST(uint, kBindingImages, 29u)           // sampler2D[]: the scene's images, 8-bit sRGB
+RT_CONST(uint, kBindingCount, 30u)
 // The mixture's pdf reads every light at every vertex, all threads the same light at once: from a uniform
 // buffer (a GPU's constant cache, which broadcasts) when the scene has at most this many. 64 x 104 bytes fit
 // in the 16 KiB that Vulkan guarantees for a uniform buffer range.
@@ -374,13 +375,16 @@ RT_CONST(uint, kSpecIdExactSphereC, 5u)
 // acos and atan, a mesh's uv interpolation. Not a feature bit either, so that the mixture's pipelines set it
 // too: computing the uv cost the light book scenes and furnace 1-6 % on an H200 (§8.10).
 RT_CONST(uint, kSpecIdHitUv, 6u)
-RT_CONST(uint, kSpecIdCount, 7u)
+// RenderUniforms::countRays: 1 counts every ray traced in RayCounters (--count-rays); 0, the default, leaves the
+// counting code out of the pipeline.
+RT_CONST(uint, kSpecIdCountRays, 7u)
+RT_CONST(uint, kSpecIdCount, 8u)
 // Set by the pipeline's kind, not by the render (not in PipelineSpecialization's key): 1 in the wavefront
 // integrator's pipelines, where the intersection shaders find their path's pixel and sample in the queues.
-RT_CONST(uint, kSpecIdWavefront, 7u)
+RT_CONST(uint, kSpecIdWavefront, 8u)
 // 1 in restir-di's pipelines (Shaders/Restir/): the intersection shaders find the camera sample a ray is traced as
 // in kBindingRestirTraced (a neighbour's shadow ray is traced as the neighbour's sample).
-RT_CONST(uint, kSpecIdRestir, 8u)
+RT_CONST(uint, kSpecIdRestir, 9u)
 
 // The bits of kSpecIdFeatures (PipelineSpecialization.cpp sets them from rt::SceneFeatures and the uniforms).
 RT_CONST(uint, kFeatureTriangles, 0x1u)          // quads or meshes: Triangle.rchit's hit group
@@ -511,6 +515,23 @@ struct SampleCounters
     uint infSamples;
 };
 
+// RayCounters: the rays of each kind (Render/RayCounts.h) as 64-bit counts of two words, low and high, which 32-bit
+// atomics keep (the invocation whose add wraps the low word carries one into the high word), so that no device
+// needs 64-bit atomics. Each kind has kRayCounterSlots such counts, an invocation adding to the slot of its launch
+// column: the invocations of a subgroup add to different addresses instead of queueing on one. Device-local (an
+// atomic over PCIe per ray would be the render's cost); the host sums the slots.
+RT_CONST(uint, kRayCamera, 0u)
+RT_CONST(uint, kRayExtension, 1u)
+RT_CONST(uint, kRayShadow, 2u)
+RT_CONST(uint, kRayKinds, 3u)
+RT_CONST(uint, kRayCounterSlots, 32u)
+RT_CONST(uint, kRayCounterWords, 192u) // kRayCounterSlots x kRayKinds x 2 words: (slot x kRayKinds + kind) x 2 (+ 1: high)
+
+struct RayCounters
+{
+    uint words[kRayCounterWords];
+};
+
 // ---- The window of ray-tracing-gpu (RayTracingGPU/App/Gui): heatmap, display pass, raster preview ----------
 
 // Descriptor set 1 of the timed ray-generation shader (RayGenCost.rgen); set 0 is the path tracer's. One set
@@ -569,6 +590,7 @@ static_assert(sizeof(MediumRecord) == 64);
 static_assert(offsetof(MediumRecord, boxMax) == 32);
 static_assert(offsetof(MediumRecord, phaseMaterial) == 48);
 static_assert(sizeof(SampleCounters) == 8);
+static_assert(kRayCounterWords == kRayCounterSlots * kRayKinds * 2 && sizeof(RayCounters) == 4 * kRayCounterWords);
 static_assert(sizeof(CostStats) == 4 * (1 + kCostBuckets));
 static_assert(sizeof(DisplayPushConstants) == 32 && offsetof(DisplayPushConstants, imageOrigin) == 16);
 static_assert(sizeof(PreviewPushConstants) == 80 && offsetof(PreviewPushConstants, eye) == 64);

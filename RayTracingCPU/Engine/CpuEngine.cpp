@@ -172,7 +172,7 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
                 const std::uint64_t j = first + i;
                 jobs[i] = cameraJob(camera, media, std::uint32_t(j / count), std::uint32_t(y), firstSample + std::uint32_t(j % count));
             }
-            trace(scene, uniforms, std::span<const PathJob>(jobs, n), radiance, t.segments);
+            trace(scene, uniforms, std::span<const PathJob>(jobs, n), radiance, t.rays);
             for (std::uint32_t i = 0; i < n; ++i)
                 accumulate(sums[rowStart + std::size_t((first + i) / count)], radiance[i], t);
         }
@@ -220,7 +220,7 @@ BatchResult CpuEngine::traceRestir(std::uint32_t firstSample, std::uint32_t coun
                 return;
             RestirRowTally t;
             restirCandidatesRow(scene, uniforms, buffers, y, s, t);
-            f.rows[y].segments += t.segments;
+            f.rows[y].rays += t.rays;
         });
         if (control.cancelRequested())
         {
@@ -235,7 +235,7 @@ BatchResult CpuEngine::traceRestir(std::uint32_t firstSample, std::uint32_t coun
             RestirRowTally t;
             std::vector<vec3> radiance(std::size_t(f.width));
             restirShadeRow(scene, uniforms, buffers, y, s, radiance.data(), t);
-            tally.segments += t.segments;
+            tally.rays += t.rays;
             const std::size_t rowStart = std::size_t(y) * std::size_t(f.width);
             for (int x = 0; x < f.width; ++x)
             {
@@ -288,10 +288,11 @@ SampleTally CpuEngine::tally() const
     SampleTally total;
     if (!m_frame)
         return total;
+    total.raysCounted = true; // always: a count per traced ray, next to its traversal, costs nothing measurable
     std::unordered_set<std::size_t> threads;
     for (const RowTally& t : m_frame->rows)
     {
-        total.segments += t.segments;
+        total.rays += t.rays;
         total.nanSamples += t.nan;
         total.infSamples += t.inf;
         if (t.thread)

@@ -56,7 +56,7 @@ private:
     /// Per-row tallies, written by exactly one task at a time: no atomics on the hot path, summed by tally().
     struct RowTally
     {
-        std::uint64_t segments = 0;
+        RayCounts rays;
         std::uint64_t nan = 0;
         std::uint64_t inf = 0;
         std::size_t thread = 0; // hash of the thread that traced the row last

@@ -13,12 +13,12 @@
 
 namespace rt::cpu
 {
-/// Traces every job's path and writes job i's radiance (linear RGB) to radiance[i]. `segments` is incremented
-/// per ray traced, shadow rays included. Precondition: cs.tracesRayLanes(); C matches the scene and uniforms as
+/// Traces every job's path and writes job i's radiance (linear RGB) to radiance[i]. `counts` counts the rays
+/// traced. Precondition: cs.tracesRayLanes(); C matches the scene and uniforms as
 /// tracePath's must.
 template <PathCode C = PathCode{}>
 RT_FLATTEN inline void tracePaths(const CpuScene& cs, const shader::RenderUniforms& uniforms, std::span<const PathJob> jobs,
-                                  vec3* radiance, std::uint64_t& segments)
+                                  vec3* radiance, RayCounts& counts)
 {
     CpuShading<C> shading(cs, uniforms);
     shader::PathState paths[kLanes];
@@ -63,11 +63,11 @@ RT_FLATTEN inline void tracePaths(const CpuScene& cs, const shader::RenderUnifor
             const int job = jobOf[lane];
             if (job < 0)
                 continue;
-            ++segments;
+            countPathRay(counts, segmentOf[lane]);
             shader::PathState& path = paths[lane];
             // The vertex ends the path at its last segment (depth - 1), so segmentOf stays below the depth.
             if (continuePath<C>(shading, cs, path, jobs[job], segmentOf[lane]++, hits[lane].prim != kNoIndex, hits[lane],
-                                segments))
+                                counts))
             {
                 rays.set(lane, TraceRay(Ray{path.origin, path.direction, jobs[job].ray.time}, needs));
                 continue;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "Engine/CpuScene.h"
+#include "Render/RayCounts.h"
 #include "Shared/HostDevice.h"
 #include "Shared/Restir.h"
 
@@ -40,7 +41,7 @@ struct RestirBuffers
 /// What a row of a pass traced, for the engine's tally.
 struct RestirRowTally
 {
-    std::uint64_t segments = 0;
+    RayCounts rays;
 };
 
 /// Pass 1 for row y of sample `sampleIndex`.

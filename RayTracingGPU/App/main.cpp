@@ -185,6 +185,12 @@ int main(int argc, char** argv)
                    "GPU, wherever the wavefront runs: paths traced at once (each holds 204 bytes of state); 0: by the "
                    "device (16 M on a GPU of 48 GiB or more, 64 K on a CPU device)")
         ->check(CLI::Range(0u, 1u << 26));
+    bool countRays = false;
+    app.add_flag("--count-rays", countRays,
+                 "Headless and --compare: count the rays traced by kind (camera, extension, shadow) and report them "
+                 "per second in the summary line, --stats (\"rays\") and --compare's CSV; the pipelines are "
+                 "compiled with the counting atomics (a specialization constant), which cost some speed, so it is "
+                 "off by default (docs/GPU.md)");
     std::string shaderDir;
     app.add_option("--shader-dir", shaderDir,
                    "Load the SPIR-V shaders from this folder instead of the 'shaders' folder beside the app (the same "
@@ -220,7 +226,8 @@ int main(int argc, char** argv)
                                               .validation = validation,
                                               .shaderDir = shaderDir,
                                               .integrator = *rt::parseName<rt::GpuIntegrator>(integrator), // checked by CLI11
-                                              .wavePaths = wavePaths};
+                                              .wavePaths = wavePaths,
+                                              .countRays = countRays};
         if (compareFlags.compare)
             return rt::compare::runCompare(compareFlags, options, engineOptions);
         if (!options.headless && rt::cluster::job().distributed())

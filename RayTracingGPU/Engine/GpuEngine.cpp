@@ -60,6 +60,7 @@ struct GpuEngine::Impl
     std::map<std::string, double> frameStages; // stageSeconds() of the frame
     std::unique_ptr<WaveStageTimer> waveTimer; // made at the first wavefront launch on a device with timestamps
     std::uint32_t waveSegments = kFirstWaveSegments; // the wavefront's first submission per wave: its segments
+    bool countRays = false; // GpuEngineOptions::countRays
 
     explicit Impl(const GpuEngineOptions& options)
         : context({options.deviceIndex, options.deviceShare, options.validation, options.presentation}),
@@ -69,7 +70,8 @@ struct GpuEngine::Impl
           timestamps(context.device(), kRestirQueries + std::size(kRestirPasses) + 1),
           pathsPerBatch(options.pathsPerBatch > 0 ? options.pathsPerBatch
                         : context.device().properties().type == vk::DeviceType::Cpu ? kPathsPerBatchCpu
-                                                                                    : kPathsPerBatchGpu)
+                                                                                    : kPathsPerBatchGpu),
+          countRays(options.countRays)
     {
     }
 
@@ -375,6 +377,8 @@ void GpuEngine::setBandRows(std::uint32_t rows) { m_impl->fixedBandRows = rows; 
 
 void GpuEngine::setSpecialize(Specialize specialize) { m_impl->tracer.setSpecialize(specialize); }
 
+void GpuEngine::setCountRays(bool countRays) { m_impl->countRays = countRays; }
+
 void GpuEngine::setIntegrator(GpuIntegrator integrator, std::uint32_t waveCapacity)
 {
     m_impl->descriptors = {}; // they name the old wave buffers
@@ -419,6 +423,7 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     e.prepareTarget(width, height, restirDi);
     e.restirHistory = false;
     e.uniforms = e.tracer.uniforms(e.tracer.scene()->camera, settings, {width, height});
+    e.uniforms.countRays = e.countRays ? 1u : 0u;
     e.frameStages.clear();
     const auto compileStart = std::chrono::steady_clock::now();
     // restir-di runs its own passes (RestirPipeline), whatever the integrator setting.
@@ -546,7 +551,16 @@ SampleTally GpuEngine::tally() const
 {
     if (!m_impl->target)
         return {};
-    const shader::SampleCounters counters = m_impl->target->readCounters();
-    return {.segments = 0, .nanSamples = counters.nanSamples, .infSamples = counters.infSamples, .threadsUsed = 1};
+    Impl& e = *m_impl;
+    const shader::SampleCounters counters = e.target->readCounters();
+    SampleTally t{.nanSamples = counters.nanSamples, .infSamples = counters.infSamples, .threadsUsed = 1};
+    if (e.uniforms.countRays != 0u)
+    {
+        vk::submitAndWait(e.device(), e.context.commandPool(),
+                          [&](VkCommandBuffer cmd) { e.target->recordRayCountersReadback(cmd); });
+        t.rays = e.target->readRayCounts();
+        t.raysCounted = true;
+    }
+    return t;
 }
 } // namespace rt::gpu

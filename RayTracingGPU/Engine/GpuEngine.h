@@ -40,6 +40,9 @@ struct GpuEngineOptions
     GpuIntegrator integrator = GpuIntegrator::Auto;
     /// The wavefront's paths per wave; 0: by the device (waveCapacityFor).
     std::uint32_t wavePaths = 0;
+    /// Count the rays traced by kind (--count-rays): pipelines compiled with the counting atomics (kSpecIdCountRays),
+    /// a little slower; without it tally() reports no rays and the pipelines hold no counting code.
+    bool countRays = false;
     /// The window: the device must present to its surface (GpuContext.h). Headless leaves it empty.
     std::optional<Presentation> presentation;
 };
@@ -114,6 +117,8 @@ public:
     /// GpuEngineOptions::integrator, from the next frame on, with waves of `waveCapacity` paths (0: by the
     /// device; SceneTracer::setIntegrator).
     void setIntegrator(GpuIntegrator integrator, std::uint32_t waveCapacity = 0);
+    /// GpuEngineOptions::countRays, from the next frame on.
+    void setCountRays(bool countRays);
     /// true: Specialize::Full, false: Specialize::Off.
     void setSpecialize(bool specialize) { setSpecialize(specialize ? Specialize::Full : Specialize::Off); }
     /// BLAS and TLAS builds so far: a scene whose geometry equals the last one's builds nothing.

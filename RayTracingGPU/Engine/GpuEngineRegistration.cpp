@@ -18,7 +18,8 @@ std::unique_ptr<RenderEngine> makeGpuEngine(EngineKind, const EngineOptions& opt
                                                         .shaderDir = options.shaderDir,
                                                         .specialize = options.specialize,
                                                         .integrator = options.integrator,
-                                                        .wavePaths = options.wavePaths});
+                                                        .wavePaths = options.wavePaths,
+                                                        .countRays = options.countRays});
 }
 
 [[maybe_unused]] const bool kRegistered = engines::add({EngineKind::Gpu}, &makeGpuEngine);

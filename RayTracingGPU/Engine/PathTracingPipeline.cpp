@@ -44,7 +44,7 @@ std::vector<vk::DescriptorBinding> bindingsOf(std::uint32_t maxImages)
           kBindingUvs, kBindingTriangles, kBindingTriangleMaterials, kBindingSpheres, kBindingMedia, kBindingCounters,
           kBindingPrimitiveLights, kBindingLightAlias, kBindingLightBvh, kBindingLightBvhLeaves, kBindingWavePaths,
           kBindingWaveQueues, kBindingWaveCounters, kBindingRestirSurfaces, kBindingRestirTemporal, kBindingRestirFinal,
-          kBindingRestirTraced})
+          kBindingRestirTraced, kBindingRayCounters})
         add(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     add(kBindingImages, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, maxImages,
         VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT | VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT);
@@ -189,10 +189,11 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
         {kBindingRestirTraced, &restir.traced()},
     };
     std::vector<VkDescriptorBufferInfo> bufferInfos;
-    bufferInfos.reserve(std::size(storage) + 3);
+    bufferInfos.reserve(std::size(storage) + 4);
     bufferInfos.push_back({target.uniforms, 0, VK_WHOLE_SIZE});
     bufferInfos.push_back({target.counters, 0, VK_WHOLE_SIZE});
     bufferInfos.push_back({buffers.mixtureLights.Handle(), 0, VK_WHOLE_SIZE});
+    bufferInfos.push_back({target.rayCounters, 0, VK_WHOLE_SIZE});
     for (const auto& [binding, buffer] : storage)
         bufferInfos.push_back({buffer->Handle(), 0, VK_WHOLE_SIZE});
     std::vector<VkDescriptorImageInfo> imageInfos;
@@ -200,7 +201,7 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
         imageInfos.push_back({scene.sampler(), view.Handle(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
 
     std::vector<VkWriteDescriptorSet> writes;
-    writes.reserve(std::size(storage) + 6); // write() hands out references into it
+    writes.reserve(std::size(storage) + 7); // write() hands out references into it
     const auto write = [&](std::uint32_t binding, VkDescriptorType type, std::uint32_t count) -> VkWriteDescriptorSet& {
         VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         w.dstSet = set;
@@ -216,8 +217,9 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
     write(kBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1).pBufferInfo = &bufferInfos[0];
     write(kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[1];
     write(kBindingMixtureLights, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1).pBufferInfo = &bufferInfos[2];
+    write(kBindingRayCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[3];
     for (std::size_t i = 0; i < std::size(storage); ++i)
-        write(storage[i].first, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[i + 3];
+        write(storage[i].first, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[i + 4];
     // A scene without images binds none: the binding is partially bound with a variable count, allocated at 0
     // (no dummy texel needed), and no shader reads it (the general pipeline reads it only at image textures).
     if (!imageInfos.empty())

@@ -67,7 +67,8 @@ PipelineSpecialization PipelineSpecialization::strategyOf(const RenderUniforms& 
     // Accumulate is random jitter to the shaders (the passes are the host's): one pipeline serves both.
     const PixelSampling sampling = u.sampling == PixelSampling::Accumulate ? PixelSampling::Random : u.sampling;
     s.constants[kSpecIdSampling] = static_cast<std::uint32_t>(sampling);
-    static_assert(kSpecIdCount == 7, "a new constant id needs its value here");
+    s.constants[kSpecIdCountRays] = u.countRays != 0u ? 1u : 0u;
+    static_assert(kSpecIdCount == 8, "a new constant id needs its value here");
     return s;
 }
 
@@ -136,7 +137,8 @@ std::string PipelineSpecialization::describe() const
                     " sampling=" + value(kSpecIdSampling, [](std::uint32_t v) { return toString(PixelSampling(v)); }) +
                     " sphere-c=" +
                     value(kSpecIdExactSphereC, [](std::uint32_t v) { return v != 0u ? "exact" : "float"; }) +
-                    " uv=" + value(kSpecIdHitUv, [](std::uint32_t v) { return v != 0u ? "on" : "off"; }) + " ";
+                    " uv=" + value(kSpecIdHitUv, [](std::uint32_t v) { return v != 0u ? "on" : "off"; }) +
+                    (constants[kSpecIdCountRays] == 1u ? " rays=counted " : " ");
     s += "features=";
     if (features() == kSpecDynamic)
         return s + "all";

@@ -26,7 +26,9 @@ constexpr VkPipelineStageFlags kImageStages = VK_PIPELINE_STAGE_RAY_TRACING_SHAD
 ProgressiveFrame::ProgressiveFrame(const GpuEngine& engine, std::uint32_t frameSlots)
     : m_engine(&engine),
       m_counters(engine.context().device(), sizeof(shader::SampleCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                 vk::MemoryUse::Readback)
+                 vk::MemoryUse::Readback),
+      m_rayCounters(engine.context().device(), sizeof(shader::RayCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                    vk::MemoryUse::DeviceLocal)
 {
     const vk::Device& device = engine.context().device();
     for (std::uint32_t slot = 0; slot < frameSlots; ++slot)
@@ -72,7 +74,8 @@ void ProgressiveFrame::makeSets()
     m_sets.clear();
     for (const vk::Buffer& uniforms : m_uniforms)
         m_sets.push_back(m_engine->tracer().makeDescriptors({m_accumulationView.Handle(), m_compensationView.Handle(),
-                                                             uniforms.Handle(), m_counters.Handle(), m_restir.get()}));
+                                                             uniforms.Handle(), m_counters.Handle(), m_rayCounters.Handle(),
+                                                             m_restir.get()}));
 }
 
 void ProgressiveFrame::ensureRestir()

@@ -102,6 +102,7 @@ private:
     const GpuEngine* m_engine;
     std::vector<vk::Buffer> m_uniforms; // per slot
     vk::Buffer m_counters; // NaN / Inf samples, shared: only atomics touch it
+    vk::Buffer m_rayCounters; // RayCounters, bound but never counted in: the window's uniforms leave countRays 0
     vk::Image m_accumulation;
     vk::ImageView m_accumulationView;
     vk::Image m_compensation; // the Kahan compensation of m_accumulation's sums

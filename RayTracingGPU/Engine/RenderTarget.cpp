@@ -23,9 +23,33 @@ RenderTarget::RenderTarget(const vk::Device& device, std::uint32_t width, std::u
                              VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                              vk::MemoryUse::Readback),
       m_uniforms(device, sizeof(shader::RenderUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::Upload),
-      m_counters(device, sizeof(shader::SampleCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Readback)
+      m_counters(device, sizeof(shader::SampleCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Readback),
+      m_rayCounters(device, sizeof(shader::RayCounters),
+                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                        VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                    vk::MemoryUse::DeviceLocal),
+      m_rayCountersSnapshot(device, sizeof(shader::RayCounters),
+                            VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            vk::MemoryUse::DeviceLocal),
+      m_rayCountersReadback(device, sizeof(shader::RayCounters), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            vk::MemoryUse::Readback)
 {
 }
+
+namespace
+{
+/// Records the copy of buffer `from` into `to` (same size) after the ray-tracing shaders' writes, and makes the
+/// shaders that follow wait for it (they may write either).
+void copyAfterTracing(VkCommandBuffer cmd, VkBuffer from, VkBuffer to)
+{
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
+    const VkBufferCopy region{0, 0, sizeof(shader::RayCounters)};
+    vkCmdCopyBuffer(cmd, from, to, 1, &region);
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+}
+} // namespace
 
 void RenderTarget::reset(const shader::RenderUniforms& uniforms)
 {
@@ -50,6 +74,7 @@ void RenderTarget::recordClear(VkCommandBuffer cmd) const
                           VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
         vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &vk::kColorRange);
     }
+    vkCmdFillBuffer(cmd, m_rayCounters.Handle(), 0, VK_WHOLE_SIZE, 0u);
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 }
@@ -64,10 +89,33 @@ void RenderTarget::recordReadback(VkCommandBuffer cmd) const
                                 VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                                 VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
                                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    copyAfterTracing(cmd, m_rayCounters.Handle(), m_rayCountersSnapshot.Handle());
+}
+
+void RenderTarget::recordRayCountersReadback(VkCommandBuffer cmd) const
+{
+    copyAfterTracing(cmd, m_rayCounters.Handle(), m_rayCountersReadback.Handle());
+    vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                      VK_ACCESS_HOST_READ_BIT);
+}
+
+RayCounts RenderTarget::readRayCounts() const
+{
+    shader::RayCounters c;
+    std::memcpy(&c, m_rayCountersReadback.mapped(), sizeof(c));
+    std::uint64_t kinds[shader::kRayKinds] = {};
+    for (std::uint32_t slot = 0; slot < shader::kRayCounterSlots; ++slot)
+        for (std::uint32_t kind = 0; kind < shader::kRayKinds; ++kind)
+        {
+            const std::uint32_t word = (slot * shader::kRayKinds + kind) * 2u;
+            kinds[kind] += std::uint64_t(c.words[word]) | std::uint64_t(c.words[word + 1]) << 32;
+        }
+    return {kinds[shader::kRayCamera], kinds[shader::kRayExtension], kinds[shader::kRayShadow]};
 }
 
 void RenderTarget::recordRestore(VkCommandBuffer cmd) const
 {
+    copyAfterTracing(cmd, m_rayCountersSnapshot.Handle(), m_rayCounters.Handle());
     // The launches' contents are discarded (UNDEFINED) once they finished writing; back to GENERAL after.
     for (const auto& [image, buffer] : {std::pair{m_image.Handle(), m_readback.Handle()},
                                         std::pair{m_compensation.Handle(), m_compensationSnapshot.Handle()}})

@@ -70,7 +70,7 @@ RestirSurface findRestirSurface(inout PathState path)
     {
         if (!isFiniteVec(path.origin) || !isFiniteVec(path.direction))
             break;
-        traceToFirstHit(path.origin, path.direction);
+        traceToFirstHit(path.origin, path.direction, segment == 0u);
         if (payload.material != kNoIndex)
             depth += length(payload.position - path.origin);
         if (resamplesDirectAt(payload, segment, path))

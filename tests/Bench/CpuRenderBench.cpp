@@ -1,4 +1,4 @@
-// CPU engine benchmarks. Each renders a whole image and reports camera paths and ray segments per second.
+// CPU engine benchmarks. Each renders a whole image and reports camera paths and rays (every kind) per second.
 //   rt_bench --benchmark_filter=BookFinal         book 3's final scene, the books' own settings (16 spp)
 //   rt_bench --benchmark_filter=WhiteSpheres      BVH scaling with the number of spheres (thesis §4.3)
 //   rt_bench --benchmark_filter=Catalogue         every scene at a small size
@@ -25,7 +25,7 @@ void renderBenchmark(benchmark::State& state, const Scene& scene, const RenderSe
         RenderControl control;
         const RenderResult r = test::renderWithSettings(e, settings, control);
         paths += r.stats.paths;
-        segments += r.stats.segments;
+        segments += r.stats.rays.total();
         benchmark::DoNotOptimize(r.image.data());
     }
     state.counters["Mpaths/s"] = benchmark::Counter(double(paths) * 1e-6, benchmark::Counter::kIsRate);

@@ -38,6 +38,13 @@ floor = floors.pop()
 assert 0 < floor < min(float(r["relmse"]) for r in rows), (floor, rows)
 for r in rows:
     assert float(r["wall_ms"]) > 0 and float(r["relmse"]) > 0 and float(r["mse"]) > 0, r
+    # Rays per second by kind: the CPU engine always counts them, the GPU engine with --count-rays only; the
+    # mixture traces no shadow rays.
+    rates = [float(r[k + "_mrays_per_s"]) for k in ("camera", "extension", "shadow")]
+    if r["engine"] == "gpu":
+        assert rates == [-1, -1, -1], ("the GPU counted rays unasked", r)
+    else:
+        assert rates[0] > 0 and rates[1] > 0 and (rates[2] > 0) == (r["label"] == "nee-mis"), r
     assert abs(float(r["rmse"]) ** 2 - float(r["mse"])) < 1e-6 * float(r["mse"]) + 1e-12, r
     lines.setdefault((r["engine"], r["label"]), []).append(int(r["spp"]) * (float(r["relmse"]) - floor))
 assert set(lines) == {("multi", "mixture"), ("multi", "nee-mis"), ("gpu", "mixture"), ("gpu", "nee-mis")}, lines

@@ -34,7 +34,7 @@ for np_ in 2 3; do
     python3 - "$work" "np$np_" "$np_" <<'PY' || fail "np$np_: not one process's comparison"
 import csv, json, sys
 work, name, ranks = sys.argv[1], sys.argv[2], int(sys.argv[3])
-times = {"wall_ms", "gpu_ms", "mpaths_per_s", "rank"}
+times = {"wall_ms", "gpu_ms", "mpaths_per_s", "rank", "camera_mrays_per_s", "extension_mrays_per_s", "shadow_mrays_per_s"}
 def rows(path):
     out = {}
     for r in csv.DictReader(open(path)):

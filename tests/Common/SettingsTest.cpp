@@ -213,5 +213,27 @@ TEST(RenderStats, JsonReportsWhatWasRendered)
     stats.gpuSeconds = 0.25;
     EXPECT_EQ(stats.toJson().at("gpu_seconds"), 0.25);
 }
+
+TEST(RenderStats, RaysByKindAndTheirRatesOnlyWhereCounted)
+{
+    RenderStats stats;
+    stats.paths = 1000;
+    stats.renderSeconds = 0.5;
+    stats.rays = {1000, 2500, 3000};
+    EXPECT_FALSE(stats.toJson().contains("rays")) << "the GPU engine without --count-rays counts none";
+    EXPECT_FALSE(stats.toJson().contains("segments"));
+    stats.raysCounted = true;
+    const nlohmann::json j = stats.toJson();
+    EXPECT_EQ(j.at("segments"), 6500);
+    EXPECT_DOUBLE_EQ(j.at("segments_per_path").get<double>(), 6.5);
+    const nlohmann::json& rays = j.at("rays");
+    EXPECT_EQ(rays.at("camera"), 1000);
+    EXPECT_EQ(rays.at("extension"), 2500);
+    EXPECT_EQ(rays.at("shadow"), 3000);
+    EXPECT_EQ(rays.at("total"), 6500);
+    EXPECT_DOUBLE_EQ(rays.at("mrays_per_second").at("shadow").get<double>(), 3000 / 0.5 * 1e-6);
+    EXPECT_DOUBLE_EQ(rays.at("mrays_per_second").at("total").get<double>(), 6500 / 0.5 * 1e-6);
+    EXPECT_EQ(rayCountsFromJson(rays), stats.rays) << "an MPI rank's counts read back as they were sent";
+}
 } // namespace
 } // namespace rt

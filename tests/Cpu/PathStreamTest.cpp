@@ -133,20 +133,27 @@ void expectTracePathsIsTracePath(const Scene& scene, Estimator estimator, std::v
     settings.estimator = estimator;
     const shader::RenderUniforms uniforms = makeUniforms(scene, scene.camera, settings, 64, 64);
     std::vector<vec3> radiance(jobs.size(), vec3(-1.0f));
-    std::uint64_t laneSegments = 0;
-    variant.traceLanes(cs, uniforms, jobs, radiance.data(), laneSegments);
-    std::uint64_t segments = 0;
+    RayCounts laneRays;
+    variant.traceLanes(cs, uniforms, jobs, radiance.data(), laneRays);
+    RayCounts rays;
     bool light = false;
     for (std::size_t i = 0; i < jobs.size(); ++i)
     {
         vec3 alone;
-        variant.trace(cs, uniforms, std::span<const PathJob>(&jobs[i], 1), &alone, segments);
+        variant.trace(cs, uniforms, std::span<const PathJob>(&jobs[i], 1), &alone, rays);
         ASSERT_TRUE(sameBits(radiance[i], alone))
             << name << ", depth " << depth << ", " << jobs.size() << " jobs: job " << i << " (" << radiance[i].x
             << " against " << alone.x << ")";
         light |= maxComponent(alone) > 0.0f;
     }
-    EXPECT_EQ(laneSegments, segments) << name;
+    // The same rays of each kind: a path ray of each job per segment traced, a shadow ray per light sample.
+    EXPECT_EQ(laneRays, rays) << name;
+    EXPECT_EQ(rays.camera, depth > 0 ? jobs.size() : 0u) << name;
+    if (depth > 1 && jobs.size() > 50)
+    {
+        EXPECT_GT(rays.extension, 0u) << name;
+        EXPECT_EQ(rays.shadow > 0u, shader::usesNee(estimator)) << name << ": shadow rays are NEE's alone";
+    }
     if (depth > 1 && jobs.size() > 50)
     {
         EXPECT_TRUE(light) << name << ": no path found light, the comparison proves little";

@@ -1,0 +1,66 @@
+// Rays by kind (Render/RayCounts.h) where their number is known in closed form: inside the white furnace (a closed
+// sphere) every path that Russian roulette does not end traces exactly `depth` segments, its camera ray and
+// depth - 1 extension rays, and an estimator with NEE traces a shadow ray at each of its vertices but the last
+// (the last vertex ends the path: the light it would sample lies beyond the depth).
+#include <gtest/gtest.h>
+
+#include "RenderTestSupport.h"
+#include "Scenes/Catalogue.h"
+#include "Shared/Estimator.h"
+
+namespace rt::test
+{
+namespace
+{
+constexpr int kDepth = 5;
+
+RenderResult renderFurnace(Estimator estimator, bool roulette, EngineKind engine)
+{
+    const Scene scene = makeFurnace(0.5f, 0.5f);
+    RenderSettings s = smallSettings(16, 3, kDepth, estimator);
+    s.russianRoulette = roulette;
+    s.unidirectionalLight = scene.defaults.unidirectionalLight;
+    return renderCpu(scene, s, engine);
+}
+
+TEST(RayCounts, InTheFurnaceEveryPathTracesItsDepthAndNeeAShadowRayPerVertexButTheLast)
+{
+    for (const EngineKind engine : {EngineKind::Single, EngineKind::Multi})
+        for (const Estimator e : {Estimator::BsdfOnly, Estimator::Mixture, Estimator::Nee, Estimator::NeeMis})
+        {
+            const RenderResult r = renderFurnace(e, false, engine);
+            const RenderStats& st = r.stats;
+            ASSERT_TRUE(st.raysCounted);
+            EXPECT_EQ(st.paths, 16u * 16u * 3u);
+            EXPECT_EQ(st.rays.camera, st.paths) << toString(e);
+            EXPECT_EQ(st.rays.extension, (kDepth - 1) * st.paths) << toString(e);
+            EXPECT_EQ(st.rays.shadow, shader::usesNee(e) ? (kDepth - 1) * st.paths : 0u) << toString(e);
+            EXPECT_DOUBLE_EQ(st.mraysPerSecond(st.rays.total()), double(st.rays.total()) / st.renderSeconds * 1e-6);
+        }
+}
+
+TEST(RayCounts, RussianRouletteEndsSomePathsEarly)
+{
+    // Albedo 0.5: from the third segment a path survives with probability 0.5 per bounce, so about a quarter of
+    // the full length's extension rays remain; each camera ray is still traced once.
+    const RenderStats st = renderFurnace(Estimator::NeeMis, true, EngineKind::Multi).stats;
+    EXPECT_EQ(st.rays.camera, st.paths);
+    EXPECT_GT(st.rays.extension, st.paths);
+    EXPECT_LT(st.rays.extension, 3 * st.paths);
+    // NEE runs at a vertex before the roulette (drawn after scattering): a shadow ray at every vertex a path goes
+    // on from, and one more at the vertex where the roulette ends it, at most once per path.
+    EXPECT_GT(st.rays.shadow, st.rays.extension);
+    EXPECT_LE(st.rays.shadow, st.rays.extension + st.paths);
+}
+
+TEST(RayCounts, RestirTracesEachCameraPathTwice)
+{
+    // The candidates pass traces the camera ray to the vertex it resamples at, the shading pass the whole path
+    // again from the camera: two camera rays per path, the extension rays once.
+    const RenderStats st = renderFurnace(Estimator::RestirDi, false, EngineKind::Multi).stats;
+    EXPECT_EQ(st.rays.camera, 2 * st.paths);
+    EXPECT_EQ(st.rays.extension, (kDepth - 1) * st.paths);
+    EXPECT_GT(st.rays.shadow, (kDepth - 2) * st.paths) << "NEE past the resampled vertex, and the reservoirs' rays";
+}
+} // namespace
+} // namespace rt::test
