@@ -7,15 +7,28 @@
 // Far enough for any scene, finite so that no driver sees an infinite interval.
 const float kRayTMax = 3.0e38;
 
-/// Counts one ray of `kind` (kRayCamera, kRayExtension, kRayShadow) in RayCounters where the render counts rays;
-/// nothing at all (the constant folds it away) where it does not.
+#include "RayCount.glsl"
+
+// This invocation's rays by kind (kRayCamera, kRayExtension, kRayShadow) since it began, for flushRayCounts.
+uvec3 tracedRays = uvec3(0u);
+
+/// Counts one ray of `kind` where the render counts rays (--count-rays) and the wavefront does not count its
+/// queues instead; nothing at all (the constants fold it away) elsewhere.
 void countRay(uint kind)
 {
-    if (!settingCountRays())
+    if (settingCountRays() && !kWavefront)
+        tracedRays[kind] += 1u;
+}
+
+/// Adds this invocation's counted rays to RayCounters: the last thing every ray-generation shader that traces does
+/// (the wavefront's rays are counted by Prepare.comp).
+void flushRayCounts()
+{
+    if (!settingCountRays() || kWavefront)
         return;
-    const uint word = ((gl_LaunchIDEXT.x % kRayCounterSlots) * kRayKinds + kind) * 2u;
-    if (atomicAdd(rayCounters.words[word], 1u) == 0xFFFFFFFFu)
-        atomicAdd(rayCounters.words[word + 1u], 1u);
+    for (uint kind = 0u; kind < kRayKinds; ++kind)
+        if (tracedRays[kind] > 0u)
+            addRays(gl_LaunchIDEXT.x, kind, tracedRays[kind]);
 }
 
 /// Traces the path ray (origin, direction) into `payload`: its closest hit, or the background (Background.rmiss).

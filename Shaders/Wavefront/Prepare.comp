@@ -8,12 +8,22 @@
 
 #define RT_COMPUTE_KERNEL
 #include "Bindings.glsl"
+#include "RayCount.glsl"
 
 layout(local_size_x = 1) in;
 
 void main()
 {
     uint paths = waveCounters.pushed;
+    // --count-rays: the next Extend traces these paths' rays (their camera rays at segment 0), the Shadow launch
+    // after this kernel the shadow rays the last Shade queued.
+    if (settingCountRays())
+    {
+        if (paths > 0u)
+            addRays(0u, push.waveSegment == 0u ? kRayCamera : kRayExtension, paths);
+        if (waveCounters.shadowsPushed > 0u)
+            addRays(0u, kRayShadow, waveCounters.shadowsPushed);
+    }
     waveCounters.extendRays = uvec4(paths, 1u, 1u, 0u);
     waveCounters.shadeGroups = uvec4((paths + kWaveGroupSize - 1u) / kWaveGroupSize, 1u, 1u, 0u);
     waveCounters.shadowRays = uvec4(waveCounters.shadowsPushed, 1u, 1u, 0u);

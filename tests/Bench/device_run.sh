@@ -19,6 +19,8 @@
 #   tests/Bench/device_run.sh bars     issue 9's efficiency bars in one run: cornell-box-lights (mixture
 #                                      against nee-mis) and many-lights (light selections), by --compare
 #                                      (INTEGRATOR: the GPU integrator, default the app's)
+#   tests/Bench/device_run.sh rays     issue 42: every catalogue scene (600 px, 256 spp) without and with
+#                                      --count-rays: what counting costs, the images alike, rays per second by kind
 #   tests/Bench/device_run.sh integrators [RENDERS_FILE]  the megakernel against the wavefront, render by
 #                                      render (default tests/Bench/renders/integrators.txt)
 #   tests/Bench/device_run.sh veach     issue 35: Veach's MIS scene, bsdf / nee / nee-mis each for BUDGET_MS
@@ -92,6 +94,16 @@ specialization)
     cp "$work"/*.json "$out/specialization/"
     ROUNDS=3 bash tests/Bench/specialization_figure.sh "$bin" "$work/figure" | tee "$out/figure.txt"
     cp "$work"/figure/*.json "$out/specialization/"
+    ;;
+rays)
+    # Issue 42: every catalogue scene at 600 px, 256 spp without and with --count-rays (the same build), the
+    # images compared (counting must leave them bit for bit), then the rays per second by kind.
+    renders=/tmp/rays-renders.txt
+    grep -v '^\s*\(#\|$\)' tests/Bench/renders/catalogue-256.txt | sed 's/^\([^ ]*\) \(.*\)$/\1 \2 || \2 --count-rays/' \
+        >"$renders"
+    ROUNDS=${ROUNDS:-2} bash tests/Bench/gpu_ab.sh "$bin" "$bin" /tmp/rays "$renders" | tee "$out/rays-ab.txt"
+    python3 tests/Bench/rays_table.py /tmp/rays "$renders" | tee "$out/rays.md"
+    (cd /tmp/rays && tar -czf "$out/rays-stats.tar.gz" ./*.json)
     ;;
 integrators)
     ROUNDS=${ROUNDS:-2} bash tests/Bench/gpu_ab.sh "$bin" "$bin" /tmp/ab "${2:-tests/Bench/renders/integrators.txt}" |

@@ -69,6 +69,20 @@ TEST_F(GpuRayCounts, InTheFurnaceEveryPathTracesItsDepthOnBothIntegrators)
         }
 }
 
+TEST_F(GpuRayCounts, RestirTracesEachCameraPathTwice)
+{
+    // As on the CPU (tests/Cpu/RayCountTest.cpp): the candidates pass traces the camera ray to the vertex it
+    // resamples at, the shading pass the whole path again; each of the three passes adds its own counts.
+    const Scene furnace = makeFurnace(0.5f, 0.5f);
+    RenderSettings s = settingsOf(16, 2, kDepth, Estimator::RestirDi, false);
+    s.unidirectionalLight = furnace.defaults.unidirectionalLight;
+    const RenderStats st = renderOnGpu(furnace, s).stats;
+    ASSERT_TRUE(st.raysCounted);
+    EXPECT_EQ(st.rays.camera, 2 * st.paths);
+    EXPECT_EQ(st.rays.extension, (kDepth - 1) * st.paths);
+    EXPECT_GT(st.rays.shadow, (kDepth - 2) * st.paths) << "NEE past the resampled vertex, and the reservoirs' rays";
+}
+
 TEST_F(GpuRayCounts, AgreeWithTheCpuEngineAndLeaveTheImageAsItWas)
 {
     // The engines trace the same paths from the same random numbers; a float rounding differently may send one
