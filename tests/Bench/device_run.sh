@@ -21,6 +21,8 @@
 #                                      (INTEGRATOR: the GPU integrator, default the app's)
 #   tests/Bench/device_run.sh rays     issue 42: every catalogue scene (600 px, 256 spp) without and with
 #                                      --count-rays: what counting costs, the images alike, rays per second by kind
+#   tests/Bench/device_run.sh cpu-rays [RENDERS_FILE]  issue 42: the host's CPU engine on every core, rays per
+#                                      second by kind (default: the renders of `rays`)
 #   tests/Bench/device_run.sh integrators [RENDERS_FILE]  the megakernel against the wavefront, render by
 #                                      render (default tests/Bench/renders/integrators.txt)
 #   tests/Bench/device_run.sh veach     issue 35: Veach's MIS scene, bsdf / nee / nee-mis each for BUDGET_MS
@@ -104,6 +106,12 @@ rays)
     ROUNDS=${ROUNDS:-2} bash tests/Bench/gpu_ab.sh "$bin" "$bin" /tmp/rays "$renders" | tee "$out/rays-ab.txt"
     python3 tests/Bench/rays_table.py /tmp/rays "$renders" | tee "$out/rays.md"
     (cd /tmp/rays && tar -czf "$out/rays-stats.tar.gz" ./*.json)
+    ;;
+cpu-rays)
+    # Issue 42: the host's CPU engine (every core) on the renders of `rays`: its rays per second by kind.
+    bash tests/Bench/cpu_rays.sh "$bin/ray-tracing-cpu" "${2:-tests/Bench/renders/catalogue-256.txt}" /tmp/cpurays |
+        tee "$out/cpu-rays.md"
+    (cd /tmp/cpurays && tar -czf "$out/cpu-rays-stats.tar.gz" ./*.json)
     ;;
 integrators)
     ROUNDS=${ROUNDS:-2} bash tests/Bench/gpu_ab.sh "$bin" "$bin" /tmp/ab "${2:-tests/Bench/renders/integrators.txt}" |

@@ -138,12 +138,13 @@ TEST(ConvergenceCsv, WritesTheHeaderAndQuotesFieldsWithCommas)
     {
         ConvergenceCsv csv(path);
         csv.append({"cornell-box-lights", "gpu", "llvmpipe (LLVM 15.0.7, 256 bits)", "nee-mis projected bvh random rr-on",
-                    "nee-mis", 16, 12.5, 3.25, 1.5, 0.01, 0.02, 0.1, 0.00125, 7, 2, 0.015, 0.25, 0.0625, 3});
+                    "nee-mis", 16, 12.5, 3.25, 1.5, 0.01, 0.02, 0.1, 0.00125, 7, 2, 0.015, 0.25, 0.0625, 3, 150.0,
+                    225.5, 210.25});
     }
     const std::string text = test::fileContents(path);
     EXPECT_EQ(text.substr(0, text.find('\n')), ConvergenceCsv::header());
     EXPECT_NE(text.find(",\"llvmpipe (LLVM 15.0.7, 256 bits)\",nee-mis projected bvh random rr-on,nee-mis,16,12.5000,"
-                        "3.2500,1.5000,0.01,0.02,0.1,0.00125,7,2,0.015,0.25,0.0625,3\n"),
+                        "3.2500,1.5000,0.01,0.02,0.1,0.00125,7,2,0.015,0.25,0.0625,3,150.0000,225.5000,210.2500\n"),
               std::string::npos)
         << text;
     EXPECT_THROW(ConvergenceCsv(dir / "missing" / "rows.csv"), OutputError);

@@ -1,0 +1,39 @@
+#!/usr/bin/env python3
+"""The GPU engine against the CPU engine of the same host at equal work (issue 42's GPU/CPU16 ratio), as Markdown.
+
+    gpu_over_cpu.py GPU_STATS_DIR CPU_STATS_DIR RENDERS_FILE
+
+GPU_STATS_DIR: a gpu_ab.sh run (NAME-a-R.json: the A side's rounds, the render without --count-rays, as
+device_run.sh rays leaves them); CPU_STATS_DIR: one CPU render each (NAME.json, tests/Bench/cpu_rays.sh). Per
+render: the CPU's render seconds over the GPU's fastest, on the GPU's own clock and on the host's, and the two
+engines' rays per path (the same paths, so the same rays but for rounding).
+"""
+import json
+import sys
+
+
+def main(gpu_dir, cpu_dir, renders):
+    names = [line.split()[0] for line in open(renders) if line.strip() and not line.lstrip().startswith("#")]
+    print("| render | CPU s | GPU ms (GPU clock) | CPU / GPU | CPU / GPU (host clock) | rays/path CPU | rays/path GPU |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
+    for name in names:
+        runs = []
+        r = 1
+        while True:
+            try:
+                runs.append(json.load(open(f"{gpu_dir}/{name}-a-{r}.json")))
+            except FileNotFoundError:
+                break
+            r += 1
+        gpu = min(runs, key=lambda j: j["gpu_seconds"])
+        counted = json.load(open(f"{gpu_dir}/{name}-b-1.json"))
+        cpu = json.load(open(f"{cpu_dir}/{name}.json"))
+        print(f"| {name} | {cpu['render_seconds']:.2f} | {gpu['gpu_seconds'] * 1e3:.1f} | "
+              f"{cpu['render_seconds'] / gpu['gpu_seconds']:.1f} | {cpu['render_seconds'] / gpu['render_seconds']:.1f} | "
+              f"{cpu['rays']['total'] / cpu['paths']:.3f} | {counted['rays']['total'] / counted['paths']:.3f} |")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 4:
+        sys.exit(__doc__)
+    main(*sys.argv[1:])
