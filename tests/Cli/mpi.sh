@@ -111,12 +111,17 @@ long_render() {
     grep -q "acceleration structures built" "$work/stderr" || fail "the long render never started"
     sleep 3 # rank 1 builds too, and the batches settle to their planned length
 }
-# Ctrl-C to mpirun: every rank stops within a second (mpirun kills what is left a second after), no file.
+# Ctrl-C to mpirun: every rank stops within a second (mpirun kills what is left a second after), no file. Root
+# reports the cancel once its batch ends: on the CPU engine (cancelled between camera samples) always; a lavapipe
+# band can outlast that second when the machine's two cores are busy (the default suite runs two tests at once),
+# so there the line may be missing, never wrong, as for a killed rank below.
 long_render
 kill -INT "$pid"
 wait_bounded 3
 [ "$status" != 0 ] || fail "Ctrl-C: status 0"
-grep -q "render cancelled" "$work/stderr" || fail "Ctrl-C: root did not report the cancel (killed before it?)"
+if [ "$kind" = cpu ]; then
+    grep -q "render cancelled" "$work/stderr" || fail "Ctrl-C: root did not report the cancel (killed before it?)"
+fi
 ! grep -q '^error:' "$work/stderr" || fail "Ctrl-C: an error line where every rank was cancelled"
 ! left_behind || fail "Ctrl-C: files left behind: $(ls "$work")"
 echo "ok: Ctrl-C"
