@@ -29,12 +29,13 @@ inline constexpr std::uint64_t kWavefrontMinPaths = std::uint64_t(1) << 24;
 
 /// What `setting` runs for a render of `paths` camera paths (the headless render's width x height x spp; a
 /// window frame's) with `uniforms`, of a scene of `primitives` traced primitives (TLAS instances'
-/// triangles, spheres and media, counted per instance). Auto: the megakernel on a CPU device (lavapipe, where
-/// the wavefront's extra launches only cost); else the wavefront where a vertex evaluates several lights (NEE
-/// over at least two emitters, from kWavefrontMinPathsNee paths; book 3's mixture over at least two lights:
-/// the shading the megakernel runs slowest) or the scene has kWavefrontPrimitives or more, from
-/// kWavefrontMinPaths paths; else the megakernel, which is faster for light scenes and small renders (the
-/// wavefront moves a path's state through memory at every segment). Pure.
+/// triangles, spheres and media, counted per instance), `media` where it has participating media. Auto: the
+/// megakernel on a CPU device (lavapipe, where the wavefront's extra launches only cost); else the wavefront
+/// where a vertex evaluates several lights (NEE over at least two emitters, from kWavefrontMinPathsNee paths),
+/// and from kWavefrontMinPaths paths where its shading or traversal is dear: book 3's mixture over at least two
+/// lights, NEE at one emitter in a scene of more than that emitter, media, or kWavefrontPrimitives primitives or
+/// more; else the megakernel, which is faster for light scenes and small renders (the wavefront moves a path's
+/// state through memory at every segment). Pure.
 GpuIntegrator resolveIntegrator(GpuIntegrator setting, bool cpuDevice, const shader::RenderUniforms& uniforms,
-                                std::uint64_t primitives, std::uint64_t paths);
+                                std::uint64_t primitives, std::uint64_t paths, bool media = false);
 } // namespace rt::gpu

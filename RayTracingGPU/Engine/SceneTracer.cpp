@@ -75,8 +75,9 @@ GpuIntegrator SceneTracer::integratorFor(const shader::RenderUniforms& uniforms,
 {
     if (!m_wavesReady)
         return GpuIntegrator::Megakernel;
+    const PipelineScene& scene = gpuScene().pipelineScene();
     return resolveIntegrator(m_integrator, m_device->properties().type == vk::DeviceType::Cpu, uniforms,
-                             gpuScene().pipelineScene().tracedPrimitives, paths);
+                             scene.tracedPrimitives, paths, (scene.features & shader::kFeatureMedia) != 0u);
 }
 
 SceneTracer::~SceneTracer() = default;

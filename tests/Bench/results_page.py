@@ -1215,8 +1215,11 @@ def section_rays():
         code("bash tests/Bench/device_run.sh cpu-rays"),
         "",
         "The GPU against the 16-core CPU at equal work (the same paths; issue 42 asks for 30x on every scene): the "
-        "CPU's render seconds over the GPU's, without counting. Below 30x: `rtnw-cornell-smoke`, "
-        "`rtrol-cornell-glass` and `sphere-light-closeup`.",
+        "CPU's render seconds over the GPU's, without counting. Below 30x in this table: `rtnw-cornell-smoke`, "
+        "`rtrol-cornell-glass` and `sphere-light-closeup`. Since then the auto integrator takes the wavefront for "
+        "NEE at one emitter and for media (notebook §26, `docs/results/h100-integrator-rule/`): "
+        "`rtnw-cornell-smoke` 74.5 ms (30.6x), `sphere-light-closeup` 26.4 ms (44.3x), `rect-light-closeup` 29.0 ms "
+        "(62.4x); `rtrol-cornell-glass` (23.7x) is the one left below.",
         "",
         table("gpu-over-cpu16.md"),
         "",
