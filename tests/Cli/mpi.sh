@@ -42,9 +42,9 @@ for np_ in 2 3; do
     [ "$(grep -c . "$work/stdout")" = 1 ] || fail "$np_ ranks: one summary line expected, got: $(cat "$work/stdout")"
     same_image "$work/one.pfm" "$work/np$np_.pfm" || fail "$np_ ranks: the HDR image is not one process's"
     [ "$kind" != cpu ] || cmp -s "$work/one.png" "$work/np$np_.png" || fail "$np_ ranks: the PNG is not one process's"
-    python3 - "$work/np$np_.json" "$np_" <<'PY' || fail "$np_ ranks: stats"
+    python3 - "$work/np$np_.json" "$np_" "$work/one.json" "$kind" <<'PY' || fail "$np_ ranks: stats"
 import json, sys
-s = json.load(open(sys.argv[1])); n = int(sys.argv[2])
+s = json.load(open(sys.argv[1])); n = int(sys.argv[2]); one = json.load(open(sys.argv[3]))
 r = s["ranks"]
 assert len(r) == n, r
 assert [x["rank"] for x in r] == list(range(n)), r
@@ -56,6 +56,15 @@ for x in r:  # consecutive shares of the sample indices, the first ranks one mor
 assert max(x["samples"] for x in r) - min(x["samples"] for x in r) <= 1, r
 assert s["paths"] == 40 * 40 * 7, s["paths"]
 assert all(x["device"] and x["host"] for x in r), r
+# The job's rays by kind are its ranks' summed: on the CPU (which always counts) one process's paths and rays;
+# the GPU counts none without --count-rays.
+kinds = ("camera", "extension", "shadow")
+if sys.argv[4] == "cpu":
+    assert {k: s["rays"][k] for k in kinds} == {k: one["rays"][k] for k in kinds}, (s["rays"], one["rays"])
+    assert all(sum(x["rays"][k] for x in r) == s["rays"][k] for k in kinds), r
+    assert s["rays"]["camera"] == s["paths"], s["rays"]
+else:
+    assert "rays" not in s and all("rays" not in x for x in r), s
 PY
 done
 echo "ok: 2 and 3 ranks render one process's image"
