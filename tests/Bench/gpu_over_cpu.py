@@ -11,21 +11,14 @@ engines' rays per path (the same paths, so the same rays but for rounding).
 import json
 import sys
 
+from rays_table import fastest, render_names
+
 
 def main(gpu_dir, cpu_dir, renders):
-    names = [line.split()[0] for line in open(renders) if line.strip() and not line.lstrip().startswith("#")]
     print("| render | CPU s | GPU ms (GPU clock) | CPU / GPU | CPU / GPU (host clock) | rays/path CPU | rays/path GPU |")
     print("|---|---:|---:|---:|---:|---:|---:|")
-    for name in names:
-        runs = []
-        r = 1
-        while True:
-            try:
-                runs.append(json.load(open(f"{gpu_dir}/{name}-a-{r}.json")))
-            except FileNotFoundError:
-                break
-            r += 1
-        gpu = min(runs, key=lambda j: j["gpu_seconds"])
+    for name in render_names(renders):
+        gpu = fastest(gpu_dir, name, "a")
         counted = json.load(open(f"{gpu_dir}/{name}-b-1.json"))
         cpu = json.load(open(f"{cpu_dir}/{name}.json"))
         print(f"| {name} | {cpu['render_seconds']:.2f} | {gpu['gpu_seconds'] * 1e3:.1f} | "

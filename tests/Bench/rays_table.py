@@ -13,7 +13,13 @@ import json
 import sys
 
 
+def render_names(renders):
+    """The names of a renders file's renders (gpu_ab.sh's format: NAME ARGS..., `#` comments)."""
+    return [line.split()[0] for line in open(renders) if line.strip() and not line.lstrip().startswith("#")]
+
+
 def fastest(out, name, side):
+    """The stats of gpu_ab.sh's fastest round of side `side` ("a" or "b") of render `name`, by GPU time."""
     runs = []
     r = 1
     while True:
@@ -41,7 +47,7 @@ def main(args):
     if len(args) != 2:
         sys.exit(__doc__)
     out, renders = args
-    names = [line.split()[0] for line in open(renders) if line.strip() and not line.lstrip().startswith("#")]
+    names = render_names(renders)
     head = "| render | Mpaths/s | camera Mrays/s | extension Mrays/s | shadow Mrays/s | total Mrays/s | rays/path |"
     print(head + ("" if cpu else " time with counting / without |"))
     print("|---|---:|---:|---:|---:|---:|---:|" + ("" if cpu else "---:|"))

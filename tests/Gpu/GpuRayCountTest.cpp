@@ -10,6 +10,7 @@
 #include "GpuTestEnvironment.h"
 #include "Render/EngineRegistry.h"
 #include "Shared/Estimator.h"
+#include "Support/SmallSettings.h"
 #include "Scenes/Catalogue.h"
 
 namespace rt::gpu::test
@@ -40,12 +41,10 @@ private:
     std::uint64_t m_messagesBefore = 0;
 };
 
-RenderSettings settingsOf(int width, int spp, int depth, Estimator estimator, bool roulette)
+/// settingsFor's (the scene's aspect and emitter sidedness) with `estimator` and `roulette`.
+RenderSettings settingsOf(const Scene& scene, int width, int spp, int depth, Estimator estimator, bool roulette)
 {
-    RenderSettings s;
-    s.width = width;
-    s.spp = spp;
-    s.depth = depth;
+    RenderSettings s = ::rt::test::settingsFor(scene, width, spp, depth);
     s.estimator = estimator;
     s.russianRoulette = roulette;
     return s;
@@ -58,8 +57,7 @@ TEST_F(GpuRayCounts, InTheFurnaceEveryPathTracesItsDepthOnBothIntegrators)
         for (const Estimator e : {Estimator::BsdfOnly, Estimator::NeeMis})
         {
             sharedEngine()->setIntegrator(integrator);
-            RenderSettings s = settingsOf(16, 3, kDepth, e, false);
-            s.unidirectionalLight = furnace.defaults.unidirectionalLight;
+            const RenderSettings s = settingsOf(furnace, 16, 3, kDepth, e, false);
             const RenderStats st = renderOnGpu(furnace, s).stats;
             const std::string what = std::string(toString(integrator)) + ", " + toString(e);
             ASSERT_TRUE(st.raysCounted) << what;
@@ -74,8 +72,7 @@ TEST_F(GpuRayCounts, RestirTracesEachCameraPathTwice)
     // As on the CPU (tests/Cpu/RayCountTest.cpp): the candidates pass traces the camera ray to the vertex it
     // resamples at, the shading pass the whole path again; each of the three passes adds its own counts.
     const Scene furnace = makeFurnace(0.5f, 0.5f);
-    RenderSettings s = settingsOf(16, 2, kDepth, Estimator::RestirDi, false);
-    s.unidirectionalLight = furnace.defaults.unidirectionalLight;
+    const RenderSettings s = settingsOf(furnace, 16, 2, kDepth, Estimator::RestirDi, false);
     const RenderStats st = renderOnGpu(furnace, s).stats;
     ASSERT_TRUE(st.raysCounted);
     EXPECT_EQ(st.rays.camera, 2 * st.paths);
@@ -88,7 +85,7 @@ TEST_F(GpuRayCounts, AgreeWithTheCpuEngineAndLeaveTheImageAsItWas)
     // The engines trace the same paths from the same random numbers; a float rounding differently may send one
     // path another way, so the kinds agree to 1 %, the camera rays exactly.
     const Scene scene = makeScene("cornell-box-lights");
-    const RenderSettings s = settingsOf(24, 2, 50, Estimator::NeeMis, true);
+    const RenderSettings s = settingsOf(scene, 24, 2, 50, Estimator::NeeMis, true);
     sharedEngine()->setIntegrator(GpuIntegrator::Megakernel);
     const RenderResult counted = renderOnGpu(scene, s);
     sharedEngine()->setCountRays(false);
