@@ -17,6 +17,7 @@ using shader::Estimator;
 using shader::LightSampler;
 using shader::LightSelection;
 using shader::PixelSampling;
+using shader::RussianRoulette;
 
 enum class EngineKind
 {
@@ -45,7 +46,9 @@ struct RenderSettings
     int restirSpatial = 5; // restir-di: neighbours of spatial reuse per pixel and iteration
     bool restirBiased = false; // restir-di: the biased combination (Alg. 4) instead of the unbiased one
     int restirTemporalCap = 20; // restir-di: temporal reuse's M cap, in multiples of restirCandidates (0: no reuse)
-    bool russianRoulette = true; // paths end by Russian roulette from their third segment (Shared/RussianRoulette.h)
+    // How paths end by Russian roulette from their third segment (Shared/RussianRoulette.h): Cycles' rule, 1.13x
+    // pbrt-v4's efficiency over the catalogue on both engines (docs/notebook/PERFORMANCE.md §28)
+    RussianRoulette russianRoulette = RussianRoulette::Sqrt;
     bool unidirectionalLight = true; // emitters emit from their front side only
     std::uint32_t seed = 0;
 
@@ -95,6 +98,15 @@ struct EnumNames<LightSampler>
     static constexpr std::array<EnumName<LightSampler>, 4> values{
         {{LightSampler::Area, "area"}, {LightSampler::SolidAngle, "solid-angle"}, {LightSampler::Projected, "projected"},
          {LightSampler::ProjectedExact, "projected-exact"}}};
+};
+
+template <>
+struct EnumNames<RussianRoulette>
+{
+    // "on" was the only rule before Cycles' joined it; "throughput" names it beside "sqrt".
+    static constexpr std::array<EnumName<RussianRoulette>, 3> values{{{RussianRoulette::Off, "off"},
+                                                                      {RussianRoulette::Throughput, "on", "throughput"},
+                                                                      {RussianRoulette::Sqrt, "sqrt"}}};
 };
 
 template <>

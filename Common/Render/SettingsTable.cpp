@@ -300,11 +300,12 @@ std::vector<Setting> makeTable()
             .name = "russian-roulette",
             .jsonKey = "russian_roulette",
             .label = "Russian roulette",
-            .help = "on: from the third segment, a path whose throughput fell below 1 ends with probability "
-                    "1 - throughput and the survivors are scaled up (unbiased, pbrt-v4's rule; with bsdf and "
-                    "mixture a path ends after the light its last direction finds); off: paths run to --depth",
-            .tooltip = "on: from the third segment, paths of low throughput end at random and survivors are scaled "
-                       "up (unbiased); off: paths run to the depth",
+            .help = "From the third segment, a path whose throughput's largest component m fell below 1 ends at "
+                    "random and the survivors are scaled up (unbiased; with bsdf and mixture a path ends after the "
+                    "light its last direction finds): on: survival m (pbrt-v4's rule); sqrt: survival sqrt(m) "
+                    "(Blender Cycles' rule: longer paths, less variance); off: paths run to --depth",
+            .tooltip = "on: paths of low throughput m end at random with survival m, survivors scaled up "
+                       "(unbiased); sqrt: survival sqrt(m) (Cycles); off: paths run to the depth",
             .compareFlag = "--roulettes",
             .compareTag = "rr",
         }),

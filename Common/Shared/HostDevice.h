@@ -101,6 +101,14 @@ RT_ENUM_VALUE(LightSampler, Projected, 2)  // by the receiver's cosine
 RT_ENUM_VALUE(LightSampler, ProjectedExact, 3) // by the receiver's cosine exactly (Peters 2021) over polygons
 RT_ENUM_END(LightSampler)
 
+// How Russian roulette ends paths (--russian-roulette, Shared/RussianRoulette.h): from the third segment, with a
+// survival probability from the throughput's largest component m < 1.
+RT_ENUM_BEGIN(RussianRoulette)
+RT_ENUM_VALUE(RussianRoulette, Off, 0)        // paths run to the depth
+RT_ENUM_VALUE(RussianRoulette, Throughput, 1) // survival m (pbrt-v4)
+RT_ENUM_VALUE(RussianRoulette, Sqrt, 2)       // survival sqrt(m) (Blender Cycles): fewer paths end early
+RT_ENUM_END(RussianRoulette)
+
 // How NEE picks the light it samples (--light-selection).
 RT_ENUM_BEGIN(LightSelection)
 RT_ENUM_VALUE(LightSelection, Uniform, 0) // every emitter 1 / N
@@ -245,7 +253,7 @@ struct RenderUniforms
     uint unidirectionalLight; // 1: emitters emit from their front face only
     uint lightCount; // LightData[]: the emitters, then the mixture's sampling targets
     uint emitterCount; // LightData[0, emitterCount) emit: what NEE samples
-    uint russianRoulette; // 1: paths end by Russian roulette on their throughput (RussianRoulette.h)
+    RT_TAG(RussianRoulette) russianRoulette; // how paths end by Russian roulette on their throughput
     RT_TAG(LightSampler) lightSampler; // NEE's
     RT_TAG(LightSelection) lightSelection; // NEE's
     uint restirCandidates; // restir-di: light samples per pixel and iteration (M of Bitterli et al. 2020)

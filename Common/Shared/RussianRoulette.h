@@ -1,5 +1,8 @@
 // Russian roulette on a path's throughput, written once for both engines (Shared/ShaderLang.h): pbrt-v4's
-// rule (Pharr, Jakob & Humphreys, Physically Based Rendering, 4th ed., §13.4.3, PathIntegrator::Li).
+// rule (Pharr, Jakob & Humphreys, Physically Based Rendering, 4th ed., §13.4.3, PathIntegrator::Li), or Blender
+// Cycles' gentler square root of it (intern/cycles/kernel/integrator/path_state.h,
+// path_state_continuation_probability: "use sqrt() to roughly match typical view transform and do path
+// termination a bit later on average").
 #ifndef RT_SHARED_RUSSIAN_ROULETTE_H
 #define RT_SHARED_RUSSIAN_ROULETTE_H
 
@@ -14,13 +17,17 @@ RT_SHADER_NAMESPACE_BEGIN
 RT_CONST(uint, kRouletteFirstVertex, 1u)
 
 /// Probability that a path with throughput `beta` (after scattering at vertex `vertex`, 0 = where the camera
-/// ray ended) goes on: 1 while the throughput's largest component is >= 1 or before kRouletteFirstVertex,
-/// else that component. The caller draws u and continues iff u < p, dividing the throughput by p:
-/// E[beta'] = p beta / p = beta, so the estimator stays unbiased. p = 0 (a black throughput) ends the path.
-RT_FN float rouletteSurvival(vec3 beta, uint vertex)
+/// ray ended) goes on under `rule`: 1 while the throughput's largest component m is >= 1, before
+/// kRouletteFirstVertex or with the roulette off; else m (Throughput) or sqrt(m) (Sqrt). The caller draws u
+/// and continues iff u < p, dividing the throughput by p: E[beta'] = p beta / p = beta, so the estimator stays
+/// unbiased whatever p is; the rule trades variance (1/p - 1 of what the rest of the path brings) against the
+/// segments it saves. p = 0 (a black throughput) ends the path.
+RT_FN float rouletteSurvival(vec3 beta, uint vertex, RT_TAG(RussianRoulette) rule)
 {
-    const float m = max(beta.x, max(beta.y, beta.z));
-    return vertex >= kRouletteFirstVertex && m < 1.0f ? max(m, 0.0f) : 1.0f;
+    const float m = max(max(beta.x, max(beta.y, beta.z)), 0.0f);
+    if (rule == RT_ENUM(RussianRoulette, Off) || vertex < kRouletteFirstVertex || m >= 1.0f)
+        return 1.0f;
+    return rule == RT_ENUM(RussianRoulette, Sqrt) ? sqrt(m) : m;
 }
 
 /// Whether the roulette drawn after scattering at a vertex takes effect only once the next segment's hit has

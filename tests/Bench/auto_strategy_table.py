@@ -29,7 +29,8 @@ def efficiencies(path):
 
 
 def strategy_of(settings):
-    rr = "rr-on" if settings["russian_roulette"] else "rr-off"
+    rr = settings["russian_roulette"]  # a word, or true / false in files written before the sqrt rule
+    rr = "rr-" + (("on" if rr else "off") if isinstance(rr, bool) else rr)
     return f'{settings["estimator"]} {settings["light_sampler"]} {settings["light_selection"]} {settings["sampling"]} {rr}'
 
 

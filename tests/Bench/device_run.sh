@@ -5,6 +5,11 @@
 # tests/Bench/device_carry.sh (figures in docs/notebook/PERFORMANCE.md).
 #   tests/Bench/device_run.sh tests    the GPU test suite (but its heavy part) and the apps' smoke tests
 #   tests/Bench/device_run.sh samplers the light samplers at equal time on the light scenes (issue 37)
+#   tests/Bench/device_run.sh roulette Russian roulette's rules (pbrt-v4's, Cycles' sqrt) at equal time on every
+#                                      catalogue scene (roulette.sh): ENGINE gpu (WIDTH 400, MS 500, SEEDS 3,
+#                                      REF_SPP 8192) or multi (the host's every core; WIDTH 128, MS 1000)
+#   tests/Bench/device_run.sh equal-error  issue 42: cornell-box-lights' time to the thesis' mixture-1000 error
+#                                      (equal_error.sh; its STRATEGIES, SPP_LIST, SEEDS, ROUNDS, REF_SPP)
 #   tests/Bench/device_run.sh auto     --strategy auto against a full --compare at equal time (auto_strategy.sh)
 #   tests/Bench/device_run.sh heavy    the heavy part: CPU/GPU agreement of every scene at 128 px, 64 spp (FILTER:
 #                                      a gtest filter within it)
@@ -170,6 +175,22 @@ samplers)
     done
     cat /tmp/samplers/*.txt >"$out/samplers.txt"
     (cd /tmp/samplers && tar -czf "$out/samplers.tar.gz" ./*)
+    ;;
+equal-error)
+    rm -rf /tmp/equal-error && bash tests/Bench/equal_error.sh "$bin" /tmp/equal-error
+    tail -n 8 /tmp/equal-error/*.txt
+    (cd /tmp/equal-error && tar -czf "$out/equal-error.tar.gz" ./*)
+    ;;
+roulette)
+    engine=${ENGINE:-gpu}
+    if [ "$engine" = gpu ]; then width=${WIDTH:-400} ms=${MS:-500}; else width=${WIDTH:-128} ms=${MS:-1000}; fi
+    rm -rf "/tmp/roulette-$engine" && mkdir -p "/tmp/roulette-$engine"
+    scenes=${SCENES:-$("$bin/ray-tracing-gpu" --list-scenes | awk '{print $1}')}
+    for scene in $scenes; do
+        IMAGES=/tmp/roulette-images bash tests/Bench/roulette.sh "$bin" "/tmp/roulette-$engine" "$engine" "$width" "$ms" \
+            "${SEEDS:-3}" "${REF_SPP:-8192}" "$scene"
+        (cd "/tmp/roulette-$engine" && tar -czf "$out/roulette-$engine.tar.gz" ./*)
+    done
     ;;
 auto)
     # Issue 37's --strategy auto: a headless pilot on cornell-box-lights at 600 px, 1024 spp, twice (the driver's

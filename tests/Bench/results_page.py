@@ -477,6 +477,14 @@ def table_rows(data, rel):
     return rows
 
 
+def roulette_word(value):
+    """The stats JSON's russian_roulette: a word (off, on, sqrt), or true / false in files written before Cycles'
+    rule joined pbrt-v4's."""
+    if isinstance(value, bool) or value is None:
+        return "on" if value else "off"
+    return value
+
+
 def section_table54():
     rel = TABLE54["file"]
     data = read_json(rel)
@@ -488,7 +496,7 @@ def section_table54():
         "## 3. GPU: thesis Table 5.4 redone",
         "",
         f"`{data['scene']}`, {data['width']}x{data['height']}, depth {data['depth']}, book 3's {data['estimator']} "
-        f"(roulette {'on' if data.get('russian_roulette') else 'off'}), {data['sampling']} samples; relMSE against a "
+        f"(roulette {roulette_word(data.get('russian_roulette'))}), {data['sampling']} samples; relMSE against a "
         f"{data['reference_spp']:,}-spp GPU render. GPU time from timestamp queries around the dispatches, CPU time "
         "from the host clock; both engines on the same host.",
         "",
@@ -1283,6 +1291,58 @@ def section_cycles():
         code('STRATEGIES="--estimator nee-mis --sampling sobol;--estimator nee-mis --sampling sobol --light-sampler '
              'area;--estimator nee-mis --sampling sobol --light-sampler solid-angle;--estimator mixture --sampling '
              'random" bash tests/Bench/cycles/cycles_compare.sh build/bin/ray-tracing-cpu OUT_DIR'),
+        "",
+        "With Cycles' Russian roulette (`sqrt`, the default since §16's measurement; a later run against the same "
+        "reference), nee-mis has Cycles' error per sample; `--russian-roulette on` is pbrt-v4's rule, the default "
+        "before:",
+        "",
+        results_path(f"{rel}/cycles-roulette.md").read_text().rstrip(),
+        "",
+        sources([("Machine", "CI kind, 2 vCPU, both cores"), ("Date", CYCLES["date"]),
+                 ("Results", link(f"{rel}/cycles-roulette.md")), ("Notebook", notebook_link("## 28.")),
+                 ("Command", "")]),
+        "",
+        code('STRATEGIES="--estimator nee-mis --sampling sobol;--estimator nee-mis --sampling sobol --light-sampler '
+             'area;--estimator nee-mis --sampling sobol --light-sampler solid-angle;--estimator nee-mis --sampling '
+             'sobol --russian-roulette on;--estimator mixture --sampling random" '
+             'bash tests/Bench/cycles/cycles_compare.sh build/bin/ray-tracing-cpu OUT_DIR'),
+    ]
+
+
+ROULETTE = {"dir": "h100-roulette", "date": "2026-11-27", "notebook": "## 28."}
+
+
+def section_roulette():
+    rel = ROULETTE["dir"]
+    table = lambda name: results_path(f"{rel}/{name}").read_text().rstrip()
+    return [
+        "## 16. Russian roulette: pbrt-v4's rule against Cycles' (issue 42)",
+        "",
+        "Both rules end a path from its third segment with a survival probability from the throughput's largest "
+        "component m: m (pbrt-v4, `--russian-roulette on`) or sqrt(m) (Blender Cycles, `sqrt`, the default since "
+        "this run). Every catalogue scene at its own other settings, each rule for the same time, 3 seeds; relMSE "
+        "less the reference's own; efficiency 1/(relMSE x seconds) of sqrt over pbrt-v4 with the 95 % interval of "
+        "the seeds' log ratios.",
+        "",
+        "On the GPU (400 px, 500 ms each, 8,192-spp references):",
+        "",
+        table("gpu.md"),
+        "",
+        sources([("Machine", "NVIDIA H100 80GB HBM3, driver 580"), ("Date", ROULETTE["date"]),
+                 ("Results", link(f"{rel}/gpu")), ("Notebook", notebook_link(ROULETTE["notebook"])),
+                 ("Command", "")]),
+        "",
+        code("ENGINE=gpu bash tests/Bench/device_run.sh roulette\n"
+             "python3 tests/Bench/roulette_table.py OUT_DIR"),
+        "",
+        "On the same host's CPU engine (16 threads, 128 px, 1 s each, 4,096-spp references):",
+        "",
+        table("cpu16.md"),
+        "",
+        sources([("Machine", "the H100's host, 16 Xeon cores"), ("Date", ROULETTE["date"]),
+                 ("Results", link(f"{rel}/cpu16")), ("Command", "")]),
+        "",
+        code("ENGINE=multi REF_SPP=4096 bash tests/Bench/device_run.sh roulette"),
     ]
 
 
@@ -1320,6 +1380,7 @@ def render():
         section_render_space(),
         section_rays(),
         section_cycles(),
+        section_roulette(),
     ]
     titles = [p[0][3:] for p in parts[1:]]
     parts[0] += ["", "Contents: " + " · ".join(f"[{t}](#{slugify(t)})" for t in titles)]

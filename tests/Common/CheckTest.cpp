@@ -140,7 +140,7 @@ TEST(Format, RenderSettings)
     s.spp = 16;
     EXPECT_EQ(fmt::format("{}", s),
               "spp 16, depth 50, width 600, aspect 1, estimator nee-mis, light-sampler projected, light-selection bvh, "
-              "sampling random, russian-roulette on, unidirectional-light on, seed 0 (600x600)");
+              "sampling random, russian-roulette sqrt, unidirectional-light on, seed 0 (600x600)");
 
     s.spp = 10;
     s.depth = 8;
@@ -151,7 +151,7 @@ TEST(Format, RenderSettings)
     s.unidirectionalLight = false;
     s.seed = 7;
     EXPECT_EQ(fmt::format("{}", s),
-              "spp 10, depth 8, width 400, aspect 1.7777778, estimator bsdf, sampling stratified, russian-roulette on, "
+              "spp 10, depth 8, width 400, aspect 1.7777778, estimator bsdf, sampling stratified, russian-roulette sqrt, "
               "unidirectional-light off, seed 7 (400x225)");
 
     s.estimator = Estimator::RestirDi;
@@ -159,7 +159,7 @@ TEST(Format, RenderSettings)
     EXPECT_EQ(fmt::format("{}", s),
               "spp 10, depth 8, width 400, aspect 1.7777778, estimator restir-di, light-sampler projected, "
               "light-selection bvh, restir-candidates 32, restir-spatial 5, restir-biased on, restir-temporal-cap 20, "
-              "sampling stratified, russian-roulette on, unidirectional-light off, seed 7 (400x225)");
+              "sampling stratified, russian-roulette sqrt, unidirectional-light off, seed 7 (400x225)");
 }
 } // namespace
 } // namespace rt

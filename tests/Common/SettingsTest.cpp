@@ -141,12 +141,18 @@ TEST(ResolveRequest, EstimatorComesFromTheSceneUnlessNamed)
     CommonOptions options;
     EXPECT_EQ(resolveRequest(options, makeScene("cornell-box-lights")).settings.estimator, Estimator::NeeMis);
     EXPECT_EQ(resolveRequest(options, makeScene("rtrol-cornell-box")).settings.estimator, Estimator::Mixture);
-    EXPECT_TRUE(resolveRequest(options, makeScene("rtrol-cornell-box")).settings.russianRoulette);
+    EXPECT_EQ(resolveRequest(options, makeScene("rtrol-cornell-box")).settings.russianRoulette, RussianRoulette::Sqrt);
+    options.settings["russian-roulette"] = "on";
+    EXPECT_EQ(resolveRequest(options, makeScene("rtrol-cornell-box")).settings.russianRoulette,
+              RussianRoulette::Throughput);
+    options.settings["russian-roulette"] = "throughput"; // the alias of on
+    EXPECT_EQ(resolveRequest(options, makeScene("rtrol-cornell-box")).settings.russianRoulette,
+              RussianRoulette::Throughput);
     options.settings["estimator"] = "nee";
     options.settings["russian-roulette"] = "off";
     const RenderSettings s = resolveRequest(options, makeScene("rtrol-cornell-box")).settings;
     EXPECT_EQ(s.estimator, Estimator::Nee);
-    EXPECT_FALSE(s.russianRoulette);
+    EXPECT_EQ(s.russianRoulette, RussianRoulette::Off);
     options.settings["estimator"] = "mixture";
     options.pdf = "on"; // agrees: accepted
     EXPECT_EQ(resolveRequest(options, makeScene("cornell-box-lights")).settings.estimator, Estimator::Mixture);

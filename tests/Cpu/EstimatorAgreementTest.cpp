@@ -1,5 +1,5 @@
 // Every estimator renders every catalogue scene to the same expectation on the CPU engine: NEE, NEE + MIS,
-// book 3's mixture and BSDF sampling, and Russian roulette on and off (research notes §2.6: whole-renderer
+// book 3's mixture and BSDF sampling, and Russian roulette by both rules and off (research notes §2.6: whole-renderer
 // tests; block Z-tests of tests/Support/BlockAgreement.h). A wrong MIS weight, a light counted twice or
 // never, a shadow ray that hits its own light, a biased roulette: each moves whole regions of some scene.
 #include <algorithm>
@@ -21,7 +21,7 @@ namespace
 struct Variant
 {
     Estimator estimator;
-    bool russianRoulette;
+    RussianRoulette russianRoulette;
     LightSampler lightSampler = LightSampler::Projected;
     LightSelection lightSelection = LightSelection::Bvh;
     // More samples for the noisier estimators: their rare bright paths (a BSDF ray that finds a small light)
@@ -67,20 +67,22 @@ TEST_P(CpuEstimatorAgreement, EveryEstimatorMatchesNeeMis)
         settings.sampling = v.sampling;
         return estimateBlocks(engine, scene, settings);
     };
-    const BlockEstimate reference = blocksOf({Estimator::NeeMis, true});
+    constexpr RussianRoulette kOn = RussianRoulette::Throughput;
+    const BlockEstimate reference = blocksOf({Estimator::NeeMis, kOn});
     // Book 3's mixture evaluates every light's pdf at every vertex: with an emitting mesh's thousands of lights
     // (triangle-lights) its four 32 x 32 renders of 128 spp took 100 s of this suite. Its sums over many
     // triangles are checked here on many-lights (1,000 lights); book 3's samplers are not the ones
     // triangle-lights is for.
     const bool mixtureAffordable = scene.lights.size() <= kMixtureMaxLights;
-    for (const Variant v : {Variant{Estimator::Nee, true}, Variant{Estimator::Mixture, true, LightSampler::Projected, LightSelection::Bvh, 4},
-                            Variant{Estimator::BsdfOnly, true, LightSampler::Projected, LightSelection::Bvh, 16}, Variant{Estimator::NeeMis, false},
-                            Variant{Estimator::NeeMis, true, LightSampler::Area}, Variant{Estimator::Nee, true, LightSampler::Area},
-                            Variant{Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Uniform},
-                            Variant{Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Power},
-                            Variant{Estimator::Nee, true, LightSampler::Projected, LightSelection::Power},
-                            Variant{Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Bvh, 1, PixelSampling::Sobol},
-                            Variant{Estimator::NeeMis, true, LightSampler::SolidAngle}})
+    for (const Variant v : {Variant{Estimator::Nee, kOn}, Variant{Estimator::Mixture, kOn, LightSampler::Projected, LightSelection::Bvh, 4},
+                            Variant{Estimator::BsdfOnly, kOn, LightSampler::Projected, LightSelection::Bvh, 16}, Variant{Estimator::NeeMis, RussianRoulette::Off},
+                            Variant{Estimator::NeeMis, kOn, LightSampler::Area}, Variant{Estimator::Nee, kOn, LightSampler::Area},
+                            Variant{Estimator::NeeMis, kOn, LightSampler::Projected, LightSelection::Uniform},
+                            Variant{Estimator::NeeMis, kOn, LightSampler::Projected, LightSelection::Power},
+                            Variant{Estimator::Nee, kOn, LightSampler::Projected, LightSelection::Power},
+                            Variant{Estimator::NeeMis, kOn, LightSampler::Projected, LightSelection::Bvh, 1, PixelSampling::Sobol},
+                            Variant{Estimator::NeeMis, kOn, LightSampler::SolidAngle},
+                            Variant{Estimator::NeeMis, RussianRoulette::Sqrt}})
     {
         if (v.estimator == Estimator::Mixture && !mixtureAffordable)
             continue;
@@ -88,7 +90,7 @@ TEST_P(CpuEstimatorAgreement, EveryEstimatorMatchesNeeMis)
         for (const std::string& f : failures)
             ADD_FAILURE() << "A = nee-mis, B = " << toString(v.estimator) << " (" << toString(v.lightSampler) << ", "
                           << toString(v.lightSelection) << ", " << toString(v.sampling)
-                          << (v.russianRoulette ? "" : ", without roulette") << "): " << f;
+                          << ", roulette " << toString(v.russianRoulette) << "): " << f;
     }
 }
 
@@ -110,7 +112,7 @@ TEST(CpuRoulette, MixtureKeepsTheLightItsLastDirectionFinds)
     s.estimator = Estimator::Mixture;
     cpu::CpuEngine engine(EngineKind::Multi);
     engine.setScene(scene);
-    const auto noise = [&](bool roulette) {
+    const auto noise = [&](RussianRoulette roulette) {
         constexpr int kSeeds = 8;
         RenderSettings settings = s;
         settings.russianRoulette = roulette;
@@ -130,8 +132,8 @@ TEST(CpuRoulette, MixtureKeepsTheLightItsLastDirectionFinds)
             sum += compareImages(image, average).relMse;
         return sum / kSeeds;
     };
-    const double withRoulette = noise(true);
-    const double without = noise(false);
+    const double withRoulette = noise(RussianRoulette::Throughput);
+    const double without = noise(RussianRoulette::Off);
     EXPECT_LT(withRoulette, 1.4 * without) << "relMSE-like noise with roulette " << withRoulette << ", without "
                                            << without;
 }

@@ -17,7 +17,7 @@ TEST(MicrofacetSkyFurnace, UnderAUniformSkyMatchesTheIntegralOfTheBsdf)
     {
         SCOPED_TRACE(c.name);
         RenderSettings s = smallSettings(16, 512, microfacetSphereDepth(c), Estimator::BsdfOnly);
-        s.russianRoulette = false;
+        s.russianRoulette = RussianRoulette::Off;
         expectMicrofacetSphere(renderCpu(microfacetSphereScene(c), s).image, c);
     }
 }

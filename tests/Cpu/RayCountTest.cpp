@@ -14,7 +14,7 @@ namespace
 {
 constexpr int kDepth = 5;
 
-RenderResult renderFurnace(Estimator estimator, bool roulette, EngineKind engine)
+RenderResult renderFurnace(Estimator estimator, RussianRoulette roulette, EngineKind engine)
 {
     const Scene scene = makeFurnace(0.5f, 0.5f);
     RenderSettings s = smallSettings(16, 3, kDepth, estimator);
@@ -28,7 +28,7 @@ TEST(RayCounts, InTheFurnaceEveryPathTracesItsDepthAndNeeAShadowRayPerVertexButT
     for (const EngineKind engine : {EngineKind::Single, EngineKind::Multi})
         for (const Estimator e : {Estimator::BsdfOnly, Estimator::Mixture, Estimator::Nee, Estimator::NeeMis})
         {
-            const RenderResult r = renderFurnace(e, false, engine);
+            const RenderResult r = renderFurnace(e, RussianRoulette::Off, engine);
             const RenderStats& st = r.stats;
             ASSERT_TRUE(st.raysCounted);
             EXPECT_EQ(st.paths, 16u * 16u * 3u);
@@ -39,25 +39,33 @@ TEST(RayCounts, InTheFurnaceEveryPathTracesItsDepthAndNeeAShadowRayPerVertexButT
         }
 }
 
-TEST(RayCounts, RussianRouletteEndsSomePathsEarly)
+TEST(RayCounts, RussianRouletteEndsPathsAsItsRuleSays)
 {
-    // Albedo 0.5: from the third segment a path survives with probability 0.5 per bounce, so about a quarter of
-    // the full length's extension rays remain; each camera ray is still traced once.
-    const RenderStats st = renderFurnace(Estimator::NeeMis, true, EngineKind::Multi).stats;
-    EXPECT_EQ(st.rays.camera, st.paths);
-    EXPECT_GT(st.rays.extension, st.paths);
-    EXPECT_LT(st.rays.extension, 3 * st.paths);
-    // NEE runs at a vertex before the roulette (drawn after scattering): a shadow ray at every vertex a path goes
-    // on from, and one more at the vertex where the roulette ends it, at most once per path.
-    EXPECT_GT(st.rays.shadow, st.rays.extension);
-    EXPECT_LE(st.rays.shadow, st.rays.extension + st.paths);
+    // Albedo 0.5, so the throughput is 0.5^k after scattering at vertex k - 1. The roulette is first drawn at
+    // vertex 1 (beta 0.25), deciding the third segment. pbrt-v4's rule (survival m, the throughput's largest
+    // component) survives with 0.25 and scales beta back to 1, then survives each later vertex with 0.5: the
+    // extension rays of segments 1-4 are expected 1 + 1/4 + 1/8 + 1/16 = 1.4375 per path. Cycles' rule (survival
+    // sqrt(m)) survives vertex 1 with 0.5 and leaves beta at sqrt(0.25) = 0.5, so every later vertex sees m = 0.25
+    // again: 1 + 1/2 + 1/4 + 1/8 = 1.875 per path. A path's count has a standard deviation of 0.86 (pbrt-v4) or
+    // 1.05 (Cycles), so over 768 paths the mean's is below 0.04: the bounds, 0.15, are 4 of those, and the two
+    // expectations 11 apart.
+    for (const auto& [rule, expected] : {std::pair{RussianRoulette::Throughput, 1.4375}, std::pair{RussianRoulette::Sqrt, 1.875}})
+    {
+        const RenderStats st = renderFurnace(Estimator::NeeMis, rule, EngineKind::Multi).stats;
+        EXPECT_EQ(st.rays.camera, st.paths);
+        EXPECT_NEAR(double(st.rays.extension) / double(st.paths), expected, 0.15) << toString(rule);
+        // NEE runs at a vertex before the roulette (drawn after scattering): a shadow ray at every vertex a path
+        // goes on from, and one more at the vertex where the roulette ends it, at most once per path.
+        EXPECT_GT(st.rays.shadow, st.rays.extension);
+        EXPECT_LE(st.rays.shadow, st.rays.extension + st.paths);
+    }
 }
 
 TEST(RayCounts, RestirTracesEachCameraPathTwice)
 {
     // The candidates pass traces the camera ray to the vertex it resamples at, the shading pass the whole path
     // again from the camera: two camera rays per path, the extension rays once.
-    const RenderStats st = renderFurnace(Estimator::RestirDi, false, EngineKind::Multi).stats;
+    const RenderStats st = renderFurnace(Estimator::RestirDi, RussianRoulette::Off, EngineKind::Multi).stats;
     EXPECT_EQ(st.rays.camera, 2 * st.paths);
     EXPECT_EQ(st.rays.extension, (kDepth - 1) * st.paths);
     EXPECT_GT(st.rays.shadow, (kDepth - 2) * st.paths) << "NEE past the resampled vertex, and the reservoirs' rays";

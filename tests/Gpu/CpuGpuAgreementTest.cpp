@@ -29,7 +29,7 @@ struct AgreementCase
 {
     std::string scene;
     Estimator estimator;
-    bool russianRoulette = true;
+    RussianRoulette russianRoulette = RussianRoulette::Throughput;
     LightSampler lightSampler = LightSampler::Projected;
     LightSelection lightSelection = LightSelection::Bvh;
     PixelSampling sampling = PixelSampling::Random;
@@ -40,7 +40,7 @@ void PrintTo(const AgreementCase& c, std::ostream* os)
 {
     *os << c.scene << " (" << toString(c.estimator) << ", " << toString(c.lightSampler) << ", "
         << toString(c.lightSelection) << ", " << toString(c.sampling)
-        << (c.russianRoulette ? "" : ", no roulette") << (c.exactFresnel ? ", exact Fresnel" : "") << ")";
+        << ", roulette " << toString(c.russianRoulette) << (c.exactFresnel ? ", exact Fresnel" : "") << ")";
 }
 
 /// Renders `c` on both engines with `s` (size, spp, depth) and Z-tests every block.
@@ -204,22 +204,26 @@ std::vector<AgreementCase> cases()
         for (const Estimator e : {Estimator::BsdfOnly, Estimator::Nee})
             out.push_back({id, e});
     for (const char* id : {"rtnw-cornell-smoke", "cornell-box-lights"})
-        out.push_back({id, Estimator::NeeMis, false});
+        out.push_back({id, Estimator::NeeMis, RussianRoulette::Off});
+    // Cycles' gentler rule where paths are long (the box of lights) and where they scatter in a medium.
+    for (const char* id : {"rtnw-cornell-smoke", "cornell-box-lights"})
+        out.push_back({id, Estimator::NeeMis, RussianRoulette::Sqrt});
+    out.push_back({"rtnw-cornell-box", Estimator::Mixture, RussianRoulette::Sqrt});
     for (const char* id : {"rtnw-simple-light", "cornell-box-lights", "rtrol-cornell-box"})
-        out.push_back({id, Estimator::NeeMis, true, LightSampler::Area});
+        out.push_back({id, Estimator::NeeMis, RussianRoulette::Throughput, LightSampler::Area});
     for (const char* id : {"cornell-box-lights", "rtnw-final"})
-        out.push_back({id, Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Uniform});
+        out.push_back({id, Estimator::NeeMis, RussianRoulette::Throughput, LightSampler::Projected, LightSelection::Uniform});
     for (const char* id : {"cornell-box-lights", "many-lights"})
-        out.push_back({id, Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Power});
+        out.push_back({id, Estimator::NeeMis, RussianRoulette::Throughput, LightSampler::Projected, LightSelection::Power});
     for (const char* id : {"sphere-light-closeup", "rect-light-closeup", "triangle-lights"})
-        out.push_back({id, Estimator::NeeMis, true, LightSampler::SolidAngle});
+        out.push_back({id, Estimator::NeeMis, RussianRoulette::Throughput, LightSampler::SolidAngle});
     // Sobol draws on both engines; rtnw-final's moving spheres replay the sample's time in the GPU's
     // intersection shaders.
     for (const char* id : {"cornell-box-lights", "rtnw-final", "sphere-light-closeup"})
-        out.push_back({id, Estimator::NeeMis, true, LightSampler::Projected, LightSelection::Bvh, PixelSampling::Sobol});
+        out.push_back({id, Estimator::NeeMis, RussianRoulette::Throughput, LightSampler::Projected, LightSelection::Bvh, PixelSampling::Sobol});
     // The exact Fresnel equations (--fresnel exact) through glass and the final scenes' glass spheres.
     for (const char* id : {"rtrol-cornell-glass", "rtow-final"})
-        out.push_back({id, Estimator::Mixture, true, LightSampler::Projected, LightSelection::Bvh, PixelSampling::Random, true});
+        out.push_back({id, Estimator::Mixture, RussianRoulette::Throughput, LightSampler::Projected, LightSelection::Bvh, PixelSampling::Random, true});
     return out;
 }
 
@@ -247,8 +251,10 @@ std::string caseName(const ::testing::TestParamInfo<AgreementCase>& param)
         name += std::string("_") + toString(c.sampling);
     if (c.exactFresnel)
         name += "_exact_fresnel";
-    if (!c.russianRoulette)
+    if (c.russianRoulette == RussianRoulette::Off)
         name += "_no_roulette";
+    else if (c.russianRoulette == RussianRoulette::Sqrt)
+        name += "_sqrt_roulette";
     return ::rt::test::testNameOf(name); // '-' -> '_'
 }
 

@@ -186,7 +186,7 @@ TEST(GpuMicrofacetSkyFurnace, RoughSpheresMatchTheIntegralOfTheBsdf)
         s.depth = ::rt::test::microfacetSphereDepth(c);
         s.estimator = Estimator::BsdfOnly;
         s.sampling = PixelSampling::Random; // pixels independent: the patch's mean has a standard error
-        s.russianRoulette = false;
+        s.russianRoulette = RussianRoulette::Off;
         ::rt::test::expectMicrofacetSphere(renderOnGpu(::rt::test::microfacetSphereScene(c), s).image, c);
     }
 }

@@ -42,7 +42,8 @@ private:
 };
 
 /// settingsFor's (the scene's aspect and emitter sidedness) with `estimator` and `roulette`.
-RenderSettings settingsOf(const Scene& scene, int width, int spp, int depth, Estimator estimator, bool roulette)
+RenderSettings settingsOf(const Scene& scene, int width, int spp, int depth, Estimator estimator,
+                          RussianRoulette roulette)
 {
     RenderSettings s = ::rt::test::settingsFor(scene, width, spp, depth);
     s.estimator = estimator;
@@ -57,7 +58,7 @@ TEST_F(GpuRayCounts, InTheFurnaceEveryPathTracesItsDepthOnBothIntegrators)
         for (const Estimator e : {Estimator::BsdfOnly, Estimator::NeeMis})
         {
             sharedEngine()->setIntegrator(integrator);
-            const RenderSettings s = settingsOf(furnace, 16, 3, kDepth, e, false);
+            const RenderSettings s = settingsOf(furnace, 16, 3, kDepth, e, RussianRoulette::Off);
             const RenderStats st = renderOnGpu(furnace, s).stats;
             const std::string what = std::string(toString(integrator)) + ", " + toString(e);
             ASSERT_TRUE(st.raysCounted) << what;
@@ -72,7 +73,7 @@ TEST_F(GpuRayCounts, RestirTracesEachCameraPathTwice)
     // As on the CPU (tests/Cpu/RayCountTest.cpp): the candidates pass traces the camera ray to the vertex it
     // resamples at, the shading pass the whole path again; each of the three passes adds its own counts.
     const Scene furnace = makeFurnace(0.5f, 0.5f);
-    const RenderSettings s = settingsOf(furnace, 16, 2, kDepth, Estimator::RestirDi, false);
+    const RenderSettings s = settingsOf(furnace, 16, 2, kDepth, Estimator::RestirDi, RussianRoulette::Off);
     const RenderStats st = renderOnGpu(furnace, s).stats;
     ASSERT_TRUE(st.raysCounted);
     EXPECT_EQ(st.rays.camera, 2 * st.paths);
@@ -85,7 +86,7 @@ TEST_F(GpuRayCounts, AgreeWithTheCpuEngineAndLeaveTheImageAsItWas)
     // The engines trace the same paths from the same random numbers; a float rounding differently may send one
     // path another way, so the kinds agree to 1 %, the camera rays exactly.
     const Scene scene = makeScene("cornell-box-lights");
-    const RenderSettings s = settingsOf(scene, 24, 2, 50, Estimator::NeeMis, true);
+    const RenderSettings s = settingsOf(scene, 24, 2, 50, Estimator::NeeMis, RussianRoulette::Throughput);
     sharedEngine()->setIntegrator(GpuIntegrator::Megakernel);
     const RenderResult counted = renderOnGpu(scene, s);
     sharedEngine()->setCountRays(false);

@@ -80,7 +80,7 @@ ConvexUnderSky renderConvexUnderSky(RenderEngine& engine, ConvexShape shape, con
 
     RenderSettings settings = settingsFor(scene, 32, 4, 6);
     settings.estimator = Estimator::BsdfOnly;
-    settings.russianRoulette = false;
+    settings.russianRoulette = RussianRoulette::Off;
     const RenderResult r = renderOnce(engine, scene, settings);
     ConvexUnderSky out{.lowest = 1e30f, .highest = -1e30f, .nonFiniteSamples = nonFinite(r.stats)};
     for (const vec3& p : r.image.pixels())
@@ -180,7 +180,7 @@ AccumulationDrift renderLongAccumulation(RenderEngine& engine, std::uint32_t spp
     RenderSettings settings = settingsFor(scene, kWidth, int(spp), 4);
     settings.aspect = 1.0f;
     settings.estimator = Estimator::BsdfOnly;
-    settings.russianRoulette = false;
+    settings.russianRoulette = RussianRoulette::Off;
     settings.sampling = sampling;
     const RenderResult r = renderOnce(engine, scene, settings);
 

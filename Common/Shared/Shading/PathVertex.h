@@ -153,20 +153,17 @@ RT_FN bool shadePathVertex(RT_INOUT(PathState) path, uint segment, RT_IN(HitPayl
         direction = s.direction;
     }
     bool survives = true;
-    if (uniforms.russianRoulette != 0u)
+    const float survival = rouletteSurvival(path.beta, segment, uniforms.russianRoulette);
+    if (survival < 1.0f)
     {
-        const float survival = rouletteSurvival(path.beta, segment);
-        if (survival < 1.0f)
+        survives = nextFloat(path.rng) < survival;
+        if (rouletteAfterNextHit(settingEstimator()))
         {
-            survives = nextFloat(path.rng) < survival;
-            if (rouletteAfterNextHit(settingEstimator()))
-            {
-                path.pendingSurvival = survives ? survival : 0.0f;
-                survives = true; // it ends after the next hit, above
-            }
-            else if (survives)
-                path.beta /= survival;
+            path.pendingSurvival = survives ? survival : 0.0f;
+            survives = true; // it ends after the next hit, above
         }
+        else if (survives)
+            path.beta /= survival;
     }
     path.origin = medium ? surface.position
                          : offsetRayOrigin(surface.position, dot(direction, hit.normal) > 0.0f ? hit.normal : -hit.normal,

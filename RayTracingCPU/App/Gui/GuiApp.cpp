@@ -33,11 +33,13 @@ constexpr ImGuiWindowFlags kPaneFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFla
 std::string describe(const Preview& p)
 {
     const RenderSettings& r = p.request.image.settings;
+    const std::string roulette = r.russianRoulette == RussianRoulette::Off    ? ", no roulette"
+                                 : r.russianRoulette == RussianRoulette::Sqrt ? ", sqrt roulette"
+                                                                              : "";
     return fmt::format("{}  |  {}x{}  |  {} spp{}  |  depth {}  |  {}{}  |  {}  |  {}", p.request.image.scene.id,
                        r.width, r.height(), p.samples,
                        p.request.loop || p.samples == r.trueSpp() ? "" : fmt::format(" of {}", r.trueSpp()), r.depth,
-                       toString(r.estimator), r.russianRoulette ? "" : ", no roulette", toString(r.sampling),
-                       engineLabel(p.request.engine));
+                       toString(r.estimator), roulette, toString(r.sampling), engineLabel(p.request.engine));
 }
 
 class GuiApp

@@ -33,7 +33,7 @@ nlohmann::json toJson(const RenderRequest& request)
             {"estimator", toString(r.estimator)},
             {"light_sampler", toString(r.lightSampler)},
             {"light_selection", toString(r.lightSelection)},
-            {"russian_roulette", r.russianRoulette},
+            {"russian_roulette", toString(r.russianRoulette)},
             {"unidirectional_light", r.unidirectionalLight},
             {"seed", r.seed}};
 }

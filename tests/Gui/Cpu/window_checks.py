@@ -115,7 +115,7 @@ def headless_args(state_path):
     s = json.load(open(state_path))["image"]["settings"]
     args = ["--scene", s["scene"], "--spp", s["spp"], "--depth", s["depth"], "--width", s["width"],
             "--aspect", repr(s["aspect"]), "--sampling", s["sampling"], "--estimator", s["estimator"],
-            "--russian-roulette", "on" if s["russian_roulette"] else "off", "--light-sampler", s["light_sampler"],
+            "--russian-roulette", s["russian_roulette"], "--light-sampler", s["light_sampler"],
             "--light-selection", s["light_selection"],
             "--unidirectional-light", "on" if s["unidirectional_light"] else "off", "--seed", s["seed"]]
     if s["count"] >= 0:

@@ -128,7 +128,7 @@ TEST(WindowActions, EachActionChangesItsSetting)
     EXPECT_TRUE(state.display.stopAtSpp);
     EXPECT_EQ(state.image.request.settings.spp, 64) << "one spp: the render's is where the window stops";
     EXPECT_EQ(state.image.request.settings.estimator, Estimator::BsdfOnly);
-    EXPECT_FALSE(state.image.request.settings.russianRoulette);
+    EXPECT_EQ(state.image.request.settings.russianRoulette, RussianRoulette::Off);
     EXPECT_FALSE(state.image.request.settings.unidirectionalLight);
     apply(state, "estimator=nee;light-sampler=area;light-selection=uniform;sobol=on");
     EXPECT_EQ(state.image.request.settings.sampling, PixelSampling::Sobol);
