@@ -31,18 +31,18 @@ struct SphericalRectangle
     float solidAngle; // S, steradians
 };
 
-/// The rectangle s + a ex + b ey (a, b in [0, 1], ex . ey = 0) as seen from o (Ureña et al. 2013, §3,
-/// Algorithm 1 "SphQuadInit"). The normals of the four planes through o and an edge each have one zero
-/// component, so each internal angle is acos of a product of two z components.
-RT_FN SphericalRectangle makeSphericalRectangle(vec3 o, vec3 s, vec3 ex, vec3 ey)
+/// The rectangle s + a x + b y (a in [0, exLength], b in [0, eyLength]) with orthonormal edge directions x, y and
+/// z = x cross y, as seen from o (Ureña et al. 2013, §3, Algorithm 1 "SphQuadInit"). The normals of the four
+/// planes through o and an edge each have one zero component, so each internal angle is acos of a product of two
+/// z components.
+RT_FN SphericalRectangle makeSphericalRectangleInFrame(vec3 o, vec3 s, vec3 x, vec3 y, vec3 z, float exLength,
+                                                       float eyLength)
 {
     SphericalRectangle r;
-    const float exLength = length(ex);
-    const float eyLength = length(ey);
     r.o = o;
-    r.x = ex / exLength;
-    r.y = ey / eyLength;
-    r.z = cross(r.x, r.y);
+    r.x = x;
+    r.y = y;
+    r.z = z;
     const vec3 d = s - o;
     r.z0 = dot(d, r.z);
     if (r.z0 > 0.0f)
@@ -69,6 +69,17 @@ RT_FN SphericalRectangle makeSphericalRectangle(vec3 o, vec3 s, vec3 ex, vec3 ey
     r.k = 2.0f * kPi - g2 - g3;
     r.solidAngle = g0 + g1 + g2 + g3 - 2.0f * kPi;
     return r;
+}
+
+/// The rectangle s + a ex + b ey (a, b in [0, 1], ex . ey = 0) as seen from o: makeSphericalRectangleInFrame
+/// with the frame of its edges.
+RT_FN SphericalRectangle makeSphericalRectangle(vec3 o, vec3 s, vec3 ex, vec3 ey)
+{
+    const float exLength = length(ex);
+    const float eyLength = length(ey);
+    const vec3 x = ex / exLength;
+    const vec3 y = ey / eyLength;
+    return makeSphericalRectangleInFrame(o, s, x, y, cross(x, y), exLength, eyLength);
 }
 
 /// The point of the rectangle for u in [0, 1)^2, uniform in solid angle as seen from r.o (density 1 / S)

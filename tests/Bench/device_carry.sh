@@ -20,7 +20,8 @@ for exe in .devcarry/bin/ray-tracing-gpu .devcarry/bin/ray-tracing-cpu .devcarry
 done | sort -u | grep -vE '/(libc|libm|libdl|libpthread|librt|libstdc\+\+|libgcc_s)\.so' |
     grep -vE '/(libmpi|libopen-rte|libopen-pal|libpmix|libhwloc|libevent[a-z_]*-2\.1|libudev)\.so' |
     xargs -r -I{} cp -L {} .devcarry/lib/
-cp /usr/lib/x86_64-linux-gnu/libVkLayer_khronos_validation.so .devcarry/layers/
+# Compressed (22 MB to a fifth): the carry's 64 MiB hold the tracked files too; device_run.sh unpacks it.
+xz -c /usr/lib/x86_64-linux-gnu/libVkLayer_khronos_validation.so >.devcarry/layers/libVkLayer_khronos_validation.so.xz
 sed 's|"library_path": "[^"]*"|"library_path": "./libVkLayer_khronos_validation.so"|' \
     /usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json >.devcarry/layers/VkLayer_khronos_validation.json
 # A baseline build for tests/Bench/gpu_ab.sh (device_run.sh ab): BASELINE_BIN, a bin folder of another build

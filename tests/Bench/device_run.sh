@@ -24,7 +24,8 @@
 #   tests/Bench/device_run.sh bars     issue 9's efficiency bars in one run: cornell-box-lights (mixture
 #                                      against nee-mis) and many-lights (light selections), by --compare
 #                                      (INTEGRATOR: the GPU integrator, default the app's)
-#   tests/Bench/device_run.sh rays     issue 42: every catalogue scene (600 px, 256 spp) without and with
+#   tests/Bench/device_run.sh rays [RENDERS_FILE]  issue 42: every catalogue scene (600 px, 256 spp; or the
+#                                      renders of RENDERS_FILE) without and with
 #                                      --count-rays: what counting costs, the images alike, rays per second by kind
 #   tests/Bench/device_run.sh cpu-rays [RENDERS_FILE]  issue 42: the host's CPU engine on every core, rays per
 #                                      second by kind (default: the renders of `rays`)
@@ -54,6 +55,7 @@ for f in .gl/*.deb; do dpkg -x "$f" /; done
 if ! command -v mpirun >/dev/null; then for f in .mpi/*.deb; do [ -e "$f" ] && dpkg -x "$f" /; done; fi
 ldconfig
 export LD_LIBRARY_PATH=$PWD/.devcarry/lib
+for f in .devcarry/layers/*.xz; do [ -e "$f" ] && xz -dc "$f" >"${f%.xz}"; done
 export VK_LAYER_PATH=$PWD/.devcarry/layers
 if ! ls /usr/share/vulkan/icd.d/nvidia_icd.json /etc/vulkan/icd.d/nvidia_icd.json >/dev/null 2>&1; then
     export VK_DRIVER_FILES=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
@@ -106,7 +108,7 @@ rays)
     # Issue 42: every catalogue scene at 600 px, 256 spp without and with --count-rays (the same build), the
     # images compared (counting must leave them bit for bit), then the rays per second by kind.
     renders=/tmp/rays-renders.txt
-    grep -v '^\s*\(#\|$\)' tests/Bench/renders/catalogue-256.txt | sed 's/^\([^ ]*\) \(.*\)$/\1 \2 || \2 --count-rays/' \
+    grep -v '^\s*\(#\|$\)' "${2:-tests/Bench/renders/catalogue-256.txt}" | sed 's/^\([^ ]*\) \(.*\)$/\1 \2 || \2 --count-rays/' \
         >"$renders"
     ROUNDS=${ROUNDS:-2} bash tests/Bench/gpu_ab.sh "$bin" "$bin" /tmp/rays "$renders" | tee "$out/rays-ab.txt"
     python3 tests/Bench/rays_table.py /tmp/rays "$renders" | tee "$out/rays.md"

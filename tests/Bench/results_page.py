@@ -1343,6 +1343,18 @@ def section_roulette():
                  ("Results", link(f"{rel}/cpu16")), ("Command", "")]),
         "",
         code("ENGINE=multi REF_SPP=4096 bash tests/Bench/device_run.sh roulette"),
+        "",
+        "With sqrt the default on both engines, the GPU over the same host's 16-core CPU on the scenes where §14 "
+        "found the ratio lowest (600 px, 256 spp, equal work; issue 42 asks 30x):",
+        "",
+        table("weakest/gpu-over-cpu16.md"),
+        "",
+        sources([("Machine", "NVIDIA H100 80GB HBM3, driver 580, and its host's 16 Xeon cores"),
+                 ("Date", ROULETTE["date"]), ("Results", link(f"{rel}/weakest")), ("Command", "")]),
+        "",
+        code("bash tests/Bench/device_run.sh rays tests/Bench/renders/gpu-weakest.txt\n"
+             "bash tests/Bench/device_run.sh cpu-rays tests/Bench/renders/gpu-weakest.txt\n"
+             "python3 tests/Bench/gpu_over_cpu.py GPU_STATS CPU_STATS tests/Bench/renders/gpu-weakest.txt"),
     ]
 
 

@@ -21,11 +21,22 @@ RT_SHADER_NAMESPACE_BEGIN
 /// to both strategies.
 RT_CONST(float, kMinSphericalRectangle, 1e-2f)
 
-/// A quad whose edges are orthogonal (to float precision): what spherical-rectangle sampling needs.
+/// A quad whose edges are orthogonal (to float precision): what spherical-rectangle sampling needs. The cosine
+/// of the edges' angle over its squared sine, |p1 . p2| |dualU| |dualV| (|dualU| = 1 / (|p1| sin), LightData),
+/// within 1e-5: the light's stored lengths instead of two square roots at every shading point.
 RT_FN bool isRectangle(RT_IN(LightData) light)
 {
-    return RT_LIGHT_IS(light.shape, Quad) &&
-           abs(dot(light.p1, light.p2)) <= 1e-5f * length(light.p1) * length(light.p2);
+    return RT_LIGHT_IS(light.shape, Quad) && abs(dot(light.p1, light.p2)) * light.dualULength * light.dualVLength <= 1e-5f;
+}
+
+/// The rectangle light as seen from p: its edge directions from the lengths LightData keeps (a rectangle's
+/// dualU is p1 / |p1|^2, so p1 |dualU| is p1's direction and p1 . that direction its length) and its unit normal,
+/// which is their cross product: no square root or division per shading point beyond the rectangle's own.
+RT_FN SphericalRectangle lightSphericalRectangle(RT_IN(LightData) light, vec3 p)
+{
+    const vec3 x = light.p1 * light.dualULength;
+    const vec3 y = light.p2 * light.dualVLength;
+    return makeSphericalRectangleInFrame(p, light.p0, x, y, light.normal, dot(light.p1, x), dot(light.p2, y));
 }
 
 /// The cosine to the receiver normal n at the rectangle's four corners, seen from r.o, floored at 0.01 (a
@@ -49,7 +60,7 @@ RT_FN float quadLightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, 
 {
     if (strategy != RT_ENUM(LightSampler, Area) && isRectangle(light))
     {
-        const SphericalRectangle r = makeSphericalRectangle(p, light.p0, light.p1, light.p2);
+        const SphericalRectangle r = lightSphericalRectangle(light, p);
         if (r.solidAngle >= kMinSphericalRectangle)
         {
             const float t = planarHit(light, p, wi);
@@ -72,7 +83,7 @@ RT_FN bool sampleQuadLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy
 {
     if (strategy != RT_ENUM(LightSampler, Area) && isRectangle(light))
     {
-        const SphericalRectangle r = makeSphericalRectangle(p, light.p0, light.p1, light.p2);
+        const SphericalRectangle r = lightSphericalRectangle(light, p);
         if (r.solidAngle >= kMinSphericalRectangle)
         {
             // Projected warps u toward the receiver's cosine first; SolidAngle (or no receiver) takes u as is.
