@@ -4,15 +4,15 @@
 #   tests/Bench/cycles/cycles_compare.sh APP OUT_DIR
 # APP: ray-tracing-cpu. SCENE (rtrol-cornell-box), WIDTH (300), SPP (64), REF_SPP (16384), THREADS (2), ROUNDS (3:
 # each render timed ROUNDS times, Cycles and ours alternating, the fastest kept), STRATEGIES (our renders, ";"
-# between their flags; default nee-mis with Sobol samples, and book 3's mixture with random samples, the scene's
-# defaults for the books' scenes). The reference is kept in
+# between their flags; default nee-mis with Sobol samples by the default (projected) and the area light sampler,
+# and book 3's mixture with random samples, the scene's defaults for the books' scenes). The reference is kept in
 # OUT_DIR and reused by a later run of the same scene, width and REF_SPP (16,384 spp of 300 px: about 20 minutes
 # on two cores). Needs Debian's blender (apt-get install blender; 3.4.1 in bookworm). Prints a Markdown table.
 set -eu
 app=$1 out=$2
 scene=${SCENE:-rtrol-cornell-box} width=${WIDTH:-300} spp=${SPP:-64} ref_spp=${REF_SPP:-16384}
 threads=${THREADS:-2} rounds=${ROUNDS:-3}
-strategies=${STRATEGIES:-"--estimator nee-mis --sampling sobol;--estimator mixture --sampling random"}
+strategies=${STRATEGIES:-"--estimator nee-mis --sampling sobol;--estimator nee-mis --sampling sobol --light-sampler area;--estimator mixture --sampling random"}
 here=$(dirname "$0")
 command -v blender >/dev/null || { echo "error: no blender (apt-get install blender)" >&2; exit 2; }
 mkdir -p "$out"
