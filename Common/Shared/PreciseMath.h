@@ -76,8 +76,8 @@ float preciseAtan(float y, float x)
 RT_SHADER_NAMESPACE_BEGIN
 
 /// acos(x) for x in [-1, 1] to 2e-8 absolute (Abramowitz & Stegun 4.4.46: sqrt(1 - |x|) times a degree-7
-/// polynomial), the same in both languages: inline it costs a quarter of glibc's acosf in the spherical
-/// rectangle's setup, which takes four (rt_bench SampleLight).
+/// polynomial), the same in both languages, so that the engines compute the spherical rectangle's four angles
+/// alike (and the CPU without a libm call: rt_bench SampleLight).
 RT_FN float preciseAcos(float x)
 {
     const float a = min(abs(x), 1.0f);

@@ -26,7 +26,8 @@ RT_CONST(float, kMinSphericalRectangle, 1e-2f)
 /// within 1e-5: the light's stored lengths instead of two square roots at every shading point.
 RT_FN bool isRectangle(RT_IN(LightData) light)
 {
-    return RT_LIGHT_IS(light.shape, Quad) && abs(dot(light.p1, light.p2)) * light.dualULength * light.dualVLength <= 1e-5f;
+    return RT_LIGHT_IS(light.shape, Quad) &&
+           abs(dot(light.p1, light.p2)) * light.dualULength * light.dualVLength <= 1e-5f;
 }
 
 /// The rectangle light as seen from p: its edge directions from the lengths LightData keeps (a rectangle's
