@@ -1344,17 +1344,17 @@ def section_roulette():
         "",
         code("ENGINE=multi REF_SPP=4096 bash tests/Bench/device_run.sh roulette"),
         "",
-        "With sqrt the default on both engines, the GPU over the same host's 16-core CPU on the scenes where §14 "
-        "found the ratio lowest (600 px, 256 spp, equal work; issue 42 asks 30x):",
+        "With sqrt the default on both engines, the GPU over the same host's 16-core CPU at equal work (the 26 "
+        "renders of §14, 600 px, 256 spp; issue 42 asks 30x on every scene):",
         "",
-        table("weakest/gpu-over-cpu16.md"),
+        table("catalogue/gpu-over-cpu16.md"),
         "",
         sources([("Machine", "NVIDIA H100 80GB HBM3, driver 580, and its host's 16 Xeon cores"),
-                 ("Date", ROULETTE["date"]), ("Results", link(f"{rel}/weakest")), ("Command", "")]),
+                 ("Date", ROULETTE["date"]), ("Results", link(f"{rel}/catalogue")), ("Command", "")]),
         "",
-        code("bash tests/Bench/device_run.sh rays tests/Bench/renders/gpu-weakest.txt\n"
-             "bash tests/Bench/device_run.sh cpu-rays tests/Bench/renders/gpu-weakest.txt\n"
-             "python3 tests/Bench/gpu_over_cpu.py GPU_STATS CPU_STATS tests/Bench/renders/gpu-weakest.txt"),
+        code("bash tests/Bench/device_run.sh rays\n"
+             "bash tests/Bench/device_run.sh cpu-rays\n"
+             "python3 tests/Bench/gpu_over_cpu.py GPU_STATS CPU_STATS tests/Bench/renders/catalogue-256.txt"),
     ]
 
 
