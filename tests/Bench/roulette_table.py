@@ -16,13 +16,13 @@ T975 = [12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262]
 
 def rows_of(path):
     by_rule = {}
-    scene = engine = device = None
+    scene = device = None
     with open(path, newline="") as f:
         for r in csv.DictReader(f):
-            scene, engine, device = r["scene"], r["engine"], r["device"]
+            scene, device = r["scene"], r["device"]
             error = float(r["relmse"]) - float(r["reference_relmse"])
             by_rule.setdefault(r["label"], []).append((int(r["seed"]), error, float(r["wall_ms"]) * 1e-3, int(r["spp"])))
-    return scene, engine, device, by_rule
+    return scene, device, by_rule
 
 
 def main(out_dir, title=None):
@@ -33,7 +33,7 @@ def main(out_dir, title=None):
     ratios = []
     device = None
     for path in files:
-        scene, engine, device, by_rule = rows_of(path)
+        scene, device, by_rule = rows_of(path)
         on, sq = sorted(by_rule.get("rr-on", [])), sorted(by_rule.get("rr-sqrt", []))
         if not on or not sq or len(on) != len(sq):
             sys.exit(f"error: {path}: expected the same seeds for rr-on and rr-sqrt")
