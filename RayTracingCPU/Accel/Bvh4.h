@@ -43,19 +43,15 @@ struct Bvh4
     static Bvh4 collapse(const Bvh& bvh);
 };
 
-/// Visits the leaves whose boxes the ray enters before tMax (read again after every leaf), nearest first.
-/// `leaf(firstSlot, count)` tests the primitives and may shrink tMax.
+/// traverse() below the child reference `start` (an interior node index or a leaf reference) alone.
 template <typename LeafFn>
-inline void traverse(const Bvh4& bvh, const TraceRay& r, const float& tMax, LeafFn&& leaf)
+inline void traverseFrom(const Bvh4& bvh, std::uint32_t start, const TraceRay& r, const float& tMax, LeafFn&& leaf)
 {
-    if (bvh.rootIsLeaf)
+    if (isLeaf(start))
     {
-        if (bvh.rootCount)
-            leaf(0u, bvh.rootCount);
+        leaf(leafFirst(start), leafCount(start));
         return;
     }
-    if (bvh.nodes.empty())
-        return;
     struct Entry
     {
         std::uint32_t ref; // interior node index or leafRef
@@ -63,7 +59,7 @@ inline void traverse(const Bvh4& bvh, const TraceRay& r, const float& tMax, Leaf
     };
     Entry stack[512]; // 4-wide depth < 96 (see the binary builder), at most 3 entries left per level, 4 written
     int top = 0;
-    std::uint32_t index = 0;
+    std::uint32_t index = start;
     const Bvh4Node* nodes = bvh.nodes.data();
 #ifdef RT_BVH4_SSE
     const __m128 ox = _mm_set1_ps(r.origin.x), oy = _mm_set1_ps(r.origin.y), oz = _mm_set1_ps(r.origin.z);
@@ -157,5 +153,20 @@ inline void traverse(const Bvh4& bvh, const TraceRay& r, const float& tMax, Leaf
             leaf(leafFirst(e.ref), leafCount(e.ref));
         }
     }
+}
+
+/// Visits the leaves whose boxes the ray enters before tMax (read again after every leaf), nearest first.
+/// `leaf(firstSlot, count)` tests the primitives and may shrink tMax.
+template <typename LeafFn>
+inline void traverse(const Bvh4& bvh, const TraceRay& r, const float& tMax, LeafFn&& leaf)
+{
+    if (bvh.rootIsLeaf)
+    {
+        if (bvh.rootCount)
+            leaf(0u, bvh.rootCount);
+        return;
+    }
+    if (!bvh.nodes.empty())
+        traverseFrom(bvh, 0u, r, tMax, leaf);
 }
 } // namespace rt::cpu

@@ -184,13 +184,17 @@ void CpuScene::buildLeafPackets(const std::vector<PrimRef>& refs)
                 }
                 padPacket(packet, used);
                 m_leafPackets.push_back(PrimRef::make(type, index));
+                m_packetLanes.push_back(static_cast<std::uint8_t>(used));
             }
         };
         emit(PrimType::Quad, m_quadPackets, m_quads, &m_leafQuads);
         emit(PrimType::Sphere, m_spherePackets, m_spheres, &m_leafSpheres);
         emit(PrimType::Triangle, m_trianglePackets, m_triangles, nullptr);
         for (std::uint32_t bits : byType[static_cast<int>(PrimType::Medium)])
+        {
             m_leafPackets.push_back(PrimRef{bits});
+            m_packetLanes.push_back(1);
+        }
         node.offset = firstPacket;
         node.count = static_cast<std::uint16_t>(m_leafPackets.size() - firstPacket);
     }

@@ -67,19 +67,82 @@ public:
         return hit.prim != kNoIndex;
     }
 
-    /// Whether intersect(RayLanes) serves the scene: it is one BVH leaf of quads and spheres (no triangles, whose
-    /// packet test hands some rays to a scalar test, and no media).
-    bool tracesRayLanes() const { return m_bvh4.rootIsLeaf && m_triangles.empty() && m_media.empty(); }
+    /// Whether intersect(RayLanes) serves the scene: its primitives are quads and spheres (no triangles, whose
+    /// packet test hands some rays to a scalar test, and no media), at most kRayLanesPrimitivesAtMost of them.
+    bool tracesRayLanes() const
+    {
+        return m_triangles.empty() && m_media.empty() && m_primitiveCount <= kRayLanesPrimitivesAtMost;
+    }
+    /// Beyond this many primitives the paths' rays part ways in the tree: one core, lamp-room (24,582 primitives)
+    /// took 1.07x its time in lanes and white-spheres (20,000) gained 1.09x, against 1.07-1.50x for the scenes of
+    /// 18 to 500 (docs/notebook/PERFORMANCE.md §30).
+    static constexpr std::size_t kRayLanesPrimitivesAtMost = 4096;
 
     /// The closest hit of each lane's ray in (tMin, hits.t), as intersect() finds it for that ray alone, bit for
-    /// bit. Precondition: tracesRayLanes().
+    /// bit (in a scene of one leaf; over a BVH, where two primitives meet a ray at exactly the same t, either may
+    /// win: Accel/Bvh4Lanes.h). Precondition: tracesRayLanes().
     void intersect(const RayLanes& r, float tMin, RayHits& hits) const
+    {
+        if (m_bvh4.rootIsLeaf)
+            intersectOneLeaf(r, tMin, hits);
+        else
+            intersectTree(r, tMin, hits);
+    }
+    /// intersect(RayLanes) in a scene of one leaf: every lane against every primitive.
+    void intersectOneLeaf(const RayLanes& r, float tMin, RayHits& hits) const
     {
         const RayLaneView rays = r.view();
         for (const LaneOf& q : m_leafQuads)
             intersectRays(m_quadPackets[q.packet], q.lane, rays, tMin, hits);
         for (const LaneOf& s : m_leafSpheres)
             intersectRays(m_spherePackets[s.packet], s.lane, rays, tMin, hits);
+    }
+    /// intersect(RayLanes) over the scene's BVH (Accel/Bvh4Lanes.h). Precondition: the scene is not one leaf.
+    void intersectTree(const RayLanes& r, float tMin, RayHits& hits) const
+    {
+        const RayLaneView rays = r.view();
+        const auto alone = [&](int lane, std::uint32_t subtree) {
+            const TraceRay ray = r.ray(lane);
+            HitRecord hit = hits.lane(lane);
+            traverseFrom(m_bvh4, subtree, ray, hit.t, [&](std::uint32_t first, std::uint32_t count) {
+                for (std::uint32_t k = first; k < first + count; ++k)
+                    intersectLeafPacket(m_leafPackets[k], ray, tMin, hit, 0u);
+            });
+            hits.setLane(lane, hit);
+        };
+        traverseLanes(m_bvh4, r.boxView(), hits.t, [&](std::uint32_t first, std::uint32_t count) {
+            intersectLeafLanes(first, count, rays, tMin, hits);
+        }, alone);
+    }
+
+    /// Bit l set where something lies along lane l's ray in (tMin, tMax[l]): occluded() for each lane's shadow
+    /// ray, the same answers. A lane leaves the traversal at its first blocker. Preconditions: tracesRayLanes()
+    /// and the scene is not one leaf (there the scalar test, which stops at the first blocker, is cheaper:
+    /// docs/notebook/PERFORMANCE.md §25).
+    int occluded(const RayLanes& r, float tMin, const Lanes& tMax) const
+    {
+        const RayLaneView rays = r.view();
+        RayHits hits(tMax);
+        const BoxLaneView boxes = r.boxView();
+        // A hit shrinks a lane's t below its tMax; a blocked lane's t of -1 then lets no box pass (every box is
+        // entered at t >= 0).
+        const auto alone = [&](int lane, std::uint32_t subtree) {
+            const TraceRay ray = r.ray(lane);
+            HitRecord hit = hits.lane(lane);
+            traverseFrom(m_bvh4, subtree, ray, hit.t, [&](std::uint32_t first, std::uint32_t count) {
+                for (std::uint32_t k = first; k < first + count && hit.prim == kNoIndex; ++k)
+                    intersectLeafPacket(m_leafPackets[k], ray, tMin, hit, 0u);
+                if (hit.prim != kNoIndex)
+                    hit.t = -1.0f;
+            });
+            hits.setLane(lane, hit);
+        };
+        traverseLanes(m_bvh4, boxes, hits.t, [&](std::uint32_t first, std::uint32_t count) {
+            intersectLeafLanes(first, count, rays, tMin, hits);
+            const Lanes found = hits.t < tMax;
+            hits.t = select(found, Lanes(-1.0f), hits.t);
+        }, alone);
+        return movemask(hits.t < tMax) & boxes.active;
     }
 
     /// True when something lies along r in (tMin, tMax): a shadow ray. Stops at the first hit found. A medium
@@ -192,6 +255,23 @@ private:
         }
     }
 
+    /// Every lane's ray against the primitives of leaf slots [first, first + count) (quads and spheres).
+    void intersectLeafLanes(std::uint32_t first, std::uint32_t count, const RayLaneView& rays, float tMin,
+                            RayHits& hits) const
+    {
+        for (std::uint32_t k = first; k < first + count; ++k)
+        {
+            const PrimRef ref = m_leafPackets[k];
+            const int used = m_packetLanes[k];
+            if (ref.type() == PrimType::Quad)
+                for (int i = 0; i < used; ++i)
+                    intersectRays(m_quadPackets[ref.index()], i, rays, tMin, hits);
+            else
+                for (int i = 0; i < used; ++i)
+                    intersectRays(m_spherePackets[ref.index()], i, rays, tMin, hits);
+        }
+    }
+
     void buildLeafPackets(const std::vector<PrimRef>& refs);
 
     const Scene* m_scene;
@@ -213,6 +293,7 @@ private:
     // What traversal reads: per leaf, a run of packet references (type + index into the packet arrays; for
     // media the index of the medium itself).
     std::vector<PrimRef> m_leafPackets;
+    std::vector<std::uint8_t> m_packetLanes; // per m_leafPackets entry: the primitives its packet holds
     // The primitives of a scene that is one leaf, in the order its packets test them: quads, then spheres.
     struct LaneOf
     {

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "Accel/Bvh4Lanes.h"
 #include "Geometry/Packets.h"
 #include "Geometry/TraceRay.h"
 #include "Shared/HostDevice.h"
@@ -53,6 +54,21 @@ struct alignas(32) RayLanes
                 Lanes::load(dx), Lanes::load(dy),   Lanes::load(dz),
                 Lanes::load(time), Lanes::load(directionLength2), Lanes::load(invDirectionLength2)};
     }
+    /// Lane l's ray as a scalar traversal reads it (a scene of quads and spheres: no triangle or medium fields).
+    TraceRay ray(int l) const
+    {
+        return TraceRay(Ray{vec3(ox[l], oy[l], oz[l]), vec3(dx[l], dy[l], dz[l]), time[l]},
+                        TraceRay::Needs{.triangles = false, .media = false, .boxes = true});
+    }
+    /// The rays as the box tests read them: 1 / d as TraceRay computes it, the same bits.
+    BoxLaneView boxView() const
+    {
+        const Lanes dxs = Lanes::load(dx), dys = Lanes::load(dy), dzs = Lanes::load(dz), one(1.0f), zero(0.0f);
+        const Lanes ixs = one / dxs, iys = one / dys, izs = one / dzs;
+        const Lanes valid = dxs == dxs; // a cleared lane's NaN direction
+        return {Lanes::load(ox), Lanes::load(oy), Lanes::load(oz), ixs, iys, izs,
+                ixs < zero, iys < zero, izs < zero, valid, movemask(valid)};
+    }
 };
 
 /// The nearest hit of each lane's ray so far: HitRecord's fields, lane by lane (prim kNoIndex: none).
@@ -61,10 +77,8 @@ struct RayHits
     Lanes t, b1, b2;
     Lanes prim; // PrimRef bits, as float bit patterns
 
-    explicit RayHits(float tMax)
-        : t(tMax), b1(0.0f), b2(0.0f), prim(std::bit_cast<float>(shader::kNoIndex))
-    {
-    }
+    explicit RayHits(float tMax) : RayHits(Lanes(tMax)) {}
+    explicit RayHits(Lanes tMax) : t(tMax), b1(0.0f), b2(0.0f), prim(std::bit_cast<float>(shader::kNoIndex)) {}
     /// Every lane's hit as a HitRecord.
     void store(HitRecord (&out)[kLanes]) const
     {
@@ -75,6 +89,30 @@ struct RayHits
         prim.storeTo(lanes[3]);
         for (int i = 0; i < kLanes; ++i)
             out[i] = {lanes[0][i], std::bit_cast<std::uint32_t>(lanes[3][i]), lanes[1][i], lanes[2][i]};
+    }
+    /// Lane l's hit.
+    HitRecord lane(int l) const
+    {
+        HitRecord all[kLanes];
+        store(all);
+        return all[l];
+    }
+    /// Lane l's hit becomes h.
+    void setLane(int l, const HitRecord& h)
+    {
+        alignas(32) float lanes[4][kLanes];
+        t.storeTo(lanes[0]);
+        b1.storeTo(lanes[1]);
+        b2.storeTo(lanes[2]);
+        prim.storeTo(lanes[3]);
+        lanes[0][l] = h.t;
+        lanes[1][l] = h.b1;
+        lanes[2][l] = h.b2;
+        lanes[3][l] = std::bit_cast<float>(h.prim);
+        t = Lanes::load(lanes[0]);
+        b1 = Lanes::load(lanes[1]);
+        b2 = Lanes::load(lanes[2]);
+        prim = Lanes::load(lanes[3]);
     }
     /// Where h.mask is set, h's hit with primitive primBits becomes the lane's nearest.
     void take(const LaneHits& h, std::uint32_t primBits)

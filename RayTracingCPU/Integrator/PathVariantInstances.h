@@ -27,10 +27,11 @@ template <Estimator E, bool Media, bool Textures>
 PathVariant instance(bool rayLanes)
 {
     constexpr PathCode code{.general = false, .estimator = E, .media = Media, .textures = Textures};
-    // kLanes paths at a time where their rays are tested together (book 3's scene 1.15x). Paths merely
-    // interleaved over a BVH, each ray traversing it alone, were 0.92x (rtrol-cornell-mirror) to 1.04x
-    // (rtow-final) one path at a time: not kept (docs/notebook/PERFORMANCE.md §1). The lanes test quads and spheres only
-    // (CpuScene::tracesRayLanes), so media scenes never test rays in lanes.
+    // kLanes paths at a time where their rays are tested together (book 3's scene 1.15x; over a BVH, with masked
+    // packet traversal, 1.07-1.50x: docs/notebook/PERFORMANCE.md §30). Paths merely interleaved over a BVH, each
+    // ray traversing it alone, were 0.92x (rtrol-cornell-mirror) to 1.04x (rtow-final) one path at a time: not
+    // kept (§1). The lanes test quads and spheres only (CpuScene::tracesRayLanes), so media scenes never test rays
+    // in lanes.
     if constexpr (!Media)
         if (rayLanes)
             return {&traceJobs<code>, code, &tracePaths<code>};

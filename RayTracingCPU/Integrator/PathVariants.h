@@ -1,8 +1,8 @@
 // Which compiled instance of the path loop a render runs (issue 11: "chosen once per render, not tested per
 // ray"). The scene's features (Scene/SceneFeatures.h) and the render's estimator pick one of the 16
 // specialised instances of tracePath: one per estimator, with or without media, with or without non-solid
-// textures. In a scene that is one BVH leaf of quads and spheres they run kLanes paths at a time, their rays
-// tested together (Integrator/PathStream.h). --specialize off keeps the general instance, one path at a time,
+// textures. In a scene of at most a few thousand quads and spheres they run kLanes paths at a time, their
+// rays tested together (Integrator/PathStream.h). --specialize off keeps the general instance, one path at a time,
 // the baseline of tests/Bench/cpu_specialization.sh.
 #pragma once
 

@@ -1,7 +1,9 @@
-// Paths traced kLanes at a time (Integrator/PathStream.h, Geometry/RayPackets.h) against one at a time: the
-// rays of a lane must find the hits each finds alone, and a job's path the radiance tracePath gives it, bit for
-// bit, whatever the number of jobs and the depth. A lane that mixed up two paths' random streams, a hit
-// recorded from the wrong lane or primitive order, or a path ended early would differ here.
+// Paths traced kLanes at a time (Integrator/PathStream.h, Geometry/RayPackets.h, Accel/Bvh4Lanes.h) against one
+// at a time: the rays of a lane must find the hits and blockers each finds alone, and a job's path the radiance
+// tracePath gives it, bit for bit, whatever the number of jobs and the depth, in a scene of one leaf and over a
+// BVH. A lane that mixed up two paths' random streams, a hit recorded from the wrong lane or primitive order, a
+// box skipped by a lane that enters it, a shadow ray's light added to the wrong path or a path ended early would
+// differ here.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -98,11 +100,75 @@ TEST(RayLanes, EveryLaneFindsTheHitItsRayFindsAlone)
     expectLanesFindTheScalarHits(CpuScene(closeup), spreadRays(vec3(-5.0f), vec3(5.0f), 8000), "rect-light-closeup");
 }
 
-TEST(RayLanes, OnlyScenesOfOneLeafWithoutTrianglesOrMediaTestRaysInLanes)
+TEST(RayLanes, OverABvhEveryLaneFindsTheHitItsRayFindsAlone)
 {
-    EXPECT_TRUE(CpuScene(makeScene("rtrol-cornell-glass")).tracesRayLanes());
-    const Scene boxLights = makeScene("cornell-box-lights"); // a BVH
-    EXPECT_FALSE(CpuScene(boxLights).tracesRayLanes());
+    // Rays from everywhere in every direction: the lanes part ways in the tree, so subtrees are traversed by
+    // the packet and by single lanes alone.
+    for (const char* id : {"rtrol-cornell-box", "cornell-box-lights", "rtrol-cornell-mirror"})
+    {
+        const CpuScene cs(placedScene(id));
+        ASSERT_FALSE(cs.bvh4().rootIsLeaf) << id;
+        expectLanesFindTheScalarHits(cs, spreadRays(vec3(1.0f), vec3(554.0f), 8000), id);
+    }
+    const CpuScene spheres(placedScene("rtow-final")); // 486 spheres, a deeper tree
+    expectLanesFindTheScalarHits(spheres, spreadRays(vec3(-12.0f, 0.0f, -12.0f), vec3(12.0f, 3.0f, 12.0f), 8000),
+                                 "rtow-final");
+}
+
+/// Each lane's shadow ray, to a distance of its own, blocked in lanes as occluded() finds it alone.
+void expectLanesFindTheScalarBlockers(const CpuScene& cs, const std::vector<Ray>& rays, float maxDistance,
+                                      const char* name)
+{
+    ASSERT_TRUE(cs.tracesRayLanes() && !cs.bvh4().rootIsLeaf) << name;
+    Rng pick(11);
+    int blocked = 0, tested = 0;
+    for (std::size_t first = 0; first + kLanes <= rays.size(); first += kLanes)
+    {
+        RayLanes lanes;
+        alignas(32) float distance[kLanes];
+        const int present = static_cast<int>(pick.nextUint() & ((1u << kLanes) - 1)) | 1; // some lanes empty
+        for (int l = 0; l < kLanes; ++l)
+        {
+            distance[l] = maxDistance * pick.nextFloat();
+            if (present >> l & 1)
+                lanes.set(l, TraceRay(rays[first + l], cs.rayNeeds()));
+            else
+                lanes.clear(l);
+        }
+        const int fromLanes = cs.occluded(lanes, 0.0f, Lanes::load(distance));
+        ASSERT_EQ(fromLanes & ~present, 0) << name << ": an empty lane reported blocked";
+        for (int l = 0; l < kLanes; ++l)
+        {
+            if (!(present >> l & 1))
+                continue;
+            const bool alone = cs.occluded(TraceRay(rays[first + l], cs.rayNeeds()), 0.0f, distance[l], 0u);
+            ASSERT_EQ((fromLanes >> l & 1) != 0, alone) << name << ", ray " << first + l << " to " << distance[l];
+            blocked += alone;
+            ++tested;
+        }
+    }
+    // Both answers are common: the comparison tests each.
+    EXPECT_GT(blocked, tested / 10) << name;
+    EXPECT_LT(blocked, tested - tested / 10) << name;
+}
+
+TEST(RayLanes, OverABvhEveryLaneIsBlockedAsItsRayAlone)
+{
+    for (const char* id : {"rtrol-cornell-box", "cornell-box-lights"})
+        expectLanesFindTheScalarBlockers(CpuScene(placedScene(id)), spreadRays(vec3(1.0f), vec3(554.0f), 8000),
+                                         400.0f, id);
+    expectLanesFindTheScalarBlockers(CpuScene(placedScene("rtow-final")),
+                                     spreadRays(vec3(-12.0f, 0.0f, -12.0f), vec3(12.0f, 3.0f, 12.0f), 8000), 8.0f,
+                                     "rtow-final");
+}
+
+TEST(RayLanes, OnlyScenesOfFewQuadsAndSpheresTestRaysInLanes)
+{
+    EXPECT_TRUE(CpuScene(makeScene("rtrol-cornell-glass")).tracesRayLanes()); // one leaf
+    EXPECT_TRUE(CpuScene(makeScene("cornell-box-lights")).tracesRayLanes()); // a BVH
+    const Scene lamps = makeScene("lamp-room"); // quads and spheres, too many
+    EXPECT_GT(CpuScene(lamps).primitiveCount(), CpuScene::kRayLanesPrimitivesAtMost);
+    EXPECT_FALSE(CpuScene(lamps).tracesRayLanes());
     const Scene triangles = makeScene("cube-and-spheres"); // one leaf, with triangles
     EXPECT_FALSE(CpuScene(triangles).tracesRayLanes());
     const Scene smoke = makeScene("rtnw-cornell-smoke"); // one leaf, with a medium
@@ -165,6 +231,7 @@ TEST(PathStream, EveryJobGetsTheRadianceOfItsPathTracedAlone)
     const Scene glass = makeScene("rtrol-cornell-glass"); // ray lanes, the mixture
     const Scene closeup = makeScene("rect-light-closeup"); // ray lanes, NEE + MIS with shadow rays
     const Scene lanes = oneLeafOfEveryCase();
+    const Scene cornell = makeScene("rtrol-cornell-box"); // a BVH
     for (const int count : {1, kLanes - 1, kLanes + 1, 300})
         for (const int depth : {0, 1, 50})
         {
@@ -174,6 +241,11 @@ TEST(PathStream, EveryJobGetsTheRadianceOfItsPathTracedAlone)
             expectTracePathsIsTracePath(closeup, Estimator::NeeMis,
                                         jobsToward(closeup.camera.lookFrom, vec3(-2.0f), vec3(2.0f), count), depth,
                                         "rect-light-closeup");
+            // Over a BVH: shadow rays in lanes too.
+            for (const Estimator e : {Estimator::Mixture, Estimator::Nee, Estimator::NeeMis})
+                expectTracePathsIsTracePath(cornell, e,
+                                            jobsToward(vec3(278.0f, 278.0f, -800.0f), vec3(0.0f), vec3(555.0f), count),
+                                            depth, "rtrol-cornell-box");
             for (const Estimator e : {Estimator::BsdfOnly, Estimator::Mixture, Estimator::Nee})
                 expectTracePathsIsTracePath(lanes, e,
                                             jobsToward(vec3(0.0f, 1.5f, 6.0f), vec3(-2.0f, 0.0f, -2.0f),
