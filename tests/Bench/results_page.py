@@ -1378,6 +1378,23 @@ def section_roulette():
         code("bash tests/Bench/device_run.sh rays\n"
              "bash tests/Bench/device_run.sh cpu-rays\n"
              "python3 tests/Bench/gpu_over_cpu.py GPU_STATS CPU_STATS tests/Bench/renders/catalogue-256.txt"),
+        "",
+        "The same, measured again after the CPU's paths went into lanes over BVHs (notebook §30; both engines on one "
+        "H100 machine in one session, 2026-11-28; the GPU's code unchanged, its times within 1-5 % of the day "
+        "before). This host's 16 cores rendered the scenes now in lanes 1.13-1.59x faster than the host of the day "
+        "before, and the scenes whose CPU code did not change 1.03-1.33x faster too (another machine of the kind: "
+        "cross-day CPU figures differ by that much). So the GPU's ratio fell: `rtow-final` 24.2x, `rtnw-motion-blur` 24.4x, `rtrol-cornell-glass` 21.5x, "
+        "`rtnw-cornell-smoke` 28.2x, `mesh-in-one-weekend` 29.2x and `rtrol-cornell-mirror` 29.7x are below 30x:",
+        "",
+        results_path("h100-bvh-lanes/gpu-over-cpu16.md").read_text().rstrip(),
+        "",
+        sources([("Machine", "NVIDIA H100 80GB HBM3, driver 580, and its host's 16 Xeon cores"),
+                 ("Date", "2026-11-28"), ("Results", link("h100-bvh-lanes")), ("Notebook", notebook_link("## 30.")),
+                 ("Command", "")]),
+        "",
+        code("bash tests/Bench/device_run.sh cpu-rays\n"
+             "bash tests/Bench/device_run.sh rays\n"
+             "python3 tests/Bench/gpu_over_cpu.py GPU_STATS CPU_STATS tests/Bench/renders/catalogue-256.txt"),
     ]
 
 
