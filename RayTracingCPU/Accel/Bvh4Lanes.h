@@ -56,7 +56,7 @@ inline void traverseLanes(const Bvh4& bvh, const BoxLaneView& rays, const Lanes&
         int mask;
         float key; // the nearest entry among the lanes that enter: the order children are visited in
     };
-    Entry stack[256]; // 4-wide depth < 96, at most 3 entries left per level
+    Entry stack[320]; // depth < 96 (BvhBuilder.cpp), at most 3 entries left per level and 4 written: < 292
     int top = 0;
     std::uint32_t index = 0;
     int mask = rays.active;
