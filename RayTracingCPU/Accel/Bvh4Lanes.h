@@ -13,19 +13,10 @@
 
 #include "Accel/Bvh4.h"
 #include "Geometry/Lanes.h"
+#include "Geometry/RayPackets.h"
 
 namespace rt::cpu
 {
-/// The lanes' rays as box tests read them: origins and inverse directions, and which lanes hold a ray.
-struct BoxLaneView
-{
-    Lanes ox, oy, oz;
-    Lanes ix, iy, iz; // 1 / d, +-inf where a component is 0
-    Lanes negX, negY, negZ; // masks: the direction is negative along the axis (its near slab is the box's max)
-    Lanes valid; // mask: the lane holds a ray
-    int active; // movemask(valid)
-};
-
 /// A subtree entered by this many of the lanes' rays or fewer is traversed by each of them alone: a packet
 /// whose rays have gone apart pays a box test per lane for one ray's work (the hybrid of Benthin, Wald, Woop,
 /// Ernst & Mark, "Combining Single and Packet-Ray Tracing for Arbitrary Ray Distributions on the Intel MIC

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "Accel/Bvh4.h"
+#include "Accel/Bvh4Lanes.h"
 #include "Geometry/Intersect.h"
 #include "Geometry/Packets.h"
 #include "Geometry/RayPackets.h"
@@ -73,9 +74,9 @@ public:
     {
         return m_triangles.empty() && m_media.empty() && m_primitiveCount <= kRayLanesPrimitivesAtMost;
     }
-    /// Beyond this many primitives the paths' rays part ways in the tree: one core, lamp-room (24,582 primitives)
-    /// took 1.07x its time in lanes and white-spheres (20,000) gained 1.09x, against 1.07-1.50x for the scenes of
-    /// 18 to 500 (docs/notebook/PERFORMANCE.md §30).
+    /// Beyond this many primitives the paths' rays part ways in the tree: on one core lamp-room (24,582
+    /// primitives) took 1.05-1.07x its time in lanes and white-spheres (20,001) gained 1.09x, against 1.09-1.45x for
+    /// the scenes of 18 to 486 (docs/notebook/PERFORMANCE.md §30).
     static constexpr std::size_t kRayLanesPrimitivesAtMost = 4096;
 
     /// The closest hit of each lane's ray in (tMin, hits.t), as intersect() finds it for that ray alone, bit for
@@ -116,9 +117,9 @@ public:
     }
 
     /// Bit l set where something lies along lane l's ray in (tMin, tMax[l]): occluded() for each lane's shadow
-    /// ray, the same answers. A lane leaves the traversal at its first blocker. Preconditions: tracesRayLanes()
-    /// and the scene is not one leaf (there the scalar test, which stops at the first blocker, is cheaper:
-    /// docs/notebook/PERFORMANCE.md §25).
+    /// ray, the same answers. A lane leaves the traversal at its first blocker. Precondition: tracesRayLanes().
+    /// In a scene of one leaf the scalar test, which stops at the first blocker, is cheaper
+    /// (docs/notebook/PERFORMANCE.md §25), so the paths use this over a BVH only.
     int occluded(const RayLanes& r, float tMin, const Lanes& tMax) const
     {
         const RayLaneView rays = r.view();

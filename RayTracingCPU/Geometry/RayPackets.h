@@ -12,13 +12,22 @@
 #include <cstdint>
 #include <limits>
 
-#include "Accel/Bvh4Lanes.h"
 #include "Geometry/Packets.h"
 #include "Geometry/TraceRay.h"
 #include "Shared/HostDevice.h"
 
 namespace rt::cpu
 {
+/// The lanes' rays as box tests read them: origins and inverse directions, and which lanes hold a ray.
+struct BoxLaneView
+{
+    Lanes ox, oy, oz;
+    Lanes ix, iy, iz; // 1 / d, +-inf where a component is 0
+    Lanes negX, negY, negZ; // masks: the direction is negative along the axis (its near slab is the box's max)
+    Lanes valid; // mask: the lane holds a ray
+    int active; // movemask(valid)
+};
+
 /// kLanes rays, structure of arrays: what the quad and sphere tests read of a TraceRay. A lane without a ray
 /// holds NaN directions and finds nothing.
 struct alignas(32) RayLanes
