@@ -60,8 +60,8 @@ class Job
     std::optional<Message> poll();
     /// Root's `bytes` on every rank (collective: every rank calls it).
     void broadcast(std::string& bytes);
-    /// Ends the whole job now with `exitCode` (MPI_Abort: mpirun kills every rank), for root when a rank went
-    /// silent and a collective would wait for it forever.
+    /// Ends the whole job now with `exitCode` (MPI_Abort: mpirun kills every rank), for a rank that fails where the
+    /// others wait for it in a collective (the reduction after the verdict).
     [[noreturn]] void abandon(int exitCode);
     /// Exits now with `exitCode`, without MPI_Finalize: for a job mpirun is ending (Ctrl-C, a rank died),
     /// whose ranks would otherwise wait in MPI_Finalize for mpirun's SIGKILL.

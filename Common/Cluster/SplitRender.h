@@ -54,7 +54,7 @@ struct Verdict
     std::string message; // Failed: "rank 1 (node7): <its error>" (no rank named when every rank failed alike)
     int exitCode = 0;
     nlohmann::json ranks;    // Finished: every rank's stats, in rank order
-    bool silentRank = false; // Failed because a rank sent no End: the job cannot end in step (Job::abandon)
+    bool silentRank = false; // Failed because a rank sent no End: the job cannot end in step (Job::leave)
 };
 
 /// Root's verdict from every rank's End (`ends[r]`; empty: rank r sent none in time), naming ranks with `nameOf`:
@@ -108,7 +108,8 @@ class SplitRender
 };
 
 /// The end of this rank's run when its job failed: root prints the job's one error line ("error: ..." on stderr); a
-/// job with a rank that went silent cannot end in step and is abandoned. Returns the exit status.
+/// job with a rank that went silent cannot end in step, and this rank leaves at once (Job::leave). Returns the exit
+/// status.
 int endFailedJob(Job& job, const Verdict& verdict);
 
 /// A rank's figures for the stats' "ranks" list: its host, device, samples and times.
