@@ -147,6 +147,12 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
         ->capture_default_str()
         ->check(CLI::IsMember({"half", "float"}));
     app.add_option("--stats", o.stats, "Write render statistics as JSON here")->check(namesAFile());
+    app.add_option("--heatmap", o.heatmap,
+                   "Headless: time each pixel's samples and write the cost here: .png (painted blue to red, with a "
+                   "colour bar and its unit), .pfm or .exr (the values: microseconds per sample on the CPU engines, "
+                   "shader-clock ticks per sample on the GPU, which needs VK_KHR_shader_clock). Timing costs the "
+                   "render time; the GPU engine traces it with its megakernel. In ray-tracing-gpu's window: on or off, "
+                   "its cost view");
     app.add_option("--count", o.count,
                    "Object count for scenes that scale (white-spheres: spheres, default 20000; many-lights: lights, "
                    "default 1000), at least 1; refused up front when the scene would not fit in the memory "

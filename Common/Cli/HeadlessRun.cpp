@@ -23,6 +23,7 @@
 #include "Error.h"
 #include "Format.h"
 #include "IO/OutputSet.h"
+#include "Image/Heatmap.h"
 #include "Image/ImageIO.h"
 #include "Render/RenderDriver.h"
 
@@ -188,6 +189,13 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& a
         throw UsageError(fmt::format("a {}x{} image is more values than one MPI reduction holds (2^31 - 1): split it "
                                      "over mpirun's ranks in tiles of your own, or render it as one process",
                                      asked.settings.width, asked.settings.height()));
+    if (!o.heatmap.empty())
+    {
+        if (job.root())
+            checkOutputPath(o.heatmap, "--heatmap", {".png", ".pfm", ".exr"});
+        if (job.distributed())
+            throw UsageError("--heatmap times each pixel on one process: run it without mpirun");
+    }
     if (job.distributed() && asked.settings.estimator == Estimator::RestirDi)
         throw UsageError("restir-di's reservoirs carry each sample to the next, so its samples cannot be split over "
                          "mpirun's ranks: run it as one process");
@@ -220,6 +228,12 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& a
             return 130;
         }
         spdlog::info("settings: {}", chosen.request.settings); // the scene's defaults with the flags applied
+        if (!o.heatmap.empty())
+        {
+            if (const std::string why = engine.costUnavailable(chosen.request.settings); !why.empty())
+                throw UsageError("--heatmap: " + why);
+            engine.setCostRecording(true);
+        }
         InterruptScope::route(&control);
         ProgressPrinter progress(control, !o.quiet && job.root());
         result = render(engine, chosen.request, control, {}, part);
@@ -284,13 +298,24 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& a
             exr ? writeExr(tmp, result.image, type) : writePfm(tmp, result.image);
         });
     }
+    if (!o.heatmap.empty())
+    {
+        const CostMap cost = engine.costMap();
+        if (cost.empty())
+            throw Error("--heatmap: the engine recorded no cost"); // costUnavailable said it would
+        result.stats.heatmap = toJson(cost, summarize(cost));
+        // By --heatmap's extension, not the temporary's.
+        outputs.add(o.heatmap, [cost, format = heatmapFormatOf(o.heatmap)](const std::filesystem::path& tmp) {
+            writeHeatmap(tmp, cost, format);
+        });
+    }
     if (!o.stats.empty())
         outputs.add(o.stats, [&](const std::filesystem::path& tmp) { writeStatsJson(tmp, result.stats); });
     outputs.commit();
     const RenderStats& s = result.stats;
     const RenderSettings& settings = request.settings;
     std::string written;
-    for (const std::string& file : {o.output, o.hdr, o.stats})
+    for (const std::string& file : {o.output, o.hdr, o.heatmap, o.stats})
         if (!file.empty())
             written += (written.empty() ? ", wrote " : ", ") + file;
     const std::string ranks = job.distributed() ? fmt::format(" on {} ranks", job.size()) : std::string();

@@ -117,6 +117,8 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
 
 int runCompare(const CompareFlags& flags, const CommonOptions& options, const EngineOptions& engineOptions)
 {
+    if (!options.heatmap.empty())
+        throw UsageError("--heatmap times one render's pixels: run it with --headless, not --compare");
     const CommandLineRender job = resolveCommandLine(options);
     CompareOptions c;
     c.spps = parseSppList(flags.sppList);

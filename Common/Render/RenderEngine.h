@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "Image/Image.h"
+#include "Render/CostMap.h"
 #include "Render/RayCounts.h"
 #include "Render/RenderControl.h"
 #include "Render/RenderSettings.h"
@@ -86,5 +87,18 @@ public:
     /// Bytes the last frame holds per pixel beyond its image, by buffer ("reservoirs", "surfaces": restir-di's);
     /// empty where the frame holds none.
     virtual std::map<std::string, std::uint64_t> frameBytesPerPixel() const { return {}; }
+
+    /// Why the engine cannot record each pixel's cost for the settings' frame, in words naming what is missing;
+    /// empty when it can.
+    virtual std::string costUnavailable(const RenderSettings& settings) const
+    {
+        (void)settings;
+        return "this engine records no per-pixel cost";
+    }
+    /// Records each pixel's cost in the frames begun from now on (off by default: the recording costs time).
+    /// Throws UsageError when turned on where costUnavailable says why not, at the next beginFrame.
+    virtual void setCostRecording(bool on) { (void)on; }
+    /// The cost of the samples the frame has traced in the batches that completed; empty when not recorded.
+    virtual CostMap costMap() { return {}; }
 };
 } // namespace rt

@@ -44,6 +44,8 @@ nlohmann::json RenderStats::toJson() const
         j["frame_configuration"] = frameConfiguration;
     if (!ranks.is_null())
         j["ranks"] = ranks;
+    if (!heatmap.is_null())
+        j["heatmap"] = heatmap;
     if (!strategyChoice.is_null())
         j["strategy_choice"] = strategyChoice;
     if (request.settings.estimator == Estimator::RestirDi)

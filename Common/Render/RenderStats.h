@@ -37,6 +37,7 @@ struct RenderStats
     std::string frameConfiguration; // RenderEngine::frameConfiguration
     nlohmann::json strategyChoice; // --strategy auto's pilot (Compare/AutoStrategy.h); null otherwise
     std::map<std::string, std::uint64_t> frameBytesPerPixel; // RenderEngine::frameBytesPerPixel
+    nlohmann::json heatmap; // --heatmap's figures (Image/Heatmap.h's toJson): unit, mean, median, p99, max; null otherwise
     nlohmann::json ranks; // a render split over MPI ranks: each rank's share, host, device, times; null otherwise
 
     double mpathsPerSecond() const { return renderSeconds > 0.0 ? double(paths) / renderSeconds * 1e-6 : 0.0; }

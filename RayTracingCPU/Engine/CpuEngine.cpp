@@ -94,6 +94,13 @@ void CpuEngine::beginFrame(const RenderSettings& settings)
     std::iota(m_frame->rowIndices.begin(), m_frame->rowIndices.end(), 0);
     if (settings.estimator == Estimator::RestirDi)
         m_frame->restir.emplace(width, height);
+    if (m_recordCost)
+    {
+        if (const std::string why = costUnavailable(settings); !why.empty())
+            throw UsageError(why);
+        m_frame->costSeconds.assign(std::size_t(width) * height, 0.0);
+        m_frame->costBefore.assign(std::size_t(width) * height, 0.0);
+    }
     spdlog::debug("CPU {}", frameConfiguration());
 }
 
@@ -150,6 +157,9 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
         const std::size_t rowStart = std::size_t(y) * std::size_t(width);
         std::copy_n(sums.data() + rowStart, width, f.before.get() + rowStart);
         f.rowsBefore[y] = tallies[y];
+        double* const cost = f.costSeconds.empty() ? nullptr : f.costSeconds.data() + rowStart;
+        if (cost)
+            std::copy_n(cost, width, f.costBefore.data() + rowStart);
         RowTally& t = tallies[y];
         t.thread = std::hash<std::thread::id>{}(std::this_thread::get_id());
         // The row's samples in (pixel, sample) order, in chunks of jobs: camera rays first, then the paths (one
@@ -159,20 +169,26 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
         PathJob jobs[kChunk];
         vec3 radiance[kChunk];
         const std::uint64_t total = std::uint64_t(width) * count;
-        for (std::uint64_t first = 0; first < total; first += kChunk)
+        std::uint32_t n = 0;
+        for (std::uint64_t first = 0; first < total; first += n)
         {
             if (control.cancelRequested())
             {
                 f.rowStates[y] = RowState::Abandoned;
                 return;
             }
-            const auto n = static_cast<std::uint32_t>(std::min<std::uint64_t>(kChunk, total - first));
+            n = static_cast<std::uint32_t>(std::min<std::uint64_t>(kChunk, total - first));
+            if (cost) // one pixel's samples, timed alone
+                n = static_cast<std::uint32_t>(std::min<std::uint64_t>(n, count - first % count));
+            const auto start = cost ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
             for (std::uint32_t i = 0; i < n; ++i)
             {
                 const std::uint64_t j = first + i;
                 jobs[i] = cameraJob(camera, media, std::uint32_t(j / count), std::uint32_t(y), firstSample + std::uint32_t(j % count));
             }
             trace(scene, uniforms, std::span<const PathJob>(jobs, n), radiance, t.rays);
+            if (cost)
+                cost[first / count] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             for (std::uint32_t i = 0; i < n; ++i)
                 accumulate(sums[rowStart + std::size_t((first + i) / count)], radiance[i], t);
         }
@@ -184,13 +200,18 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
         std::for_each(std::execution::par, f.rowIndices.begin(), f.rowIndices.end(), row);
     if (std::find_if(f.rowStates.begin(), f.rowStates.end(),
                      [](RowState r) { return r != RowState::Traced; }) == f.rowStates.end())
+    {
+        f.costSamples += count;
         return {.complete = true}; // no clock of its own: the driver's host clock is the CPU's
+    }
     for (int y = 0; y < f.height; ++y)
         if (f.rowStates[y] != RowState::Skipped) // traced, or abandoned part way: back to the batch's start
         {
             const std::size_t rowStart = std::size_t(y) * std::size_t(width);
             std::copy_n(f.before.get() + rowStart, width, sums.data() + rowStart);
             tallies[y] = f.rowsBefore[y];
+            if (!f.costSeconds.empty())
+                std::copy_n(f.costBefore.data() + rowStart, width, f.costSeconds.data() + rowStart);
         }
     return {.complete = false};
 }
@@ -281,6 +302,25 @@ std::vector<double> CpuEngine::radianceSums()
     for (const dvec3& s : m_frame->sum)
         sums.insert(sums.end(), {s.x, s.y, s.z});
     return sums;
+}
+
+std::string CpuEngine::costUnavailable(const RenderSettings& settings) const
+{
+    return settings.estimator == Estimator::RestirDi
+               ? "restir-di's passes trace every pixel's reservoirs together and are not timed per pixel"
+               : std::string();
+}
+
+CostMap CpuEngine::costMap()
+{
+    if (!m_frame || m_frame->costSeconds.empty() || m_frame->costSamples == 0)
+        return {};
+    CostMap map{.width = m_frame->width, .height = m_frame->height, .unit = "microseconds per sample"};
+    map.perSample.resize(m_frame->costSeconds.size());
+    const double scale = 1e6 / double(m_frame->costSamples);
+    for (std::size_t i = 0; i < map.perSample.size(); ++i)
+        map.perSample[i] = static_cast<float>(m_frame->costSeconds[i] * scale);
+    return map;
 }
 
 SampleTally CpuEngine::tally() const

@@ -49,6 +49,13 @@ public:
     std::string frameConfiguration() const override;
     /// restir-di's reservoirs (two per pixel, 64 bytes) and surfaces (64 bytes); empty for other estimators.
     std::map<std::string, std::uint64_t> frameBytesPerPixel() const override;
+    /// Empty but for restir-di, whose passes are not timed per pixel.
+    std::string costUnavailable(const RenderSettings& settings) const override;
+    /// With it on, each pixel's samples are traced in chunks of their own (lanes filled from one pixel's samples:
+    /// slower with few samples per batch) and each chunk timed on the host's steady clock, camera rays included.
+    void setCostRecording(bool on) override { m_recordCost = on; }
+    /// Microseconds per sample: the time of each pixel's chunks over the samples of the batches that completed.
+    CostMap costMap() override;
     /// The path loop alone: "general" or e.g. "nee-mis, no media, solid colours only".
     std::string pathVariant() const { return m_frame ? m_frame->variant.describe() : std::string(); }
 
@@ -87,6 +94,11 @@ private:
         std::vector<RowState> rowStates;
         std::vector<int> rowIndices; // 0 .. height - 1, the range the execution policy walks
         std::optional<RestirBuffers> restir; // restir-di's reservoirs, kept across batches
+        // With cost recording: each pixel's seconds of tracing (and the row's as the batch found them, like
+        // `before`), and the samples per pixel of the batches that completed. Empty otherwise.
+        std::vector<double> costSeconds;
+        std::vector<double> costBefore;
+        std::uint64_t costSamples = 0;
     };
 
     /// traceSamples for restir-di: iteration by iteration, each two passes over the image
@@ -95,6 +107,7 @@ private:
 
     EngineKind m_kind;
     bool m_specialize;
+    bool m_recordCost = false;
     std::unique_ptr<CpuScene> m_scene;
     SceneFeatures m_features;
     double m_buildSeconds = 0.0;

@@ -40,7 +40,6 @@ struct WindowFlags
     int samplesPerFrame = 1;
     std::string rayTracing = "on";
     std::string accumulate = "on";
-    std::string heatmap = "off";
 };
 
 bool onOff(const std::string& value, const char* flag)
@@ -78,8 +77,6 @@ void addWindowOptions(CLI::App& app, WindowFlags& w)
     app.add_option("--raytracing", w.rayTracing, "Window: ray tracing, or (off) the rasterised preview")
         ->capture_default_str();
     app.add_option("--accumulate", w.accumulate, "Window: accumulate samples between frames")->capture_default_str();
-    app.add_option("--heatmap", w.heatmap, "Window: show the time per pixel (needs VK_KHR_shader_clock)")
-        ->capture_default_str();
 }
 
 int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::optional<int> device, bool validation,
@@ -109,7 +106,10 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
     image.camera = job.scene.camera;
     image.rayTracing = onOff(flags.rayTracing, "--raytracing");
     image.accumulate = onOff(flags.accumulate, "--accumulate");
-    image.heatmap = onOff(flags.heatmap, "--heatmap");
+    // --heatmap names the headless run's file; the window takes on or off, and shows the cost for a file too.
+    if (!options.heatmap.empty() && options.heatmap != "on" && options.heatmap != "off")
+        spdlog::warn("--heatmap {}: the file is for --headless; the window shows the cost instead", options.heatmap);
+    image.heatmap = !options.heatmap.empty() && options.heatmap != "off";
     w.initial.display.samplesPerFrame = flags.samplesPerFrame;
     // The scene's default spp is no reason to stop: only a --spp given is.
     w.initial.display.stopAtSpp = options.given("spp").has_value();

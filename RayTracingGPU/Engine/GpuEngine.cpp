@@ -4,8 +4,11 @@
 #include <chrono>
 #include <functional>
 
+#include <spdlog/fmt/fmt.h>
+
 #include "Assets/AssetPaths.h"
 #include "Engine/BandPlan.h"
+#include "Engine/CostTarget.h"
 #include "Engine/GpuContext.h"
 #include "Engine/GpuScene.h"
 #include "Engine/RenderLimits.h"
@@ -61,6 +64,9 @@ struct GpuEngine::Impl
     std::unique_ptr<WaveStageTimer> waveTimer; // made at the first wavefront launch on a device with timestamps
     std::uint32_t waveSegments = kFirstWaveSegments; // the wavefront's first submission per wave: its segments
     bool countRays = false; // GpuEngineOptions::countRays
+    bool recordCost = false; // setCostRecording
+    std::unique_ptr<CostTarget> cost; // the frame's, with cost recording; kept while the size stays
+    std::uint64_t costSamples = 0; // samples per pixel of the frame's completed batches, while recording
 
     explicit Impl(const GpuEngineOptions& options)
         : context({options.deviceIndex, options.deviceShare, options.validation, options.presentation}),
@@ -120,8 +126,15 @@ struct GpuEngine::Impl
                 vkCmdResetQueryPool(cmd, timestamps.Handle(), 0, 2);
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps.Handle(), 0);
             }
-            tracer.recordLaunch(cmd, {&descriptors.set, 1}, uniforms, integrator, firstSample, samples,
-                                {target->width(), rows}, nullptr, firstRow, interleave);
+            if (cost)
+            {
+                const VkDescriptorSet sets[] = {descriptors.set, cost->set()};
+                tracer.recordLaunch(cmd, sets, uniforms, GpuIntegrator::Megakernel, firstSample, samples,
+                                    {target->width(), rows}, &cost->pipeline(), firstRow, interleave);
+            }
+            else
+                tracer.recordLaunch(cmd, {&descriptors.set, 1}, uniforms, integrator, firstSample, samples,
+                                    {target->width(), rows}, nullptr, firstRow, interleave);
             if (timed)
                 vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps.Handle(), 1);
             vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
@@ -338,7 +351,12 @@ struct GpuEngine::Impl
 
     void clear()
     {
-        timedSubmit("clear_gpu", [&](VkCommandBuffer cmd) { target->recordClear(cmd); });
+        timedSubmit("clear_gpu", [&](VkCommandBuffer cmd) {
+            target->recordClear(cmd);
+            if (cost)
+                cost->recordClear(cmd);
+        });
+        costSamples = 0;
     }
 
     void readback()
@@ -420,16 +438,31 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     if (restirDi)
         if (const auto problem = RestirBuffers::tooLargeFor(e.device(), std::uint64_t(width) * height))
             throw DeviceError(*problem);
+    if (e.recordCost)
+        if (const std::string why = costUnavailable(settings); !why.empty())
+            throw UsageError(why);
     e.prepareTarget(width, height, restirDi);
     e.restirHistory = false;
     e.uniforms = e.tracer.uniforms(e.tracer.scene()->camera, settings, {width, height});
     e.uniforms.countRays = e.countRays ? 1u : 0u;
     e.frameStages.clear();
     const auto compileStart = std::chrono::steady_clock::now();
-    // restir-di runs its own passes (RestirPipeline), whatever the integrator setting.
-    e.integrator = restirDi ? GpuIntegrator::Megakernel
-                            : e.tracer.integratorFor(e.uniforms, std::uint64_t(width) * height * settings.trueSpp());
-    const bool compiled = e.tracer.prepare(e.uniforms, e.integrator); // out of the render's time
+    if (!e.recordCost)
+        e.cost.reset();
+    else if (!e.cost || e.cost->width() != width || e.cost->height() != height)
+    {
+        e.cost.reset();
+        e.cost = std::make_unique<CostTarget>(e.device(), e.tracer.shaderDir(), e.tracer.pipeline().specializes(),
+                                              width, height);
+    }
+    // restir-di runs its own passes (RestirPipeline), whatever the integrator setting; the timed ray generation
+    // is a megakernel's.
+    e.integrator = restirDi || e.cost
+                       ? GpuIntegrator::Megakernel
+                       : e.tracer.integratorFor(e.uniforms, std::uint64_t(width) * height * settings.trueSpp());
+    // Out of the render's time.
+    const bool compiled = e.cost ? e.cost->pipeline().prepare(e.uniforms, e.tracer.gpuScene().pipelineScene())
+                                 : e.tracer.prepare(e.uniforms, e.integrator);
     e.target->reset(e.uniforms);
     e.clear();
     e.waveSegments = kFirstWaveSegments;
@@ -496,6 +529,7 @@ BatchResult GpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
         row += rows;
         e.bands.record(rows, count, hostSeconds);
     }
+    e.costSamples += count;
     return {.complete = true, .deviceSeconds = deviceTimed ? deviceSeconds : -1.0};
 }
 
@@ -525,7 +559,8 @@ std::string GpuEngine::frameConfiguration() const
         return {};
     const SceneTracer& t = m_impl->tracer;
     return "pipeline " + t.pipeline().specializationFor(m_impl->uniforms, t.gpuScene().pipelineScene()).describe() +
-           ", integrator " + (m_impl->restir ? std::string("restir-di passes") : toString(m_impl->integrator));
+           ", integrator " + (m_impl->restir ? std::string("restir-di passes") : toString(m_impl->integrator)) +
+           (m_impl->cost ? ", each sample timed (--heatmap)" : "");
 }
 
 std::map<std::string, double> GpuEngine::stageSeconds() const
@@ -545,6 +580,31 @@ std::map<std::string, double> GpuEngine::stageSeconds() const
 std::map<std::string, std::uint64_t> GpuEngine::frameBytesPerPixel() const
 {
     return m_impl->restir ? RestirBuffers::bytesPerPixel() : std::map<std::string, std::uint64_t>{};
+}
+
+std::string GpuEngine::costUnavailable(const RenderSettings& settings) const
+{
+    if (settings.estimator == Estimator::RestirDi)
+        return "restir-di's passes trace every pixel's reservoirs together and are not timed per pixel";
+    if (!m_impl->device().shaderClock())
+        return fmt::format("{} has no shader clock (VK_KHR_shader_clock with shaderSubgroupClock)", deviceName());
+    return {};
+}
+
+void GpuEngine::setCostRecording(bool on) { m_impl->recordCost = on; }
+
+CostMap GpuEngine::costMap()
+{
+    Impl& e = *m_impl;
+    if (!e.cost || e.costSamples == 0)
+        return {};
+    CostMap map{.width = static_cast<int>(e.cost->width()),
+                .height = static_cast<int>(e.cost->height()),
+                .perSample = e.cost->readTicks(e.device(), e.context.commandPool()),
+                .unit = "shader-clock ticks per sample"};
+    for (float& ticks : map.perSample)
+        ticks = static_cast<float>(double(ticks) / double(e.costSamples));
+    return map;
 }
 
 SampleTally GpuEngine::tally() const

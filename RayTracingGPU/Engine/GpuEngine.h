@@ -93,6 +93,14 @@ public:
     std::map<std::string, double> stageSeconds() const override;
     /// restir-di's buffers per pixel while the frame runs it (RestirBuffers::bytesPerPixel), else none.
     std::map<std::string, std::uint64_t> frameBytesPerPixel() const override;
+    /// Empty but for restir-di (not timed per pixel) and a device without VK_KHR_shader_clock.
+    std::string costUnavailable(const RenderSettings& settings) const override;
+    /// With it on, frames trace through the timed ray generation (RayGenCost.rgen, CostTarget.h): the megakernel
+    /// whatever the integrator setting, each sample timed on the shader clock.
+    void setCostRecording(bool on) override;
+    /// Shader-clock ticks per sample: each pixel's ticks over the samples of the batches that completed (a
+    /// cancelled batch's bands keep their ticks).
+    CostMap costMap() override;
     /// The pipeline of the frame: PipelineSpecialization::describe() ("general", or the constants in words).
     std::string frameConfiguration() const override;
 

@@ -218,7 +218,8 @@ int runGui(const CommonOptions& options, const std::string& engineName, const Gu
     const auto engine = parseName<EngineKind>(engineName);
     if (!engine)
         throw UsageError("--engine must be single, multi or gpu (got '" + engineName + "')");
-    for (const auto& [flag, value] : {std::pair{"--output", &options.output}, {"--hdr", &options.hdr}, {"--stats", &options.stats}})
+    for (const auto& [flag, value] : {std::pair{"--output", &options.output}, {"--hdr", &options.hdr}, {"--stats", &options.stats},
+                                      {"--heatmap", &options.heatmap}})
         if (!value->empty())
             throw UsageError(std::string(flag) + " is for --headless runs; in the window, use Save image");
     std::optional<WindowSize> size;
