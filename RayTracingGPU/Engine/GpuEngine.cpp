@@ -477,8 +477,9 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
         e.clear();
         e.waveSegments = kFirstWaveSegments; // the render plans its first wave as with a cached pipeline
     }
-    e.frameStages["pipeline_host"] =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - compileStart).count();
+    if (compiled) // a frame whose pipelines were all compiled before has no compilation to tell
+        e.frameStages["pipeline_host"] =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - compileStart).count();
     // The first band: the frame's first sample, but at most a sixteenth of the engine's paths per batch (a CPU
     // device's 64 K are a fraction of a second; a GPU's 268 M bind only above 16 M pixels).
     const std::uint64_t firstBandRows = e.pathsPerBatch / (std::uint64_t(shader::kBandInterleave) * width);

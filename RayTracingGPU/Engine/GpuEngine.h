@@ -86,8 +86,8 @@ public:
     SampleTally tally() const override;
     /// Where the time went, in seconds: of setScene, upload_host (buffers and images, host clock) and, where
     /// they were built, blas_build_gpu and tlas_build_gpu (device clock); of the frame, pipeline_host (the
-    /// compilation of a pipeline not cached yet, host clock; lavapipe compiles at the first launch instead,
-    /// inside trace_gpu), clear_gpu, trace_gpu (= RenderStats::gpuSeconds), readback_gpu (every copy of the
+    /// compilation of a pipeline not cached yet, with a one-row launch of it where a driver finishes compiling
+    /// at the first launch (lavapipe), host clock; absent when the frame's pipeline was compiled before), clear_gpu, trace_gpu (= RenderStats::gpuSeconds), readback_gpu (every copy of the
     /// sum to the host: previews and the result) and resolve_host (sum / samples into the image). Device
     /// times are left out on a queue without timestamps.
     std::map<std::string, double> stageSeconds() const override;

@@ -37,6 +37,10 @@ void TimingsTable::record(const RenderStats& stats, const WindowRedraws& redraws
     cell->renders += 1;
     cell->device = stats.device;
     cell->redraws = redraws;
+    cell->buildSeconds = stats.buildSeconds;
+    cell->compileSeconds.reset();
+    if (const auto compile = stats.stageSeconds.find("pipeline_host"); compile != stats.stageSeconds.end())
+        cell->compileSeconds = compile->second;
     m_latest = std::size_t(row - m_rows.begin());
     ++m_revision;
 }
@@ -61,7 +65,11 @@ nlohmann::json TimingsTable::toJson() const
                                             {"renders", cell->renders},
                                             {"device", cell->device},
                                             {"window_redraws", cell->redraws.total},
-                                            {"window_redraws_on_input", cell->redraws.onInput}});
+                                            {"window_redraws_on_input", cell->redraws.onInput},
+                                            {"build_seconds", cell->buildSeconds},
+                                            {"compiled", cell->compileSeconds.has_value()},
+                                            {"compile_seconds", cell->compileSeconds ? nlohmann::json(*cell->compileSeconds)
+                                                                                     : nlohmann::json()}});
                 out.push_back(std::move(entry));
             }
     return out;

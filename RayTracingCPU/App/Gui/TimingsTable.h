@@ -38,12 +38,16 @@ std::vector<const Setting*> timingColumns();
 
 struct EngineTiming
 {
-    double lastSeconds = 0.0; // tracing time of the latest render
+    double lastSeconds = 0.0; // tracing time of the latest render: no setup (RenderStats::renderSeconds)
     double bestSeconds = 0.0; // and of the fastest
     double mpathsPerSecond = 0.0; // of the latest
     int renders = 0;
     std::string device;
     WindowRedraws redraws; // during the latest render
+    // The latest render's setup, apart from its tracing: the scene's acceleration structures (with the GPU's
+    // uploads), and the pipelines it compiled (the GPU engine's pipeline_host; none when all were compiled before).
+    double buildSeconds = 0.0;
+    std::optional<double> compileSeconds;
 };
 
 struct TimingRow
@@ -70,7 +74,8 @@ public:
     std::uint64_t revision() const { return m_revision; }
     /// One object per (row, engine): scene, count, mesh, width, height, spp, depth, sampling, estimator,
     /// russian_roulette, unidirectional_light, engine, seconds, best_seconds, mpaths_per_second, renders, device,
-    /// window_redraws, window_redraws_on_input (of the latest render).
+    /// window_redraws, window_redraws_on_input, build_seconds, compiled, compile_seconds (null when not compiled)
+    /// (of the latest render).
     nlohmann::json toJson() const;
 
 private:

@@ -10,16 +10,36 @@ namespace rt::gui
 {
 namespace
 {
-constexpr EngineKind kEngines[] = {EngineKind::Single, EngineKind::Multi, EngineKind::Gpu};
-
 /// How many times faster than single core `engine` ran this row's work; empty without both timings.
-std::string speedUp(const TimingRow& row, EngineKind engine)
+std::string speedUp(const TimingRow& row, std::size_t engine)
 {
     const auto& single = row.engines[std::size_t(EngineKind::Single)];
-    const auto& other = row.engines[std::size_t(engine)];
-    if (!single || !other || other->lastSeconds <= 0.0)
+    const auto& other = row.engines[engine];
+    if (engine == std::size_t(EngineKind::Single) || !single || !other || other->lastSeconds <= 0.0)
         return {};
-    return fmt::format("{} {:.1f}x", engine == EngineKind::Gpu ? "GPU" : "multi", single->lastSeconds / other->lastSeconds);
+    return fmt::format("{:.1f}x", single->lastSeconds / other->lastSeconds);
+}
+
+/// The engine of `row` with the shortest latest time (row.engines.size() when it has none).
+std::size_t fastestEngine(const TimingRow& row)
+{
+    std::size_t best = row.engines.size();
+    for (std::size_t e = 0; e < row.engines.size(); ++e)
+        if (row.engines[e] && (best == row.engines.size() || row.engines[e]->lastSeconds < row.engines[best]->lastSeconds))
+            best = e;
+    return best;
+}
+
+void renderTimeTooltip(const EngineTiming& cell, bool disturbed)
+{
+    ImGui::SetTooltip("best %.3f s of %d render%s\n%s\nthe window drew %d frame%s during it%s", cell.bestSeconds,
+                      cell.renders, cell.renders == 1 ? "" : "s", cell.device.c_str(), cell.redraws.total,
+                      cell.redraws.total == 1 ? "" : "s",
+                      disturbed ? fmt::format(", {} for input: their drawing took CPU time from the render, which "
+                                              "this time includes",
+                                              cell.redraws.onInput)
+                                      .c_str()
+                                : " (paced: every 0.5 s)");
 }
 } // namespace
 
@@ -29,24 +49,24 @@ bool drawTimings(Session& session)
     if (ImGui::SmallButton("Clear"))
         session.clearTimings();
     ImGui::SameLine();
-    ImGui::TextDisabled("tracing time of the latest render and its Mpaths/s; hover a time for the best of n; * the "
-                        "window redrew for input during the render (render again untouched for a clean time)");
+    ImGui::TextDisabled("render: tracing alone (hover for the best of n; * the window redrew for input during it); "
+                        "build and compile: the setup before it");
     // Every column follows its widest cell as timings arrive; a pane too narrow scrolls rather than clips.
     const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollX |
                                   ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
     const std::vector<const Setting*> columns = timingColumns();
-    // Scene, size, the settings, one per engine, the ratio.
-    if (!ImGui::BeginTable("timings", int(2 + columns.size() + std::size(kEngines) + 1), flags))
+    // Scene and size, a line per engine (engine, render, Mpaths/s, build, compile, vs single), then the settings:
+    // the times stay in view in a narrow pane.
+    if (!ImGui::BeginTable("timings", int(2 + columns.size() + 6), flags))
         return table.rows().empty();
     bool latestVisible = table.rows().empty();
     ImGui::TableSetupScrollFreeze(1, 1);
     ImGui::TableSetupColumn("Scene");
     ImGui::TableSetupColumn("Size");
+    for (const char* name : {"Engine", "Render", "Mpaths/s", "Build", "Compile", "vs single core"})
+        ImGui::TableSetupColumn(name);
     for (const Setting* setting : columns)
         ImGui::TableSetupColumn(std::string(setting->label).c_str());
-    for (EngineKind e : kEngines)
-        ImGui::TableSetupColumn(engineLabel(e));
-    ImGui::TableSetupColumn("vs single core");
     ImGui::TableHeadersRow();
 
     const ImU32 fastest = ImGui::GetColorU32(ImVec4(0.25f, 0.70f, 0.35f, 0.35f));
@@ -57,60 +77,61 @@ bool drawTimings(Session& session)
     for (std::size_t index = 0; index < table.rows().size(); ++index)
     {
         const TimingRow& row = table.rows()[index];
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(row.key.scene.id.c_str());
-        ImGui::TableNextColumn();
-        ImGui::Text("%dx%d", row.key.settings.width, row.key.settings.height());
-        for (const Setting* setting : columns)
-        {
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(setting->text(row.key.settings).c_str());
-        }
-
-        std::size_t best = row.engines.size();
-        for (std::size_t e = 0; e < row.engines.size(); ++e)
-            if (row.engines[e] && (best == row.engines.size() || row.engines[e]->lastSeconds < row.engines[best]->lastSeconds))
-                best = e;
+        const std::size_t best = fastestEngine(row);
+        bool first = true; // the work's columns on its first engine's line only
         for (std::size_t e = 0; e < row.engines.size(); ++e)
         {
-            ImGui::TableNextColumn();
             const auto& cell = row.engines[e];
             if (!cell)
-            {
-                ImGui::TextDisabled("-");
                 continue;
-            }
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            if (first)
+                ImGui::TextUnformatted(row.key.scene.id.c_str());
+            ImGui::TableNextColumn();
+            if (first)
+                ImGui::Text("%dx%d", row.key.settings.width, row.key.settings.height());
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(engineLabel(EngineKind(e)));
+            ImGui::TableNextColumn();
             if (e == best)
                 ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, fastest);
             const bool disturbed = cell->redraws.onInput > 0;
-            ImGui::BeginGroup();
             ImGui::Text("%.3f s%s", cell->lastSeconds, disturbed ? " *" : "");
-            ImGui::TextDisabled("%.2f Mpaths/s", cell->mpathsPerSecond);
-            ImGui::EndGroup();
+            if (ImGui::IsItemHovered())
+                renderTimeTooltip(*cell, disturbed);
             if (index == table.latestRow())
             {
-                // A timing is the row's tallest cell (two lines): the row is in view when all of it is.
                 const ImDrawList& draw = *ImGui::GetWindowDrawList();
                 latestVisible = ImGui::GetItemRectMin().y >= draw.GetClipRectMin().y &&
                                 ImGui::GetItemRectMax().y <= draw.GetClipRectMax().y;
                 if (scrollToLatest)
-                    ImGui::SetScrollHereY(1.0f); // the cursor is below the two lines: the whole row comes into view
+                    ImGui::SetScrollHereY(1.0f);
             }
-            if (ImGui::IsItemHovered())
-                ImGui::SetTooltip("best %.3f s of %d render%s\n%s\nthe window drew %d frame%s during it%s",
-                                  cell->bestSeconds, cell->renders, cell->renders == 1 ? "" : "s",
-                                  cell->device.c_str(), cell->redraws.total, cell->redraws.total == 1 ? "" : "s",
-                                  disturbed ? fmt::format(", {} for input: their drawing took CPU time from the "
-                                                          "render, which this time includes",
-                                                          cell->redraws.onInput)
-                                                  .c_str()
-                                            : " (paced: every 0.5 s)");
+            ImGui::TableNextColumn();
+            ImGui::Text("%.2f", cell->mpathsPerSecond);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f s", cell->buildSeconds);
+            ImGui::TableNextColumn();
+            if (cell->compileSeconds)
+            {
+                ImGui::Text("%.3f s", *cell->compileSeconds);
+                if (ImGui::IsItemHovered())
+                    ImGui::SetTooltip("this render compiled its pipelines first (a driver's first use of them); "
+                                      "the render time leaves that out");
+            }
+            else
+                ImGui::TextDisabled(EngineKind(e) == EngineKind::Gpu ? "cached" : "-");
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(speedUp(row, e).c_str());
+            for (const Setting* setting : columns)
+            {
+                ImGui::TableNextColumn();
+                if (first)
+                    ImGui::TextUnformatted(setting->text(row.key.settings).c_str());
+            }
+            first = false;
         }
-        ImGui::TableNextColumn();
-        for (EngineKind e : {EngineKind::Multi, EngineKind::Gpu})
-            if (const std::string s = speedUp(row, e); !s.empty())
-                ImGui::TextUnformatted(s.c_str());
     }
     ImGui::EndTable();
     return latestVisible;

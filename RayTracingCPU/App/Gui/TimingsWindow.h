@@ -1,5 +1,6 @@
-// The timings table on screen: one line per piece of work, single core, multi core and GPU side by side,
-// the fastest engine of each line highlighted, with the speed-ups over single core.
+// The timings table on screen: for each piece of work, a line per engine that rendered it (single core, multi
+// core, GPU) with its render time (tracing alone), its setup apart (acceleration structures; pipelines compiled,
+// or cached), the fastest engine highlighted and the speed-up over single core.
 #pragma once
 
 #include "App/Gui/Session.h"

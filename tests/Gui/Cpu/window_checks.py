@@ -84,6 +84,14 @@ def timings(state_path, expect):
     for engine, t in rows[key].items():
         if not (t["seconds"] > 0 and t["mpaths_per_second"] > 0):
             fail(f"{engine} has no time or Mpaths/s: {t}")
+        if not t["build_seconds"] >= 0:
+            fail(f"{engine} has no build time: {t}")
+        # The CPU engines compile nothing; the GPU engine's first render of a pipeline compiles it, and says so
+        # in its own column, apart from the render's time.
+        if engine != "gpu" and (t["compiled"] or t["compile_seconds"] is not None):
+            fail(f"{engine} reports a compilation: {t}")
+        if engine == "gpu" and not (t["compiled"] and t["compile_seconds"] > 0):
+            fail(f"the GPU's first render of this pipeline does not report its compilation: {t}")
     gpu = state["gpu"]
     if expect == "gpu":
         if gpu["state"] != "ready":
