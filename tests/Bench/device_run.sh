@@ -3,7 +3,7 @@
 # carried in .devcarry/ (bin/: the binaries, shaders and assets; lib/: the shared libraries ldd lists beyond
 # glibc; layers/: the Khronos validation layer) and Debian's Vulkan loader in .gl/, both made here by
 # tests/Bench/device_carry.sh (figures in docs/notebook/PERFORMANCE.md).
-#   tests/Bench/device_run.sh tests    the GPU test suite (but its heavy part) and the apps' smoke tests
+#   tests/Bench/device_run.sh tests    the GPU test suite (but its heavy part), the apps' smoke tests and --heatmap's
 #   tests/Bench/device_run.sh samplers the light samplers at equal time on the light scenes (issue 37)
 #   tests/Bench/device_run.sh roulette Russian roulette's rules (pbrt-v4's, Cycles' sqrt) at equal time on every
 #                                      catalogue scene (roulette.sh): ENGINE gpu (WIDTH 400, MS 500, SEEDS 3,
@@ -72,6 +72,9 @@ tests)
         --output "$out/glass.png" --stats "$out/glass.json"
     "$bin/rt_gpu_tests" --gtest_brief=1 --gtest_filter='-Heavy/*' 2>&1 | tail -40
     bash tests/Cli/bad_input.sh "$bin/ray-tracing-gpu" | grep -v "^ok"
+    bash tests/Cli/heatmap.sh "$bin/ray-tracing-gpu"
+    "$bin/ray-tracing-gpu" --headless --quiet --scene rtrol-cornell-glass --width 400 --spp 64 --heatmap "$out/glass-cost.png" \
+        --stats "$out/glass-cost.json" --output "$out/glass-cost-image.png"
     RT_GLTF_MODELS=$PWD/.devcarry/gltf bash tests/Cli/scene_files.sh "$bin/ray-tracing-gpu" . | grep -v "^ok"
     ;;
 heavy)
