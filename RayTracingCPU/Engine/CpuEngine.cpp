@@ -307,7 +307,7 @@ std::vector<double> CpuEngine::radianceSums()
 std::string CpuEngine::costUnavailable(const RenderSettings& settings) const
 {
     return settings.estimator == Estimator::RestirDi
-               ? "restir-di's passes trace every pixel's reservoirs together and are not timed per pixel"
+               ? "restir-di's passes are not timed per pixel"
                : std::string();
 }
 

@@ -586,7 +586,7 @@ std::map<std::string, std::uint64_t> GpuEngine::frameBytesPerPixel() const
 std::string GpuEngine::costUnavailable(const RenderSettings& settings) const
 {
     if (settings.estimator == Estimator::RestirDi)
-        return "restir-di's passes trace every pixel's reservoirs together and are not timed per pixel";
+        return "restir-di's passes are not timed per pixel";
     if (!m_impl->device().shaderClock())
         return fmt::format("{} has no shader clock (VK_KHR_shader_clock with shaderSubgroupClock)", deviceName());
     return {};

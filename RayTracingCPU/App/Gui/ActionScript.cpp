@@ -25,6 +25,8 @@ const std::vector<ActionSpec>& specs()
             {"count", ActionValue::Integer, "N", "white-spheres' sphere count (-1: the scene's)", -1},
             settingActionSpec(setting("sampling")),
             {"loop", ActionValue::OnOff, "on|off", "loop rendering: render again with the next seed and average"},
+            {"heatmap", ActionValue::OnOff, "on|off",
+             "show each pixel's cost (renders again, timing every pixel) instead of the image"},
             {"engine", ActionValue::Text, "single|multi|gpu",
              "rendering engine (gpu waits for the GPU engine to start; unavailable: a warning)", 0, 1e30,
              [](const std::string& v) { return parseName<EngineKind>(v).has_value(); }},
@@ -96,6 +98,11 @@ bool ActionScript::run(const Action& a, Session& session, GlWindow& window)
     if (a.name == "loop")
     {
         session.setLoop(a.on());
+        return true;
+    }
+    if (a.name == "heatmap")
+    {
+        session.setHeatmap(a.on());
         return true;
     }
     if (a.name == "engine")

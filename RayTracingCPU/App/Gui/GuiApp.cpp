@@ -48,12 +48,13 @@ public:
     /// `size` and `script`: the options' --window-size and --actions, parsed (and so checked) before;
     /// `fitToMonitor` for the default size.
     GuiApp(const GuiOptions& options, WindowSize size, bool fitToMonitor, std::optional<ActionScript> script,
-           const RenderRequest& initial, std::shared_ptr<const Scene> scene, EngineKind engine, bool chooseStrategy)
+           const RenderRequest& initial, std::shared_ptr<const Scene> scene, EngineKind engine, bool chooseStrategy,
+           bool heatmap)
         : m_options(options),
           m_window(size, fitToMonitor, "ray-tracing-cpu: light-sampling lab"),
           m_job({.enabled = !options.noGpu, .validation = options.validation}, initial, std::move(scene),
                 [] { GlWindow::wake(); }),
-          m_session(m_job, initial, engine, false, chooseStrategy)
+          m_session(m_job, initial, engine, false, chooseStrategy, heatmap)
     {
         m_session.setFont(availableFonts().front().name);
         m_script = std::move(script);
@@ -74,7 +75,7 @@ public:
             m_theme.apply(m_session.display());
             const bool scriptDone = !m_script || m_script->step(m_session, m_window);
             m_session.update();
-            m_imageView.update(m_session.preview());
+            m_imageView.update(m_session.preview(), m_session.heatmap());
 
             const FramebufferSize size = m_window.framebufferSize();
             if (!size.empty()) // minimised or 0x0: nothing to draw into
@@ -166,11 +167,16 @@ private:
         std::string overlay;
         if (!preview)
             overlay = progress.busy ? "rendering the first image..." : "no image yet: press Render";
+        else if (m_session.heatmap() && !m_imageView.showsHeatmap() && !stale)
+            overlay = progress.busy                        ? std::string("timing every pixel...")
+                      : !preview->costUnavailable.empty() ? "no cost heatmap: " + preview->costUnavailable
+                                                          : std::string("no cost heatmap for this image: press Render");
         else if (stale)
             overlay = progress.busy ? fmt::format("rendered with other settings; rendering the panel's: {:.0f}%",
                                                   progress.fraction * 100.0)
                                     : "rendered with other settings: press Render";
-        std::string title = preview ? "Image: " + describe(*preview) : std::string("Image");
+        std::string title = preview ? (m_imageView.showsHeatmap() ? "Cost per sample: " : "Image: ") + describe(*preview)
+                                    : std::string("Image");
         if (preview && !preview->complete && !(progress.busy && !stale))
             title += "  |  cancelled";
         title += "###image";
@@ -218,10 +224,13 @@ int runGui(const CommonOptions& options, const std::string& engineName, const Gu
     const auto engine = parseName<EngineKind>(engineName);
     if (!engine)
         throw UsageError("--engine must be single, multi or gpu (got '" + engineName + "')");
-    for (const auto& [flag, value] : {std::pair{"--output", &options.output}, {"--hdr", &options.hdr}, {"--stats", &options.stats},
-                                      {"--heatmap", &options.heatmap}})
+    for (const auto& [flag, value] : {std::pair{"--output", &options.output}, {"--hdr", &options.hdr}, {"--stats", &options.stats}})
         if (!value->empty())
             throw UsageError(std::string(flag) + " is for --headless runs; in the window, use Save image");
+    // --heatmap names the headless run's file; the window takes on or off, and shows the cost for a file too.
+    if (!options.heatmap.empty() && options.heatmap != "on" && options.heatmap != "off")
+        spdlog::warn("--heatmap {}: the file is for --headless; the window shows the cost instead", options.heatmap);
+    const bool heatmap = !options.heatmap.empty() && options.heatmap != "off";
     std::optional<WindowSize> size;
     if (!gui.windowSize.empty())
         size = parseWindowSize(gui.windowSize);
@@ -234,7 +243,7 @@ int runGui(const CommonOptions& options, const std::string& engineName, const Gu
     const RenderSettings& s = initial.settings;
     const WindowSize fitting = defaultWindowSize(s.width, s.height(), DisplaySettings{}.fontSize);
     GuiApp app(gui, size.value_or(fitting), !size, std::move(script), initial,
-               std::make_shared<const Scene>(std::move(job.scene)), *engine, options.strategy == "auto");
+               std::make_shared<const Scene>(std::move(job.scene)), *engine, options.strategy == "auto", heatmap);
     return app.run();
 }
 } // namespace rt::gui

@@ -33,19 +33,23 @@ void GlTexture::upload(int width, int height, const unsigned char* rgba)
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
 }
 
-void ImageView::update(const std::shared_ptr<const Preview>& preview)
+void ImageView::update(const std::shared_ptr<const Preview>& preview, bool heatmap)
 {
-    if (!preview || preview->generation == m_generation)
+    const bool showHeatmap = heatmap && preview && !preview->costRgba.empty();
+    if (!preview || (preview->generation == m_generation && showHeatmap == m_showsHeatmap))
         return;
     m_generation = preview->generation;
-    m_width = preview->linear.width();
-    m_height = preview->linear.height();
+    m_showsHeatmap = showHeatmap;
+    const Image& shownImage = showHeatmap ? preview->costPainted : preview->linear;
+    const std::vector<unsigned char>& rgba = showHeatmap ? preview->costRgba : preview->rgba;
+    m_width = shownImage.width();
+    m_height = shownImage.height();
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     const int step = (std::max(m_width, m_height) + maxSize - 1) / std::max(maxSize, 1);
     if (step <= 1)
     {
-        m_texture.upload(m_width, m_height, preview->rgba.data());
+        m_texture.upload(m_width, m_height, rgba.data());
         return;
     }
     // Wider than a texture may be (renders go to 65536 pixels): show every step-th pixel; Save image keeps all.
@@ -54,7 +58,7 @@ void ImageView::update(const std::shared_ptr<const Preview>& preview)
     std::vector<unsigned char> shown(std::size_t(w) * h * 4);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
-            std::copy_n(preview->rgba.data() + (std::size_t(y * step) * m_width + std::size_t(x * step)) * 4, 4,
+            std::copy_n(rgba.data() + (std::size_t(y * step) * m_width + std::size_t(x * step)) * 4, 4,
                         shown.data() + (std::size_t(y) * w + x) * 4);
     m_texture.upload(w, h, shown.data());
 }

@@ -34,8 +34,11 @@ private:
 class ImageView
 {
 public:
-    /// Uploads `preview` when it is newer than the image shown.
-    void update(const std::shared_ptr<const Preview>& preview);
+    /// Uploads `preview` when it is newer than the image shown, or `heatmap` changed: with it, the preview's
+    /// painted cost map where it has one (Preview::costRgba), else its image.
+    void update(const std::shared_ptr<const Preview>& preview, bool heatmap = false);
+    /// Whether the texture holds a cost map rather than an image.
+    bool showsHeatmap() const { return m_showsHeatmap; }
     /// Draws into the current ImGui window's remaining content region. `overlay`: a line shown over the image
     /// (or the empty pane); `dim`: the image does not belong to the panel's settings.
     void draw(bool dim, const std::string& overlay);
@@ -46,6 +49,7 @@ public:
 private:
     GlTexture m_texture;
     std::uint64_t m_generation = 0;
+    bool m_showsHeatmap = false;
     int m_width = 0;
     int m_height = 0;
     std::array<float, 4> m_drawnRect{};

@@ -5,6 +5,7 @@
 
 #include "App/Gui/DisplayEncoding.h"
 #include "Error.h"
+#include "Image/Heatmap.h"
 #include "Scenes/Catalogue.h"
 
 namespace rt::gui
@@ -174,6 +175,7 @@ void RenderJob::run(const JobRequest& request, std::shared_ptr<RenderControl> co
             slot.scene = scene;
         }
         JobRequest job = request;
+        engine->setCostRecording(false); // the pilot's renders are not timed per pixel
         if (request.chooseStrategy)
         {
             setPhase(JobPhase::ChoosingStrategy);
@@ -187,6 +189,8 @@ void RenderJob::run(const JobRequest& request, std::shared_ptr<RenderControl> co
             m_choice = std::move(chosen);
         }
 
+        const std::string costUnavailable = job.heatmap ? engine->costUnavailable(job.image.settings) : std::string();
+        engine->setCostRecording(job.heatmap && costUnavailable.empty());
         Image mean;
         int meanSamples = 0;
         for (int iteration = 0; control; ++iteration)
@@ -211,7 +215,8 @@ void RenderJob::run(const JobRequest& request, std::shared_ptr<RenderControl> co
             }
             mean = combine(mean, meanSamples, result.image, result.stats.trueSpp);
             meanSamples += result.stats.trueSpp;
-            publish(job, mean, meanSamples, true, RenderOutcome{.request = job, .stats = result.stats, .redraws = redraws});
+            publish(job, mean, meanSamples, true, RenderOutcome{.request = job, .stats = result.stats, .redraws = redraws},
+                    engine->costMap(), costUnavailable);
             control = nextIteration();
         }
     }
@@ -258,7 +263,7 @@ void RenderJob::setPhase(JobPhase phase, int loopIteration)
 }
 
 void RenderJob::publish(const JobRequest& request, Image estimate, int samples, bool complete,
-                        std::optional<RenderOutcome> outcome)
+                        std::optional<RenderOutcome> outcome, CostMap cost, std::string costUnavailable)
 {
     auto preview = std::make_shared<Preview>();
     preview->request = request;
@@ -266,6 +271,13 @@ void RenderJob::publish(const JobRequest& request, Image estimate, int samples, 
     preview->complete = complete;
     preview->rgba = toDisplayRgba(estimate); // before the lock: the UI never waits for this
     preview->linear = std::move(estimate);
+    if (!cost.empty())
+    {
+        preview->costPainted = paintHeatmap(cost);
+        preview->costRgba = toDisplayRgba(preview->costPainted);
+        preview->cost = std::move(cost);
+    }
+    preview->costUnavailable = std::move(costUnavailable);
     std::lock_guard lock(m_mutex);
     preview->generation = ++m_generation;
     m_preview = std::move(preview);

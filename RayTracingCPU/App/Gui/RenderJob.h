@@ -34,6 +34,7 @@ struct JobRequest
     RenderRequest image;
     EngineKind engine = EngineKind::Multi;
     bool loop = false; // loop rendering: when a render finishes, render again with the next seed and average
+    bool heatmap = false; // time each pixel (RenderEngine::setCostRecording): each finished render's cost map
     /// --strategy auto's pilot first (Compare/AutoStrategy.h: its default candidates, budget and table), then the
     /// render with the strategy it chose. The pilot runs to its end (its budget, 2 s at most) before a newer
     /// request can start.
@@ -57,6 +58,12 @@ struct Preview
     bool complete = false; // a render (or a loop iteration) finished; false for passes and cancelled renders
     Image linear; // linear radiance, for Save image
     std::vector<unsigned char> rgba; // the same as sRGB RGBA8, for the screen
+    // With JobRequest::heatmap, of a finished render (loop rendering: its latest iteration): each pixel's cost,
+    // painted (Image/Heatmap.h) for the screen, and its figures; or why the engine could not time the pixels.
+    CostMap cost;
+    Image costPainted;
+    std::vector<unsigned char> costRgba;
+    std::string costUnavailable;
 };
 
 enum class JobPhase
@@ -146,9 +153,10 @@ private:
     RenderEngine* engineFor(EngineKind kind, const RenderControl& control);
     std::shared_ptr<const Scene> sceneFor(const SceneRef& ref);
     void setPhase(JobPhase phase, int loopIteration = 0);
-    /// Publishes an estimate (and, when given, the outcome that goes with it) in one step.
+    /// Publishes an estimate (and, when given, the outcome that goes with it, and the render's cost map or why
+    /// there is none) in one step.
     void publish(const JobRequest& request, Image estimate, int samples, bool complete,
-                 std::optional<RenderOutcome> outcome = {});
+                 std::optional<RenderOutcome> outcome = {}, CostMap cost = {}, std::string costUnavailable = {});
     void report(RenderOutcome outcome);
     /// After a finished loop iteration: the control of the next one, or nullptr when the loop must stop.
     std::shared_ptr<RenderControl> nextIteration();

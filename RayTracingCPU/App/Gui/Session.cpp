@@ -7,6 +7,7 @@
 
 #include "Cli/ActionGrammar.h"
 #include "Error.h"
+#include "Image/Heatmap.h"
 #include "Image/ImageIO.h"
 #include "Render/MemoryBudget.h"
 #include "SceneFile/SceneFile.h"
@@ -59,8 +60,9 @@ const char* toString(GpuStartup::State state)
 }
 } // namespace
 
-Session::Session(RenderJob& job, const RenderRequest& image, EngineKind engine, bool loop, bool chooseStrategy)
-    : m_job(job), m_image(image), m_engine(engine), m_loop(loop), m_gpu(job.gpuStatus())
+Session::Session(RenderJob& job, const RenderRequest& image, EngineKind engine, bool loop, bool chooseStrategy,
+                 bool heatmap)
+    : m_job(job), m_image(image), m_engine(engine), m_loop(loop), m_heatmap(heatmap), m_gpu(job.gpuStatus())
 {
     m_watch.watch(m_image.scene.id, m_image.scene.fileVersion);
     if (chooseStrategy)
@@ -182,11 +184,18 @@ void Session::setLoop(bool on)
         render(); // loop rendering of an idle window starts rendering, as the thesis' checkbox did
 }
 
+void Session::setHeatmap(bool on)
+{
+    m_heatmap = on;
+    if (on && (!m_preview || (m_preview->cost.empty() && m_preview->costUnavailable.empty())))
+        render();
+}
+
 void Session::render()
 {
     m_requested = m_image;
     m_message.clear();
-    m_job.submit({.image = m_image, .engine = m_engine, .loop = m_loop});
+    m_job.submit({.image = m_image, .engine = m_engine, .loop = m_loop, .heatmap = m_heatmap});
     m_progress = m_job.progress();
 }
 
@@ -194,7 +203,7 @@ void Session::chooseStrategy()
 {
     m_requested = m_image;
     m_message.clear();
-    m_job.submit({.image = m_image, .engine = m_engine, .loop = m_loop, .chooseStrategy = true});
+    m_job.submit({.image = m_image, .engine = m_engine, .loop = m_loop, .heatmap = m_heatmap, .chooseStrategy = true});
     m_progress = m_job.progress();
 }
 
@@ -373,12 +382,16 @@ nlohmann::json Session::stateJson() const
     nlohmann::json panel = toJson(m_image);
     panel["engine"] = rt::toString(m_engine);
     panel["loop"] = m_loop;
+    panel["heatmap"] = m_heatmap;
     nlohmann::json image = nullptr;
     if (m_preview)
         image = {{"settings", toJson(m_preview->request.image)},
                  {"engine", rt::toString(m_preview->request.engine)},
                  {"samples", m_preview->samples},
-                 {"complete", m_preview->complete}};
+                 {"complete", m_preview->complete},
+                 {"heatmap", m_preview->cost.empty() ? nlohmann::json()
+                                                     : toJson(m_preview->cost, summarize(m_preview->cost))},
+                 {"heatmap_unavailable", m_preview->costUnavailable}};
     return {{"panel", panel},
             {"image", image},
             {"image_matches_panel", !imageIsStale()},

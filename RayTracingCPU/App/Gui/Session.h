@@ -34,7 +34,8 @@ class Session
 public:
     /// Starts rendering `image` with `engine` at once, after the strategy pilot with `chooseStrategy`
     /// (--strategy auto).
-    Session(RenderJob& job, const RenderRequest& image, EngineKind engine, bool loop, bool chooseStrategy = false);
+    Session(RenderJob& job, const RenderRequest& image, EngineKind engine, bool loop, bool chooseStrategy = false,
+            bool heatmap = false);
 
     // Image settings. Each returns false, with message(), for a value the engines would refuse.
     /// A catalogue id or an existing scene file (.json, .gltf, .glb), which update() then reloads whenever
@@ -58,6 +59,10 @@ public:
     /// False, with message(), when the GPU engine is unavailable.
     bool selectEngine(EngineKind engine);
     void setLoop(bool on);
+    /// Shows each pixel's cost per sample (Image/Heatmap.h) in place of the image; on, renders are timed per
+    /// pixel, and turning it on renders again when the image on screen was not.
+    void setHeatmap(bool on);
+    bool heatmap() const { return m_heatmap; }
     void render();
     /// Renders after --strategy auto's pilot on the selected engine (RenderJob's chooseStrategy): once it has
     /// chosen, the panel shows the chosen strategy (which the user may change like any setting) and
@@ -118,6 +123,7 @@ private:
     SceneFileWatch m_watch;
     EngineKind m_engine;
     bool m_loop;
+    bool m_heatmap = false;
     DisplaySettings m_display;
     std::optional<RenderRequest> m_requested; // the image settings of the last request
     JobProgress m_progress;

@@ -164,6 +164,15 @@ void SettingsPanel::drawRenderingParameters(Session& session)
     bool loop = session.loop();
     if (ImGui::Checkbox("Loop rendering", &loop))
         session.setLoop(loop);
+    bool heatmap = session.heatmap();
+    if (ImGui::Checkbox("Cost heatmap", &heatmap))
+        session.setHeatmap(heatmap);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Each pixel's cost per sample, blue (cheap) to red, in place of the image: the CPU engines "
+                          "time each pixel's paths (microseconds), the GPU sums its shader clock's ticks. Timing "
+                          "renders again and slows a render of few samples per pixel on the CPU.");
+    if (heatmap && session.preview() && !session.preview()->costUnavailable.empty())
+        ImGui::TextWrapped("no heatmap: %s", session.preview()->costUnavailable.c_str());
     tooltip("when a render finishes, render again with the next seed and average: the image keeps converging");
     std::uint32_t seed = s.seed;
     const std::uint32_t step = 1;
