@@ -466,15 +466,20 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     e.target->reset(e.uniforms);
     e.clear();
     e.waveSegments = kFirstWaveSegments;
-    if (compiled && !restirDi)
+    if (compiled)
     {
         // A driver may finish a new pipeline's compilation at its first launch (lavapipe: a 16-px render took
-        // 1.6 s at first use against 0.009 s cached): one row of one sample keeps that in the compilation's time
-        // too. Its sums and counters are cleared again below; its stage times are dropped.
-        e.dispatch(0, 1, 0, 1, 1, false);
+        // 1.6 s at first use against 0.009 s cached; restir-di's three passes 7.6 s at 96 px in the CPU window):
+        // one row of one sample keeps that in the compilation's time too. Its sums, counters and reservoirs are
+        // cleared or forgotten below; its stage times are dropped.
+        if (restirDi)
+            e.submitRestir(kRestirPasses, 0, 0, 1, 1, false);
+        else
+            e.dispatch(0, 1, 0, 1, 1, false);
         e.frameStages.clear();
         e.target->reset(e.uniforms);
         e.clear();
+        e.restirHistory = false;
         e.waveSegments = kFirstWaveSegments; // the render plans its first wave as with a cached pipeline
     }
     if (compiled) // a frame whose pipelines were all compiled before has no compilation to tell

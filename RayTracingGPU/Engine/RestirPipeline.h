@@ -44,6 +44,8 @@ public:
     /// Compiles the pipeline a render with `uniforms` of `scene` needs, unless it exists; true when it compiled
     /// one. Throws rt::DeviceError when the driver rejects it.
     bool prepare(const shader::RenderUniforms& uniforms, const PipelineScene& scene) const;
+    /// Pipelines compiled so far.
+    std::size_t compiledCount() const { return m_compiled.size(); }
 
     /// Records `pass` of sample `sampleIndex` over `extent` (a band of rows: positions from `firstRow` on in the
     /// row order of `rowInterleave`, Shared/BandOrder.h), with `sets` bound from set 0 (whose uniform buffer holds
