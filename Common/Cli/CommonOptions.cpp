@@ -151,8 +151,8 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
                    "Headless: time each pixel's samples and write the cost here: .png (painted blue to red, with a "
                    "colour bar and its unit), .pfm or .exr (the values: microseconds per sample on the CPU engines, "
                    "shader-clock ticks per sample on the GPU, which needs VK_KHR_shader_clock). Timing costs the "
-                   "render time; the GPU engine traces it with its megakernel. In ray-tracing-gpu's window: on or off, "
-                   "its cost view");
+                   "render time; the GPU engine traces it with its megakernel. In the windows: on or off, their cost "
+                   "view (the same painted map)");
     app.add_option("--count", o.count,
                    "Object count for scenes that scale (white-spheres: spheres, default 20000; many-lights: lights, "
                    "default 1000), at least 1; refused up front when the scene would not fit in the memory "

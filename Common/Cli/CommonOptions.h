@@ -29,8 +29,8 @@ struct CommonOptions
     std::string hdr;
     std::string hdrType = "half"; // --hdr-type: an .exr's channels
     std::string stats;
-    /// --heatmap: headless, the file of the per-pixel cost (.png painted, .pfm or .exr values); in the GPU window,
-    /// on or off (its cost view).
+    /// --heatmap: headless, the file of the per-pixel cost (.png painted, .pfm or .exr values); in the windows,
+    /// on or off (their cost view).
     std::string heatmap;
     std::optional<int> count; // >= 1 (CLI11 checks); empty: the scene's default
     std::string mesh;
