@@ -1,7 +1,6 @@
 #include "Cli/HeadlessRun.h"
 
 #include <atomic>
-#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <condition_variable>
@@ -22,6 +21,7 @@
 #include "Cluster/SplitRender.h"
 #include "Error.h"
 #include "Format.h"
+#include "IO/FileExtension.h"
 #include "IO/OutputSet.h"
 #include "Image/Heatmap.h"
 #include "Image/ImageIO.h"
@@ -97,15 +97,6 @@ private:
     std::condition_variable m_wake;
     bool m_stop = false;
 };
-
-/// ".png" of "OUT.PNG": the extension as the checks compare it.
-std::string lowercaseExtension(const std::filesystem::path& path)
-{
-    std::string extension = path.extension().string();
-    for (char& c : extension)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return extension;
-}
 } // namespace
 
 void checkOutputPath(const std::string& path, const char* flag, std::initializer_list<const char*> extensions)

@@ -1,7 +1,6 @@
 #include "Image/Heatmap.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -24,6 +23,7 @@
 
 #include "Check.h"
 #include "Error.h"
+#include "IO/FileExtension.h"
 #include "Image/ExrIO.h"
 #include "Image/ImageIO.h"
 #include "Shared/HeatmapPalette.h"
@@ -69,14 +69,6 @@ std::string label(double value)
     if (value == 0.0)
         return "0";
     return std::abs(value) >= 100.0 ? fmt::format("{:.0f}", value) : fmt::format("{:.3g}", value);
-}
-
-std::string lowercaseExtension(const std::filesystem::path& path)
-{
-    std::string e = path.extension().string();
-    for (char& c : e)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return e;
 }
 } // namespace
 

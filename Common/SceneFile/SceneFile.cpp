@@ -1,31 +1,20 @@
 #include "SceneFile/SceneFile.h"
 
-#include <algorithm>
-#include <cctype>
 #include <string>
 
 #include <spdlog/fmt/fmt.h>
 
 #include "Error.h"
+#include "IO/FileExtension.h"
 #include "SceneFile/GltfImport.h"
 #include "SceneFile/JsonSceneReader.h"
 #include "Scenes/Catalogue.h"
 
 namespace rt
 {
-namespace
-{
-std::string lowerExtension(std::string_view path)
-{
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
-} // namespace
-
 bool isSceneFilePath(std::string_view idOrPath)
 {
-    const std::string ext = lowerExtension(idOrPath);
+    const std::string ext = lowercaseExtension(std::filesystem::path(idOrPath));
     return ext == ".json" || ext == ".gltf" || ext == ".glb";
 }
 
@@ -61,7 +50,7 @@ Scene loadSceneFile(const std::filesystem::path& file)
 {
     if (const std::string problem = sceneFileProblem(file); !problem.empty())
         throw SceneError(problem);
-    const std::string ext = lowerExtension(file.string());
+    const std::string ext = lowercaseExtension(file);
     return ext == ".json" ? readJsonScene(file) : importGltf(file); // GltfFile tells .gltf from .glb by their bytes
 }
 } // namespace rt

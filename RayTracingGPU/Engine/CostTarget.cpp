@@ -9,6 +9,26 @@
 
 namespace rt::gpu
 {
+void writeCostSet(const vk::Device& device, VkDescriptorSet set, VkImageView image, VkBuffer stats)
+{
+    const VkDescriptorImageInfo imageInfo{VK_NULL_HANDLE, image, VK_IMAGE_LAYOUT_GENERAL};
+    const VkDescriptorBufferInfo bufferInfo{stats, 0, VK_WHOLE_SIZE};
+    VkWriteDescriptorSet writes[2]{};
+    for (VkWriteDescriptorSet& w : writes)
+    {
+        w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+        w.dstSet = set;
+        w.descriptorCount = 1;
+    }
+    writes[0].dstBinding = shader::kBindingCost;
+    writes[0].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    writes[0].pImageInfo = &imageInfo;
+    writes[1].dstBinding = shader::kBindingCostStats;
+    writes[1].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    writes[1].pBufferInfo = &bufferInfo;
+    vkUpdateDescriptorSets(device.Handle(), 2, writes, 0, nullptr);
+}
+
 CostTarget::CostTarget(const vk::Device& device, const std::filesystem::path& shaderDir, Specialize specialize,
                        std::uint32_t width, std::uint32_t height)
     : m_pipeline(device, shaderDir, RayGenVariant::Cost, specialize),
@@ -21,22 +41,7 @@ CostTarget::CostTarget(const vk::Device& device, const std::filesystem::path& sh
     RT_CHECK(device.shaderClock());
     std::memset(m_stats.mapped(), 0, sizeof(shader::CostStats));
     m_set = m_pool.allocate(m_pipeline.costSetLayout(), 0);
-    const VkDescriptorImageInfo image{VK_NULL_HANDLE, m_view.Handle(), VK_IMAGE_LAYOUT_GENERAL};
-    const VkDescriptorBufferInfo buffer{m_stats.Handle(), 0, VK_WHOLE_SIZE};
-    VkWriteDescriptorSet writes[2]{};
-    for (VkWriteDescriptorSet& w : writes)
-    {
-        w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-        w.dstSet = m_set;
-        w.descriptorCount = 1;
-    }
-    writes[0].dstBinding = shader::kBindingCost;
-    writes[0].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    writes[0].pImageInfo = &image;
-    writes[1].dstBinding = shader::kBindingCostStats;
-    writes[1].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    writes[1].pBufferInfo = &buffer;
-    vkUpdateDescriptorSets(device.Handle(), 2, writes, 0, nullptr);
+    writeCostSet(device, m_set, m_view.Handle(), m_stats.Handle());
 }
 
 void CostTarget::recordClear(VkCommandBuffer cmd) const

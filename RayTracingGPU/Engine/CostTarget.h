@@ -16,6 +16,9 @@
 
 namespace rt::gpu
 {
+/// Points set kSetCost `set` at `image` (the r32f ticks image, in GENERAL layout) and `stats` (a CostStats buffer).
+void writeCostSet(const vk::Device& device, VkDescriptorSet set, VkImageView image, VkBuffer stats);
+
 class CostTarget
 {
 public:

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "Engine/CostTarget.h"
 #include "Engine/GpuEngine.h"
 #include "Engine/GpuScene.h"
 #include "Engine/RenderLimits.h"
@@ -110,25 +111,8 @@ void ProgressiveFrame::createCostResources()
 
 void ProgressiveFrame::writeCostDescriptors() const
 {
-    const VkDescriptorImageInfo image{VK_NULL_HANDLE, m_costView.Handle(), VK_IMAGE_LAYOUT_GENERAL};
     for (std::size_t slot = 0; slot < m_costSets.size(); ++slot)
-    {
-        const VkDescriptorBufferInfo buffer{m_costStats[slot].Handle(), 0, VK_WHOLE_SIZE};
-        VkWriteDescriptorSet writes[2]{};
-        for (VkWriteDescriptorSet& w : writes)
-        {
-            w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-            w.dstSet = m_costSets[slot];
-            w.descriptorCount = 1;
-        }
-        writes[0].dstBinding = shader::kBindingCost;
-        writes[0].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-        writes[0].pImageInfo = &image;
-        writes[1].dstBinding = shader::kBindingCostStats;
-        writes[1].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        writes[1].pBufferInfo = &buffer;
-        vkUpdateDescriptorSets(m_engine->context().device().Handle(), 2, writes, 0, nullptr);
-    }
+        writeCostSet(m_engine->context().device(), m_costSets[slot], m_costView.Handle(), m_costStats[slot].Handle());
 }
 
 void ProgressiveFrame::recordClear(VkCommandBuffer cmd)

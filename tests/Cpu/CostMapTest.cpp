@@ -16,19 +16,16 @@ namespace rt::test
 {
 namespace
 {
-constexpr const char* kScene = "rtrol-cornell-glass";
-const vec3 kGlassCenter{190.0f, 90.0f, 190.0f}; // in the scene's own coordinates (placedScene)
-constexpr float kGlassRadius = 90.0f;
 
 RenderRequest requestOf(const Scene& scene, int width, int spp)
 {
-    return {.scene = {.id = kScene}, .settings = settingsFor(scene, width, spp, 50)};
+    return {.scene = {.id = kGlassScene}, .settings = settingsFor(scene, width, spp, 50)};
 }
 } // namespace
 
 TEST(CpuCostMap, TheGlassSphereCostsMoreThanTheWallsAroundIt)
 {
-    const Scene scene = makeScene(kScene);
+    const Scene scene = makeScene(kGlassScene);
     for (const EngineKind kind : {EngineKind::Single, EngineKind::Multi})
     {
         cpu::CpuEngine engine(kind);
@@ -44,7 +41,7 @@ TEST(CpuCostMap, TheGlassSphereCostsMoreThanTheWallsAroundIt)
             ASSERT_TRUE(std::isfinite(v) && v > 0.0f) << "every pixel traced, so every pixel took time";
         // The camera sees the sphere in ~100 of the 4,096 pixels. Measured at 1.5x the walls' cost (one core
         // and two): the bound leaves room for a loaded machine's noise, which the trimmed means mostly drop.
-        const CostRegions regions = costAroundSphere(map, placedScene(kScene), kGlassCenter, kGlassRadius);
+        const CostRegions regions = costAroundSphere(map, placedScene(kGlassScene), kGlassCenter, kGlassRadius);
         ASSERT_GT(regions.spherePixels, 60u);
         ASSERT_GT(regions.surroundingPixels, 2000u);
         EXPECT_GT(regions.sphere, 1.15 * regions.surroundings) << toString(kind);
@@ -59,7 +56,7 @@ TEST(CpuCostMap, TheGlassSphereCostsMoreThanTheWallsAroundIt)
 
 TEST(CpuCostMap, NoneUnlessAskedAndNoneForRestir)
 {
-    const Scene scene = makeScene(kScene);
+    const Scene scene = makeScene(kGlassScene);
     cpu::CpuEngine engine(EngineKind::Single);
     engine.setScene(scene);
     RenderControl control;

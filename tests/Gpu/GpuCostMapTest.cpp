@@ -16,13 +16,13 @@ namespace rt::gpu::test
 {
 namespace
 {
-constexpr const char* kScene = "rtrol-cornell-glass";
-const vec3 kGlassCenter{190.0f, 90.0f, 190.0f}; // in the scene's own coordinates (placedScene)
-constexpr float kGlassRadius = 90.0f;
+using ::rt::test::kGlassCenter;
+using ::rt::test::kGlassRadius;
+using ::rt::test::kGlassScene;
 
 RenderRequest requestOf(const Scene& scene, int width, int spp)
 {
-    return {.scene = {.id = kScene}, .settings = ::rt::test::settingsFor(scene, width, spp, 50)};
+    return {.scene = {.id = kGlassScene}, .settings = ::rt::test::settingsFor(scene, width, spp, 50)};
 }
 
 class GpuCostMap : public ::testing::Test
@@ -40,7 +40,7 @@ protected:
 TEST_F(GpuCostMap, TheGlassSphereCostsMoreThanTheWallsAroundIt)
 {
     GpuEngine& engine = *sharedEngine();
-    const Scene scene = makeScene(kScene);
+    const Scene scene = makeScene(kGlassScene);
     const RenderRequest request = requestOf(scene, 64, 64);
     if (const std::string why = engine.costUnavailable(request.settings); !why.empty())
         GTEST_SKIP() << why;
@@ -59,7 +59,7 @@ TEST_F(GpuCostMap, TheGlassSphereCostsMoreThanTheWallsAroundIt)
     for (float v : map.perSample)
         ASSERT_TRUE(std::isfinite(v) && v > 0.0f) << "every pixel traced, so every pixel's clock moved";
     // Measured at 1.37x on lavapipe (whose clock moves in steps shared by neighbouring pixels).
-    const ::rt::test::CostRegions regions = ::rt::test::costAroundSphere(map, placedScene(kScene), kGlassCenter, kGlassRadius);
+    const ::rt::test::CostRegions regions = ::rt::test::costAroundSphere(map, placedScene(kGlassScene), kGlassCenter, kGlassRadius);
     ASSERT_GT(regions.spherePixels, 60u);
     EXPECT_GT(regions.sphere, 1.1 * regions.surroundings);
     // The timed ray generation traces the megakernel's samples: its image is the megakernel's bit for bit.

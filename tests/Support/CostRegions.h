@@ -17,6 +17,12 @@ struct CostRegions
     std::size_t surroundingPixels = 0;
 };
 
+/// Book 3's final scene and its glass sphere, in the scene's own coordinates (placedScene): the heatmap tests'
+/// case, where a path through the glass keeps its throughput, so Russian roulette keeps it longer than the walls'.
+inline constexpr const char* kGlassScene = "rtrol-cornell-glass";
+inline const vec3 kGlassCenter{190.0f, 90.0f, 190.0f};
+inline constexpr float kGlassRadius = 90.0f;
+
 /// `map` rendered of `scene` (its camera, the map's size) split by the sphere of `center` and `radius` (world).
 CostRegions costAroundSphere(const CostMap& map, const Scene& scene, const vec3& center, float radius);
 } // namespace rt::test
