@@ -11,6 +11,7 @@
 #include "Cli/ValueParsing.h"
 #include "Compare/AutoCommand.h"
 #include "Compare/Compare.h"
+#include "Compare/ReferenceRequest.h"
 #include "Compare/ReferenceCache.h"
 #include "Error.h"
 #include "Render/EngineRegistry.h"
@@ -125,7 +126,7 @@ int runCompare(const CompareFlags& flags, const CommonOptions& options, const En
     c.engines = flags.engines.empty() ? engines::available() : parseEngineList(flags.engines);
     // The reference renders in two halves of referenceSpp / 2 each: each half is a render of at most kMaxSpp.
     const long long largest = *std::max_element(c.spps.begin(), c.spps.end());
-    const long long referenceSpp = flags.referenceSpp > 0 ? flags.referenceSpp : 4 * largest;
+    const long long referenceSpp = flags.referenceSpp > 0 ? flags.referenceSpp : kDefaultReferenceFactor * largest;
     if (referenceSpp > 2LL * kMaxSpp)
         throw UsageError(fmt::format("the reference's {} spp ({}) is more than two renders of at most {} spp: give "
                                      "--reference-spp up to {} or a smaller --spp-list",

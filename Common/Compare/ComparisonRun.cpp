@@ -9,6 +9,7 @@
 
 #include "Compare/PythonScript.h"
 #include "Compare/ReferenceCache.h"
+#include "Compare/ReferenceRequest.h"
 #include "Error.h"
 #include "Image/Flip.h"
 #include "Image/ImageIO.h"
@@ -18,18 +19,14 @@ namespace rt::compare
 {
 namespace
 {
-/// The request the reference is cached by: all its spp, at seed + 1000.
 RenderRequest referenceRequest(const RenderRequest& base, const CompareOptions& options)
 {
-    RenderRequest request = base;
-    request.settings.spp = options.referenceSpp;
-    request.settings.seed += 1000;
-    return request;
+    return compare::referenceRequest(base, options.referenceSpp);
 }
 
 int halfSpp(const CompareOptions& options)
 {
-    return std::max(1, (options.referenceSpp + 1) / 2);
+    return referenceHalfSpp(options.referenceSpp);
 }
 } // namespace
 
@@ -65,10 +62,7 @@ std::optional<Reference> givenReference(const Scene& scene, const RenderRequest&
 
 RenderRequest referenceHalf(const RenderRequest& base, const CompareOptions& options, int half)
 {
-    RenderRequest request = referenceRequest(base, options);
-    request.settings.spp = halfSpp(options);
-    request.settings.seed += 1000 * std::uint32_t(half);
-    return request;
+    return referenceHalfRequest(base, options.referenceSpp, half);
 }
 
 Reference finishReference(const Scene& scene, const RenderRequest& base, const CompareOptions& options,

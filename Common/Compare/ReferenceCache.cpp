@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 #include <type_traits>
 
 #include <nlohmann/json.hpp>
@@ -54,7 +55,7 @@ std::string hex(std::uint64_t v) { return fmt::format("{:016x}", v); }
 std::filesystem::path defaultReferenceCacheDir()
 {
     if (const char* dir = std::getenv("RT_REFERENCE_CACHE"))
-        return dir;
+        return std::string_view(dir) == "off" ? std::filesystem::path() : std::filesystem::path(dir);
     if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
         return std::filesystem::path(xdg) / "ray-tracing" / "references";
     if (const char* home = std::getenv("HOME"); home && *home)

@@ -18,7 +18,8 @@
 
 namespace rt::compare
 {
-/// $RT_REFERENCE_CACHE, else $XDG_CACHE_HOME/ray-tracing/references, else ~/.cache/ray-tracing/references.
+/// $RT_REFERENCE_CACHE ('off': none, an empty path), else $XDG_CACHE_HOME/ray-tracing/references, else
+/// ~/.cache/ray-tracing/references.
 std::filesystem::path defaultReferenceCacheDir();
 
 /// 64-bit FNV-1a over everything an engine renders from `scene` (camera, background, materials, textures,

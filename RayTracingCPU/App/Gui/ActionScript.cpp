@@ -37,6 +37,8 @@ const std::vector<ActionSpec>& specs()
             {"defaults", ActionValue::None, "", "the scene's own spp, depth, width, aspect and light mode"},
             {"wait", ActionValue::None, "", "until no render runs (loop rendering: until one more finishes)"},
             {"running", ActionValue::None, "", "until a render is tracing, or none runs"},
+            {"wait_reference", ActionValue::None, "",
+             "until no render runs and the timings' references of the current scene are done (relMSE measured)"},
         });
     return all;
 }
@@ -143,6 +145,8 @@ bool ActionScript::run(const Action& a, Session& session, GlWindow& window)
             m_finishedBefore = session.finishedRenders();
         return !session.progress().busy || (session.loop() && session.finishedRenders() > m_finishedBefore);
     }
+    if (a.name == "wait_reference")
+        return !session.progress().busy && !session.referencesPending();
     if (a.name == "running")
         return !session.progress().busy ||
                (session.progress().phase == JobPhase::Rendering && session.progress().fraction > 0.0);

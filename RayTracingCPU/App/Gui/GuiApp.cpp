@@ -19,6 +19,7 @@
 #include "App/Gui/Theme.h"
 #include "App/Gui/TimingsWindow.h"
 #include "App/Gui/GlWindow.h"
+#include "Compare/ReferenceCache.h"
 #include "Error.h"
 #include "IO/AtomicFile.h"
 
@@ -53,7 +54,7 @@ public:
         : m_options(options),
           m_window(size, fitToMonitor, "ray-tracing-cpu: light-sampling lab"),
           m_job({.enabled = !options.noGpu, .validation = options.validation}, initial, std::move(scene),
-                [] { GlWindow::wake(); }),
+                [] { GlWindow::wake(); }, compare::defaultReferenceCacheDir()),
           m_session(m_job, initial, engine, false, chooseStrategy, heatmap)
     {
         m_session.setFont(availableFonts().front().name);

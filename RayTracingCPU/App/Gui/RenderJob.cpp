@@ -1,5 +1,6 @@
 #include "App/Gui/RenderJob.h"
 
+#include <algorithm>
 #include <chrono>
 #include <utility>
 
@@ -32,8 +33,10 @@ Image combine(const Image& mean, int meanSamples, const Image& estimate, int sam
 } // namespace
 
 RenderJob::RenderJob(const GpuStartup::Options& gpu, const RenderRequest& initial,
-                     std::shared_ptr<const Scene> initialScene, std::function<void()> wakeUi)
-    : m_gpu(gpu), m_scene(std::move(initialScene)), m_sceneKey(initial.scene), m_wakeUi(std::move(wakeUi))
+                     std::shared_ptr<const Scene> initialScene, std::function<void()> wakeUi,
+                     std::filesystem::path referenceCache)
+    : m_gpu(gpu), m_scene(std::move(initialScene)), m_sceneKey(initial.scene), m_wakeUi(std::move(wakeUi)),
+      m_referenceCache(std::move(referenceCache)), m_currentScene(initial.scene)
 {
     m_slots[std::size_t(EngineKind::Single)].engine = &m_single;
     m_slots[std::size_t(EngineKind::Multi)].engine = &m_multi;
@@ -94,6 +97,15 @@ JobProgress RenderJob::progress() const
         p.elapsedSeconds = m_control->elapsedSeconds();
         p.etaSeconds = m_control->etaSeconds();
     }
+    for (const QueuedReference& queued : m_references)
+        p.reference.waiting += queued.task.base.scene == m_currentScene ? 1 : 0;
+    if (m_referenceRendering && m_control)
+    {
+        p.reference.rendering = true;
+        p.reference.fraction = (m_referenceHalvesDone + m_control->fraction()) / 2.0;
+        p.reference.waiting = std::max(0, p.reference.waiting - 1);
+        p.reference.task = m_referenceInProgress;
+    }
     return p;
 }
 
@@ -127,9 +139,26 @@ void RenderJob::workerLoop()
     std::unique_lock lock(m_mutex);
     for (;;)
     {
-        m_wake.wait(lock, [this] { return m_stop || m_pending.has_value(); });
+        m_wake.wait(lock, [this] { return m_stop || m_pending.has_value() || nextReference() < m_references.size(); });
         if (m_stop)
             return;
+        if (!m_pending)
+        {
+            QueuedReference queued = m_references[nextReference()];
+            m_control = std::make_shared<RenderControl>();
+            auto control = m_control;
+            m_referenceRendering = true;
+            m_referenceInProgress = queued.task;
+            m_referenceHalvesDone = queued.firstHalf ? 1 : 0;
+            lock.unlock();
+            renderReference(std::move(queued), std::move(control));
+            lock.lock();
+            m_control.reset();
+            m_referenceRendering = false;
+            if (m_wakeUi)
+                m_wakeUi();
+            continue;
+        }
         const JobRequest request = std::move(*m_pending);
         m_pending.reset();
         // Made under the lock that submit() and cancel() take, so a newer request always finds it to cancel.
@@ -165,15 +194,7 @@ void RenderJob::run(const JobRequest& request, std::shared_ptr<RenderControl> co
         }
         setPhase(JobPhase::BuildingScene);
         const std::shared_ptr<const Scene> scene = sceneFor(request.image.scene);
-        EngineSlot& slot = m_slots[std::size_t(request.engine)];
-        if (slot.scene != scene)
-        {
-            // The old scene lives until setScene has replaced what points into it; if setScene throws, the
-            // slot stays empty and the next request sets the scene again.
-            const auto previous = std::exchange(slot.scene, nullptr);
-            engine->setScene(*scene);
-            slot.scene = scene;
-        }
+        bindScene(request.engine, *engine, scene);
         JobRequest job = request;
         engine->setCostRecording(false); // the pilot's renders are not timed per pixel
         if (request.chooseStrategy)
@@ -215,7 +236,11 @@ void RenderJob::run(const JobRequest& request, std::shared_ptr<RenderControl> co
             }
             mean = combine(mean, meanSamples, result.image, result.stats.trueSpp);
             meanSamples += result.stats.trueSpp;
-            publish(job, mean, meanSamples, true, RenderOutcome{.request = job, .stats = result.stats, .redraws = redraws},
+            publish(job, mean, meanSamples, true,
+                    RenderOutcome{.request = job,
+                                  .stats = result.stats,
+                                  .image = std::make_shared<const Image>(result.image),
+                                  .redraws = redraws},
                     engine->costMap(), costUnavailable);
             control = nextIteration();
         }
@@ -224,6 +249,18 @@ void RenderJob::run(const JobRequest& request, std::shared_ptr<RenderControl> co
     {
         report({.request = request, .error = e.what()});
     }
+}
+
+void RenderJob::bindScene(EngineKind kind, RenderEngine& engine, const std::shared_ptr<const Scene>& scene)
+{
+    EngineSlot& slot = m_slots[std::size_t(kind)];
+    if (slot.scene == scene)
+        return;
+    // The old scene lives until setScene has replaced what points into it; if setScene throws, the slot stays
+    // empty and the next request sets the scene again.
+    const auto previous = std::exchange(slot.scene, nullptr);
+    engine.setScene(*scene);
+    slot.scene = scene;
 }
 
 RenderEngine* RenderJob::engineFor(EngineKind kind, const RenderControl& control)
@@ -249,6 +286,7 @@ std::shared_ptr<const Scene> RenderJob::sceneFor(const SceneRef& ref)
     {
         std::lock_guard lock(m_mutex);
         m_sceneSummaries[ref.id] = {scene->defaults, scene->hasMicrofacetMaterial()};
+        m_currentScene = ref;
     }
     m_scene = scene;
     m_sceneKey = ref;

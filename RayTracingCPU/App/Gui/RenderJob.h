@@ -8,6 +8,8 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
+#include <deque>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -20,6 +22,7 @@
 #include "App/Gui/FramePacer.h"
 #include "App/Gui/GpuStartup.h"
 #include "App/Gui/PanelSettings.h"
+#include "App/Gui/ReferenceTask.h"
 #include "Compare/AutoStrategy.h"
 #include "Engine/CpuEngine.h"
 #include "Render/RenderControl.h"
@@ -83,6 +86,7 @@ struct JobProgress
     double elapsedSeconds = 0.0;
     double etaSeconds = -1.0; // negative while unknown
     int loopIteration = 0;
+    ReferenceProgress reference; // while the job is idle: the error column's reference (ReferenceTask.h)
 };
 
 /// What became of a request: one per finished render (each loop iteration), or its cancellation or failure.
@@ -90,6 +94,7 @@ struct RenderOutcome
 {
     JobRequest request;
     std::optional<RenderStats> stats; // set when the render ran to the end
+    std::shared_ptr<const Image> image; // and its image (a loop iteration's own, not the loop's mean)
     bool cancelled = false;
     std::string error; // set when it failed
     WindowRedraws redraws; // during this render (loop iteration)
@@ -107,10 +112,11 @@ class RenderJob
 {
 public:
     /// `initialScene`, already built from `initial` (the command line's scene), is used rather than built again.
-    /// `wakeUi` is called from the render thread when an outcome arrives or the job falls idle, so that a
-    /// window pacing its frames hears of it at once.
+    /// `wakeUi` is called from the render thread when an outcome or a reference arrives or the job falls idle,
+    /// so that a window pacing its frames hears of it at once. References are looked up in and stored to
+    /// `referenceCache` (empty: none).
     RenderJob(const GpuStartup::Options& gpu, const RenderRequest& initial, std::shared_ptr<const Scene> initialScene,
-              std::function<void()> wakeUi = {});
+              std::function<void()> wakeUi = {}, std::filesystem::path referenceCache = {});
     /// Cancels the render in progress and joins the render thread (and the GPU engine's start).
     ~RenderJob();
     RenderJob(const RenderJob&) = delete;
@@ -124,6 +130,17 @@ public:
     /// Loop rendering of the request in progress; off stops after the current iteration. Returns false when
     /// no request is in progress or waiting (nothing will loop until the next submit).
     bool setLoop(bool loop);
+
+    /// Queues a reference (ReferenceTask.h), rendered when no render waits or runs. References of the scene of
+    /// the latest render go first, newest first; those of other scenes wait until that scene is rendered again
+    /// (no scene is built again for a reference).
+    void requestReference(const ReferenceTask& task);
+    /// Drops the references not started yet.
+    void dropReferences();
+    /// References finished (or failed) since the last call, oldest first.
+    std::vector<FinishedReference> takeReferences();
+    /// A reference of the current scene is queued or rendering.
+    bool referencesPending() const;
 
     JobProgress progress() const;
     /// The newest preview; nullptr before the first.
@@ -147,8 +164,22 @@ private:
         std::shared_ptr<const Scene> scene; // the scene the engine was last given: it must outlive its renders
     };
 
+    struct QueuedReference
+    {
+        ReferenceTask task;
+        std::optional<Image> firstHalf; // kept when a render cancelled the second
+        double seconds = 0.0; // tracing the halves so far
+    };
+
     void workerLoop();
     void run(const JobRequest& request, std::shared_ptr<RenderControl> control);
+    /// The engine `kind` holding `scene` (RenderEngine::setScene when it held another).
+    void bindScene(EngineKind kind, RenderEngine& engine, const std::shared_ptr<const Scene>& scene);
+    /// The index in m_references of the next reference to render, or m_references.size(). Under m_mutex.
+    std::size_t nextReference() const;
+    /// Renders m_references[index]'s halves (from the one it lacks) or finds it in the cache; finished or
+    /// failed, it leaves the queue; cancelled, it stays with the halves done.
+    void renderReference(QueuedReference queued, std::shared_ptr<RenderControl> control);
     /// The engine for `kind`, waiting for the GPU engine to start; nullptr when the wait was cancelled.
     RenderEngine* engineFor(EngineKind kind, const RenderControl& control);
     std::shared_ptr<const Scene> sceneFor(const SceneRef& ref);
@@ -185,6 +216,13 @@ private:
     std::function<void()> m_wakeUi;
     std::atomic<int> m_redraws{0}; // of the render in progress
     std::atomic<int> m_redrawsOnInput{0};
+    std::filesystem::path m_referenceCache;
+    SceneRef m_currentScene; // m_sceneKey, for the UI thread's questions
+    std::deque<QueuedReference> m_references; // queued, oldest first; the one rendering stays in it
+    bool m_referenceRendering = false;
+    ReferenceTask m_referenceInProgress;
+    int m_referenceHalvesDone = 0; // of the one rendering
+    std::vector<FinishedReference> m_finishedReferences;
 
     std::thread m_worker; // last: starts after everything above exists
 };

@@ -353,7 +353,9 @@ void Session::update()
     {
         if (outcome.stats)
         {
-            m_timings.record(*outcome.stats, outcome.redraws);
+            m_timings.record(*outcome.stats, outcome.redraws, outcome.image);
+            if (const std::optional<ReferenceTask> wanted = m_timings.referenceWanted())
+                m_job.requestReference(*wanted);
             ++m_finished;
             m_lastEnd = RenderEnd::Finished;
             m_lastFinished = std::move(outcome);
@@ -368,7 +370,21 @@ void Session::update()
         else
             m_lastEnd = RenderEnd::Cancelled; // the user's (cancel() said so) or a newer request's, which ends later
     }
+    for (const FinishedReference& reference : m_job.takeReferences())
+        m_timings.attach(reference);
     m_preview = m_job.latestPreview();
+}
+
+std::string Session::referenceText() const
+{
+    const ReferenceProgress& r = m_progress.reference;
+    const std::string more = r.waiting > 0 ? fmt::format(" ({} more waiting)", r.waiting) : "";
+    if (r.rendering)
+        return fmt::format("reference for relMSE: {:.0f}% of {} spp on {}{}", r.fraction * 100.0, r.task.spp,
+                           engineLabel(r.task.engine), more);
+    if (r.waiting > 0)
+        return fmt::format("references for relMSE: {} waiting for the render to end", r.waiting);
+    return {};
 }
 
 void Session::note(std::string text, bool error)
@@ -398,6 +414,7 @@ nlohmann::json Session::stateJson() const
             {"timings", m_timings.toJson()},
             {"gpu", {{"state", toString(m_gpu.state)}, {"detail", m_gpu.detail}}},
             {"progress", progressText()},
+            {"reference_progress", referenceText()},
             {"finished_renders", m_finished},
             {"failed_renders", m_failed},
             {"scene_reloads", m_sceneReloads},

@@ -78,7 +78,12 @@ public:
     bool saveImage(const std::filesystem::path& png);
     /// scene_WxH_Nspp_engine.png, from the image on screen.
     std::string suggestedImageName() const;
-    void clearTimings() { m_timings.clear(); }
+    /// Empties the timings table and drops the references its rows still wait for.
+    void clearTimings()
+    {
+        m_timings.clear();
+        m_job.dropReferences();
+    }
 
     void setDark(bool dark) { m_display.dark = dark; }
     void setFont(const std::string& font) { m_display.font = font; }
@@ -98,6 +103,11 @@ public:
     /// The progress bar's line ("37%  1.2 s elapsed, ETA 2.0 s", "done", "cancelled: 12 of 1000 spp on
     /// screen", ...) and how full it is.
     std::string progressText() const;
+    /// The error column's reference in progress ("reference for relMSE: 40% of 256 spp on multi (1 more
+    /// waiting)"); empty when none is rendering or waiting.
+    std::string referenceText() const;
+    /// A reference of the current scene is queued or rendering (RenderJob::referencesPending).
+    bool referencesPending() const { return m_job.referencesPending(); }
     float progressFraction() const;
     const GpuStartup::Status& gpu() const { return m_gpu; }
     const std::shared_ptr<const Preview>& preview() const { return m_preview; }

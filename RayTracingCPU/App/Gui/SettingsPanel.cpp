@@ -233,6 +233,11 @@ void SettingsPanel::drawRenderControls(Session& session)
             "sets the panel to the best and renders it; change any setting afterwards to override it");
 
     ImGui::ProgressBar(session.progressFraction(), ImVec2(-1.0f, 0.0f), session.progressText().c_str());
+    // Its line is kept when empty, so that the panel below does not jump as references come and go.
+    const std::string reference = session.referenceText();
+    ImGui::TextDisabled("%s", reference.empty() ? " " : reference.c_str());
+    tooltip("The timings' relMSE is measured against a reference of each row's work at 4x its spp (two halves, "
+            "rendered while no render runs, on the row's fastest engine), shared with --compare's reference cache");
 
     if (const compare::AutoChoice* choice = session.strategyChoice();
         choice && ImGui::CollapsingHeader("Strategy pilot", ImGuiTreeNodeFlags_DefaultOpen))

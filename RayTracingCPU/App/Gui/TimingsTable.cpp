@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "Compare/ReferenceRequest.h"
+#include "Image/Metrics.h"
+
 namespace rt::gui
 {
 TimingKey TimingKey::of(const RenderRequest& request)
@@ -21,7 +24,35 @@ std::vector<const Setting*> timingColumns()
     return out;
 }
 
-void TimingsTable::record(const RenderStats& stats, const WindowRedraws& redraws)
+namespace
+{
+/// relMSE against the ready reference; the image waits in `cell` while it is not.
+void measure(EngineTiming& cell, const std::optional<RowReference>& reference)
+{
+    if (!cell.unmeasured || !reference || reference->state != RowReference::State::Ready)
+        return;
+    cell.relMse = compareImages(*cell.unmeasured, *reference->image).relMse;
+    cell.unmeasured.reset();
+}
+
+const char* stateName(RowReference::State state)
+{
+    switch (state)
+    {
+    case RowReference::State::Waiting: return "waiting";
+    case RowReference::State::Ready: return "ready";
+    case RowReference::State::Failed: return "failed";
+    }
+    return "?";
+}
+
+nlohmann::json orNull(const std::optional<double>& value)
+{
+    return value ? nlohmann::json(*value) : nlohmann::json();
+}
+} // namespace
+
+void TimingsTable::record(const RenderStats& stats, const WindowRedraws& redraws, std::shared_ptr<const Image> image)
 {
     const TimingKey key = TimingKey::of(stats.request);
     auto row = std::find_if(m_rows.begin(), m_rows.end(), [&](const TimingRow& r) { return r.key == key; });
@@ -41,8 +72,51 @@ void TimingsTable::record(const RenderStats& stats, const WindowRedraws& redraws
     cell->compileSeconds.reset();
     if (const auto compile = stats.stageSeconds.find("pipeline_host"); compile != stats.stageSeconds.end())
         cell->compileSeconds = compile->second;
+    cell->relMse.reset();
+    cell->unmeasured = std::move(image);
+    measure(*cell, row->reference);
     m_latest = std::size_t(row - m_rows.begin());
+    m_latestRequest = stats.request;
     ++m_revision;
+}
+
+std::optional<ReferenceTask> TimingsTable::referenceWanted()
+{
+    if (m_latest >= m_rows.size() || m_rows[m_latest].reference)
+        return std::nullopt;
+    TimingRow& row = m_rows[m_latest];
+    std::size_t fastest = std::size_t(EngineKind::Multi);
+    double best = 0.0;
+    for (std::size_t e = 0; e < row.engines.size(); ++e)
+        if (row.engines[e] && row.engines[e]->mpathsPerSecond > best)
+        {
+            best = row.engines[e]->mpathsPerSecond;
+            fastest = e == std::size_t(EngineKind::Single) ? std::size_t(EngineKind::Multi) : e;
+        }
+    ReferenceTask task{.base = m_latestRequest,
+                       .engine = EngineKind(fastest),
+                       .spp = compare::kDefaultReferenceFactor * row.key.settings.spp};
+    row.reference = RowReference{.task = task};
+    return task;
+}
+
+void TimingsTable::attach(const FinishedReference& reference)
+{
+    for (TimingRow& row : m_rows)
+    {
+        if (!row.reference || row.reference->state != RowReference::State::Waiting || row.reference->task != reference.task)
+            continue;
+        RowReference& r = *row.reference;
+        r.state = reference.image ? RowReference::State::Ready : RowReference::State::Failed;
+        r.image = reference.image;
+        r.ownRelMse = reference.ownRelMse;
+        r.fromCache = reference.fromCache;
+        r.seconds = reference.seconds;
+        r.error = reference.error;
+        for (auto& cell : row.engines)
+            if (cell)
+                measure(*cell, row.reference);
+    }
 }
 
 nlohmann::json TimingsTable::toJson() const
@@ -68,8 +142,22 @@ nlohmann::json TimingsTable::toJson() const
                                             {"window_redraws_on_input", cell->redraws.onInput},
                                             {"build_seconds", cell->buildSeconds},
                                             {"compiled", cell->compileSeconds.has_value()},
-                                            {"compile_seconds", cell->compileSeconds ? nlohmann::json(*cell->compileSeconds)
-                                                                                     : nlohmann::json()}});
+                                            {"compile_seconds", orNull(cell->compileSeconds)},
+                                            {"rel_mse", orNull(cell->relMse)},
+                                            {"efficiency", cell->relMse ? nlohmann::json(cell->efficiency())
+                                                                        : nlohmann::json()}});
+                if (const auto& r = row.reference)
+                    entry["reference"] = {{"state", stateName(r->state)},
+                                          {"spp", r->task.spp},
+                                          {"engine", rt::toString(r->task.engine)},
+                                          {"own_rel_mse", r->state == RowReference::State::Ready
+                                                              ? nlohmann::json(r->ownRelMse)
+                                                              : nlohmann::json()},
+                                          {"from_cache", r->fromCache},
+                                          {"seconds", r->seconds},
+                                          {"error", r->error}};
+                else
+                    entry["reference"] = nullptr;
                 out.push_back(std::move(entry));
             }
     return out;

@@ -2,11 +2,14 @@
 // samples, depth, estimator, sampling, light mode) with one column per engine, so single core, multi core
 // and the GPU sit side by side for the same work. Cancelled renders are not timings and never enter it. A
 // timing taken while the window redrew for a person's input (FramePacer.h) is marked: that drawing competed
-// with the render for the CPU.
+// with the render for the CPU. Each row's error is measured against a reference of its work
+// (ReferenceTask.h), as --compare measures it: relMSE (Image/Metrics.h, the reference's own noise included) and
+// the efficiency 1 / (relMSE x render time).
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +18,8 @@
 
 #include "App/Gui/FramePacer.h"
 #include "App/Gui/PanelSettings.h"
+#include "App/Gui/ReferenceTask.h"
+#include "Image/Image.h"
 #include "Render/RenderRequest.h"
 #include "Render/RenderStats.h"
 #include "Render/SettingsTable.h"
@@ -48,19 +53,52 @@ struct EngineTiming
     // uploads), and the pipelines it compiled (the GPU engine's pipeline_host; none when all were compiled before).
     double buildSeconds = 0.0;
     std::optional<double> compileSeconds;
+    // The latest render's relMSE against the row's reference (its own relMSE included); until the reference
+    // arrives, its image waits here to be measured.
+    std::optional<double> relMse;
+    std::shared_ptr<const Image> unmeasured;
+
+    /// 1 / (relMSE x render time), in 1/s: --compare's efficiency; 0 without a relMSE.
+    double efficiency() const { return relMse && *relMse > 0.0 && lastSeconds > 0.0 ? 1.0 / (*relMse * lastSeconds) : 0.0; }
+};
+
+/// A row's reference: asked for when its first render finished (ReferenceTask.h), then ready or failed.
+struct RowReference
+{
+    enum class State
+    {
+        Waiting, // queued or rendering on the render thread
+        Ready,
+        Failed
+    };
+    State state = State::Waiting;
+    ReferenceTask task;
+    std::shared_ptr<const Image> image;
+    double ownRelMse = 0.0;
+    bool fromCache = false;
+    double seconds = 0.0; // its halves' tracing time; 0 from the cache
+    std::string error;
 };
 
 struct TimingRow
 {
     TimingKey key;
     std::array<std::optional<EngineTiming>, 3> engines; // by EngineKind
+    std::optional<RowReference> reference; // none asked for yet
 };
 
 class TimingsTable
 {
 public:
-    /// Adds a finished render and the frames the window drew during it.
-    void record(const RenderStats& stats, const WindowRedraws& redraws = {});
+    /// Adds a finished render, its image (measured against the row's reference, now or once it arrives; null:
+    /// no relMSE) and the frames the window drew during it.
+    void record(const RenderStats& stats, const WindowRedraws& redraws = {}, std::shared_ptr<const Image> image = {});
+    /// The reference the latest record()'s row needs, once: the render's own request at
+    /// kDefaultReferenceFactor x its spp, rendered by the engine of the row with the most Mpaths/s (multi for
+    /// single core, whose work it does faster); nullopt when the row has asked before.
+    std::optional<ReferenceTask> referenceWanted();
+    /// Measures the rows waiting for `reference` against it (a reference no row waits for is ignored).
+    void attach(const FinishedReference& reference);
     void clear()
     {
         m_rows.clear();
@@ -75,12 +113,14 @@ public:
     /// One object per (row, engine): scene, count, mesh, width, height, spp, depth, sampling, estimator,
     /// russian_roulette, unidirectional_light, engine, seconds, best_seconds, mpaths_per_second, renders, device,
     /// window_redraws, window_redraws_on_input, build_seconds, compiled, compile_seconds (null when not compiled)
-    /// (of the latest render).
+    /// (of the latest render), rel_mse and efficiency (null until measured), and the row's reference: state
+    /// (waiting, ready, failed), spp, engine, own_rel_mse, from_cache, seconds, error.
     nlohmann::json toJson() const;
 
 private:
     std::vector<TimingRow> m_rows;
     std::size_t m_latest = 0;
+    RenderRequest m_latestRequest; // of the latest record(), with its seed
     std::uint64_t m_revision = 0;
 };
 } // namespace rt::gui

@@ -6,6 +6,8 @@
 #include <imgui.h>
 #include <spdlog/fmt/fmt.h>
 
+#include "Image/Metrics.h"
+
 namespace rt::gui
 {
 namespace
@@ -30,6 +32,35 @@ std::size_t fastestEngine(const TimingRow& row)
     return best;
 }
 
+/// The relMSE cell: the value once measured, else where its reference stands.
+void relMseCell(const TimingRow& row, const EngineTiming& cell)
+{
+    const auto& reference = row.reference;
+    if (cell.relMse && reference)
+    {
+        ImGui::Text("%.3g", *cell.relMse);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("mean (I - R)^2 / (R^2 + %.2g) against a %d-spp reference on %s%s\nits own relMSE %.3g "
+                              "is part of this value%s",
+                              kRelMseEpsilon, reference->task.spp, engineLabel(reference->task.engine),
+                              reference->fromCache ? ", from the reference cache" : "", reference->ownRelMse,
+                              *cell.relMse < 3.0 * reference->ownRelMse
+                                  ? ": at less than 3x, this mostly measures the reference"
+                                  : "");
+        return;
+    }
+    if (!reference)
+        ImGui::TextDisabled("-");
+    else if (reference->state == RowReference::State::Failed)
+    {
+        ImGui::TextDisabled("failed");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("the reference failed: %s", reference->error.c_str());
+    }
+    else
+        ImGui::TextDisabled("waiting");
+}
+
 void renderTimeTooltip(const EngineTiming& cell, bool disturbed)
 {
     ImGui::SetTooltip("best %.3f s of %d render%s\n%s\nthe window drew %d frame%s during it%s", cell.bestSeconds,
@@ -50,20 +81,21 @@ bool drawTimings(Session& session)
         session.clearTimings();
     ImGui::SameLine();
     ImGui::TextDisabled("render: tracing alone (hover for the best of n; * the window redrew for input during it); "
-                        "build and compile: the setup before it");
+                        "build and compile: the setup before it; relMSE against a reference at 4x the spp");
     // Every column follows its widest cell as timings arrive; a pane too narrow scrolls rather than clips.
     const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollX |
                                   ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
     const std::vector<const Setting*> columns = timingColumns();
-    // Scene and size, a line per engine (engine, render, Mpaths/s, build, compile, vs single), then the settings:
-    // the times stay in view in a narrow pane.
-    if (!ImGui::BeginTable("timings", int(2 + columns.size() + 6), flags))
+    // Scene and size, a line per engine (engine, render, Mpaths/s, relMSE, efficiency, build, compile, vs single),
+    // then the settings: the times stay in view in a narrow pane.
+    if (!ImGui::BeginTable("timings", int(2 + columns.size() + 8), flags))
         return table.rows().empty();
     bool latestVisible = table.rows().empty();
     ImGui::TableSetupScrollFreeze(1, 1);
     ImGui::TableSetupColumn("Scene");
     ImGui::TableSetupColumn("Size");
-    for (const char* name : {"Engine", "Render", "Mpaths/s", "Build", "Compile", "vs single core"})
+    for (const char* name :
+         {"Engine", "Render", "Mpaths/s", "relMSE", "1/(relMSE s)", "Build", "Compile", "vs single core"})
         ImGui::TableSetupColumn(name);
     for (const Setting* setting : columns)
         ImGui::TableSetupColumn(std::string(setting->label).c_str());
@@ -110,6 +142,11 @@ bool drawTimings(Session& session)
             }
             ImGui::TableNextColumn();
             ImGui::Text("%.2f", cell->mpathsPerSecond);
+            ImGui::TableNextColumn();
+            relMseCell(row, *cell);
+            ImGui::TableNextColumn();
+            if (cell->relMse)
+                ImGui::Text("%.3g", cell->efficiency());
             ImGui::TableNextColumn();
             ImGui::Text("%.3f s", cell->buildSeconds);
             ImGui::TableNextColumn();
