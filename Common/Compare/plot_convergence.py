@@ -4,7 +4,9 @@ time and against spp on log-log axes, one line per engine x strategy, with the s
 Monte Carlo estimator follows drawn through each line's first point; and the efficiency 1 / (relMSE x s) of
 each line's largest spp as bars. Time is the GPU's own clock where the engine has one, else the host's. A
 dashed grey line marks the reference's own relMSE (its `reference_relmse` column, when known): part of every
-value, so lines that come near it flatten out there; the efficiency bars take it out. Rows of several seeds
+value, so lines that come near it flatten out there; the efficiency bars take it out. Rows measured against
+references of their own (the window's plot: each at 4x its spp) have several; then no line is drawn, and each
+bar takes out its own point's. Rows of several seeds
 (`--seeds N`: the `seed` column) are drawn as their mean relMSE at their median time.
 
 With METRIC (--compare's --metric: relmse, trimmed-relmse, mape or flip) the figure plots that column instead:
@@ -46,14 +48,16 @@ def read_rows(path, column="relmse"):
             if ms <= 0 or relmse <= 0:
                 continue  # not on a log axis
             key = f'{row["engine"]} {row["label"]}'
-            series.setdefault(key, OrderedDict()).setdefault(int(row["spp"]), []).append((ms / 1000.0, relmse))
+            floor = float(row.get("reference_relmse") or -1) if column == "relmse" else -1
+            series.setdefault(key, OrderedDict()).setdefault(int(row["spp"]), []).append(
+                (ms / 1000.0, relmse, max(floor, 0.0)))
             scenes[row["scene"]] = True
             devices[f'{row["engine"]}: {row["device"]}'] = True
     # One point per spp: the seeds' mean relMSE at their median time.
     points = OrderedDict()
     for key, by_spp in series.items():
-        points[key] = [(spp, statistics.median(s for s, _ in runs), statistics.fmean(r for _, r in runs))
-                       for spp, runs in by_spp.items()]
+        points[key] = [(spp, statistics.median(s for s, _, _ in runs), statistics.fmean(r for _, r, _ in runs),
+                        statistics.fmean(f for _, _, f in runs)) for spp, runs in by_spp.items()]
     return points, list(scenes), list(devices), sorted(floors)
 
 
@@ -78,12 +82,12 @@ def main(csv_path, png_path, metric="relmse"):
             axis.loglog([x[0], x[-1]], [relmse[0], relmse[0] * (x[0] / x[-1]) ** (1.0 / power)], ":", color=colour,
                         alpha=0.6)
         # The reference's own error is part of every relMSE: the bars leave it out where it is known.
-        own = relmse[-1] - (floors[0] if floors else 0.0)
+        own = relmse[-1] - points[-1][3]
         efficiency.append((key, 1.0 / (max(own, 1e-12) ** power * seconds[-1]), spp[-1], colour))
     by_time.set_xlabel("render time (s)")
     by_spp.set_xlabel("samples per pixel")
     for axis in (by_time, by_spp):
-        for j, floor in enumerate(floors):
+        for j, floor in enumerate(floors if len(floors) == 1 else []):
             axis.axhline(floor, linestyle="--", color="grey", linewidth=1,
                          label="the reference's own relMSE" if j == 0 else None)
         axis.set_ylabel(name)

@@ -37,7 +37,10 @@ const std::vector<ActionSpec>& specs()
             {"defaults", ActionValue::None, "", "the scene's own spp, depth, width, aspect and light mode"},
             {"wait", ActionValue::None, "", "until no render runs (loop rendering: until one more finishes)"},
             {"running", ActionValue::None, "", "until a render is tracing, or none runs"},
-            {"wait_reference", ActionValue::None, "",
+            {"save-plot", ActionValue::Text, "FILE.png",
+             "save the convergence plot of the panel's work: FILE.png (plot_convergence.py) and its points FILE.csv",
+             0, 1e30, [](const std::string& path) { return saveImagePathProblem(path).empty(); }},
+            {"wait-reference", ActionValue::None, "",
              "until no render runs and the timings' references of the current scene are done (relMSE measured)"},
         });
     return all;
@@ -145,7 +148,7 @@ bool ActionScript::run(const Action& a, Session& session, GlWindow& window)
             m_finishedBefore = session.finishedRenders();
         return !session.progress().busy || (session.loop() && session.finishedRenders() > m_finishedBefore);
     }
-    if (a.name == "wait_reference")
+    if (a.name == "wait-reference")
         return !session.progress().busy && !session.referencesPending();
     if (a.name == "running")
         return !session.progress().busy ||
@@ -172,6 +175,8 @@ bool ActionScript::run(const Action& a, Session& session, GlWindow& window)
     }
     if (a.name == "save")
         return check(session.saveImage(v));
+    if (a.name == "save-plot")
+        return check(session.savePlot(v));
     if (a.name == "theme")
     {
         session.setDark(v == "dark");
@@ -182,7 +187,7 @@ bool ActionScript::run(const Action& a, Session& session, GlWindow& window)
         session.setFontSize(float(a.integer()));
         return true;
     }
-    return true;
+    throw Error("the action '" + a.name + "' has no command"); // a spec added without its command
 }
 
 std::string actionHelp()

@@ -12,6 +12,7 @@
 #include "App/Gui/FramePacer.h"
 #include "App/Gui/ImageView.h"
 #include "App/Gui/PaneLayout.h"
+#include "App/Gui/PlotWindow.h"
 #include "App/Gui/RenderJob.h"
 #include "App/Gui/Screenshot.h"
 #include "App/Gui/Session.h"
@@ -187,11 +188,18 @@ private:
             m_imageView.draw(stale, overlay);
         ImGui::End();
 
-        ImGui::SetNextWindowPos(ImVec2(panelWidth, display.y - timingsHeight));
-        ImGui::SetNextWindowSize(ImVec2(display.x - panelWidth, timingsHeight));
+        ImGui::SetNextWindowPos(ImVec2(panes.timings.x, panes.timings.y));
+        ImGui::SetNextWindowSize(ImVec2(panes.timings.width, panes.timings.height));
         bool latestTimingVisible = false;
         if (ImGui::Begin("Timings of this session: every engine side by side", nullptr, kPaneFlags))
             latestTimingVisible = drawTimings(m_session);
+        ImGui::End();
+
+        ImGui::SetNextWindowPos(ImVec2(panes.plot.x, panes.plot.y));
+        ImGui::SetNextWindowSize(ImVec2(panes.plot.width, panes.plot.height));
+        nlohmann::json plot;
+        if (ImGui::Begin("Convergence: relMSE against time", nullptr, kPaneFlags | ImGuiWindowFlags_NoScrollbar))
+            plot = drawConvergencePlot(m_session);
         ImGui::End();
 
         // Where things are, in framebuffer pixels (what a screenshot holds): tests crop the panes with it.
@@ -203,7 +211,9 @@ private:
         const auto& image = m_imageView.drawnRect();
         m_layout = {{"panel", pixels(0.0f, 0.0f, panelWidth, display.y)},
                     {"image", pixels(image[0], image[1], image[2], image[3])},
-                    {"timings", pixels(panelWidth, display.y - timingsHeight, display.x - panelWidth, timingsHeight)},
+                    {"timings", pixels(panes.timings.x, panes.timings.y, panes.timings.width, panes.timings.height)},
+                    {"plot", pixels(panes.plot.x, panes.plot.y, panes.plot.width, panes.plot.height)},
+                    {"plot_drawn", std::move(plot)},
                     {"latest_timing_visible", latestTimingVisible}};
     }
 

@@ -24,9 +24,12 @@ PaneLayout layoutPanes(float width, float height, float fontPixels)
 {
     const float panel = panelWidth(width, fontPixels);
     const float timings = timingsHeight(height, fontPixels);
+    // The table needs the width for its columns; the plot, a square's worth of it.
+    const float table = std::floor(std::max((width - panel) * 0.58f, width - panel - timings * 1.6f));
     return {.panel = {0.0f, 0.0f, panel, height},
             .image = {panel, 0.0f, width - panel, height - timings},
-            .timings = {panel, height - timings, width - panel, timings}};
+            .timings = {panel, height - timings, table, timings},
+            .plot = {panel + table, height - timings, width - panel - table, timings}};
 }
 
 WindowSize defaultWindowSize(int imageWidth, int imageHeight, float fontPixels)

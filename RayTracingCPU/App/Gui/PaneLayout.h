@@ -1,5 +1,6 @@
-// The window's three panes, in ImGui's coordinates: the settings panel a full-height column at the left, the
-// image pane right of it (the image letterboxed inside: ImageView), the timings table below the image. Sized
+// The window's four panes, in ImGui's coordinates: the settings panel a full-height column at the left, the
+// image pane right of it (the image letterboxed inside: ImageView), the timings table below the image and the
+// convergence plot right of the table. Sized
 // by the font first, the window second, so that a larger font widens the panel and a window too small for
 // that squeezes every pane. Pure arithmetic, and its inverse for the default window size.
 #pragma once
@@ -21,6 +22,7 @@ struct PaneLayout
     PaneRect panel;
     PaneRect image; // the image pane, title bar included
     PaneRect timings;
+    PaneRect plot;
 };
 
 /// The panes of a `width` x `height` window whose font is `fontPixels` high.

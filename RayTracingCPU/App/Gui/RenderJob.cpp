@@ -236,10 +236,14 @@ void RenderJob::run(const JobRequest& request, std::shared_ptr<RenderControl> co
             }
             mean = combine(mean, meanSamples, result.image, result.stats.trueSpp);
             meanSamples += result.stats.trueSpp;
+            auto image = std::make_shared<const Image>(result.image);
             publish(job, mean, meanSamples, true,
                     RenderOutcome{.request = job,
                                   .stats = result.stats,
-                                  .image = std::make_shared<const Image>(result.image),
+                                  .image = image,
+                                  .loopIteration = iteration,
+                                  .mean = iteration == 0 ? image : std::make_shared<const Image>(mean),
+                                  .meanSamples = meanSamples,
                                   .redraws = redraws},
                     engine->costMap(), costUnavailable);
             control = nextIteration();

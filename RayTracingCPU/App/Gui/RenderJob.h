@@ -95,6 +95,9 @@ struct RenderOutcome
     JobRequest request;
     std::optional<RenderStats> stats; // set when the render ran to the end
     std::shared_ptr<const Image> image; // and its image (a loop iteration's own, not the loop's mean)
+    int loopIteration = 0; // 0 for a render without loop rendering
+    std::shared_ptr<const Image> mean; // the loop's estimate so far (image for iteration 0)
+    int meanSamples = 0;
     bool cancelled = false;
     std::string error; // set when it failed
     WindowRedraws redraws; // during this render (loop iteration)

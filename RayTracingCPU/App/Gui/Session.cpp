@@ -6,6 +6,9 @@
 #include <spdlog/spdlog.h>
 
 #include "Cli/ActionGrammar.h"
+#include "Cli/HeadlessRun.h"
+#include "Compare/PythonScript.h"
+#include "IO/AtomicFile.h"
 #include "Error.h"
 #include "Image/Heatmap.h"
 #include "Image/ImageIO.h"
@@ -256,6 +259,13 @@ std::string Session::suggestedImageName() const
                        toString(m_preview ? m_preview->request.engine : m_engine));
 }
 
+std::string Session::suggestedPlotName() const
+{
+    const RenderSettings& r = m_image.settings;
+    return fmt::format("{}_{}x{}_depth{}_convergence.png", sceneShortName(m_image.scene.id), r.width, r.height(),
+                       r.depth);
+}
+
 void Session::setFontSize(float pixels)
 {
     const float kept = std::clamp(pixels, float(kMinFontPixels), float(kMaxFontPixels));
@@ -353,9 +363,7 @@ void Session::update()
     {
         if (outcome.stats)
         {
-            m_timings.record(*outcome.stats, outcome.redraws, outcome.image);
-            if (const std::optional<ReferenceTask> wanted = m_timings.referenceWanted())
-                m_job.requestReference(*wanted);
+            recordFinished(outcome);
             ++m_finished;
             m_lastEnd = RenderEnd::Finished;
             m_lastFinished = std::move(outcome);
@@ -371,8 +379,64 @@ void Session::update()
             m_lastEnd = RenderEnd::Cancelled; // the user's (cancel() said so) or a newer request's, which ends later
     }
     for (const FinishedReference& reference : m_job.takeReferences())
+    {
         m_timings.attach(reference);
+        m_plot.attach(reference);
+    }
     m_preview = m_job.latestPreview();
+}
+
+void Session::recordFinished(const RenderOutcome& outcome)
+{
+    const RenderStats& stats = *outcome.stats;
+    m_timings.record(stats, outcome.redraws, outcome.image);
+    if (const std::optional<ReferenceTask> wanted = m_timings.referenceWanted())
+        m_job.requestReference(*wanted);
+    const EngineKind referenceEngine = m_timings.rows()[m_timings.latestRow()].reference->task.engine;
+    if (outcome.loopIteration == 0)
+    {
+        m_loopBase = stats.request;
+        m_loopSeconds = 0.0;
+    }
+    m_loopSeconds += stats.renderSeconds;
+    // A loop's mean after 1, 2, 4, ... iterations: a line's points spread evenly on the log axis.
+    const int iterations = outcome.loopIteration + 1;
+    if ((iterations & (iterations - 1)) != 0)
+        return;
+    if (const std::optional<ReferenceTask> task =
+            m_plot.add(m_loopBase, stats.engine, stats.device, m_loopSeconds, outcome.meanSamples, outcome.mean,
+                       referenceEngine, iterations > 1))
+        m_job.requestReference(*task); // the row's own for a render: the job holds it once
+}
+
+bool Session::savePlot(const std::filesystem::path& png)
+{
+    try
+    {
+        checkOutputPath(png.string(), "the plot", {".png"});
+        const std::vector<compare::ConvergenceRow> rows = ConvergencePlot::csvRows(m_plot.linesOf(m_image));
+        if (rows.empty())
+        {
+            note("no plot to save: no point of this work has its relMSE yet", true);
+            return false;
+        }
+        std::filesystem::path csv = png;
+        csv.replace_extension(".csv");
+        writeAtomically(csv, [&](const std::filesystem::path& temporary) {
+            compare::ConvergenceCsv file(temporary);
+            for (const compare::ConvergenceRow& row : rows)
+                file.append(row);
+            return true;
+        });
+        compare::drawFigure(png, compare::scriptPath("plot_convergence.py"), {csv.string()});
+        note(fmt::format("saved the plot {} and its {} points {}", png.string(), rows.size(), csv.string()), false);
+        return true;
+    }
+    catch (const std::exception& e)
+    {
+        note(std::string("the plot was not saved: ") + e.what(), true);
+        return false;
+    }
 }
 
 std::string Session::referenceText() const
@@ -412,6 +476,7 @@ nlohmann::json Session::stateJson() const
             {"image", image},
             {"image_matches_panel", !imageIsStale()},
             {"timings", m_timings.toJson()},
+            {"plot", m_plot.toJson()},
             {"gpu", {{"state", toString(m_gpu.state)}, {"detail", m_gpu.detail}}},
             {"progress", progressText()},
             {"reference_progress", referenceText()},

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "App/Gui/ConvergencePlot.h"
 #include "App/Gui/PanelSettings.h"
 #include "App/Gui/RenderJob.h"
 #include "App/Gui/TimingsTable.h"
@@ -78,12 +79,19 @@ public:
     bool saveImage(const std::filesystem::path& png);
     /// scene_WxH_Nspp_engine.png, from the image on screen.
     std::string suggestedImageName() const;
-    /// Empties the timings table and drops the references its rows still wait for.
+    /// Empties the timings table and the convergence plot, and drops the references they still wait for.
     void clearTimings()
     {
         m_timings.clear();
+        m_plot.clear();
         m_job.dropReferences();
     }
+    /// Writes the convergence plot's lines of the panel's work: its measured points as --compare's CSV (`png` with
+    /// .csv) and their figure by plot_convergence.py (`png`). False, with message(), when there is no point or the
+    /// script fails.
+    bool savePlot(const std::filesystem::path& png);
+    /// scene_WxH_depthN_convergence.png, from the panel's work.
+    std::string suggestedPlotName() const;
 
     void setDark(bool dark) { m_display.dark = dark; }
     void setFont(const std::string& font) { m_display.font = font; }
@@ -119,6 +127,7 @@ public:
     const std::string& message() const { return m_message; }
     bool messageIsError() const { return m_messageIsError; }
     const TimingsTable& timings() const { return m_timings; }
+    const ConvergencePlot& plot() const { return m_plot; }
     int finishedRenders() const { return m_finished; }
     int failedRenders() const { return m_failed; }
     /// The panel, the image on screen, the timings and the GPU engine's status (--state-json).
@@ -126,6 +135,8 @@ public:
 
 private:
     bool tryImage(const RenderRequest& candidate);
+    /// The timings table's and the plot's share of a finished render, and the references they ask for.
+    void recordFinished(const RenderOutcome& outcome);
     void note(std::string text, bool error);
 
     RenderJob& m_job;
@@ -143,6 +154,9 @@ private:
     std::string m_message;
     bool m_messageIsError = false;
     TimingsTable m_timings;
+    ConvergencePlot m_plot;
+    RenderRequest m_loopBase; // the first iteration's request of the loop in progress
+    double m_loopSeconds = 0.0; // its iterations' tracing so far
     int m_finished = 0;
     int m_failed = 0;
     int m_sceneReloads = 0; // new versions of the scene file noticed

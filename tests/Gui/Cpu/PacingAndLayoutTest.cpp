@@ -81,6 +81,12 @@ TEST(PaneLayout, PanesTileTheWindow)
         EXPECT_FLOAT_EQ(p.image.x + p.image.width, w);
         EXPECT_FLOAT_EQ(p.timings.y, p.image.height);
         EXPECT_FLOAT_EQ(p.timings.y + p.timings.height, h);
+        EXPECT_FLOAT_EQ(p.timings.x, p.image.x);
+        EXPECT_FLOAT_EQ(p.plot.x, p.timings.x + p.timings.width) << "the plot right of the table";
+        EXPECT_FLOAT_EQ(p.plot.x + p.plot.width, w);
+        EXPECT_FLOAT_EQ(p.plot.y, p.timings.y);
+        EXPECT_FLOAT_EQ(p.plot.height, p.timings.height);
+        EXPECT_GE(p.timings.width, p.plot.width) << "the table's columns need the room";
         EXPECT_LE(p.panel.width, w * 0.5f);
     }
 }

@@ -19,7 +19,7 @@ settings=(--scene cornell-box-lights --width 48 --spp 16 --seed 7)
 window() { # name
     local status=0
     "$app" --no-gpu --window-size 1000x640 "${settings[@]}" --estimator nee-mis --engine multi \
-        --actions "wait;wait_reference;estimator=mixture;render;wait;wait_reference" --frames 2 \
+        --actions "wait;wait-reference;estimator=mixture;render;wait;wait-reference" --frames 2 \
         --screenshot "$work/$1.png" --state-json "$work/$1.json" 2>"$work/$1.err" || status=$?
     check_run "$1" "$status" "$work/$1.err"
 }
