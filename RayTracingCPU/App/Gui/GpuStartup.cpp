@@ -9,14 +9,22 @@
 
 namespace rt::gui
 {
-GpuStartup::GpuStartup(const Options& options)
+GpuStartup::GpuStartup(const Options& options) : m_options(options)
 {
     if (!engines::has(EngineKind::Gpu))
         m_status = {State::Unavailable, "built without the GPU engine (RT_BUILD_GPU=OFF)"};
     else if (!options.enabled)
         m_status = {State::Unavailable, "disabled by --no-gpu"};
-    else
-        m_thread = std::thread([this, options] { start(options); });
+    else if (!options.deferred)
+        begin();
+}
+
+void GpuStartup::begin()
+{
+    std::lock_guard lock(m_mutex);
+    if (m_status.state != State::Starting || m_thread.joinable())
+        return;
+    m_thread = std::thread([this] { start(m_options); });
 }
 
 GpuStartup::~GpuStartup()

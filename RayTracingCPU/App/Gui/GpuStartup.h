@@ -1,7 +1,9 @@
 // The CPU app's GPU engine, created off the UI thread: creating it opens the Vulkan device and compiles the
 // ray-tracing pipeline, about 10 s on lavapipe. A process may hold one Vulkan device at a time (the loader's
 // device-level function pointers are process-wide), so this is the only one, kept for the app's lifetime;
-// that is also why the window itself draws with OpenGL, not Vulkan.
+// that is also why the window itself draws with OpenGL, not Vulkan. A deferred start waits for begin(): the window
+// starts the engine once its launch render has ended, so that the start (0.2 s of a core on lavapipe, more on a
+// driver of a real GPU) does not share the CPU with the render it times.
 #pragma once
 
 #include <condition_variable>
@@ -34,6 +36,7 @@ public:
     {
         bool enabled = true; // false: Unavailable at once ("--no-gpu")
         bool validation = false; // Khronos validation layer on the engine's device
+        bool deferred = false; // start at begin(), not at once
     };
 
     explicit GpuStartup(const Options& options);
@@ -42,6 +45,8 @@ public:
     GpuStartup(const GpuStartup&) = delete;
     GpuStartup& operator=(const GpuStartup&) = delete;
 
+    /// Starts a deferred start; nothing when it has started (or cannot). Any thread.
+    void begin();
     Status status() const;
     /// Blocks until the engine is ready (returns it) or unavailable (nullptr), or until `giveUp()` is true
     /// (nullptr; polled every 50 ms).
@@ -51,6 +56,8 @@ public:
 
 private:
     void start(const Options& options);
+
+    Options m_options;
 
     mutable std::mutex m_mutex;
     std::condition_variable m_resolved;

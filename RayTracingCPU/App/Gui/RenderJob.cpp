@@ -34,9 +34,9 @@ Image combine(const Image& mean, int meanSamples, const Image& estimate, int sam
 
 RenderJob::RenderJob(const GpuStartup::Options& gpu, const RenderRequest& initial,
                      std::shared_ptr<const Scene> initialScene, std::function<void()> wakeUi,
-                     std::filesystem::path referenceCache)
-    : m_gpu(gpu), m_scene(std::move(initialScene)), m_sceneKey(initial.scene), m_wakeUi(std::move(wakeUi)),
-      m_referenceCache(std::move(referenceCache)), m_currentScene(initial.scene)
+                     std::filesystem::path referenceCache, bool held)
+    : m_gpu(gpu), m_scene(std::move(initialScene)), m_sceneKey(initial.scene), m_held(held),
+      m_wakeUi(std::move(wakeUi)), m_referenceCache(std::move(referenceCache)), m_currentScene(initial.scene)
 {
     m_slots[std::size_t(EngineKind::Single)].engine = &m_single;
     m_slots[std::size_t(EngineKind::Multi)].engine = &m_multi;
@@ -65,6 +65,15 @@ void RenderJob::submit(const JobRequest& request)
         m_loop = request.loop;
         if (m_control)
             m_control->requestCancel();
+    }
+    m_wake.notify_all();
+}
+
+void RenderJob::release()
+{
+    {
+        std::lock_guard lock(m_mutex);
+        m_held = false;
     }
     m_wake.notify_all();
 }
@@ -139,7 +148,9 @@ void RenderJob::workerLoop()
     std::unique_lock lock(m_mutex);
     for (;;)
     {
-        m_wake.wait(lock, [this] { return m_stop || m_pending.has_value() || nextReference() < m_references.size(); });
+        m_wake.wait(lock, [this] {
+            return m_stop || (!m_held && (m_pending.has_value() || nextReference() < m_references.size()));
+        });
         if (m_stop)
             return;
         if (!m_pending)
@@ -166,6 +177,7 @@ void RenderJob::workerLoop()
         auto control = m_control;
         lock.unlock();
         run(request, std::move(control));
+        m_gpu.begin(); // after the first render (a loop's: after its first iteration, in publish)
         lock.lock();
         m_control.reset();
         m_phase = JobPhase::Idle;
@@ -273,6 +285,7 @@ RenderEngine* RenderJob::engineFor(EngineKind kind, const RenderControl& control
     if (slot.engine)
         return slot.engine;
     setPhase(JobPhase::WaitingForGpu);
+    m_gpu.begin();
     slot.engine = m_gpu.wait([&] { return control.cancelRequested(); });
     if (slot.engine)
         return slot.engine;
@@ -325,6 +338,7 @@ void RenderJob::publish(const JobRequest& request, Image estimate, int samples, 
     m_preview = std::move(preview);
     if (outcome)
     {
+        m_gpu.begin();
         m_outcomes.push_back(std::move(*outcome));
         if (m_wakeUi)
             m_wakeUi(); // a loop iteration's timing: the job stays busy

@@ -118,8 +118,11 @@ public:
     /// `wakeUi` is called from the render thread when an outcome or a reference arrives or the job falls idle,
     /// so that a window pacing its frames hears of it at once. References are looked up in and stored to
     /// `referenceCache` (empty: none).
+    /// A `held` job starts no render before release() (a window holds its launch render until it has drawn its
+    /// first frame, so that its start-up does not share the CPU with the render it times). A deferred GPU start
+    /// (GpuStartup::Options) begins once the first render has ended, or at once for a render on the GPU.
     RenderJob(const GpuStartup::Options& gpu, const RenderRequest& initial, std::shared_ptr<const Scene> initialScene,
-              std::function<void()> wakeUi = {}, std::filesystem::path referenceCache = {});
+              std::function<void()> wakeUi = {}, std::filesystem::path referenceCache = {}, bool held = false);
     /// Cancels the render in progress and joins the render thread (and the GPU engine's start).
     ~RenderJob();
     RenderJob(const RenderJob&) = delete;
@@ -130,6 +133,8 @@ public:
     void submit(const JobRequest& request);
     /// Cancels the render in progress and drops a waiting request.
     void cancel();
+    /// Lets a held job start its renders.
+    void release();
     /// Loop rendering of the request in progress; off stops after the current iteration. Returns false when
     /// no request is in progress or waiting (nothing will loop until the next submit).
     bool setLoop(bool loop);
@@ -206,6 +211,7 @@ private:
     mutable std::mutex m_mutex;
     std::condition_variable m_wake;
     bool m_stop = false;
+    bool m_held = false;
     bool m_loop = false;
     std::optional<JobRequest> m_pending;
     std::shared_ptr<RenderControl> m_control; // of the render in progress
