@@ -106,6 +106,10 @@ std::string ReferenceCache::key(const Scene& scene, const RenderRequest& request
     k["scene_fingerprint"] = hex(sceneFingerprint(scene));
     k["engine"] = toString(engine);
     k["settings"] = toJson(request.settings); // every field, so one added later is part of the key too
+    if (const auto& c = request.camera) // a window's moved camera (the scene's is in the fingerprint)
+        k["camera"] = {c->lookFrom.x, c->lookFrom.y, c->lookFrom.z, c->lookAt.x, c->lookAt.y, c->lookAt.z,
+                       c->vup.x,      c->vup.y,      c->vup.z,      c->vfovDegrees, c->defocusAngleDegrees,
+                       c->focusDistance, c->shutterOpen, c->shutterClose};
     return k.dump();
 }
 

@@ -29,6 +29,7 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
         throw UsageError(fmt::format("the {} engine was asked to render before it was given a scene",
                                      toString(engine.kind())));
     RT_CHECK_EQ(scene->id, request.scene.id); // the request names the scene the engine holds
+    engine.setCamera(request.camera);
     engine.beginFrame(settings);
 
     const int width = settings.width;

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,10 @@ public:
     virtual const Scene* scene() const = 0;
     /// Seconds the last setScene took.
     virtual double buildSeconds() const = 0;
+
+    /// The camera of the frames that follow: `camera`, or the scene's when empty. The render driver sets it from
+    /// RenderRequest::camera before every beginFrame.
+    void setCamera(std::optional<CameraDesc> camera) { m_camera = std::move(camera); }
 
     /// Camera paths one batch of traceSamples should hold: enough that the per-batch cost vanishes, few
     /// enough that a batch ends well within a second (cancel, progress, no GPU watchdog).
@@ -100,5 +105,12 @@ public:
     virtual void setCostRecording(bool on) { (void)on; }
     /// The cost of the samples the frame has traced in the batches that completed; empty when not recorded.
     virtual CostMap costMap() { return {}; }
+
+protected:
+    /// What beginFrame renders from: setCamera's camera, else `scene`'s.
+    const CameraDesc& frameCamera(const Scene& scene) const { return m_camera ? *m_camera : scene.camera; }
+
+private:
+    std::optional<CameraDesc> m_camera;
 };
 } // namespace rt

@@ -6,9 +6,11 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "Render/RenderSettings.h"
+#include "Scene/Camera.h"
 #include "Scenes/Catalogue.h"
 
 namespace rt
@@ -29,6 +31,9 @@ struct RenderRequest
 {
     SceneRef scene;
     RenderSettings settings;
+    /// The windows' moved camera (orbit, WASD, wheel); none: the scene's own. An image of another view is other
+    /// work: the timings, the references and their cache key tell them apart.
+    std::optional<CameraDesc> camera;
 
     bool operator==(const RenderRequest&) const = default;
 };

@@ -80,7 +80,7 @@ void CpuEngine::beginFrame(const RenderSettings& settings)
     const int width = settings.width;
     const int height = settings.height();
     m_frame.emplace(Frame{.settings = settings,
-                          .uniforms = makeUniforms(m_scene->source(), m_scene->source().camera, settings,
+                          .uniforms = makeUniforms(m_scene->source(), frameCamera(m_scene->source()), settings,
                                                    std::uint32_t(width), std::uint32_t(height)),
                           .variant = choosePathVariant(m_features, settings.estimator, m_specialize, m_scene->tracesRayLanes()),
                           .sum = std::vector<dvec3>(std::size_t(width) * height, dvec3(0.0)),

@@ -443,7 +443,7 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
             throw UsageError(why);
     e.prepareTarget(width, height, restirDi);
     e.restirHistory = false;
-    e.uniforms = e.tracer.uniforms(e.tracer.scene()->camera, settings, {width, height});
+    e.uniforms = e.tracer.uniforms(frameCamera(*e.tracer.scene()), settings, {width, height});
     e.uniforms.countRays = e.countRays ? 1u : 0u;
     e.frameStages.clear();
     const auto compileStart = std::chrono::steady_clock::now();

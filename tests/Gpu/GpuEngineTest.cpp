@@ -10,6 +10,7 @@
 #include "Scene/SceneBuilder.h"
 #include "GpuTestEnvironment.h"
 #include "Scenes/Catalogue.h"
+#include "Support/MovedCamera.h"
 #include "Support/SmallSettings.h"
 
 namespace rt::gpu::test
@@ -106,6 +107,15 @@ TEST_F(GpuDeterminism, DispatchSplitDoesNotChangeTheImage)
     s.sampling = PixelSampling::Accumulate;
     const RenderResult passes = renderOnGpu(scene, s);
     EXPECT_EQ(together.image.pixels(), passes.image.pixels());
+}
+
+// RenderRequest::camera (the windows' moved camera): one Vulkan device per process, so the shared engine renders
+// both views, given the scene whose own camera is the moved one between them.
+TEST_F(GpuDeterminism, RendersTheRequestsCameraAndForgetsItAfterwards)
+{
+    const Scene scene = makeScene("rtrol-cornell-box");
+    rt::test::expectTheRequestsCameraIsRendered(*sharedEngine(), "rtrol-cornell-box", small(scene, 24, 4, 8),
+                                      [] { return std::unique_ptr<RenderEngine>(); });
 }
 
 using GpuSpecialization = GpuEngineTest;
