@@ -30,7 +30,7 @@ app_packages=(
     libopenexr-dev libopenmpi-dev openmpi-bin
 )
 test_packages=(
-    libgtest-dev libbenchmark-dev vulkan-tools vulkan-validationlayers xvfb xauth x11-utils imagemagick hyperfine
+    libgtest-dev libbenchmark-dev vulkan-tools vulkan-validationlayers xvfb xauth x11-utils xdotool imagemagick hyperfine
     python3-openimageio
 )
 backports_packages=(mesa-vulkan-drivers)

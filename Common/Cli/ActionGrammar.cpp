@@ -11,6 +11,7 @@
 #include "Cli/WindowSize.h"
 #include "Error.h"
 #include "Render/SettingsTable.h"
+#include "Scene/CameraMoves.h"
 #include "SceneFile/SceneFile.h"
 #include "Scenes/Catalogue.h"
 
@@ -175,6 +176,13 @@ std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long lo
         {"pdf", ActionValue::OnOff, "on|off", "the books' name: estimator=mixture, or estimator=bsdf"},
         settingActionSpec(setting("russian-roulette")),
         settingActionSpec(setting("unidirectional-light")),
+        {"fov", ActionValue::Real, "DEGREES",
+         fmt::format("the camera's vertical field of view, {:g} to {:g} (the panel's range)", kMinFov, kMaxFov),
+         kMinFov, kMaxFov},
+        {"camera", ActionValue::Text, "MOVE:AMOUNT|reset",
+         "move forward/back/left/right/up/down by AMOUNT world units, or turn yaw/pitch by AMOUNT degrees; reset: the "
+         "scene's camera",
+         0, 1e30, [](const std::string& v) { return parseCameraAction(v).has_value(); }},
         {"resize", ActionValue::Size, "WxH", "resize the window (0x0: as a minimised window reports)"},
         {"save", ActionValue::Text, "FILE.png", "save the image shown: FILE.png and the linear FILE.pfm", 0, 1e30,
          [](const std::string& path) { return saveImagePathProblem(path).empty(); }},
@@ -194,6 +202,33 @@ std::string saveImagePathProblem(const std::string& path)
     return fmt::format("'{}' is not saved: the window writes PNG (sRGB) with the linear PFM beside it, so the "
                        "name must end in .png{}",
                        path, p.extension().empty() || p.extension() == ".png" ? "" : " (not " + p.extension().string() + ")");
+}
+
+std::optional<CameraAction> parseCameraAction(const std::string& value)
+{
+    if (value == "reset")
+        return CameraAction{.reset = true};
+    const std::size_t colon = value.find(':');
+    if (colon == std::string::npos)
+        return std::nullopt;
+    const std::string what = value.substr(0, colon);
+    const auto amount = parseReal(value.substr(colon + 1));
+    if (!amount || !std::isfinite(*amount))
+        return std::nullopt;
+    const struct
+    {
+        const char* name;
+        vec3 direction;
+    } moves[] = {{"forward", {0, 0, 1}}, {"back", {0, 0, -1}}, {"left", {-1, 0, 0}},
+                 {"right", {1, 0, 0}},   {"up", {0, 1, 0}},    {"down", {0, -1, 0}}};
+    for (const auto& m : moves)
+        if (what == m.name)
+            return CameraAction{.move = float(*amount) * m.direction};
+    if (what == "yaw")
+        return CameraAction{.yawDegrees = float(*amount)};
+    if (what == "pitch")
+        return CameraAction{.pitchDegrees = float(*amount)};
+    return std::nullopt;
 }
 
 std::vector<ActionSpec> joinActionSpecs(std::vector<ActionSpec> shared, const std::vector<ActionSpec>& own)

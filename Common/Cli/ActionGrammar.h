@@ -6,10 +6,13 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
+
+#include "Math/Math.h"
 
 namespace rt
 {
@@ -57,7 +60,7 @@ std::string actionScriptHelp(const std::vector<ActionSpec>& specs);
 
 /// The actions both windows have: scene=ID|FILE (a catalogue id or an existing scene file), fresnel=NAME,
 /// roughness-scale=X, spp=N, depth=N, estimator=NAME, pdf=on|off, russian-roulette=on|off|sqrt, unidirectional-light=on|off,
-/// resize=WxH, save=FILE.png, frames=N (let N frames pass), sleep=SECONDS (let that much time pass),
+/// fov=DEGREES, camera=MOVE:AMOUNT|reset, resize=WxH, save=FILE.png, frames=N (let N frames pass), sleep=SECONDS (let that much time pass),
 /// theme=dark|light, font-size=PIXELS. `sppMeaning` says what spp means in the window (the render's samples per pixel, or
 /// where accumulation stops).
 std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long long sppMinimum);
@@ -66,6 +69,18 @@ std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long lo
 /// panel's text is unreadable, above 32 the panel no longer fits beside the image.
 inline constexpr int kMinFontPixels = 10;
 inline constexpr int kMaxFontPixels = 32;
+
+/// What the windows' camera=VALUE does: forward|back|left|right|up|down:UNITS moves by that many world units
+/// along the view's axes, yaw|pitch:DEGREES turns (Scene/CameraMoves.h), reset returns to the scene's camera.
+struct CameraAction
+{
+    bool reset = false;
+    vec3 move{0.0f}; // view axes: right, up, forward
+    float yawDegrees = 0.0f;
+    float pitchDegrees = 0.0f;
+};
+/// Parses camera=VALUE; nullopt when it is none of the above or its amount is not a finite number.
+std::optional<CameraAction> parseCameraAction(const std::string& value);
 
 /// Why the windows' Save cannot write `path`, or empty when it can: they write PNG (sRGB) with the linear PFM
 /// beside it, so the name must end in .png.

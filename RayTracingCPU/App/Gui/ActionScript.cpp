@@ -173,6 +173,10 @@ bool ActionScript::run(const Action& a, Session& session, GlWindow& window)
         window.resize(w, h);
         return true;
     }
+    if (a.name == "fov")
+        return check(session.setFov(float(a.real())));
+    if (a.name == "camera")
+        return check(session.applyCamera(*parseCameraAction(v))); // checked by the spec
     if (a.name == "save")
         return check(session.saveImage(v));
     if (a.name == "save-plot")

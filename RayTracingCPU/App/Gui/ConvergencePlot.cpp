@@ -101,7 +101,7 @@ std::vector<const PlotLine*> ConvergencePlot::linesOf(const RenderRequest& work)
     const TimingKey key = plotWork(work);
     std::vector<const PlotLine*> out;
     for (const PlotLine& line : m_lines)
-        if (line.work.scene == key.scene && line.work.settings.width == key.settings.width &&
+        if (line.work.scene == key.scene && line.work.camera == key.camera && line.work.settings.width == key.settings.width &&
             line.work.settings.height() == key.settings.height() && line.work.settings.depth == key.settings.depth)
             out.push_back(&line);
     return out;

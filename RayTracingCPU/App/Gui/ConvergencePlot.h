@@ -58,7 +58,8 @@ public:
     void attach(const FinishedReference& reference);
     void clear() { m_lines.clear(); }
     const std::vector<PlotLine>& lines() const { return m_lines; }
-    /// The lines of `work` (spp and seed ignored), in the order of their first point.
+    /// The lines of `work`'s scene, camera, size and depth (the strategy, spp and seed ignored), in the order of
+    /// their first point.
     std::vector<const PlotLine*> linesOf(const RenderRequest& work) const;
 
     /// One object per line: label, engine, device, scene, width, height, the strategy settings, and points

@@ -1,6 +1,7 @@
 #include "App/Gui/GuiApp.h"
 
 #include <algorithm>
+#include <chrono>
 #include <memory>
 #include <optional>
 
@@ -9,6 +10,7 @@
 #include <spdlog/spdlog.h>
 
 #include "App/Gui/ActionScript.h"
+#include "App/Gui/CameraInput.h"
 #include "App/Gui/FramePacer.h"
 #include "App/Gui/ImageView.h"
 #include "App/Gui/PaneLayout.h"
@@ -191,7 +193,12 @@ private:
         ImGui::SetNextWindowPos(ImVec2(panelWidth, 0.0f));
         ImGui::SetNextWindowSize(ImVec2(display.x - panelWidth, display.y - timingsHeight));
         if (ImGui::Begin(title.c_str(), nullptr, kPaneFlags))
-            m_imageView.draw(stale, overlay);
+        {
+            const auto now = std::chrono::steady_clock::now();
+            const double seconds = std::chrono::duration<double>(now - m_lastInputFrame).count();
+            m_lastInputFrame = now;
+            applyCameraInput(m_session, m_imageView.draw(stale, overlay), seconds);
+        }
         ImGui::End();
 
         ImGui::SetNextWindowPos(ImVec2(panes.timings.x, panes.timings.y));
@@ -233,6 +240,7 @@ private:
     FramePacer m_pacer;
     std::optional<ActionScript> m_script;
     nlohmann::json m_layout; // of the last frame drawn, for --state-json
+    std::chrono::steady_clock::time_point m_lastInputFrame = std::chrono::steady_clock::now(); // WASD's clock
 };
 } // namespace
 

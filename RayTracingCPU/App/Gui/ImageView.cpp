@@ -63,12 +63,12 @@ void ImageView::update(const std::shared_ptr<const Preview>& preview, bool heatm
     m_texture.upload(w, h, shown.data());
 }
 
-void ImageView::draw(bool dim, const std::string& overlay)
+ImagePointer ImageView::draw(bool dim, const std::string& overlay)
 {
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 region = ImGui::GetContentRegionAvail();
     if (region.x < 1.0f || region.y < 1.0f)
-        return;
+        return {};
     ImDrawList& draw = *ImGui::GetWindowDrawList();
     // A neutral backdrop a shade off the pane's, in either theme: no tint next to the image's colours.
     const ImVec4 pane = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
@@ -95,6 +95,18 @@ void ImageView::draw(bool dim, const std::string& overlay)
                            IM_COL32(0, 0, 0, 170), ImGui::GetStyle().FrameRounding);
         draw.AddText(at, IM_COL32(240, 240, 240, 255), overlay.c_str());
     }
-    ImGui::Dummy(region);
+    ImGui::InvisibleButton("image", region); // takes the pane's clicks: a drag turns the camera
+    const ImGuiIO& io = ImGui::GetIO();
+    ImagePointer pointer;
+    pointer.hovered = ImGui::IsItemHovered();
+    pointer.dragging = ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0.0f);
+    if (pointer.dragging)
+    {
+        pointer.dragX = io.MouseDelta.x;
+        pointer.dragY = io.MouseDelta.y;
+    }
+    if (pointer.hovered)
+        pointer.wheel = io.MouseWheel;
+    return pointer;
 }
 } // namespace rt::gui

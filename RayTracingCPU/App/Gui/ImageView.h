@@ -31,6 +31,16 @@ private:
     int m_height = 0;
 };
 
+/// What the pointer did over the image pane in the last draw(): the camera's input (CameraInput.h).
+struct ImagePointer
+{
+    bool hovered = false;
+    bool dragging = false; // the left button went down on the pane and is still down
+    float dragX = 0.0f; // this frame's movement while dragging, in screen pixels
+    float dragY = 0.0f;
+    float wheel = 0.0f; // steps while hovered
+};
+
 class ImageView
 {
 public:
@@ -41,7 +51,7 @@ public:
     bool showsHeatmap() const { return m_showsHeatmap; }
     /// Draws into the current ImGui window's remaining content region. `overlay`: a line shown over the image
     /// (or the empty pane); `dim`: the image does not belong to the panel's settings.
-    void draw(bool dim, const std::string& overlay);
+    ImagePointer draw(bool dim, const std::string& overlay);
     bool hasImage() const { return m_width > 0; }
     /// Where the last draw() put the image, in ImGui's coordinates: x, y, width, height (zeros before).
     const std::array<float, 4>& drawnRect() const { return m_drawnRect; }

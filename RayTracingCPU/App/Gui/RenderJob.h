@@ -103,12 +103,13 @@ struct RenderOutcome
     WindowRedraws redraws; // during this render (loop iteration)
 };
 
-/// What the window needs of a scene it does not hold: its own render defaults, and whether the roughness
-/// slider applies.
+/// What the window needs of a scene it does not hold: its own render defaults, whether the roughness slider
+/// applies, and its camera.
 struct SceneSummary
 {
     SceneDefaults defaults;
     bool microfacet = false; // Scene::hasMicrofacetMaterial
+    CameraDesc camera; // the scene's own: where the window's camera starts and resets to
 };
 
 class RenderJob

@@ -13,6 +13,7 @@
 #include "Image/Heatmap.h"
 #include "Image/ImageIO.h"
 #include "Render/MemoryBudget.h"
+#include "Scene/CameraMoves.h"
 #include "SceneFile/SceneFile.h"
 
 namespace rt::gui
@@ -39,7 +40,8 @@ nlohmann::json toJson(const RenderRequest& request)
             {"light_selection", toString(r.lightSelection)},
             {"russian_roulette", toString(r.russianRoulette)},
             {"unidirectional_light", r.unidirectionalLight},
-            {"seed", r.seed}};
+            {"seed", r.seed},
+            {"camera", cameraJson(request.camera)}};
 }
 
 std::string duration(double seconds)
@@ -99,6 +101,7 @@ bool Session::setScene(const std::string& idOrPath)
     RenderRequest s = m_image;
     s.scene.id = idOrPath;
     s.scene.fileVersion = sceneFileVersion(idOrPath);
+    s.camera.reset(); // another scene, its own view
     if (!tryImage(s))
         return false;
     m_watch.watch(idOrPath, s.scene.fileVersion);
@@ -116,6 +119,54 @@ bool Session::hasMicrofacetMaterial() const
 {
     const std::optional<SceneSummary> summary = m_job.sceneSummary(m_image.scene.id);
     return summary && summary->microfacet;
+}
+
+std::optional<CameraDesc> Session::viewCamera() const
+{
+    if (m_image.camera)
+        return m_image.camera;
+    const std::optional<SceneSummary> summary = m_job.sceneSummary(m_image.scene.id);
+    return summary ? std::optional(summary->camera) : std::nullopt;
+}
+
+bool Session::applyCamera(const CameraAction& action)
+{
+    if (action.reset)
+    {
+        m_image.camera.reset();
+        return true;
+    }
+    const std::optional<CameraDesc> view = viewCamera();
+    if (!view)
+    {
+        note("the camera moves once the scene is built", true);
+        return false;
+    }
+    CameraDesc moved = *view;
+    if (action.move != vec3(0.0f))
+        moved = moveCamera(moved, action.move);
+    if (action.yawDegrees != 0.0f || action.pitchDegrees != 0.0f)
+        moved = turnCamera(moved, action.yawDegrees, action.pitchDegrees);
+    m_image.camera = moved;
+    return true;
+}
+
+bool Session::setFov(float degrees)
+{
+    const std::optional<CameraDesc> view = viewCamera();
+    if (!view)
+    {
+        note("the camera moves once the scene is built", true);
+        return false;
+    }
+    m_image.camera = withFov(*view, degrees);
+    return true;
+}
+
+float Session::cameraSpeed() const
+{
+    const std::optional<SceneSummary> summary = m_job.sceneSummary(m_image.scene.id);
+    return summary ? movementSpeed(summary->camera) : 0.0f;
 }
 
 bool Session::setSetting(const Setting& setting, std::string_view value)

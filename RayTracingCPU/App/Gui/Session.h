@@ -16,6 +16,7 @@
 #include "App/Gui/PanelSettings.h"
 #include "App/Gui/RenderJob.h"
 #include "App/Gui/TimingsTable.h"
+#include "Cli/ActionGrammar.h"
 #include "Render/SettingsTable.h"
 #include "SceneFile/SceneFileWatch.h"
 
@@ -56,6 +57,17 @@ public:
     void setPdf(bool on);
     /// The selected scene's own spp, depth, width, aspect and light mode; false until the scene was built once.
     bool applySceneDefaults();
+
+    // The camera (Scene/CameraMoves.h): a moved camera is part of the image settings (RenderRequest::camera), so
+    // every move renders again; a new scene starts from its own camera.
+    /// The camera the panel's image is seen from: the moved one, else the selected scene's own (once built).
+    std::optional<CameraDesc> viewCamera() const;
+    /// Moves, turns or resets the view from viewCamera(); false, with message(), before the scene is built.
+    bool applyCamera(const CameraAction& action);
+    /// The vertical field of view, held to [kMinFov, kMaxFov]; false before the scene is built.
+    bool setFov(float degrees);
+    /// WASD's speed in world units per second (movementSpeed of the scene's camera); 0 before it is built.
+    float cameraSpeed() const;
 
     /// False, with message(), when the GPU engine is unavailable.
     bool selectEngine(EngineKind engine);

@@ -9,10 +9,21 @@ namespace rt::gui
 {
 TimingKey TimingKey::of(const RenderRequest& request)
 {
-    TimingKey key{.scene = request.scene, .settings = request.settings};
+    TimingKey key{.scene = request.scene, .settings = request.settings, .camera = request.camera};
     key.settings.spp = request.settings.trueSpp();
     key.settings.seed = 0;
     return key;
+}
+
+nlohmann::json cameraJson(const std::optional<CameraDesc>& camera)
+{
+    if (!camera)
+        return nullptr;
+    const auto xyz = [](const vec3& v) { return nlohmann::json{v.x, v.y, v.z}; };
+    return {{"look_from", xyz(camera->lookFrom)},
+            {"look_at", xyz(camera->lookAt)},
+            {"vup", xyz(camera->vup)},
+            {"vfov", camera->vfovDegrees}};
 }
 
 std::vector<const Setting*> timingColumns()
@@ -140,6 +151,7 @@ nlohmann::json TimingsTable::toJson() const
                                             {"device", cell->device},
                                             {"window_redraws", cell->redraws.total},
                                             {"window_redraws_on_input", cell->redraws.onInput},
+                                            {"camera", cameraJson(row.key.camera)},
                                             {"build_seconds", cell->buildSeconds},
                                             {"compiled", cell->compileSeconds.has_value()},
                                             {"compile_seconds", orNull(cell->compileSeconds)},

@@ -32,10 +32,14 @@ struct TimingKey
 {
     SceneRef scene;
     RenderSettings settings;
+    std::optional<CameraDesc> camera; // a moved camera's view is other work
 
     static TimingKey of(const RenderRequest& request);
     bool operator==(const TimingKey&) const = default;
 };
+
+/// A moved camera as JSON: {look_from, look_at, vup, vfov}; null for the scene's own.
+nlohmann::json cameraJson(const std::optional<CameraDesc>& camera);
 
 /// The settings a timings row shows in its own column, in the settings table's order: every one but the size
 /// (shown as WxH) and the seed (not part of the key).
@@ -112,7 +116,7 @@ public:
     std::uint64_t revision() const { return m_revision; }
     /// One object per (row, engine): scene, count, mesh, width, height, spp, depth, sampling, estimator,
     /// russian_roulette, unidirectional_light, engine, seconds, best_seconds, mpaths_per_second, renders, device,
-    /// window_redraws, window_redraws_on_input, build_seconds, compiled, compile_seconds (null when not compiled)
+    /// window_redraws, window_redraws_on_input, camera (cameraJson), build_seconds, compiled, compile_seconds (null when not compiled)
     /// (of the latest render), rel_mse and efficiency (null until measured), and the row's reference: state
     /// (waiting, ready, failed), spp, engine, own_rel_mse, from_cache, seconds, error.
     nlohmann::json toJson() const;

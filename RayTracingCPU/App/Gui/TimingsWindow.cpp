@@ -119,7 +119,16 @@ bool drawTimings(Session& session)
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             if (first)
+            {
                 ImGui::TextUnformatted(row.key.scene.id.c_str());
+                if (row.key.camera)
+                {
+                    ImGui::SameLine();
+                    ImGui::TextDisabled("(moved)");
+                    if (ImGui::IsItemHovered())
+                        ImGui::SetTooltip("seen from a moved camera (its settings in --state-json), not the scene's");
+                }
+            }
             ImGui::TableNextColumn();
             if (first)
                 ImGui::Text("%dx%d", row.key.settings.width, row.key.settings.height());

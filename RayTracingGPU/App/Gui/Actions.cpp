@@ -4,7 +4,6 @@
 
 #include <spdlog/fmt/fmt.h>
 
-#include "App/Gui/CameraController.h"
 #include "Cli/ValueParsing.h"
 #include "Error.h"
 #include "Scenes/Catalogue.h"
@@ -13,42 +12,6 @@ namespace rt::gpu::gui
 {
 namespace
 {
-/// camera=forward|back|left|right|up|down:<units>, yaw|pitch:<degrees>, reset. Without controls, only checks.
-bool applyCamera(const std::string& value, Controls* controls)
-{
-    if (value == "reset")
-    {
-        if (controls)
-            controls->resetCamera();
-        return true;
-    }
-    const std::size_t colon = value.find(':');
-    if (colon == std::string::npos)
-        return false;
-    const std::string what = value.substr(0, colon);
-    const auto amount = parseReal(value.substr(colon + 1));
-    if (!amount || !std::isfinite(*amount))
-        return false;
-    const struct
-    {
-        const char* name;
-        vec3 direction; // view axes: right, up, forward
-    } moves[] = {{"forward", {0, 0, 1}}, {"back", {0, 0, -1}}, {"left", {-1, 0, 0}},
-                 {"right", {1, 0, 0}},   {"up", {0, 1, 0}},    {"down", {0, -1, 0}}};
-    for (const auto& m : moves)
-        if (what == m.name)
-        {
-            if (controls)
-                controls->moveCamera(*amount * m.direction);
-            return true;
-        }
-    if (what != "yaw" && what != "pitch")
-        return false;
-    if (controls)
-        controls->turnCamera(what == "yaw" ? *amount : 0.0f, what == "pitch" ? *amount : 0.0f);
-    return true;
-}
-
 /// The window's actions: the shared ones (Cli/ActionGrammar.h), then this window's own.
 const std::vector<ActionSpec>& specs()
 {
@@ -66,13 +29,8 @@ const std::vector<ActionSpec>& specs()
                  return v == "auto" || (ticks && std::isfinite(*ticks) && *ticks >= 1.0f);
              }},
             {"samples", ActionValue::Integer, "N", "samples per pixel per frame", 1, double(kMaxSamplesPerFrame)},
-            {"fov", ActionValue::Real, "DEGREES",
-             fmt::format("vertical field of view, {:g} to {:g} (the panel's range)", kMinFov, kMaxFov), kMinFov, kMaxFov},
             {"aperture", ActionValue::Real, "UNITS", "lens diameter (0: pinhole)", 0},
             {"focus", ActionValue::Real, "UNITS", "focus distance", 1e-4},
-            {"camera", ActionValue::Text, "MOVE:AMOUNT|reset",
-             "move forward/back/left/right/up/down by AMOUNT world units, or turn yaw/pitch by AMOUNT degrees", 0,
-             1e30, [](const std::string& v) { return applyCamera(v, nullptr); }},
             {"font", ActionValue::Text, "NAME", "font of the panel, as the panel lists it", 0, 1e30,
              [](const std::string& v) { return !v.empty(); }},
         });
@@ -136,7 +94,15 @@ bool applyAction(const Action& a, Controls& c)
     else if (n == "focus")
         c.setFocusDistance(a.real());
     else if (n == "camera")
-        applyCamera(a.value, &c);
+    {
+        const CameraAction move = *parseCameraAction(a.value); // checked by the spec
+        if (move.reset)
+            c.resetCamera();
+        else if (move.move != vec3(0.0f))
+            c.moveCamera(move.move);
+        else
+            c.turnCamera(move.yawDegrees, move.pitchDegrees);
+    }
     else if (n == "font")
         c.setFont(a.value);
     else

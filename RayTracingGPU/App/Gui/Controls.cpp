@@ -7,7 +7,7 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
-#include "App/Gui/CameraController.h"
+#include "Scene/CameraMoves.h"
 #include "Cli/ActionGrammar.h"
 #include "Error.h"
 #include "SceneFile/SceneFile.h"
@@ -110,11 +110,11 @@ void Controls::setFocusDistance(float distance)
     m_state->image.camera = withFocusDistance(m_state->image.camera, distance);
 }
 
-void Controls::moveCamera(const vec3& offset) { m_state->image.camera = gui::moveCamera(m_state->image.camera, offset); }
+void Controls::moveCamera(const vec3& offset) { m_state->image.camera = rt::moveCamera(m_state->image.camera, offset); }
 
 void Controls::turnCamera(float yawDegrees, float pitchDegrees)
 {
-    m_state->image.camera = gui::turnCamera(m_state->image.camera, yawDegrees, pitchDegrees);
+    m_state->image.camera = rt::turnCamera(m_state->image.camera, yawDegrees, pitchDegrees);
 }
 
 void Controls::resetCamera() { m_state->image.camera = m_state->sceneCamera; }

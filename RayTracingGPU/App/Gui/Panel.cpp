@@ -7,7 +7,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
-#include "App/Gui/CameraController.h"
+#include "Scene/CameraMoves.h"
 #include "Cli/ActionGrammar.h"
 #include "Gui/SettingWidget.h"
 #include "Error.h"

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
-#include "App/Gui/CameraController.h"
+#include "Scene/CameraMoves.h"
 #include "App/Gui/CameraInput.h"
 #include "App/Gui/Controls.h"
 #include "App/Gui/DisplayPass.h"

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "App/Gui/Actions.h"
-#include "App/Gui/CameraController.h"
+#include "Scene/CameraMoves.h"
 #include "Cli/ActionGrammar.h"
 #include "Error.h"
 #include "Scenes/Catalogue.h"

@@ -1,11 +1,11 @@
-#include "App/Gui/CameraController.h"
+#include "Scene/CameraMoves.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/quaternion.hpp>
 
-namespace rt::gpu::gui
+namespace rt
 {
 namespace
 {
@@ -72,4 +72,4 @@ CameraDesc withFocusDistance(const CameraDesc& camera, float focusDistance)
 }
 
 float movementSpeed(const CameraDesc& sceneCamera) { return 0.25f * std::max(distanceToTarget(sceneCamera), 1e-3f); }
-} // namespace rt::gpu::gui
+} // namespace rt

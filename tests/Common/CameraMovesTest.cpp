@@ -1,9 +1,9 @@
 // The interactive camera's moves on a copy of a CameraDesc.
 #include <gtest/gtest.h>
 
-#include "App/Gui/CameraController.h"
+#include "Scene/CameraMoves.h"
 
-namespace rt::gpu::gui
+namespace rt
 {
 namespace
 {
@@ -22,7 +22,7 @@ void expectNear(const vec3& a, const vec3& b, float tolerance = 1e-4f)
     EXPECT_NEAR(glm::length(a - b), 0.0f, tolerance) << a.x << "," << a.y << "," << a.z;
 }
 
-TEST(CameraController, AxesAreRightUpForward)
+TEST(CameraMoves, AxesAreRightUpForward)
 {
     const CameraAxes axes = cameraAxes(lookingDownMinusZ());
     expectNear(axes.forward, {0, 0, -1});
@@ -30,34 +30,34 @@ TEST(CameraController, AxesAreRightUpForward)
     expectNear(axes.up, {0, 1, 0});
 }
 
-TEST(CameraController, MoveShiftsEyeAndTargetAlike)
+TEST(CameraMoves, MoveShiftsEyeAndTargetAlike)
 {
     const CameraDesc moved = moveCamera(lookingDownMinusZ(), {1.0f, 2.0f, 3.0f});
     expectNear(moved.lookFrom, {1, 2, -3});
     expectNear(moved.lookAt, {1, 2, -13});
 }
 
-TEST(CameraController, YawTurnsRightAndKeepsTheDistance)
+TEST(CameraMoves, YawTurnsRightAndKeepsTheDistance)
 {
     const CameraDesc turned = turnCamera(lookingDownMinusZ(), 90.0f, 0.0f);
     expectNear(turned.lookAt, {10, 0, 0});
     expectNear(turned.lookFrom, {0, 0, 0});
 }
 
-TEST(CameraController, PitchTurnsUpButNeverOntoVup)
+TEST(CameraMoves, PitchTurnsUpButNeverOntoVup)
 {
     expectNear(turnCamera(lookingDownMinusZ(), 0.0f, 45.0f).lookAt, {0, 10 * std::sqrt(0.5f), -10 * std::sqrt(0.5f)});
     // Straight up would make the view parallel to vup (no camera frame): refused, the view stays as it was.
     expectNear(turnCamera(lookingDownMinusZ(), 0.0f, 90.0f).lookAt, {0, 0, -10});
 }
 
-TEST(CameraController, FovIsClamped)
+TEST(CameraMoves, FovIsClamped)
 {
     EXPECT_FLOAT_EQ(withFov(lookingDownMinusZ(), 500.0f).vfovDegrees, kMaxFov);
     EXPECT_FLOAT_EQ(withFov(lookingDownMinusZ(), -3.0f).vfovDegrees, kMinFov);
 }
 
-TEST(CameraController, ApertureRoundTripsAndFocusKeepsIt)
+TEST(CameraMoves, ApertureRoundTripsAndFocusKeepsIt)
 {
     const CameraDesc lens = withAperture(lookingDownMinusZ(), 0.5f);
     EXPECT_NEAR(apertureOf(lens), 0.5f, 1e-5f);
@@ -68,9 +68,9 @@ TEST(CameraController, ApertureRoundTripsAndFocusKeepsIt)
     EXPECT_FLOAT_EQ(apertureOf(withAperture(lens, 0.0f)), 0.0f);
 }
 
-TEST(CameraController, SpeedFollowsTheSceneScale)
+TEST(CameraMoves, SpeedFollowsTheSceneScale)
 {
     EXPECT_FLOAT_EQ(movementSpeed(lookingDownMinusZ()), 2.5f);
 }
 } // namespace
-} // namespace rt::gpu::gui
+} // namespace rt

@@ -1,12 +1,13 @@
-// The interactive camera: WASD (+ Q/E down/up) moves, Shift faster, Ctrl slower, a mouse drag turns, the wheel
-// zooms. Pure functions on a copy of the scene's CameraDesc; the frame loop passes the result to the ray
-// tracer and the preview (makeUniforms takes a camera), so nothing of the scene is rebuilt.
+// The windows' interactive camera: WASD (+ Q/E down/up) moves, Shift faster, Ctrl slower, a mouse drag turns,
+// the wheel zooms. Pure functions on a copy of the scene's CameraDesc; a window passes the result to the engines
+// (the GPU window's ray tracer and preview, the CPU window's RenderRequest::camera), so nothing of the scene is
+// rebuilt.
 #pragma once
 
 #include "Math/Math.h"
 #include "Scene/Camera.h"
 
-namespace rt::gpu::gui
+namespace rt
 {
 /// Unit axes of the view: forward (lookFrom to lookAt), right, and up (vup made orthogonal to forward).
 struct CameraAxes
@@ -40,4 +41,4 @@ CameraDesc withFocusDistance(const CameraDesc& camera, float focusDistance);
 /// WASD speed in world units per second: a quarter of the scene camera's distance to its target, so that
 /// a Cornell box (800 units away) and the books' spheres (13 units) both feel alike.
 float movementSpeed(const CameraDesc& sceneCamera);
-} // namespace rt::gpu::gui
+} // namespace rt
