@@ -228,9 +228,7 @@ CommandLineRender resolveCommandLine(const CommonOptions& options)
             if (options.given(setting))
                 spdlog::warn("--{} is ignored: estimator bsdf samples no light (nee, nee-mis, mixture and restir-di do)",
                              setting);
-    const std::uint64_t pixels = std::uint64_t(s.width) * std::uint64_t(s.height());
-    const std::uint64_t restirPixels = s.estimator == Estimator::RestirDi ? pixels * (kRestirBytesPerPixel / kRenderBytesPerPixel) : 0;
-    checkMemory(renderBytes(pixels + restirPixels, r.scene.primitiveCount() + r.scene.lights.size()),
+    checkMemory(renderBytes(s, r.scene.primitiveCount() + r.scene.lights.size()),
                 fmt::format("a {}x{} render of {}", s.width, s.height(), r.scene.id), available);
     return r;
 }

@@ -34,6 +34,19 @@ std::uint64_t renderBytes(std::uint64_t pixels, std::uint64_t sceneObjects)
                                                                        : image + scene;
 }
 
+std::uint64_t renderBytes(const RenderSettings& settings, std::uint64_t sceneObjects)
+{
+    const std::uint64_t pixels = std::uint64_t(settings.width) * std::uint64_t(settings.height());
+    const std::uint64_t restirPixels =
+        settings.estimator == Estimator::RestirDi ? pixels * (kRestirBytesPerPixel / kRenderBytesPerPixel) : 0;
+    return renderBytes(pixels + restirPixels, sceneObjects);
+}
+
+std::string describeBytes(std::uint64_t bytes)
+{
+    return bytes >= 1'000'000'000 ? gigabytes(bytes) : fmt::format("{:.1f} MB", double(bytes) * 1e-6);
+}
+
 std::uint64_t availableMemoryBytes()
 {
     std::ifstream meminfo("/proc/meminfo");

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <string>
 
+#include "Render/RenderSettings.h"
+
 namespace rt
 {
 /// Host bytes per pixel, an upper bound of what was measured at 1500-3000 px wide (peak RSS): 42 on the CPU
@@ -22,6 +24,11 @@ inline constexpr std::uint64_t kSceneBytesPerObject = 1024;
 
 /// Estimated host bytes for a render of `pixels` pixels of a scene of `sceneObjects` objects.
 std::uint64_t renderBytes(std::uint64_t pixels, std::uint64_t sceneObjects);
+/// Estimated host bytes for a render of `settings` (its pixels, restir-di's frame beside them) of a scene of
+/// `sceneObjects` objects: what the command line checks before it renders, and the windows show and check.
+std::uint64_t renderBytes(const RenderSettings& settings, std::uint64_t sceneObjects);
+/// "0.3 MB", "1.2 GB": a byte count as the windows show it.
+std::string describeBytes(std::uint64_t bytes);
 
 /// What the machine can give now: MemAvailable of /proc/meminfo, else free physical pages (sysconf);
 /// 0 when neither can be read.

@@ -13,7 +13,7 @@ std::vector<ActionSpec> specsWithRender()
 {
     return joinActionSpecs(sharedActionSpecs("samples per pixel", 1),
                            {{"render", ActionValue::None, "", "start a render"},
-                            {"aspect", ActionValue::Real, "A", "width / height", 0.5, 4.0}});
+                            {"zoom", ActionValue::Real, "Z", "a window's own real action", 0.5, 4.0}});
 }
 
 TEST(ActionGrammar, SplitsAtSemicolonsTrimsAndSkipsBlanks)
@@ -30,7 +30,7 @@ TEST(ActionGrammar, SplitsAtSemicolonsTrimsAndSkipsBlanks)
 
 TEST(ActionGrammar, TypedValuesReadBack)
 {
-    const auto a = parseActionScript("pdf=off;unidirectional-light=on;aspect=1.5;font-size=20", specsWithRender());
+    const auto a = parseActionScript("pdf=off;unidirectional-light=on;zoom=1.5;font-size=20", specsWithRender());
     EXPECT_FALSE(a[0].on());
     EXPECT_TRUE(a[1].on());
     EXPECT_FLOAT_EQ(a[2].real(), 1.5f);
@@ -41,7 +41,7 @@ TEST(ActionGrammar, BadNamesAndValuesAreUsageErrorsQuotingTheAction)
 {
     for (const char* bad : {"bogus", "render=now", "spp=0", "spp=x", "depth=0", "pdf=yes", "resize=10",
                             "resize=-1x5", "resize=20000x10", "scene=", "scene=no-such-scene", "save=x.jpg",
-                            "save=.png", "theme=pink", "font-size=4", "font-size=33", "font-size=1.5", "spp=3000000000", "aspect=5", "aspect=nan",
+                            "save=.png", "theme=pink", "font-size=4", "font-size=33", "font-size=1.5", "spp=3000000000", "zoom=5", "zoom=nan", "aspect=0", "width=0",
                             "frames"})
     {
         try

@@ -19,9 +19,6 @@ const std::vector<ActionSpec>& specs()
     static const std::vector<ActionSpec> all = joinActionSpecs(
         sharedActionSpecs("samples per pixel of the render", 1),
         {
-            settingActionSpec(setting("width")),
-            settingActionSpec(setting("aspect")),
-            settingActionSpec(setting("seed")),
             {"count", ActionValue::Integer, "N", "white-spheres' sphere count (-1: the scene's)", -1},
             settingActionSpec(setting("sampling")),
             {"loop", ActionValue::OnOff, "on|off", "loop rendering: render again with the next seed and average"},

@@ -40,7 +40,8 @@ RenderJob::RenderJob(const GpuStartup::Options& gpu, const RenderRequest& initia
 {
     m_slots[std::size_t(EngineKind::Single)].engine = &m_single;
     m_slots[std::size_t(EngineKind::Multi)].engine = &m_multi;
-    m_sceneSummaries[initial.scene.id] = {m_scene->defaults, m_scene->hasMicrofacetMaterial(), m_scene->camera};
+    m_sceneSummaries[initial.scene.id] = {m_scene->defaults, m_scene->hasMicrofacetMaterial(), m_scene->camera,
+                                          m_scene->primitiveCount() + m_scene->lights.size()};
     m_worker = std::thread([this] { workerLoop(); });
 }
 
@@ -302,7 +303,8 @@ std::shared_ptr<const Scene> RenderJob::sceneFor(const SceneRef& ref)
     auto scene = std::make_shared<const Scene>(buildScene(ref));
     {
         std::lock_guard lock(m_mutex);
-        m_sceneSummaries[ref.id] = {scene->defaults, scene->hasMicrofacetMaterial(), scene->camera};
+        m_sceneSummaries[ref.id] = {scene->defaults, scene->hasMicrofacetMaterial(), scene->camera,
+                                    scene->primitiveCount() + scene->lights.size()};
         m_currentScene = ref;
     }
     m_scene = scene;

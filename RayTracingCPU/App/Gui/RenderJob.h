@@ -110,6 +110,7 @@ struct SceneSummary
     SceneDefaults defaults;
     bool microfacet = false; // Scene::hasMicrofacetMaterial
     CameraDesc camera; // the scene's own: where the window's camera starts and resets to
+    std::uint64_t objects = 0; // primitives and lights: the memory estimate's (Render/MemoryBudget.h)
 };
 
 class RenderJob

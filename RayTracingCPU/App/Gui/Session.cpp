@@ -81,6 +81,12 @@ bool Session::tryImage(const RenderRequest& candidate)
     try
     {
         candidate.settings.validate();
+        // The command line's memory check, where the scene is known (a new scene is checked by its build).
+        const RenderSettings& s = candidate.settings;
+        if (const std::optional<SceneSummary> summary = m_job.sceneSummary(candidate.scene.id))
+            checkMemory(renderBytes(s, summary->objects),
+                        fmt::format("a {}x{} render of {}", s.width, s.height(), candidate.scene.id),
+                        availableMemoryBytes());
     }
     catch (const Error& e)
     {
@@ -89,6 +95,12 @@ bool Session::tryImage(const RenderRequest& candidate)
     }
     m_image = candidate;
     return true;
+}
+
+std::optional<std::uint64_t> Session::memoryEstimate() const
+{
+    const std::optional<SceneSummary> summary = m_job.sceneSummary(m_image.scene.id);
+    return summary ? std::optional(renderBytes(m_image.settings, summary->objects)) : std::nullopt;
 }
 
 bool Session::setScene(const std::string& idOrPath)
@@ -514,6 +526,8 @@ nlohmann::json Session::stateJson() const
     panel["engine"] = rt::toString(m_engine);
     panel["loop"] = m_loop;
     panel["heatmap"] = m_heatmap;
+    const std::optional<std::uint64_t> memory = memoryEstimate();
+    panel["memory_bytes"] = memory ? nlohmann::json(*memory) : nlohmann::json();
     nlohmann::json image = nullptr;
     if (m_preview)
         image = {{"settings", toJson(m_preview->request.image)},

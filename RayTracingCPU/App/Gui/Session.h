@@ -66,6 +66,9 @@ public:
     bool applyCamera(const CameraAction& action);
     /// The vertical field of view, held to [kMinFov, kMaxFov]; false before the scene is built.
     bool setFov(float degrees);
+    /// The host memory the panel's render needs, as the command line estimates it (Render/MemoryBudget.h); none
+    /// before the scene is built. A setting whose render would not fit is refused, naming the figures.
+    std::optional<std::uint64_t> memoryEstimate() const;
     /// WASD's speed in world units per second (movementSpeed of the scene's camera); 0 before it is built.
     float cameraSpeed() const;
 

@@ -10,6 +10,7 @@
 #include "App/Gui/Theme.h"
 #include "Cli/ActionGrammar.h"
 #include "Gui/SettingWidget.h"
+#include "Render/MemoryBudget.h"
 #include "Scenes/Catalogue.h"
 
 namespace rt::gui
@@ -116,7 +117,12 @@ void SettingsPanel::drawRenderingParameters(Session& session)
     if (ImGui::InputFloat("Aspect ratio", &aspect, 0.0f, 0.0f, "%.4f", kApplyOnEnter))
         session.setSetting(setting("aspect"), fmt::format("{}", aspect));
     integerField(session, setting("width"), s.width, 16, 128);
-    ImGui::TextDisabled("%d x %d pixels", s.width, s.height());
+    if (const std::optional<std::uint64_t> bytes = session.memoryEstimate())
+        ImGui::TextDisabled("%d x %d pixels, about %s", s.width, s.height(), describeBytes(*bytes).c_str());
+    else
+        ImGui::TextDisabled("%d x %d pixels", s.width, s.height());
+    tooltip("the host memory the render needs, as the command line estimates it: a size that would not fit is "
+            "refused");
     for (const auto& [label, value] : {std::pair{"1:1", 1.0f}, {"4:3", 4.0f / 3.0f}, {"16:9", 16.0f / 9.0f}})
     {
         ImGui::SameLine();

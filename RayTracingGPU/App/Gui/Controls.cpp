@@ -10,6 +10,7 @@
 #include "Scene/CameraMoves.h"
 #include "Cli/ActionGrammar.h"
 #include "Error.h"
+#include "Render/MemoryBudget.h"
 #include "SceneFile/SceneFile.h"
 #include "Scenes/Catalogue.h"
 
@@ -88,6 +89,18 @@ bool Controls::setSetting(const Setting& setting, std::string_view value)
     if (!setting.assign(setting, changed, value))
     {
         m_state->message = setting.refusal(value);
+        spdlog::warn("{}", m_state->message);
+        return false;
+    }
+    try // the command line's memory check: a size (or restir-di's frame) that would not fit is refused
+    {
+        checkMemory(renderBytes(changed, m_state->sceneObjects),
+                    fmt::format("a {}x{} render of {}", changed.width, changed.height(), m_state->image.request.scene.id),
+                    availableMemoryBytes());
+    }
+    catch (const Error& e)
+    {
+        m_state->message = e.what();
         spdlog::warn("{}", m_state->message);
         return false;
     }

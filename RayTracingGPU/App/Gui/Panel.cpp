@@ -6,12 +6,15 @@
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
+#include <spdlog/fmt/fmt.h>
 
 #include "Scene/CameraMoves.h"
 #include "Cli/ActionGrammar.h"
 #include "Gui/SettingWidget.h"
 #include "Error.h"
 #include "Image/ImageIO.h"
+#include "Render/MemoryBudget.h"
+#include "Render/SettingsTable.h"
 #include "Scenes/Catalogue.h"
 #include "Shared/HeatmapPalette.h"
 
@@ -86,6 +89,28 @@ void sceneSection(Controls& controls, const WindowState& state, const PanelInfo&
             ImGui::TextWrapped("%s", error->c_str());
             ImGui::PopStyleColor();
         }
+}
+
+/// The image's size (it keeps it whatever the window's: letterboxed) and the host memory its render needs.
+void imageSection(Controls& controls, const WindowState& state)
+{
+    const RenderSettings& s = state.image.request.settings;
+    if (int width = s.width; ImGui::InputInt("Width", &width, 16, 128, ImGuiInputTextFlags_EnterReturnsTrue))
+        controls.setSetting(setting("width"), std::to_string(width));
+    if (float aspect = s.aspect;
+        ImGui::InputFloat("Aspect", &aspect, 0.0f, 0.0f, "%.4f", ImGuiInputTextFlags_EnterReturnsTrue))
+        controls.setSetting(setting("aspect"), fmt::format("{}", aspect));
+    for (const auto& [label, value] : {std::pair{"1:1", 1.0f}, {"4:3", 4.0f / 3.0f}, {"16:9", 16.0f / 9.0f}})
+    {
+        if (ImGui::SmallButton(label))
+            controls.setSetting(setting("aspect"), fmt::format("{}", value));
+        ImGui::SameLine();
+    }
+    ImGui::TextDisabled("%d x %d, about %s", s.width, s.height(),
+                        describeBytes(renderBytes(s, state.sceneObjects)).c_str());
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the host memory the render needs, as the command line estimates it: a size that would not "
+                          "fit is refused");
 }
 
 void rayTracingSection(Controls& controls, const WindowState& state)
@@ -218,6 +243,8 @@ PixelRect drawPanel(Controls& controls, const WindowState& state, const PanelInf
     }
     if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen))
         sceneSection(controls, state, info, panel);
+    if (ImGui::CollapsingHeader("Image", ImGuiTreeNodeFlags_DefaultOpen))
+        imageSection(controls, state);
     if (ImGui::CollapsingHeader("Ray tracing", ImGuiTreeNodeFlags_DefaultOpen))
         rayTracingSection(controls, state);
     if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen))

@@ -153,6 +153,7 @@ private:
         prepareImages(m_state.image.extent());
         m_state.image.request.scene.id = scene.id;
         m_state.sceneCamera = scene.camera;
+        m_state.sceneObjects = scene.primitiveCount() + scene.lights.size();
         m_state.image.camera = scene.camera;
         m_state.cameraSpeed = movementSpeed(scene.camera);
         glfwSetWindowTitle(m_window.handle(), ("ray-tracing-gpu: " + scene.id).c_str());

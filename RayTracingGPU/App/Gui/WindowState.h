@@ -4,6 +4,7 @@
 // how fast the image converges or how the window looks.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -65,6 +66,7 @@ struct WindowState
     CameraDesc sceneCamera; // the scene's own camera: "Reset camera"
     float cameraSpeed = 1.0f; // world units per second of WASD (movementSpeed of sceneCamera)
     bool costAvailable = false; // the device has the shader clock: the heatmap can be turned on
+    std::uint64_t sceneObjects = 0; // primitives and lights of the scene shown: the memory estimate's
     std::vector<std::string> fonts{"ImGui default"}; // the panel's fonts (ImGuiLayer: those installed)
     std::optional<std::string> sceneRequest; // to be built, then shown
     std::optional<std::filesystem::path> saveRequest; // PNG path; the PFM goes beside it

@@ -337,6 +337,27 @@ TEST(GpuWindow, AccumulatedImageMatchesTheSettingsShown)
     EXPECT_LE(largestDifference(window, reference), 1e-5f);
 }
 
+TEST(GpuWindow, WidthAndAspectActionsRenderTheHeadlessImageOfThatSize)
+{
+    // Issue 38: the GPU window's image size is set as the CPU window's (the shared width= and aspect= actions, the
+    // panel's Image section); the traced image is reallocated, and the window's image is the headless render of
+    // that size, bit for bit.
+    const ::rt::test::ScratchDir dir;
+    RT_RUN_WINDOW(run, "--width 64 --validation --scene cornell-box-lights --spp 4 --seed 5 --frames 1 "
+                       "--actions 'frames=2;width=80;aspect=2;frames=8;save=" +
+                           (dir / "window.png").string() + "'");
+    EXPECT_NE(run.output.find("(4 spp)"), std::string::npos) << run.output;
+    const AppRun headless = runApp("--headless --quiet --scene cornell-box-lights --width 80 --aspect 2 --spp 4 "
+                                   "--seed 5 --sampling sobol --hdr '" + (dir / "headless.pfm").string() + "'");
+    ASSERT_EQ(headless.status, 0) << headless.output;
+    const Image window = readPfm(dir / "window.pfm");
+    const Image reference = readPfm(dir / "headless.pfm");
+    ASSERT_EQ(window.width(), 80);
+    ASSERT_EQ(window.height(), 40);
+    ASSERT_EQ(reference.width(), 80);
+    EXPECT_LE(largestDifference(window, reference), 1e-5f);
+}
+
 TEST(GpuWindow, RestirDiAccumulatesTheHeadlessImage)
 {
     // The panel's estimator switched to restir-di (issue 36): the window runs its passes per sample with a
