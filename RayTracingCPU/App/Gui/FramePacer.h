@@ -12,15 +12,10 @@
 #include <chrono>
 #include <cstdint>
 
+#include "Gui/WindowRedraws.h"
+
 namespace rt::gui
 {
-/// Frames the window drew while a render ran: their drawing took CPU time from it.
-struct WindowRedraws
-{
-    int total = 0;
-    int onInput = 0; // drawn at once for a person's input, beyond the pacer's
-};
-
 class FramePacer
 {
 public:

@@ -13,17 +13,17 @@
 #include "App/Gui/CameraInput.h"
 #include "App/Gui/FramePacer.h"
 #include "App/Gui/ImageView.h"
+#include "App/Gui/GlWindow.h"
 #include "App/Gui/PaneLayout.h"
-#include "App/Gui/PlotWindow.h"
 #include "App/Gui/RenderJob.h"
 #include "App/Gui/Screenshot.h"
 #include "App/Gui/Session.h"
 #include "App/Gui/SettingsPanel.h"
 #include "App/Gui/Theme.h"
-#include "App/Gui/TimingsWindow.h"
-#include "App/Gui/GlWindow.h"
 #include "Compare/ReferenceCache.h"
 #include "Error.h"
+#include "Gui/PlotWindow.h"
+#include "Gui/TimingsWindow.h"
 #include "IO/AtomicFile.h"
 
 namespace rt::gui
@@ -205,14 +205,24 @@ private:
         ImGui::SetNextWindowSize(ImVec2(panes.timings.width, panes.timings.height));
         bool latestTimingVisible = false;
         if (ImGui::Begin("Timings of this session: every engine side by side", nullptr, kPaneFlags))
-            latestTimingVisible = drawTimings(m_session);
+        {
+            const TimingsDrawn timings = drawTimings(m_session.timings());
+            latestTimingVisible = timings.latestVisible;
+            if (timings.clearClicked)
+                m_session.clearTimings();
+        }
         ImGui::End();
 
         ImGui::SetNextWindowPos(ImVec2(panes.plot.x, panes.plot.y));
         ImGui::SetNextWindowSize(ImVec2(panes.plot.width, panes.plot.height));
         nlohmann::json plot;
         if (ImGui::Begin("Convergence: relMSE against time", nullptr, kPaneFlags | ImGuiWindowFlags_NoScrollbar))
-            plot = drawConvergencePlot(m_session);
+        {
+            PlotDrawn drawn = drawConvergencePlot(m_session.plot(), m_session.image(), m_session.suggestedPlotName());
+            plot = std::move(drawn.state);
+            if (drawn.saveClicked)
+                m_session.savePlot(m_session.suggestedPlotName());
+        }
         ImGui::End();
 
         // Where things are, in framebuffer pixels (what a screenshot holds): tests crop the panes with it.

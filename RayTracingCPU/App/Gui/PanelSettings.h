@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "Gui/EngineLabel.h"
 #include "Render/RenderRequest.h"
 
 namespace rt::gui
@@ -18,7 +19,4 @@ struct DisplaySettings
 
     bool operator==(const DisplaySettings&) const = default;
 };
-
-/// "single core", "multi core", "GPU": the engine names the panel and the timings table show.
-const char* engineLabel(EngineKind engine);
 } // namespace rt::gui

@@ -22,7 +22,7 @@
 #include "App/Gui/FramePacer.h"
 #include "App/Gui/GpuStartup.h"
 #include "App/Gui/PanelSettings.h"
-#include "App/Gui/ReferenceTask.h"
+#include "Gui/ReferenceTask.h"
 #include "Compare/AutoStrategy.h"
 #include "Engine/CpuEngine.h"
 #include "Render/RenderControl.h"

@@ -12,10 +12,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "App/Gui/ConvergencePlot.h"
+#include "Gui/ConvergencePlot.h"
 #include "App/Gui/PanelSettings.h"
 #include "App/Gui/RenderJob.h"
-#include "App/Gui/TimingsTable.h"
+#include "Gui/TimingsTable.h"
 #include "Cli/ActionGrammar.h"
 #include "Render/SettingsTable.h"
 #include "SceneFile/SceneFileWatch.h"

@@ -4,8 +4,8 @@
 // and measures each against its own reference.
 #include <gtest/gtest.h>
 
-#include "App/Gui/ConvergencePlot.h"
-#include "App/Gui/TimingsTable.h"
+#include "Gui/ConvergencePlot.h"
+#include "Gui/TimingsTable.h"
 #include "Image/Metrics.h"
 
 namespace rt::gui

@@ -114,7 +114,7 @@ def settled(state_path):
     if not image or not image["complete"]:
         fail(f"the image on screen is not a finished render: {image}")
     if not state["image_matches_panel"] or image["settings"] != {k: v for k, v in state["panel"].items()
-                                                              if k not in ("engine", "loop", "heatmap")}:
+                                                              if k not in ("engine", "loop", "heatmap", "memory_bytes")}:
         fail(f"the image on screen was rendered with {image['settings']}, the panel shows {state['panel']}")
     print(f"settled ok: {image['settings']['scene']} depth {image['settings']['depth']} on {image['engine']}")
 

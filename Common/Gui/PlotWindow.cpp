@@ -1,4 +1,4 @@
-#include "App/Gui/PlotWindow.h"
+#include "Gui/PlotWindow.h"
 
 #include <algorithm>
 #include <array>
@@ -7,6 +7,8 @@
 
 #include <imgui.h>
 #include <spdlog/fmt/fmt.h>
+
+#include "Gui/EngineLabel.h"
 
 namespace rt::gui
 {
@@ -80,9 +82,10 @@ struct DrawnPoint
 };
 } // namespace
 
-nlohmann::json drawConvergencePlot(Session& session)
+PlotDrawn drawConvergencePlot(const ConvergencePlot& plot, const RenderRequest& work, const std::string& saveName)
 {
-    const std::vector<const PlotLine*> lines = session.plot().linesOf(session.image());
+    PlotDrawn result;
+    const std::vector<const PlotLine*> lines = plot.linesOf(work);
     const std::vector<std::string> labels = shortLabels(lines);
     std::size_t waiting = 0;
     LogRange x, y;
@@ -97,14 +100,13 @@ nlohmann::json drawConvergencePlot(Session& session)
             x.add(p.seconds);
             y.add(p.error->relMse);
         }
-    nlohmann::json drawn = {{"x_label", kXLabel}, {"y_label", kYLabel}, {"lines", nlohmann::json::array()},
-                            {"waiting", waiting}};
+    nlohmann::json& drawn = result.state;
+    drawn = {{"x_label", kXLabel}, {"y_label", kYLabel}, {"lines", nlohmann::json::array()}, {"waiting", waiting}};
 
-    if (ImGui::SmallButton("Save"))
-        session.savePlot(session.suggestedPlotName());
+    result.saveClicked = ImGui::SmallButton("Save");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("write %s (the figure, by plot_convergence.py) and its points as CSV beside it",
-                          session.suggestedPlotName().c_str());
+                          saveName.c_str());
     ImGui::SameLine();
     if (waiting > 0)
         ImGui::TextDisabled("%zu point%s wait%s for a reference", waiting, waiting == 1 ? "" : "s",
@@ -115,7 +117,7 @@ nlohmann::json drawConvergencePlot(Session& session)
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 size = ImGui::GetContentRegionAvail();
     if (size.x < 40.0f || size.y < 40.0f)
-        return drawn;
+        return result;
     ImGui::InvisibleButton("plot", size);
     const bool hovered = ImGui::IsItemHovered();
     ImDrawList& draw = *ImGui::GetWindowDrawList();
@@ -136,7 +138,7 @@ nlohmann::json drawConvergencePlot(Session& session)
     {
         const char* empty = "no relMSE yet: a reference renders when the window is idle";
         draw.AddText(ImVec2(left + font * 0.5f, 0.5f * (top + bottom) - font * 0.5f), faint, empty);
-        return drawn;
+        return result;
     }
     x.pad();
     y.pad();
@@ -226,6 +228,6 @@ nlohmann::json drawConvergencePlot(Session& session)
                               p.reference.spp, p.referenceRelMse);
         }
     }
-    return drawn;
+    return result;
 }
 } // namespace rt::gui

@@ -1,7 +1,7 @@
 // Every render that ran to the end in this run of the app, grouped by the work it did (scene, image size,
 // samples, depth, estimator, sampling, light mode) with one column per engine, so single core, multi core
 // and the GPU sit side by side for the same work. Cancelled renders are not timings and never enter it. A
-// timing taken while the window redrew for a person's input (FramePacer.h) is marked: that drawing competed
+// timing taken while the window redrew for a person's input (WindowRedraws.h) is marked: that drawing competed
 // with the render for the CPU. Each row's error is measured against a reference of its work
 // (ReferenceTask.h), as --compare measures it: relMSE (Image/Metrics.h, the reference's own noise included) and
 // the efficiency 1 / (relMSE x render time).
@@ -16,9 +16,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "App/Gui/FramePacer.h"
-#include "App/Gui/PanelSettings.h"
-#include "App/Gui/ReferenceTask.h"
+#include "Gui/ReferenceTask.h"
+#include "Gui/WindowRedraws.h"
 #include "Image/Image.h"
 #include "Render/RenderRequest.h"
 #include "Render/RenderStats.h"

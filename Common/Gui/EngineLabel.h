@@ -1,8 +1,12 @@
-#include "App/Gui/PanelSettings.h"
+// The engines' names as both windows' panels, timings tables and plots show them.
+#pragma once
+
+#include "Render/RenderSettings.h"
 
 namespace rt::gui
 {
-const char* engineLabel(EngineKind engine)
+/// "single core", "multi core", "GPU".
+inline const char* engineLabel(EngineKind engine)
 {
     switch (engine)
     {

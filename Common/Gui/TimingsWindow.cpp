@@ -1,4 +1,4 @@
-#include "App/Gui/TimingsWindow.h"
+#include "Gui/TimingsWindow.h"
 
 #include <cstdint>
 #include <string>
@@ -6,6 +6,7 @@
 #include <imgui.h>
 #include <spdlog/fmt/fmt.h>
 
+#include "Gui/EngineLabel.h"
 #include "Image/Metrics.h"
 
 namespace rt::gui
@@ -74,11 +75,10 @@ void renderTimeTooltip(const EngineTiming& cell, bool disturbed)
 }
 } // namespace
 
-bool drawTimings(Session& session)
+TimingsDrawn drawTimings(const TimingsTable& table)
 {
-    const TimingsTable& table = session.timings();
-    if (ImGui::SmallButton("Clear"))
-        session.clearTimings();
+    TimingsDrawn drawn;
+    drawn.clearClicked = ImGui::SmallButton("Clear");
     ImGui::SameLine();
     ImGui::TextDisabled("render: tracing alone (hover for the best of n; * the window redrew for input during it); "
                         "build and compile: the setup before it; relMSE against a reference at 4x the spp");
@@ -88,9 +88,9 @@ bool drawTimings(Session& session)
     const std::vector<const Setting*> columns = timingColumns();
     // Scene and size, a line per engine (engine, render, Mpaths/s, relMSE, efficiency, build, compile, vs single),
     // then the settings: the times stay in view in a narrow pane.
+    drawn.latestVisible = table.rows().empty();
     if (!ImGui::BeginTable("timings", int(2 + columns.size() + 8), flags))
-        return table.rows().empty();
-    bool latestVisible = table.rows().empty();
+        return drawn;
     ImGui::TableSetupScrollFreeze(1, 1);
     ImGui::TableSetupColumn("Scene");
     ImGui::TableSetupColumn("Size");
@@ -144,7 +144,7 @@ bool drawTimings(Session& session)
             if (index == table.latestRow())
             {
                 const ImDrawList& draw = *ImGui::GetWindowDrawList();
-                latestVisible = ImGui::GetItemRectMin().y >= draw.GetClipRectMin().y &&
+                drawn.latestVisible = ImGui::GetItemRectMin().y >= draw.GetClipRectMin().y &&
                                 ImGui::GetItemRectMax().y <= draw.GetClipRectMax().y;
                 if (scrollToLatest)
                     ImGui::SetScrollHereY(1.0f);
@@ -180,6 +180,6 @@ bool drawTimings(Session& session)
         }
     }
     ImGui::EndTable();
-    return latestVisible;
+    return drawn;
 }
 } // namespace rt::gui

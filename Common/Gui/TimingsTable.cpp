@@ -1,4 +1,4 @@
-#include "App/Gui/TimingsTable.h"
+#include "Gui/TimingsTable.h"
 
 #include <algorithm>
 

@@ -15,9 +15,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "App/Gui/ReferenceTask.h"
-#include "App/Gui/TimingsTable.h"
 #include "Compare/ConvergenceCsv.h"
+#include "Gui/ReferenceTask.h"
+#include "Gui/TimingsTable.h"
 #include "Image/Image.h"
 #include "Image/Metrics.h"
 

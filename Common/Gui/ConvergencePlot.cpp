@@ -1,9 +1,9 @@
-#include "App/Gui/ConvergencePlot.h"
+#include "Gui/ConvergencePlot.h"
 
 #include <algorithm>
 
-#include "App/Gui/PanelSettings.h"
 #include "Compare/ReferenceRequest.h"
+#include "Gui/EngineLabel.h"
 #include "Image/Metrics.h"
 #include "Render/SettingsTable.h"
 
