@@ -173,6 +173,7 @@ std::vector<ActionSpec> sharedActionSpecs(const std::string& sppMeaning, long lo
         settingActionSpec(setting("aspect")),
         settingActionSpec(setting("seed")),
         settingActionSpec(setting("depth")),
+        settingActionSpec(setting("sampling")),
         settingActionSpec(setting("estimator")),
         settingActionSpec(setting("light-sampler")),
         settingActionSpec(setting("light-selection")),

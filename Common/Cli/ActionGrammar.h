@@ -59,7 +59,7 @@ std::vector<ScriptedAction> parseActionScript(std::string_view script, const std
 std::string actionScriptHelp(const std::vector<ActionSpec>& specs);
 
 /// The actions both windows have: scene=ID|FILE (a catalogue id or an existing scene file), fresnel=NAME,
-/// roughness-scale=X, spp=N, width=N, aspect=X, seed=N, depth=N, estimator=NAME, pdf=on|off, russian-roulette=on|off|sqrt, unidirectional-light=on|off,
+/// roughness-scale=X, spp=N, width=N, aspect=X, seed=N, depth=N, sampling=NAME, estimator=NAME, pdf=on|off, russian-roulette=on|off|sqrt, unidirectional-light=on|off,
 /// fov=DEGREES, camera=MOVE:AMOUNT|reset, resize=WxH, save=FILE.png, frames=N (let N frames pass), sleep=SECONDS (let that much time pass),
 /// theme=dark|light, font-size=PIXELS. `sppMeaning` says what spp means in the window (the render's samples per pixel, or
 /// where accumulation stops).

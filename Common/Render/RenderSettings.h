@@ -117,11 +117,14 @@ struct EnumNames<LightSelection>
 };
 
 /// The pixel sampling of a progressive render (the GPU window's passes of one or a few samples): Sobol's points,
-/// indexed by the sample whatever the passes, stay; anything else becomes random jitter per pass (accumulate), as
-/// stratification needs the whole count up front.
-constexpr PixelSampling progressiveSampling(PixelSampling sampling)
+/// indexed by the sample whatever the passes, stay; so do stratified samples when the passes stop at the settings'
+/// spp (`countKnown`: the strata are counted from it, and sample s lies in stratum s); anything else becomes random
+/// jitter per pass (accumulate, the same numbers as random).
+constexpr PixelSampling progressiveSampling(PixelSampling sampling, bool countKnown = false)
 {
-    return sampling == PixelSampling::Sobol ? PixelSampling::Sobol : PixelSampling::Accumulate;
+    if (sampling == PixelSampling::Sobol || (sampling == PixelSampling::Stratified && countKnown))
+        return sampling;
+    return PixelSampling::Accumulate;
 }
 
 /// The estimator's word, "restir-di-biased" for restir-di's biased combination: what every output that names a

@@ -98,11 +98,12 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
     const rt::RenderSettings& settings = job.request.settings;
     rt::gpu::gui::ImageSettings& image = w.initial.image;
     image.request = job.request;
-    // The window traces progressively: random jitter per pass, or Sobol's points (indexed by the sample).
-    if (settings.sampling == rt::PixelSampling::Stratified)
-        spdlog::warn("the window accumulates random or Sobol samples progressively; stratified sampling is for "
-                     "--headless");
-    image.request.settings.sampling = rt::progressiveSampling(settings.sampling);
+    // The window traces progressively: random jitter per pass, Sobol's points (indexed by the sample), or
+    // stratified samples up to the spp where it stops (--spp).
+    if (settings.sampling == rt::PixelSampling::Stratified && !options.given("spp"))
+        spdlog::warn("stratified sampling needs the spp where the window stops (--spp N): it accumulates random "
+                     "samples instead");
+    image.request.settings.sampling = rt::progressiveSampling(settings.sampling, options.given("spp").has_value());
     image.camera = job.scene.camera;
     image.rayTracing = onOff(flags.rayTracing, "--raytracing");
     image.accumulate = onOff(flags.accumulate, "--accumulate");

@@ -150,7 +150,8 @@ void ProgressiveFrame::recordClear(VkCommandBuffer cmd)
 shader::RenderUniforms ProgressiveFrame::uniformsOf(const FrameRequest& request) const
 {
     RenderSettings settings = request.settings;
-    settings.sampling = progressiveSampling(settings.sampling);
+    // A stratified request stops at its spp (the window asks for it only then: WindowApp's requestOf).
+    settings.sampling = progressiveSampling(settings.sampling, true);
     return m_engine->tracer().uniforms(request.camera, settings, extent());
 }
 

@@ -20,7 +20,6 @@ const std::vector<ActionSpec>& specs()
         sharedActionSpecs("samples per pixel of the render", 1),
         {
             {"count", ActionValue::Integer, "N", "white-spheres' sphere count (-1: the scene's)", -1},
-            settingActionSpec(setting("sampling")),
             {"loop", ActionValue::OnOff, "on|off", "loop rendering: render again with the next seed and average"},
             {"heatmap", ActionValue::OnOff, "on|off",
              "show each pixel's cost (renders again, timing every pixel) instead of the image"},

@@ -130,17 +130,16 @@ void rayTracingSection(Controls& controls, const WindowState& state)
                           "spp; 0: never");
     if (int depth = image.request.settings.depth; ImGui::SliderInt("Depth", &depth, 1, 100))
         controls.setDepth(depth);
-    // The choices and switches of the settings table but the pixel sampling (the window accumulates random or
-    // Sobol samples: the checkbox below).
+    // The choices and switches of the settings table, pixel sampling included, as the CPU window and the CLI name
+    // them.
     for (const Setting& setting : settingsTable())
-        if (setting.name != "sampling")
-            if (const auto picked = rt::gui::settingWidget(setting, image.request.settings))
-                controls.setSetting(setting, *picked);
-    if (bool on = image.request.settings.sampling == PixelSampling::Sobol; ImGui::Checkbox("Sobol samples", &on))
-        controls.setSobol(on);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Every 2D draw of a sample (pixel, light point, BSDF direction) an Owen-scrambled Sobol "
-                          "point over the pixel's samples (Burley 2020); off: independent random numbers");
+        if (const auto picked = rt::gui::settingWidget(setting, image.request.settings))
+            controls.setSetting(setting, *picked);
+    const RenderSettings& s = image.request.settings;
+    if (s.sampling == PixelSampling::Stratified && !(display.stopAtSpp && image.accumulate))
+        ImGui::TextDisabled("stratified needs Stop at spp (and accumulation): random samples until then");
+    else if (s.sampling == PixelSampling::Stratified && s.trueSpp() != s.spp)
+        ImGui::TextDisabled("stratified: %d x %d strata, stops at %d spp", s.strata(), s.strata(), s.trueSpp());
 }
 
 void cameraSection(Controls& controls, const WindowState& state)

@@ -121,14 +121,17 @@ private:
     bool tracing() const
     {
         return m_state.image.rayTracing && (!m_state.display.stopAtSpp || !m_state.image.accumulate ||
-                                            m_accumulatedSpp < std::uint32_t(m_state.image.request.settings.spp));
+                                            m_accumulatedSpp < std::uint32_t(m_state.image.request.settings.trueSpp()));
     }
 
-    /// What a frame of `image` traces.
-    static FrameRequest requestOf(const ImageSettings& image)
+    /// What a frame of `image` traces. Stratified samples only where the passes accumulate up to the settings'
+    /// spp, the strata's count; otherwise random jitter per pass.
+    FrameRequest requestOf(const ImageSettings& image) const
     {
         FrameRequest request;
         request.settings = image.request.settings;
+        request.settings.sampling = progressiveSampling(request.settings.sampling,
+                                                        m_state.display.stopAtSpp && image.accumulate);
         request.camera = image.camera;
         request.cost = image.heatmap;
         return request;
@@ -140,8 +143,10 @@ private:
     bool accumulationFits() const
     {
         ImageSettings now = m_state.image;
-        now.request.settings.spp = m_traced.request.settings.spp;
-        return now == m_traced &&
+        // Stratified samples of another spp lie in other strata: another image.
+        if (requestOf(now).settings.sampling != PixelSampling::Stratified)
+            now.request.settings.spp = m_traced.request.settings.spp;
+        return now == m_traced && requestOf(m_state.image).settings.sampling == requestOf(m_traced).settings.sampling &&
                m_renderer.integratorFor(requestOf(m_state.image)) == m_renderer.integratorFor(requestOf(m_traced));
     }
 
@@ -418,7 +423,7 @@ private:
         auto count = static_cast<std::uint32_t>(m_state.display.samplesPerFrame);
         if (m_state.display.stopAtSpp && m_state.image.accumulate)
         {
-            const auto target = static_cast<std::uint32_t>(m_state.image.request.settings.spp);
+            const auto target = static_cast<std::uint32_t>(m_state.image.request.settings.trueSpp());
             count = std::min(count, target > m_accumulatedSpp ? target - m_accumulatedSpp : 0u);
         }
         m_renderer.recordSamples(cmd, frame.slot, requestOf(m_state.image), m_nextSample, count);

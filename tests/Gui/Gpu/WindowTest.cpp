@@ -23,6 +23,7 @@
 #include "App/Gui/WindowLayout.h"
 #include "Image/ImageIO.h"
 #include "Support/AppProcess.h"
+#include "Support/FileContents.h"
 #include "Support/ScratchDir.h"
 #include "Support/SkipOrFail.h"
 
@@ -356,6 +357,33 @@ TEST(GpuWindow, WidthAndAspectActionsRenderTheHeadlessImageOfThatSize)
     ASSERT_EQ(window.height(), 40);
     ASSERT_EQ(reference.width(), 80);
     EXPECT_LE(largestDifference(window, reference), 1e-5f);
+}
+
+TEST(GpuWindow, StratifiedSamplingStopsAtTheSquareAndRendersTheHeadlessImage)
+{
+    // Issue 38: every pixel sampling of the CLI in the GPU window. Stratified samples need the count up front:
+    // the window stops at the square below --spp (10: 9 strata) and its image is the headless render's, bit for
+    // bit; switched to random by the shared sampling= action, it accumulates random samples again.
+    const ::rt::test::ScratchDir dir;
+    RT_RUN_WINDOW(run, "--width 48 --validation --scene cornell-box-lights --spp 10 --seed 4 --sampling stratified "
+                       "--frames 1 --state-json '" + (dir / "state.json").string() +
+                           "' --actions 'frames=14;save=" + (dir / "window.png").string() + "'");
+    EXPECT_NE(run.output.find("(9 spp)"), std::string::npos) << run.output;
+    const AppRun headless = runApp("--headless --quiet --scene cornell-box-lights --width 48 --spp 10 --seed 4 "
+                                   "--sampling stratified --hdr '" + (dir / "headless.pfm").string() + "'");
+    ASSERT_EQ(headless.status, 0) << headless.output;
+    const Image window = readPfm(dir / "window.pfm");
+    const Image reference = readPfm(dir / "headless.pfm");
+    ASSERT_EQ(window.pixelCount(), reference.pixelCount());
+    EXPECT_LE(largestDifference(window, reference), 1e-5f);
+    const nlohmann::json state = nlohmann::json::parse(::rt::test::fileContents(dir / "state.json"));
+    EXPECT_EQ(state["accumulated_spp"], 9);
+
+    RT_RUN_WINDOW(random, "--width 48 --validation --scene cornell-box-lights --spp 10 --seed 4 --sampling stratified "
+                          "--frames 1 --state-json '" + (dir / "random.json").string() +
+                              "' --actions 'frames=3;sampling=random;frames=14'");
+    EXPECT_EQ(nlohmann::json::parse(::rt::test::fileContents(dir / "random.json"))["accumulated_spp"], 10)
+        << "random samples stop at the spp asked";
 }
 
 TEST(GpuWindow, RestirDiAccumulatesTheHeadlessImage)
