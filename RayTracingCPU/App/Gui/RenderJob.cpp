@@ -167,6 +167,7 @@ void RenderJob::workerLoop()
             lock.lock();
             m_control.reset();
             m_referenceRendering = false;
+            m_phase = JobPhase::Idle; // a reference on the GPU may have waited for its start (engineFor)
             if (m_wakeUi)
                 m_wakeUi();
             continue;

@@ -32,9 +32,17 @@ expected = [
     ("accumulate", 10, "area", "power", "off", "nee-mis"),
     ("accumulate", 10, "area", "power", "off", "mixture"),
 ]
-got = [tuple(r[k] for k in keys) for r in rows]
-assert got == expected, got
-errors = [r["rel_mse"] for r in rows]
+# A render between two actions of one step (sampling=stratified, then spp=10) may finish on a loaded machine
+# before the second applies: its row is extra, the expected rows must appear in order.
+everything = [tuple(r[k] for k in keys) for r in rows]
+picked, at = [], 0
+for want in expected:
+    while at < len(everything) and everything[at] != want:
+        at += 1
+    assert at < len(everything), (want, "missing from", everything)
+    picked.append(rows[at])
+got = [tuple(r[k] for k in keys) for r in picked]
+errors = [r["rel_mse"] for r in picked]
 assert all(e is not None and e > 0 for e in errors), errors
 assert len(set(errors)) == len(errors), ("two settings rendered the same image", errors)
 print("toggles ok: " + ", ".join(f"{'/'.join(str(v) for v in g)} {e:.3g}" for g, e in zip(got, errors)))
