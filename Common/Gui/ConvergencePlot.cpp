@@ -84,12 +84,15 @@ std::optional<ReferenceTask> ConvergencePlot::add(const RenderRequest& request, 
 
 void ConvergencePlot::attach(const FinishedReference& reference)
 {
-    if (!reference.image)
-        return; // the points stay unmeasured: the timings row says why
     for (PlotLine& line : m_lines)
         for (PlotPoint& point : line.points)
             if (point.unmeasured && point.reference == reference.task)
             {
+                if (!reference.image) // failed: the point stays off the plot, and waits no more
+                {
+                    point.unmeasured.reset();
+                    continue;
+                }
                 point.error = compareImages(*point.unmeasured, *reference.image);
                 point.referenceRelMse = reference.ownRelMse;
                 point.unmeasured.reset();

@@ -172,7 +172,8 @@ PlotDrawn drawConvergencePlot(const ConvergencePlot& plot, const RenderRequest& 
             continue;
         std::stable_sort(measured.begin(), measured.end(),
                          [](const PlotPoint* a, const PlotPoint* b) { return a->seconds < b->seconds; });
-        const ImU32 colour = kColours[l % kColours.size()];
+        // By the lines drawn, as plot_convergence.py numbers the lines of the saved CSV.
+        const ImU32 colour = kColours[drawn["lines"].size() % kColours.size()];
         std::vector<ImVec2> polyline;
         nlohmann::json json = nlohmann::json::array();
         for (const PlotPoint* p : measured)

@@ -40,6 +40,8 @@ namespace
 /// relMSE against the ready reference; the image waits in `cell` while it is not.
 void measure(EngineTiming& cell, const std::optional<RowReference>& reference)
 {
+    if (reference && reference->state == RowReference::State::Failed)
+        cell.unmeasured.reset(); // nothing will measure it
     if (!cell.unmeasured || !reference || reference->state != RowReference::State::Ready)
         return;
     cell.relMse = compareImages(*cell.unmeasured, *reference->image).relMse;
@@ -104,10 +106,15 @@ std::optional<ReferenceTask> TimingsTable::referenceWanted()
             best = row.engines[e]->mpathsPerSecond;
             fastest = e == std::size_t(EngineKind::Single) ? std::size_t(EngineKind::Multi) : e;
         }
-    ReferenceTask task{.base = m_latestRequest,
-                       .engine = EngineKind(fastest),
-                       .spp = compare::kDefaultReferenceFactor * row.key.settings.spp};
+    const long long spp = static_cast<long long>(compare::kDefaultReferenceFactor) * row.key.settings.spp;
+    ReferenceTask task{.base = m_latestRequest, .engine = EngineKind(fastest), .spp = int(std::min<long long>(spp, kMaxSpp))};
     row.reference = RowReference{.task = task};
+    if (spp > 2LL * kMaxSpp) // two halves of at most kMaxSpp each, as --compare refuses it
+    {
+        row.reference->state = RowReference::State::Failed;
+        row.reference->error = "its reference would pass two renders of the largest spp";
+        return std::nullopt;
+    }
     return task;
 }
 

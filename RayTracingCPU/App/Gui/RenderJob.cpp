@@ -83,7 +83,7 @@ void RenderJob::cancel()
 {
     std::lock_guard lock(m_mutex);
     m_pending.reset();
-    if (m_control)
+    if (m_control && !m_referenceRendering) // Cancel is for the person's render; a reference goes on
         m_control->requestCancel();
 }
 

@@ -15,7 +15,7 @@ trap 'rm -rf "$work"' EXIT
 export RT_REFERENCE_CACHE="$work/cache"
 fail() { echo "FAIL: $*"; exit 1; }
 
-actions="wait;spp=32;wait;estimator=mixture;spp=8;wait;spp=32;wait;loop=on;render;frames=30;loop=off;wait"
+actions="wait;spp=32;wait;estimator=mixture;spp=8;wait;spp=32;wait;loop=on;frames=30;loop=off;wait"
 actions+=";wait-reference;save-plot=$work/plot.png"
 for size in 1280x800 1920x1080; do
     status=0
