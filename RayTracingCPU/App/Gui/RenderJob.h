@@ -142,7 +142,7 @@ public:
     bool setLoop(bool loop);
 
     /// Queues a reference (ReferenceTask.h), rendered when no render waits or runs. References of the scene of
-    /// the latest render go first, newest first; those of other scenes wait until that scene is rendered again
+    /// the latest render go first, the fewest spp first (newest among equals); those of other scenes wait until that scene is rendered again
     /// (no scene is built again for a reference).
     void requestReference(const ReferenceTask& task);
     /// Drops the references not started yet.

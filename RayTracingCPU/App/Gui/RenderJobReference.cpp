@@ -46,11 +46,14 @@ bool RenderJob::referencesPending() const
 
 std::size_t RenderJob::nextReference() const
 {
-    // Newest first: the person looks at the latest render's row.
+    // The fewest samples first (the table's rows before a long loop's means at 4x its total spp), the newest
+    // among equals: the person looks at the latest render's row.
+    std::size_t best = m_references.size();
     for (std::size_t i = m_references.size(); i-- > 0;)
-        if (m_references[i].task.base.scene == m_currentScene)
-            return i;
-    return m_references.size();
+        if (m_references[i].task.base.scene == m_currentScene &&
+            (best == m_references.size() || m_references[i].task.spp < m_references[best].task.spp))
+            best = i;
+    return best;
 }
 
 void RenderJob::renderReference(QueuedReference queued, std::shared_ptr<RenderControl> control)
