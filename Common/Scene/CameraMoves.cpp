@@ -72,4 +72,16 @@ CameraDesc withFocusDistance(const CameraDesc& camera, float focusDistance)
 }
 
 float movementSpeed(const CameraDesc& sceneCamera) { return 0.25f * std::max(distanceToTarget(sceneCamera), 1e-3f); }
+vec3 keyMove(const MoveKeys& keys, float distance)
+{
+    const auto axis = [](bool plus, bool minus) { return float(plus) - float(minus); };
+    const vec3 direction(axis(keys.right, keys.left), axis(keys.up, keys.down), axis(keys.forward, keys.back));
+    if (direction == vec3(0.0f))
+        return vec3(0.0f);
+    if (keys.fast)
+        distance *= 4.0f;
+    if (keys.slow)
+        distance *= 0.25f;
+    return distance * direction;
+}
 } // namespace rt

@@ -41,4 +41,19 @@ CameraDesc withFocusDistance(const CameraDesc& camera, float focusDistance);
 /// WASD speed in world units per second: a quarter of the scene camera's distance to its target, so that
 /// a Cornell box (800 units away) and the books' spheres (13 units) both feel alike.
 float movementSpeed(const CameraDesc& sceneCamera);
+
+/// The windows' camera input, the same in both: a drag turns by kTurnDegreesPerPixel per screen pixel, a wheel
+/// step changes the field of view by kFovDegreesPerWheelStep.
+inline constexpr float kTurnDegreesPerPixel = 0.2f;
+inline constexpr float kFovDegreesPerWheelStep = 2.0f;
+
+/// The movement keys held in a frame: W/S forward and back, D/A right and left, E/Q up and down, Shift x4, Ctrl x1/4.
+struct MoveKeys
+{
+    bool forward = false, back = false, right = false, left = false, up = false, down = false;
+    bool fast = false, slow = false;
+};
+/// The offset in view axes (x right, y up, z forward) that `keys` move by in a frame whose normal-speed move is
+/// `distance` world units; zero when no movement key is held.
+vec3 keyMove(const MoveKeys& keys, float distance);
 } // namespace rt
