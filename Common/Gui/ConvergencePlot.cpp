@@ -26,6 +26,15 @@ std::vector<std::string> strategyWords(const RenderSettings& settings)
     return words;
 }
 
+/// "nee-mis projected bvh sobol sqrt": the strategy words, as the command line spells them.
+std::string strategyText(const RenderSettings& settings)
+{
+    std::string text;
+    for (const std::string& word : strategyWords(settings))
+        text += (text.empty() ? "" : " ") + word;
+    return text;
+}
+
 /// The strategy words in which `lines` differ, per line.
 std::vector<std::string> distinctWords(const std::vector<const PlotLine*>& lines)
 {
@@ -53,10 +62,7 @@ std::vector<std::string> shortLabels(const std::vector<const PlotLine*>& lines)
 
 std::string PlotLine::label() const
 {
-    std::string words;
-    for (const std::string& word : strategyWords(work.settings))
-        words += (words.empty() ? "" : " ") + word;
-    return std::string(engineLabel(engine)) + ": " + words;
+    return std::string(engineLabel(engine)) + ": " + strategyText(work.settings);
 }
 
 std::optional<ReferenceTask> ConvergencePlot::add(const RenderRequest& request, EngineKind engine,
@@ -143,9 +149,7 @@ std::vector<compare::ConvergenceRow> ConvergencePlot::csvRows(const std::vector<
     for (std::size_t l = 0; l < lines.size(); ++l)
     {
         const PlotLine* line = lines[l];
-        std::string strategy;
-        for (const std::string& word : strategyWords(line->work.settings))
-            strategy += (strategy.empty() ? "" : " ") + word;
+        const std::string strategy = strategyText(line->work.settings);
         for (const PlotPoint& p : line->points)
             if (p.error)
                 rows.push_back({.scene = line->work.scene.id,
