@@ -35,6 +35,9 @@ ProgressiveFrame::ProgressiveFrame(const GpuEngine& engine, std::uint32_t frameS
     for (std::uint32_t slot = 0; slot < frameSlots; ++slot)
         m_uniforms.emplace_back(device, sizeof(shader::RenderUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                 vk::MemoryUse::Upload);
+    if (device.properties().timestampValidBits > 0)
+        m_timestamps = vk::QueryPool(device, 2 * frameSlots);
+    m_slotTimed.assign(frameSlots, false);
     std::memset(m_counters.mapped(), 0, sizeof(shader::SampleCounters));
 }
 
@@ -169,6 +172,32 @@ GpuIntegrator ProgressiveFrame::integratorFor(const FrameRequest& request) const
     return integratorOf(uniformsOf(request), request.settings.spp);
 }
 
+bool ProgressiveFrame::preparePipeline(const FrameRequest& request) const
+{
+    if (request.cost)
+        return false;
+    const shader::RenderUniforms uniforms = uniformsOf(request);
+    const GpuIntegrator integrator = integratorOf(uniforms, request.settings.spp);
+    if (integrator == GpuIntegrator::Wavefront && !m_engine->tracer().wavefront())
+        return false; // made, and compiled, at its first launch
+    return m_engine->tracer().prepare(uniforms, integrator);
+}
+
+void ProgressiveFrame::warmUp(const FrameRequest& request)
+{
+    if (request.cost || request.settings.estimator == Estimator::RestirDi)
+        return;
+    const vk::Device& device = m_engine->context().device();
+    vkDeviceWaitIdle(device.Handle()); // slot 0's uniforms and the images are rewritten below
+    const shader::RenderUniforms uniforms = uniformsOf(request);
+    std::memcpy(m_uniforms.at(0).mapped(), &uniforms, sizeof(uniforms));
+    vk::submitAndWait(device, m_engine->context().commandPool(), [&](VkCommandBuffer cmd) {
+        recordClear(cmd); // the images' first layout, when they have none yet
+        m_engine->tracer().recordLaunch(cmd, {&m_sets.at(0).set, 1}, uniforms,
+                                        integratorOf(uniforms, request.settings.spp), 0, 1, VkExtent2D{1, 1});
+    });
+}
+
 void ProgressiveFrame::recordSamples(VkCommandBuffer cmd, std::uint32_t slot, const FrameRequest& request,
                                      std::uint32_t firstSample, std::uint32_t count)
 {
@@ -181,6 +210,14 @@ void ProgressiveFrame::recordSamples(VkCommandBuffer cmd, std::uint32_t slot, co
     // After the previous frame's display reads (write-after-read) and its samples or clears.
     vk::memoryBarrier(cmd, kImageStages, VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    // Both at the bottom of the pipe: the first is written once the work before (the previous frame's display
+    // pass included) has finished, so the interval holds these samples alone.
+    const bool timed = m_timestamps.Handle() != VK_NULL_HANDLE;
+    if (timed)
+    {
+        vkCmdResetQueryPool(cmd, m_timestamps.Handle(), 2 * slot, 2);
+        vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, m_timestamps.Handle(), 2 * slot);
+    }
     if (request.settings.estimator == Estimator::RestirDi)
     {
         ensureRestir();
@@ -205,6 +242,11 @@ void ProgressiveFrame::recordSamples(VkCommandBuffer cmd, std::uint32_t slot, co
     else
         m_engine->tracer().recordLaunch(cmd, {&m_sets.at(slot).set, 1}, uniforms,
                                         integratorOf(uniforms, request.settings.spp), firstSample, count, size);
+    if (timed)
+    {
+        vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, m_timestamps.Handle(), 2 * slot + 1);
+        m_slotTimed.at(slot) = true;
+    }
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
@@ -241,6 +283,14 @@ CostSummary ProgressiveFrame::takeCostSummary(std::uint32_t slot)
     const CostSummary summary = summarizeCost(*stats);
     std::memset(stats, 0, sizeof(*stats));
     return summary;
+}
+
+std::optional<double> ProgressiveFrame::takeTraceSeconds(std::uint32_t slot)
+{
+    if (slot >= m_slotTimed.size() || !m_slotTimed[slot])
+        return std::nullopt;
+    m_slotTimed[slot] = false;
+    return m_timestamps.secondsBetween(2 * slot, m_engine->context().device().properties().limits.timestampPeriod);
 }
 
 Image ProgressiveFrame::readImage() const

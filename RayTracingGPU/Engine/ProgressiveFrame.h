@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "Image/Image.h"
@@ -25,6 +26,7 @@
 #include "Vulkan/Buffer.h"
 #include "Vulkan/DescriptorPool.h"
 #include "Vulkan/Image.h"
+#include "Vulkan/QueryPool.h"
 
 namespace rt::gpu
 {
@@ -70,6 +72,17 @@ public:
     /// on the current scene would run (SceneTracer::integratorFor).
     GpuIntegrator integratorFor(const FrameRequest& request) const;
 
+    /// Compiles the pipeline the samples of `request` run on when it was not compiled before (SceneTracer::prepare),
+    /// so that a caller can time the compilation apart from the samples; recordSamples compiles it at its first
+    /// use otherwise. True when it compiled one; false for a request with the cost (the heatmap's own pipeline).
+    bool preparePipeline(const FrameRequest& request) const;
+
+    /// Traces one sample of `request` at one pixel and waits, the device idle before: a driver that finishes a
+    /// pipeline's compilation at its first launch (lavapipe: seconds) does it here rather than in the first timed
+    /// frame, as GpuEngine's beginFrame does. The accumulation image is left cleared but for that pixel: the
+    /// caller records a clear before its samples. restir-di's passes and the heatmap's pipeline are not warmed up.
+    void warmUp(const FrameRequest& request);
+
     /// Records the clearing of the accumulation and cost images: the next sample starts a new image.
     void recordClear(VkCommandBuffer cmd);
     /// Records `count` samples of `request` (indices from `firstSample` on) for frame `slot`, whose previous
@@ -83,6 +96,11 @@ public:
     /// The cost of `slot`'s last timed frame (zeros if it timed nothing), and zero counts for its next one.
     /// Call once `slot`'s previous frame has completed.
     CostSummary takeCostSummary(std::uint32_t slot);
+
+    /// The device seconds of `slot`'s last frame's samples (from the end of the work before them to the end of
+    /// theirs: GPU timestamps, as GpuEngine times a headless render's launches), once; nullopt when that frame
+    /// traced nothing or the queue has no timestamps. Call once `slot`'s previous frame has completed.
+    std::optional<double> takeTraceSeconds(std::uint32_t slot);
 
     /// The accumulated estimate (radiance sum / sample count per pixel), read back: submits and waits.
     Image readImage() const;
@@ -101,6 +119,8 @@ private:
 
     const GpuEngine* m_engine;
     std::vector<vk::Buffer> m_uniforms; // per slot
+    vk::QueryPool m_timestamps; // two per slot: before and after its samples; none without timestamps
+    std::vector<bool> m_slotTimed; // the slot's timestamps were written and not taken yet
     vk::Buffer m_counters; // NaN / Inf samples, shared: only atomics touch it
     vk::Buffer m_rayCounters; // RayCounters, bound but never counted in: the window's uniforms leave countRays 0
     vk::Image m_accumulation;

@@ -33,11 +33,6 @@ const std::vector<ActionSpec>& specs()
             {"defaults", ActionValue::None, "", "the scene's own spp, depth, width, aspect and light mode"},
             {"wait", ActionValue::None, "", "until no render runs (loop rendering: until one more finishes)"},
             {"running", ActionValue::None, "", "until a render is tracing, or none runs"},
-            {"save-plot", ActionValue::Text, "FILE.png",
-             "save the convergence plot of the panel's work: FILE.png (plot_convergence.py) and its points FILE.csv",
-             0, 1e30, [](const std::string& path) { return saveImagePathProblem(path).empty(); }},
-            {"wait-reference", ActionValue::None, "",
-             "until no render runs and the timings' references of the current scene are done (relMSE measured)"},
         });
     return all;
 }

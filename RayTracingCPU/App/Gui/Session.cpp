@@ -7,9 +7,9 @@
 
 #include "Cli/ActionGrammar.h"
 #include "Cli/HeadlessRun.h"
-#include "Compare/PythonScript.h"
 #include "IO/AtomicFile.h"
 #include "Error.h"
+#include "Gui/PlotFiles.h"
 #include "Image/Heatmap.h"
 #include "Image/ImageIO.h"
 #include "Render/MemoryBudget.h"
@@ -476,23 +476,16 @@ bool Session::savePlot(const std::filesystem::path& png)
 {
     try
     {
-        checkOutputPath(png.string(), "the plot", {".png"});
-        const std::vector<compare::ConvergenceRow> rows = ConvergencePlot::csvRows(m_plot.linesOf(m_image));
-        if (rows.empty())
+        const std::size_t points = savePlotFiles(m_plot, m_image, png);
+        if (points == 0)
         {
             note("no plot to save: no point of this work has its relMSE yet", true);
             return false;
         }
         std::filesystem::path csv = png;
-        csv.replace_extension(".csv");
-        writeAtomically(csv, [&](const std::filesystem::path& temporary) {
-            compare::ConvergenceCsv file(temporary);
-            for (const compare::ConvergenceRow& row : rows)
-                file.append(row);
-            return true;
-        });
-        compare::drawFigure(png, compare::scriptPath("plot_convergence.py"), {csv.string()});
-        note(fmt::format("saved the plot {} and its {} points {}", png.string(), rows.size(), csv.string()), false);
+        note(fmt::format("saved the plot {} and its {} points {}", png.string(), points,
+                         csv.replace_extension(".csv").string()),
+             false);
         return true;
     }
     catch (const std::exception& e)

@@ -43,7 +43,7 @@ std::vector<Action> parseActions(const std::string& script) { return parseAction
 bool applyAction(const Action& a, Controls& c)
 {
     const std::string& n = a.name;
-    if (n == "frames" || n == "sleep")
+    if (n == "frames" || n == "sleep" || n == "wait-reference")
         return false;
     if (n == "scene")
         c.selectScene(a.value);
@@ -69,6 +69,8 @@ bool applyAction(const Action& a, Controls& c)
         c.resize({a.size().first, a.size().second});
     else if (n == "save")
         c.save(a.value);
+    else if (n == "save-plot")
+        c.savePlot(a.value);
     else if (n == "theme")
         c.setDarkStyle(a.value == "dark");
     else if (n == "font-size")

@@ -165,5 +165,17 @@ bool Controls::save(const std::filesystem::path& png)
     m_state->saveRequest = png;
     return true;
 }
+
+bool Controls::savePlot(const std::filesystem::path& png)
+{
+    if (const std::string problem = saveImagePathProblem(png.string()); !problem.empty())
+    {
+        m_state->message = problem;
+        spdlog::error("{}", problem);
+        return false;
+    }
+    m_state->savePlotRequest = png;
+    return true;
+}
 void Controls::resize(Extent size) { m_state->resizeRequest = Extent{std::max(size.width, 0), std::max(size.height, 0)}; }
 } // namespace rt::gpu::gui

@@ -68,6 +68,9 @@ public:
     /// Asks for the accumulated image as PNG at `png` and PFM beside it (same name, .pfm). Returns false,
     /// with the reason in WindowState::message, for a name that does not end in .png.
     bool save(const std::filesystem::path& png);
+    /// Asks the frame loop to save the convergence plot of the image's work as `png` and its CSV (Gui/PlotFiles.h);
+    /// false (and the message) for a name that is not a .png.
+    bool savePlot(const std::filesystem::path& png);
     /// Asks for a window of `size` (0 x 0: minimised).
     void resize(Extent size);
 

@@ -20,10 +20,18 @@
 #include "App/Gui/VulkanWindow.h"
 #include "App/Gui/RasterPreview.h"
 #include "App/Gui/WindowLayout.h"
+#include "App/Gui/WindowReferences.h"
+#include "Compare/ReferenceCache.h"
 #include "Engine/ProgressiveFrame.h"
 #include "Error.h"
+#include "Gui/ConvergencePlot.h"
+#include "Gui/PlotFiles.h"
+#include "Gui/PlotWindow.h"
+#include "Gui/TimingsTable.h"
+#include "Gui/TimingsWindow.h"
 #include "IO/AtomicFile.h"
 #include "Image/ImageIO.h"
+#include "SceneFile/SceneFile.h"
 #include "SceneFile/SceneFileWatch.h"
 
 namespace rt::gpu::gui
@@ -33,6 +41,10 @@ namespace
 using Clock = std::chrono::steady_clock;
 
 constexpr double kIdleFrameSeconds = 1.0 / 60.0;
+
+constexpr ImGuiWindowFlags kPaneFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                        ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+                                        ImGuiWindowFlags_NoBringToFrontOnFocus;
 
 GpuEngineOptions engineOptions(const WindowOptions& options, const VulkanWindow& window)
 {
@@ -57,7 +69,8 @@ public:
           m_preview(m_engine.context().device(), m_engine.shaderDir(), m_presenter.renderPass()),
           m_display(m_engine.context().device(), m_engine.shaderDir(), m_presenter.renderPass()),
           m_imgui(m_engine.context(), window.handle(), m_presenter.renderPass(), kFramesInFlight),
-          m_state(options.initial), m_controls(m_state)
+          m_references(m_engine, kFramesInFlight, compare::defaultReferenceCacheDir()),
+          m_state(options.initial), m_controls(m_state), m_slotAccumulation(kFramesInFlight, 0)
     {
         m_panel.savePath = options.savePath;
         m_drawn.window = window.framebufferSize();
@@ -90,7 +103,7 @@ public:
         while (!m_window.closeRequested() && !m_done)
         {
             // Nothing to trace: redraw on input, or at most at kIdleFrameSeconds (the preview, the panel).
-            if (automated() || m_loading.valid() || tracing())
+            if (automated() || m_loading.valid() || tracing() || referencesToTrace())
                 m_window.pollEvents();
             else
                 m_window.waitEvents(kIdleFrameSeconds);
@@ -124,6 +137,16 @@ private:
                                             m_accumulatedSpp < std::uint32_t(m_state.image.request.settings.trueSpp()));
     }
 
+    /// The image has reached its stop and a reference waits for the device: the frames trace it.
+    bool referencesToTrace() const { return m_state.image.rayTracing && !tracing() && m_references.pending(); }
+
+    /// The accumulation is a timed render: it stops at the settings' spp, accumulates, and is not timed per
+    /// pixel (the heatmap's clock reads slow its samples).
+    bool timedRender() const
+    {
+        return m_state.display.stopAtSpp && m_state.image.accumulate && !m_state.image.heatmap;
+    }
+
     /// What a frame of `image` traces. Stratified samples only where the passes accumulate up to the settings'
     /// spp, the strata's count; otherwise random jitter per pass.
     FrameRequest requestOf(const ImageSettings& image) const
@@ -153,6 +176,7 @@ private:
     /// Puts `scene` on the device, in the preview and behind the renderer's descriptor sets; the device is idle.
     void showScene(const Scene& scene)
     {
+        m_references.drop(); // its descriptor sets name the old scene, and its tasks are of it
         m_engine.setScene(scene);
         m_preview.setScene(scene, m_engine.context().commandPool());
         prepareImages(m_state.image.extent());
@@ -240,10 +264,22 @@ private:
         }
     }
 
+    /// wait-reference's end: the image has reached its stop (or has none) and no reference is queued or rendering.
+    bool referencesDone() const
+    {
+        return (!m_state.display.stopAtSpp || !tracing()) && !m_references.pending();
+    }
+
     void runAutomation()
     {
         if (!automated() || m_loading.valid() || m_state.sceneRequest)
             return; // a scene action waits until its scene is on screen
+        if (m_waitReference)
+        {
+            if (!referencesDone())
+                return;
+            m_waitReference = false;
+        }
         if (m_waitFrames > 0)
         {
             --m_waitFrames;
@@ -255,7 +291,9 @@ private:
         {
             const Action& action = m_options.actions[m_nextAction++];
             spdlog::debug("action {}={}", action.name, action.value);
-            if (!applyAction(action, m_controls))
+            if (action.name == "wait-reference")
+                m_waitReference = true;
+            else if (!applyAction(action, m_controls))
             {
                 m_waitFrames = waitFrames(action);
                 m_sleepUntil = Clock::now() + std::chrono::duration_cast<Clock::duration>(
@@ -267,7 +305,7 @@ private:
     bool actionsDone() const
     {
         return m_nextAction >= m_options.actions.size() && m_waitFrames == 0 && Clock::now() >= m_sleepUntil &&
-               !m_loading.valid() && !m_state.sceneRequest;
+               !m_loading.valid() && !m_state.sceneRequest && !m_waitReference;
     }
 
     void applyRequests()
@@ -282,6 +320,33 @@ private:
             const std::filesystem::path png = *m_state.saveRequest;
             m_state.saveRequest.reset();
             save(png);
+        }
+        if (m_state.savePlotRequest)
+        {
+            const std::filesystem::path png = *m_state.savePlotRequest;
+            m_state.savePlotRequest.reset();
+            savePlot(png);
+        }
+    }
+
+    void savePlot(const std::filesystem::path& png)
+    {
+        try
+        {
+            const std::size_t points = rt::gui::savePlotFiles(m_plot, m_state.image.request, png);
+            if (points == 0)
+                throw UsageError("no plot to save: no point of this work has its relMSE yet");
+            std::filesystem::path csv = png;
+            m_state.message = fmt::format("saved the plot {} and its {} points {}", png.string(), points,
+                                          csv.replace_extension(".csv").string());
+            spdlog::info("{}", m_state.message);
+        }
+        catch (const Error& e)
+        {
+            m_state.message = std::string("the plot was not saved: ") + e.what();
+            if (automated())
+                throw;
+            spdlog::error("{}", m_state.message);
         }
     }
 
@@ -339,7 +404,8 @@ private:
     WindowLayout layoutFor(Extent framebuffer) const
     {
         const float panelPixels = kPanelWidth * m_state.display.fontScale * framebufferScale();
-        return layoutWindow(framebuffer, static_cast<int>(panelPixels), m_state.image.extent());
+        return layoutWindow(framebuffer, static_cast<int>(panelPixels), m_state.image.extent(),
+                            ImGui::GetFontSize() * framebufferScale());
     }
 
     /// Framebuffer pixels per window coordinate (ImGui's coordinates): 1 on X11, 2 on a Retina display.
@@ -353,6 +419,7 @@ private:
         WindowLayout layout = layoutFor(size);
         const PixelRect panelDrawn =
             drawPanel(m_controls, m_state, panelInfo(size), m_panel, layout.panel, framebufferScale());
+        drawLabPanes(layout);
 
         const std::optional<Frame> frame = m_presenter.beginFrame(size);
         if (!frame)
@@ -369,9 +436,10 @@ private:
             m_presenter.waitIdle();
             prepareImages(m_state.image.extent());
         }
-        m_drawn = {frameExtent, panelDrawn, layout.image};
+        m_drawn = {frameExtent, panelDrawn, layout.image, layout.timings, layout.plot};
         if (const CostSummary cost = m_renderer.takeCostSummary(frame->slot); cost.max > 0.0f)
             m_cost = cost;
+        takeTraceSeconds(frame->slot);
 
         const VkCommandBuffer cmd = frame->commands;
         std::uint64_t samples = 0;
@@ -397,6 +465,7 @@ private:
             m_presenter.recordScreenshot(*frame);
         m_presenter.endFrame(*frame, size);
         m_throughput.add(Throughput::Clock::now(), samples);
+        afterFrame();
         if (automated() && actionsDone() && ++m_framesAfterActions >= *m_options.frames)
         {
             if (!m_options.screenshot.empty())
@@ -410,14 +479,17 @@ private:
     {
         const VkCommandBuffer cmd = frame.commands;
         const bool restart = m_needsClear || !accumulationFits();
+        if (restart)
+        {
+            m_nextSample = 0; // a new image: its samples are those of a headless render from index 0
+            startAccumulation(); // before the clear: its warm-up leaves a sample in the image
+        }
         if (restart || !m_state.image.accumulate)
         {
             m_renderer.recordClear(cmd);
             m_accumulatedSpp = 0;
             m_needsClear = false;
         }
-        if (restart)
-            m_nextSample = 0; // a new image: its samples are those of a headless render from index 0
         m_traced = m_state.image;
 
         auto count = static_cast<std::uint32_t>(m_state.display.samplesPerFrame);
@@ -426,12 +498,174 @@ private:
             const auto target = static_cast<std::uint32_t>(m_state.image.request.settings.trueSpp());
             count = std::min(count, target > m_accumulatedSpp ? target - m_accumulatedSpp : 0u);
         }
+        if (count == 0)
+            return m_references.recordSamples(cmd, frame.slot, std::uint32_t(m_state.display.samplesPerFrame), *m_scene);
         m_renderer.recordSamples(cmd, frame.slot, requestOf(m_state.image), m_nextSample, count);
+        m_slotAccumulation.at(frame.slot) = m_accumulation;
         // Without accumulation the indices still advance, so each frame shows new noise, not the same frame.
         m_nextSample += count;
         m_accumulatedSpp += count;
         const Extent image = m_state.image.extent();
         return std::uint64_t(count) * std::uint64_t(image.width) * std::uint64_t(image.height);
+    }
+
+    /// A new accumulation: its samples' device time from zero, its pipeline compiled (and warmed up) apart from
+    /// them (timed: the timings' compile column), its first plot point at 1 spp.
+    void startAccumulation()
+    {
+        ++m_accumulation;
+        m_traceSeconds = 0.0;
+        m_untimed = false;
+        m_nextPointSpp = 1;
+        m_renderRecorded = false;
+        const Clock::time_point start = Clock::now();
+        m_compileSeconds.reset();
+        if (m_renderer.preparePipeline(requestOf(m_state.image)))
+        {
+            m_renderer.warmUp(requestOf(m_state.image));
+            m_compileSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+        }
+    }
+
+    /// Adds the device time of `slot`'s last frame to the accumulation when its samples were of it.
+    void takeTraceSeconds(std::uint32_t slot)
+    {
+        const std::optional<double> seconds = m_renderer.takeTraceSeconds(slot);
+        if (m_slotAccumulation.at(slot) != m_accumulation)
+            return;
+        if (seconds)
+            m_traceSeconds += *seconds;
+        else
+            m_untimed = true;
+        m_slotAccumulation.at(slot) = 0; // taken
+    }
+
+    /// After a frame was submitted: a timed render's plot points (after 1, 2, 4, ... spp; a stratified one only at
+    /// its end, whose strata the earlier samples do not cover) and its end go into the plot and the timings table,
+    /// waiting for the device to read the image back and the samples' times; a reference half finished is read
+    /// back; finished references are measured against.
+    void afterFrame()
+    {
+        if (m_state.image.rayTracing && timedRender() && !m_renderRecorded && m_accumulatedSpp > 0 &&
+            accumulationFits())
+        {
+            const auto target = std::uint32_t(m_state.image.request.settings.trueSpp());
+            const bool end = m_accumulatedSpp >= target;
+            const bool stratified = requestOf(m_state.image).settings.sampling == PixelSampling::Stratified;
+            if (end || (!stratified && m_accumulatedSpp >= m_nextPointSpp))
+                recordEstimate(end);
+        }
+        if (m_references.halfRecorded())
+        {
+            m_presenter.waitIdle();
+            m_references.finishHalf(*m_scene);
+        }
+        for (const rt::gui::FinishedReference& reference : m_references.take())
+        {
+            m_table.attach(reference);
+            m_plot.attach(reference);
+        }
+    }
+
+    /// The request the accumulation's samples are of: the panel's, at the spp traced, and the window's camera
+    /// where it moved.
+    RenderRequest tracedRequest() const
+    {
+        RenderRequest request = m_traced.request;
+        request.settings.spp = int(m_accumulatedSpp);
+        if (!(m_traced.camera == m_state.sceneCamera))
+            request.camera = m_traced.camera;
+        return request;
+    }
+
+    void recordEstimate(bool end)
+    {
+        m_presenter.waitIdle();
+        for (std::uint32_t slot = 0; slot < m_slotAccumulation.size(); ++slot)
+            takeTraceSeconds(slot);
+        while (m_nextPointSpp <= m_accumulatedSpp)
+            m_nextPointSpp *= 2;
+        if (end)
+            m_renderRecorded = true;
+        if (m_untimed || m_traceSeconds <= 0.0)
+        {
+            if (end)
+                spdlog::warn("'{}' has no timestamps: the render is not timed", m_engine.deviceName());
+            return;
+        }
+        const RenderRequest request = tracedRequest();
+        auto image = std::make_shared<const Image>(m_renderer.readImage());
+        if (const auto task = m_plot.add(request, EngineKind::Gpu, m_engine.deviceName(), m_traceSeconds,
+                                         int(m_accumulatedSpp), image, EngineKind::Gpu, false))
+            m_references.request(*task, *m_scene);
+        if (!end)
+            return;
+        RenderStats stats;
+        stats.request = request;
+        stats.engine = EngineKind::Gpu;
+        stats.device = m_engine.deviceName();
+        stats.width = request.settings.width;
+        stats.height = request.settings.height();
+        stats.trueSpp = int(m_accumulatedSpp);
+        stats.renderSeconds = m_traceSeconds;
+        stats.gpuSeconds = m_traceSeconds;
+        stats.paths = std::uint64_t(stats.width) * std::uint64_t(stats.height) * m_accumulatedSpp;
+        stats.buildSeconds = m_engine.buildSeconds();
+        if (m_compileSeconds)
+            stats.stageSeconds["pipeline_host"] = *m_compileSeconds;
+        m_table.record(stats, {}, image);
+        if (const auto task = m_table.referenceWanted())
+            m_references.request(*task, *m_scene);
+        for (const rt::gui::FinishedReference& reference : m_references.take()) // found in the cache
+        {
+            m_table.attach(reference);
+            m_plot.attach(reference);
+        }
+    }
+
+    /// The timings table and the convergence plot in the strip under the image.
+    void drawLabPanes(const WindowLayout& layout)
+    {
+        const float scale = framebufferScale();
+        const auto place = [scale](const PixelRect& r) {
+            ImGui::SetNextWindowPos(ImVec2(float(r.x) / scale, float(r.y) / scale));
+            ImGui::SetNextWindowSize(ImVec2(float(r.width) / scale, float(r.height) / scale));
+        };
+        const rt::gui::ReferenceProgress reference = m_references.progress();
+        std::string title = "Timings of this session (GPU clock)";
+        if (reference.rendering)
+            title += fmt::format("  |  reference for relMSE: {:.0f}% of {} spp{}", reference.fraction * 100.0,
+                                 reference.task.spp,
+                                 reference.waiting > 0 ? fmt::format(" ({} more waiting)", reference.waiting) : "");
+        place(layout.timings);
+        if (ImGui::Begin((title + "###timings").c_str(), nullptr, kPaneFlags))
+        {
+            const rt::gui::TimingsDrawn drawn = rt::gui::drawTimings(m_table);
+            m_latestTimingVisible = drawn.latestVisible;
+            if (drawn.clearClicked)
+            {
+                m_table.clear();
+                m_plot.clear();
+                m_references.drop();
+            }
+        }
+        ImGui::End();
+        place(layout.plot);
+        if (ImGui::Begin("Convergence: relMSE against time", nullptr, kPaneFlags | ImGuiWindowFlags_NoScrollbar))
+        {
+            rt::gui::PlotDrawn drawn = rt::gui::drawConvergencePlot(m_plot, m_state.image.request, plotName());
+            m_plotState = std::move(drawn.state);
+            if (drawn.saveClicked)
+                m_controls.savePlot(plotName());
+        }
+        ImGui::End();
+    }
+
+    std::string plotName() const
+    {
+        const RenderSettings& r = m_state.image.request.settings;
+        return fmt::format("{}_{}x{}_depth{}_gpu_convergence.png", sceneShortName(m_state.image.request.scene.id),
+                           r.width, r.height(), r.depth);
     }
 
     /// --state-json: what the last frame drew where (framebuffer pixels, [x, y, width, height]), for the
@@ -443,7 +677,16 @@ private:
         const nlohmann::json state = {
             {"window", {m_drawn.window.width, m_drawn.window.height}},
             {"image_size", {image.width, image.height}},
-            {"layout", {{"panel", rect(m_drawn.panel)}, {"image", rect(m_drawn.image)}}},
+            {"layout",
+             {{"panel", rect(m_drawn.panel)},
+              {"image", rect(m_drawn.image)},
+              {"timings", rect(m_drawn.timings)},
+              {"plot", rect(m_drawn.plot)},
+              {"plot_drawn", m_plotState},
+              {"latest_timing_visible", m_latestTimingVisible}}},
+            {"timings", m_table.toJson()},
+            {"plot", m_plot.toJson()},
+            {"references_pending", m_references.pending()},
             {"ray_tracing", m_state.image.rayTracing},
             {"accumulated_spp", m_accumulatedSpp},
             {"samples_per_frame", m_state.display.samplesPerFrame},
@@ -471,15 +714,33 @@ private:
     RasterPreview m_preview;
     DisplayPass m_display;
     ImGuiLayer m_imgui;
+    WindowReferences m_references;
     WindowState m_state;
     Controls m_controls;
+    rt::gui::TimingsTable m_table;
+    rt::gui::ConvergencePlot m_plot;
+    // The timed render in the accumulation image (timedRender): its number (0: none), the device time of its
+    // samples (each slot's frames tagged with the number they traced for), the plot's next point, its
+    // compilation.
+    std::uint64_t m_accumulation = 0;
+    std::vector<std::uint64_t> m_slotAccumulation;
+    double m_traceSeconds = 0.0;
+    bool m_untimed = false; // a frame of it had no timestamps
+    std::uint32_t m_nextPointSpp = 1;
+    bool m_renderRecorded = false;
+    std::optional<double> m_compileSeconds;
+    bool m_waitReference = false; // the wait-reference action holds the script
     PanelState m_panel;
     struct Drawn
     {
         Extent window;
         PixelRect panel; // as ImGui drew it
         PixelRect image;
+        PixelRect timings;
+        PixelRect plot;
     } m_drawn; // by the last frame, for --state-json
+    nlohmann::json m_plotState; // the plot as drawn (PlotDrawn::state)
+    bool m_latestTimingVisible = true;
 
     std::future<Scene> m_loading;
     std::string m_loadingId;
@@ -507,7 +768,8 @@ int runWindow(const WindowOptions& options, Scene scene)
     std::shared_ptr<const vk::ValidationLog> log;
     {
         const bool defaultSize = !options.windowSize;
-        const WindowSize size = defaultSize ? defaultWindowSize(options.initial.image.extent(), int(kPanelWidth))
+        const WindowSize size = defaultSize ? defaultWindowSize(options.initial.image.extent(), int(kPanelWidth),
+                                                                kPanelFontPixels * options.initial.display.fontScale)
                                             : *options.windowSize;
         VulkanWindow window("ray-tracing-gpu", size, defaultSize);
         WindowApp app(options, window, std::move(scene));

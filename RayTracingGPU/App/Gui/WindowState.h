@@ -70,6 +70,7 @@ struct WindowState
     std::vector<std::string> fonts{"ImGui default"}; // the panel's fonts (ImGuiLayer: those installed)
     std::optional<std::string> sceneRequest; // to be built, then shown
     std::optional<std::filesystem::path> saveRequest; // PNG path; the PFM goes beside it
+    std::optional<std::filesystem::path> savePlotRequest; // the convergence plot's PNG; its CSV goes beside it
     std::optional<Extent> resizeRequest; // 0 x 0: minimised
     /// The panel's last line for the user: an error, a saved file, a value held to its limit. Empty: none.
     std::string message;

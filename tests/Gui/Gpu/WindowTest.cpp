@@ -137,6 +137,8 @@ struct Layout
     Extent image; // the image's own size
     PixelRect panel;
     PixelRect imageRect; // where it was drawn
+    PixelRect timings; // the strip under the image: the table, then the plot
+    PixelRect plot;
     std::string message;
 
     explicit Layout(const std::filesystem::path& json)
@@ -148,6 +150,8 @@ struct Layout
         image = {state["image_size"][0], state["image_size"][1]};
         panel = rect(state["layout"]["panel"]);
         imageRect = rect(state["layout"]["image"]);
+        timings = rect(state["layout"]["timings"]);
+        plot = rect(state["layout"]["plot"]);
         message = state["message"];
     }
 };
@@ -173,9 +177,23 @@ void expectPanel(const Screenshot& s, const Layout& l)
     EXPECT_GT(panel.stddevLuma, 10.0);
 }
 
-/// The panel a full-height column at the left, the image beside it, inside the window, its aspect kept.
+/// The panel a full-height column at the left, the image beside it above the table and the plot, inside the
+/// window, its aspect kept; no two of the four share a pixel.
 void expectLetterboxed(const Layout& l)
 {
+    const PixelRect window{0, 0, l.window.width, l.window.height};
+    const PixelRect panes[] = {l.panel, l.imageRect, l.timings, l.plot};
+    for (std::size_t i = 0; i < std::size(panes); ++i)
+    {
+        EXPECT_FALSE(panes[i].empty()) << "pane " << i;
+        EXPECT_GE(panes[i].x, 0);
+        EXPECT_GE(panes[i].y, 0);
+        EXPECT_LE(panes[i].x + panes[i].width, window.width) << "pane " << i;
+        EXPECT_LE(panes[i].y + panes[i].height, window.height) << "pane " << i;
+        for (std::size_t j = i + 1; j < std::size(panes); ++j)
+            EXPECT_FALSE(overlaps(panes[i], panes[j])) << "panes " << i << " and " << j;
+    }
+    EXPECT_LE(l.imageRect.y + l.imageRect.height, l.timings.y) << "the image above the table";
     EXPECT_EQ(l.panel.x, 0);
     EXPECT_EQ(l.panel.y, 0);
     EXPECT_EQ(l.panel.height, l.window.height);
@@ -210,11 +228,13 @@ TEST(GpuWindow, ScreenshotShowsPanelAndRayTracedImage)
     const Screenshot s(dir / "shot.png");
     const Layout layout(dir / "state.json");
     keep(dir / "shot.png");
-    EXPECT_EQ(layout.window, (Extent{956, 600})) << "the panel and the 640 x 400 image side by side, 1:1";
+    // The panel and the 640 x 400 image side by side above the table and plot, at least 1:1: the smallest
+    // default window (1024 x 720) magnifies it a little.
+    EXPECT_EQ(layout.window, (Extent{kMinDefaultWindow.width, kMinDefaultWindow.height}));
     ASSERT_EQ(s.width, layout.window.width);
     ASSERT_EQ(s.height, layout.window.height);
     expectLetterboxed(layout);
-    EXPECT_EQ(layout.imageRect.width, 640);
+    EXPECT_GE(layout.imageRect.width, 640);
     expectPanel(s, layout);
     const Region image = imageOf(s, layout);
     EXPECT_GT(image.meanLuma, 20.0) << "not blank";
@@ -255,7 +275,7 @@ TEST(GpuWindow, PanelIsAColumnAndTheImageIsLetterboxedBesideIt)
         const int barLeft = layout.panel.width + 1;
         if (r.x - barLeft >= 4)
         {
-            EXPECT_LT(region(s, barLeft, 0, r.x - 1, s.height).meanLuma, 5.0) << "left bar";
+            EXPECT_LT(region(s, barLeft, 0, r.x - 1, layout.timings.y).meanLuma, 5.0) << "left bar";
         }
         if (r.y >= 4)
         {
@@ -384,6 +404,88 @@ TEST(GpuWindow, StratifiedSamplingStopsAtTheSquareAndRendersTheHeadlessImage)
                               "' --actions 'frames=3;sampling=random;frames=14'");
     EXPECT_EQ(nlohmann::json::parse(::rt::test::fileContents(dir / "random.json"))["accumulated_spp"], 10)
         << "random samples stop at the spp asked";
+}
+
+TEST(GpuWindow, TimingsAndPlotMeasureTheRenderAsCompareDoes)
+{
+    // Issue 38: error beside time in the GPU window. A render that reaches its stop at 8 spp is timed on the GPU's
+    // clock, its pipeline's compilation apart (and warmed up: lavapipe finishes compiling at the first launch,
+    // which put 3.3 s into the 1-spp point), and measured against a reference the window renders on the GPU
+    // in the frames after it: the relMSE is --compare's on the same settings (the same samples and the same
+    // reference halves). The plot has its points at 1, 2, 4 and 8 spp, in time order, and saves as PNG + CSV.
+    const ::rt::test::ScratchDir dir;
+    const std::string settings = "--scene cornell-box-lights --width 48 --spp 8 --seed 2";
+    RT_RUN_WINDOW(run, "--validation " + settings + " --window-size 1280x800 --frames 2 --screenshot '" +
+                           (dir / "shot.png").string() + "'" + stateJsonArgument(dir) +
+                           " --actions 'wait-reference;save-plot=" + (dir / "plot.png").string() + "'");
+    keep(dir / "shot.png");
+    const AppRun compare = runApp("--compare --engines gpu " + settings + " --spp-list 8 --table '" +
+                                      (dir / "compare.json").string() + "'",
+                                  "RT_REFERENCE_CACHE=off");
+    ASSERT_EQ(compare.status, 0) << compare.output;
+    const nlohmann::json table = nlohmann::json::parse(::rt::test::fileContents(dir / "compare.json"));
+    const double compareRelMse = table["rows"][0]["gpu"]["relmse"];
+
+    const nlohmann::json state = nlohmann::json::parse(::rt::test::fileContents(dir / "state.json"));
+    ASSERT_EQ(state["timings"].size(), 1u) << state["timings"].dump(2);
+    const nlohmann::json& row = state["timings"][0];
+    EXPECT_EQ(row["engine"], "gpu");
+    EXPECT_EQ(row["spp"], 8);
+    EXPECT_EQ(row["reference"]["state"], "ready");
+    EXPECT_EQ(row["reference"]["engine"], "gpu");
+    EXPECT_EQ(row["reference"]["spp"], 32);
+    ASSERT_TRUE(row["rel_mse"].is_number()) << row.dump(2);
+    EXPECT_NEAR(double(row["rel_mse"]), compareRelMse, 0.05 * compareRelMse) << "the window's relMSE is --compare's";
+    EXPECT_TRUE(row["compiled"]) << "the window's first render compiles its pipeline";
+    EXPECT_GT(double(row["compile_seconds"]), 0.0);
+    EXPECT_NEAR(double(row["efficiency"]), 1.0 / (double(row["rel_mse"]) * double(row["seconds"])),
+                1e-6 * double(row["efficiency"]));
+
+    ASSERT_EQ(state["plot"].size(), 1u) << "one line: one engine x strategy";
+    const nlohmann::json& points = state["plot"][0]["points"];
+    ASSERT_EQ(points.size(), 4u) << points.dump(2);
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+        EXPECT_EQ(points[i]["spp"], 1 << i);
+        ASSERT_TRUE(points[i]["rel_mse"].is_number()) << "every point measured";
+        if (i > 0)
+        {
+            EXPECT_GT(double(points[i]["seconds"]), double(points[i - 1]["seconds"])) << "monotone time";
+        }
+    }
+    EXPECT_LT(double(points[0]["seconds"]), 0.5 * double(points[3]["seconds"]))
+        << "1 spp takes a fraction of 8: no compilation in the first point";
+    EXPECT_GT(double(points[0]["rel_mse"]), double(points[3]["rel_mse"]));
+    EXPECT_DOUBLE_EQ(double(points[3]["seconds"]), double(row["seconds"])) << "the render is the line's last point";
+    const nlohmann::json& drawn = state["layout"]["plot_drawn"];
+    EXPECT_EQ(drawn["x_label"], "render time (s)");
+    EXPECT_EQ(drawn["y_label"], "relMSE");
+    EXPECT_EQ(drawn["lines"].size(), 1u);
+    EXPECT_TRUE(std::filesystem::exists(dir / "plot.png"));
+    const std::string csv = ::rt::test::fileContents(dir / "plot.csv");
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5) << "a header and the four points:\n" << csv;
+
+    for (const Extent size : {Extent{1280, 800}, Extent{1920, 1080}})
+    {
+        SCOPED_TRACE(size.width);
+        const std::filesystem::path shot = dir / ("layout" + std::to_string(size.width) + ".png");
+        RT_RUN_WINDOW(shown, "--validation " + settings + " --window-size " + std::to_string(size.width) + "x" +
+                                 std::to_string(size.height) + " --frames 2 --screenshot '" + shot.string() + "'" +
+                                 stateJsonArgument(dir) + " --actions 'wait-reference'");
+        keep(shot);
+        const Layout layout(dir / "state.json");
+        EXPECT_EQ(layout.window, size);
+        expectLetterboxed(layout);
+        const Screenshot s(shot);
+        ASSERT_EQ(s.width, size.width);
+        const Region timings = region(s, layout.timings.x + 8, layout.timings.y + 30,
+                                      layout.timings.x + layout.timings.width - 8,
+                                      layout.timings.y + layout.timings.height - 8);
+        EXPECT_GT(timings.distinctColors, 4u) << "the table's text and lines are drawn";
+        const Region plot = region(s, layout.plot.x + 8, layout.plot.y + 30, layout.plot.x + layout.plot.width - 8,
+                                   layout.plot.y + layout.plot.height - 8);
+        EXPECT_GT(plot.distinctColors, 4u) << "the plot's axes and line are drawn";
+    }
 }
 
 TEST(GpuWindow, RestirDiAccumulatesTheHeadlessImage)
