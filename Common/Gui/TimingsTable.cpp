@@ -93,7 +93,7 @@ void TimingsTable::record(const RenderStats& stats, const WindowRedraws& redraws
     ++m_revision;
 }
 
-std::optional<ReferenceTask> TimingsTable::referenceWanted()
+std::optional<ReferenceTask> TimingsTable::referenceWanted(std::optional<EngineKind> engine)
 {
     if (m_latest >= m_rows.size() || m_rows[m_latest].reference)
         return std::nullopt;
@@ -107,7 +107,7 @@ std::optional<ReferenceTask> TimingsTable::referenceWanted()
             fastest = e == std::size_t(EngineKind::Single) ? std::size_t(EngineKind::Multi) : e;
         }
     const long long spp = static_cast<long long>(compare::kDefaultReferenceFactor) * row.key.settings.spp;
-    ReferenceTask task{.base = m_latestRequest, .engine = EngineKind(fastest), .spp = int(std::min<long long>(spp, kMaxSpp))};
+    ReferenceTask task{.base = m_latestRequest, .engine = engine.value_or(EngineKind(fastest)), .spp = int(std::min<long long>(spp, kMaxSpp))};
     row.reference = RowReference{.task = task};
     if (spp > 2LL * kMaxSpp) // two halves of at most kMaxSpp each, as --compare refuses it
     {

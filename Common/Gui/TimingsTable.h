@@ -97,9 +97,10 @@ public:
     /// no relMSE) and the frames the window drew during it.
     void record(const RenderStats& stats, const WindowRedraws& redraws = {}, std::shared_ptr<const Image> image = {});
     /// The reference the latest record()'s row needs, once: the render's own request at
-    /// kDefaultReferenceFactor x its spp, rendered by the engine of the row with the most Mpaths/s (multi for
-    /// single core, whose work it does faster); nullopt when the row has asked before.
-    std::optional<ReferenceTask> referenceWanted();
+    /// kDefaultReferenceFactor x its spp, rendered by `engine` when given (the GPU window renders every reference on
+    /// its device), else by the engine of the row with the most Mpaths/s (multi for single core, whose work it
+    /// does faster); nullopt when the row has asked before.
+    std::optional<ReferenceTask> referenceWanted(std::optional<EngineKind> engine = std::nullopt);
     /// Measures the rows waiting for `reference` against it (a reference no row waits for is ignored).
     void attach(const FinishedReference& reference);
     void clear()

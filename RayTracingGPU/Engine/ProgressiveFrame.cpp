@@ -293,6 +293,41 @@ std::optional<double> ProgressiveFrame::takeTraceSeconds(std::uint32_t slot)
     return m_timestamps.secondsBetween(2 * slot, m_engine->context().device().properties().limits.timestampPeriod);
 }
 
+void ProgressiveFrame::showImage(const Image& image)
+{
+    const vk::Device& device = m_engine->context().device();
+    const VkExtent2D size = extent();
+    if (image.width() != int(size.width) || image.height() != int(size.height))
+        throw UsageError("ProgressiveFrame::showImage: the image is not of the accumulation's size");
+    const vk::Buffer upload(device, VkDeviceSize(kAccumulationBytesPerPixel) * size.width * size.height,
+                            VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vk::MemoryUse::Upload);
+    auto* texels = static_cast<float*>(upload.mapped());
+    for (std::size_t i = 0; i < image.pixelCount(); ++i)
+    {
+        const vec3 c = image.data()[i];
+        texels[4 * i] = c.x;
+        texels[4 * i + 1] = c.y;
+        texels[4 * i + 2] = c.z;
+        texels[4 * i + 3] = 1.0f; // one sample
+    }
+    vkDeviceWaitIdle(device.Handle()); // the frames in flight read the image
+    vk::submitAndWait(device, m_engine->context().commandPool(), [&](VkCommandBuffer cmd) {
+        recordClear(cmd);
+        vk::imageBarrier(cmd, m_accumulation.Handle(),
+                         {VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                          VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {size.width, size.height, 1};
+        vkCmdCopyBufferToImage(cmd, upload.Handle(), m_accumulation.Handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                               &region);
+        vk::imageBarrier(cmd, m_accumulation.Handle(),
+                         {VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                          VK_ACCESS_TRANSFER_WRITE_BIT, kImageStages,
+                          VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT});
+    });
+}
+
 Image ProgressiveFrame::readImage() const
 {
     const vk::Device& device = m_engine->context().device();

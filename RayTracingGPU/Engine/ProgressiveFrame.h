@@ -63,6 +63,8 @@ public:
     /// The device has the shader clock, so the heatmap can be shown.
     bool costAvailable() const;
     VkExtent2D extent() const { return m_accumulation.extent(); }
+    /// The images were cleared (or written) since they were made: the display pass may read them.
+    bool hasImage() const { return !m_imagesUndefined; }
 
     /// Images of `extent` (kept when it is unchanged) and descriptor sets for the engine's current scene. Call
     /// with the device idle, after every setScene and resize; the next frame must begin with recordClear.
@@ -101,6 +103,11 @@ public:
     /// theirs: GPU timestamps, as GpuEngine times a headless render's launches), once; nullopt when that frame
     /// traced nothing or the queue has no timestamps. Call once `slot`'s previous frame has completed.
     std::optional<double> takeTraceSeconds(std::uint32_t slot);
+
+    /// Replaces the accumulation with `image` (extent()'s size) as one sample per pixel, its compensation and cost
+    /// cleared: another engine's render (the window's CPU engines), shown by the display pass and read back by
+    /// readImage as it is. Waits for the device, uploads and waits.
+    void showImage(const Image& image);
 
     /// The accumulated estimate (radiance sum / sample count per pixel), read back: submits and waits.
     Image readImage() const;

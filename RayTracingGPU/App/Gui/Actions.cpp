@@ -19,6 +19,9 @@ const std::vector<ActionSpec>& specs()
         sharedActionSpecs("stop tracing at N samples per pixel (0: never)", 0),
         {
             {"raytracing", ActionValue::OnOff, "on|off", "ray tracing, or the rasterised preview"},
+            {"engine", ActionValue::Text, "gpu|single|multi",
+             "what renders the image: the GPU in the frames, or a CPU engine a whole render at a time", 0, 1e30,
+             [](const std::string& v) { return parseName<EngineKind>(v).has_value(); }},
             {"accumulate", ActionValue::OnOff, "on|off", "accumulate samples between frames"},
             {"sobol", ActionValue::OnOff, "on|off", "Owen-scrambled Sobol pixel samples (off: random)"},
             {"heatmap", ActionValue::OnOff, "on|off", "per-pixel cost (needs VK_KHR_shader_clock)"},
@@ -77,6 +80,8 @@ bool applyAction(const Action& a, Controls& c)
         c.setFontPixels(int(a.integer()));
     else if (n == "raytracing")
         c.setRayTracing(a.on());
+    else if (n == "engine")
+        c.setEngine(*parseName<EngineKind>(a.value)); // checked by the spec
     else if (n == "accumulate")
         c.setAccumulate(a.on());
     else if (n == "heatmap")

@@ -34,6 +34,8 @@ public:
     /// scene when it changes, keeping the view.
     void setRoughnessScale(float scale);
     void setRayTracing(bool on);
+    /// The engine that renders the image (WindowState::engine).
+    void setEngine(EngineKind engine);
     void setAccumulate(bool on);
     void setHeatmap(bool on); // stays off without the shader clock (WindowState::costAvailable)
     void setAutoCostScale(bool on);

@@ -10,6 +10,7 @@
 
 #include "Scene/CameraMoves.h"
 #include "Cli/ActionGrammar.h"
+#include "Gui/EngineLabel.h"
 #include "Gui/SettingWidget.h"
 #include "Error.h"
 #include "Image/ImageIO.h"
@@ -113,12 +114,24 @@ void imageSection(Controls& controls, const WindowState& state)
                           "fit is refused");
 }
 
-void rayTracingSection(Controls& controls, const WindowState& state)
+void rayTracingSection(Controls& controls, const WindowState& state, const PanelInfo& info)
 {
     const ImageSettings& image = state.image;
     const DisplaySettings& display = state.display;
     if (bool on = image.rayTracing; ImGui::Checkbox("Enable ray tracing", &on))
         controls.setRayTracing(on);
+    if (ImGui::BeginCombo("Engine", rt::gui::engineLabel(state.engine)))
+    {
+        for (const EngineKind kind : {EngineKind::Gpu, EngineKind::Single, EngineKind::Multi})
+            if (ImGui::Selectable(rt::gui::engineLabel(kind), kind == state.engine))
+                controls.setEngine(kind);
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("GPU: samples traced in the frames; single and multi core: a whole render of Stop at spp "
+                          "(or the settings' spp) on the CPU, shown when it ends, timed beside the GPU");
+    if (!info.engineStatus.empty())
+        ImGui::TextDisabled("%s", info.engineStatus.c_str());
     if (bool on = image.accumulate; ImGui::Checkbox("Accumulate between frames", &on))
         controls.setAccumulate(on);
     if (int samples = display.samplesPerFrame; ImGui::SliderInt("Samples / frame", &samples, 1, 64))
@@ -245,7 +258,7 @@ PixelRect drawPanel(Controls& controls, const WindowState& state, const PanelInf
     if (ImGui::CollapsingHeader("Image", ImGuiTreeNodeFlags_DefaultOpen))
         imageSection(controls, state);
     if (ImGui::CollapsingHeader("Ray tracing", ImGuiTreeNodeFlags_DefaultOpen))
-        rayTracingSection(controls, state);
+        rayTracingSection(controls, state, info);
     if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen))
         cameraSection(controls, state);
     if (info.costAvailable && ImGui::CollapsingHeader("Profiler", ImGuiTreeNodeFlags_DefaultOpen))

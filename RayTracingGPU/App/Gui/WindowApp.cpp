@@ -12,6 +12,7 @@
 #include "Scene/CameraMoves.h"
 #include "App/Gui/CameraInput.h"
 #include "App/Gui/Controls.h"
+#include "App/Gui/CpuRenders.h"
 #include "App/Gui/DisplayPass.h"
 #include "App/Gui/ImGuiLayer.h"
 #include "App/Gui/Panel.h"
@@ -25,6 +26,7 @@
 #include "Engine/ProgressiveFrame.h"
 #include "Error.h"
 #include "Gui/ConvergencePlot.h"
+#include "Gui/EngineLabel.h"
 #include "Gui/PlotFiles.h"
 #include "Gui/PlotWindow.h"
 #include "Gui/TimingsTable.h"
@@ -63,7 +65,7 @@ class WindowApp final
 public:
     WindowApp(const WindowOptions& options, VulkanWindow& window, Scene scene)
         : m_options(options), m_window(window), m_engine(engineOptions(options, window)),
-          m_scene(std::make_unique<Scene>(std::move(scene))),
+          m_scene(std::make_shared<Scene>(std::move(scene))),
           m_presenter(m_engine.context(), window.framebufferSize()),
           m_renderer(m_engine, kFramesInFlight),
           m_preview(m_engine.context().device(), m_engine.shaderDir(), m_presenter.renderPass()),
@@ -103,7 +105,7 @@ public:
         while (!m_window.closeRequested() && !m_done)
         {
             // Nothing to trace: redraw on input, or at most at kIdleFrameSeconds (the preview, the panel).
-            if (automated() || m_loading.valid() || tracing() || referencesToTrace())
+            if (automated() || m_loading.valid() || tracing() || referencesToTrace() || m_cpu.busy())
                 m_window.pollEvents();
             else
                 m_window.waitEvents(kIdleFrameSeconds);
@@ -115,6 +117,7 @@ public:
             pollSceneFile();
             startSceneBuild();
             applyRequests();
+            driveCpuRenders();
             if (m_window.framebufferSize().width == 0 || m_window.framebufferSize().height == 0)
             {
                 // Minimised: nothing to draw into. Scripts keep running (their next action restores the window).
@@ -133,12 +136,16 @@ private:
     /// The next frame traces samples: ray tracing is on and the image has not reached its stop.
     bool tracing() const
     {
-        return m_state.image.rayTracing && (!m_state.display.stopAtSpp || !m_state.image.accumulate ||
+        return m_state.engine == EngineKind::Gpu && m_state.image.rayTracing &&
+               (!m_state.display.stopAtSpp || !m_state.image.accumulate ||
                                             m_accumulatedSpp < std::uint32_t(m_state.image.request.settings.trueSpp()));
     }
 
     /// The image has reached its stop and a reference waits for the device: the frames trace it.
-    bool referencesToTrace() const { return m_state.image.rayTracing && !tracing() && m_references.pending(); }
+    bool referencesToTrace() const
+    {
+        return m_state.image.rayTracing && !tracing() && !m_cpu.busy() && m_references.pending();
+    }
 
     /// The accumulation is a timed render: it stops at the settings' spp, accumulates, and is not timed per
     /// pixel (the heatmap's clock reads slow its samples).
@@ -267,6 +274,8 @@ private:
     /// wait-reference's end: the image has reached its stop (or has none) and no reference is queued or rendering.
     bool referencesDone() const
     {
+        if (m_state.engine != EngineKind::Gpu)
+            return m_state.image.rayTracing && m_cpuShown && !m_cpu.busy() && !m_references.pending();
         return (!m_state.display.stopAtSpp || !tracing()) && !m_references.pending();
     }
 
@@ -388,6 +397,10 @@ private:
         info.framesPerSecond = m_throughput.framesPerSecond();
         info.megaSamplesPerSecond = m_throughput.samplesPerSecond() * 1e-6;
         info.accumulatedSpp = static_cast<int>(m_accumulatedSpp);
+        if (m_state.engine != EngineKind::Gpu)
+            info.engineStatus = m_cpu.busy() ? fmt::format("{}: rendering, {:.0f}%", rt::gui::engineLabel(m_state.engine),
+                                                           100.0 * m_cpu.fraction())
+                                             : m_cpuStatus;
         info.costMax = m_cost.max;
         info.costScale = costScale();
         info.window = window;
@@ -444,7 +457,7 @@ private:
         const VkCommandBuffer cmd = frame->commands;
         std::uint64_t samples = 0;
         if (m_state.image.rayTracing)
-            samples = traceSamples(*frame);
+            samples = m_state.engine == EngineKind::Gpu ? traceSamples(*frame) : traceReferences(*frame);
         m_presenter.beginRenderPass(*frame);
         if (m_state.image.rayTracing)
         {
@@ -507,6 +520,84 @@ private:
         m_accumulatedSpp += count;
         const Extent image = m_state.image.extent();
         return std::uint64_t(count) * std::uint64_t(image.width) * std::uint64_t(image.height);
+    }
+
+    /// A CPU engine renders the image: the frames trace references only while it is idle (they would share the
+    /// CPU with it on a CPU device), and the accumulation holds its last render (or is cleared, before the first).
+    std::uint64_t traceReferences(const Frame& frame)
+    {
+        m_needsClear = true; // the GPU starts its image again when it is chosen
+        if (!m_renderer.hasImage())
+            m_renderer.recordClear(frame.commands);
+        if (m_cpu.busy())
+            return 0;
+        return m_references.recordSamples(frame.commands, frame.slot, std::uint32_t(m_state.display.samplesPerFrame),
+                                          *m_scene);
+    }
+
+    /// The request a CPU engine renders for the panel: its settings, the window's camera where it moved.
+    RenderRequest cpuRequest() const
+    {
+        RenderRequest request = m_state.image.request;
+        if (!(m_state.image.camera == m_state.sceneCamera))
+            request.camera = m_state.image.camera;
+        return request;
+    }
+
+    /// The CPU engines' renders: the panel's image asked of the engine chosen once per change of its settings;
+    /// the one that ended shown, timed in the table beside the GPU and measured against a reference on the GPU.
+    void driveCpuRenders()
+    {
+        if (m_state.engine == EngineKind::Gpu || !m_state.image.rayTracing)
+        {
+            if (m_cpuSubmitted)
+                m_cpu.cancel();
+            m_cpuSubmitted.reset();
+            m_cpuShown = false;
+            return;
+        }
+        const CpuRender wanted{.request = cpuRequest(), .engine = m_state.engine, .scene = m_scene};
+        if (!m_cpuSubmitted || m_cpuSubmitted->request != wanted.request || m_cpuSubmitted->engine != wanted.engine ||
+            m_cpuSubmitted->scene != wanted.scene)
+        {
+            m_cpu.submit(wanted);
+            m_cpuSubmitted = wanted;
+            m_cpuShown = false;
+        }
+        std::optional<CpuOutcome> outcome = m_cpu.take();
+        if (!outcome || outcome->render.request != wanted.request || outcome->render.engine != wanted.engine)
+            return; // none, or of settings left since
+        if (!outcome->error.empty())
+        {
+            m_state.message = fmt::format("the {} render failed: {}", toString(outcome->render.engine), outcome->error);
+            if (automated())
+                throw Error(m_state.message);
+            return;
+        }
+        const RenderResult& result = *outcome->result;
+        if (result.image.width() != int(m_renderer.extent().width) ||
+            result.image.height() != int(m_renderer.extent().height))
+            return; // the images were made again for another size since
+        m_presenter.waitIdle();
+        m_renderer.showImage(result.image);
+        m_accumulatedSpp = std::uint32_t(result.stats.trueSpp);
+        m_traced = m_state.image;
+        m_cpuShown = true;
+        m_cpuStatus = fmt::format("{}: {} spp in {:.3f} s", rt::gui::engineLabel(result.stats.engine),
+                                  result.stats.trueSpp, result.stats.renderSeconds);
+        auto image = std::make_shared<const Image>(result.image);
+        m_table.record(result.stats, {}, image);
+        if (const auto task = m_table.referenceWanted(EngineKind::Gpu))
+            m_references.request(*task, *m_scene);
+        if (const auto task = m_plot.add(result.stats.request, result.stats.engine, result.stats.device,
+                                         result.stats.renderSeconds, result.stats.trueSpp, image, EngineKind::Gpu,
+                                         false))
+            m_references.request(*task, *m_scene);
+        for (const rt::gui::FinishedReference& reference : m_references.take())
+        {
+            m_table.attach(reference);
+            m_plot.attach(reference);
+        }
     }
 
     /// A new accumulation: its samples' device time from zero, its pipeline compiled (and warmed up) apart from
@@ -614,7 +705,7 @@ private:
         if (m_compileSeconds)
             stats.stageSeconds["pipeline_host"] = *m_compileSeconds;
         m_table.record(stats, {}, image);
-        if (const auto task = m_table.referenceWanted())
+        if (const auto task = m_table.referenceWanted(EngineKind::Gpu))
             m_references.request(*task, *m_scene);
         for (const rt::gui::FinishedReference& reference : m_references.take()) // found in the cache
         {
@@ -632,7 +723,7 @@ private:
             ImGui::SetNextWindowSize(ImVec2(float(r.width) / scale, float(r.height) / scale));
         };
         const rt::gui::ReferenceProgress reference = m_references.progress();
-        std::string title = "Timings of this session (GPU clock)";
+        std::string title = "Timings of this session (the GPU's on its own clock)";
         if (reference.rendering)
             title += fmt::format("  |  reference for relMSE: {:.0f}% of {} spp{}", reference.fraction * 100.0,
                                  reference.task.spp,
@@ -708,7 +799,7 @@ private:
     const WindowOptions& m_options;
     VulkanWindow& m_window;
     GpuEngine m_engine;
-    std::unique_ptr<Scene> m_scene; // what the engine renders (it keeps a pointer)
+    std::shared_ptr<Scene> m_scene; // what the engines render (they keep a pointer; a CPU render shares it)
     Presenter m_presenter;
     ProgressiveFrame m_renderer;
     RasterPreview m_preview;
@@ -730,6 +821,10 @@ private:
     bool m_renderRecorded = false;
     std::optional<double> m_compileSeconds;
     bool m_waitReference = false; // the wait-reference action holds the script
+    CpuRenders m_cpu;
+    std::optional<CpuRender> m_cpuSubmitted; // the render asked of a CPU engine for the panel's settings
+    bool m_cpuShown = false; // its image is in the accumulation
+    std::string m_cpuStatus; // the last CPU render's spp and time
     PanelState m_panel;
     struct Drawn
     {

@@ -63,6 +63,9 @@ struct WindowState
 {
     ImageSettings image;
     DisplaySettings display;
+    /// What renders the ray-traced image: the GPU, progressively in the frames, or a CPU engine (single, multi
+    /// core: CpuRenders.h), a whole render of the settings' spp at a time, shown when it ends.
+    EngineKind engine = EngineKind::Gpu;
     CameraDesc sceneCamera; // the scene's own camera: "Reset camera"
     float cameraSpeed = 1.0f; // world units per second of WASD (movementSpeed of sceneCamera)
     bool costAvailable = false; // the device has the shader clock: the heatmap can be turned on

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <string>
 #include <thread>
@@ -486,6 +487,41 @@ TEST(GpuWindow, TimingsAndPlotMeasureTheRenderAsCompareDoes)
                                    layout.plot.y + layout.plot.height - 8);
         EXPECT_GT(plot.distinctColors, 4u) << "the plot's axes and line are drawn";
     }
+}
+
+TEST(GpuWindow, CpuEnginesRenderBesideTheGpuInOneTimingsRow)
+{
+    // Issue 38: every engine in both windows, through the engine interface. The panel's engine switched to multi
+    // and then single core renders the same 8 spp on the CPU (the registry's engines, on a thread of the window's
+    // own): the table holds one row with the three engines side by side, each measured against the one reference
+    // the GPU renders, and the CPU's relMSE is the GPU's (the engines agree sample for sample); the CPU's image
+    // is the one shown and saved; back on the GPU, the image is traced again.
+    const ::rt::test::ScratchDir dir;
+    RT_RUN_WINDOW(run, "--validation --scene cornell-box-lights --width 48 --spp 8 --seed 2 --window-size 1280x800 "
+                       "--frames 2" + stateJsonArgument(dir) +
+                           " --actions 'wait-reference;engine=multi;wait-reference;save=" + (dir / "multi.png").string() +
+                           ";engine=single;wait-reference;engine=gpu;wait-reference'");
+    EXPECT_NE(run.output.find("multi.pfm"), std::string::npos) << run.output;
+    const nlohmann::json state = nlohmann::json::parse(::rt::test::fileContents(dir / "state.json"));
+    const nlohmann::json& cells = state["timings"];
+    ASSERT_EQ(cells.size(), 3u) << cells.dump(2);
+    std::map<std::string, nlohmann::json> byEngine;
+    for (const nlohmann::json& cell : cells)
+    {
+        byEngine[cell["engine"]] = cell;
+        EXPECT_EQ(cell["reference"]["state"], "ready");
+        EXPECT_EQ(cell["reference"]["engine"], "gpu") << "the window's references are the GPU's";
+        EXPECT_EQ(cell["spp"], 8);
+        EXPECT_GT(double(cell["seconds"]), 0.0);
+    }
+    ASSERT_EQ(byEngine.size(), 3u) << "single, multi and gpu in one row";
+    EXPECT_EQ(byEngine["gpu"]["renders"], 2) << "the GPU traced its image again after the CPU's";
+    const double gpu = byEngine["gpu"]["rel_mse"];
+    for (const char* cpu : {"single", "multi"})
+        EXPECT_NEAR(double(byEngine[cpu]["rel_mse"]), gpu, 1e-4 * gpu) << cpu;
+    const Image saved = readPfm(dir / "multi.pfm");
+    EXPECT_EQ(saved.width(), 48);
+    ASSERT_EQ(state["plot"].size(), 3u) << "a line per engine";
 }
 
 TEST(GpuWindow, RestirDiAccumulatesTheHeadlessImage)
