@@ -443,6 +443,7 @@ void Session::update()
     }
     for (const FinishedReference& reference : m_job.takeReferences())
     {
+        m_references.remember(reference);
         m_timings.attach(reference);
         m_plot.attach(reference);
     }
@@ -454,7 +455,7 @@ void Session::recordFinished(const RenderOutcome& outcome)
     const RenderStats& stats = *outcome.stats;
     m_timings.record(stats, outcome.redraws, outcome.image);
     if (const std::optional<ReferenceTask> wanted = m_timings.referenceWanted())
-        m_job.requestReference(*wanted);
+        requestReference(*wanted);
     const EngineKind referenceEngine = m_timings.rows()[m_timings.latestRow()].reference->task.engine;
     if (outcome.loopIteration == 0)
     {
@@ -469,7 +470,18 @@ void Session::recordFinished(const RenderOutcome& outcome)
     if (const std::optional<ReferenceTask> task =
             m_plot.add(m_loopBase, stats.engine, stats.device, m_loopSeconds, outcome.meanSamples, outcome.mean,
                        referenceEngine, iterations > 1))
-        m_job.requestReference(*task); // the row's own for a render: the job holds it once
+        requestReference(*task); // the row's own for a render: the job holds it once
+}
+
+void Session::requestReference(const ReferenceTask& task)
+{
+    if (const std::optional<FinishedReference> found = m_references.find(task))
+    {
+        m_timings.attach(*found);
+        m_plot.attach(*found);
+    }
+    else
+        m_job.requestReference(task);
 }
 
 bool Session::savePlot(const std::filesystem::path& png)

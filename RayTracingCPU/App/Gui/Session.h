@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "Gui/ConvergencePlot.h"
+#include "Gui/ReferenceMemory.h"
 #include "App/Gui/PanelSettings.h"
 #include "App/Gui/RenderJob.h"
 #include "Gui/TimingsTable.h"
@@ -152,6 +153,8 @@ private:
     bool tryImage(const RenderRequest& candidate);
     /// The timings table's and the plot's share of a finished render, and the references they ask for.
     void recordFinished(const RenderOutcome& outcome);
+    /// Measures against `task`'s reference at once when this session finished it before, else asks the job.
+    void requestReference(const ReferenceTask& task);
     void note(std::string text, bool error);
 
     RenderJob& m_job;
@@ -170,6 +173,7 @@ private:
     bool m_messageIsError = false;
     TimingsTable m_timings;
     ConvergencePlot m_plot;
+    ReferenceMemory m_references; // the references finished so far
     RenderRequest m_loopBase; // the first iteration's request of the loop in progress
     double m_loopSeconds = 0.0; // its iterations' tracing so far
     int m_finished = 0;

@@ -23,6 +23,11 @@ void WindowReferences::request(const ReferenceTask& task, const Scene& scene)
 {
     if (std::find(m_queue.begin(), m_queue.end(), task) != m_queue.end())
         return;
+    if (std::optional<FinishedReference> found = m_memory.find(task))
+    {
+        m_finished.push_back(std::move(*found));
+        return;
+    }
     try
     {
         const compare::ReferenceCache cache(m_cacheDir);
@@ -33,6 +38,7 @@ void WindowReferences::request(const ReferenceTask& task, const Scene& scene)
                                   .image = std::make_shared<const Image>(std::move(found->mean)),
                                   .ownRelMse = found->ownRelMse,
                                   .fromCache = true});
+            m_memory.remember(m_finished.back());
             return;
         }
     }
@@ -137,6 +143,7 @@ void WindowReferences::finishHalf(const Scene& scene)
                               .image = std::make_shared<const Image>(std::move(combined.mean)),
                               .ownRelMse = combined.ownRelMse,
                               .seconds = a.seconds});
+        m_memory.remember(m_finished.back());
         m_queue.erase(m_queue.begin());
         m_active.reset();
         ++m_half;

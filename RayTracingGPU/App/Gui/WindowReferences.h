@@ -2,7 +2,8 @@
 // device in the frames in which the image has nothing left to trace: each half (Compare/ReferenceRequest.h: seed
 // + 1000 and + 2000) is a progressive accumulation of its own (a second ProgressiveFrame), a few samples per
 // frame, so the window keeps drawing while it renders; the same samples as a headless half of its spp. A
-// reference is looked up first in --compare's reference cache and stored there once rendered. The fewest spp
+// reference is looked up first among those finished in this session, then in --compare's reference cache, and
+// stored there once rendered. The fewest spp
 // go first (the table's row before the plot's long points), the newest among equals.
 #pragma once
 
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "Engine/ProgressiveFrame.h"
+#include "Gui/ReferenceMemory.h"
 #include "Gui/ReferenceTask.h"
 #include "Image/Image.h"
 #include "Scene/Scene.h"
@@ -24,8 +26,8 @@ public:
     /// `frameSlots`: the window's frames in flight. `cacheDir`: --compare's cache (empty: none).
     WindowReferences(const GpuEngine& engine, std::uint32_t frameSlots, std::filesystem::path cacheDir);
 
-    /// Queues `task` of the scene the engine holds (`scene`), unless it is queued already; one found in the
-    /// cache is finished at once.
+    /// Queues `task` of the scene the engine holds (`scene`), unless it is queued already; one finished before
+    /// in this session (ReferenceMemory.h) or found in the cache is finished at once.
     void request(const rt::gui::ReferenceTask& task, const Scene& scene);
     /// Drops what is queued and the half in progress (a new scene: its descriptor sets are stale).
     void drop();
@@ -70,5 +72,6 @@ private:
     std::uint64_t m_half = 0; // grows with every half started or dropped
     std::vector<std::uint64_t> m_slotHalf; // the half whose samples each slot last recorded
     std::vector<rt::gui::FinishedReference> m_finished;
+    rt::gui::ReferenceMemory m_memory;
 };
 } // namespace rt::gpu::gui

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "Gui/ConvergencePlot.h"
+#include "Gui/ReferenceMemory.h"
 #include "Gui/TimingsTable.h"
 #include "Image/Metrics.h"
 
@@ -106,6 +107,50 @@ TEST(TimingsTable, AFailedReferenceLeavesTheRowUnmeasuredAndSaysWhy)
     EXPECT_EQ(json[0]["reference"]["state"], "failed");
     EXPECT_EQ(json[0]["reference"]["error"], "out of memory");
     EXPECT_TRUE(json[0]["rel_mse"].is_null());
+}
+
+TEST(TimingsTable, TakesAnEngineForItsReferenceWhenTheWindowNamesOne)
+{
+    // The GPU window renders every reference on its device, whatever the row's fastest engine.
+    TimingsTable table;
+    table.record(stats(request(4), EngineKind::Multi, 0.5, 256), {}, flat(1.0f));
+    const std::optional<ReferenceTask> task = table.referenceWanted(EngineKind::Gpu);
+    ASSERT_TRUE(task);
+    EXPECT_EQ(task->engine, EngineKind::Gpu);
+    EXPECT_EQ(task->spp, 16);
+}
+
+TEST(ReferenceMemory, FindsAFinishedReferenceOfTheSameTaskOnlyAndKeepsTheNewest)
+{
+    ReferenceMemory memory;
+    const ReferenceTask task{.base = request(4), .engine = EngineKind::Gpu, .spp = 16};
+    EXPECT_FALSE(memory.find(task));
+    memory.remember({.task = task, .error = "failed"});
+    EXPECT_FALSE(memory.find(task)) << "a failed reference is asked for again";
+    memory.remember({.task = task, .image = flat(2.0f), .ownRelMse = 0.25, .seconds = 3.0});
+    const std::optional<FinishedReference> found = memory.find(task);
+    ASSERT_TRUE(found);
+    EXPECT_EQ(found->image->pixels()[0], vec3(2.0f));
+    EXPECT_EQ(found->ownRelMse, 0.25);
+    EXPECT_TRUE(found->fromCache) << "not rendered for the render that asks";
+    EXPECT_EQ(found->seconds, 0.0);
+    ReferenceTask otherSeed = task;
+    otherSeed.base.settings.seed += 1;
+    EXPECT_FALSE(memory.find(otherSeed)) << "another seed is another reference";
+    ReferenceTask otherEngine = task;
+    otherEngine.engine = EngineKind::Multi;
+    EXPECT_FALSE(memory.find(otherEngine));
+    // Past kKept, the oldest goes first.
+    for (std::size_t i = 0; i < ReferenceMemory::kKept; ++i)
+    {
+        ReferenceTask t = task;
+        t.spp = 100 + int(i);
+        memory.remember({.task = t, .image = flat(1.0f)});
+    }
+    EXPECT_FALSE(memory.find(task));
+    ReferenceTask newest = task;
+    newest.spp = 100 + int(ReferenceMemory::kKept) - 1;
+    EXPECT_TRUE(memory.find(newest));
 }
 
 TEST(ConvergencePlot, ALinePerEngineAndStrategyOfAWorkEachPointAgainstItsOwnReference)

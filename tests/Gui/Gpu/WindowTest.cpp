@@ -524,6 +524,37 @@ TEST(GpuWindow, CpuEnginesRenderBesideTheGpuInOneTimingsRow)
     ASSERT_EQ(state["plot"].size(), 3u) << "a line per engine";
 }
 
+TEST(GpuWindow, TogglesChangeTheRenderAsTheyShould)
+{
+    // Issue 38: the toggles of the GPU window, read from its timings table: on cornell-box-lights at equal spp
+    // nee-mis's relMSE is below the mixture's (the scene's lights are small: the BSDF half of the mixture rarely
+    // finds them); random samples are another image than Sobol's; stratified at 10 spp renders its square, 9.
+    const ::rt::test::ScratchDir dir;
+    RT_RUN_WINDOW(run, "--validation --scene cornell-box-lights --width 48 --spp 10 --seed 5 --sampling sobol "
+                       "--window-size 1280x800 --frames 2" + stateJsonArgument(dir) +
+                           " --actions 'estimator=mixture;wait-reference;estimator=nee-mis;wait-reference;"
+                           "sampling=random;wait-reference;sampling=stratified;wait-reference'");
+    const nlohmann::json state = nlohmann::json::parse(::rt::test::fileContents(dir / "state.json"));
+    const auto find = [&](const std::string& estimator, const std::string& sampling) {
+        for (const nlohmann::json& cell : state["timings"])
+            if (cell["estimator"] == estimator && cell["sampling"] == sampling)
+                return cell;
+        ADD_FAILURE() << "no row of " << estimator << " " << sampling << ": " << state["timings"].dump(2);
+        return nlohmann::json{{"rel_mse", 0.0}, {"spp", 0}};
+    };
+    const nlohmann::json mixture = find("mixture", "sobol");
+    const nlohmann::json neeMis = find("nee-mis", "sobol");
+    const nlohmann::json random = find("nee-mis", "random");
+    const nlohmann::json stratified = find("nee-mis", "stratified");
+    ASSERT_EQ(state["timings"].size(), 4u);
+    for (const nlohmann::json& cell : state["timings"])
+        ASSERT_TRUE(cell["rel_mse"].is_number()) << cell.dump(2);
+    EXPECT_LT(double(neeMis["rel_mse"]), double(mixture["rel_mse"])) << "nee-mis lowers relMSE against mixture";
+    EXPECT_NE(double(random["rel_mse"]), double(neeMis["rel_mse"])) << "random and sobol are other samples";
+    EXPECT_EQ(neeMis["spp"], 10);
+    EXPECT_EQ(stratified["spp"], 9) << "stratified takes the square below 10";
+}
+
 TEST(GpuWindow, RestirDiAccumulatesTheHeadlessImage)
 {
     // The panel's estimator switched to restir-di (issue 36): the window runs its passes per sample with a
