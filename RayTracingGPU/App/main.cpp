@@ -37,7 +37,7 @@ struct WindowFlags
     std::string stateJson;
     std::string actions;
     std::string windowSize; // empty: the panel and the image side by side
-    int samplesPerFrame = 1;
+    int samplesPerFrame = 0;
     std::string rayTracing = "on";
     std::string accumulate = "on";
 };
@@ -70,9 +70,11 @@ void addWindowOptions(CLI::App& app, WindowFlags& w)
                    "Window: scripted input, one per frame, through the panel's own functions, separated by ';':\n" +
                        rt::gpu::gui::actionHelp());
     app.add_option("--samples-per-frame", w.samplesPerFrame,
-                   "Window: samples per pixel traced each frame (the window stops at --spp when it is given, with "
-                   "the image of a headless render of that spp; without it, it accumulates until closed)")
-        ->check(CLI::Range(1, rt::gpu::gui::kMaxSamplesPerFrame))
+                   "Window: samples per pixel traced each frame; 0: as many as take about 50 ms of the device's time, "
+                   "measured frame by frame (few samples a frame leave each launch waiting for its slowest paths: "
+                   "1 a frame took 3.9x a headless render's time on an H200). The window stops at --spp when it is "
+                   "given, with the image of a headless render of that spp; without it, it accumulates until closed")
+        ->check(CLI::Range(0, rt::gpu::gui::kMaxSamplesPerFrame))
         ->capture_default_str();
     app.add_option("--raytracing", w.rayTracing, "Window: ray tracing, or (off) the rasterised preview")
         ->capture_default_str();

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "Engine/CostTarget.h"
+#include "Render/BatchPlan.h"
 #include "Engine/GpuEngine.h"
 #include "Engine/GpuScene.h"
 #include "Engine/RenderLimits.h"
@@ -250,6 +251,13 @@ void ProgressiveFrame::recordSamples(VkCommandBuffer cmd, std::uint32_t slot, co
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
+}
+
+std::uint32_t autoFrameSamples(std::uint32_t samples, double seconds, std::uint32_t most)
+{
+    const double last = std::max(samples, 1u);
+    const double next = workForTarget(last, seconds, 4.0 * last, kFrameTargetSeconds);
+    return static_cast<std::uint32_t>(std::clamp(std::floor(next), 1.0, double(std::max(most, 1u))));
 }
 
 CostSummary summarizeCost(const shader::CostStats& stats)

@@ -42,6 +42,18 @@ struct FrameRequest
     bool cost = false; // time the samples (heatmap); needs costAvailable()
 };
 
+/// What a window frame's samples aim at on the device's clock when their count is automatic: long enough that
+/// each launch's tail (the wait for its slowest paths: about 2 ms on an H200 at 600x600) costs a few percent
+/// against a headless render of the same samples, which batches them (rt_gpu_bench, cornell-box-lights 600x600,
+/// 64 spp: 1 sample a frame took 3.9x the headless device time, 16 took 1.07x, 64 0.96x; docs/notebook/
+/// PERFORMANCE.md §33), and short enough for 20 frames a second.
+inline constexpr double kFrameTargetSeconds = 0.05;
+
+/// The samples per pixel of the next frame whose count is automatic, after one of `samples` took `seconds` of the
+/// device's time (<= 0: unmeasured): kFrameTargetSeconds' worth, at most 4x `samples` (a first frame measured in
+/// microseconds is not trusted with a second's samples), at least 1 and at most `most`.
+std::uint32_t autoFrameSamples(std::uint32_t samples, double seconds, std::uint32_t most);
+
 /// One frame's timed samples, summarised: the heatmap's legend and automatic scale.
 struct CostSummary
 {

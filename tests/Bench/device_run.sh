@@ -43,6 +43,9 @@
 #                                      (tests/Bench/thesis_figures.sh; its images packed by pfm_pack.py)
 #   tests/Bench/device_run.sh mpi      tests/Cli/mpi.sh and mpi_compare.sh on this driver: split renders, errors,
 #                                      Ctrl-C, a killed rank; a distributed --compare
+#   tests/Bench/device_run.sh window-frames  issue 38: the GPU window's frames (1 to 64 samples each, one submission
+#                                      per frame) against headless renders, on the device's clock (rt_gpu_bench;
+#                                      ROUNDS repetitions, interleaved)
 #   tests/Bench/device_run.sh variants RENDERS_FILE  the shader variants carried in .devcarry/variants/ (VARIANTS
 #                                      of device_carry.sh) against the build's own shaders, render by render
 #                                      (shader_variants.sh)
@@ -76,6 +79,11 @@ tests)
     "$bin/ray-tracing-gpu" --headless --quiet --scene rtrol-cornell-glass --width 400 --spp 64 --heatmap "$out/glass-cost.png" \
         --stats "$out/glass-cost.json" --output "$out/glass-cost-image.png"
     RT_GLTF_MODELS=$PWD/.devcarry/gltf bash tests/Cli/scene_files.sh "$bin/ray-tracing-gpu" . | grep -v "^ok"
+    ;;
+window-frames)
+    "$bin/rt_gpu_bench" --benchmark_enable_random_interleaving=true --benchmark_repetitions="${ROUNDS:-5}" \
+        --benchmark_report_aggregates_only=true --benchmark_out="$out/window-frames.json" --benchmark_out_format=json 2>&1 |
+        tail -60
     ;;
 heavy)
     "$bin/rt_gpu_tests" --gtest_brief=1 --gtest_filter="${FILTER:-Heavy/*}" 2>&1 | tail -40

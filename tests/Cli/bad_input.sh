@@ -62,8 +62,8 @@ expect_window_error "window size height too small" "the height must be from 160"
 expect_window_error "save to a .jpg name" "expected save=FILE.png" --actions "save=x.jpg"
 expect_window_error "font size out of range" "font-size=an integer in \[10, 32\]" --actions "font-size=40"
 if [[ $(basename "$app") == ray-tracing-gpu ]]; then
-    expect_window_error "samples per frame above the cap" "not in range 1 to 256" --samples-per-frame 1000
-    expect_window_error "samples action above the cap" "samples=an integer in \[1, 256\]" --actions "samples=1000"
+    expect_window_error "samples per frame above the cap" "not in range 0 to 256" --samples-per-frame 1000
+    expect_window_error "samples action above the cap" "samples=an integer in \[0, 256\]" --actions "samples=1000"
 fi
 
 if [[ $(basename "$app") == ray-tracing-gpu ]]; then

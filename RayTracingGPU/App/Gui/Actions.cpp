@@ -31,7 +31,8 @@ const std::vector<ActionSpec>& specs()
                  const auto ticks = parseReal(v);
                  return v == "auto" || (ticks && std::isfinite(*ticks) && *ticks >= 1.0f);
              }},
-            {"samples", ActionValue::Integer, "N", "samples per pixel per frame", 1, double(kMaxSamplesPerFrame)},
+            {"samples", ActionValue::Integer, "N", "samples per pixel per frame (0: by the device's time, about 50 ms a frame)",
+             0, double(kMaxSamplesPerFrame)},
             {"aperture", ActionValue::Real, "UNITS", "lens diameter (0: pinhole)", 0},
             {"focus", ActionValue::Real, "UNITS", "focus distance", 1e-4},
             {"font", ActionValue::Text, "NAME", "font of the panel, as the panel lists it", 0, 1e30,

@@ -71,7 +71,7 @@ void Controls::setAutoCostScale(bool on) { m_state->display.autoCostScale = on; 
 void Controls::setCostScale(float ticksPerSample) { m_state->display.costScale = std::max(ticksPerSample, 1.0f); }
 void Controls::setSamplesPerFrame(int samples)
 {
-    m_state->display.samplesPerFrame = held(*m_state, "samples per frame", samples, 1, kMaxSamplesPerFrame, "");
+    m_state->display.samplesPerFrame = held(*m_state, "samples per frame", samples, 0, kMaxSamplesPerFrame, "");
 }
 void Controls::setStopSpp(int spp)
 {

@@ -24,6 +24,7 @@ struct PanelInfo
     double framesPerSecond = 0.0;
     double megaSamplesPerSecond = 0.0; // camera samples (paths) per second, in millions
     int accumulatedSpp = 0;
+    int samplesPerFrame = 1; // of the last frame (the automatic count, or the panel's)
     std::string engineStatus; // a CPU engine's render: its progress, or the last one's spp and time
     float costMax = 0.0f; // largest ticks per sample of the last timed frame
     float costScale = 1.0f; // the palette's top in use (automatic or not)

@@ -72,7 +72,8 @@ public:
           m_display(m_engine.context().device(), m_engine.shaderDir(), m_presenter.renderPass()),
           m_imgui(m_engine.context(), window.handle(), m_presenter.renderPass(), kFramesInFlight),
           m_references(m_engine, kFramesInFlight, compare::defaultReferenceCacheDir()),
-          m_state(options.initial), m_controls(m_state), m_slotAccumulation(kFramesInFlight, 0)
+          m_state(options.initial), m_controls(m_state), m_slotAccumulation(kFramesInFlight, 0),
+          m_slotSamples(kFramesInFlight, 0)
     {
         m_panel.savePath = options.savePath;
         m_drawn.window = window.framebufferSize();
@@ -397,6 +398,7 @@ private:
         info.framesPerSecond = m_throughput.framesPerSecond();
         info.megaSamplesPerSecond = m_throughput.samplesPerSecond() * 1e-6;
         info.accumulatedSpp = static_cast<int>(m_accumulatedSpp);
+        info.samplesPerFrame = static_cast<int>(frameSamples());
         if (m_state.engine != EngineKind::Gpu)
             info.engineStatus = m_cpu.busy() ? fmt::format("{}: rendering, {:.0f}%", rt::gui::engineLabel(m_state.engine),
                                                            100.0 * m_cpu.fraction())
@@ -505,16 +507,17 @@ private:
         }
         m_traced = m_state.image;
 
-        auto count = static_cast<std::uint32_t>(m_state.display.samplesPerFrame);
+        std::uint32_t count = frameSamples();
         if (m_state.display.stopAtSpp && m_state.image.accumulate)
         {
             const auto target = static_cast<std::uint32_t>(m_state.image.request.settings.trueSpp());
             count = std::min(count, target > m_accumulatedSpp ? target - m_accumulatedSpp : 0u);
         }
         if (count == 0)
-            return m_references.recordSamples(cmd, frame.slot, std::uint32_t(m_state.display.samplesPerFrame), *m_scene);
+            return m_references.recordSamples(cmd, frame.slot, frameSamples(), *m_scene);
         m_renderer.recordSamples(cmd, frame.slot, requestOf(m_state.image), m_nextSample, count);
         m_slotAccumulation.at(frame.slot) = m_accumulation;
+        m_slotSamples.at(frame.slot) = count;
         // Without accumulation the indices still advance, so each frame shows new noise, not the same frame.
         m_nextSample += count;
         m_accumulatedSpp += count;
@@ -531,8 +534,7 @@ private:
             m_renderer.recordClear(frame.commands);
         if (m_cpu.busy())
             return 0;
-        return m_references.recordSamples(frame.commands, frame.slot, std::uint32_t(m_state.display.samplesPerFrame),
-                                          *m_scene);
+        return m_references.recordSamples(frame.commands, frame.slot, frameSamples(), *m_scene);
     }
 
     /// The request a CPU engine renders for the panel: its settings, the window's camera where it moved.
@@ -618,10 +620,20 @@ private:
         }
     }
 
-    /// Adds the device time of `slot`'s last frame to the accumulation when its samples were of it.
+    /// Samples per pixel of the next frame: the panel's, or the automatic count.
+    std::uint32_t frameSamples() const
+    {
+        return m_state.display.samplesPerFrame > 0 ? std::uint32_t(m_state.display.samplesPerFrame) : m_autoSamples;
+    }
+
+    /// Adds the device time of `slot`'s last frame to the accumulation when its samples were of it, and sizes the
+    /// automatic count by it.
     void takeTraceSeconds(std::uint32_t slot)
     {
         const std::optional<double> seconds = m_renderer.takeTraceSeconds(slot);
+        if (seconds && m_slotSamples.at(slot) > 0)
+            m_autoSamples = autoFrameSamples(m_slotSamples[slot], *seconds, std::uint32_t(kMaxSamplesPerFrame));
+        m_slotSamples.at(slot) = 0;
         if (m_slotAccumulation.at(slot) != m_accumulation)
             return;
         if (seconds)
@@ -815,6 +827,8 @@ private:
     // compilation.
     std::uint64_t m_accumulation = 0;
     std::vector<std::uint64_t> m_slotAccumulation;
+    std::vector<std::uint32_t> m_slotSamples; // the samples each slot's frame traced for the image (0: none)
+    std::uint32_t m_autoSamples = 1; // the automatic count of the next frame
     double m_traceSeconds = 0.0;
     bool m_untimed = false; // a frame of it had no timestamps
     std::uint32_t m_nextPointSpp = 1;

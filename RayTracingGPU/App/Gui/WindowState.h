@@ -49,7 +49,7 @@ inline constexpr float kPanelFontPixels = 15.0f;
 
 struct DisplaySettings
 {
-    int samplesPerFrame = 1;
+    int samplesPerFrame = 0; // 0: automatic, about kFrameTargetSeconds of the device's time (ProgressiveFrame.h)
     bool stopAtSpp = false; // tracing stops at the settings' spp (ImageSettings::request); false: never
     bool autoCostScale = true; // the heatmap's top follows the image: 95 % of the pixels are below it
     float costScale = 1.0e5f; // otherwise: ticks per sample at the top of the palette

@@ -71,8 +71,8 @@ TEST(WindowActions, ValuesOutOfRangeAreRefusedNamingTheLimit)
         }
         return std::string("accepted");
     };
-    EXPECT_NE(error("samples=1000").find("[1, 256]"), std::string::npos) << error("samples=1000");
-    EXPECT_NE(error("samples=257").find("[1, 256]"), std::string::npos);
+    EXPECT_NE(error("samples=1000").find("[0, 256]"), std::string::npos) << error("samples=1000");
+    EXPECT_NE(error("samples=257").find("[0, 256]"), std::string::npos);
     EXPECT_NE(error("font-size=9").find("[10, 32]"), std::string::npos) << error("font-size=9");
     EXPECT_NE(error("font-size=33").find("[10, 32]"), std::string::npos);
     for (const char* name : {"save=x.jpg", "save=x.PNG", "save=x", "save=.png", "save=x.pfm"})

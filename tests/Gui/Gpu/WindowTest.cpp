@@ -442,29 +442,36 @@ TEST(GpuWindow, TimingsAndPlotMeasureTheRenderAsCompareDoes)
     EXPECT_NEAR(double(row["efficiency"]), 1.0 / (double(row["rel_mse"]) * double(row["seconds"])),
                 1e-6 * double(row["efficiency"]));
 
+    // A point at the first frame that reaches 1, 2, 4 and 8 spp: the frames' samples are sized by time, so a
+    // frame may pass more than one of them.
     ASSERT_EQ(state["plot"].size(), 1u) << "one line: one engine x strategy";
     const nlohmann::json& points = state["plot"][0]["points"];
-    ASSERT_EQ(points.size(), 4u) << points.dump(2);
+    ASSERT_GE(points.size(), 2u) << points.dump(2);
     for (std::size_t i = 0; i < points.size(); ++i)
     {
-        EXPECT_EQ(points[i]["spp"], 1 << i);
         ASSERT_TRUE(points[i]["rel_mse"].is_number()) << "every point measured";
         if (i > 0)
         {
+            EXPECT_GT(int(points[i]["spp"]), int(points[i - 1]["spp"]));
             EXPECT_GT(double(points[i]["seconds"]), double(points[i - 1]["seconds"])) << "monotone time";
         }
     }
-    EXPECT_LT(double(points[0]["seconds"]), 0.5 * double(points[3]["seconds"]))
+    const nlohmann::json& first = points.front();
+    const nlohmann::json& last = points.back();
+    EXPECT_EQ(first["spp"], 1) << "the first frame traces one sample";
+    EXPECT_EQ(last["spp"], 8);
+    EXPECT_LT(double(first["seconds"]), 0.5 * double(last["seconds"]))
         << "1 spp takes a fraction of 8: no compilation in the first point";
-    EXPECT_GT(double(points[0]["rel_mse"]), double(points[3]["rel_mse"]));
-    EXPECT_DOUBLE_EQ(double(points[3]["seconds"]), double(row["seconds"])) << "the render is the line's last point";
+    EXPECT_GT(double(first["rel_mse"]), double(last["rel_mse"]));
+    EXPECT_DOUBLE_EQ(double(last["seconds"]), double(row["seconds"])) << "the render is the line's last point";
     const nlohmann::json& drawn = state["layout"]["plot_drawn"];
     EXPECT_EQ(drawn["x_label"], "render time (s)");
     EXPECT_EQ(drawn["y_label"], "relMSE");
     EXPECT_EQ(drawn["lines"].size(), 1u);
     EXPECT_TRUE(std::filesystem::exists(dir / "plot.png"));
     const std::string csv = ::rt::test::fileContents(dir / "plot.csv");
-    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5) << "a header and the four points:\n" << csv;
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), std::ptrdiff_t(points.size()) + 1)
+        << "a header and the points:\n" << csv;
 
     for (const Extent size : {Extent{1280, 800}, Extent{1920, 1080}})
     {
@@ -611,7 +618,8 @@ TEST(GpuWindow, RoughnessSliderRendersWhatTheFlagRenders)
 TEST(GpuWindow, CameraMoveRestartsAccumulation)
 {
     const ::rt::test::ScratchDir dir;
-    RT_RUN_WINDOW(run, "--width 320 --aspect 1.6 --validation --scene cornell-box-lights --frames 1 --actions "
+    RT_RUN_WINDOW(run, "--width 320 --aspect 1.6 --validation --scene cornell-box-lights --frames 1 "
+                       "--samples-per-frame 1 --actions "
                        "'frames=6;save=" + (dir / "before.png").string() + ";camera=forward:100;save=" +
                            (dir / "after.png").string() + "'");
     const std::regex spp(R"(\((\d+) spp\))");
