@@ -1398,6 +1398,73 @@ def section_roulette():
     ]
 
 
+WINDOWS = {
+    "cpu": "window/cpu-window-vs-headless.txt",
+    "cpu_machine": CI_UNSTATED,
+    "cpu_command": "xvfb-run -a bash tests/Bench/window_vs_headless.sh build/bin/ray-tracing-cpu 7",
+    "cpu_notebook": "## 32.",
+    "gpu": "window/window-frames-h200.json",
+    "gpu_command": "bash tests/Bench/device_carry.sh; then on the GPU host: ROUNDS=5 bash tests/Bench/device_run.sh window-frames",
+    "gpu_notebook": "## 33.",
+    "date": "2026-11-28",
+}
+
+
+def section_windows():
+    """The windows' renders against headless ones: the CPU window's medians, the GPU window's frames."""
+    text = results_path(WINDOWS["cpu"]).read_text()
+    cpu = re.findall(r"^(single|multi):\s+median window / headless ([0-9.]+) \(min ([0-9.]+), max ([0-9.]+), (\d+) rounds\)",
+                     text, re.M)
+    if len(cpu) != 2:
+        raise ParseError(f"{WINDOWS['cpu']}: the single and multi medians expected")
+    header = re.sub(r"^\d{4}-\d\d-\d\d\s+", "", text.splitlines()[0].lstrip("# "))
+    data = read_json(WINDOWS["gpu"])
+    medians = {}
+    device = None
+    for b in data["benchmarks"]:
+        if b.get("aggregate_name") == "median":
+            medians[b["run_name"].replace("/manual_time", "")] = b["real_time"]
+            device = b.get("label", device)
+    rows = []
+    for size in (600, 64):
+        headless = medians[f"Headless/{size}/64"]
+        for per in ((1, 4, 16, 64, 0) if size == 600 else (1, 64, 0)):
+            window = medians[f"WindowFrames/{size}/64/{per}"]
+            name = "by time (the default)" if per == 0 else str(per)
+            rows.append(f"| {size}x{size} | {name} | {window:.2f} | {headless:.2f} | {window / headless:.2f} |")
+    return [
+        "## 17. The windows' renders against headless ones (issue 38)",
+        "",
+        "A window's timing of a render should be a headless render's. The CPU window, single and multi core "
+        f"({header}): the median of window / headless render seconds over interleaved rounds.",
+        "",
+        "| engine | window / headless (median) | min | max | rounds |",
+        "|---|---|---|---|---|",
+        *[f"| {e} | {m} | {lo} | {hi} | {n} |" for e, m, lo, hi, n in cpu],
+        "",
+        sources([("Machine", WINDOWS["cpu_machine"]), ("Date", date_text(WINDOWS["date"])),
+                 ("Results", link(WINDOWS["cpu"])), ("Notebook", notebook_link(WINDOWS["cpu_notebook"]))]),
+        "",
+        code(WINDOWS["cpu_command"]),
+        "",
+        f"The GPU window on an {device_name(device)} (the lent machines have no display: `rt_gpu_bench` records the "
+        "window's own frames, one submission each, and adds the timestamps around their samples as its table does; "
+        "headless is `GpuEngine` through the render driver; cornell-box-lights, 64 spp, medians of 5 interleaved "
+        "repetitions, device milliseconds). Few samples a frame leave each launch waiting for its slowest paths; "
+        "the window now sizes its frames by time.",
+        "",
+        "| size | samples a frame | window ms | headless ms | window / headless |",
+        "|---|---|---|---|---|",
+        *rows,
+        "",
+        sources([("Machine", device_name(device) + ", 16 Xeon cores"), ("Date", date_text(WINDOWS["date"])),
+                 ("Results", link(WINDOWS["gpu"]) + " (and its notes, " + link("window/window-frames-h200.txt") + ")"),
+                 ("Notebook", notebook_link(WINDOWS["gpu_notebook"]))]),
+        "",
+        code(WINDOWS["gpu_command"]),
+    ]
+
+
 def render():
     runs = compare_runs()
     parts = [
@@ -1433,6 +1500,7 @@ def render():
         section_rays(),
         section_cycles(),
         section_roulette(),
+        section_windows(),
     ]
     titles = [p[0][3:] for p in parts[1:]]
     parts[0] += ["", "Contents: " + " · ".join(f"[{t}](#{slugify(t)})" for t in titles)]
