@@ -186,16 +186,26 @@ bool ProgressiveFrame::preparePipeline(const FrameRequest& request) const
 
 void ProgressiveFrame::warmUp(const FrameRequest& request)
 {
-    if (request.cost || request.settings.estimator == Estimator::RestirDi)
+    if (request.cost)
         return;
+    const bool restir = request.settings.estimator == Estimator::RestirDi;
+    if (restir)
+        ensureRestir();
     const vk::Device& device = m_engine->context().device();
     vkDeviceWaitIdle(device.Handle()); // slot 0's uniforms and the images are rewritten below
     const shader::RenderUniforms uniforms = uniformsOf(request);
     std::memcpy(m_uniforms.at(0).mapped(), &uniforms, sizeof(uniforms));
+    const VkExtent2D pixel{1, 1};
     vk::submitAndWait(device, m_engine->context().commandPool(), [&](VkCommandBuffer cmd) {
-        recordClear(cmd); // the images' first layout, when they have none yet
-        m_engine->tracer().recordLaunch(cmd, {&m_sets.at(0).set, 1}, uniforms,
-                                        integratorOf(uniforms, request.settings.spp), 0, 1, VkExtent2D{1, 1});
+        recordClear(cmd); // the images' first layout, when they have none yet; no restir history after it
+        if (restir)
+            for (const RestirPass pass : kRestirPasses)
+                m_engine->tracer().restir().recordPass(cmd, {&m_sets.at(0).set, 1}, uniforms,
+                                                       m_engine->tracer().gpuScene().pipelineScene(), pass, 0, pixel, 0,
+                                                       1, false);
+        else
+            m_engine->tracer().recordLaunch(cmd, {&m_sets.at(0).set, 1}, uniforms,
+                                            integratorOf(uniforms, request.settings.spp), 0, 1, pixel);
     });
 }
 

@@ -93,8 +93,9 @@ public:
 
     /// Traces one sample of `request` at one pixel and waits, the device idle before: a driver that finishes a
     /// pipeline's compilation at its first launch (lavapipe: seconds) does it here rather than in the first timed
-    /// frame, as GpuEngine's beginFrame does. The accumulation image is left cleared but for that pixel: the
-    /// caller records a clear before its samples. restir-di's passes and the heatmap's pipeline are not warmed up.
+    /// frame, as GpuEngine's beginFrame does (restir-di: its three passes at that pixel). The accumulation image is
+    /// left cleared but for that pixel: the caller records a clear before its samples. The heatmap's pipeline is
+    /// not warmed up (its frames are not timed renders).
     void warmUp(const FrameRequest& request);
 
     /// Records the clearing of the accumulation and cost images: the next sample starts a new image.
