@@ -58,6 +58,12 @@ void GpuStartup::start(const Options& options)
     m_resolved.notify_all();
 }
 
+bool GpuStartup::starting() const
+{
+    std::lock_guard lock(m_mutex);
+    return m_thread.joinable() && m_status.state == State::Starting;
+}
+
 GpuStartup::Status GpuStartup::status() const
 {
     std::lock_guard lock(m_mutex);

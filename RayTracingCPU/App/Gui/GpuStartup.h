@@ -48,6 +48,8 @@ public:
     /// Starts a deferred start; nothing when it has started (or cannot). Any thread.
     void begin();
     Status status() const;
+    /// A start has begun and not ended: the GPU engine is being made on its own thread now.
+    bool starting() const;
     /// Blocks until the engine is ready (returns it) or unavailable (nullptr), or until `giveUp()` is true
     /// (nullptr; polled every 50 ms).
     RenderEngine* wait(const std::function<bool()>& giveUp);

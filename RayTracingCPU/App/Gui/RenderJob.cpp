@@ -201,6 +201,15 @@ void RenderJob::run(const JobRequest& request, std::shared_ptr<RenderControl> co
     try
     {
         RenderEngine* engine = engineFor(request.engine, *control);
+        // A GPU engine being made on its own thread (a deferred start begins after the first render) would share
+        // the CPU with this render and its timing: the render waits for it.
+        if (engine && request.engine != EngineKind::Gpu && m_gpu.starting())
+        {
+            setPhase(JobPhase::WaitingForGpu);
+            m_gpu.wait([&] { return control->cancelRequested(); });
+            if (control->cancelRequested())
+                engine = nullptr;
+        }
         if (!engine)
         {
             report({.request = request, .cancelled = true});
