@@ -68,6 +68,12 @@ std::uint64_t availableMemoryBytes()
     return 0;
 }
 
+std::uint64_t availableMemoryBytesReplacing(std::uint64_t heldBytes)
+{
+    const std::uint64_t available = availableMemoryBytes();
+    return available > 0 ? available + heldBytes : 0;
+}
+
 void checkMemory(std::uint64_t neededBytes, const std::string& what, std::uint64_t availableBytes)
 {
     if (availableBytes == 0 || neededBytes <= availableBytes)

@@ -34,6 +34,10 @@ std::string describeBytes(std::uint64_t bytes);
 /// 0 when neither can be read.
 std::uint64_t availableMemoryBytes();
 
+/// What a render that replaces one holding `heldBytes` can have: availableMemoryBytes() plus what the old one
+/// frees (a window that holds a 4K render and asks for another 4K needs no more than it has); 0 when unknown.
+std::uint64_t availableMemoryBytesReplacing(std::uint64_t heldBytes);
+
 /// Throws UsageError "<what> needs about N GB of memory; this machine has M GB available" when `neededBytes`
 /// exceeds `availableBytes` (nothing when availableBytes is 0: unknown).
 void checkMemory(std::uint64_t neededBytes, const std::string& what, std::uint64_t availableBytes);

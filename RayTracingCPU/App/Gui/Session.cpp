@@ -86,7 +86,7 @@ bool Session::tryImage(const RenderRequest& candidate)
         if (const std::optional<SceneSummary> summary = m_job.sceneSummary(candidate.scene.id))
             checkMemory(renderBytes(s, summary->objects),
                         fmt::format("a {}x{} render of {}", s.width, s.height(), candidate.scene.id),
-                        availableMemoryBytes());
+                        availableMemoryBytesReplacing(memoryEstimate().value_or(0)));
     }
     catch (const Error& e)
     {

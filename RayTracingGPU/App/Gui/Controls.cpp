@@ -97,7 +97,7 @@ bool Controls::setSetting(const Setting& setting, std::string_view value)
     {
         checkMemory(renderBytes(changed, m_state->sceneObjects),
                     fmt::format("a {}x{} render of {}", changed.width, changed.height(), m_state->image.request.scene.id),
-                    availableMemoryBytes());
+                    availableMemoryBytesReplacing(renderBytes(m_state->image.request.settings, m_state->sceneObjects)));
     }
     catch (const Error& e)
     {
