@@ -4,27 +4,30 @@
 
 namespace rt::gui
 {
-double FramePacer::interval(bool rendering, bool automating)
+double FramePacer::interval(bool rendering, bool automating, bool keyHeld)
 {
+    if (keyHeld)
+        return kHeldKeyInterval;
     if (rendering)
         return kRenderingInterval;
     return automating ? kAutomatedIdleInterval : kIdleInterval;
 }
 
-double FramePacer::timeout(bool rendering, bool automating, Clock::time_point now) const
+double FramePacer::timeout(bool rendering, bool automating, Clock::time_point now, bool keyHeld) const
 {
     const double since = std::chrono::duration<double>(now - m_lastFrame).count();
-    return std::clamp(interval(rendering, automating) - since, 1e-3, interval(rendering, automating));
+    const double wanted = interval(rendering, automating, keyHeld);
+    return std::clamp(wanted - since, 1e-3, wanted);
 }
 
 FramePacer::Frame FramePacer::next(bool rendering, bool automating, std::uint64_t inputEvents, bool woken,
-                                   Clock::time_point now)
+                                   Clock::time_point now, bool keyHeld)
 {
     const bool input = inputEvents != m_inputEvents;
     m_inputEvents = inputEvents;
-    const bool due = std::chrono::duration<double>(now - m_lastFrame).count() >= interval(rendering, automating);
+    const bool due = std::chrono::duration<double>(now - m_lastFrame).count() >= interval(rendering, automating, keyHeld);
     Frame frame = Frame::Skip;
-    if (input)
+    if (input || (keyHeld && due))
         frame = Frame::Input;
     else if (woken || !rendering)
         frame = Frame::News;

@@ -5,8 +5,10 @@
 // saw 1.0x for 1.4x on a loaded machine). So while a render runs the window draws a frame every
 // kRenderingInterval, when the render thread has news (a render ended), and at once for a person's input (a
 // click must not wait half a second); those last frames are counted, and the timings table marks a render
-// that had any. The pointer merely moving over the window draws nothing until the next paced frame. Idle,
-// the window draws on any event or every kIdleInterval.
+// that had any. A camera key held down (W/A/S/D/Q/E) is input at every frame, kHeldKeyInterval apart: a held
+// key sends no events (or X's repeats, 25 a second), and paced frames moved the camera in steps half a second
+// apart, at a fifth of its speed. The pointer merely moving over the window draws nothing until the next paced
+// frame. Idle, the window draws on any event or every kIdleInterval.
 #pragma once
 
 #include <chrono>
@@ -23,6 +25,7 @@ public:
     static constexpr double kRenderingInterval = 0.5; // seconds between frames while a render runs
     static constexpr double kIdleInterval = 0.25;
     static constexpr double kAutomatedIdleInterval = 1.0 / 60.0; // --actions step one per frame
+    static constexpr double kHeldKeyInterval = 1.0 / 60.0; // while a camera key is held
 
     enum class Frame
     {
@@ -32,15 +35,16 @@ public:
         Input // a person's input (GlWindow::inputEvents)
     };
 
-    /// The longest the frame loop waits for events before the next frame is due.
-    double timeout(bool rendering, bool automating, Clock::time_point now) const;
+    /// The longest the frame loop waits for events before the next frame is due (`keyHeld`: a camera key is down).
+    double timeout(bool rendering, bool automating, Clock::time_point now, bool keyHeld = false) const;
 
-    /// After the wait: which frame to draw, given the window's input count and whether the render thread
-    /// woke it. A frame other than Skip counts as drawn.
-    Frame next(bool rendering, bool automating, std::uint64_t inputEvents, bool woken, Clock::time_point now);
+    /// After the wait: which frame to draw, given the window's input count, whether the render thread woke it
+    /// and whether a camera key is held. A frame other than Skip counts as drawn.
+    Frame next(bool rendering, bool automating, std::uint64_t inputEvents, bool woken, Clock::time_point now,
+               bool keyHeld = false);
 
 private:
-    static double interval(bool rendering, bool automating);
+    static double interval(bool rendering, bool automating, bool keyHeld);
 
     std::uint64_t m_inputEvents = 0;
     Clock::time_point m_lastFrame{};

@@ -119,6 +119,14 @@ void GlWindow::resize(int width, int height)
 
 std::uint64_t GlWindow::inputEvents() const { return g_inputEvents; }
 
+bool GlWindow::cameraKeyHeld() const
+{
+    for (const int key : {GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D, GLFW_KEY_Q, GLFW_KEY_E})
+        if (glfwGetKey(m_window.get(), key) == GLFW_PRESS)
+            return true;
+    return false;
+}
+
 void GlWindow::wake()
 {
     g_woken = true;

@@ -42,6 +42,8 @@ public:
     /// Input a person gave so far (keys, characters, mouse buttons, moves and wheel):
     /// the frame loop tells a redraw it had to make for a person from one it chose to make.
     std::uint64_t inputEvents() const;
+    /// A camera key (W, A, S, D, Q, E: Scene/CameraMoves.h) is down now.
+    bool cameraKeyHeld() const;
     /// Wakes waitEvents from another thread (the render thread, when a render ends). Not counted as input.
     static void wake();
     /// Whether wake() was called since the last call.

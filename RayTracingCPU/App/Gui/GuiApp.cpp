@@ -74,9 +74,10 @@ public:
         while (!m_window.closeRequested())
         {
             const bool rendering = m_session.progress().busy;
-            m_window.waitEvents(m_pacer.timeout(rendering, automating(), FramePacer::Clock::now()));
+            const bool keyHeld = m_window.cameraKeyHeld();
+            m_window.waitEvents(m_pacer.timeout(rendering, automating(), FramePacer::Clock::now(), keyHeld));
             const FramePacer::Frame frame = m_pacer.next(rendering, automating(), m_window.inputEvents(),
-                                                         GlWindow::takeWake(), FramePacer::Clock::now());
+                                                         GlWindow::takeWake(), FramePacer::Clock::now(), keyHeld);
             if (frame == FramePacer::Frame::Skip)
                 continue; // the pointer moved over the window during a render: the next paced frame shows it
             m_theme.apply(m_session.display());

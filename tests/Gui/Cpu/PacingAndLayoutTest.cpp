@@ -30,6 +30,19 @@ TEST(FramePacer, DuringARenderOnlyThePaceTheRenderThreadAndInputDrawFrames)
     EXPECT_EQ(pacer.next(true, false, 3, false, at(100.8)), Frame::Skip) << "the same input counts once";
 }
 
+TEST(FramePacer, AHeldCameraKeyIsInputAtEveryFrameWhileARenderRuns)
+{
+    // A held key sends no events (or X's repeats): paced frames half a second apart moved the camera in steps,
+    // at a fifth of its speed (the move is held to 0.1 s a frame).
+    FramePacer pacer;
+    ASSERT_EQ(pacer.next(true, false, 0, false, at(200.0)), Frame::Paced);
+    EXPECT_NEAR(pacer.timeout(true, false, at(200.0), true), FramePacer::kHeldKeyInterval, 1e-9);
+    EXPECT_EQ(pacer.next(true, false, 0, false, at(200.005), true), Frame::Skip) << "not before the interval";
+    EXPECT_EQ(pacer.next(true, false, 0, false, at(200.02), true), Frame::Input) << "the held key is input";
+    EXPECT_EQ(pacer.next(true, false, 0, false, at(200.04), true), Frame::Input);
+    EXPECT_EQ(pacer.next(true, false, 0, false, at(200.06)), Frame::Skip) << "released: paced again";
+}
+
 TEST(FramePacer, IdleAnyEventDrawsAndTheWaitIsShort)
 {
     FramePacer pacer;
