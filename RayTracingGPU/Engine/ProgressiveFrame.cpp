@@ -311,12 +311,20 @@ std::optional<double> ProgressiveFrame::takeTraceSeconds(std::uint32_t slot)
     return m_timestamps.secondsBetween(2 * slot, m_engine->context().device().properties().limits.timestampPeriod);
 }
 
-void ProgressiveFrame::showImage(const Image& image)
+void ProgressiveFrame::showImage(const Image& image, std::span<const float> costPerSample)
 {
     const vk::Device& device = m_engine->context().device();
     const VkExtent2D size = extent();
-    if (image.width() != int(size.width) || image.height() != int(size.height))
-        throw UsageError("ProgressiveFrame::showImage: the image is not of the accumulation's size");
+    if (image.width() != int(size.width) || image.height() != int(size.height) ||
+        (!costPerSample.empty() && costPerSample.size() != image.pixelCount()))
+        throw UsageError("ProgressiveFrame::showImage: the image or its cost is not of the accumulation's size");
+    std::optional<vk::Buffer> costUpload;
+    if (!costPerSample.empty())
+    {
+        costUpload.emplace(device, VkDeviceSize(sizeof(float)) * costPerSample.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                           vk::MemoryUse::Upload);
+        std::memcpy(costUpload->mapped(), costPerSample.data(), sizeof(float) * costPerSample.size());
+    }
     const vk::Buffer upload(device, VkDeviceSize(kAccumulationBytesPerPixel) * size.width * size.height,
                             VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vk::MemoryUse::Upload);
     auto* texels = static_cast<float*>(upload.mapped());
@@ -343,6 +351,18 @@ void ProgressiveFrame::showImage(const Image& image)
                          {VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
                           VK_ACCESS_TRANSFER_WRITE_BIT, kImageStages,
                           VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT});
+        if (costUpload)
+        {
+            vk::imageBarrier(cmd, m_cost.Handle(),
+                             {VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                              VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
+            vkCmdCopyBufferToImage(cmd, costUpload->Handle(), m_cost.Handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                                   &region);
+            vk::imageBarrier(cmd, m_cost.Handle(),
+                             {VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                              VK_ACCESS_TRANSFER_WRITE_BIT, kImageStages,
+                              VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT});
+        }
     });
 }
 

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "Image/Image.h"
@@ -117,10 +118,11 @@ public:
     /// traced nothing or the queue has no timestamps. Call once `slot`'s previous frame has completed.
     std::optional<double> takeTraceSeconds(std::uint32_t slot);
 
-    /// Replaces the accumulation with `image` (extent()'s size) as one sample per pixel, its compensation and cost
-    /// cleared: another engine's render (the window's CPU engines), shown by the display pass and read back by
-    /// readImage as it is. Waits for the device, uploads and waits.
-    void showImage(const Image& image);
+    /// Replaces the accumulation with `image` (extent()'s size) as one sample per pixel, its compensation cleared
+    /// and its cost `costPerSample` (a value per pixel, row by row; empty: cleared): another engine's render (the
+    /// window's CPU engines), shown by the display pass, radiance or heatmap, and read back by readImage as it
+    /// is. Waits for the device, uploads and waits.
+    void showImage(const Image& image, std::span<const float> costPerSample = {});
 
     /// The accumulated estimate (radiance sum / sample count per pixel), read back: submits and waits.
     Image readImage() const;

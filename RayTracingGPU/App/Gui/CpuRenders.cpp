@@ -85,9 +85,14 @@ void CpuRenders::loop()
                 engine->setScene(*render.scene);
                 m_scenes[render.engine] = render.scene;
             }
+            outcome.costUnavailable = render.cost ? engine->costUnavailable(render.request.settings) : std::string();
+            engine->setCostRecording(render.cost && outcome.costUnavailable.empty());
             RenderResult result = rt::render(*engine, render.request, *control);
             if (!result.stats.cancelled)
+            {
                 outcome.result = std::move(result);
+                outcome.cost = engine->costMap();
+            }
         }
         catch (const std::exception& e)
         {

@@ -25,12 +25,15 @@ struct CpuRender
     RenderRequest request;
     EngineKind engine = EngineKind::Multi;
     std::shared_ptr<const Scene> scene; // the scene `request` names, built
+    bool cost = false; // time each pixel (RenderEngine::setCostRecording): the heatmap
 };
 
 struct CpuOutcome
 {
     CpuRender render;
     std::optional<RenderResult> result; // a render that ran to its end
+    CostMap cost; // with CpuRender::cost: each pixel's cost, or empty and why in costUnavailable
+    std::string costUnavailable;
     std::string error; // why it failed
 };
 

@@ -146,7 +146,7 @@ void rayTracingSection(Controls& controls, const WindowState& state, const Panel
             controls.setSamplesPerFrame(samples);
     }
     else
-        ImGui::TextDisabled("%d samples / frame", info.samplesPerFrame);
+        ImGui::TextDisabled("by time: %d a frame now", info.samplesPerFrame);
     if (int spp = display.stopAtSpp ? image.request.settings.spp : 0; ImGui::InputInt("Stop at spp", &spp, 16, 256))
         controls.setStopSpp(spp);
     if (ImGui::IsItemHovered())
@@ -208,8 +208,8 @@ void profilerSection(Controls& controls, const WindowState& state, const PanelIn
                                       displayColor(shader::heatmapColor(float(i) / kSteps)));
     }
     ImGui::Dummy({width, height});
-    ImGui::Text("0 ... %.3g ticks/sample", info.costScale);
-    ImGui::Text("max %.3g ticks/sample", info.costMax);
+    ImGui::Text("0 ... %.3g %s", info.costScale, info.costUnit.c_str());
+    ImGui::Text("max %.3g %s", info.costMax, info.costUnit.c_str());
 }
 
 void statsSection(const WindowState& state, const PanelInfo& info)

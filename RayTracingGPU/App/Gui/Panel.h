@@ -28,6 +28,7 @@ struct PanelInfo
     std::string engineStatus; // a CPU engine's render: its progress, or the last one's spp and time
     float costMax = 0.0f; // largest ticks per sample of the last timed frame
     float costScale = 1.0f; // the palette's top in use (automatic or not)
+    std::string costUnit = "ticks per sample"; // of costMax and costScale: the GPU's, or a CPU engine's map's
     Extent window; // the framebuffer
     Extent image; // the image letterboxed in it (Stats)
 };

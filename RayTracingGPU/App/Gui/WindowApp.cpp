@@ -32,6 +32,7 @@
 #include "Gui/TimingsTable.h"
 #include "Gui/TimingsWindow.h"
 #include "IO/AtomicFile.h"
+#include "Image/Heatmap.h"
 #include "Image/ImageIO.h"
 #include "SceneFile/SceneFile.h"
 #include "SceneFile/SceneFileWatch.h"
@@ -405,6 +406,7 @@ private:
                                              : m_cpuStatus;
         info.costMax = m_cost.max;
         info.costScale = costScale();
+        info.costUnit = m_costUnit;
         info.window = window;
         info.image = m_state.image.extent();
         return info;
@@ -412,7 +414,8 @@ private:
 
     float costScale() const
     {
-        return m_state.display.autoCostScale ? std::max(m_cost.high, 1.0f) : m_state.display.costScale;
+        // The automatic scale's floor only keeps an empty frame's zero away: a CPU map's microseconds are below 1.
+        return m_state.display.autoCostScale ? (m_cost.high > 0.0f ? m_cost.high : 1.0f) : m_state.display.costScale;
     }
 
     /// The layout of a window of `framebuffer` pixels for the panel at the current font scale.
@@ -453,7 +456,10 @@ private:
         }
         m_drawn = {frameExtent, panelDrawn, layout.image, layout.timings, layout.plot};
         if (const CostSummary cost = m_renderer.takeCostSummary(frame->slot); cost.max > 0.0f)
+        {
             m_cost = cost;
+            m_costUnit = "ticks per sample";
+        }
         takeTraceSeconds(frame->slot);
 
         const VkCommandBuffer cmd = frame->commands;
@@ -558,16 +564,18 @@ private:
             m_cpuShown = false;
             return;
         }
-        const CpuRender wanted{.request = cpuRequest(), .engine = m_state.engine, .scene = m_scene};
+        const CpuRender wanted{
+            .request = cpuRequest(), .engine = m_state.engine, .scene = m_scene, .cost = m_state.image.heatmap};
         if (!m_cpuSubmitted || m_cpuSubmitted->request != wanted.request || m_cpuSubmitted->engine != wanted.engine ||
-            m_cpuSubmitted->scene != wanted.scene)
+            m_cpuSubmitted->scene != wanted.scene || m_cpuSubmitted->cost != wanted.cost)
         {
             m_cpu.submit(wanted);
             m_cpuSubmitted = wanted;
             m_cpuShown = false;
         }
         std::optional<CpuOutcome> outcome = m_cpu.take();
-        if (!outcome || outcome->render.request != wanted.request || outcome->render.engine != wanted.engine)
+        if (!outcome || outcome->render.request != wanted.request || outcome->render.engine != wanted.engine ||
+            outcome->render.cost != wanted.cost)
             return; // none, or of settings left since
         if (!outcome->error.empty())
         {
@@ -581,12 +589,26 @@ private:
             result.image.height() != int(m_renderer.extent().height))
             return; // the images were made again for another size since
         m_presenter.waitIdle();
-        m_renderer.showImage(result.image);
+        m_renderer.showImage(result.image, outcome->cost.perSample);
         m_accumulatedSpp = std::uint32_t(result.stats.trueSpp);
         m_traced = m_state.image;
         m_cpuShown = true;
         m_cpuStatus = fmt::format("{}: {} spp in {:.3f} s", rt::gui::engineLabel(result.stats.engine),
                                   result.stats.trueSpp, result.stats.renderSeconds);
+        if (wanted.cost)
+        {
+            // The heatmap's scale from the CPU's map, in its unit; its render is not a timing (the clock reads
+            // around every pixel slow it), as the GPU's heatmap frames are not.
+            if (!outcome->cost.empty())
+            {
+                const rt::CostSummary summary = rt::summarize(outcome->cost);
+                m_cost = {.max = float(summary.max), .high = float(summary.high)};
+                m_costUnit = outcome->cost.unit;
+            }
+            else
+                m_state.message = "no heatmap: " + outcome->costUnavailable;
+            return;
+        }
         auto image = std::make_shared<const Image>(result.image);
         m_table.record(result.stats, {}, image);
         if (const auto task = m_table.referenceWanted(EngineKind::Gpu))
@@ -790,6 +812,8 @@ private:
             {"timings", m_table.toJson()},
             {"plot", m_plot.toJson()},
             {"references_pending", m_references.pending()},
+            {"engine", rt::toString(m_state.engine)},
+            {"cost_unit", m_costUnit},
             {"ray_tracing", m_state.image.rayTracing},
             {"accumulated_spp", m_accumulatedSpp},
             {"samples_per_frame", m_state.display.samplesPerFrame},
@@ -861,7 +885,8 @@ private:
     bool m_needsClear = true; // new images, or a new scene behind them
     std::uint32_t m_nextSample = 0;
     std::uint32_t m_accumulatedSpp = 0;
-    CostSummary m_cost; // of the last timed frame
+    CostSummary m_cost; // of the last timed frame (or the CPU engine's last map)
+    std::string m_costUnit = "ticks per sample"; // of m_cost: the shader clock's, or the CPU's microseconds
     Throughput m_throughput;
 
     std::size_t m_nextAction = 0;

@@ -336,6 +336,27 @@ TEST(GpuWindow, HeatmapShowsCostPerPixel)
     EXPECT_GT(image.distinctColors, 4u) << "cost varies over the image";
 }
 
+TEST(GpuWindow, HeatmapShowsACpuEnginesCostPerPixel)
+{
+    // Issue 38: the cost view on both engines in both windows. With multi core chosen, the window shows the CPU
+    // engine's map (microseconds per sample) in the same palette, its scale in its unit.
+    const ::rt::test::ScratchDir dir;
+    RT_RUN_WINDOW(run, "--validation --scene cornell-box-lights --width 64 --spp 4 --window-size 1280x800 --heatmap on "
+                       "--frames 3 --screenshot '" + (dir / "heatmap.png").string() + "'" + stateJsonArgument(dir) +
+                           " --actions 'engine=multi;wait-reference'");
+    if (run.output.find("no VK_KHR_shader_clock") != std::string::npos)
+        GTEST_SKIP() << "the device has no shader clock: the window's profiler section is hidden";
+    const Screenshot s(dir / "heatmap.png");
+    const Layout layout(dir / "state.json");
+    keep(dir / "heatmap.png");
+    const Region image = imageOf(s, layout);
+    EXPECT_GT(image.paletteFraction, 0.9) << "heatmap colours only";
+    EXPECT_GT(image.distinctColors, 4u) << "cost varies over the image";
+    const nlohmann::json state = nlohmann::json::parse(::rt::test::fileContents(dir / "state.json"));
+    EXPECT_EQ(state["cost_unit"], "microseconds per sample");
+    EXPECT_EQ(state["timings"].size(), 0u) << "a render timed per pixel is not a timing";
+}
+
 TEST(GpuWindow, AccumulatedImageMatchesTheSettingsShown)
 {
     // Scene switch and depth change while accumulating; then the window's image must be the headless render of
