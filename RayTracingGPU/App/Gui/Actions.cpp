@@ -19,6 +19,8 @@ const std::vector<ActionSpec>& specs()
         sharedActionSpecs("stop tracing at N samples per pixel (0: never)", 0),
         {
             {"raytracing", ActionValue::OnOff, "on|off", "ray tracing, or the rasterised preview"},
+            {"wait", ActionValue::None, "",
+             "until the image has reached its stop (a CPU engine: until its render ended); references may still run"},
             {"engine", ActionValue::Text, "gpu|single|multi",
              "what renders the image: the GPU in the frames, or a CPU engine a whole render at a time", 0, 1e30,
              [](const std::string& v) { return parseName<EngineKind>(v).has_value(); }},
@@ -47,7 +49,7 @@ std::vector<Action> parseActions(const std::string& script) { return parseAction
 bool applyAction(const Action& a, Controls& c)
 {
     const std::string& n = a.name;
-    if (n == "frames" || n == "sleep" || n == "wait-reference")
+    if (n == "frames" || n == "sleep" || n == "wait" || n == "wait-reference")
         return false;
     if (n == "scene")
         c.selectScene(a.value);

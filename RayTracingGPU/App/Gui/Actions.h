@@ -19,8 +19,8 @@ using Action = ScriptedAction;
 /// before the window opens.
 std::vector<Action> parseActions(const std::string& script);
 
-/// Applies one action through `controls`. `frames`, `sleep` and `wait-reference` are the frame loop's (it returns
-/// false for them).
+/// Applies one action through `controls`. `frames`, `sleep`, `wait` and `wait-reference` are the frame loop's (it
+/// returns false for them).
 /// Returns true when the action was applied.
 bool applyAction(const Action& action, Controls& controls);
 

@@ -146,7 +146,7 @@ private:
     /// The image has reached its stop and a reference waits for the device: the frames trace it.
     bool referencesToTrace() const
     {
-        return m_state.image.rayTracing && !tracing() && !m_cpu.busy() && m_references.pending();
+        return m_state.image.rayTracing && !tracing() && !m_cpu.busy() && m_references.pending(m_state.image.request.scene);
     }
 
     /// The accumulation is a timed render: it stops at the settings' spp, accumulates, and is not timed per
@@ -185,7 +185,7 @@ private:
     /// Puts `scene` on the device, in the preview and behind the renderer's descriptor sets; the device is idle.
     void showScene(const Scene& scene)
     {
-        m_references.drop(); // its descriptor sets name the old scene, and its tasks are of it
+        m_references.sceneChanged(); // its descriptor sets name the old scene
         m_engine.setScene(scene);
         m_preview.setScene(scene, m_engine.context().commandPool());
         prepareImages(m_state.image.extent());
@@ -273,12 +273,21 @@ private:
         }
     }
 
+    /// wait's end: the image has reached its stop (or has none), or a CPU engine's render of the panel ended.
+    bool renderDone() const
+    {
+        if (m_state.engine != EngineKind::Gpu)
+            return m_state.image.rayTracing && m_cpuShown && !m_cpu.busy();
+        return !m_state.display.stopAtSpp || !tracing();
+    }
+
     /// wait-reference's end: the image has reached its stop (or has none) and no reference is queued or rendering.
     bool referencesDone() const
     {
         if (m_state.engine != EngineKind::Gpu)
-            return m_state.image.rayTracing && m_cpuShown && !m_cpu.busy() && !m_references.pending();
-        return (!m_state.display.stopAtSpp || !tracing()) && !m_references.pending();
+            return m_state.image.rayTracing && m_cpuShown && !m_cpu.busy() &&
+                   !m_references.pending(m_state.image.request.scene);
+        return (!m_state.display.stopAtSpp || !tracing()) && !m_references.pending(m_state.image.request.scene);
     }
 
     void runAutomation()
@@ -290,6 +299,12 @@ private:
             if (!referencesDone())
                 return;
             m_waitReference = false;
+        }
+        if (m_waitRender)
+        {
+            if (!renderDone())
+                return;
+            m_waitRender = false;
         }
         if (m_waitFrames > 0)
         {
@@ -304,6 +319,8 @@ private:
             spdlog::debug("action {}={}", action.name, action.value);
             if (action.name == "wait-reference")
                 m_waitReference = true;
+            else if (action.name == "wait")
+                m_waitRender = true;
             else if (!applyAction(action, m_controls))
             {
                 m_waitFrames = waitFrames(action);
@@ -316,7 +333,7 @@ private:
     bool actionsDone() const
     {
         return m_nextAction >= m_options.actions.size() && m_waitFrames == 0 && Clock::now() >= m_sleepUntil &&
-               !m_loading.valid() && !m_state.sceneRequest && !m_waitReference;
+               !m_loading.valid() && !m_state.sceneRequest && !m_waitReference && !m_waitRender;
     }
 
     void applyRequests()
@@ -520,7 +537,7 @@ private:
             count = std::min(count, target > m_accumulatedSpp ? target - m_accumulatedSpp : 0u);
         }
         if (count == 0)
-            return m_references.recordSamples(cmd, frame.slot, frameSamples(), *m_scene);
+            return m_references.recordSamples(cmd, frame.slot, frameSamples(), *m_scene, m_state.image.request.scene);
         m_renderer.recordSamples(cmd, frame.slot, requestOf(m_state.image), m_nextSample, count);
         m_slotAccumulation.at(frame.slot) = m_accumulation;
         m_slotSamples.at(frame.slot) = count;
@@ -540,7 +557,8 @@ private:
             m_renderer.recordClear(frame.commands);
         if (m_cpu.busy())
             return 0;
-        return m_references.recordSamples(frame.commands, frame.slot, frameSamples(), *m_scene);
+        return m_references.recordSamples(frame.commands, frame.slot, frameSamples(), *m_scene,
+                                          m_state.image.request.scene);
     }
 
     /// The request a CPU engine renders for the panel: its settings, the window's camera where it moved.
@@ -756,7 +774,7 @@ private:
             ImGui::SetNextWindowPos(ImVec2(float(r.x) / scale, float(r.y) / scale));
             ImGui::SetNextWindowSize(ImVec2(float(r.width) / scale, float(r.height) / scale));
         };
-        const rt::gui::ReferenceProgress reference = m_references.progress();
+        const rt::gui::ReferenceProgress reference = m_references.progress(m_state.image.request.scene);
         std::string title = "Timings of this session (the GPU's on its own clock)";
         if (reference.rendering)
             title += fmt::format("  |  reference for relMSE: {:.0f}% of {} spp{}", reference.fraction * 100.0,
@@ -771,7 +789,7 @@ private:
             {
                 m_table.clear();
                 m_plot.clear();
-                m_references.drop();
+                m_references.clear();
             }
         }
         ImGui::End();
@@ -811,7 +829,7 @@ private:
               {"latest_timing_visible", m_latestTimingVisible}}},
             {"timings", m_table.toJson()},
             {"plot", m_plot.toJson()},
-            {"references_pending", m_references.pending()},
+            {"references_pending", m_references.pending(m_state.image.request.scene)},
             {"engine", rt::toString(m_state.engine)},
             {"cost_unit", m_costUnit},
             {"ray_tracing", m_state.image.rayTracing},
@@ -859,6 +877,7 @@ private:
     bool m_renderRecorded = false;
     std::optional<double> m_compileSeconds;
     bool m_waitReference = false; // the wait-reference action holds the script
+    bool m_waitRender = false; // and the wait action
     CpuRenders m_cpu;
     std::optional<CpuRender> m_cpuSubmitted; // the render asked of a CPU engine for the panel's settings
     bool m_cpuShown = false; // its image is in the accumulation

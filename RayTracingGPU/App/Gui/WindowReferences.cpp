@@ -49,18 +49,25 @@ void WindowReferences::request(const ReferenceTask& task, const Scene& scene)
     m_queue.push_back(task);
 }
 
-void WindowReferences::drop()
+void WindowReferences::sceneChanged()
 {
-    m_queue.clear();
     m_active.reset();
     ++m_half; // samples of the dropped half still in flight are not counted into the next one
 }
 
-std::size_t WindowReferences::next() const
+void WindowReferences::clear()
+{
+    m_queue.clear();
+    sceneChanged();
+}
+
+bool WindowReferences::pending(const SceneRef& current) const { return next(current) < m_queue.size(); }
+
+std::size_t WindowReferences::next(const SceneRef& current) const
 {
     std::size_t best = m_queue.size();
     for (std::size_t i = m_queue.size(); i-- > 0;)
-        if (best == m_queue.size() || m_queue[i].spp < m_queue[best].spp)
+        if (m_queue[i].base.scene == current && (best == m_queue.size() || m_queue[i].spp < m_queue[best].spp))
             best = i;
     return best;
 }
@@ -73,14 +80,16 @@ void WindowReferences::takeSeconds(std::uint32_t slot)
 }
 
 std::uint64_t WindowReferences::recordSamples(VkCommandBuffer cmd, std::uint32_t slot, std::uint32_t samples,
-                                              const Scene& scene)
+                                              const Scene& scene, const SceneRef& current)
 {
     takeSeconds(slot);
-    if (m_queue.empty() || samples == 0)
+    if (samples == 0 || (m_active && !(m_active->task.base.scene == current)))
         return 0;
     if (!m_active)
     {
-        const std::size_t index = next();
+        const std::size_t index = next(current);
+        if (index == m_queue.size())
+            return 0;
         std::rotate(m_queue.begin(), m_queue.begin() + std::ptrdiff_t(index), m_queue.begin() + std::ptrdiff_t(index) + 1);
         m_active = Active{.task = m_queue.front()};
         ++m_half;
@@ -163,10 +172,12 @@ void WindowReferences::fail(const std::string& why)
     ++m_half;
 }
 
-rt::gui::ReferenceProgress WindowReferences::progress() const
+rt::gui::ReferenceProgress WindowReferences::progress(const SceneRef& current) const
 {
     rt::gui::ReferenceProgress progress;
-    progress.waiting = int(m_queue.size()) - (m_active ? 1 : 0);
+    progress.waiting = int(std::count_if(m_queue.begin(), m_queue.end(),
+                                         [&](const ReferenceTask& t) { return t.base.scene == current; })) -
+                       (m_active ? 1 : 0);
     if (m_active)
     {
         const int halfSpp = compare::referenceHalfSpp(m_active->task.spp);

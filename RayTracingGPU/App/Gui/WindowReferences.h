@@ -3,7 +3,8 @@
 // + 1000 and + 2000) is a progressive accumulation of its own (a second ProgressiveFrame), a few samples per
 // frame, so the window keeps drawing while it renders; the same samples as a headless half of its spp. A
 // reference is looked up first among those finished in this session, then in --compare's reference cache, and
-// stored there once rendered. The fewest spp
+// stored there once rendered. References of another scene than the one on screen wait in the queue until it is
+// shown again (no scene is built again for a reference). The fewest spp
 // go first (the table's row before the plot's long points), the newest among equals.
 #pragma once
 
@@ -29,15 +30,19 @@ public:
     /// Queues `task` of the scene the engine holds (`scene`), unless it is queued already; one finished before
     /// in this session (ReferenceMemory.h) or found in the cache is finished at once.
     void request(const rt::gui::ReferenceTask& task, const Scene& scene);
-    /// Drops what is queued and the half in progress (a new scene: its descriptor sets are stale).
-    void drop();
-    /// A reference is queued or rendering.
-    bool pending() const { return !m_queue.empty(); }
+    /// Another scene is on the device: the half in progress is dropped (its descriptor sets are stale); the
+    /// queue stays.
+    void sceneChanged();
+    /// Drops the queue and the half in progress (the table was cleared).
+    void clear();
+    /// A reference of `current` (the scene on screen) is queued or rendering.
+    bool pending(const SceneRef& current) const;
 
-    /// Records up to `samples` per pixel of the next reference's current half into frame `slot` (whose previous
-    /// frame has completed), starting that reference (waiting for the device) when none was in progress.
-    /// Returns the camera paths recorded.
-    std::uint64_t recordSamples(VkCommandBuffer cmd, std::uint32_t slot, std::uint32_t samples, const Scene& scene);
+    /// Records up to `samples` per pixel of the next reference of `current`, `scene` on the device, into frame
+    /// `slot` (whose previous frame has completed), starting that reference (waiting for the device) when none was
+    /// in progress. Returns the camera paths recorded.
+    std::uint64_t recordSamples(VkCommandBuffer cmd, std::uint32_t slot, std::uint32_t samples, const Scene& scene,
+                                const SceneRef& current);
     /// The frame just recorded completes a half: the caller waits for the device, then calls finishHalf.
     bool halfRecorded() const;
     /// Reads the half back (the device idle); after the second, combines them, stores the reference in the cache
@@ -46,7 +51,7 @@ public:
 
     /// References finished (or failed) since the last call, oldest first.
     std::vector<rt::gui::FinishedReference> take() { return std::exchange(m_finished, {}); }
-    rt::gui::ReferenceProgress progress() const;
+    rt::gui::ReferenceProgress progress(const SceneRef& current) const;
 
 private:
     struct Active
@@ -58,8 +63,9 @@ private:
         double seconds = 0.0; // device time of the halves' samples so far
     };
 
-    /// The index in m_queue of the next task: the fewest spp, the newest among equals.
-    std::size_t next() const;
+    /// The index in m_queue of the next task of `current`: the fewest spp, the newest among equals;
+    /// m_queue.size() when none.
+    std::size_t next(const SceneRef& current) const;
     /// Adds the device time of `slot`'s last frame when it traced the half in progress.
     void takeSeconds(std::uint32_t slot);
     void fail(const std::string& why);

@@ -583,6 +583,31 @@ TEST(GpuWindow, TogglesChangeTheRenderAsTheyShould)
     EXPECT_EQ(stratified["spp"], 9) << "stratified takes the square below 10";
 }
 
+TEST(GpuWindow, AReferenceWaitsForItsSceneToComeBack)
+{
+    // A reference not rendered yet when the person switches scene waits in the queue (no scene is built again for
+    // a reference) and is rendered once its scene is on screen again: the row gets its relMSE. The switch comes
+    // as soon as the render reached its stop: the plot's smaller references go first, so the row's is not done.
+    // After the switch back, a render of other settings asks for no reference of the first row's.
+    const ::rt::test::ScratchDir dir;
+    RT_RUN_WINDOW(run, "--validation --scene cornell-box-lights --width 48 --spp 64 --window-size 1280x800 "
+                       "--frames 2" + stateJsonArgument(dir) +
+                           " --actions 'wait;scene=rtnw-quads;frames=2;scene=cornell-box-lights;spp=16;wait-reference'");
+    const nlohmann::json state = nlohmann::json::parse(::rt::test::fileContents(dir / "state.json"));
+    // Back on the scene the window renders 16 spp, another row: nothing asks for the 64-spp row's reference again.
+    // (rtnw-quads may have reached its stop in its two frames: its row's reference waits for it.)
+    int rows = 0;
+    for (const nlohmann::json& row : state["timings"])
+    {
+        if (row["scene"] != "cornell-box-lights")
+            continue;
+        ++rows;
+        EXPECT_EQ(row["reference"]["state"], "ready") << row.dump(2);
+        EXPECT_TRUE(row["rel_mse"].is_number()) << row.dump(2);
+    }
+    EXPECT_EQ(rows, 2) << state["timings"].dump(2);
+}
+
 TEST(GpuWindow, RestirDiAccumulatesTheHeadlessImage)
 {
     // The panel's estimator switched to restir-di (issue 36): the window runs its passes per sample with a
