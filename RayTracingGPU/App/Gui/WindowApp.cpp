@@ -10,11 +10,13 @@
 #include <spdlog/spdlog.h>
 
 #include "Scene/CameraMoves.h"
+#include "App/Gui/AccumulationClock.h"
 #include "App/Gui/CameraInput.h"
 #include "App/Gui/Controls.h"
 #include "App/Gui/CpuRenders.h"
 #include "App/Gui/DisplayPass.h"
 #include "App/Gui/ImGuiLayer.h"
+#include "App/Gui/LabPanes.h"
 #include "App/Gui/Panel.h"
 #include "App/Gui/Presenter.h"
 #include "App/Gui/Throughput.h"
@@ -28,13 +30,10 @@
 #include "Gui/ConvergencePlot.h"
 #include "Gui/EngineLabel.h"
 #include "Gui/PlotFiles.h"
-#include "Gui/PlotWindow.h"
 #include "Gui/TimingsTable.h"
-#include "Gui/TimingsWindow.h"
 #include "IO/AtomicFile.h"
 #include "Image/Heatmap.h"
 #include "Image/ImageIO.h"
-#include "SceneFile/SceneFile.h"
 #include "SceneFile/SceneFileWatch.h"
 
 namespace rt::gpu::gui
@@ -44,10 +43,6 @@ namespace
 using Clock = std::chrono::steady_clock;
 
 constexpr double kIdleFrameSeconds = 1.0 / 60.0;
-
-constexpr ImGuiWindowFlags kPaneFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                        ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
-                                        ImGuiWindowFlags_NoBringToFrontOnFocus;
 
 GpuEngineOptions engineOptions(const WindowOptions& options, const VulkanWindow& window)
 {
@@ -73,8 +68,7 @@ public:
           m_display(m_engine.context().device(), m_engine.shaderDir(), m_presenter.renderPass()),
           m_imgui(m_engine.context(), window.handle(), m_presenter.renderPass(), kFramesInFlight),
           m_references(m_engine, kFramesInFlight, compare::defaultReferenceCacheDir()),
-          m_state(options.initial), m_controls(m_state), m_slotAccumulation(kFramesInFlight, 0),
-          m_slotSamples(kFramesInFlight, 0)
+          m_state(options.initial), m_controls(m_state), m_clock(kFramesInFlight, std::uint32_t(kMaxSamplesPerFrame))
     {
         m_panel.savePath = options.savePath;
         m_drawn.window = window.framebufferSize();
@@ -454,7 +448,7 @@ private:
         WindowLayout layout = layoutFor(size);
         const PixelRect panelDrawn =
             drawPanel(m_controls, m_state, panelInfo(size), m_panel, layout.panel, framebufferScale());
-        drawLabPanes(layout);
+        drawLab(layout);
 
         const std::optional<Frame> frame = m_presenter.beginFrame(size);
         if (!frame)
@@ -477,7 +471,7 @@ private:
             m_cost = cost;
             m_costUnit = "ticks per sample";
         }
-        takeTraceSeconds(frame->slot);
+        m_clock.take(m_renderer, frame->slot);
 
         const VkCommandBuffer cmd = frame->commands;
         std::uint64_t samples = 0;
@@ -539,8 +533,7 @@ private:
         if (count == 0)
             return m_references.recordSamples(cmd, frame.slot, frameSamples(), *m_scene, m_state.image.request.scene);
         m_renderer.recordSamples(cmd, frame.slot, requestOf(m_state.image), m_nextSample, count);
-        m_slotAccumulation.at(frame.slot) = m_accumulation;
-        m_slotSamples.at(frame.slot) = count;
+        m_clock.traced(frame.slot, count);
         // Without accumulation the indices still advance, so each frame shows new noise, not the same frame.
         m_nextSample += count;
         m_accumulatedSpp += count;
@@ -642,45 +635,14 @@ private:
         }
     }
 
-    /// A new accumulation: its samples' device time from zero, its pipeline compiled (and warmed up) apart from
-    /// them (timed: the timings' compile column), its first plot point at 1 spp.
-    void startAccumulation()
-    {
-        ++m_accumulation;
-        m_traceSeconds = 0.0;
-        m_untimed = false;
-        m_nextPointSpp = 1;
-        m_renderRecorded = false;
-        const Clock::time_point start = Clock::now();
-        m_compileSeconds.reset();
-        if (m_renderer.preparePipeline(requestOf(m_state.image)))
-        {
-            m_renderer.warmUp(requestOf(m_state.image));
-            m_compileSeconds = std::chrono::duration<double>(Clock::now() - start).count();
-        }
-    }
+    /// A new accumulation: its time from zero, its pipeline compiled and warmed up apart.
+    void startAccumulation() { m_clock.start(m_renderer, requestOf(m_state.image)); }
 
     /// Samples per pixel of the next frame: the panel's, or the automatic count.
     std::uint32_t frameSamples() const
     {
-        return m_state.display.samplesPerFrame > 0 ? std::uint32_t(m_state.display.samplesPerFrame) : m_autoSamples;
-    }
-
-    /// Adds the device time of `slot`'s last frame to the accumulation when its samples were of it, and sizes the
-    /// automatic count by it.
-    void takeTraceSeconds(std::uint32_t slot)
-    {
-        const std::optional<double> seconds = m_renderer.takeTraceSeconds(slot);
-        if (seconds && m_slotSamples.at(slot) > 0)
-            m_autoSamples = autoFrameSamples(m_slotSamples[slot], *seconds, std::uint32_t(kMaxSamplesPerFrame));
-        m_slotSamples.at(slot) = 0;
-        if (m_slotAccumulation.at(slot) != m_accumulation)
-            return;
-        if (seconds)
-            m_traceSeconds += *seconds;
-        else
-            m_untimed = true;
-        m_slotAccumulation.at(slot) = 0; // taken
+        return m_state.display.samplesPerFrame > 0 ? std::uint32_t(m_state.display.samplesPerFrame)
+                                                   : m_clock.automaticSamples();
     }
 
     /// After a frame was submitted: a timed render's plot points (after 1, 2, 4, ... spp; a stratified one only at
@@ -689,13 +651,13 @@ private:
     /// back; finished references are measured against.
     void afterFrame()
     {
-        if (m_state.image.rayTracing && timedRender() && !m_renderRecorded && m_accumulatedSpp > 0 &&
+        if (m_state.image.rayTracing && timedRender() && !m_clock.hasEnded() && m_accumulatedSpp > 0 &&
             accumulationFits())
         {
             const auto target = std::uint32_t(m_state.image.request.settings.trueSpp());
             const bool end = m_accumulatedSpp >= target;
             const bool stratified = requestOf(m_state.image).settings.sampling == PixelSampling::Stratified;
-            if (end || (!stratified && m_accumulatedSpp >= m_nextPointSpp))
+            if (end || (!stratified && m_clock.pointDue(m_accumulatedSpp)))
                 recordEstimate(end);
         }
         if (m_references.halfRecorded())
@@ -724,13 +686,12 @@ private:
     void recordEstimate(bool end)
     {
         m_presenter.waitIdle();
-        for (std::uint32_t slot = 0; slot < m_slotAccumulation.size(); ++slot)
-            takeTraceSeconds(slot);
-        while (m_nextPointSpp <= m_accumulatedSpp)
-            m_nextPointSpp *= 2;
+        m_clock.takeAll(m_renderer);
+        m_clock.pointTaken(m_accumulatedSpp);
         if (end)
-            m_renderRecorded = true;
-        if (m_untimed || m_traceSeconds <= 0.0)
+            m_clock.ended();
+        const std::optional<double> seconds = m_clock.seconds();
+        if (!seconds)
         {
             if (end)
                 spdlog::warn("'{}' has no timestamps: the render is not timed", m_engine.deviceName());
@@ -738,7 +699,7 @@ private:
         }
         const RenderRequest request = tracedRequest();
         auto image = std::make_shared<const Image>(m_renderer.readImage());
-        if (const auto task = m_plot.add(request, EngineKind::Gpu, m_engine.deviceName(), m_traceSeconds,
+        if (const auto task = m_plot.add(request, EngineKind::Gpu, m_engine.deviceName(), *seconds,
                                          int(m_accumulatedSpp), image, EngineKind::Gpu, false))
             m_references.request(*task, *m_scene);
         if (!end)
@@ -750,12 +711,12 @@ private:
         stats.width = request.settings.width;
         stats.height = request.settings.height();
         stats.trueSpp = int(m_accumulatedSpp);
-        stats.renderSeconds = m_traceSeconds;
-        stats.gpuSeconds = m_traceSeconds;
+        stats.renderSeconds = *seconds;
+        stats.gpuSeconds = *seconds;
         stats.paths = std::uint64_t(stats.width) * std::uint64_t(stats.height) * m_accumulatedSpp;
         stats.buildSeconds = m_engine.buildSeconds();
-        if (m_compileSeconds)
-            stats.stageSeconds["pipeline_host"] = *m_compileSeconds;
+        if (const std::optional<double> compile = m_clock.compileSeconds())
+            stats.stageSeconds["pipeline_host"] = *compile;
         m_table.record(stats, {}, image);
         if (const auto task = m_table.referenceWanted(EngineKind::Gpu))
             m_references.request(*task, *m_scene);
@@ -767,48 +728,21 @@ private:
     }
 
     /// The timings table and the convergence plot in the strip under the image.
-    void drawLabPanes(const WindowLayout& layout)
+    void drawLab(const WindowLayout& layout)
     {
-        const float scale = framebufferScale();
-        const auto place = [scale](const PixelRect& r) {
-            ImGui::SetNextWindowPos(ImVec2(float(r.x) / scale, float(r.y) / scale));
-            ImGui::SetNextWindowSize(ImVec2(float(r.width) / scale, float(r.height) / scale));
-        };
-        const rt::gui::ReferenceProgress reference = m_references.progress(m_state.image.request.scene);
-        std::string title = "Timings of this session (the GPU's on its own clock)";
-        if (reference.rendering)
-            title += fmt::format("  |  reference for relMSE: {:.0f}% of {} spp{}", reference.fraction * 100.0,
-                                 reference.task.spp,
-                                 reference.waiting > 0 ? fmt::format(" ({} more waiting)", reference.waiting) : "");
-        place(layout.timings);
-        if (ImGui::Begin((title + "###timings").c_str(), nullptr, kPaneFlags))
+        const LabPanesDrawn drawn =
+            drawLabPanes(layout, framebufferScale(), m_table, m_plot, m_state.image.request,
+                         m_references.progress(m_state.image.request.scene));
+        m_latestTimingVisible = drawn.latestTimingVisible;
+        m_plotState = drawn.plot;
+        if (drawn.clearClicked)
         {
-            const rt::gui::TimingsDrawn drawn = rt::gui::drawTimings(m_table);
-            m_latestTimingVisible = drawn.latestVisible;
-            if (drawn.clearClicked)
-            {
-                m_table.clear();
-                m_plot.clear();
-                m_references.clear();
-            }
+            m_table.clear();
+            m_plot.clear();
+            m_references.clear();
         }
-        ImGui::End();
-        place(layout.plot);
-        if (ImGui::Begin("Convergence: relMSE against time", nullptr, kPaneFlags | ImGuiWindowFlags_NoScrollbar))
-        {
-            rt::gui::PlotDrawn drawn = rt::gui::drawConvergencePlot(m_plot, m_state.image.request, plotName());
-            m_plotState = std::move(drawn.state);
-            if (drawn.saveClicked)
-                m_controls.savePlot(plotName());
-        }
-        ImGui::End();
-    }
-
-    std::string plotName() const
-    {
-        const RenderSettings& r = m_state.image.request.settings;
-        return fmt::format("{}_{}x{}_depth{}_gpu_convergence.png", sceneShortName(m_state.image.request.scene.id),
-                           r.width, r.height(), r.depth);
+        if (drawn.saveClicked)
+            m_controls.savePlot(plotFileName(m_state.image.request));
     }
 
     /// --state-json: what the last frame drew where (framebuffer pixels, [x, y, width, height]), for the
@@ -864,18 +798,7 @@ private:
     Controls m_controls;
     rt::gui::TimingsTable m_table;
     rt::gui::ConvergencePlot m_plot;
-    // The timed render in the accumulation image (timedRender): its number (0: none), the device time of its
-    // samples (each slot's frames tagged with the number they traced for), the plot's next point, its
-    // compilation.
-    std::uint64_t m_accumulation = 0;
-    std::vector<std::uint64_t> m_slotAccumulation;
-    std::vector<std::uint32_t> m_slotSamples; // the samples each slot's frame traced for the image (0: none)
-    std::uint32_t m_autoSamples = 1; // the automatic count of the next frame
-    double m_traceSeconds = 0.0;
-    bool m_untimed = false; // a frame of it had no timestamps
-    std::uint32_t m_nextPointSpp = 1;
-    bool m_renderRecorded = false;
-    std::optional<double> m_compileSeconds;
+    AccumulationClock m_clock; // the accumulation's device time and frame sizes
     bool m_waitReference = false; // the wait-reference action holds the script
     bool m_waitRender = false; // and the wait action
     CpuRenders m_cpu;
