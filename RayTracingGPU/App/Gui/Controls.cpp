@@ -155,7 +155,7 @@ void Controls::setFontPixels(int pixels)
 
 int Controls::fontPixels() const { return int(std::lround(m_state->display.fontScale * basePixels(*m_state))); }
 
-bool Controls::save(const std::filesystem::path& png)
+bool Controls::requestPng(const std::filesystem::path& png, std::optional<std::filesystem::path>& request)
 {
     if (const std::string problem = saveImagePathProblem(png.string()); !problem.empty())
     {
@@ -163,20 +163,12 @@ bool Controls::save(const std::filesystem::path& png)
         spdlog::error("{}", problem);
         return false;
     }
-    m_state->saveRequest = png;
+    request = png;
     return true;
 }
 
-bool Controls::savePlot(const std::filesystem::path& png)
-{
-    if (const std::string problem = saveImagePathProblem(png.string()); !problem.empty())
-    {
-        m_state->message = problem;
-        spdlog::error("{}", problem);
-        return false;
-    }
-    m_state->savePlotRequest = png;
-    return true;
-}
+bool Controls::save(const std::filesystem::path& png) { return requestPng(png, m_state->saveRequest); }
+
+bool Controls::savePlot(const std::filesystem::path& png) { return requestPng(png, m_state->savePlotRequest); }
 void Controls::resize(Extent size) { m_state->resizeRequest = Extent{std::max(size.width, 0), std::max(size.height, 0)}; }
 } // namespace rt::gpu::gui

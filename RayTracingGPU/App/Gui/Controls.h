@@ -77,6 +77,9 @@ public:
     void resize(Extent size);
 
 private:
+    /// Sets `request` to `png`, or says in the message why a name not ending in .png is refused.
+    bool requestPng(const std::filesystem::path& png, std::optional<std::filesystem::path>& request);
+
     WindowState* m_state;
 };
 } // namespace rt::gpu::gui

@@ -628,11 +628,7 @@ private:
                                          result.stats.renderSeconds, result.stats.trueSpp, image, EngineKind::Gpu,
                                          false))
             m_references.request(*task, *m_scene);
-        for (const rt::gui::FinishedReference& reference : m_references.take())
-        {
-            m_table.attach(reference);
-            m_plot.attach(reference);
-        }
+        attachReferences();
     }
 
     /// A new accumulation: its time from zero, its pipeline compiled and warmed up apart.
@@ -665,6 +661,12 @@ private:
             m_presenter.waitIdle();
             m_references.finishHalf(*m_scene);
         }
+        attachReferences();
+    }
+
+    /// Measures the table's rows and the plot's points against the references finished (or found) since.
+    void attachReferences()
+    {
         for (const rt::gui::FinishedReference& reference : m_references.take())
         {
             m_table.attach(reference);
@@ -720,11 +722,6 @@ private:
         m_table.record(stats, {}, image);
         if (const auto task = m_table.referenceWanted(EngineKind::Gpu))
             m_references.request(*task, *m_scene);
-        for (const rt::gui::FinishedReference& reference : m_references.take()) // found in the cache
-        {
-            m_table.attach(reference);
-            m_plot.attach(reference);
-        }
     }
 
     /// The timings table and the convergence plot in the strip under the image.
