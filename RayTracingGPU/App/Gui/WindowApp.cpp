@@ -3,6 +3,7 @@
 #include <chrono>
 #include <future>
 #include <memory>
+#include <utility>
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -631,8 +632,12 @@ private:
         attachReferences();
     }
 
-    /// A new accumulation: its time from zero, its pipeline compiled and warmed up apart.
-    void startAccumulation() { m_clock.start(m_renderer, requestOf(m_state.image)); }
+    /// A new accumulation: its time from zero, its pipeline compiled and warmed up apart, no points yet.
+    void startAccumulation()
+    {
+        m_clock.start(m_renderer, requestOf(m_state.image));
+        m_points.clear();
+    }
 
     /// Samples per pixel of the next frame: the panel's, or the automatic count.
     std::uint32_t frameSamples() const
@@ -701,11 +706,15 @@ private:
         }
         const RenderRequest request = tracedRequest();
         auto image = std::make_shared<const Image>(m_renderer.readImage());
-        if (const auto task = m_plot.add(request, EngineKind::Gpu, m_engine.deviceName(), *seconds,
-                                         int(m_accumulatedSpp), image, EngineKind::Gpu, false))
-            m_references.request(*task, *m_scene);
+        // A point waits for its render's end: an accumulation the person abandons (a camera dragged with a stop set
+        // restarts it every frame) would otherwise add a line and queue a reference per frame.
+        m_points.push_back({request, *seconds, int(m_accumulatedSpp), image});
         if (!end)
             return;
+        for (const EstimatePoint& point : std::exchange(m_points, {}))
+            if (const auto task = m_plot.add(point.request, EngineKind::Gpu, m_engine.deviceName(), point.seconds,
+                                             point.spp, point.image, EngineKind::Gpu, false))
+                m_references.request(*task, *m_scene);
         RenderStats stats;
         stats.request = request;
         stats.engine = EngineKind::Gpu;
@@ -796,6 +805,14 @@ private:
     rt::gui::TimingsTable m_table;
     rt::gui::ConvergencePlot m_plot;
     AccumulationClock m_clock; // the accumulation's device time and frame sizes
+    struct EstimatePoint
+    {
+        RenderRequest request;
+        double seconds = 0.0;
+        int spp = 0;
+        std::shared_ptr<const Image> image;
+    };
+    std::vector<EstimatePoint> m_points; // the accumulation's plot points, added to the plot at its end
     bool m_waitReference = false; // the wait-reference action holds the script
     bool m_waitRender = false; // and the wait action
     CpuRenders m_cpu;
