@@ -121,10 +121,11 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
     app.add_option("--strategy", o.strategy,
                    "Headless and in ray-tracing-cpu's window: scene renders with the scene's estimator, light "
                    "sampler, light selection and pixel sampling (and the flags given); auto first runs a short pilot on the render's engine that measures "
-                   "the efficiency 1/(relMSE x time) of each candidate (one setting at a time: nee-mis and mixture; area, "
+                   "the efficiency 1/(relMSE x time) of every combination of the candidates (nee-mis and mixture; area, "
                    "solid-angle, projected and, for quad and triangle lights, projected-exact; every light selection "
-                   "with two lights or more; the pixel sampling stays the scene's), renders with the best, logs the pilot's table and "
-                   "records it in --stats (strategy_choice). A setting given as a flag is not varied. With --compare: "
+                   "with two lights or more; the pixel sampling stays the scene's), renders with the best where its "
+                   "lead over the scene's own is beyond the pilot's noise, logs the pilot's table and "
+                   "records it in --stats (strategy_choice); a choice is kept for the next render (--strategy-cache). A setting given as a flag is not varied. With --compare: "
                    "adds a row 'auto' over the same candidates, its time including the pilot's")
         ->capture_default_str()
         ->check(CLI::IsMember({"scene", "auto"}));
@@ -137,6 +138,12 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
                    "With --strategy auto: the pilot's time at most, in seconds (0.01 to 600)")
         ->capture_default_str()
         ->check(CLI::Range(0.01, 600.0));
+    app.add_option("--strategy-cache", o.strategyCache,
+                   "With --strategy auto, headless: the folder of pilots' choices kept between runs (a render of the "
+                   "same scene, settings but the seed, engine, device and program takes the choice made before, with "
+                   "no pilot, and renders the same image for the same seed), or off (a pilot every time; --compare's "
+                   "auto row always runs one). Default: $RT_STRATEGY_CACHE, else ~/.cache/ray-tracing/strategies")
+        ->type_name("DIR|off");
     app.add_option("--pdf", o.pdf, "The books' name for two estimators: on = --estimator mixture, off = bsdf");
     app.add_option("--output", o.output, "Write the tone-mapped sRGB image here (.png)")->check(namesAFile());
     app.add_option("--hdr", o.hdr, "Write the linear radiance image here: .pfm (float) or .exr (OpenEXR, ZIP)")

@@ -43,6 +43,7 @@ struct CommonOptions
     std::string strategy = "scene"; // --strategy: scene (the scene's defaults and the flags) | auto (a pilot chooses)
     double pilotBudget = 0.05; // --pilot-budget: the pilot's share of the render's estimated time
     double pilotMaxSeconds = 2.0; // --pilot-max-seconds
+    std::string strategyCache; // --strategy-cache: a folder, or off; empty: the default (Compare/StrategyCache.h)
 
     /// The value given for the setting `name`, or nothing.
     std::optional<std::string> given(std::string_view name) const;

@@ -2,6 +2,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "Compare/StrategyCache.h"
+
 namespace rt::compare
 {
 StrategyLists commandLineCandidates(const Scene& scene, const CommonOptions& options, const StrategyLists& lists)
@@ -23,9 +25,25 @@ RequestChooser strategyChooser(const Scene& scene, const CommonOptions& options)
 {
     if (options.strategy != "auto")
         return {};
-    return [candidates = commandLineCandidates(scene, options), budget = pilotBudget(options)](
-               RenderEngine& engine, const RenderRequest& request) {
+    const std::filesystem::path cacheDir = options.strategyCache.empty()   ? defaultStrategyCacheDir()
+                                           : options.strategyCache == "off" ? std::filesystem::path()
+                                                                            : std::filesystem::path(options.strategyCache);
+    return [candidates = commandLineCandidates(scene, options), budget = pilotBudget(options),
+            cache = StrategyCache(cacheDir)](RenderEngine& engine, const RenderRequest& request) {
+        const std::string key = StrategyCache::key(*engine.scene(), request, engine, candidates, budget);
+        if (const std::optional<CachedChoice> cached = cache.find(key))
+        {
+            nlohmann::json record = cached->record;
+            record["cached"] = cached->file.string();
+            ChosenRequest chosen{request, std::move(record), false};
+            chosen.request.settings = cached->chosen.applyTo(request.settings);
+            spdlog::info("--strategy auto: {}, as a pilot on this device chose it before ({}; --strategy-cache off "
+                         "measures again)",
+                         cached->chosen.name(), cached->file.string());
+            return chosen;
+        }
         const AutoChoice choice = chooseStrategy(engine, request, candidates, budget);
+        cache.store(key, choice);
         ChosenRequest chosen{request, choice.toJson(), choice.cancelled};
         chosen.request.settings = choice.chosen.applyTo(request.settings);
         if (choice.rows.empty())

@@ -10,47 +10,13 @@
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
+#include "Compare/Fnv1a.h"
 #include "Error.h"
 #include "IO/AtomicFile.h"
 #include "Image/ImageIO.h"
 
 namespace rt::compare
 {
-namespace
-{
-class Fnv1a
-{
-public:
-    void bytes(const void* data, std::size_t size)
-    {
-        const auto* p = static_cast<const unsigned char*>(data);
-        for (std::size_t i = 0; i < size; ++i)
-            m_hash = (m_hash ^ p[i]) * 0x100000001b3ull;
-    }
-    template <typename T> void value(const T& v)
-    {
-        static_assert(std::is_trivially_copyable_v<T>);
-        bytes(&v, sizeof v);
-    }
-    template <typename T> void vector(const std::vector<T>& v)
-    {
-        value(v.size());
-        if (!v.empty())
-            bytes(v.data(), v.size() * sizeof(T));
-    }
-    void string(const std::string& s)
-    {
-        value(s.size());
-        bytes(s.data(), s.size());
-    }
-    std::uint64_t hash() const { return m_hash; }
-
-private:
-    std::uint64_t m_hash = 0xcbf29ce484222325ull;
-};
-
-std::string hex(std::uint64_t v) { return fmt::format("{:016x}", v); }
-} // namespace
 
 std::filesystem::path defaultReferenceCacheDir()
 {

@@ -9,14 +9,15 @@ where it exists. Standard library only.
     auto_strategy_table.py --best FILE.csv  the best strategy's words (estimator sampler selection sampling rr)
 """
 import csv
+import math
 import json
 import statistics
 import sys
 from pathlib import Path
 
 
-def efficiencies(path):
-    """{strategy or 'auto': efficiency}, and the strategies auto chose."""
+def costs(path):
+    """{strategy or 'auto': [relMSE x s per seed]}, and the strategies auto chose."""
     rows = list(csv.DictReader(path.open()))
     cost, chosen = {}, []
     for r in rows:
@@ -25,7 +26,23 @@ def efficiencies(path):
         if key == "auto":
             chosen.append(r["strategy"])
         cost.setdefault(key, []).append(float(r["relmse"]) * ms * 1e-3)
+    return cost, chosen
+
+
+def efficiencies(path):
+    """{strategy or 'auto': efficiency}, and the strategies auto chose."""
+    cost, chosen = costs(path)
     return {k: 1.0 / statistics.mean(v) for k, v in cost.items()}, chosen
+
+
+def ratio(numerator, denominator):
+    """Efficiency ratio of two rows from their seeds' costs (the denominator's mean cost over the numerator's), with
+    its 95 % interval by the delta method on the log of the ratio (independent seeds)."""
+    def log_variance(c):
+        return statistics.variance(c) / (len(c) * statistics.mean(c) ** 2) if len(c) > 1 else float("inf")
+    value = statistics.mean(denominator) / statistics.mean(numerator)
+    half = 1.96 * math.sqrt(log_variance(numerator) + log_variance(denominator))
+    return value, value * math.exp(-half), value * math.exp(half)
 
 
 def strategy_of(settings):
@@ -52,15 +69,17 @@ def scene_rows(out):
         recheck = Path(out) / f"{scene}-recheck.csv"
         again = Path(out) / f"{scene}-recheck-best.csv"
         if recheck.exists() and again.exists():
-            r, chosen = efficiencies(recheck)
-            b, _ = efficiencies(again)
-            best_eff, own_eff, auto_eff = list(b.values())[0], r[own_name], r["auto"]
+            r, chosen = costs(recheck)
+            b, _ = costs(again)
+            best_cost, own_cost, auto_cost = list(b.values())[0], r[own_name], r["auto"]
         else:
+            f, chosen = costs(path)
             chosen = []
-            best_eff, own_eff, auto_eff = full[best], full.get(own_name, float("nan")), full["auto"]
+            best_cost, own_cost, auto_cost = f[best], f.get(own_name, [float("nan")]), f["auto"]
         rows.append({"scene": scene, "strategies": len(full) - 1, "best": best, "best_full": full[best],
-                     "best_again": best_eff, "own": own_name, "own_eff": own_eff, "chosen": chosen,
-                     "auto_eff": auto_eff})
+                     "best_again": 1.0 / statistics.mean(best_cost), "own": own_name, "chosen": chosen,
+                     "seeds": len(auto_cost), "own_best": ratio(own_cost, best_cost),
+                     "auto_best": ratio(auto_cost, best_cost), "auto_own": ratio(auto_cost, own_cost)})
     return rows
 
 
@@ -69,19 +88,33 @@ def main():
         eff, _ = efficiencies(Path(sys.argv[2]))
         print(best_of(eff))
         return
+    def shown(r):
+        return f"{r[0]:.2f} [{r[1]:.2f}, {r[2]:.2f}]"
+
+    def counted(chosen):
+        tally = {}
+        for c in chosen:
+            tally[c] = tally.get(c, 0) + 1
+        return "; ".join(f"{c} x{n}" for c, n in sorted(tally.items(), key=lambda t: -t[1]))
+
     print("| scene | strategies | best (full comparison) | best, again | scene's own | own / best | auto chose "
           "(recheck seeds) | auto / best | auto / own |")
     print("|---|---:|---|---:|---|---:|---|---:|---:|")
     rows = scene_rows(sys.argv[1])
     for r in rows:
         print(f"| {r['scene']} | {r['strategies']} | {r['best']} ({r['best_full']:.4g}) | {r['best_again']:.4g} | "
-              f"{r['own']} | {r['own_eff'] / r['best_again']:.2f} | {'; '.join(r['chosen'])} | "
-              f"{r['auto_eff'] / r['best_again']:.2f} | {r['auto_eff'] / r['own_eff']:.2f} |")
-    low = [r["scene"] for r in rows if r["auto_eff"] / r["best_again"] < 0.9]
-    below = [r["scene"] for r in rows if r["auto_eff"] / r["own_eff"] < 1.0]
+              f"{r['own']} | {shown(r['own_best'])} | {counted(r['chosen'])} | "
+              f"{shown(r['auto_best'])} | {shown(r['auto_own'])} |")
+    # Below a threshold: the whole 95 % interval of the ratio under it (a measured shortfall, not noise).
+    low = [r["scene"] for r in rows if r["auto_best"][2] < 0.9]
+    below = [r["scene"] for r in rows if r["auto_own"][2] < 1.0]
     print()
-    print(f"auto below 0.9x the best: {', '.join(low) if low else 'none'}; below the scene's own strategy: "
-          f"{', '.join(below) if below else 'none'}")
+    print(f"{rows[0]['seeds'] if rows else 0} recheck seeds; 95 % intervals of each ratio (delta method over seeds)")
+    print(f"auto below 0.9x the best (interval wholly below): {', '.join(low) if low else 'none'}; below the "
+          f"scene's own strategy (interval wholly below): {', '.join(below) if below else 'none'}")
+    print(f"point values below 0.9x the best: "
+          f"{', '.join(r['scene'] for r in rows if r['auto_best'][0] < 0.9) or 'none'}; below the scene's own: "
+          f"{', '.join(r['scene'] for r in rows if r['auto_own'][0] < 1.0) or 'none'}")
 
 
 if __name__ == "__main__":

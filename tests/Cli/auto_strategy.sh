@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Usage: auto_strategy.sh APP
 # --strategy auto as a user runs it: the pilot's choice is logged and recorded in --stats (strategy_choice), the
-# render uses it, a flag given is never varied, --strategy takes only scene and auto, and --compare --strategy auto
-# adds a row "auto" whose JSON holds the pilot's record.
+# render uses it, a flag given is never varied, the choice is kept for the next render of the same settings (any
+# seed: no pilot, the same image for the same seed; --strategy-cache off pilots again), --strategy takes only scene
+# and auto, and --compare --strategy auto adds a row "auto" whose JSON holds the pilot's record.
 set -eu
 app=$1
 work=$(mktemp -d)
@@ -10,9 +11,9 @@ trap 'rm -rf "$work"' EXIT
 
 # The estimator and light sampler fixed by flags: the pilot varies the light selection alone (three pipelines on
 # a GPU: lavapipe compiles each for seconds).
-"$app" --headless --quiet --scene cornell-box-lights --width 24 --spp 4096 --depth 6 --strategy auto \
-    --pilot-budget 1 --pilot-max-seconds 120 \
-    --estimator nee --light-sampler solid-angle --sampling random --stats "$work/a.json" >/dev/null
+pilot=(--headless --quiet --scene cornell-box-lights --width 24 --spp 4096 --depth 6 --strategy auto
+    --pilot-budget 1 --pilot-max-seconds 120 --estimator nee --light-sampler solid-angle --sampling random)
+"$app" "${pilot[@]}" --strategy-cache "$work/cache" --stats "$work/a.json" >/dev/null
 /usr/bin/python3 - "$work/a.json" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
@@ -28,6 +29,23 @@ assert [r["differs_from_own"] for r in rows] == ["", "light-selection", "light-s
 assert c["chosen"].split()[2] == d["settings"]["light_selection"], (c["chosen"], d["settings"])
 assert d["settings"]["estimator"] == "nee"
 assert c["budget_seconds"] > 0 and c["pilot_width"] > 0
+assert "cached" not in c, c
+PY
+# The same settings again, at another seed twice: the kept choice, no pilot, one image.
+for run in 1 2; do
+    "$app" "${pilot[@]}" --strategy-cache "$work/cache" --seed 5 --hdr "$work/kept$run.pfm" --stats "$work/kept$run.json" \
+        >/dev/null
+done
+cmp -s "$work/kept1.pfm" "$work/kept2.pfm" || { echo "the kept choice rendered two images for one seed"; exit 1; }
+"$app" "${pilot[@]}" --strategy-cache off --stats "$work/off.json" >/dev/null
+/usr/bin/python3 - "$work/a.json" "$work/kept1.json" "$work/off.json" <<'PY'
+import json, sys
+first, kept, off = (json.load(open(f)) for f in sys.argv[1:])
+assert kept["strategy_choice"]["cached"].endswith(".json"), kept["strategy_choice"]
+assert kept["strategy_choice"]["chosen"] == first["strategy_choice"]["chosen"], (kept, first)
+assert kept["settings"]["light_selection"] == first["settings"]["light_selection"]
+assert kept["settings"]["seed"] == 5
+assert "cached" not in off["strategy_choice"], "--strategy-cache off read the cache"
 PY
 # --strategy scene (the default) records no choice.
 "$app" --headless --quiet --scene cornell-box-lights --width 8 --spp 1 --depth 2 --stats "$work/b.json" >/dev/null
