@@ -5,12 +5,16 @@
 #     sampling) with the auto row beside them, its time including its pilot's;
 #  2. the best strategy of 1 measured again, and the scene's own strategy and auto with RECHECK_SEEDS fresh seeds
 #     (default 12, from seed 100: a render sharing a seed with its reference's halves, seed + 1000 and + 2000, would
-#     be correlated with it), against a reference of the same spp (--compare's cache renders it once for both): the
-#     best of many noisy rows is biased up (the winner's curse), a new measurement is not. With RECHECK_ONLY=1, a scene whose full comparison's CSV exists is only rechecked.
+#     be correlated with it), against 1's reference: the best of many noisy rows is biased up (the winner's curse), a
+#     new measurement is not. Every row against the one reference file: --compare renders its reference with the
+#     request's strategy, and a reference's own noise is part of every relMSE (rtrol-cornell-box on an H200 at 8192
+#     spp: the scene's mixture's reference had 5x the noise of nee-mis's, half the rows' relMSE at 1 s), so rows
+#     measured against two references do not compare. With RECHECK_ONLY=1, a scene whose full comparison's CSV and
+#     reference (IMAGES/SCENE-reference.pfm) exist is only rechecked.
 # auto_strategy_table.py OUT_DIR then prints auto's efficiency against the best's and the scene's own.
 #   tests/Bench/auto_strategy.sh BIN_DIR OUT_DIR ENGINE WIDTH EQUAL_MS SEEDS REFERENCE_SPP SCENE...
 # e.g. on the CPU: auto_strategy.sh build/bin docs/results/cpu-auto-strategy multi 128 1000 2 8192 cornell-box-lights
-# The renders' images go to IMAGES (default OUT_DIR) and are deleted after each scene.
+# The renders' images go to IMAGES (default OUT_DIR) and are deleted after each scene but the reference.
 set -eu
 bin=$1 out=$2 engine=$3 width=$4 equalMs=$5 seeds=$6 referenceSpp=$7
 shift 7
@@ -29,17 +33,19 @@ for scene in "$@"; do
     common=(--scene "$scene" --engines "$engine" --width "$width" --equal-time "$equalMs" --rounds 1)
     # The scene's own strategy, as the stats record it.
     $app --headless --quiet --scene "$scene" --width 8 --spp 1 --depth 1 --stats "$out/$scene-defaults.json" >/dev/null
-    if [ "${RECHECK_ONLY:-0}" != 1 ] || [ ! -f "$out/$scene.csv" ]; then
+    reference="$images/$scene-reference.pfm"
+    if [ "${RECHECK_ONLY:-0}" != 1 ] || [ ! -f "$out/$scene.csv" ] || [ ! -f "$reference" ]; then
         $app --compare "${common[@]}" --seeds "$seeds" --reference-spp "$referenceSpp" --strategy auto \
             --estimators nee-mis,mixture --light-samplers "$samplers" --light-selections "$selections" \
             --csv "$out/$scene.csv" --images "$images/$scene-images" \
             >"$out/$scene.txt" 2>"$out/$scene.log"
+        mv "$images/$scene-images/reference.pfm" "$reference"
     fi
     read -r estimator sampler selection sampling roulette < <(/usr/bin/python3 "$here/auto_strategy_table.py" --best "$out/$scene.csv")
-    $app --compare "${common[@]}" --seeds "$recheckSeeds" --seed 100 --reference-spp "$referenceSpp" --estimator "$estimator" \
+    $app --compare "${common[@]}" --seeds "$recheckSeeds" --seed 100 --reference "$reference" --estimator "$estimator" \
         --light-sampler "$sampler" --light-selection "$selection" --sampling "$sampling" --russian-roulette "${roulette#rr-}" \
         --csv "$out/$scene-recheck-best.csv" --images "$images/$scene-recheck-images" >"$out/$scene-recheck-best.txt" 2>/dev/null
-    $app --compare "${common[@]}" --seeds "$recheckSeeds" --seed 100 --reference-spp "$referenceSpp" --strategy auto \
+    $app --compare "${common[@]}" --seeds "$recheckSeeds" --seed 100 --reference "$reference" --strategy auto \
         --csv "$out/$scene-recheck.csv" --images "$images/$scene-recheck-images" >"$out/$scene-recheck.txt" 2>/dev/null
     rm -rf "$images/$scene-images" "$images/$scene-recheck-images" # the CSVs keep every figure
     echo "$scene done" >&2

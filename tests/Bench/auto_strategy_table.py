@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Issue 37's table for --strategy auto from auto_strategy.sh's CSVs. Per scene, the efficiency 1/(relMSE s) of a
-row is the inverse of its mean over seeds of relMSE x s (as --compare's equal-time table); the auto row (label
+row is the inverse of its mean over seeds of relMSE x s (as --compare's equal-time table), each relMSE less its
+reference's own (from the full comparison's CSV: every row is measured against that one reference file); the auto row (label
 "auto: ..."; its time includes its pilot's). From the full comparison: the best strategy and auto; from the recheck
 (fresh seeds, the same reference): the best again, the scene's own strategy and auto. The ratios use the recheck
 where it exists. Standard library only.
@@ -16,8 +17,15 @@ import sys
 from pathlib import Path
 
 
-def costs(path):
-    """{strategy or 'auto': [relMSE x s per seed]}, and the strategies auto chose."""
+def reference_relmse(path):
+    """The reference's own relMSE, from the full comparison's CSV (the rechecks use its reference file, whose own
+    error their CSVs do not know): part of every row's relMSE against it, subtracted from each."""
+    values = [float(r["reference_relmse"]) for r in csv.DictReader(path.open())]
+    return max(values[0], 0.0) if values else 0.0
+
+
+def costs(path, reference=0.0):
+    """{strategy or 'auto': [(relMSE - the reference's own) x s per seed]}, and the strategies auto chose."""
     rows = list(csv.DictReader(path.open()))
     cost, chosen = {}, []
     for r in rows:
@@ -25,13 +33,17 @@ def costs(path):
         key = "auto" if r["label"].startswith("auto") else r["strategy"]
         if key == "auto":
             chosen.append(r["strategy"])
-        cost.setdefault(key, []).append(float(r["relmse"]) * ms * 1e-3)
+        own = float(r["relmse"]) - reference
+        if own <= 0.0:
+            raise SystemExit(f"{path}: a relMSE {r['relmse']} at or below its reference's own {reference}: "
+                             "the reference is too noisy for the rows (more --reference-spp)")
+        cost.setdefault(key, []).append(own * ms * 1e-3)
     return cost, chosen
 
 
-def efficiencies(path):
+def efficiencies(path, reference=0.0):
     """{strategy or 'auto': efficiency}, and the strategies auto chose."""
-    cost, chosen = costs(path)
+    cost, chosen = costs(path, reference)
     return {k: 1.0 / statistics.mean(v) for k, v in cost.items()}, chosen
 
 
@@ -63,21 +75,23 @@ def scene_rows(out):
         if "recheck" in path.stem:
             continue
         scene = path.stem
-        full, _ = efficiencies(path)
+        reference = reference_relmse(path)
+        full, _ = efficiencies(path, reference)
         best = best_of(full)
         own_name = strategy_of(json.load((Path(out) / f"{scene}-defaults.json").open())["settings"])
         recheck = Path(out) / f"{scene}-recheck.csv"
         again = Path(out) / f"{scene}-recheck-best.csv"
         if recheck.exists() and again.exists():
-            r, chosen = costs(recheck)
-            b, _ = costs(again)
+            r, chosen = costs(recheck, reference)
+            b, _ = costs(again, reference)
             best_cost, own_cost, auto_cost = list(b.values())[0], r[own_name], r["auto"]
         else:
-            f, chosen = costs(path)
+            f, chosen = costs(path, reference)
             chosen = []
             best_cost, own_cost, auto_cost = f[best], f.get(own_name, [float("nan")]), f["auto"]
         rows.append({"scene": scene, "strategies": len(full) - 1, "best": best, "best_full": full[best],
                      "best_again": 1.0 / statistics.mean(best_cost), "own": own_name, "chosen": chosen,
+                     "reference_share": reference,
                      "seeds": len(auto_cost), "own_best": ratio(own_cost, best_cost),
                      "auto_best": ratio(auto_cost, best_cost), "auto_own": ratio(auto_cost, own_cost)})
     return rows
@@ -109,7 +123,9 @@ def main():
     low = [r["scene"] for r in rows if r["auto_best"][2] < 0.9]
     below = [r["scene"] for r in rows if r["auto_own"][2] < 1.0]
     print()
-    print(f"{rows[0]['seeds'] if rows else 0} recheck seeds; 95 % intervals of each ratio (delta method over seeds)")
+    print(f"{rows[0]['seeds'] if rows else 0} recheck seeds; 95 % intervals of each ratio (delta method over seeds); "
+          "each relMSE less its reference's own (per scene: "
+          + ", ".join(f"{r['scene']} {r['reference_share']:.2g}" for r in rows) + ")")
     print(f"auto below 0.9x the best (interval wholly below): {', '.join(low) if low else 'none'}; below the "
           f"scene's own strategy (interval wholly below): {', '.join(below) if below else 'none'}")
     print(f"point values below 0.9x the best: "

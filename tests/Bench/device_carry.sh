@@ -12,7 +12,7 @@ mkdir -p .devcarry/lib .devcarry/layers .gl
 cp -rL "$build/bin" .devcarry/bin
 # The window needs a display; benchmarks and the CPU-only suites run here (and the carry must stay under 64 MiB).
 rm -f .devcarry/bin/rt_gui_gpu_tests .devcarry/bin/rt_gui_cpu_tests .devcarry/bin/rt_bench .devcarry/bin/rt_common_tests \
-    .devcarry/bin/rt_cpu_tests
+    .devcarry/bin/rt_cpu_tests .devcarry/bin/fuzz_*_replay
 strip .devcarry/bin/ray-tracing-* .devcarry/bin/rt_*_tests .devcarry/bin/rt_gpu_bench 2>/dev/null || true
 for exe in .devcarry/bin/ray-tracing-gpu .devcarry/bin/ray-tracing-cpu .devcarry/bin/rt_gpu_tests .devcarry/bin/rt_gpu_bench; do
     [ -e "$exe" ] || continue # a build without tests or without the CPU app
