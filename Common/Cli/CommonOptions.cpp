@@ -119,7 +119,7 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
         ->check(CLI::Range(kMinRoughnessScale, kMaxRoughnessScale))
         ->type_name("X");
     app.add_option("--strategy", o.strategy,
-                   "Headless and in ray-tracing-cpu's window: scene renders with the scene's estimator, light "
+                   "Headless and in both windows: scene renders with the scene's estimator, light "
                    "sampler, light selection and pixel sampling (and the flags given); auto first runs a short pilot on the render's engine that measures "
                    "the efficiency 1/(relMSE x time) of every combination of the candidates (nee-mis and mixture; area, "
                    "solid-angle, projected and, for quad and triangle lights, projected-exact; every light selection "

@@ -58,7 +58,10 @@ StrategyLists autoCandidates(const Scene& scene, const StrategyLists& given, con
         if (std::find(fixed.begin(), fixed.end(), s->name) != fixed.end())
             continue;
         if (s->name == "estimator")
-            lists[flag] = "nee-mis,mixture";
+            // Book 3's mixture samples lights at diffuse vertices only: at a microfacet one it is BSDF sampling
+            // alone, a single strategy whose rare paths a pilot does not see (veach-mis, 2 cores: a pilot of 4 spp
+            // over 45 x 30 pixels chose it, 0.002x nee-mis's efficiency at 1 s).
+            lists[flag] = scene.hasMicrofacetMaterial() ? "nee-mis" : "nee-mis,mixture";
         else if (s->name == "light-sampler" && emitters > 0)
             lists[flag] = polygonLights ? "projected,solid-angle,area,projected-exact" : "projected,solid-angle,area";
         else if (s->name == "light-selection" && emitters > 1)
@@ -69,26 +72,35 @@ StrategyLists autoCandidates(const Scene& scene, const StrategyLists& given, con
 
 std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& candidates)
 {
-    const std::size_t n = candidates.size();
+    return pilotRelMse(candidates, candidates);
+}
+
+std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& measured, const std::vector<PilotHalves>& estimates)
+{
+    const std::size_t n = measured.size();
     if (n == 0)
         return {};
-    const int width = candidates.front().a.width(), height = candidates.front().a.height();
-    for (const PilotHalves& c : candidates)
-        for (const Image* image : {&c.a, &c.b})
-            if (image->width() != width || image->height() != height)
-                throw UsageError(fmt::format("pilot images differ in size ({}x{} and {}x{})", width, height,
-                                             image->width(), image->height()));
+    if (estimates.size() != n)
+        throw UsageError(fmt::format("{} pilot candidates measured and {} estimates", n, estimates.size()));
+    const int width = measured.front().a.width(), height = measured.front().a.height();
+    for (const auto* set : {&measured, &estimates})
+        for (const PilotHalves& c : *set)
+            for (const Image* image : {&c.a, &c.b})
+                if (image->width() != width || image->height() != height)
+                    throw UsageError(fmt::format("pilot images differ in size ({}x{} and {}x{})", width, height,
+                                                 image->width(), image->height()));
     const std::size_t values = std::size_t(width) * std::size_t(height) * 3;
     if (values == 0)
         return std::vector<PilotError>(n);
-    // x: each candidate's estimate (the halves' mean); v: its variance, (a - b)^2 / 4 (Image/Metrics.h).
+    // x: each candidate's estimate (the halves' mean); v: the variance of its measured halves, (a - b)^2 / 4
+    // (Image/Metrics.h).
     std::vector<std::vector<double>> x(n, std::vector<double>(values)), v(n, std::vector<double>(values));
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t k = 0; k < values; ++k)
         {
-            const double a = candidates[i].a.data()[k / 3][int(k % 3)], b = candidates[i].b.data()[k / 3][int(k % 3)];
-            x[i][k] = 0.5 * (a + b);
+            const double a = measured[i].a.data()[k / 3][int(k % 3)], b = measured[i].b.data()[k / 3][int(k % 3)];
             v[i][k] = 0.25 * (a - b) * (a - b);
+            x[i][k] = 0.5 * (double(estimates[i].a.data()[k / 3][int(k % 3)]) + estimates[i].b.data()[k / 3][int(k % 3)]);
         }
     // relMSE's denominator for candidate i: the others' estimate, per pixel. Never candidate i's own image: a firefly
     // divided by itself would make the spikiest estimator look the best (measured: bsdf chosen over nee-mis, which
@@ -178,16 +190,22 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     choice.estimatedRenderSeconds = budget.renderSeconds > 0.0 ? budget.renderSeconds : msPerPath * renderPaths * 1e-3;
     choice.budgetSeconds = std::min(budget.maxSeconds, budget.fraction * choice.estimatedRenderSeconds);
     // Successive halving (Jamieson & Talwalkar 2016): every candidate measured once, then the better half again,
-    // and so on down to two (the scene's own stays in every round, as the one to beat). A candidate whose first
+    // and so on down to two, the scene's own (the one to beat) in every round. A candidate whose first
     // measurement was lucky (a pilot sees few of the rare paths that carry a glossy scene's light) is measured
     // again before it can win: measured once each, uniform light selection won veach-mis's pilot at 6x nee-mis
-    // with the BVH, which the full comparison puts at 0.9x. Every measurement of every round is the same size.
+    // with the BVH, which the full comparison puts at 0.9x. The final round, the scene's own and one challenger,
+    // is measured kFinalMeasurements times, and only those measurements speak for the challenger (pilotSwitches).
+    // Every measurement of every round is the same size.
+    constexpr int kFinalMeasurements = 3;
     std::size_t measurements = 0;
     for (std::size_t m = planned;; m = (m + 1) / 2)
     {
-        measurements += m;
         if (m <= 2)
+        {
+            measurements += m * kFinalMeasurements;
             break;
+        }
+        measurements += m;
     }
     const double pathsPerHalf = choice.budgetSeconds * 1e3 / msPerPath / double(measurements) / 2.0;
     // At least 1024 pixels (relMSE's terms: its standard error falls with their count), the rest as samples
@@ -211,17 +229,50 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     const double shareMs = pathsPerHalf * msPerPath;
     const auto timeLimit = std::chrono::nanoseconds(static_cast<std::int64_t>(std::max(4.0 * shareMs, 5.0) * 1e6));
 
-    /// A candidate's measurements so far: the sums of its A and B halves, each measurement of the same size.
+    /// Sums of a candidate's A and B halves over measurements of the same size, and their time.
+    struct Sums
+    {
+        Image a, b;
+        double ms = 0.0;
+        int count = 0;
+
+        void add(Image&& imageA, Image&& imageB, double measurementMs)
+        {
+            ms += measurementMs;
+            if (count++ == 0)
+            {
+                a = std::move(imageA);
+                b = std::move(imageB);
+                return;
+            }
+            for (std::size_t k = 0; k < a.pixelCount(); ++k)
+            {
+                a.data()[k] += imageA.data()[k];
+                b.data()[k] += imageB.data()[k];
+            }
+        }
+        PilotHalves mean() const
+        {
+            PilotHalves m{a, b};
+            for (std::size_t k = 0; k < a.pixelCount(); ++k)
+            {
+                m.a.data()[k] /= float(count);
+                m.b.data()[k] /= float(count);
+            }
+            return m;
+        }
+    };
+    /// A candidate's measurements: all of them, and those of the final round.
     struct Candidate
     {
         PilotRow row;
-        Image sumA, sumB;
+        Sums all, final;
     };
     std::vector<Candidate> runs;
     for (const Strategy& strategy : grid)
-        runs.push_back({PilotRow{strategy, differences(own, strategy)}, Image(), Image()});
+        runs.push_back({PilotRow{strategy, differences(own, strategy)}, {}, {}});
     std::uint32_t measured = 0; // measurements made, for their seeds
-    auto measureOnce = [&](Candidate& c) {
+    auto measureOnce = [&](Candidate& c, bool finalRound) {
         RenderRequest half = request;
         half.settings = c.row.strategy.applyTo(pilot);
         half.settings.seed = request.settings.seed + 7919u * (2u * measured++ + 1u);
@@ -252,74 +303,37 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         choice.spp = a.spp + b.spp;
         // The halves are the same work: the faster one's time twice, so that a one-off stall of either (a pool's
         // first use, a clock ramping up: 2x on the first candidate after the probe, measured) does not decide.
-        c.row.ms += 2.0 * std::min(a.ms(), b.ms());
+        const double ms = 2.0 * std::min(a.ms(), b.ms());
+        c.row.ms += ms;
         ++c.row.measurements;
-        if (c.sumA.empty())
-        {
-            c.sumA = std::move(a.image);
-            c.sumB = std::move(b.image);
-        }
-        else
-            for (std::size_t k = 0; k < c.sumA.pixelCount(); ++k)
-            {
-                c.sumA.data()[k] += a.image.data()[k];
-                c.sumB.data()[k] += b.image.data()[k];
-            }
+        if (finalRound)
+            c.final.add(Image(a.image), Image(b.image), ms);
+        c.all.add(std::move(a.image), std::move(b.image), ms);
         return true;
     };
-    // relMSE of each candidate's mean over its measurements (its cost: their summed time), and the winner: the
-    // most efficient where its lead over the scene's own is more than twice the standard error of their ratio (the
-    // relMSEs' errors; the times' are smaller): a tie, or a lead within the pilot's noise, keeps the scene's
-    // strategy. With one standard error, the best of 12 candidates beat the scene's own by noise alone: on an H100
-    // the pilot chose uniform light selection on cornell-box-lights, 0.85x the BVH's efficiency. (Measured one
-    // setting at a time and once each, twice the error had kept book 3's mixture on rtrol-cornell-box at 0.46x;
-    // the grid measures nee-mis with its cheaper samplers, 20 standard errors ahead there.)
-    auto rescore = [&] {
-        std::vector<PilotHalves> halves;
-        std::vector<Candidate*> scored;
+    // Every candidate measured: their halves' means over all their measurements, in runs' order.
+    auto scored = [&] {
+        std::vector<Candidate*> out;
         for (Candidate& c : runs)
             if (c.row.measurements > 0 && !c.row.tooSlow)
-            {
-                Image a = c.sumA, b = c.sumB;
-                for (std::size_t k = 0; k < a.pixelCount(); ++k)
-                {
-                    a.data()[k] /= float(c.row.measurements);
-                    b.data()[k] /= float(c.row.measurements);
-                }
-                halves.push_back({std::move(a), std::move(b)});
-                scored.push_back(&c);
-            }
+                out.push_back(&c);
+        return out;
+    };
+    // relMSE of each candidate's mean over all its measurements (its cost: their summed time): the table's figures
+    // and the halving's order.
+    auto rescore = [&] {
+        const std::vector<Candidate*> measuredRuns = scored();
+        std::vector<PilotHalves> halves;
+        for (const Candidate* c : measuredRuns)
+            halves.push_back(c->all.mean());
         const std::vector<PilotError> errors = pilotRelMse(halves);
-        for (std::size_t i = 0; i < scored.size(); ++i)
+        for (std::size_t i = 0; i < measuredRuns.size(); ++i)
         {
-            PilotRow& row = scored[i]->row;
+            PilotRow& row = measuredRuns[i]->row;
             row.relMse = errors[i].relMse;
             row.relMseError = errors[i].standardError;
             row.efficiency = row.relMse > 0.0 && row.ms > 0.0 ? 1.0 / (row.relMse * row.ms * 1e-3) : 0.0;
         }
-    };
-    auto winner = [&]() -> const PilotRow* {
-        const PilotRow* incumbent = runs.front().row.measurements > 0 && !runs.front().row.tooSlow ? &runs.front().row
-                                                                                                    : nullptr;
-        const PilotRow* leader = incumbent;
-        auto relative = [](const PilotRow& r) { return r.relMse > 0.0 ? r.relMseError / r.relMse : 0.0; };
-        for (const Candidate& c : runs)
-        {
-            const PilotRow& row = c.row;
-            if (row.tooSlow || row.measurements == 0)
-                continue;
-            if (!incumbent)
-            {
-                if (!leader || row.efficiency > leader->efficiency)
-                    leader = &row;
-                continue;
-            }
-            if (row.efficiency > leader->efficiency &&
-                std::log(row.efficiency / incumbent->efficiency) >
-                    2.0 * std::hypot(relative(row), relative(*incumbent)))
-                leader = &row;
-        }
-        return leader;
     };
 
     bool finished = true;
@@ -328,32 +342,38 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         active[i] = i;
     while (finished && !choice.budgetSpent)
     {
-        for (const std::size_t i : active)
-        {
-            // The budget on the host's clock: a GPU compiles each candidate's pipeline (1.3 s each on an H100 with
-            // the driver's cache cold), which no engine clock sees. What is left is not measured.
-            if (measured > 0 &&
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > choice.budgetSeconds)
+        const bool finalRound = active.size() <= 2;
+        for (int repeat = 0; repeat < (finalRound ? kFinalMeasurements : 1) && finished && !choice.budgetSpent;
+             ++repeat)
+            for (const std::size_t i : active)
             {
-                choice.budgetSpent = true;
-                break;
+                // The budget on the host's clock: a GPU compiles each candidate's pipeline (1.3 s each on an H100
+                // with the driver's cache cold), which no engine clock sees. What is left is not measured.
+                if (measured > 0 &&
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >
+                        choice.budgetSeconds)
+                {
+                    choice.budgetSpent = true;
+                    break;
+                }
+                if (!(finished = measureOnce(runs[i], finalRound)))
+                    break;
             }
-            if (!(finished = measureOnce(runs[i])))
-                break;
-        }
-        if (!finished || active.size() <= 2)
+        if (!finished || finalRound)
             break;
         rescore();
-        // The better half by efficiency goes on, the scene's own with it.
+        // Half go on: the scene's own (never stopped) and the most efficient of the others. (Own added after the
+        // better half, where it was not in it, kept three candidates at three for good: the pilot measured them
+        // until the host's clock passed its budget.)
+        const std::size_t keep = (active.size() + 1) / 2;
         std::vector<std::size_t> next;
         for (const std::size_t i : active)
-            if (!runs[i].row.tooSlow && runs[i].row.measurements > 0)
+            if (i != 0 && !runs[i].row.tooSlow && runs[i].row.measurements > 0)
                 next.push_back(i);
         std::sort(next.begin(), next.end(),
                   [&](std::size_t x, std::size_t y) { return runs[x].row.efficiency > runs[y].row.efficiency; });
-        next.resize(std::min(next.size(), (active.size() + 1) / 2));
-        if (std::find(next.begin(), next.end(), std::size_t(0)) == next.end() && !runs.front().row.tooSlow)
-            next.push_back(0);
+        next.resize(std::min(next.size(), keep - 1));
+        next.insert(next.begin(), 0);
         active = std::move(next);
         if (active.size() <= 1)
             break;
@@ -366,11 +386,69 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         return choice;
     }
     rescore();
+    // The decision: the final round's challenger against the scene's own. Its earlier measurements chose it for
+    // that round, so they are the luckiest of their round (the winner's curse): on the CPU's cornell-box-lights,
+    // whose 13 candidates are within 10 % of each other, deciding on them switched with 3 seeds of 3, to three
+    // different strategies. Its final measurements are fresh; the scene's own is measured in every round whatever
+    // its results, so all of its measurements count. Both normalised by every candidate's estimate.
+    const std::vector<Candidate*> measuredRuns = scored();
+    const auto challenger = std::find_if(measuredRuns.begin(), measuredRuns.end(), [&](const Candidate* c) {
+        return c != &runs.front() && c->final.count > 0;
+    });
+    if (challenger != measuredRuns.end() && measuredRuns.front() == &runs.front())
+    {
+        std::vector<PilotHalves> measuredHalves, estimates;
+        for (const Candidate* c : measuredRuns)
+        {
+            measuredHalves.push_back(c == *challenger ? c->final.mean() : c->all.mean());
+            estimates.push_back(c->all.mean());
+        }
+        const std::vector<PilotError> errors = pilotRelMse(measuredHalves, estimates);
+        const std::size_t at = std::size_t(challenger - measuredRuns.begin());
+        PilotRow& row = (*challenger)->row;
+        row.finalMeasurements = (*challenger)->final.count;
+        row.finalRelMse = errors[at].relMse;
+        row.finalRelMseError = errors[at].standardError;
+        row.finalEfficiency =
+            row.finalRelMse > 0.0 ? 1.0 / (row.finalRelMse * (*challenger)->final.ms * 1e-3) : 0.0;
+        const PilotRow& incumbent = runs.front().row;
+        auto relative = [](double value, double error) { return value > 0.0 ? error / value : 0.0; };
+        if (pilotSwitches({incumbent.efficiency, relative(incumbent.relMse, incumbent.relMseError)},
+                          {row.finalEfficiency, relative(row.finalRelMse, row.finalRelMseError)}))
+            choice.chosen = row.strategy;
+    }
+    else if (choice.budgetSpent && measuredRuns.size() > 1 && measuredRuns.front() == &runs.front())
+    {
+        // No final round: the host's clock passed the budget first (a GPU compiling the candidates' pipelines). The
+        // most efficient measured, on all its measurements, against the same rule: a lead of a few standard errors
+        // may be the best of several draws, a lead of 3x (book 3's mixture on rtrol-cornell-box, on lavapipe) is not.
+        const PilotRow* leader = nullptr;
+        for (const Candidate* c : measuredRuns)
+            if (c != &runs.front() && (!leader || c->row.efficiency > leader->efficiency))
+                leader = &c->row;
+        const PilotRow& incumbent = runs.front().row;
+        auto relative = [](const PilotRow& r) { return r.relMse > 0.0 ? r.relMseError / r.relMse : 0.0; };
+        if (leader && pilotSwitches({incumbent.efficiency, relative(incumbent)}, {leader->efficiency, relative(*leader)}))
+            choice.chosen = leader->strategy;
+    }
     for (const Candidate& c : runs)
         choice.rows.push_back(c.row);
-    if (const PilotRow* leader = winner())
-        choice.chosen = leader->strategy;
     return choice;
+}
+
+bool pilotSwitches(const PilotScore& own, const PilotScore& challenger)
+{
+    if (challenger.efficiency <= 0.0)
+        return false;
+    if (own.efficiency <= 0.0)
+        return true;
+    // The lead must also be 10 %: the relMSE's standard error leaves the times out, and a pilot's renders of a few
+    // milliseconds are timed to about that (on an H200, 600 px, a pilot right after its pipelines' compilation
+    // switched sphere-light-closeup to solid-angle sampling, 0.7x the scene's projected at the render's 10,000 spp);
+    // a smaller lead would also gain less than the pilot cost.
+    constexpr double kMinimumLead = 1.1;
+    return std::log(challenger.efficiency / own.efficiency) >
+           std::max(std::log(kMinimumLead), 2.0 * std::hypot(own.relativeError, challenger.relativeError));
 }
 
 nlohmann::json AutoChoice::toJson() const
@@ -395,6 +473,10 @@ nlohmann::json AutoChoice::toJson() const
                                    {"relmse_standard_error", r.relMseError},
                                    {"efficiency", r.efficiency},
                                    {"measurements", r.measurements},
+                                   {"final_measurements", r.finalMeasurements},
+                                   {"final_relmse", r.finalRelMse},
+                                   {"final_relmse_standard_error", r.finalRelMseError},
+                                   {"final_efficiency", r.finalEfficiency},
                                    {"too_slow", r.tooSlow}});
     return j;
 }
@@ -404,12 +486,21 @@ std::string AutoChoice::table() const
     std::string text = fmt::format("{:<44} {:>30} {:>3} {:>9} {:>10} {:>8} {:>12}\n", "strategy", "differs from own",
                                    "n", "ms", "relMSE", "±1 s.e.", "1/(relMSE s)");
     for (const PilotRow& r : rows)
-        text += fmt::format("{:<44} {:>30} {:>3} {:>9.2f} {:>10.3g} {:>8.2g} {:>12.4g}{}\n", r.strategy.name(),
+    {
+        const std::string decided =
+            r.finalMeasurements > 0
+                ? fmt::format("  final round: {} x2 halves, relMSE {:.3g} ±{:.2g}, 1/(relMSE s) {:.4g}{}",
+                              r.finalMeasurements, r.finalRelMse, r.finalRelMseError, r.finalEfficiency,
+                              r.strategy == chosen ? ": chosen" : ": not enough to switch")
+                : "";
+        text += fmt::format("{:<44} {:>30} {:>3} {:>9.2f} {:>10.3g} {:>8.2g} {:>12.4g}{}{}\n", r.strategy.name(),
                             r.differs, r.measurements, r.ms, r.relMse, r.relMseError, r.efficiency,
-                            r.tooSlow                ? "  stopped: 4x its share"
-                            : r.measurements == 0    ? "  not measured: the budget was spent"
-                            : r.strategy == chosen   ? "  <- chosen"
-                                                     : "");
+                            r.tooSlow                                        ? "  stopped: 4x its share"
+                            : r.measurements == 0                            ? "  not measured: the budget was spent"
+                            : r.strategy == chosen && r.finalMeasurements == 0 ? "  <- chosen"
+                                                                             : "",
+                            decided);
+    }
     return text;
 }
 } // namespace rt::compare

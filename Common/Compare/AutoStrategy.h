@@ -8,9 +8,10 @@
 // (strategyGrid: a setting a strategy does not use is not varied), the scene's own first, each rendered as two
 // independent halves of the same small render (the pilot's size and spp are the same for every candidate, so that
 // their images combine: about 1024 pixels, or the engine's concurrent paths, the rest of the budget as spp), by
-// successive halving: all once, the better half again, and so on down to two, the scene's own in every round. Not
-// one setting at a time: the estimator compared at the scene's light sampler kept book 3's mixture on
-// rtrol-cornell-box, where an estimator with NEE and a cheaper sampler is 2x as efficient.
+// successive halving: all once, the better half again, and so on down to two, the scene's own in every round; the
+// final two are measured three times. Not one setting at a time: the estimator compared at the scene's light
+// sampler kept book 3's mixture on rtrol-cornell-box, where an estimator with NEE and a cheaper sampler is 2x as
+// efficient.
 //
 // A candidate's error is the variance of its estimate from its halves (Image/Metrics.h's two-half estimate), as
 // relMSE, whose denominator is the other candidates' combined estimate (weighted by their inverse errors), never
@@ -18,10 +19,11 @@
 // unbiased (the engines' agreement tests), so its variance is its error: the error against the others' estimate
 // would add their noise, and on a glossy scene's heavy tails (veach-mis) its correction for that noise failed and
 // read as a bias. Its efficiency is 1 / (relMSE x seconds), twice the faster half's time
-// on the engine's clock (Compare/Measurement.h). The most efficient candidate measured wins where its lead over
-// the scene's own is more than twice the standard error of their ratio: otherwise the scene's own stays. The search
-// stops once the pilot's wall time passes its budget (a GPU compiles a pipeline per candidate): the candidates
-// left are not measured, and the best measured wins.
+// on the engine's clock (Compare/Measurement.h). The final round's challenger wins where, on its final round's
+// measurements alone (the earlier ones chose it, and are lucky), its lead over the scene's own is more than twice
+// the standard error of their ratio and 10 % (pilotSwitches): otherwise the scene's own stays. The search stops once the
+// pilot's wall time passes its budget (a GPU compiles a pipeline per candidate): the candidates left are not
+// measured, and without a final round the most efficient measured, on all its measurements, against the same rule.
 //
 // The choice depends on timings, so two runs may choose differently where candidates are close: the record names
 // the strategy chosen, and giving its flags renders it again, bit for bit.
@@ -59,6 +61,11 @@ struct PilotRow
     double relMseError = 0.0; // relMse's standard error (over the pixels' terms)
     double efficiency = 0.0; // 1 / (relMse x seconds)
     bool tooSlow = false; // a half ran past 4x its share of the budget and was stopped: efficiency 0
+    /// The final round's challenger: the same figures from its final round's measurements alone, which decide.
+    int finalMeasurements = 0;
+    double finalRelMse = 0.0;
+    double finalRelMseError = 0.0;
+    double finalEfficiency = 0.0;
 };
 
 /// What the pilot measured and chose: --stats' "strategy_choice", the log's table, --compare's auto row.
@@ -87,7 +94,8 @@ struct AutoChoice
 /// setting name: "estimator") keeps only its value. The defaults: the estimators that combine strategies, nee-mis
 /// and book 3's mixture (a single strategy, nee or bsdf, can be unboundedly worse where its rare paths carry the
 /// light, which a pilot does not sample: on veach-mis a pilot chose nee, 0.05x nee-mis's efficiency; they are
-/// candidates when a list names them); area, solid-angle and projected
+/// candidates when a list names them), the mixture only where the scene has no microfacet material (there it is
+/// BSDF sampling alone: a pilot chose it on veach-mis, 0.002x nee-mis's efficiency); area, solid-angle and projected
 /// light sampling, and projected-exact where the scene has quad or triangle lights (on spheres it is projected),
 /// none but the request's when it has no emitter; every light selection where the scene has two emitters or more.
 /// The pixel sampling and Russian roulette stay the request's: Sobol's gain over random grows with the spp, and a
@@ -118,4 +126,24 @@ struct PilotError
 /// combined estimate; one candidate: by its own). Every image the same
 /// size; throws UsageError otherwise.
 std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& candidates);
+
+/// The same with each candidate's variance from `measured[i]` and the others' combined estimate from `estimates`
+/// (the decision measures the final round's challenger by its final measurements, normalised by every
+/// measurement's estimate). Both lists of the same length and image size; throws UsageError otherwise.
+std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& measured, const std::vector<PilotHalves>& estimates);
+
+/// A candidate as the decision reads it: its efficiency 1 / (relMSE s) and its relMSE's relative standard error.
+struct PilotScore
+{
+    double efficiency = 0.0;
+    double relativeError = 0.0;
+};
+
+/// Whether the pilot leaves the scene's own strategy for `challenger`: where the log of their efficiencies' ratio
+/// is more than twice its standard error (the relMSEs' relative errors) and the lead more than 10 % (the times'
+/// noise, which that error leaves out). Within that, a tie
+/// or noise, the scene's own stays: with one standard error, and the challenger's lucky measurements counted, the
+/// best of 12 candidates beat the scene's own by noise alone (uniform light selection on an H100's
+/// cornell-box-lights, 0.85x the BVH's efficiency).
+bool pilotSwitches(const PilotScore& own, const PilotScore& challenger);
 } // namespace rt::compare

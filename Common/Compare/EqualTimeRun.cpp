@@ -57,6 +57,15 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
                     const double budgetMs =
                         isAuto ? std::max(options.equalTimeMs - choice.pilotMs, 0.01 * options.equalTimeMs)
                                : options.equalTimeMs;
+                    // The auto row renders what it chose at the spp the budget gave that strategy's own row, where
+                    // one has measured it, and pays the pilot on top: what `--strategy auto --spp N` costs a user.
+                    // Sized by a budget of its own, less the pilot, its spp varied by seed with the calibration's
+                    // noise (rect-light-closeup on 2 cores: 449-589 spp against the own row's 615), and Sobol's
+                    // error falls faster than 1/spp: the same strategy measured up to 0.86x itself.
+                    if (isAuto && spp == 0)
+                        if (const auto row = std::find(options.strategies.begin(), options.strategies.end(), strategy);
+                            row != options.strategies.end())
+                            spp = spps[std::size_t(row - options.strategies.begin())];
                     RenderRequest request = strategy.request(base, std::max(spp, 1));
                     request.settings.seed += std::uint32_t(k);
                     Measurement m = spp == 0 ? renderForBudget(*e.engine, seededBase, strategy, budgetMs, reference.image)

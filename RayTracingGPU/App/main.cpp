@@ -86,9 +86,6 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
 {
     if (!options.hdr.empty() || !options.stats.empty())
         spdlog::warn("--hdr and --stats are for --headless; the window's Save writes the PFM beside the PNG");
-    if (options.strategy == "auto")
-        throw rt::UsageError("--strategy auto runs with --headless, --compare or in ray-tracing-cpu's window; this "
-                             "window has no strategy pilot yet");
     rt::checkOutputPaths(options);
     rt::gpu::gui::WindowOptions w;
     if (!flags.windowSize.empty())
@@ -124,6 +121,10 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
     w.screenshot = flags.screenshot;
     w.stateJson = flags.stateJson;
     w.savePath = options.output.empty() ? "ray-tracing-gpu.png" : options.output;
+    // --strategy auto: the window opens on the pilot's choice (the panel's Choose strategy, run before the first
+    // frame).
+    w.initial.pilotRequest = options.strategy == "auto";
+    w.pilotBudget = rt::compare::pilotBudget(options);
     return rt::gpu::gui::runWindow(w, std::move(job.scene));
 }
 #else

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Issue 37's check of --strategy auto, per scene, at equal time on one engine:
 #  1. a full --compare over every candidate of auto's defaults (estimators x light samplers x light selections; no
-#     selections where the scene has one light, no projected-exact where its lights are spheres; the scene's pixel
-#     sampling) with the auto row beside them, its time including its pilot's;
+#     selections where the scene has one light, no projected-exact where its lights are spheres, no mixture where it
+#     has a microfacet material; the scene's pixel sampling) with the auto row beside them, its time including its
+#     pilot's;
 #  2. the best strategy of 1 measured again, and the scene's own strategy and auto with RECHECK_SEEDS fresh seeds
 #     (default 12, from seed 100: a render sharing a seed with its reference's halves, seed + 1000 and + 2000, would
 #     be correlated with it), against 1's reference: the best of many noisy rows is biased up (the winner's curse), a
@@ -24,10 +25,14 @@ mkdir -p "$out" "$images"
 here=$(cd "$(dirname "$0")" && pwd)
 if [ "$engine" = gpu ]; then app="$bin/ray-tracing-gpu"; else app="$bin/ray-tracing-cpu"; fi
 for scene in "$@"; do
+    # auto's candidates (Compare/AutoStrategy.h autoCandidates): no light selection for one light, no
+    # projected-exact for sphere lights, no mixture where the scene has a microfacet material.
+    estimators=nee-mis,mixture
     case "$scene" in
     rect-light-closeup | rtrol-cornell-box) samplers=projected,solid-angle,area,projected-exact selections=bvh ;;
     sphere-light-closeup) samplers=projected,solid-angle,area selections=bvh ;;
-    veach-mis) samplers=projected,solid-angle,area selections=bvh,power,uniform ;;
+    veach-mis) samplers=projected,solid-angle,area selections=bvh,power,uniform estimators=nee-mis ;;
+    glossy-cornell) samplers=projected,solid-angle,area,projected-exact selections=bvh,power,uniform estimators=nee-mis ;;
     *) samplers=projected,solid-angle,area,projected-exact selections=bvh,power,uniform ;;
     esac
     common=(--scene "$scene" --engines "$engine" --width "$width" --equal-time "$equalMs" --rounds 1)
@@ -36,7 +41,7 @@ for scene in "$@"; do
     reference="$images/$scene-reference.pfm"
     if [ "${RECHECK_ONLY:-0}" != 1 ] || [ ! -f "$out/$scene.csv" ] || [ ! -f "$reference" ]; then
         $app --compare "${common[@]}" --seeds "$seeds" --reference-spp "$referenceSpp" --strategy auto \
-            --estimators nee-mis,mixture --light-samplers "$samplers" --light-selections "$selections" \
+            --estimators "$estimators" --light-samplers "$samplers" --light-selections "$selections" \
             --csv "$out/$scene.csv" --images "$images/$scene-images" \
             >"$out/$scene.txt" 2>"$out/$scene.log"
         mv "$images/$scene-images/reference.pfm" "$reference"

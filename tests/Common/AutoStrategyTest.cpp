@@ -134,6 +134,11 @@ TEST(AutoCandidates, FollowTheScenesLights)
     const StrategyLists q = autoCandidates(quads, {}, {});
     EXPECT_NE(q.at("--light-samplers").find("projected-exact"), std::string::npos);
     EXPECT_EQ(q.at("--light-selections"), "bvh,power,uniform");
+
+    const Scene glossy = makeScene("veach-mis");
+    ASSERT_TRUE(glossy.hasMicrofacetMaterial());
+    EXPECT_EQ(autoCandidates(glossy, {}, {}).at("--estimators"), "nee-mis")
+        << "the mixture is BSDF sampling alone at a microfacet vertex";
 }
 
 TEST(AutoCandidates, FlagsFixAndListsReplace)

@@ -9,6 +9,7 @@
 
 #include "App/Gui/Theme.h"
 #include "Cli/ActionGrammar.h"
+#include "Gui/PilotView.h"
 #include "Gui/SettingWidget.h"
 #include "Render/MemoryBudget.h"
 #include "Scenes/Catalogue.h"
@@ -247,29 +248,7 @@ void SettingsPanel::drawRenderControls(Session& session)
 
     if (const compare::AutoChoice* choice = session.strategyChoice();
         choice && ImGui::CollapsingHeader("Strategy pilot", ImGuiTreeNodeFlags_DefaultOpen))
-    {
-        ImGui::TextDisabled("chose %s in %.2f s (%dx%d, %d spp per candidate)", choice->chosen.name().c_str(),
-                            choice->pilotWallSeconds, choice->width, choice->height, choice->spp);
-        if (ImGui::BeginTable("pilot", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit))
-        {
-            for (const char* heading : {"strategy", "n", "relMSE", "1/(relMSE s)"})
-                ImGui::TableSetupColumn(heading);
-            ImGui::TableHeadersRow();
-            for (const compare::PilotRow& row : choice->rows)
-            {
-                ImGui::TableNextRow();
-                ImGui::TableNextColumn();
-                ImGui::Text("%s%s", row.strategy == choice->chosen ? "> " : "  ", row.strategy.name().c_str());
-                ImGui::TableNextColumn();
-                ImGui::Text("%d", row.measurements);
-                ImGui::TableNextColumn();
-                ImGui::Text("%.3g", row.relMse);
-                ImGui::TableNextColumn();
-                ImGui::Text("%.4g", row.efficiency);
-            }
-            ImGui::EndTable();
-        }
-    }
+        rt::gui::drawPilot(*choice);
 
     if (const auto& last = session.lastFinished())
     {

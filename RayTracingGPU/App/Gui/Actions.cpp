@@ -24,6 +24,8 @@ const std::vector<ActionSpec>& specs()
             {"engine", ActionValue::Text, "gpu|single|multi",
              "what renders the image: the GPU in the frames, or a CPU engine a whole render at a time", 0, 1e30,
              [](const std::string& v) { return parseName<EngineKind>(v).has_value(); }},
+            {"choose-strategy", ActionValue::None, "",
+             "a pilot on the GPU chooses estimator, light sampler and selection (--strategy auto) for the image"},
             {"accumulate", ActionValue::OnOff, "on|off", "accumulate samples between frames"},
             {"sobol", ActionValue::OnOff, "on|off", "Owen-scrambled Sobol pixel samples (off: random)"},
             {"heatmap", ActionValue::OnOff, "on|off", "per-pixel cost (needs VK_KHR_shader_clock)"},
@@ -85,6 +87,8 @@ bool applyAction(const Action& a, Controls& c)
         c.setRayTracing(a.on());
     else if (n == "engine")
         c.setEngine(*parseName<EngineKind>(a.value)); // checked by the spec
+    else if (n == "choose-strategy")
+        c.chooseStrategy();
     else if (n == "accumulate")
         c.setAccumulate(a.on());
     else if (n == "heatmap")

@@ -65,6 +65,7 @@ void Controls::setRoughnessScale(float scale)
 
 void Controls::setRayTracing(bool on) { m_state->image.rayTracing = on; }
 void Controls::setEngine(EngineKind engine) { m_state->engine = engine; }
+void Controls::chooseStrategy() { m_state->pilotRequest = true; }
 void Controls::setAccumulate(bool on) { m_state->image.accumulate = on; }
 void Controls::setHeatmap(bool on) { m_state->image.heatmap = on && m_state->costAvailable; }
 void Controls::setAutoCostScale(bool on) { m_state->display.autoCostScale = on; }

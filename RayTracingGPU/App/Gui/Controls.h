@@ -36,6 +36,10 @@ public:
     void setRayTracing(bool on);
     /// The engine that renders the image (WindowState::engine).
     void setEngine(EngineKind engine);
+    /// Asks for --strategy auto's pilot (Compare/AutoStrategy.h) on the GPU engine for the panel's image; the frame
+    /// loop runs it and sets the panel's estimator, light sampler and selection to its choice, which any setting
+    /// changed afterwards overrides.
+    void chooseStrategy();
     void setAccumulate(bool on);
     void setHeatmap(bool on); // stays off without the shader clock (WindowState::costAvailable)
     void setAutoCostScale(bool on);

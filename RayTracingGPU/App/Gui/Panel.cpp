@@ -11,6 +11,7 @@
 #include "Scene/CameraMoves.h"
 #include "Cli/ActionGrammar.h"
 #include "Gui/EngineLabel.h"
+#include "Gui/PilotView.h"
 #include "Gui/SettingWidget.h"
 #include "Error.h"
 #include "Image/ImageIO.h"
@@ -159,6 +160,18 @@ void rayTracingSection(Controls& controls, const WindowState& state, const Panel
     for (const Setting& setting : settingsTable())
         if (const auto picked = rt::gui::settingWidget(setting, image.request.settings))
             controls.setSetting(setting, *picked);
+    if (ImGui::Button("Choose strategy (pilot)", ImVec2(-1.0f, 0.0f)))
+        controls.chooseStrategy();
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("--strategy auto: a short pilot on the GPU (5 %% of the image's estimated time, 2 s at most, "
+                          "and the pipelines it compiles; the window waits) measures the efficiency 1/(relMSE s) of "
+                          "nee-mis and mixture with each light sampler and selection and sets the panel to the best; "
+                          "change any setting afterwards to override it");
+    if (info.pilot && ImGui::TreeNodeEx("Strategy pilot", ImGuiTreeNodeFlags_DefaultOpen))
+    {
+        rt::gui::drawPilot(*info.pilot);
+        ImGui::TreePop();
+    }
     const RenderSettings& s = image.request.settings;
     if (s.sampling == PixelSampling::Stratified && !(display.stopAtSpp && image.accumulate))
         ImGui::TextDisabled("stratified needs Stop at spp (and accumulation): random samples until then");

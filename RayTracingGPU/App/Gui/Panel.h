@@ -6,6 +6,7 @@
 #include <string>
 
 #include "App/Gui/Controls.h"
+#include "Compare/AutoStrategy.h"
 #include "App/Gui/WindowLayout.h"
 
 namespace rt::gpu::gui
@@ -31,6 +32,7 @@ struct PanelInfo
     std::string costUnit = "ticks per sample"; // of costMax and costScale: the GPU's, or a CPU engine's map's
     Extent window; // the framebuffer
     Extent image; // the image letterboxed in it (Stats)
+    const compare::AutoChoice* pilot = nullptr; // the last strategy pilot's, none before the first
 };
 
 /// What belongs to the panel alone (text being typed).

@@ -25,6 +25,7 @@
 #include "App/Gui/RasterPreview.h"
 #include "App/Gui/WindowLayout.h"
 #include "App/Gui/WindowReferences.h"
+#include "Compare/AutoStrategy.h"
 #include "Compare/ReferenceCache.h"
 #include "Engine/ProgressiveFrame.h"
 #include "Error.h"
@@ -328,7 +329,8 @@ private:
     bool actionsDone() const
     {
         return m_nextAction >= m_options.actions.size() && m_waitFrames == 0 && Clock::now() >= m_sleepUntil &&
-               !m_loading.valid() && !m_state.sceneRequest && !m_waitReference && !m_waitRender;
+               !m_loading.valid() && !m_state.sceneRequest && !m_waitReference && !m_waitRender &&
+               !m_state.pilotRequest;
     }
 
     void applyRequests()
@@ -349,6 +351,45 @@ private:
             const std::filesystem::path png = *m_state.savePlotRequest;
             m_state.savePlotRequest.reset();
             savePlot(png);
+        }
+        if (m_state.pilotRequest && !m_loading.valid() && !m_state.sceneRequest) // the pilot is of the scene to show
+        {
+            m_state.pilotRequest = false;
+            choosePilotStrategy();
+        }
+    }
+
+    /// --strategy auto's pilot on the window's GPU engine (its headless path: the render driver on the same device,
+    /// idle, between frames; the window waits, its budget and the pipelines it compiles) for the panel's image at
+    /// its spp and camera, then the panel's strategy settings are its choice.
+    void choosePilotStrategy()
+    {
+        if (m_state.engine != EngineKind::Gpu)
+        {
+            m_state.message = "the strategy pilot measures the GPU engine: select it first (ray-tracing-cpu's window "
+                              "pilots its CPU engines)";
+            return;
+        }
+        m_presenter.waitIdle();
+        RenderRequest request = m_state.image.request;
+        if (!(m_state.image.camera == m_state.sceneCamera))
+            request.camera = m_state.image.camera;
+        try
+        {
+            compare::AutoChoice choice = compare::chooseStrategy(
+                m_engine, request, compare::autoCandidates(*m_scene, {}, {}), m_options.pilotBudget);
+            m_state.image.request.settings = choice.chosen.applyTo(m_state.image.request.settings);
+            m_state.message = choice.rows.empty()
+                                  ? fmt::format("the scene leaves one strategy: {}", choice.chosen.name())
+                                  : fmt::format("strategy chosen by a pilot of {:.2f} s: {}", choice.pilotWallSeconds,
+                                                choice.chosen.name());
+            spdlog::info("{}\n{}", m_state.message, choice.table());
+            m_pilot = std::move(choice);
+        }
+        catch (const Error& e)
+        {
+            m_state.message = std::string("the strategy pilot failed: ") + e.what();
+            spdlog::error("{}", m_state.message);
         }
     }
 
@@ -421,6 +462,7 @@ private:
         info.costUnit = m_costUnit;
         info.window = window;
         info.image = m_state.image.extent();
+        info.pilot = m_pilot ? &*m_pilot : nullptr;
         return info;
     }
 
@@ -777,7 +819,9 @@ private:
             {"samples_per_frame", m_state.display.samplesPerFrame},
             {"font_pixels", m_controls.fontPixels()},
             {"roughness_scale", m_state.image.request.scene.options.roughnessScale},
-            {"message", m_state.message}};
+            {"message", m_state.message},
+            {"settings", toJson(m_state.image.request.settings)},
+            {"strategy_choice", m_pilot ? m_pilot->toJson() : nlohmann::json()}};
         writeFileAtomically(m_options.stateJson, state.dump(2) + "\n");
     }
 
@@ -815,6 +859,7 @@ private:
     std::vector<EstimatePoint> m_points; // the accumulation's plot points, added to the plot at its end
     bool m_waitReference = false; // the wait-reference action holds the script
     bool m_waitRender = false; // and the wait action
+    std::optional<compare::AutoChoice> m_pilot; // the last strategy pilot's
     CpuRenders m_cpu;
     std::optional<CpuRender> m_cpuSubmitted; // the render asked of a CPU engine for the panel's settings
     bool m_cpuShown = false; // its image is in the accumulation

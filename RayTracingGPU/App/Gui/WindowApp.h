@@ -17,6 +17,7 @@
 #include "App/Gui/Actions.h"
 #include "App/Gui/WindowState.h"
 #include "Cli/WindowSize.h"
+#include "Compare/AutoStrategy.h"
 #include "Engine/GpuEngine.h"
 #include "Scenes/Catalogue.h"
 
@@ -35,6 +36,7 @@ struct WindowOptions
     std::filesystem::path stateJson; // at exit: the window's and the image's sizes, the layout drawn, the message
     std::vector<Action> actions;
     std::string savePath; // the panel's initial file name for Save image
+    compare::PilotBudget pilotBudget; // the strategy pilot's (--pilot-budget, --pilot-max-seconds)
 };
 
 /// Opens the window on `scene` and runs until it is closed or `options.frames` have run. Returns the exit

@@ -75,6 +75,7 @@ struct WindowState
     std::optional<std::filesystem::path> saveRequest; // PNG path; the PFM goes beside it
     std::optional<std::filesystem::path> savePlotRequest; // the convergence plot's PNG; its CSV goes beside it
     std::optional<Extent> resizeRequest; // 0 x 0: minimised
+    bool pilotRequest = false; // --strategy auto's pilot on the GPU engine, then the panel takes its choice
     /// The panel's last line for the user: an error, a saved file, a value held to its limit. Empty: none.
     std::string message;
 };

@@ -151,8 +151,10 @@ TEST(WindowActions, EachActionChangesItsSetting)
 TEST(WindowActions, RequestsAreLeftForTheFrameLoop)
 {
     WindowState state = cornellState();
-    apply(state, "scene=rtnw-quads;resize=0x0;save=out.png");
+    EXPECT_FALSE(state.pilotRequest);
+    apply(state, "scene=rtnw-quads;resize=0x0;save=out.png;choose-strategy");
     EXPECT_EQ(state.sceneRequest, "rtnw-quads");
+    EXPECT_TRUE(state.pilotRequest) << "the frame loop runs the strategy pilot";
     EXPECT_EQ(state.resizeRequest, (Extent{0, 0}));
     EXPECT_EQ(state.saveRequest, std::filesystem::path("out.png"));
     EXPECT_THROW(apply(state, "font=Comic Sans"), UsageError);
