@@ -818,14 +818,17 @@ def section_light_samplers():
     return out
 
 
-AUTO = {"date": "2026-11-26", "notebook": "## 15.",
-        "runs": [("cpu-auto-strategy", "CI kind: 2-vCPU AMD EPYC, both cores (the multi engine)",
-                  "128 px wide, each strategy for 1 s",
-                  "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy multi 128 1000 2 8192 \\\n"
+AUTO = {"date": "2026-11-28", "notebook": "## 34.",
+        "runs": [("cpu-auto-strategy-1128", "CI kind: 2-vCPU AMD EPYC, both cores (the multi engine)",
+                  "128 px wide, each strategy for 1 s, 12 recheck seeds",
+                  "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-1128 multi 128 1000 2 8192 \\\n"
                   "    sphere-light-closeup rect-light-closeup rtrol-cornell-box veach-mis cornell-box-lights \\\n"
                   "    triangle-lights many-lights glossy-cornell"),
-                 ("h100-auto-strategy", "NVIDIA H100 80GB HBM3, driver 580", "600 px wide, each strategy for 2 s",
-                  "HEADLESS_RUNS=warm MS=2000 SCENES=\"cornell-box-lights sphere-light-closeup\" \\\n"
+                 ("h200-auto-strategy", "NVIDIA H200, driver 580",
+                  "600 px wide, each strategy for 1 s, 8 recheck seeds (glossy-cornell: the device's time ran out)",
+                  "bash tests/Bench/device_carry.sh  # then on the device, in two runs of four scenes:\n"
+                  "RECHECK_SEEDS=8 HEADLESS_RUNS= MS=1000 SEEDS=2 REF_SPP=65536 \\\n"
+                  "    SCENES=\"sphere-light-closeup rect-light-closeup rtrol-cornell-box veach-mis\" \\\n"
                   "    bash tests/Bench/device_run.sh auto")]}
 
 
@@ -833,14 +836,26 @@ def section_auto_strategy():
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from auto_strategy_table import scene_rows  # noqa: E402  (the table's own parser, standard library only)
 
+    def ratio(r):
+        return f"{r[0]:.2f} [{r[1]:.2f}, {r[2]:.2f}]"
+
+    def tally(chosen):
+        counts = {}
+        for c in chosen:
+            name = " ".join(c.split()[:3])
+            counts[name] = counts.get(name, 0) + 1
+        return "; ".join(f"{n} x{k}" for n, k in sorted(counts.items(), key=lambda t: -t[1]))
+
     out = [
         "## 9. --strategy auto against a full comparison (issue 37)",
         "",
-        "Each scene at equal time over every candidate of `--strategy auto` (nee-mis and mixture × each light "
-        "sampler × each light selection where the scene has two lights or more; the scene's pixel sampling), 2 seeds, "
-        "with the auto row beside them (its pilot: 5 % of the time; its time includes the pilot's). The best "
-        "strategy, the scene's own and auto are then measured again with 3 fresh seeds against the same reference "
-        "(the best of many noisy rows is biased up). Efficiency 1/(relMSE s), mean over seeds of relMSE × s.",
+        "Each scene at equal time over every candidate of `--strategy auto` (nee-mis, and book 3's mixture where the "
+        "scene has no microfacet material, × each light sampler × each light selection where the scene has two "
+        "lights or more; the scene's pixel sampling), 2 seeds, with the auto row beside them (its pilot: 5 % of the "
+        "time, paid on top of its render, which has the spp of the chosen strategy's row). The best strategy, the "
+        "scene's own and auto are then measured again with fresh seeds against the same reference file (the best of "
+        "many noisy rows is biased up). Efficiency 1/(relMSE s), mean over seeds of relMSE × s, each relMSE less the "
+        "reference's own; ratios with their 95 % intervals (delta method over the seeds).",
     ]
     for folder, machine, size, command in AUTO["runs"]:
         if not (RESULTS / folder).is_dir():
@@ -850,14 +865,14 @@ def section_auto_strategy():
             "",
             f"**{machine}**, {size}:",
             "",
-            "| scene | strategies | best | scene's own | own / best | auto chose (3 seeds) | auto / best | auto / own |",
+            "| scene | strategies | best | scene's own | own / best | auto chose (recheck seeds) | auto / best | "
+            "auto / own |",
             "|---|---:|---|---|---:|---|---:|---:|",
         ]
         for r in rows:
-            chosen = "; ".join(" ".join(c.split()[:3]) for c in r["chosen"])
             out.append(f"| {r['scene']} | {r['strategies']} | {' '.join(r['best'].split()[:3])} | "
-                       f"{' '.join(r['own'].split()[:3])} | {r['own_eff'] / r['best_again']:.2f} | {chosen} | "
-                       f"{r['auto_eff'] / r['best_again']:.2f} | {r['auto_eff'] / r['own_eff']:.2f} |")
+                       f"{' '.join(r['own'].split()[:3])} | {ratio(r['own_best'])} | {tally(r['chosen'])} | "
+                       f"{ratio(r['auto_best'])} | {ratio(r['auto_own'])} |")
         out += ["", sources([("machine", machine), ("date", AUTO["date"]), ("results", link(folder + "/")),
                              ("notebook", notebook_link(AUTO["notebook"]))]), "", code(command)]
     return out
