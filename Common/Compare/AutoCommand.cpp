@@ -46,7 +46,11 @@ RequestChooser strategyChooser(const Scene& scene, const CommonOptions& options)
         cache.store(key, choice);
         ChosenRequest chosen{request, choice.toJson(), choice.cancelled};
         chosen.request.settings = choice.chosen.applyTo(request.settings);
-        if (choice.rows.empty())
+        if (choice.tooShort)
+            spdlog::info("--strategy auto: the render is too short to choose for (its pilot's budget, {:.3f} s, gives "
+                         "each candidate fewer than {:.0f} paths a half): the scene's own, {}",
+                         choice.budgetSeconds, kMinimumPilotPaths, choice.chosen.name());
+        else if (choice.rows.empty())
             spdlog::info("--strategy auto: the flags leave one candidate, {}", choice.chosen.name());
         else
             spdlog::info("--strategy auto: {} (pilot {:.2f} s of a {:.2f} s budget{}, {}x{} at {} spp per candidate; "

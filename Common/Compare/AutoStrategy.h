@@ -49,6 +49,10 @@ struct PilotBudget
     double renderSeconds = 0.0; // > 0: the render's time, known (--compare --equal-time), instead of the estimate
 };
 
+/// The fewest camera paths a half of a pilot's measurement must trace (its pixels x spp), below which the pilot
+/// measures nothing and keeps the scene's own strategy (AutoChoice::tooShort).
+inline constexpr double kMinimumPilotPaths = 1024.0;
+
 /// One candidate the pilot rendered.
 struct PilotRow
 {
@@ -83,6 +87,8 @@ struct AutoChoice
     bool cancelled = false; // Ctrl-C stopped the pilot
     /// The search stopped when the pilot's wall time passed the budget, before every candidate was measured.
     bool budgetSpent = false;
+    /// The budget gave a candidate's half fewer than kMinimumPilotPaths: nothing was measured, the scene's own kept.
+    bool tooShort = false;
 
     nlohmann::json toJson() const;
     /// The table of rows, one per line, the chosen one marked: what the headless run logs.

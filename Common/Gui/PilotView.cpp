@@ -7,6 +7,13 @@ namespace rt::gui
 void drawPilot(const compare::AutoChoice& choice)
 {
     ImGui::PushTextWrapPos(0.0f);
+    if (choice.tooShort)
+    {
+        ImGui::TextDisabled("kept %s: the render is too short for a pilot (its share would measure nothing)",
+                            choice.chosen.name().c_str());
+        ImGui::PopTextWrapPos();
+        return;
+    }
     ImGui::TextDisabled("chose %s in %.2f s (%dx%d, %d spp per candidate)%s", choice.chosen.name().c_str(),
                         choice.pilotWallSeconds, choice.width, choice.height, choice.spp,
                         choice.budgetSpent ? "; its budget ran out before every candidate" : "");

@@ -95,7 +95,7 @@ constexpr Device kGpuLike{std::uint64_t(1) << 18, 4e-6};
 /// Pilots of `trials` seeds over nee-mis x 4 light samplers x 3 selections, the scene's own projected with the BVH,
 /// on `device`; how many chose `wanted` (or, with none, anything but the scene's own).
 int pilotsChoosing(const std::function<double(const RenderSettings&)>& sigma, int trials,
-                   std::optional<Strategy> wanted = {}, Device device = kCpuLike)
+                   std::optional<Strategy> wanted = {}, Device device = kCpuLike, double renderSeconds = 40.0)
 {
     const Scene scene = makeScene("cornell-box-lights");
     NoiseEngine engine(sigma, device.concurrentPaths, device.secondsPerPath);
@@ -116,8 +116,9 @@ int pilotsChoosing(const std::function<double(const RenderSettings&)>& sigma, in
     {
         request.settings.seed = std::uint32_t(100 + trial);
         // A 40 s render: a pilot of 2 s of the fake's device time.
-        const AutoChoice choice = chooseStrategy(engine, request, lists, {.renderSeconds = 40.0});
+        const AutoChoice choice = chooseStrategy(engine, request, lists, {.renderSeconds = renderSeconds});
         EXPECT_FALSE(choice.budgetSpent) << "the fake's pilot takes milliseconds of the host's 2 s";
+        EXPECT_EQ(choice.tooShort, renderSeconds < 1.0);
         count += wanted ? choice.chosen == *wanted : !(choice.chosen == own);
     }
     return count;
@@ -160,6 +161,13 @@ TEST(PilotDecision, ALeadUnderTenPercentIsNotTakenWhereThePilotResolvesIt)
     // them; the times' noise, which that error leaves out, is larger.
     EXPECT_EQ(pilotsChoosing(oneBetterBy(1.05), 6, theBetterOne(), kGpuLike), 0);
     EXPECT_EQ(pilotsChoosing(oneBetterBy(1.3), 6, theBetterOne(), kGpuLike), 6);
+}
+
+TEST(PilotDecision, ARenderTooShortForAPilotKeepsTheScenesOwn)
+{
+    // A 0.1 s render: 5 ms of pilot, under 1,000 paths a half for 12 candidates, which measure nothing; even a
+    // candidate twice as efficient is not looked at.
+    EXPECT_EQ(pilotsChoosing(oneBetterBy(2.0), 3, {}, kCpuLike, 0.1), 0);
 }
 
 TEST(PilotDecision, TheRuleIsTwiceTheRatiosStandardErrorAndTenPercent)

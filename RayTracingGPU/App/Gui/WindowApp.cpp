@@ -379,10 +379,14 @@ private:
             compare::AutoChoice choice = compare::chooseStrategy(
                 m_engine, request, compare::autoCandidates(*m_scene, {}, {}), m_options.pilotBudget);
             m_state.image.request.settings = choice.chosen.applyTo(m_state.image.request.settings);
-            m_state.message = choice.rows.empty()
-                                  ? fmt::format("the scene leaves one strategy: {}", choice.chosen.name())
-                                  : fmt::format("strategy chosen by a pilot of {:.2f} s: {}", choice.pilotWallSeconds,
-                                                choice.chosen.name());
+            m_state.message =
+                choice.tooShort ? fmt::format("the image is too short to choose a strategy for (a pilot's share of it "
+                                              "would measure nothing): the scene's own, {}",
+                                              choice.chosen.name())
+                : choice.rows.empty()
+                    ? fmt::format("the scene leaves one strategy: {}", choice.chosen.name())
+                    : fmt::format("strategy chosen by a pilot of {:.2f} s: {}", choice.pilotWallSeconds,
+                                  choice.chosen.name());
             spdlog::info("{}\n{}", m_state.message, choice.table());
             m_pilot = std::move(choice);
         }
