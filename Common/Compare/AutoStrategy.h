@@ -21,10 +21,11 @@
 // read as a bias. Its efficiency is 1 / (relMSE x seconds), twice the faster half's time
 // on the engine's clock (Compare/Measurement.h). The final round's challenger wins where, on its final round's
 // measurements alone (the earlier ones chose it, and are lucky), its lead over the scene's own is more than twice
-// the standard error of their ratio and 10 % (pilotSwitches): otherwise the scene's own stays. The search stops
-// once the pilot's wall time passes its budget (a GPU compiles a pipeline per candidate): the candidates left are
-// not measured, and without a final round the most efficient measured, on all its measurements, against the same
-// rule. A budget that gives a half fewer than kMinimumPilotPaths measures nothing: the scene's own stays.
+// the standard error of their ratio and 10 % (pilotSwitches): otherwise the scene's own stays. The measurements are
+// planned to fill the budget on the engine's clock; the search stops once its time on the host's clock passes twice
+// the budget (a GPU compiles a pipeline per candidate): the candidates left are not measured, and without a final
+// round the most efficient measured, on all its measurements, against the same rule (a final round cut short keeps
+// the scene's own). A budget that gives a half fewer than kMinimumPilotPaths measures nothing: the scene's own stays.
 //
 // The choice depends on timings, so two runs may choose differently where candidates are close: the record names
 // the strategy chosen, and giving its flags renders it again, bit for bit (headless, the choice is kept for the

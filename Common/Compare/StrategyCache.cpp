@@ -75,7 +75,7 @@ std::optional<CachedChoice> StrategyCache::find(const std::string& key) const
     const nlohmann::json stored = nlohmann::json::parse(text.str(), nullptr, false);
     if (stored.is_discarded() || !stored.is_object() || !stored.contains("key") ||
         stored["key"] != nlohmann::json::parse(key) || !stored.contains("chosen_settings") ||
-        !stored["chosen_settings"].is_object() || !stored.contains("record"))
+        !stored["chosen_settings"].is_object() || !stored.contains("record") || !stored["record"].is_object())
         return std::nullopt; // a hash collision or a damaged entry: the pilot runs again
     CachedChoice found{Strategy{}, stored["record"], file};
     try
@@ -96,7 +96,7 @@ std::optional<CachedChoice> StrategyCache::find(const std::string& key) const
 
 void StrategyCache::store(const std::string& key, const AutoChoice& choice) const
 {
-    if (m_dir.empty() || choice.cancelled)
+    if (m_dir.empty() || choice.cancelled || choice.budgetSpent)
         return;
     nlohmann::json chosen = nlohmann::json::object();
     for (const Setting* s : strategySettings())

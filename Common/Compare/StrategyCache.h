@@ -4,7 +4,8 @@
 // for the same seed, where two pilots may choose differently between close candidates (a choice depends on
 // timings). An entry is the pilot's record (AutoChoice::toJson) under a key of everything the choice depends on:
 // the scene's fingerprint, every render setting but the seed, the engine and its device, the candidates, the
-// budget, and the program's file (its size and time: a rebuild changes the speeds the pilot measured).
+// budget, and the program's file (its size and time: a rebuild changes the speeds the pilot measured). Not the
+// engine's options (the GPU app's --integrator, --specialize): after changing them, --strategy-cache off.
 // --compare's auto row never reads it: the row measures what a pilot costs.
 #pragma once
 
@@ -43,7 +44,8 @@ public:
     /// The choice stored under `key`, or nullopt (none, or an entry that does not parse: the pilot runs again).
     std::optional<CachedChoice> find(const std::string& key) const;
     /// Stores `choice` under `key` (atomically; a failure is logged, not thrown: the render does not depend on
-    /// the cache). A cancelled pilot is not stored.
+    /// the cache). A cancelled pilot is not stored, nor one whose budget ran out before it measured every round (a
+    /// GPU's first pilot, compiling its pipelines): the next render pilots again.
     void store(const std::string& key, const AutoChoice& choice) const;
 
     /// The JSON text of the key of a pilot for `request` (its seed aside) on `engine`, whose scene is `scene`.
