@@ -1,15 +1,12 @@
 #include "Compare/ReferenceCache.h"
 
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
-#include <string_view>
 #include <type_traits>
 
 #include <nlohmann/json.hpp>
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
+#include "Compare/CacheEntry.h"
 #include "Compare/Fnv1a.h"
 #include "Error.h"
 #include "IO/AtomicFile.h"
@@ -18,16 +15,7 @@
 namespace rt::compare
 {
 
-std::filesystem::path defaultReferenceCacheDir()
-{
-    if (const char* dir = std::getenv("RT_REFERENCE_CACHE"))
-        return std::string_view(dir) == "off" ? std::filesystem::path() : std::filesystem::path(dir);
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-        return std::filesystem::path(xdg) / "ray-tracing" / "references";
-    if (const char* home = std::getenv("HOME"); home && *home)
-        return std::filesystem::path(home) / ".cache" / "ray-tracing" / "references";
-    return {};
-}
+std::filesystem::path defaultReferenceCacheDir() { return cacheFolder("RT_REFERENCE_CACHE", "references"); }
 
 std::uint64_t sceneFingerprint(const Scene& scene)
 {
@@ -92,22 +80,15 @@ std::optional<TwoHalfReference> ReferenceCache::find(const Scene& scene, const R
     if (m_dir.empty())
         return std::nullopt;
     const std::string k = key(scene, request, engine);
-    std::ifstream in(pathFor(k, ".json"));
-    if (!in)
-        return std::nullopt;
-    std::stringstream text;
-    text << in.rdbuf();
-    const nlohmann::json stored = nlohmann::json::parse(text.str(), nullptr, false);
-    if (stored.is_discarded() || !stored.is_object() || !stored.contains("key") ||
-        stored["key"] != nlohmann::json::parse(k) || !stored.contains("own_relmse") ||
-        !stored["own_relmse"].is_number())
-        return std::nullopt; // a hash collision or a damaged entry: render anew
+    const std::optional<nlohmann::json> stored = readCacheEntry(pathFor(k, ".json"), k);
+    if (!stored || !stored->contains("own_relmse") || !(*stored)["own_relmse"].is_number())
+        return std::nullopt; // none, a hash collision or a damaged entry: render anew
     try
     {
         Image image = readPfm(pathFor(k, ".pfm"));
         if (image.width() != request.settings.width || image.height() != request.settings.height())
             return std::nullopt;
-        return TwoHalfReference{std::move(image), stored["own_relmse"].get<double>()};
+        return TwoHalfReference{std::move(image), (*stored)["own_relmse"].get<double>()};
     }
     catch (const AssetError& e)
     {

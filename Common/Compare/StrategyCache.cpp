@@ -1,13 +1,10 @@
 #include "Compare/StrategyCache.h"
 
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
-#include <string_view>
 #include <system_error>
 
 #include <spdlog/spdlog.h>
 
+#include "Compare/CacheEntry.h"
 #include "Compare/Fnv1a.h"
 #include "Compare/ReferenceCache.h"
 #include "IO/AtomicFile.h"
@@ -35,16 +32,7 @@ std::string programIdentity()
 }
 } // namespace
 
-std::filesystem::path defaultStrategyCacheDir()
-{
-    if (const char* dir = std::getenv("RT_STRATEGY_CACHE"))
-        return std::string_view(dir) == "off" ? std::filesystem::path() : std::filesystem::path(dir);
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-        return std::filesystem::path(xdg) / "ray-tracing" / "strategies";
-    if (const char* home = std::getenv("HOME"); home && *home)
-        return std::filesystem::path(home) / ".cache" / "ray-tracing" / "strategies";
-    return {};
-}
+std::filesystem::path defaultStrategyCacheDir() { return cacheFolder("RT_STRATEGY_CACHE", "strategies"); }
 
 std::string StrategyCache::key(const Scene& scene, const RenderRequest& request, const RenderEngine& engine,
                                const StrategyLists& candidates, const PilotBudget& budget)
@@ -67,16 +55,11 @@ std::optional<CachedChoice> StrategyCache::find(const std::string& key) const
     if (m_dir.empty())
         return std::nullopt;
     const std::filesystem::path file = m_dir / (fnv1aHex(key) + ".json");
-    std::ifstream in(file);
-    if (!in)
-        return std::nullopt;
-    std::stringstream text;
-    text << in.rdbuf();
-    const nlohmann::json stored = nlohmann::json::parse(text.str(), nullptr, false);
-    if (stored.is_discarded() || !stored.is_object() || !stored.contains("key") ||
-        stored["key"] != nlohmann::json::parse(key) || !stored.contains("chosen_settings") ||
-        !stored["chosen_settings"].is_object() || !stored.contains("record") || !stored["record"].is_object())
-        return std::nullopt; // a hash collision or a damaged entry: the pilot runs again
+    const std::optional<nlohmann::json> entry = readCacheEntry(file, key);
+    if (!entry || !entry->contains("chosen_settings") || !(*entry)["chosen_settings"].is_object() ||
+        !entry->contains("record") || !(*entry)["record"].is_object())
+        return std::nullopt; // none, a hash collision or a damaged entry: the pilot runs again
+    const nlohmann::json& stored = *entry;
     CachedChoice found{Strategy{}, stored["record"], file};
     try
     {
