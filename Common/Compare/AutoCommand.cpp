@@ -53,9 +53,9 @@ RequestChooser strategyChooser(const Scene& scene, const CommonOptions& options)
         else if (choice.rows.empty())
             spdlog::info("--strategy auto: the flags leave one candidate, {}", choice.chosen.name());
         else
-            spdlog::info("--strategy auto: {} (pilot {:.2f} s of a {:.2f} s budget{}, {}x{} at {} spp per candidate; "
-                         "render estimated at {:.1f} s):\n{}",
-                         choice.chosen.name(), choice.pilotWallSeconds, choice.budgetSeconds,
+            spdlog::info("--strategy auto: {} (pilot {:.2f} s, {:.2f} s of it preparing the candidates, of a {:.2f} s "
+                         "budget{}, {}x{} at {} spp per candidate; render estimated at {:.1f} s):\n{}",
+                         choice.chosen.name(), choice.pilotWallSeconds, choice.prepareSeconds, choice.budgetSeconds,
                          choice.budgetSpent ? ", stopped there before every candidate" : "", choice.width,
                          choice.height, choice.spp, choice.estimatedRenderSeconds, choice.table());
         return chosen;

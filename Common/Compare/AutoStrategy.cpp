@@ -172,12 +172,16 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     if (planned == 1)
         return choice;
 
-    // The probe: the starting strategy at 1 spp, on about a 32nd of the render's paths (the whole image at most).
+    // The probe: the starting strategy at 1 spp, on about a 256th of the render's paths (the whole image at most),
+    // and at least as many as the engine traces at once (a GPU's time per path on fewer is not its speed). Where the
+    // render's time is unknown the plan's paths per candidate do not depend on it (they are the budget's share of
+    // the render's paths): it only caps the budget at maxSeconds; a 32nd cost some 1 % of a 1 s render on 2 cores.
     const double renderPaths = pixelsOf(request.settings) * double(request.settings.trueSpp());
     RenderRequest probe = request;
     probe.settings = best;
     probe.settings.spp = 1;
-    probe.settings.width = widthFor(request.settings, std::max(1024.0, renderPaths / 32.0));
+    probe.settings.width =
+        widthFor(request.settings, std::max({1024.0, double(engine.concurrentPaths()), renderPaths / 256.0}));
     const Measurement probed = measure(engine, probe, nullptr);
     if (probed.cancelled)
     {
@@ -186,8 +190,6 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         return choice;
     }
     choice.pilotMs += probed.ms();
-    // The search's own clock: the probe is not part of the budget the measurements are planned to fill.
-    const auto searchStart = std::chrono::steady_clock::now();
     const double msPerPath = std::max(probed.ms(), 1e-6) / pixelsOf(probe.settings);
     choice.estimatedRenderSeconds = budget.renderSeconds > 0.0 ? budget.renderSeconds : msPerPath * renderPaths * 1e-3;
     choice.budgetSeconds = std::min(budget.maxSeconds, budget.fraction * choice.estimatedRenderSeconds);
@@ -236,6 +238,19 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         choice.pilotWallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return choice;
     }
+
+    // Every candidate prepared at the pilot's size before the search's clock starts: a GPU compiles a pipeline per
+    // strategy (1.3 s each on an H100 with the driver's cache cold; with the cache warm still more than a short
+    // render's budget), which no engine clock sees and which, held to the budget, left the search no time to
+    // measure (a cold pilot on an H200 kept rtrol-cornell-box's mixture, 0.5x nee-mis). The strategies' rows of
+    // --compare are compiled before they are timed too; the host's time for it is in pilotWallSeconds, and alone in
+    // prepareSeconds.
+    const auto prepareStart = std::chrono::steady_clock::now();
+    for (const Strategy& strategy : grid)
+        engine.beginFrame(strategy.applyTo(pilot));
+    // The search's own clock: the probe and the preparation are not part of the budget the measurements fill.
+    const auto searchStart = std::chrono::steady_clock::now();
+    choice.prepareSeconds = std::chrono::duration<double>(searchStart - prepareStart).count();
 
     // A half of another strategy than the scene's that runs past 4x its share is stopped: the candidate is too
     // slow to win (it would need 4x less error per path than the probe's strategy), and the budget holds (book 3's
@@ -366,8 +381,8 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
                 if (runs[i].row.tooSlow)
                     continue;
                 // The host's clock holds the search to twice its budget: the measurements are planned to fill the
-                // budget on the engine's clock, and the host adds what no engine clock sees (each render's set-up;
-                // a GPU compiling each candidate's pipeline, 1.3 s each on an H100 with the driver's cache cold).
+                // budget on the engine's clock, and the host adds what no engine clock sees (each render's set-up,
+                // a pipeline a GPU had not compiled).
                 // Held to the budget itself, with the probe inside it, the search never reached its final round
                 // (rect-light-closeup, 2 cores: 3 measurements of 5 candidates). What is left is not measured.
                 if (measured > 0 &&
@@ -483,6 +498,7 @@ nlohmann::json AutoChoice::toJson() const
     j["budget_seconds"] = budgetSeconds;
     j["pilot_ms"] = pilotMs;
     j["pilot_wall_seconds"] = pilotWallSeconds;
+    j["prepare_seconds"] = prepareSeconds;
     j["budget_spent"] = budgetSpent;
     j["too_short"] = tooShort;
     j["relmse_epsilon"] = kRelMseEpsilon;

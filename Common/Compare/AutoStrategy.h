@@ -4,7 +4,8 @@
 // faster).
 //
 // The pilot: a probe render of the scene's strategy times a path and so estimates the render; the budget is a
-// fraction of that estimate (5 % by default), at most a few seconds. Then every combination of the candidates
+// fraction of that estimate (5 % by default), at most a few seconds. Every candidate is prepared (a GPU's pipelines
+// compiled) before the budget's clock starts. Then every combination of the candidates
 // (strategyGrid: a setting a strategy does not use is not varied), the scene's own first, each rendered as two
 // independent halves of the same small render (the pilot's size and spp are the same for every candidate, so that
 // their images combine: about 1024 pixels, or the engine's concurrent paths, the rest of the budget as spp), by
@@ -23,7 +24,7 @@
 // measurements alone (the earlier ones chose it, and are lucky), its lead over the scene's own is more than twice
 // the standard error of their ratio and 10 % (pilotSwitches): otherwise the scene's own stays. The measurements are
 // planned to fill the budget on the engine's clock; the search stops once its time on the host's clock passes twice
-// the budget (a GPU compiles a pipeline per candidate): the candidates left are not measured, and without a final
+// the budget (each render's set-up on the host): the candidates left are not measured, and without a final
 // round the most efficient measured, on all its measurements, against the same rule (a final round cut short keeps
 // the scene's own). A budget that gives a half fewer than kMinimumPilotPaths measures nothing: the scene's own stays.
 //
@@ -86,6 +87,7 @@ struct AutoChoice
     double budgetSeconds = 0.0;
     double pilotMs = 0.0; // the probe's and every candidate's render time, on the engine's clock
     double pilotWallSeconds = 0.0; // the whole pilot on the host's clock (GPU pipelines compiled included)
+    double prepareSeconds = 0.0; // of which: every candidate prepared (a GPU's pipelines compiled), on the host's clock
     std::vector<PilotRow> rows; // in the order measured
     bool cancelled = false; // Ctrl-C stopped the pilot
     /// The search stopped when the pilot's wall time passed the budget, before every candidate was measured.

@@ -34,9 +34,12 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
         choices[index].resize(std::size_t(options.seeds));
         // What the budget gave each strategy's first seed; the auto row's per seed (each its own choice).
         std::vector<int> spps(strategyCount, 0), autoSpps(std::size_t(options.seeds), 0);
+        // Seeds outside rows: every row renders seed k before any renders seed k + 1, so that a drift of the
+        // machine's speed over the run (±10 % between blocks of rows on the CI kind's 2 cores) falls on every row
+        // alike instead of on whichever row's block it met.
         for (int round = 0; round < options.rounds; ++round)
-            for (std::size_t s = 0; s < rowCount; ++s)
-                for (int k = 0; k < options.seeds; ++k)
+            for (int k = 0; k < options.seeds; ++k)
+                for (std::size_t s = 0; s < rowCount; ++s)
                 {
                     const bool isAuto = s == strategyCount;
                     int& spp = isAuto ? autoSpps[std::size_t(k)] : spps[s];
@@ -142,9 +145,9 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
         {
             const AutoChoice& c = choices[e][k];
             std::printf("auto, %s engine, seed %u: %s, by a pilot of %.1f ms on the engine's clock (%.2f s on the "
-                        "host's) over %zu candidates at %dx%d, %d spp each\n",
+                        "host's, %.2f s of it preparing the candidates) over %zu candidates at %dx%d, %d spp each\n",
                         toString(engines[e].kind), base.settings.seed + unsigned(k), c.chosen.name().c_str(), c.pilotMs,
-                        c.pilotWallSeconds, c.rows.size(), c.width, c.height, c.spp);
+                        c.pilotWallSeconds, c.prepareSeconds, c.rows.size(), c.width, c.height, c.spp);
         }
     if (!options.grid.empty())
     {
