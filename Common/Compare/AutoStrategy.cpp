@@ -172,26 +172,48 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     if (planned == 1)
         return choice;
 
-    // The probe: the starting strategy at 1 spp, on about a 256th of the render's paths (the whole image at most),
-    // and at least as many as the engine traces at once (a GPU's time per path on fewer is not its speed). Where the
-    // render's time is unknown the plan's paths per candidate do not depend on it (they are the budget's share of
-    // the render's paths): it only caps the budget at maxSeconds; a 32nd cost some 1 % of a 1 s render on 2 cores.
+    // The probe: the starting strategy on the pilot's pixels at 1 spp and at kProbeSpp. A render's time is a fixed
+    // cost (a GPU's launches and copies, a pool's dispatch) and a cost per path, and the pilot's renders are small,
+    // so the plan needs both: from one render of 1 spp over the whole image, a GPU's pilot planned its renders at
+    // 6x the H200's time per path at the render's size, measured 1 spp a half and used half its budget, and a
+    // pilot of 1 spp sees none of what stratification (Sobol's points, the samplers' warps) gains at the render's
+    // spp (it chose solid-angle sampling with uniform selection on cornell-box-lights, 0.8x the scene's own there).
+    // A GPU needs that many pixels to run at its speed (a 45 x 45 pilot on an H100 took 100x the time per path of
+    // a 600 x 600 render): at least the engine's concurrent paths, and 1024 (relMSE's terms: its standard error falls
+    // with their count).
     const double renderPaths = pixelsOf(request.settings) * double(request.settings.trueSpp());
+    const double pilotPixels = std::max(1024.0, double(engine.concurrentPaths()));
+    constexpr int kProbeSpp = 4;
     RenderRequest probe = request;
     probe.settings = best;
-    probe.settings.spp = 1;
-    probe.settings.width =
-        widthFor(request.settings, std::max({1024.0, double(engine.concurrentPaths()), renderPaths / 256.0}));
-    const Measurement probed = measure(engine, probe, nullptr);
-    if (probed.cancelled)
+    probe.settings.width = widthFor(request.settings, pilotPixels);
+    double probeMs[2] = {0.0, 0.0};
+    const int probeSpp[2] = {1, std::clamp(request.settings.trueSpp(), 1, kProbeSpp)};
+    // 1 spp, kProbeSpp, 1 spp again, the faster of the two kept: the first render after a scene is set is the
+    // slower (2-3 ms against 0.7-0.9 ms for 1024 paths on 2 cores: a pool's first dispatch, cold caches).
+    for (const int i : {0, 1, 0})
     {
-        choice.cancelled = true;
-        choice.chosen = Strategy::of(request.settings);
-        return choice;
+        probe.settings.spp = probeSpp[i];
+        const Measurement probed = measure(engine, probe, nullptr);
+        if (probed.cancelled)
+        {
+            choice.cancelled = true;
+            choice.chosen = Strategy::of(request.settings);
+            return choice;
+        }
+        choice.pilotMs += probed.ms();
+        probeMs[i] = probeMs[i] > 0.0 ? std::min(probeMs[i], probed.ms()) : probed.ms();
     }
-    choice.pilotMs += probed.ms();
-    const double msPerPath = std::max(probed.ms(), 1e-6) / pixelsOf(probe.settings);
-    choice.estimatedRenderSeconds = budget.renderSeconds > 0.0 ? budget.renderSeconds : msPerPath * renderPaths * 1e-3;
+    // The cost per path from the two renders' difference, unless the clock's noise hides it (or the render has one
+    // sample per pixel): then all of the larger render's time, a bound that plans fewer paths.
+    const double probePixels = pixelsOf(probe.settings);
+    const double extraPaths = probePixels * double(probeSpp[1] - probeSpp[0]);
+    const double slope = extraPaths > 0.0 ? (probeMs[1] - probeMs[0]) / extraPaths : 0.0;
+    const double bound = std::max(probeMs[1], 1e-6) / (probePixels * double(probeSpp[1]));
+    const double msPerPath = slope > 0.25 * bound ? slope : bound;
+    const double fixedMs = std::max(probeMs[1] - msPerPath * probePixels * double(probeSpp[1]), 0.0);
+    choice.estimatedRenderSeconds =
+        budget.renderSeconds > 0.0 ? budget.renderSeconds : (fixedMs + msPerPath * renderPaths) * 1e-3;
     choice.budgetSeconds = std::min(budget.maxSeconds, budget.fraction * choice.estimatedRenderSeconds);
     // Successive halving (Jamieson & Talwalkar 2016): every candidate measured once, then the better half again,
     // and so on down to two, the scene's own (the one to beat) in every round. A candidate whose first
@@ -211,14 +233,11 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         }
         measurements += m;
     }
-    const double pathsPerHalf = choice.budgetSeconds * 1e3 / msPerPath / double(measurements) / 2.0;
-    // At least 1024 pixels (relMSE's terms: its standard error falls with their count), the rest as samples
-    // per pixel, up to half the render's: stratification (Sobol's points, the spherical samplers' warps) gains
-    // with the spp, and a pilot of 2 spp cannot see it (it chose random over sobol on rect-light-closeup, where
-    // sobol is 3.5x as efficient at 1 s).
-    // A GPU needs more pixels than that to run at its speed (a 45 x 45 pilot on an H100 took 100x the time per
-    // path of the 600 x 600 probe): at least the engine's concurrent paths.
-    const double pilotPixels = std::max(1024.0, double(engine.concurrentPaths()));
+    const double shareMs = choice.budgetSeconds * 1e3 / double(measurements) / 2.0; // a half's
+    const double pathsPerHalf = std::max(shareMs - fixedMs, 0.0) / msPerPath;
+    // The probe's pixels, the rest as samples per pixel, up to half the render's: stratification gains with the
+    // spp, and a pilot of 2 spp cannot see it (it chose random over sobol on rect-light-closeup, where sobol is
+    // 3.5x as efficient at 1 s).
     const int sppCap = std::max(1, request.settings.trueSpp() / 2);
     RenderSettings pilot = request.settings;
     pilot.spp = std::clamp(static_cast<int>(pathsPerHalf / pilotPixels), 1, sppCap);
@@ -255,7 +274,6 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // A half of another strategy than the scene's that runs past 4x its share is stopped: the candidate is too
     // slow to win (it would need 4x less error per path than the probe's strategy), and the budget holds (book 3's
     // mixture over 1000 lights took 15x its share on many-lights).
-    const double shareMs = pathsPerHalf * msPerPath;
     const auto timeLimit = std::chrono::nanoseconds(static_cast<std::int64_t>(std::max(4.0 * shareMs, 5.0) * 1e6));
 
     /// Sums of a candidate's A and B halves over measurements of the same size, and their time.
@@ -323,10 +341,12 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         }
         if (measured == 1 && budget.renderSeconds <= 0.0)
         {
-            // The first candidate is the probe's strategy on many more paths: a better time per path (the probe's
-            // small render overestimated a 1 s render 2.7x on 2 cores), hence the render's time and the budget.
-            const double perPath = std::min(a.ms(), b.ms()) / (pixelsOf(half.settings) * half.settings.trueSpp());
-            choice.estimatedRenderSeconds = perPath * renderPaths * 1e-3;
+            // The first candidate is the probe's strategy on more paths: a better time per path (one probe of 1 spp
+            // overestimated a 1 s render 2.7x on 2 cores), hence the render's time and the budget.
+            const double halfMs = std::min(a.ms(), b.ms());
+            const double perPath = std::max(halfMs - fixedMs, 0.25 * halfMs) /
+                                   (pixelsOf(half.settings) * half.settings.trueSpp());
+            choice.estimatedRenderSeconds = (fixedMs + perPath * renderPaths) * 1e-3;
             choice.budgetSeconds = std::min(budget.maxSeconds, budget.fraction * choice.estimatedRenderSeconds);
         }
         choice.spp = a.spp + b.spp;

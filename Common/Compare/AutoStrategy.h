@@ -3,12 +3,14 @@
 // scene, the engine and the build (issue 37: the project's own tables changed their verdict as the code got
 // faster).
 //
-// The pilot: a probe render of the scene's strategy times a path and so estimates the render; the budget is a
-// fraction of that estimate (5 % by default), at most a few seconds. Every candidate is prepared (a GPU's pipelines
+// The pilot: two probe renders of the scene's strategy at the pilot's size (1 and 4 spp) time a render's fixed cost
+// and a path's, and so estimate the render; the budget is a fraction of that estimate (5 % by default), at most a
+// few seconds. Every candidate is prepared (a GPU's pipelines
 // compiled) before the budget's clock starts. Then every combination of the candidates
 // (strategyGrid: a setting a strategy does not use is not varied), the scene's own first, each rendered as two
 // independent halves of the same small render (the pilot's size and spp are the same for every candidate, so that
-// their images combine: about 1024 pixels, or the engine's concurrent paths, the rest of the budget as spp), by
+// their images combine: about 1024 pixels, or the engine's concurrent paths, the rest of the budget, less each
+// render's fixed cost, as spp), by
 // successive halving: all once, the better half again, and so on down to two, the scene's own in every round; the
 // final two are measured three times. Not one setting at a time: the estimator compared at the scene's light
 // sampler kept book 3's mixture on rtrol-cornell-box, where an estimator with NEE and a cheaper sampler is 2x as
