@@ -1,6 +1,7 @@
 #include "Compare/AutoStrategy.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 
@@ -38,6 +39,46 @@ int widthFor(const RenderSettings& settings, double pixels)
 double pixelsOf(const RenderSettings& s) { return double(s.width) * double(s.height()); }
 
 } // namespace
+
+double RenderCost::ms(double pixels, double spp) const
+{
+    return fixedMs + msPerPixel * pixels + msPerPath * pixels * spp;
+}
+
+double RenderCost::pixelsFor(double ms, double spp) const
+{
+    return std::max(ms - fixedMs, 0.0) / (msPerPixel + msPerPath * spp);
+}
+
+double RenderCost::sppFor(double ms, double pixels) const
+{
+    return std::max(ms - fixedMs - msPerPixel * pixels, 0.0) / (msPerPath * pixels);
+}
+
+RenderCost fitRenderCost(const std::array<ProbeTiming, 3>& probes)
+{
+    const auto& [large, more, small] = probes;
+    if (large.pixels <= 0.0 || more.spp < large.spp || small.pixels > large.pixels || large.spp != small.spp)
+        throw UsageError("fitRenderCost: probes of P pixels at s and s' >= s spp, and of at most P pixels at s spp");
+    // The bound: all of a render's time as its paths'. A term the clocks' noise hides (a difference below a quarter
+    // of the bound's share of it, or negative) is left out, and the bound takes its place.
+    RenderCost cost;
+    const double bound = std::max(more.ms, 1e-9) / (more.pixels * double(more.spp));
+    const double extraPaths = large.pixels * double(more.spp - large.spp);
+    const double slope = extraPaths > 0.0 ? (more.ms - large.ms) / extraPaths : 0.0;
+    if (slope <= 0.25 * bound)
+    {
+        cost.msPerPath = bound;
+        return cost;
+    }
+    cost.msPerPath = slope;
+    const double extraPixels = large.pixels - small.pixels;
+    const double perPixelAndPaths = extraPixels > 0.0 ? (large.ms - small.ms) / extraPixels : 0.0;
+    cost.msPerPixel = std::max(perPixelAndPaths - cost.msPerPath * double(large.spp), 0.0);
+    cost.fixedMs = std::max(more.ms - cost.msPerPixel * more.pixels - cost.msPerPath * more.pixels * double(more.spp),
+                            0.0);
+    return cost;
+}
 
 StrategyLists autoCandidates(const Scene& scene, const StrategyLists& given, const std::vector<std::string>& fixed)
 {
@@ -172,28 +213,32 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     if (planned == 1)
         return choice;
 
-    // The probe: the starting strategy on the pilot's pixels at 1 spp and at kProbeSpp. A render's time is a fixed
-    // cost (a GPU's launches and copies, a pool's dispatch) and a cost per path, and the pilot's renders are small,
-    // so the plan needs both: from one render of 1 spp over the whole image, a GPU's pilot planned its renders at
-    // 6x the H200's time per path at the render's size, measured 1 spp a half and used half its budget, and a
-    // pilot of 1 spp sees none of what stratification (Sobol's points, the samplers' warps) gains at the render's
-    // spp (it chose solid-angle sampling with uniform selection on cornell-box-lights, 0.8x the scene's own there).
-    // A GPU needs that many pixels to run at its speed (a 45 x 45 pilot on an H100 took 100x the time per path of
-    // a 600 x 600 render): at least the engine's concurrent paths, and 1024 (relMSE's terms: its standard error falls
-    // with their count).
+    // The probe: the starting strategy timed on three renders, for the three terms of a render's time (RenderCost):
+    // the pilot's pixels at 1 and kProbeSpp spp, and a quarter of them at 1 spp. The pilot's renders are small, so
+    // the terms but the paths' matter: from one render of 1 spp over the whole image a GPU's pilot planned its
+    // renders at 6x the H200's time per path, measured 1 spp a half and used half its budget; with the fixed cost
+    // and no cost per pixel, the same image's clearing and read-back counted as fixed and left an H200 no path to
+    // measure within a half's share of a 1 s render. A pilot of 1 spp a half sees none of what stratification
+    // (Sobol's points, the samplers' warps) gains at the render's spp (it chose solid-angle sampling with uniform
+    // selection on an H200's cornell-box-lights, 0.8x the scene's own there).
+    // The pilot's pixels: at least the engine's concurrent paths (a 45 x 45 pilot on an H100 took 100x the time per
+    // path of a 600 x 600 render) and 1024 (relMSE's terms: its standard error falls with their count).
     const double renderPaths = pixelsOf(request.settings) * double(request.settings.trueSpp());
     const double pilotPixels = std::max(1024.0, double(engine.concurrentPaths()));
     constexpr int kProbeSpp = 4;
-    RenderRequest probe = request;
-    probe.settings = best;
-    probe.settings.width = widthFor(request.settings, pilotPixels);
-    double probeMs[2] = {0.0, 0.0};
-    const int probeSpp[2] = {1, std::clamp(request.settings.trueSpp(), 1, kProbeSpp)};
-    // 1 spp, kProbeSpp, 1 spp again, the faster of the two kept: the first render after a scene is set is the
-    // slower (2-3 ms against 0.7-0.9 ms for 1024 paths on 2 cores: a pool's first dispatch, cold caches).
-    for (const int i : {0, 1, 0})
+    RenderSettings large = best, small = best;
+    large.width = widthFor(request.settings, pilotPixels);
+    small.width = widthFor(request.settings, pixelsOf(large) / 4.0);
+    std::array<ProbeTiming, 3> probes{ProbeTiming{pixelsOf(large), 1},
+                                      ProbeTiming{pixelsOf(large), std::clamp(request.settings.trueSpp(), 1, kProbeSpp)},
+                                      ProbeTiming{pixelsOf(small), 1}};
+    // The first render after a scene is set is the slower (2-3 ms against 0.7-0.9 ms for 1024 paths on 2 cores: a
+    // pool's first dispatch, cold caches): the first probe is rendered again after the others, the faster kept.
+    for (const std::size_t i : {0, 1, 2, 0})
     {
-        probe.settings.spp = probeSpp[i];
+        RenderRequest probe = request;
+        probe.settings = i == 2 ? small : large;
+        probe.settings.spp = probes[i].spp;
         const Measurement probed = measure(engine, probe, nullptr);
         if (probed.cancelled)
         {
@@ -202,18 +247,14 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             return choice;
         }
         choice.pilotMs += probed.ms();
-        probeMs[i] = probeMs[i] > 0.0 ? std::min(probeMs[i], probed.ms()) : probed.ms();
+        probes[i].ms = probes[i].ms > 0.0 ? std::min(probes[i].ms, probed.ms()) : probed.ms();
     }
-    // The cost per path from the two renders' difference, unless the clock's noise hides it (or the render has one
-    // sample per pixel): then all of the larger render's time, a bound that plans fewer paths.
-    const double probePixels = pixelsOf(probe.settings);
-    const double extraPaths = probePixels * double(probeSpp[1] - probeSpp[0]);
-    const double slope = extraPaths > 0.0 ? (probeMs[1] - probeMs[0]) / extraPaths : 0.0;
-    const double bound = std::max(probeMs[1], 1e-6) / (probePixels * double(probeSpp[1]));
-    const double msPerPath = slope > 0.25 * bound ? slope : bound;
-    const double fixedMs = std::max(probeMs[1] - msPerPath * probePixels * double(probeSpp[1]), 0.0);
+    choice.probes.assign(probes.begin(), probes.end());
+    const RenderCost cost = fitRenderCost(probes);
+    choice.cost = cost;
     choice.estimatedRenderSeconds =
-        budget.renderSeconds > 0.0 ? budget.renderSeconds : (fixedMs + msPerPath * renderPaths) * 1e-3;
+        budget.renderSeconds > 0.0 ? budget.renderSeconds
+                                   : cost.ms(pixelsOf(request.settings), request.settings.trueSpp()) * 1e-3;
     choice.budgetSeconds = std::min(budget.maxSeconds, budget.fraction * choice.estimatedRenderSeconds);
     // Successive halving (Jamieson & Talwalkar 2016): every candidate measured once, then the better half again,
     // and so on down to two, the scene's own (the one to beat) in every round. A candidate whose first
@@ -234,15 +275,14 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         measurements += m;
     }
     const double shareMs = choice.budgetSeconds * 1e3 / double(measurements) / 2.0; // a half's
-    const double pathsPerHalf = std::max(shareMs - fixedMs, 0.0) / msPerPath;
-    // The probe's pixels, the rest as samples per pixel, up to half the render's: stratification gains with the
-    // spp, and a pilot of 2 spp cannot see it (it chose random over sobol on rect-light-closeup, where sobol is
-    // 3.5x as efficient at 1 s).
+    // The probe's pixels where the share holds them at 1 spp, fewer where not; the rest of the share as samples per
+    // pixel, up to half the render's: stratification gains with the spp, and a pilot of 2 spp cannot see it (it
+    // chose random over sobol on rect-light-closeup, where sobol is 3.5x as efficient at 1 s).
     const int sppCap = std::max(1, request.settings.trueSpp() / 2);
     RenderSettings pilot = request.settings;
-    pilot.spp = std::clamp(static_cast<int>(pathsPerHalf / pilotPixels), 1, sppCap);
-    pilot.width = widthFor(request.settings, pathsPerHalf / pilot.spp);
-    pilot.spp = std::clamp(static_cast<int>(pathsPerHalf / pixelsOf(pilot)), pilot.spp, sppCap);
+    const double pixels = std::min(pixelsOf(large), cost.pixelsFor(shareMs, 1));
+    pilot.width = widthFor(request.settings, std::max(pixels, 1.0));
+    pilot.spp = std::clamp(static_cast<int>(cost.sppFor(shareMs, pixelsOf(pilot))), 1, sppCap);
     choice.width = pilot.width;
     choice.height = pilot.height();
     // A half of fewer paths than that measures nothing: the relMSE of a few hundred pixel samples misses the rare
@@ -344,9 +384,12 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             // The first candidate is the probe's strategy on more paths: a better time per path (one probe of 1 spp
             // overestimated a 1 s render 2.7x on 2 cores), hence the render's time and the budget.
             const double halfMs = std::min(a.ms(), b.ms());
-            const double perPath = std::max(halfMs - fixedMs, 0.25 * halfMs) /
-                                   (pixelsOf(half.settings) * half.settings.trueSpp());
-            choice.estimatedRenderSeconds = (fixedMs + perPath * renderPaths) * 1e-3;
+            const double paths = pixelsOf(half.settings) * half.settings.trueSpp();
+            RenderCost measuredCost = cost;
+            measuredCost.msPerPath =
+                std::max(halfMs - cost.ms(pixelsOf(half.settings), 0), 0.25 * halfMs) / paths;
+            choice.estimatedRenderSeconds =
+                measuredCost.ms(pixelsOf(request.settings), request.settings.trueSpp()) * 1e-3;
             choice.budgetSeconds = std::min(budget.maxSeconds, budget.fraction * choice.estimatedRenderSeconds);
         }
         choice.spp = a.spp + b.spp;
@@ -519,6 +562,10 @@ nlohmann::json AutoChoice::toJson() const
     j["pilot_ms"] = pilotMs;
     j["pilot_wall_seconds"] = pilotWallSeconds;
     j["prepare_seconds"] = prepareSeconds;
+    j["probes"] = nlohmann::json::array();
+    for (const ProbeTiming& p : probes)
+        j["probes"].push_back({{"pixels", p.pixels}, {"spp", p.spp}, {"ms", p.ms}});
+    j["render_cost"] = {{"fixed_ms", cost.fixedMs}, {"ms_per_pixel", cost.msPerPixel}, {"ms_per_path", cost.msPerPath}};
     j["budget_spent"] = budgetSpent;
     j["too_short"] = tooShort;
     j["relmse_epsilon"] = kRelMseEpsilon;

@@ -3,8 +3,8 @@
 // scene, the engine and the build (issue 37: the project's own tables changed their verdict as the code got
 // faster).
 //
-// The pilot: two probe renders of the scene's strategy at the pilot's size (1 and 4 spp) time a render's fixed cost
-// and a path's, and so estimate the render; the budget is a fraction of that estimate (5 % by default), at most a
+// The pilot: three probe renders of the scene's strategy time a render's fixed cost, a pixel's and a path's
+// (RenderCost), and so estimate the render and plan the pilot's renders; the budget is a fraction of that estimate (5 % by default), at most a
 // few seconds. Every candidate is prepared (a GPU's pipelines
 // compiled) before the budget's clock starts. Then every combination of the candidates
 // (strategyGrid: a setting a strategy does not use is not varied), the scene's own first, each rendered as two
@@ -35,6 +35,7 @@
 // next render of the same settings: Compare/StrategyCache.h).
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,34 @@ struct PilotBudget
 /// The fewest camera paths a half of a pilot's measurement must trace (its pixels x spp), below which the pilot
 /// measures nothing and keeps the scene's own strategy (AutoChoice::tooShort).
 inline constexpr double kMinimumPilotPaths = 1024.0;
+
+/// One of the probe's renders: its pixels, spp and time on the engine's clock.
+struct ProbeTiming
+{
+    double pixels = 0.0;
+    int spp = 0;
+    double ms = 0.0;
+};
+
+/// A render's time on the engine's clock as fixedMs + msPerPixel x pixels + msPerPath x pixels x spp: a render's
+/// launches and dispatch, its image's clearing and read-back, its paths.
+struct RenderCost
+{
+    double fixedMs = 0.0;
+    double msPerPixel = 0.0;
+    double msPerPath = 0.0;
+
+    double ms(double pixels, double spp) const;
+    /// The pixels a render of `spp` spp can have in `ms` (0 where the fixed cost is more).
+    double pixelsFor(double ms, double spp) const;
+    /// The spp a render of `pixels` pixels can have in `ms` (0 where the other terms are more).
+    double sppFor(double ms, double pixels) const;
+};
+
+/// The three terms from three probes: P pixels at s spp, P pixels at s' > s spp, fewer pixels at s spp (in that
+/// order). Terms the timings' noise hides are 0 and the paths' cost is then the bound: the second render's time over
+/// its paths (it plans fewer paths, never more). Throws UsageError for probes not of that form.
+RenderCost fitRenderCost(const std::array<ProbeTiming, 3>& probes);
 
 /// One candidate the pilot rendered.
 struct PilotRow
@@ -86,6 +115,8 @@ struct AutoChoice
     int height = 0;
     int spp = 0; // per candidate, both halves together
     double estimatedRenderSeconds = 0.0; // from the probe
+    std::vector<ProbeTiming> probes; // the probe's renders, and the time model fitted to them
+    RenderCost cost;
     double budgetSeconds = 0.0;
     double pilotMs = 0.0; // the probe's and every candidate's render time, on the engine's clock
     double pilotWallSeconds = 0.0; // the whole pilot on the host's clock (GPU pipelines compiled included)

@@ -17,6 +17,7 @@
 #include <random>
 
 #include "Compare/AutoStrategy.h"
+#include "Error.h"
 #include "Render/RenderEngine.h"
 #include "Scenes/Catalogue.h"
 
@@ -28,8 +29,9 @@ class NoiseEngine final : public RenderEngine
 {
 public:
     NoiseEngine(std::function<double(const RenderSettings&)> sigma, std::uint64_t concurrentPaths,
-                double secondsPerPath)
-        : m_sigma(std::move(sigma)), m_concurrentPaths(concurrentPaths), m_secondsPerPath(secondsPerPath)
+                double secondsPerPath, double fixedSeconds = 0.0, double secondsPerPixel = 0.0)
+        : m_sigma(std::move(sigma)), m_concurrentPaths(concurrentPaths), m_secondsPerPath(secondsPerPath),
+          m_fixedSeconds(fixedSeconds), m_secondsPerPixel(secondsPerPixel)
     {
     }
     std::uint64_t concurrentPaths() const override { return m_concurrentPaths; }
@@ -58,7 +60,9 @@ public:
             m_sums[k] += double(count) * radiance(k) + sigma * normal(rng);
         const std::uint64_t paths = std::uint64_t(m_sums.size() / 3) * count;
         control.advance(paths);
-        return {.complete = true, .deviceSeconds = double(paths) * m_secondsPerPath};
+        // A render's launch and its image's clearing and read-back, once a frame.
+        const double frameSeconds = firstSample == 0 ? m_fixedSeconds + double(m_sums.size() / 3) * m_secondsPerPixel : 0.0;
+        return {.complete = true, .deviceSeconds = frameSeconds + double(paths) * m_secondsPerPath};
     }
     Image estimate(std::uint32_t samples) override
     {
@@ -76,6 +80,8 @@ private:
     std::function<double(const RenderSettings&)> m_sigma;
     std::uint64_t m_concurrentPaths;
     double m_secondsPerPath; // the fake device's time per camera path
+    double m_fixedSeconds; // and per render
+    double m_secondsPerPixel; // and per pixel of a render
     const Scene* m_scene = nullptr;
     RenderSettings m_settings;
     std::vector<double> m_sums;
@@ -179,6 +185,81 @@ TEST(PilotDecision, TheRuleIsTwiceTheRatiosStandardErrorAndTenPercent)
     EXPECT_TRUE(pilotSwitches({100.0, 0.0}, {112.0, 0.0}));
     EXPECT_FALSE(pilotSwitches({100.0, 0.0}, {90.0, 0.0})) << "behind is never a switch";
     EXPECT_FALSE(pilotSwitches({100.0, 0.05}, {0.0, 0.0})) << "a candidate not measured";
+}
+
+TEST(RenderCost, ThreeProbesGiveTheThreeTerms)
+{
+    // An H200-like render: 0.4 ms a launch, 2 ns a pixel (clearing, read-back), 2 ns a path.
+    const RenderCost truth{.fixedMs = 0.4, .msPerPixel = 2e-6, .msPerPath = 2e-6};
+    const double pixels = 360000.0;
+    const RenderCost fitted = fitRenderCost({ProbeTiming{pixels, 1, truth.ms(pixels, 1)},
+                                             ProbeTiming{pixels, 4, truth.ms(pixels, 4)},
+                                             ProbeTiming{pixels / 4, 1, truth.ms(pixels / 4, 1)}});
+    EXPECT_NEAR(fitted.fixedMs, truth.fixedMs, 1e-9);
+    EXPECT_NEAR(fitted.msPerPixel, truth.msPerPixel, 1e-12);
+    EXPECT_NEAR(fitted.msPerPath, truth.msPerPath, 1e-12);
+    // What the plan asks of it: a half's share of 0.83 ms holds 107,500 pixels at 1 spp, and 4 spp over 10,000.
+    EXPECT_NEAR(fitted.pixelsFor(0.83, 1), 107500.0, 1.0);
+    EXPECT_NEAR(fitted.sppFor(0.83, 10000.0), 20.5, 1e-6);
+    EXPECT_EQ(fitted.pixelsFor(0.3, 1), 0.0) << "a share under the fixed cost holds no pixel";
+}
+
+TEST(RenderCost, ACostTheClocksHideIsLeftToTheBound)
+{
+    // The 4 spp render no slower than the 1 spp one (a clock's noise): all of its time is taken as its paths', which
+    // plans fewer paths, never more.
+    const RenderCost fitted =
+        fitRenderCost({ProbeTiming{1024.0, 1, 1.0}, ProbeTiming{1024.0, 4, 0.98}, ProbeTiming{256.0, 1, 0.5}});
+    EXPECT_EQ(fitted.fixedMs, 0.0);
+    EXPECT_EQ(fitted.msPerPixel, 0.0);
+    EXPECT_DOUBLE_EQ(fitted.msPerPath, 0.98 / 4096.0);
+    // A render of one sample per pixel has no second spp: the bound again.
+    EXPECT_DOUBLE_EQ(fitRenderCost({ProbeTiming{1024.0, 1, 1.0}, ProbeTiming{1024.0, 1, 1.0}, ProbeTiming{256.0, 1, 0.5}})
+                         .msPerPath,
+                     1.0 / 1024.0);
+    EXPECT_THROW(fitRenderCost({ProbeTiming{1024.0, 4, 1.0}, ProbeTiming{1024.0, 1, 1.0}, ProbeTiming{256.0, 4, 0.5}}),
+                 UsageError);
+    EXPECT_THROW(fitRenderCost({ProbeTiming{256.0, 1, 1.0}, ProbeTiming{256.0, 4, 1.0}, ProbeTiming{1024.0, 1, 0.5}}),
+                 UsageError);
+}
+
+TEST(PilotDecision, APilotOnRendersWithFixedCostsFillsItsBudget)
+{
+    // A render's launch 20 ms, a pixel 100 ns, a path 100 ns (the H200's terms times 50: the fake's host time must
+    // stay within the pilot's guard of twice its budget), 2^18 paths at once, a 40 s render of 400 x 400 at 1024
+    // spp: the budget's 2 s over 27 measurements of two halves (12 candidates, 6, 3, and the final two 3 times) leave
+    // 37 ms a half, which do not hold the whole image at 1 spp (52 ms). Planned from one render of 1 spp over the whole image with its time taken as its
+    // paths', such a pilot measured too few paths (an H200's used half its budget); planned from a fixed cost without
+    // the pixels' share, none (an H200's image clearing and read-back counted as fixed exceeded a half's share).
+    const Scene scene = makeScene("cornell-box-lights");
+    NoiseEngine engine([](const RenderSettings&) { return 1.0; }, std::uint64_t(1) << 18, 1e-7, 20e-3, 1e-7);
+    engine.setScene(scene);
+    RenderRequest request;
+    request.scene.id = scene.id;
+    request.settings.width = 400;
+    request.settings.spp = 1024;
+    request.settings.estimator = Estimator::NeeMis;
+    request.settings.lightSampler = LightSampler::Projected;
+    request.settings.lightSelection = LightSelection::Bvh;
+    const StrategyLists lists = {{"--estimators", "nee-mis"},
+                                 {"--light-samplers", "projected,solid-angle,area,projected-exact"},
+                                 {"--light-selections", "bvh,power,uniform"}};
+    const AutoChoice choice = chooseStrategy(engine, request, lists, {.renderSeconds = 40.0});
+    EXPECT_FALSE(choice.tooShort);
+    EXPECT_FALSE(choice.budgetSpent);
+    EXPECT_NEAR(choice.cost.fixedMs, 20.0, 1e-6);
+    EXPECT_NEAR(choice.cost.msPerPixel, 1e-4, 1e-10);
+    const double probesMs = [&] {
+        double sum = 0.0;
+        for (const ProbeTiming& p : choice.probes)
+            sum += p.ms;
+        return sum + choice.probes.front().ms; // the first is rendered twice
+    }();
+    const double measuredMs = choice.pilotMs - probesMs;
+    EXPECT_GT(measuredMs, 0.85 * choice.budgetSeconds * 1e3);
+    EXPECT_LT(measuredMs, 1.05 * choice.budgetSeconds * 1e3);
+    EXPECT_GT(double(choice.width) * choice.height, 80000.0) << "as many pixels as the share holds at 1 spp (85,000)";
+    EXPECT_LT(double(choice.width) * choice.height, 90000.0);
 }
 } // namespace
 } // namespace rt::compare
