@@ -223,7 +223,6 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // selection on an H200's cornell-box-lights, 0.8x the scene's own there).
     // The pilot's pixels: at least the engine's concurrent paths (a 45 x 45 pilot on an H100 took 100x the time per
     // path of a 600 x 600 render) and 1024 (relMSE's terms: its standard error falls with their count).
-    const double renderPaths = pixelsOf(request.settings) * double(request.settings.trueSpp());
     const double pilotPixels = std::max(1024.0, double(engine.concurrentPaths()));
     constexpr int kProbeSpp = 4;
     RenderSettings large = best, small = best;
@@ -288,8 +287,10 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // A half of fewer paths than that measures nothing: the relMSE of a few hundred pixel samples misses the rare
     // paths that make a strategy's error, and so does its standard error. On many-lights (1,000 lights, 2 cores, a
     // 1 s render: 484 paths a half over 13 candidates) such pilots chose power or uniform selection by leads of
-    // "more than two standard errors", 0.64x the scene's own over 12 seeds. The render is too short to choose for:
-    // the scene's own stays.
+    // "more than two standard errors", 0.64x the scene's own over 12 seeds; on veach-mis (2 cores, 1 s: about 2,000
+    // paths a half over 9 candidates) 7 of 12 pilots left the own, once for area sampling with uniform selection at
+    // 0.13x its efficiency (auto 0.66x the own), where pilots of 8,000 paths (a 4 s render) left it for strategies
+    // within 10 % of it (0.94x). The render is too short to choose for: the scene's own stays.
     if (pixelsOf(pilot) * double(pilot.spp) < kMinimumPilotPaths)
     {
         choice.tooShort = true;

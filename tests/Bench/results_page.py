@@ -818,15 +818,27 @@ def section_light_samplers():
     return out
 
 
-AUTO = {"date": "2026-11-28", "notebook": "## 34.",
-        "runs": [("cpu-auto-strategy-1128", "CI kind: 2-vCPU AMD EPYC, both cores (the multi engine)",
-                  "128 px wide, each strategy for 1 s, 12 recheck seeds",
-                  "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-1128 multi 128 1000 2 8192 \\\n"
+AUTO = {"date": "2026-11-28", "notebook": "## 35.",
+        "runs": [("cpu-auto-strategy-1128b", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                  "128 px wide, each strategy for 1 s, 12 recheck seeds, rows taking turns seed by seed",
+                  "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-1128b multi 128 1000 2 8192 \\\n"
                   "    sphere-light-closeup rect-light-closeup rtrol-cornell-box veach-mis cornell-box-lights \\\n"
                   "    triangle-lights many-lights glossy-cornell"),
+                 ("cpu-auto-strategy-4s", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                  "128 px wide, each strategy for 4 s (a pilot of 0.2 s), 12 recheck seeds: the scenes a 1 s render "
+                  "leaves below",
+                  "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-4s multi 128 4000 2 16384 \\\n"
+                  "    cornell-box-lights triangle-lights glossy-cornell veach-mis rect-light-closeup"),
+                 ("h200-auto-strategy-1128-c", "NVIDIA H200, driver 580",
+                  "600 px wide, each strategy for 1 s, 8 recheck seeds; this build on three scenes (the device's "
+                  "time ran out; the other scenes in docs/results/h200-auto-strategy, an older build)",
+                  "bash tests/Bench/device_carry.sh  # then on the device:\n"
+                  "RECHECK_SEEDS=8 HEADLESS_RUNS= MS=1000 SEEDS=2 REF_SPP=65536 \\\n"
+                  "    SCENES=\"cornell-box-lights veach-mis glossy-cornell\" bash tests/Bench/device_run.sh auto"),
                  ("h200-auto-strategy", "NVIDIA H200, driver 580",
-                  "600 px wide, each strategy for 1 s, 8 recheck seeds (glossy-cornell: the device's time ran out)",
-                  "bash tests/Bench/device_carry.sh  # then on the device, in two runs of four scenes:\n"
+                  "600 px wide, each strategy for 1 s, 8 recheck seeds; an older build (notebook §34: before the "
+                  "too-short rule, the host-clock guard's fix, the rows taking turns and the pilot's time model), the "
+                  "GPU's latest figures for the scenes the rows above do not have",
                   "RECHECK_SEEDS=8 HEADLESS_RUNS= MS=1000 SEEDS=2 REF_SPP=65536 \\\n"
                   "    SCENES=\"sphere-light-closeup rect-light-closeup rtrol-cornell-box veach-mis\" \\\n"
                   "    bash tests/Bench/device_run.sh auto")]}
