@@ -287,10 +287,10 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // A half of fewer paths than that measures nothing: the relMSE of a few hundred pixel samples misses the rare
     // paths that make a strategy's error, and so does its standard error. On many-lights (1,000 lights, 2 cores, a
     // 1 s render: 484 paths a half over 13 candidates) such pilots chose power or uniform selection by leads of
-    // "more than two standard errors", 0.64x the scene's own over 12 seeds; on veach-mis (2 cores, 1 s: about 2,000
-    // paths a half over 9 candidates) 7 of 12 pilots left the own, once for area sampling with uniform selection at
-    // 0.13x its efficiency (auto 0.66x the own), where pilots of 8,000 paths (a 4 s render) left it for strategies
-    // within 10 % of it (0.94x). The render is too short to choose for: the scene's own stays.
+    // "more than two standard errors", 0.64x the scene's own over 12 seeds. The render is too short to choose for:
+    // the scene's own stays. (Not 4,096: on triangle-lights at 4 s on 2 cores, pilots of 1,024-2,048 paths a half
+    // chose area sampling with power selection in 11 of 12 seeds, 1.8x the own; on veach-mis at 1 s, pilots of
+    // about 2,000 left the own in 7 of 12 seeds, once for 0.13x its efficiency: notebook §35.)
     if (pixelsOf(pilot) * double(pilot.spp) < kMinimumPilotPaths)
     {
         choice.tooShort = true;

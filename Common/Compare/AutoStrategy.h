@@ -58,7 +58,7 @@ struct PilotBudget
 
 /// The fewest camera paths a half of a pilot's measurement must trace (its pixels x spp), below which the pilot
 /// measures nothing and keeps the scene's own strategy (AutoChoice::tooShort).
-inline constexpr double kMinimumPilotPaths = 4096.0;
+inline constexpr double kMinimumPilotPaths = 1024.0;
 
 /// One of the probe's renders: its pixels, spp and time on the engine's clock.
 struct ProbeTiming
