@@ -841,7 +841,7 @@ AUTO = {"date": "2026-11-28", "notebook": "## 35.",
                   "GPU's latest figures for the scenes the rows above do not have",
                   "RECHECK_SEEDS=8 HEADLESS_RUNS= MS=1000 SEEDS=2 REF_SPP=65536 \\\n"
                   "    SCENES=\"sphere-light-closeup rect-light-closeup rtrol-cornell-box veach-mis\" \\\n"
-                  "    bash tests/Bench/device_run.sh auto")]}
+                  "    bash tests/Bench/device_run.sh auto", "## 34.")]}
 
 
 def section_auto_strategy():
@@ -869,7 +869,9 @@ def section_auto_strategy():
         "many noisy rows is biased up). Efficiency 1/(relMSE s), mean over seeds of relMSE × s, each relMSE less the "
         "reference's own; ratios with their 95 % intervals (delta method over the seeds).",
     ]
-    for folder, machine, size, command in AUTO["runs"]:
+    for run in AUTO["runs"]:
+        folder, machine, size, command = run[:4]
+        notebook = run[4] if len(run) > 4 else AUTO["notebook"]  # an older run's own section
         if not (RESULTS / folder).is_dir():
             raise ParseError(f"missing results folder docs/results/{folder}")
         rows = scene_rows(RESULTS / folder)
@@ -886,7 +888,7 @@ def section_auto_strategy():
                        f"{' '.join(r['own'].split()[:3])} | {ratio(r['own_best'])} | {tally(r['chosen'])} | "
                        f"{ratio(r['auto_best'])} | {ratio(r['auto_own'])} |")
         out += ["", sources([("machine", machine), ("date", AUTO["date"]), ("results", link(folder + "/")),
-                             ("notebook", notebook_link(AUTO["notebook"]))]), "", code(command)]
+                             ("notebook", notebook_link(notebook))]), "", code(command)]
     return out
 
 
