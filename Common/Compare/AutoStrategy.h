@@ -105,6 +105,10 @@ struct PilotRow
     double finalRelMse = 0.0;
     double finalRelMseError = 0.0;
     double finalEfficiency = 0.0;
+    /// The scene's own, in the decision: its median measurement's relMSE over its measurements' count (as the
+    /// relMSE of their mean) and the efficiency from it.
+    double medianRelMse = 0.0;
+    double medianEfficiency = 0.0;
 };
 
 /// What the pilot measured and chose: --stats' "strategy_choice", the log's table, --compare's auto row.
