@@ -24,7 +24,9 @@
 // read as a bias. Its efficiency is 1 / (relMSE x seconds), twice the faster half's time
 // on the engine's clock (Compare/Measurement.h). The final round's challenger wins where, on its final round's
 // measurements alone (the earlier ones chose it, and are lucky), its lead over the scene's own is more than twice
-// the standard error of their ratio and 10 % (pilotSwitches): otherwise the scene's own stays. The measurements are
+// the standard error of their ratio and 10 % (pilotSwitches): otherwise the scene's own stays. The own counts by the
+// better of its measurements' median and their mean (a firefly in one of a small pilot's renders is not a
+// measurement of a tail), the challenger by its mean (its fireflies count against it). The measurements are
 // planned to fill the budget on the engine's clock; the search stops once its time on the host's clock passes twice
 // the budget (each render's set-up on the host): the candidates left are not measured, and without a final
 // round the most efficient measured, on all its measurements, against the same rule (a final round cut short keeps

@@ -819,14 +819,14 @@ def section_light_samplers():
 
 
 AUTO = {"date": "2026-11-28", "notebook": "## 35.",
-        "runs": [("cpu-auto-strategy-1128b", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+        "runs": [("cpu-auto-strategy-1128c", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
                   "128 px wide, each strategy for 1 s, 12 recheck seeds, rows taking turns seed by seed",
-                  "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-1128b multi 128 1000 2 8192 \\\n"
+                  "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-1128c multi 128 1000 2 8192 \\\n"
                   "    sphere-light-closeup rect-light-closeup rtrol-cornell-box veach-mis cornell-box-lights \\\n"
                   "    triangle-lights many-lights glossy-cornell"),
                  ("cpu-auto-strategy-4s", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
                   "128 px wide, each strategy for 4 s (a pilot of 0.2 s), 12 recheck seeds: the scenes a 1 s render "
-                  "leaves below",
+                  "left below, with the build before the own's median measurement (notebook §35)",
                   "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-4s multi 128 4000 2 16384 \\\n"
                   "    cornell-box-lights triangle-lights glossy-cornell veach-mis rect-light-closeup"),
                  ("h200-auto-strategy-1128-c", "NVIDIA H200, driver 580",
