@@ -112,6 +112,27 @@ struct Device
 constexpr Device kCpuLike{};
 constexpr Device kGpuLike{std::uint64_t(1) << 18, 4e-6};
 
+/// A 400 x 400 render at 1024 spp of `scene`, the scene's own nee-mis with projected sampling and the BVH.
+RenderRequest pilotRequest(const Scene& scene)
+{
+    RenderRequest request;
+    request.scene.id = scene.id;
+    request.settings.width = 400;
+    request.settings.spp = 1024;
+    request.settings.estimator = Estimator::NeeMis;
+    request.settings.lightSampler = LightSampler::Projected;
+    request.settings.lightSelection = LightSelection::Bvh;
+    return request;
+}
+
+/// nee-mis x 4 light samplers x 3 selections.
+StrategyLists twelveCandidates()
+{
+    return {{"--estimators", "nee-mis"},
+            {"--light-samplers", "projected,solid-angle,area,projected-exact"},
+            {"--light-selections", "bvh,power,uniform"}};
+}
+
 /// Pilots of `trials` seeds over nee-mis x 4 light samplers x 3 selections, the scene's own projected with the BVH,
 /// on `device`; how many chose `wanted` (or, with none, anything but the scene's own).
 int pilotsChoosing(const std::function<double(const RenderSettings&)>& sigma, int trials,
@@ -122,16 +143,8 @@ int pilotsChoosing(const std::function<double(const RenderSettings&)>& sigma, in
     NoiseEngine engine(sigma, device.concurrentPaths, device.secondsPerPath);
     engine.setFireflies(std::move(fireflies));
     engine.setScene(scene);
-    RenderRequest request;
-    request.scene.id = scene.id;
-    request.settings.width = 400;
-    request.settings.spp = 1024;
-    request.settings.estimator = Estimator::NeeMis;
-    request.settings.lightSampler = LightSampler::Projected;
-    request.settings.lightSelection = LightSelection::Bvh;
-    const StrategyLists lists = {{"--estimators", "nee-mis"},
-                                 {"--light-samplers", "projected,solid-angle,area,projected-exact"},
-                                 {"--light-selections", "bvh,power,uniform"}};
+    RenderRequest request = pilotRequest(scene);
+    const StrategyLists lists = twelveCandidates();
     const Strategy own = Strategy::of(request.settings);
     int count = 0;
     for (int trial = 0; trial < trials; ++trial)
@@ -264,22 +277,15 @@ TEST(PilotDecision, APilotOnRendersWithFixedCostsFillsItsBudget)
     // A render's launch 20 ms, a pixel 100 ns, a path 100 ns (the H200's terms times 50: the fake's host time must
     // stay within the pilot's guard of twice its budget), 2^18 paths at once, a 40 s render of 400 x 400 at 1024
     // spp: the budget's 2 s over 27 measurements of two halves (12 candidates, 6, 3, and the final two 3 times) leave
-    // 37 ms a half, which do not hold the whole image at 1 spp (52 ms). Planned from one render of 1 spp over the whole image with its time taken as its
-    // paths', such a pilot measured too few paths (an H200's used half its budget); planned from a fixed cost without
-    // the pixels' share, none (an H200's image clearing and read-back counted as fixed exceeded a half's share).
+    // 37 ms a half, which do not hold the whole image at 1 spp (52 ms). Planned from one render of 1 spp over the
+    // whole image with its time taken as its paths', such a pilot measured too few paths (an H200's used half its
+    // budget); planned from a fixed cost without the pixels' share, none (an H200's image clearing and read-back
+    // counted as fixed exceeded a half's share).
     const Scene scene = makeScene("cornell-box-lights");
     NoiseEngine engine([](const RenderSettings&) { return 1.0; }, std::uint64_t(1) << 18, 1e-7, 20e-3, 1e-7);
     engine.setScene(scene);
-    RenderRequest request;
-    request.scene.id = scene.id;
-    request.settings.width = 400;
-    request.settings.spp = 1024;
-    request.settings.estimator = Estimator::NeeMis;
-    request.settings.lightSampler = LightSampler::Projected;
-    request.settings.lightSelection = LightSelection::Bvh;
-    const StrategyLists lists = {{"--estimators", "nee-mis"},
-                                 {"--light-samplers", "projected,solid-angle,area,projected-exact"},
-                                 {"--light-selections", "bvh,power,uniform"}};
+    const RenderRequest request = pilotRequest(scene);
+    const StrategyLists lists = twelveCandidates();
     const AutoChoice choice = chooseStrategy(engine, request, lists, {.renderSeconds = 40.0});
     EXPECT_FALSE(choice.tooShort);
     EXPECT_FALSE(choice.budgetSpent);
