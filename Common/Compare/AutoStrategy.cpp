@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/fmt/ranges.h>
@@ -134,46 +135,41 @@ std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& measured, co
     if (values == 0)
         return std::vector<PilotError>(n);
     // x: each candidate's estimate (the halves' mean); v: the variance of its measured halves, (a - b)^2 / 4
-    // (Image/Metrics.h).
-    std::vector<std::vector<double>> x(n, std::vector<double>(values)), v(n, std::vector<double>(values));
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t k = 0; k < values; ++k)
-        {
-            const double a = measured[i].a.data()[k / 3][int(k % 3)], b = measured[i].b.data()[k / 3][int(k % 3)];
-            v[i][k] = 0.25 * (a - b) * (a - b);
-            x[i][k] = 0.5 * (double(estimates[i].a.data()[k / 3][int(k % 3)]) + estimates[i].b.data()[k / 3][int(k % 3)]);
-        }
+    // (Image/Metrics.h). Read from the images where needed: a GPU's pilot of 512 x 512 pixels over 13 candidates held
+    // 160 MB of them.
+    static_assert(sizeof(vec3) == 3 * sizeof(float), "an image's values are its pixels' channels, packed");
+    auto values_of = [](const Image& image) { return &image.data()->x; };
+    auto x = [&](std::size_t i, std::size_t k) {
+        return 0.5 * (double(values_of(estimates[i].a)[k]) + values_of(estimates[i].b)[k]);
+    };
+    auto v = [&](std::size_t i, std::size_t k) {
+        const double a = values_of(measured[i].a)[k], b = values_of(measured[i].b)[k];
+        return 0.25 * (a - b) * (a - b);
+    };
     // relMSE's denominator for candidate i: the others' estimate, per pixel. Never candidate i's own image: a firefly
     // divided by itself would make the spikiest estimator look the best (measured: bsdf chosen over nee-mis, which
     // is 2x as efficient, on cornell-box-lights at 2 spp).
     // (Not blurred: over 5 x 5 pixels of a 40 x 27 pilot a light's bright pixels took their dark neighbours' values,
     // and their antialiasing noise over those read as relMSE 100x the render's on veach-mis.)
-    auto othersNorm = [&](std::size_t i, const std::vector<double>& w) {
-        std::vector<double> mean(values, 0.0);
-        double weight = 0.0;
-        for (std::size_t j = 0; j < n; ++j)
-            if (j != i || n == 1)
-            {
-                weight += w[j];
-                for (std::size_t k = 0; k < values; ++k)
-                    mean[k] += w[j] * x[j][k];
-            }
-        for (double& m : mean)
-            m /= weight;
-        for (double& m : mean)
-            m = m * m + kRelMseEpsilon;
-        return mean;
-    };
-    // The mean of squared / norm over the values, and its standard error.
-    auto relative = [&](const std::vector<double>& squared, const std::vector<double>& norm) {
-        double sum = 0.0, sumSquares = 0.0;
+    // The others' weighted mean is the weighted sum of all less the candidate's own term: one sum per pass, not one per
+    // candidate (n^2 passes over the pixels took seconds of the host's clock on a GPU's pilot, which the search's
+    // guard of twice its budget then cut short).
+    // The mean of v_i / (others^2 + epsilon) over the values, and its standard error.
+    auto relative = [&](std::size_t i, const std::vector<double>& total, double weight, const std::vector<double>& w) {
+        // Four partial sums: one chain of dependent additions over every value was most of the time.
+        double sum[4] = {}, squares[4] = {};
+        const double othersWeight = n == 1 ? 0.0 : 1.0 / (weight - w[i]);
         for (std::size_t k = 0; k < values; ++k)
         {
-            const double t = squared[k] / norm[k];
-            sum += t;
-            sumSquares += t * t;
+            const double own = x(i, k);
+            const double others = n == 1 ? own : (total[k] - w[i] * own) * othersWeight;
+            const double t = v(i, k) / (others * others + kRelMseEpsilon);
+            sum[k % 4] += t;
+            squares[k % 4] += t * t;
         }
-        const double mean = sum / double(values);
+        const double sumAll = (sum[0] + sum[1]) + (sum[2] + sum[3]);
+        const double sumSquares = (squares[0] + squares[1]) + (squares[2] + squares[3]);
+        const double mean = sumAll / double(values);
         const double variance = std::max(sumSquares / double(values) - mean * mean, 0.0);
         return PilotError{mean, std::sqrt(variance / double(values))};
     };
@@ -181,10 +177,19 @@ std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& measured, co
     // second pass, so that a noisy candidate does not make its neighbours' denominators noisy.
     std::vector<double> w(n, 1.0);
     std::vector<PilotError> errors(n);
+    std::vector<double> total(values);
     for (int pass = 0; pass < 2; ++pass)
     {
+        double weight = 0.0;
+        std::fill(total.begin(), total.end(), 0.0);
+        for (std::size_t j = 0; j < n; ++j)
+        {
+            weight += w[j];
+            for (std::size_t k = 0; k < values; ++k)
+                total[k] += w[j] * x(j, k);
+        }
         for (std::size_t i = 0; i < n; ++i)
-            errors[i] = relative(v[i], othersNorm(i, w));
+            errors[i] = relative(i, total, weight, w);
         for (std::size_t i = 0; i < n; ++i)
             w[i] = 1.0 / std::max(errors[i].relMse, 1e-300);
     }
@@ -213,6 +218,18 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     if (planned == 1)
         return choice;
 
+    // Every frame of the pilot, the probe's too, runs what the render will run (RenderEngine::setRepresentedPaths):
+    // the GPU's integrator for the render's paths, not the pilot's.
+    struct Represented
+    {
+        RenderEngine& engine;
+        Represented(RenderEngine& e, std::uint64_t paths) : engine(e) { engine.setRepresentedPaths(paths); }
+        ~Represented() { engine.setRepresentedPaths(0); }
+        Represented(const Represented&) = delete;
+        Represented& operator=(const Represented&) = delete;
+    } represented(engine, static_cast<std::uint64_t>(pixelsOf(request.settings)) *
+                              static_cast<std::uint64_t>(request.settings.trueSpp()));
+
     // The probe: the starting strategy timed on three renders, for the three terms of a render's time (RenderCost):
     // the pilot's pixels at 1 and kProbeSpp spp, and a quarter of them at 1 spp. The pilot's renders are small, so
     // the terms but the paths' matter: from one render of 1 spp over the whole image a GPU's pilot planned its
@@ -233,12 +250,16 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
                                       ProbeTiming{pixelsOf(small), 1}};
     // The first render after a scene is set is the slower (2-3 ms against 0.7-0.9 ms for 1024 paths on 2 cores: a
     // pool's first dispatch, cold caches): the first probe is rendered again after the others, the faster kept.
+    double hostExtraMs = std::numeric_limits<double>::infinity(); // AutoChoice::hostExtraMs
     for (const std::size_t i : {0, 1, 2, 0})
     {
         RenderRequest probe = request;
         probe.settings = i == 2 ? small : large;
         probe.settings.spp = probes[i].spp;
-        const Measurement probed = measure(engine, probe, nullptr);
+        const auto probeStart = std::chrono::steady_clock::now();
+        const Measurement probed = measure(engine, probe, nullptr, {}, true);
+        const double hostMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - probeStart).count();
         if (probed.cancelled)
         {
             choice.cancelled = true;
@@ -247,8 +268,11 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         }
         choice.pilotMs += probed.ms();
         probes[i].ms = probes[i].ms > 0.0 ? std::min(probes[i].ms, probed.ms()) : probed.ms();
+        hostExtraMs = std::min(hostExtraMs, std::max(hostMs - probed.ms(), 0.0));
     }
+    choice.hostExtraMs = hostExtraMs;
     choice.probes.assign(probes.begin(), probes.end());
+    choice.frameConfiguration = engine.frameConfiguration();
     const RenderCost cost = fitRenderCost(probes);
     choice.cost = cost;
     choice.estimatedRenderSeconds =
@@ -273,17 +297,55 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         }
         measurements += m;
     }
-    const double shareMs = choice.budgetSeconds * 1e3 / double(measurements) / 2.0; // a half's
+    // A half's share of the budget on the engine's clock, but no more than the search's guard (twice the budget, on
+    // the host's clock) leaves it beside each render's host time beyond the engine's (its set-up and read-back, the
+    // waits between a GPU's submissions: 9-12 ms a render of 512 x 512 on an H200 against its 2-7 ms on the GPU's
+    // clock, when the guard stopped every search before its final round).
     // The probe's pixels where the share holds them at 1 spp, fewer where not; the rest of the share as samples per
     // pixel, up to half the render's: stratification gains with the spp, and a pilot of 2 spp cannot see it (it
     // chose random over sobol on rect-light-closeup, where sobol is 3.5x as efficient at 1 s).
     const int sppCap = std::max(1, request.settings.trueSpp() / 2);
-    RenderSettings pilot = request.settings;
-    const double pixels = std::min(pixelsOf(large), cost.pixelsFor(shareMs, 1));
-    pilot.width = widthFor(request.settings, std::max(pixels, 1.0));
-    pilot.spp = std::clamp(static_cast<int>(cost.sppFor(shareMs, pixelsOf(pilot))), 1, sppCap);
+    auto planHalves = [&](double budgetMs, double hostBudgetMs) {
+        const double shareMs = std::min(budgetMs / double(measurements) / 2.0,
+                                        hostBudgetMs / double(measurements) / 2.0 - choice.hostExtraMs);
+        RenderSettings half = request.settings;
+        const double pixels = std::min(pixelsOf(large), cost.pixelsFor(shareMs, 1));
+        half.width = widthFor(request.settings, std::max(pixels, 1.0));
+        half.spp = std::clamp(static_cast<int>(cost.sppFor(shareMs, pixelsOf(half))), 1, sppCap);
+        return half;
+    };
+    RenderSettings pilot = planHalves(choice.budgetSeconds * 1e3, 2.0 * choice.budgetSeconds * 1e3);
+    // Timing frames: where a half holds fewer paths than kThroughputFactor x the engine's concurrent paths, its
+    // device runs partly idle, waiting on the longest paths, and its time per path hides part of what a costlier
+    // candidate costs in the render: on an H200's glossy-cornell the pilot's halves of 512 x 512 at 1-17 spp put
+    // projected sampling with the BVH at 1.35-1.57x the time per path of solid-angle sampling with uniform selection,
+    // the render at 2x, and at 10 s the pilot kept the own, 0.65x the best. The final round then times each of its
+    // two candidates on a frame of the probe's pixels with up to that many paths (a quarter of the budget holds the
+    // six), once per measurement, and decides on the least time per path of them (less the probe's fixed and
+    // per-pixel terms). A frame of no more than twice a half's paths tells nothing the halves do not.
+    constexpr double kThroughputFactor = 16.0;
+    const double timingBudgetMs = 0.25 * choice.budgetSeconds * 1e3 / double(2 * kFinalMeasurements);
+    const double timingPaths = std::min(kThroughputFactor * double(engine.concurrentPaths()),
+                                        pixelsOf(large) * cost.sppFor(timingBudgetMs, pixelsOf(large)));
+    RenderSettings timing = large;
+    timing.width = widthFor(request.settings, std::min(timingPaths, pixelsOf(large)));
+    timing.spp = std::clamp(static_cast<int>(timingPaths / pixelsOf(timing)), 1, request.settings.trueSpp());
+    if (pixelsOf(timing) * timing.spp > 2.0 * pixelsOf(pilot) * pilot.spp)
+    {
+        const double timingMs = double(2 * kFinalMeasurements) * cost.ms(pixelsOf(timing), timing.spp);
+        choice.timingWidth = timing.width;
+        choice.timingSpp = timing.spp;
+        pilot = planHalves(choice.budgetSeconds * 1e3 - timingMs,
+                           2.0 * choice.budgetSeconds * 1e3 -
+                               (timingMs + double(2 * kFinalMeasurements) * choice.hostExtraMs));
+    }
     choice.width = pilot.width;
     choice.height = pilot.height();
+    // What a half costs beyond its paths (the probe's fixed and per-pixel terms), taken off each measurement's
+    // time: the render spreads them over its many more paths, so a candidate's efficiency is its paths' (with a
+    // launch chain of about 1 ms in each of an H200's wavefront halves of 2-4 ms, a candidate 1.25x as fast per path
+    // would measure 1.1x by its halves' whole time).
+    choice.overheadMs = cost.ms(pixelsOf(pilot), 0.0);
     // A half of fewer paths than that measures nothing: the relMSE of a few hundred pixel samples misses the rare
     // paths that make a strategy's error, and so does its standard error. On many-lights (1,000 lights, 2 cores, a
     // 1 s render: 484 paths a half over 13 candidates) such pilots chose power or uniform selection by leads of
@@ -315,6 +377,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // A half of another strategy than the scene's that runs past 4x its share is stopped: the candidate is too
     // slow to win (it would need 4x less error per path than the probe's strategy), and the budget holds (book 3's
     // mixture over 1000 lights took 15x its share on many-lights).
+    const double shareMs = cost.ms(pixelsOf(pilot), pilot.spp); // a half's, as planned
     const auto timeLimit = std::chrono::nanoseconds(static_cast<std::int64_t>(std::max(4.0 * shareMs, 5.0) * 1e6));
 
     /// Sums of a candidate's A and B halves over measurements of the same size, and their time.
@@ -357,21 +420,39 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         Sums all, final;
         std::vector<PilotHalves> each; // the scene's own: every measurement's halves (the decision's median)
     };
+    const double halfPaths = pixelsOf(pilot) * double(pilot.spp);
     std::vector<Candidate> runs;
     for (const Strategy& strategy : grid)
         runs.push_back({PilotRow{strategy, differences(own, strategy)}, {}, {}});
     std::uint32_t measured = 0; // measurements made, for their seeds
     auto measureOnce = [&](Candidate& c, bool finalRound) {
+        if (finalRound && choice.timingSpp > 0)
+        {
+            RenderRequest frame = request;
+            frame.settings = c.row.strategy.applyTo(timing);
+            frame.settings.seed = request.settings.seed + 7919u * (2u * measured + 1u) + 3u;
+            const Measurement t = measure(engine, frame, nullptr, {}, true);
+            if (t.cancelled)
+                return false;
+            choice.pilotMs += t.ms();
+            const double paths = pixelsOf(timing) * double(timing.spp);
+            const double msPerPath = std::max(t.ms() - cost.ms(pixelsOf(timing), 0.0), 0.1 * t.ms()) / paths;
+            c.row.timingMsPerPath = c.row.timingMsPerPath > 0.0 ? std::min(c.row.timingMsPerPath, msPerPath) : msPerPath;
+        }
         RenderRequest half = request;
         half.settings = c.row.strategy.applyTo(pilot);
         half.settings.seed = request.settings.seed + 7919u * (2u * measured++ + 1u);
         // The scene's own strategy is the one to beat (and the probe's): never stopped, or nothing would compare
         // (a loaded machine took it past 4x its share of a 3 ms render's pilot).
         const auto limit = &c == &runs.front() ? std::chrono::nanoseconds(0) : timeLimit;
-        Measurement a = measure(engine, half, nullptr, limit);
+        const auto renderStart = std::chrono::steady_clock::now();
+        Measurement a = measure(engine, half, nullptr, limit, true);
         ++half.settings.seed;
         Measurement b = a.cancelled ? Measurement{.cancelled = a.cancelled, .timedOut = a.timedOut}
-                                    : measure(engine, half, nullptr, limit);
+                                    : measure(engine, half, nullptr, limit, true);
+        choice.renderHostSeconds +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - renderStart).count();
+        choice.tracingHostSeconds += (a.wallMs + b.wallMs) * 1e-3;
         if (b.cancelled && !b.timedOut)
             return false;
         choice.pilotMs += a.ms() + b.ms();
@@ -396,8 +477,11 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         }
         choice.spp = a.spp + b.spp;
         // The halves are the same work: the faster one's time twice, so that a one-off stall of either (a pool's
-        // first use, a clock ramping up: 2x on the first candidate after the probe, measured) does not decide.
-        const double ms = 2.0 * std::min(a.ms(), b.ms());
+        // first use, a clock ramping up: 2x on the first candidate after the probe, measured) does not decide. Less
+        // the overhead, but never below a tenth of the time (the probe's terms are estimates; a half planned to its
+        // share at 1 spp has paths of a quarter of it where the fixed cost is half).
+        const double fasterMs = std::min(a.ms(), b.ms());
+        const double ms = 2.0 * std::max(fasterMs - choice.overheadMs, 0.1 * fasterMs);
         c.row.ms += ms;
         ++c.row.measurements;
         if (finalRound)
@@ -512,8 +596,14 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         row.finalMeasurements = (*challenger)->final.count;
         row.finalRelMse = errors[at].relMse;
         row.finalRelMseError = errors[at].standardError;
-        row.finalEfficiency =
-            row.finalRelMse > 0.0 ? 1.0 / (row.finalRelMse * (*challenger)->final.ms * 1e-3) : 0.0;
+        // A measurement's time: from the timing frames where the final round had them, else as measured.
+        Candidate& ownRun = runs.front();
+        const bool timed = row.timingMsPerPath > 0.0 && ownRun.row.timingMsPerPath > 0.0;
+        const double finalMs = timed ? double(row.finalMeasurements) * 2.0 * halfPaths * row.timingMsPerPath
+                                     : (*challenger)->final.ms;
+        const double ownMs = timed ? double(ownRun.row.measurements) * 2.0 * halfPaths * ownRun.row.timingMsPerPath
+                                   : ownRun.row.ms;
+        row.finalEfficiency = row.finalRelMse > 0.0 ? 1.0 / (row.finalRelMse * finalMs * 1e-3) : 0.0;
         // The scene's own by its median measurement, the challenger by the mean of its: a pilot's small renders see a
         // heavy-tailed error as a rare firefly, which then decides. On veach-mis at 1 s on 2 cores (3 spp a half over
         // 39 x 26 pixels) one firefly in the own's six measurements put its efficiency at 1-360 where its other
@@ -521,7 +611,6 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         // Counted in the challenger's mean, a firefly keeps the own; left out of the own's median, it cannot push
         // the pilot to a challenger: both ways the scene's own stays unless the challenger leads the own's typical
         // measurement. (A challenger's median would hide its heavier tail: area sampling on veach-mis, 0.13x.)
-        Candidate& ownRun = runs.front();
         std::vector<PilotError> each;
         for (const PilotHalves& halves : ownRun.each)
         {
@@ -537,14 +626,15 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         // As the relMSE of the mean of them all.
         incumbent.medianRelMse = 0.5 * (lower.relMse + upper.relMse) / double(n);
         incumbent.medianEfficiency =
-            incumbent.medianRelMse > 0.0 ? 1.0 / (incumbent.medianRelMse * incumbent.ms * 1e-3) : 0.0;
+            incumbent.medianRelMse > 0.0 ? 1.0 / (incumbent.medianRelMse * ownMs * 1e-3) : 0.0;
+        const double ownEfficiency = incumbent.relMse > 0.0 ? 1.0 / (incumbent.relMse * ownMs * 1e-3) : 0.0;
         auto relative = [](double value, double error) { return value > 0.0 ? error / value : 0.0; };
         // The own by the better of its median and its mean: the median's own noise (six measurements' median, a
         // tenth below their mean on veach-mis) must not push the pilot to a challenger either.
-        const bool byMedian = incumbent.medianEfficiency > incumbent.efficiency;
+        const bool byMedian = incumbent.medianEfficiency > ownEfficiency;
         const PilotScore ownScore =
             byMedian ? PilotScore{incumbent.medianEfficiency, relative(lower.relMse, lower.standardError)}
-                     : PilotScore{incumbent.efficiency, relative(incumbent.relMse, incumbent.relMseError)};
+                     : PilotScore{ownEfficiency, relative(incumbent.relMse, incumbent.relMseError)};
         if (pilotSwitches(ownScore, {row.finalEfficiency, relative(row.finalRelMse, row.finalRelMseError)}))
             choice.chosen = row.strategy;
     }
@@ -594,10 +684,17 @@ nlohmann::json AutoChoice::toJson() const
     j["pilot_ms"] = pilotMs;
     j["pilot_wall_seconds"] = pilotWallSeconds;
     j["prepare_seconds"] = prepareSeconds;
+    j["probe_host_extra_ms"] = hostExtraMs;
+    j["timing_width"] = timingWidth;
+    j["timing_spp"] = timingSpp;
+    j["search_render_host_seconds"] = renderHostSeconds;
+    j["search_tracing_host_seconds"] = tracingHostSeconds;
     j["probes"] = nlohmann::json::array();
     for (const ProbeTiming& p : probes)
         j["probes"].push_back({{"pixels", p.pixels}, {"spp", p.spp}, {"ms", p.ms}});
     j["render_cost"] = {{"fixed_ms", cost.fixedMs}, {"ms_per_pixel", cost.msPerPixel}, {"ms_per_path", cost.msPerPath}};
+    j["half_overhead_ms"] = overheadMs;
+    j["pilot_frame_configuration"] = frameConfiguration;
     j["budget_spent"] = budgetSpent;
     j["too_short"] = tooShort;
     j["relmse_epsilon"] = kRelMseEpsilon;
@@ -616,6 +713,7 @@ nlohmann::json AutoChoice::toJson() const
                                    {"final_efficiency", r.finalEfficiency},
                                    {"median_measurement_relmse", r.medianRelMse},
                                    {"median_measurement_efficiency", r.medianEfficiency},
+                                   {"timing_ms_per_path", r.timingMsPerPath},
                                    {"too_slow", r.tooSlow}});
     return j;
 }
@@ -623,9 +721,11 @@ nlohmann::json AutoChoice::toJson() const
 std::string AutoChoice::table() const
 {
     std::string text = fmt::format("{:<44} {:>30} {:>3} {:>9} {:>10} {:>8} {:>12}\n", "strategy", "differs from own",
-                                   "n", "ms", "relMSE", "±1 s.e.", "1/(relMSE s)");
+                                   "n", "paths ms", "relMSE", "±1 s.e.", "1/(relMSE s)");
     for (const PilotRow& r : rows)
     {
+        const std::string timed =
+            r.timingMsPerPath > 0.0 ? fmt::format(" (timing frames: {:.3g} ns a path)", r.timingMsPerPath * 1e6) : "";
         const std::string decided =
             r.medianRelMse > 0.0
                 ? fmt::format("  its median measurement: relMSE {:.3g}, 1/(relMSE s) {:.4g}", r.medianRelMse,
@@ -635,13 +735,13 @@ std::string AutoChoice::table() const
                               r.finalMeasurements, r.finalRelMse, r.finalRelMseError, r.finalEfficiency,
                               r.strategy == chosen ? ": chosen" : ": not enough to switch")
                 : "";
-        text += fmt::format("{:<44} {:>30} {:>3} {:>9.2f} {:>10.3g} {:>8.2g} {:>12.4g}{}{}\n", r.strategy.name(),
+        text += fmt::format("{:<44} {:>30} {:>3} {:>9.2f} {:>10.3g} {:>8.2g} {:>12.4g}{}{}{}\n", r.strategy.name(),
                             r.differs, r.measurements, r.ms, r.relMse, r.relMseError, r.efficiency,
                             r.tooSlow                                        ? "  stopped: 4x its share"
                             : r.measurements == 0                            ? "  not measured: the budget was spent"
                             : r.strategy == chosen && r.finalMeasurements == 0 ? "  <- chosen"
                                                                              : "",
-                            decided);
+                            decided, timed);
     }
     return text;
 }

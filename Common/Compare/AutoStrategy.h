@@ -4,15 +4,18 @@
 // faster).
 //
 // The pilot: three probe renders of the scene's strategy time a render's fixed cost, a pixel's and a path's
-// (RenderCost), and so estimate the render and plan the pilot's renders; the budget is a fraction of that estimate (5 % by default), at most a
-// few seconds. Every candidate is prepared (a GPU's pipelines
-// compiled) before the budget's clock starts. Then every combination of the candidates
+// (RenderCost), and so estimate the render and plan the pilot's renders; the budget is a fraction of that estimate
+// (5 % by default), at most a few seconds. Every frame of the pilot runs what the render will run (the GPU's
+// integrator for the render's paths: RenderEngine::setRepresentedPaths), each in one batch. Every candidate is
+// prepared (a GPU's pipelines compiled) before the budget's clock starts. Then every combination of the candidates
 // (strategyGrid: a setting a strategy does not use is not varied), the scene's own first, each rendered as two
 // independent halves of the same small render (the pilot's size and spp are the same for every candidate, so that
 // their images combine: about 1024 pixels, or the engine's concurrent paths, the rest of the budget, less each
 // render's fixed cost, as spp), by
 // successive halving: all once, the better half again, and so on down to two, the scene's own in every round; the
-// final two are measured three times. Not one setting at a time: the estimator compared at the scene's light
+// final two are measured three times, each time with a timing frame where the halves are too small to keep the
+// engine's device busy (a GPU's: their time per path then hides part of a costlier candidate's cost; the decision
+// takes the timing frames' time per path). Not one setting at a time: the estimator compared at the scene's light
 // sampler kept book 3's mixture on rtrol-cornell-box, where an estimator with NEE and a cheaper sampler is 2x as
 // efficient.
 //
@@ -22,7 +25,7 @@
 // unbiased (the engines' agreement tests), so its variance is its error: the error against the others' estimate
 // would add their noise, and on a glossy scene's heavy tails (veach-mis) its correction for that noise failed and
 // read as a bias. Its efficiency is 1 / (relMSE x seconds), twice the faster half's time
-// on the engine's clock (Compare/Measurement.h). The final round's challenger wins where, on its final round's
+// on the engine's clock (Compare/Measurement.h) less the half's fixed and per-pixel cost (the render's paths' time). The final round's challenger wins where, on its final round's
 // measurements alone (the earlier ones chose it, and are lucky), its lead over the scene's own is more than twice
 // the standard error of their ratio and 10 % (pilotSwitches): otherwise the scene's own stays. The own counts by the
 // better of its measurements' median and their mean (a firefly in one of a small pilot's renders is not a
@@ -96,7 +99,9 @@ struct PilotRow
     Strategy strategy;
     std::string differs; // the settings in which it differs from the scene's own ("estimator, light-sampler")
     int measurements = 0; // pairs of halves rendered (successive halving measures the better candidates again)
-    double ms = 0.0; // every measurement's: twice its faster half's, on the engine's clock (Measurement::ms)
+    /// Every measurement's: twice its faster half's, on the engine's clock (Measurement::ms), less the half's
+    /// overhead (AutoChoice::overheadMs): its paths' time, what the render's time grows with.
+    double ms = 0.0;
     /// The relMSE of its mean over its measurements (see above).
     double relMse = 0.0;
     double relMseError = 0.0; // relMse's standard error (over the pixels' terms)
@@ -111,6 +116,9 @@ struct PilotRow
     /// relMSE of their mean) and the efficiency from it.
     double medianRelMse = 0.0;
     double medianEfficiency = 0.0;
+    /// The final round's two where it had timing frames (AutoChoice::timingSpp): the least time per path of them on
+    /// the engine's clock, which the decision's efficiencies (final and median) take instead of the halves' times.
+    double timingMsPerPath = 0.0;
 };
 
 /// What the pilot measured and chose: --stats' "strategy_choice", the log's table, --compare's auto row.
@@ -122,11 +130,20 @@ struct AutoChoice
     int spp = 0; // per candidate, both halves together
     double estimatedRenderSeconds = 0.0; // from the probe
     std::vector<ProbeTiming> probes; // the probe's renders, and the time model fitted to them
+    std::string frameConfiguration; // what the probe's frames ran (RenderEngine::frameConfiguration)
     RenderCost cost;
+    double overheadMs = 0.0; // a half's fixed and per-pixel cost by the time model, taken off the candidates' times
+    double hostExtraMs = 0.0; // a probe's render on the host's clock less the engine's (the least of the probe's)
+    int timingWidth = 0; // the final round's timing frames, where it has them (0: none); their height is the image's
+    int timingSpp = 0;
     double budgetSeconds = 0.0;
     double pilotMs = 0.0; // the probe's and every candidate's render time, on the engine's clock
     double pilotWallSeconds = 0.0; // the whole pilot on the host's clock (GPU pipelines compiled included)
     double prepareSeconds = 0.0; // of which: every candidate prepared (a GPU's pipelines compiled), on the host's clock
+    /// Of the search, on the host's clock: its renders (Compare/Measurement.h's measure calls), of which their
+    /// tracing (the rest: each frame's set-up and read-back; the rest of the search is the pilot's own arithmetic).
+    double renderHostSeconds = 0.0;
+    double tracingHostSeconds = 0.0;
     std::vector<PilotRow> rows; // in the order measured
     bool cancelled = false; // Ctrl-C stopped the pilot
     /// The search stopped when the pilot's wall time passed the budget, before every candidate was measured.

@@ -25,14 +25,14 @@ BatchHookScope::~BatchHookScope()
 }
 
 Measurement measure(RenderEngine& engine, const RenderRequest& request, const Image* reference,
-                    std::chrono::nanoseconds timeLimit)
+                    std::chrono::nanoseconds timeLimit, bool oneBatch)
 {
     RenderControl control;
     control.setTimeLimit(timeLimit);
     if (InterruptScope::interrupted())
         return {.cancelled = true};
     InterruptScope::route(&control);
-    FramePart frame;
+    FramePart frame{.oneBatch = oneBatch};
     bool stopped = false; // by the hook
     if (g_keepGoing)
         frame.beforeBatch = [&] {

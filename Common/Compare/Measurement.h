@@ -41,9 +41,11 @@ struct Measurement
 /// Renders `request` with `engine`, cancellable by Ctrl-C while an InterruptScope (Cli/Interrupt.h) lives;
 /// compares with `reference` unless null. A `timeLimit` > 0 cancels the render once it has run that long (checked
 /// between the engine's camera samples on the CPU, between batches on the GPU): then cancelled and timedOut.
-/// Warns about NaN and Inf samples (they are left out of the image, and out of the error).
+/// Warns about NaN and Inf samples (they are left out of the image, and out of the error). `oneBatch`: the render in
+/// one batch where the engine's paths per batch allow (FramePart::oneBatch; the GPU then checks the limit only after
+/// it).
 Measurement measure(RenderEngine& engine, const RenderRequest& request, const Image* reference,
-                    std::chrono::nanoseconds timeLimit = {});
+                    std::chrono::nanoseconds timeLimit = {}, bool oneBatch = false);
 
 /// While one lives, every measure() calls `keepGoing` before each batch of its render and cancels the render
 /// (cancelled, not timedOut) when it returns false: a rank of a distributed comparison serving the job's messages

@@ -58,7 +58,8 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
             if (control.cancelRequested())
                 break;
         }
-        const std::uint32_t samples = plan.next(samplesDone);
+        const std::uint32_t samples =
+            part.oneBatch ? std::min(totalSamples - samplesDone, plan.maxSamples()) : plan.next(samplesDone);
         RT_DCHECK_GT(samples, 0u);
         const Clock::time_point batchStart = Clock::now();
         const BatchResult traced = engine.traceSamples(part.firstSample + samplesDone, samples, control);

@@ -29,12 +29,16 @@ using PreviewCallback = std::function<void(const Image& estimate, int samplesSoF
 /// The part of the frame one render call traces: camera samples firstSample .. firstSample + samples - 1 of every
 /// pixel (an MPI rank's share: Cluster/SplitRender.h; by default all of them). Progress counts the whole frame's
 /// camera paths, of which this call advances its own. `beforeBatch`, when given, runs on the rendering thread
-/// before each batch (a rank's messages: it may cancel through the control).
+/// before each batch (a rank's messages: it may cancel through the control). `oneBatch` traces the part in as few
+/// batches as the engine's paths per batch allow instead of a first batch of one sample sized by its time: for
+/// renders known to take milliseconds (--strategy auto's pilot), whose second batch would cost a second launch
+/// chain (the GPU's wavefront: about 1 ms of an H200's clock each) and a second tail.
 struct FramePart
 {
     std::uint32_t firstSample = 0;
     std::optional<std::uint32_t> samples; // empty: the frame's trueSpp() - firstSample
     std::function<void()> beforeBatch;
+    bool oneBatch = false;
 };
 
 /// Renders `request.settings` of the scene last given to engine.setScene, which `request.scene` names (the

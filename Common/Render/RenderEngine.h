@@ -56,12 +56,20 @@ public:
     /// The camera of the frames that follow: `camera`, or the scene's when empty. The render driver sets it from
     /// RenderRequest::camera before every beginFrame.
     void setCamera(std::optional<CameraDesc> camera) { m_camera = std::move(camera); }
+    /// The frames that follow stand for a render of `paths` camera paths (width x height x spp; 0: each frame for
+    /// itself): an engine that picks a variant by a render's size (the GPU's integrator: the wavefront from 2^20
+    /// NEE paths) picks the render's, so that --strategy auto's small frames time what the render will run. (A
+    /// pilot's frames ran the megakernel under a render on the wavefront: on an H200's cornell-box-lights the
+    /// megakernel's projected sampling with the BVH took 2.3x the time of solid-angle sampling with uniform
+    /// selection, the wavefront's 1.23x, the render's 1.27x; docs/notebook/PERFORMANCE.md §36.)
+    void setRepresentedPaths(std::uint64_t paths) { m_representedPaths = paths; }
 
     /// Camera paths one batch of traceSamples should hold: enough that the per-batch cost vanishes, few
     /// enough that a batch ends well within a second (cancel, progress, no GPU watchdog).
     virtual std::uint64_t pathsPerBatch() const = 0;
     /// Camera paths the engine traces at once: a frame of fewer pixels leaves part of the device idle, and its
-    /// time per path says little about a larger frame's (--strategy auto's pilot keeps at least this many pixels).
+    /// time per path says little about a larger frame's (--strategy auto's pilot keeps at least this many pixels, and
+    /// times its final round on frames of up to 16x this many paths where its measurements hold fewer).
     virtual std::uint64_t concurrentPaths() const { return 1024; }
 
     /// Starts a frame of `settings` (validated by the caller) on the current scene: an accumulator of the
@@ -109,8 +117,14 @@ public:
 protected:
     /// What beginFrame renders from: setCamera's camera, else `scene`'s.
     const CameraDesc& frameCamera(const Scene& scene) const { return m_camera ? *m_camera : scene.camera; }
+    /// The paths the frame of `framePaths` stands for (setRepresentedPaths).
+    std::uint64_t representedPaths(std::uint64_t framePaths) const
+    {
+        return m_representedPaths > 0 ? m_representedPaths : framePaths;
+    }
 
 private:
     std::optional<CameraDesc> m_camera;
+    std::uint64_t m_representedPaths = 0;
 };
 } // namespace rt

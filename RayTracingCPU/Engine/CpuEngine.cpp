@@ -18,6 +18,7 @@
 #include <spdlog/spdlog.h>
 
 #include "Error.h"
+#include "Geometry/Lanes.h"
 #include "Render/RenderUniforms.h"
 
 namespace rt::cpu
@@ -60,6 +61,11 @@ std::string CpuEngine::deviceName() const
 {
     const unsigned threads = m_kind == EngineKind::Single ? 1u : usableThreads();
     return fmt::format("{} ({} thread{})", cpuModel(), threads, threads == 1 ? "" : "s");
+}
+
+std::uint64_t CpuEngine::concurrentPaths() const
+{
+    return std::uint64_t(m_kind == EngineKind::Single ? 1u : usableThreads()) * std::uint64_t(kLanes);
 }
 
 double CpuEngine::setScene(const Scene& scene)

@@ -37,6 +37,8 @@ public:
     double buildSeconds() const override { return m_buildSeconds; }
 
     std::uint64_t pathsPerBatch() const override { return kPathsPerBatch; }
+    /// A path per lane of every thread.
+    std::uint64_t concurrentPaths() const override;
     void beginFrame(const RenderSettings& settings) override;
     /// Polls cancellation before each camera sample and advances `control` after each row; a cancelled batch
     /// puts back the rows it had started.

@@ -459,7 +459,8 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     // is a megakernel's.
     e.integrator = restirDi || e.cost
                        ? GpuIntegrator::Megakernel
-                       : e.tracer.integratorFor(e.uniforms, std::uint64_t(width) * height * settings.trueSpp());
+                       : e.tracer.integratorFor(e.uniforms,
+                                                representedPaths(std::uint64_t(width) * height * settings.trueSpp()));
     // Out of the render's time.
     const bool compiled = e.cost ? e.cost->pipeline().prepare(e.uniforms, e.tracer.gpuScene().pipelineScene())
                                  : e.tracer.prepare(e.uniforms, e.integrator);

@@ -10,6 +10,8 @@
 #                                      REF_SPP 8192) or multi (the host's every core; WIDTH 128, MS 1000)
 #   tests/Bench/device_run.sh equal-error  issue 42: cornell-box-lights' time to the thesis' mixture-1000 error
 #                                      (equal_error.sh; its STRATEGIES, SPP_LIST, SEEDS, ROUNDS, REF_SPP)
+#   tests/Bench/device_run.sh pilot        --strategy auto's headless pilot on SCENES at SPPS, 600 px: its table
+#   tests/Bench/device_run.sh pilot-sizes  the GPU's time by image size, spp and integrator (pilot_sizes.sh)
 #   tests/Bench/device_run.sh auto     --strategy auto against a full --compare at equal time (auto_strategy.sh)
 #   tests/Bench/device_run.sh heavy    the heavy part: CPU/GPU agreement of every scene at 128 px, 64 spp (FILTER:
 #                                      a gtest filter within it)
@@ -204,6 +206,21 @@ roulette)
             "${SEEDS:-3}" "${REF_SPP:-8192}" "$scene"
         (cd "/tmp/roulette-$engine" && tar -czf "$out/roulette-$engine.tar.gz" ./*)
     done
+    ;;
+pilot)
+    # Issue 37: --strategy auto's headless pilot (its table, time model and frames) on SCENES at 600 px, at each
+    # of SPPS (the first render of the lease compiles the candidates' pipelines).
+    for scene in ${SCENES:-cornell-box-lights}; do
+        for spp in ${SPPS:-1460}; do
+            "$bin/ray-tracing-gpu" --headless --strategy auto --strategy-cache off --scene "$scene" --width 600 \
+                --spp "$spp" --stats "$out/pilot-$scene-$spp.json" 2>&1 | grep -v "^\[" | tail -20
+            python3 -c "import json,sys; c=json.load(open(sys.argv[1]))['strategy_choice']; print({k: c[k] for k in ('render_cost', 'half_overhead_ms', 'pilot_frame_configuration', 'pilot_width', 'pilot_spp', 'budget_seconds', 'pilot_ms', 'too_short')})" "$out/pilot-$scene-$spp.json"
+        done
+    done
+    ;;
+pilot-sizes)
+    # Issue 37's GPU pilot: render time on the GPU's clock by image size, spp and integrator (pilot_sizes.sh; SCENE).
+    bash tests/Bench/pilot_sizes.sh "$bin" "$out" "${SCENE:-cornell-box-lights}"
     ;;
 auto)
     # Issue 37's --strategy auto: a headless pilot on cornell-box-lights at 600 px, 1024 spp, twice (the driver's

@@ -818,23 +818,34 @@ def section_light_samplers():
     return out
 
 
-AUTO = {"date": "2026-11-28", "notebook": "## 35.",
-        "runs": [("cpu-auto-strategy-1128c", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
-                  "128 px wide, each strategy for 1 s, 12 recheck seeds, rows taking turns seed by seed",
-                  "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-1128c multi 128 1000 2 8192 \\\n"
-                  "    sphere-light-closeup rect-light-closeup rtrol-cornell-box veach-mis cornell-box-lights \\\n"
-                  "    triangle-lights many-lights glossy-cornell"),
+AUTO = {"date": "2026-11-28", "notebook": "## 36.",
+        "runs": [("cpu-auto-strategy-1128d", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                  "128 px wide, each strategy for 1 s, 12 recheck seeds, rows taking turns seed by seed; the pilot's "
+                  "frames in one batch, their time their paths' (notebook §36)",
+                  "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-1128d multi 128 1000 2 8192 \\\n"
+                  "    cornell-box-lights glossy-cornell many-lights rect-light-closeup rtrol-cornell-box \\\n"
+                  "    sphere-light-closeup triangle-lights veach-mis"),
                  ("cpu-auto-strategy-4s", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
                   "128 px wide, each strategy for 4 s (a pilot of 0.2 s), 12 recheck seeds: the scenes a 1 s render "
                   "left below, with the build before the own's median measurement (notebook §35)",
                   "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-4s multi 128 4000 2 16384 \\\n"
-                  "    cornell-box-lights triangle-lights glossy-cornell veach-mis rect-light-closeup"),
+                  "    cornell-box-lights triangle-lights glossy-cornell veach-mis rect-light-closeup", "## 35."),
+                 ("h200-auto-strategy-10s", "NVIDIA H200, driver 580",
+                  "600 px wide, each strategy for 10 s, 1 seed for the full comparison, 4 recheck seeds; the pilot's "
+                  "frames on the render's integrator, in one batch, their time their paths' (notebook §36; before the "
+                  "final round's timing frames). At 1 s (a 50 ms budget) its plan leaves a half less than the wavefront's "
+                  "fixed cost beside the host's time per render, so the GPU's pilot keeps the own (by the plan; the "
+                  "1 s rows were not measured again)",
+                  "bash tests/Bench/device_carry.sh  # then on the device, one scene a run:\n"
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=10000 SEEDS=1 REF_SPP=65536 SCENES=cornell-box-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto  # and SCENES=glossy-cornell"),
                  ("h200-auto-strategy-1128-c", "NVIDIA H200, driver 580",
-                  "600 px wide, each strategy for 1 s, 8 recheck seeds; this build on three scenes (the device's "
-                  "time ran out; the other scenes in docs/results/h200-auto-strategy, an older build)",
+                  "600 px wide, each strategy for 1 s, 8 recheck seeds; the build of notebook §35, whose pilot ran the "
+                  "megakernel under a render on the wavefront (the other scenes in docs/results/h200-auto-strategy, an "
+                  "older build)",
                   "bash tests/Bench/device_carry.sh  # then on the device:\n"
                   "RECHECK_SEEDS=8 HEADLESS_RUNS= MS=1000 SEEDS=2 REF_SPP=65536 \\\n"
-                  "    SCENES=\"cornell-box-lights veach-mis glossy-cornell\" bash tests/Bench/device_run.sh auto"),
+                  "    SCENES=\"cornell-box-lights veach-mis glossy-cornell\" bash tests/Bench/device_run.sh auto", "## 35."),
                  ("h200-auto-strategy", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 1 s, 8 recheck seeds; an older build (notebook §34: before the "
                   "too-short rule, the host-clock guard's fix, the rows taking turns and the pilot's time model), the "
