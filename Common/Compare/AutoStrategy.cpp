@@ -158,11 +158,24 @@ std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& measured, co
     auto relative = [&](std::size_t i, const std::vector<double>& total, double weight, const std::vector<double>& w) {
         // Four partial sums: one chain of dependent additions over every value was most of the time.
         double sum[4] = {}, squares[4] = {};
-        const double othersWeight = n == 1 ? 0.0 : 1.0 / (weight - w[i]);
+        // Where the candidate's weight is all but the whole (its relMSE orders of magnitude below the others'), the
+        // difference would cancel: the others' sum directly.
+        const bool direct = n > 1 && weight - w[i] <= 1e-9 * weight;
+        const double othersWeight = n == 1 || direct ? 0.0 : 1.0 / (weight - w[i]);
+        auto othersDirect = [&](std::size_t k) {
+            double sumOthers = 0.0, weightOthers = 0.0;
+            for (std::size_t j = 0; j < n; ++j)
+                if (j != i)
+                {
+                    sumOthers += w[j] * x(j, k);
+                    weightOthers += w[j];
+                }
+            return sumOthers / weightOthers;
+        };
         for (std::size_t k = 0; k < values; ++k)
         {
             const double own = x(i, k);
-            const double others = n == 1 ? own : (total[k] - w[i] * own) * othersWeight;
+            const double others = n == 1 ? own : direct ? othersDirect(k) : (total[k] - w[i] * own) * othersWeight;
             const double t = v(i, k) / (others * others + kRelMseEpsilon);
             sum[k % 4] += t;
             squares[k % 4] += t * t;
@@ -219,7 +232,9 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         return choice;
 
     // Every frame of the pilot, the probe's too, runs what the render will run (RenderEngine::setRepresentedPaths):
-    // the GPU's integrator for the render's paths, not the pilot's.
+    // the GPU's integrator for the render's paths, not the pilot's. (--compare's equal-time auto row passes its base
+    // request, whose spp is not the one its time will give: in every GPU comparison of docs/RESULTS.md both are far
+    // above the wavefront's 2^20 paths.)
     struct Represented
     {
         RenderEngine& engine;
@@ -333,11 +348,16 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     if (pixelsOf(timing) * timing.spp > 2.0 * pixelsOf(pilot) * pilot.spp)
     {
         const double timingMs = double(2 * kFinalMeasurements) * cost.ms(pixelsOf(timing), timing.spp);
-        choice.timingWidth = timing.width;
-        choice.timingSpp = timing.spp;
-        pilot = planHalves(choice.budgetSeconds * 1e3 - timingMs,
-                           2.0 * choice.budgetSeconds * 1e3 -
-                               (timingMs + double(2 * kFinalMeasurements) * choice.hostExtraMs));
+        const RenderSettings timedPilot =
+            planHalves(choice.budgetSeconds * 1e3 - timingMs,
+                       2.0 * choice.budgetSeconds * 1e3 - (timingMs + double(2 * kFinalMeasurements) * choice.hostExtraMs));
+        // Not where the budget left to the halves would then measure nothing (kMinimumPilotPaths below).
+        if (pixelsOf(timedPilot) * double(timedPilot.spp) >= kMinimumPilotPaths)
+        {
+            pilot = timedPilot;
+            choice.timingWidth = timing.width;
+            choice.timingSpp = timing.spp;
+        }
     }
     choice.width = pilot.width;
     choice.height = pilot.height();
@@ -374,7 +394,8 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     const auto searchStart = std::chrono::steady_clock::now();
     choice.prepareSeconds = std::chrono::duration<double>(searchStart - prepareStart).count();
 
-    // A half of another strategy than the scene's that runs past 4x its share is stopped: the candidate is too
+    // A half of another strategy than the scene's that runs past 4x its planned time is stopped (or, where the engine
+    // cannot stop it, not measured further): the candidate is too
     // slow to win (it would need 4x less error per path than the probe's strategy), and the budget holds (book 3's
     // mixture over 1000 lights took 15x its share on many-lights).
     const double shareMs = cost.ms(pixelsOf(pilot), pilot.spp); // a half's, as planned
@@ -448,8 +469,8 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         const auto renderStart = std::chrono::steady_clock::now();
         Measurement a = measure(engine, half, nullptr, limit, true);
         ++half.settings.seed;
-        Measurement b = a.cancelled ? Measurement{.cancelled = a.cancelled, .timedOut = a.timedOut}
-                                    : measure(engine, half, nullptr, limit, true);
+        Measurement b = a.cancelled || a.timedOut ? Measurement{.cancelled = a.cancelled, .timedOut = a.timedOut}
+                                                  : measure(engine, half, nullptr, limit, true);
         choice.renderHostSeconds +=
             std::chrono::duration<double>(std::chrono::steady_clock::now() - renderStart).count();
         choice.tracingHostSeconds += (a.wallMs + b.wallMs) * 1e-3;
@@ -459,7 +480,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         if (b.timedOut)
         {
             c.row.tooSlow = true;
-            c.row.ms += a.timedOut ? a.wallMs : a.ms() + b.wallMs;
+            c.row.ms += a.timedOut ? a.wallMs : a.ms() + b.wallMs; // what it ran, not a measurement
             return true;
         }
         if (measured == 1 && budget.renderSeconds <= 0.0)

@@ -50,6 +50,8 @@ Measurement measure(RenderEngine& engine, const RenderRequest& request, const Im
     m.wallMs = r.stats.renderSeconds * 1e3;
     if (m.cancelled)
         return m;
+    // A render the limit could not stop (one batch on the GPU) that ran past it is reported too, image and all.
+    m.timedOut = timeLimit.count() > 0 && control.timeLimitPassed();
     if (r.stats.nanSamples + r.stats.infSamples > 0)
         spdlog::warn("{} engine: {} NaN and {} Inf samples", toString(engine.kind()), r.stats.nanSamples,
                      r.stats.infSamples);

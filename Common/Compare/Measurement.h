@@ -30,7 +30,9 @@ struct Measurement
     double mpathsPerSecond = 0.0;
     RayRates mraysPerSecond;
     bool cancelled = false;
-    bool timedOut = false; // cancelled by measure's time limit, not by Ctrl-C
+    /// Past measure's time limit: cancelled by it (not by Ctrl-C), or finished past it where the engine could not
+    /// stop it (a GPU's one batch: cancelled stays false and the image is whole).
+    bool timedOut = false;
     ErrorMetrics error; // against the reference, when one was given
     Image image;
 
@@ -42,8 +44,8 @@ struct Measurement
 /// compares with `reference` unless null. A `timeLimit` > 0 cancels the render once it has run that long (checked
 /// between the engine's camera samples on the CPU, between batches on the GPU): then cancelled and timedOut.
 /// Warns about NaN and Inf samples (they are left out of the image, and out of the error). `oneBatch`: the render in
-/// one batch where the engine's paths per batch allow (FramePart::oneBatch; the GPU then checks the limit only after
-/// it).
+/// as few batches as the engine's paths per batch allow (FramePart::oneBatch; a GPU cannot stop a batch, so its
+/// render may finish past the limit: then timedOut, not cancelled).
 Measurement measure(RenderEngine& engine, const RenderRequest& request, const Image* reference,
                     std::chrono::nanoseconds timeLimit = {}, bool oneBatch = false);
 

@@ -59,7 +59,8 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
                 break;
         }
         const std::uint32_t samples =
-            part.oneBatch ? std::min(totalSamples - samplesDone, plan.maxSamples()) : plan.next(samplesDone);
+            part.oneBatch ? static_cast<std::uint32_t>(evenPart(totalSamples - samplesDone, plan.maxSamples()))
+                          : plan.next(samplesDone);
         RT_DCHECK_GT(samples, 0u);
         const Clock::time_point batchStart = Clock::now();
         const BatchResult traced = engine.traceSamples(part.firstSample + samplesDone, samples, control);

@@ -825,11 +825,11 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-1128d multi 128 1000 2 8192 \\\n"
                   "    cornell-box-lights glossy-cornell many-lights rect-light-closeup rtrol-cornell-box \\\n"
                   "    sphere-light-closeup triangle-lights veach-mis"),
-                 ("cpu-auto-strategy-4s", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                 ("cpu-auto-strategy-4s-1128d", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
                   "128 px wide, each strategy for 4 s (a pilot of 0.2 s), 12 recheck seeds: the scenes a 1 s render "
-                  "left below, with the build before the own's median measurement (notebook §35)",
-                  "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-4s multi 128 4000 2 16384 \\\n"
-                  "    cornell-box-lights triangle-lights glossy-cornell veach-mis rect-light-closeup", "## 35."),
+                  "left below, this build (notebook §36)",
+                  "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-4s-1128d multi 128 4000 2 16384 \\\n"
+                  "    cornell-box-lights triangle-lights glossy-cornell veach-mis rect-light-closeup"),
                  ("h200-auto-strategy-10s", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 10 s, 1 seed for the full comparison, 4 recheck seeds; the pilot's "
                   "frames on the render's integrator, in one batch, their time their paths' (notebook §36; before the "
