@@ -9,26 +9,17 @@
 #include "Compare/Measurement.h"
 #include "Render/RenderEngine.h"
 #include "Scenes/Catalogue.h"
+#include "Support/SceneHoldingEngine.h"
 
 namespace rt::compare
 {
 namespace
 {
 /// Every batch takes `batch` on the host's clock and ignores cancellation; each pixel's sample is 1.
-class UnstoppableEngine final : public RenderEngine
+class UnstoppableEngine final : public SceneHoldingEngine
 {
 public:
-    explicit UnstoppableEngine(std::chrono::milliseconds batch) : m_batch(batch) {}
-    EngineKind kind() const override { return EngineKind::Single; }
-    std::string deviceName() const override { return "unstoppable"; }
-    double setScene(const Scene& scene) override
-    {
-        m_scene = &scene;
-        return 0.0;
-    }
-    const Scene* scene() const override { return m_scene; }
-    double buildSeconds() const override { return 0.0; }
-    std::uint64_t pathsPerBatch() const override { return std::uint64_t(1) << 40; }
+    explicit UnstoppableEngine(std::chrono::milliseconds batch) : SceneHoldingEngine("unstoppable"), m_batch(batch) {}
     void beginFrame(const RenderSettings& settings) override
     {
         m_settings = settings;
@@ -50,26 +41,31 @@ public:
         return image;
     }
     std::vector<double> radianceSums() override { return {}; }
-    SampleTally tally() const override { return {}; }
 
     int batches = 0;
 
 private:
     std::chrono::milliseconds m_batch;
-    const Scene* m_scene = nullptr;
     RenderSettings m_settings;
     std::uint32_t m_samples = 0;
 };
+
+/// An 8-pixel-wide render of `scene` at `spp`.
+RenderRequest smallRequest(const Scene& scene, int spp)
+{
+    RenderRequest request;
+    request.scene.id = scene.id;
+    request.settings.width = 8;
+    request.settings.spp = spp;
+    return request;
+}
 
 TEST(MeasureTimeLimit, ARenderInOneBatchPastItsLimitIsTimedOutWithItsImage)
 {
     const Scene scene = makeScene("cornell-box-lights");
     UnstoppableEngine engine(std::chrono::milliseconds(40));
     engine.setScene(scene);
-    RenderRequest request;
-    request.scene.id = scene.id;
-    request.settings.width = 8;
-    request.settings.spp = 16;
+    const RenderRequest request = smallRequest(scene, 16);
     const Measurement m = measure(engine, request, nullptr, std::chrono::milliseconds(5), true);
     EXPECT_EQ(engine.batches, 1);
     EXPECT_FALSE(m.cancelled);
@@ -83,10 +79,7 @@ TEST(MeasureTimeLimit, WithinItsLimitOrWithoutOneARenderIsNotTimedOut)
     const Scene scene = makeScene("cornell-box-lights");
     UnstoppableEngine engine(std::chrono::milliseconds(1));
     engine.setScene(scene);
-    RenderRequest request;
-    request.scene.id = scene.id;
-    request.settings.width = 8;
-    request.settings.spp = 4;
+    const RenderRequest request = smallRequest(scene, 4);
     EXPECT_FALSE(measure(engine, request, nullptr, std::chrono::seconds(5), true).timedOut);
     EXPECT_FALSE(measure(engine, request, nullptr, {}, true).timedOut);
     EXPECT_EQ(engine.batches, 2) << "each render one batch";

@@ -22,6 +22,7 @@
 #include "Error.h"
 #include "Render/RenderEngine.h"
 #include "Scenes/Catalogue.h"
+#include "Support/SceneHoldingEngine.h"
 
 namespace rt::compare
 {
@@ -35,7 +36,7 @@ struct Fireflies
     double value = 0.0;
 };
 
-class NoiseEngine final : public RenderEngine
+class NoiseEngine final : public SceneHoldingEngine
 {
 public:
     void setFireflies(Fireflies fireflies) { m_fireflies = std::move(fireflies); }
@@ -56,21 +57,12 @@ public:
     const std::vector<Frame>& frames() const { return m_frames; }
     NoiseEngine(std::function<double(const RenderSettings&)> sigma, std::uint64_t concurrentPaths,
                 double secondsPerPath, double fixedSeconds = 0.0, double secondsPerPixel = 0.0)
-        : m_sigma(std::move(sigma)), m_concurrentPaths(concurrentPaths), m_secondsPerPath(secondsPerPath),
+        : SceneHoldingEngine("noise"), m_sigma(std::move(sigma)), m_concurrentPaths(concurrentPaths),
+          m_secondsPerPath(secondsPerPath),
           m_fixedSeconds(fixedSeconds), m_secondsPerPixel(secondsPerPixel)
     {
     }
     std::uint64_t concurrentPaths() const override { return m_concurrentPaths; }
-    EngineKind kind() const override { return EngineKind::Single; }
-    std::string deviceName() const override { return "noise"; }
-    double setScene(const Scene& scene) override
-    {
-        m_scene = &scene;
-        return 0.0;
-    }
-    const Scene* scene() const override { return m_scene; }
-    double buildSeconds() const override { return 0.0; }
-    std::uint64_t pathsPerBatch() const override { return std::uint64_t(1) << 40; }
     void beginFrame(const RenderSettings& settings) override
     {
         m_settings = settings;
@@ -108,7 +100,6 @@ public:
         return image;
     }
     std::vector<double> radianceSums() override { return m_sums; }
-    SampleTally tally() const override { return {}; }
 
 private:
     static double radiance(std::size_t k) { return 0.2 + 0.1 * double(k % 7); }
@@ -118,7 +109,6 @@ private:
     double m_secondsPerPath; // the fake device's time per camera path
     double m_fixedSeconds; // and per render
     double m_secondsPerPixel; // and per pixel of a render
-    const Scene* m_scene = nullptr;
     RenderSettings m_settings;
     std::vector<double> m_sums;
     Fireflies m_fireflies;
@@ -185,16 +175,17 @@ int pilotsChoosing(const std::function<double(const RenderSettings&)>& sigma, in
     return count;
 }
 
-/// sigma of every candidate 1, but solid-angle sampling with power selection's: 1 / sqrt(gain), `gain` times as
-/// efficient.
-std::function<double(const RenderSettings&)> oneBetterBy(double gain)
+/// `value` for solid-angle sampling with power selection (theBetterOne), 1 for every other candidate.
+std::function<double(const RenderSettings&)> forTheBetterOne(double value)
 {
-    return [gain](const RenderSettings& s) {
-        return s.lightSampler == LightSampler::SolidAngle && s.lightSelection == LightSelection::Power
-                   ? 1.0 / std::sqrt(gain)
-                   : 1.0;
+    return [value](const RenderSettings& s) {
+        return s.lightSampler == LightSampler::SolidAngle && s.lightSelection == LightSelection::Power ? value : 1.0;
     };
 }
+
+/// sigma of every candidate 1, but solid-angle sampling with power selection's: 1 / sqrt(gain), `gain` times as
+/// efficient.
+std::function<double(const RenderSettings&)> oneBetterBy(double gain) { return forTheBetterOne(1.0 / std::sqrt(gain)); }
 
 Strategy theBetterOne()
 {
@@ -368,9 +359,7 @@ TEST(PilotDecision, ACandidateFasterPerPathWinsWhereEachRendersFixedCostHidesIt)
     // times are the paths', and the search takes it (here through its timing frames, whose time is the paths' too).
     const Scene scene = makeScene("cornell-box-lights");
     NoiseEngine engine([](const RenderSettings&) { return 1.0; }, kGpuLike.concurrentPaths, 1e-7, 20e-3, 1e-7);
-    engine.setPathCost([](const RenderSettings& s) {
-        return s.lightSampler == LightSampler::SolidAngle && s.lightSelection == LightSelection::Power ? 1.0 / 1.6 : 1.0;
-    });
+    engine.setPathCost(forTheBetterOne(1.0 / 1.6));
     engine.setScene(scene);
     RenderRequest request = pilotRequest(scene);
     int taken = 0;
@@ -402,12 +391,7 @@ TEST(PilotDecision, TimingFramesShowTheCostASmallFrameHides)
     // of 82,000 paths, sees 1.08x: no pilot took it.)
     const Scene scene = makeScene("cornell-box-lights");
     NoiseEngine engine([](const RenderSettings&) { return 1.0; }, std::uint64_t(1) << 14, 4e-7);
-    engine.setPathCost(
-        [](const RenderSettings& s) {
-            return s.lightSampler == LightSampler::SolidAngle && s.lightSelection == LightSelection::Power ? 1.0 / 1.6
-                                                                                                           : 1.0;
-        },
-        24.0 * double(std::uint64_t(1) << 14));
+    engine.setPathCost(forTheBetterOne(1.0 / 1.6), 24.0 * double(std::uint64_t(1) << 14));
     engine.setScene(scene);
     RenderRequest request = pilotRequest(scene);
     int taken = 0;
