@@ -27,6 +27,7 @@ struct SphericalRectangle
     float z0;
     float b0; // z component of the normal of the plane through o and the edge y = y0 (the paper's n0.z)
     float b1; // ... through o and the edge y = y1 (n2.z)
+    float c0; // 1 - b0^2 = z0^2 / (z0^2 + y0^2), without the subtraction's cancellation
     float k; // 2 pi - g2 - g3: the angle where the first coordinate's inversion starts
     float solidAngle; // S, steradians
 };
@@ -56,7 +57,8 @@ RT_FN SphericalRectangle makeSphericalRectangleInFrame(vec3 o, vec3 s, vec3 x, v
     r.y1 = r.y0 + eyLength;
     const float z2 = r.z0 * r.z0;
     // z components of the unit normals n0 = (0, z0, -y0), n1 = (-z0, 0, x1), n2 = (0, -z0, y1), n3 = (z0, 0, -x0).
-    const float n0z = -r.y0 / sqrt(z2 + r.y0 * r.y0);
+    const float y02 = z2 + r.y0 * r.y0;
+    const float n0z = -r.y0 / sqrt(y02);
     const float n1z = r.x1 / sqrt(z2 + r.x1 * r.x1);
     const float n2z = r.y1 / sqrt(z2 + r.y1 * r.y1);
     const float n3z = -r.x0 / sqrt(z2 + r.x0 * r.x0);
@@ -66,6 +68,7 @@ RT_FN SphericalRectangle makeSphericalRectangleInFrame(vec3 o, vec3 s, vec3 x, v
     const float g3 = preciseAcos(clamp(-n3z * n0z, -1.0f, 1.0f));
     r.b0 = n0z;
     r.b1 = n2z;
+    r.c0 = z2 / y02;
     r.k = 2.0f * kPi - g2 - g3;
     r.solidAngle = g0 + g1 + g2 + g3 - 2.0f * kPi;
     return r;
@@ -90,14 +93,20 @@ RT_FN vec3 sampleSphericalRectangle(RT_IN(SphericalRectangle) r, vec2 u)
 {
     const float au = u.x * r.solidAngle + r.k;
     const float sinAu = sin(au);
-    const float fu = (cos(au) * r.b0 - r.b1) / sinAu;
-    // cu = cos of the angle of the cut plane; +-0 when sin(au) = 0 (fu infinite), never NaN.
-    const float cu = abs(sinAu) > 0.0f ? clamp(signNotZero(fu) / sqrt(fu * fu + r.b0 * r.b0), -0.9999999f, 0.9999999f)
-                                       : 0.0f;
-    const float xu = clamp(-cu * r.z0 / max(sqrt(1.0f - cu * cu), 1e-7f), r.x0, r.x1);
-    const float d = sqrt(xu * xu + r.z0 * r.z0);
-    const float h0 = r.y0 / sqrt(d * d + r.y0 * r.y0);
-    const float h1 = r.y1 / sqrt(d * d + r.y1 * r.y1);
+    // The paper's fu = (cos(au) b0 - b1) / sin(au), cu = sign(fu) / sqrt(fu^2 + b0^2) and xu = -cu z0 / sqrt(1 -
+    // cu^2), multiplied through by sin(au) with 1 - b0^2 = c0: xu = -sign(a) sin(au) z0 / sqrt(a^2 - c0 sin(au)^2)
+    // for a = fu sin(au). One square root and one division where the paper's form chains three divisions and two
+    // roots, each waiting on the last (docs/notebook/PERFORMANCE.md §37), and none by sin(au), which may be 0.
+    // q <= 0 where the cut plane is the rectangle's own (|cu| = 1): xu is then infinite, toward sign(a sin(au)).
+    const float a = cos(au) * r.b0 - r.b1;
+    const float q = a * a - r.c0 * sinAu * sinAu;
+    const float xu = q > 0.0f ? clamp(-signNotZero(a) * sinAu * r.z0 / sqrt(q), r.x0, r.x1)
+                              : (a * sinAu > 0.0f ? r.x1 : r.x0);
+    // d^2 from xu, not from d: the two heights need not wait for d's square root.
+    const float d2 = xu * xu + r.z0 * r.z0;
+    const float d = sqrt(d2);
+    const float h0 = r.y0 / sqrt(d2 + r.y0 * r.y0);
+    const float h1 = r.y1 / sqrt(d2 + r.y1 * r.y1);
     const float hv = h0 + u.y * (h1 - h0);
     const float hv2 = hv * hv;
     const float yv = hv2 < 1.0f - 1e-6f ? clamp(hv * d / sqrt(1.0f - hv2), r.y0, r.y1) : r.y1;
@@ -109,15 +118,18 @@ RT_FN vec3 sampleSphericalRectangle(RT_IN(SphericalRectangle) r, vec2 u)
 /// coordinate was drawn), v where h(py) lies between h(y0) and h(y1) on the line x = px.
 RT_FN vec2 invertSphericalRectangle(RT_IN(SphericalRectangle) r, float px, float py)
 {
-    const vec3 corner = r.o + r.x0 * r.x + r.y0 * r.y + r.z0 * r.z;
     float u = 0.0f;
+    const float z2 = r.z0 * r.z0;
     if (px > r.x0)
     {
-        const SphericalRectangle part =
-            makeSphericalRectangle(r.o, corner, (px - r.x0) * r.x, (r.y1 - r.y0) * r.y);
-        u = clamp(part.solidAngle / r.solidAngle, 0.0f, 1.0f);
+        // The part [x0, px] x [y0, y1] shares three of the rectangle's four planes through o: only n1's changes,
+        // so its solid angle g0' + g1' + g2 + g3 - 2 pi is g0' + g1' - k (two angles, not a second setup).
+        const float n1z = px / sqrt(z2 + px * px);
+        const float g0 = preciseAcos(clamp(-r.b0 * n1z, -1.0f, 1.0f));
+        const float g1 = preciseAcos(clamp(-n1z * r.b1, -1.0f, 1.0f));
+        u = clamp((g0 + g1 - r.k) / r.solidAngle, 0.0f, 1.0f);
     }
-    const float d2 = px * px + r.z0 * r.z0;
+    const float d2 = px * px + z2;
     const float h0 = r.y0 / sqrt(d2 + r.y0 * r.y0);
     const float h1 = r.y1 / sqrt(d2 + r.y1 * r.y1);
     const float hv = py / sqrt(d2 + py * py);

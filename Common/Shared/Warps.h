@@ -139,12 +139,14 @@ RT_FN float sampleLinear(float u, float a, float b)
 }
 
 /// A point of [0, 1]^2 with density proportional to the bilinear interpolation of the corner weights w00 (at
-/// (0, 0)), w10, w01, w11: v from its marginal, then u given v (pbrt-v4's SampleBilinear). The weights are
-/// >= 0 and not all 0.
+/// (0, 0)), w10, w01, w11: u from its marginal, then v given u (pbrt-v4's SampleBilinear takes v first; the
+/// density is the same). The weights are >= 0 and not all 0.
 RT_FN vec2 sampleBilinear(vec2 u, float w00, float w10, float w01, float w11)
 {
-    const float v = sampleLinear(u.y, w00 + w10, w01 + w11);
-    const float x = sampleLinear(u.x, (1.0f - v) * w00 + v * w01, (1.0f - v) * w10 + v * w11);
+    // x first: the spherical samplers that warp their u by this one start from u.x (a rectangle's sin and cos of
+    // its cut, a triangle's area split), so their setup need not wait for v's square root and division.
+    const float x = sampleLinear(u.x, w00 + w01, w10 + w11);
+    const float v = sampleLinear(u.y, (1.0f - x) * w00 + x * w10, (1.0f - x) * w01 + x * w11);
     return vec2(x, v);
 }
 

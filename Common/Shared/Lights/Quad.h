@@ -46,11 +46,18 @@ RT_FN SphericalRectangle lightSphericalRectangle(RT_IN(LightData) light, vec3 p)
 /// after Hart et al. 2020, "Practical Product Sampling by Fitting and Composing Warps").
 RT_FN vec4 rectangleCosineWeights(RT_IN(SphericalRectangle) r, vec3 n)
 {
-    const vec3 zn = r.z0 * r.z;
-    const float w00 = max(dot(n, normalize(r.x0 * r.x + r.y0 * r.y + zn)), 0.01f);
-    const float w10 = max(dot(n, normalize(r.x1 * r.x + r.y0 * r.y + zn)), 0.01f);
-    const float w01 = max(dot(n, normalize(r.x0 * r.x + r.y1 * r.y + zn)), 0.01f);
-    const float w11 = max(dot(n, normalize(r.x1 * r.x + r.y1 * r.y + zn)), 0.01f);
+    // In the rectangle's frame the corner (xi, yj, z0) has n . corner = xi n.x + yj n.y + z0 n.z: three dot
+    // products for the four corners, and no vector to build or normalise per corner.
+    const float nx = dot(n, r.x);
+    const float ny = dot(n, r.y);
+    const float nz = r.z0 * dot(n, r.z);
+    const float z2 = r.z0 * r.z0;
+    const float x0n = r.x0 * nx, x1n = r.x1 * nx, y0n = r.y0 * ny, y1n = r.y1 * ny;
+    const float x02 = r.x0 * r.x0 + z2, x12 = r.x1 * r.x1 + z2, y02 = r.y0 * r.y0, y12 = r.y1 * r.y1;
+    const float w00 = max((x0n + y0n + nz) / sqrt(x02 + y02), 0.01f);
+    const float w10 = max((x1n + y0n + nz) / sqrt(x12 + y02), 0.01f);
+    const float w01 = max((x0n + y1n + nz) / sqrt(x02 + y12), 0.01f);
+    const float w11 = max((x1n + y1n + nz) / sqrt(x12 + y12), 0.01f);
     return vec4(w00, w10, w01, w11);
 }
 
