@@ -115,6 +115,27 @@ TEST(SphericalRectangle, EverySamplePdfIsOneOverTheSolidAngle)
     }
 }
 
+TEST(SphericalRectangle, InversionReturnsTheSamplesCoordinates)
+{
+    // sampleSphericalRectangle's cut (its closed form for xu, notebook §37) and invertSphericalRectangle's part
+    // (three planes shared with the rectangle) are computed independently: u -> point -> u must come back, to the
+    // float solid angle's cancellation (a few 1e-7 sr over S >= 0.01 sr), also at the ends of [0, 1].
+    const float grid[] = {0.0f, 1e-6f, 0.01f, 0.25f, 0.5f, 0.75f, 0.99f, 1.0f - 1e-6f};
+    for (const LightCase& c : rectangleCases())
+    {
+        SCOPED_TRACE(c.name);
+        const auto r = shader::lightSphericalRectangle(c.light, c.p);
+        for (const float ux : grid)
+            for (const float uy : grid)
+            {
+                const vec3 y = shader::sampleSphericalRectangle(r, vec2(ux, uy)) - r.o;
+                const vec2 back = shader::invertSphericalRectangle(r, dot(y, r.x), dot(y, r.y));
+                ASSERT_NEAR(back.x, ux, 2e-4f) << "u = (" << ux << ", " << uy << ")";
+                ASSERT_NEAR(back.y, uy, 2e-4f) << "u = (" << ux << ", " << uy << ")";
+            }
+    }
+}
+
 TEST(SphericalRectangle, SmallOrSkewedQuadsFallBackToAreaSampling)
 {
     // Below kMinSphericalRectangle, and for parallelograms, the density is area sampling's.
