@@ -844,6 +844,11 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "left below, this build (notebook §36)",
                   "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-4s-1128d multi 128 4000 2 16384 \\\n"
                   "    cornell-box-lights triangle-lights glossy-cornell veach-mis rect-light-closeup"),
+                 ("cpu-auto-strategy-4s-1129", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                  "128 px wide, each strategy for 4 s, 12 recheck seeds: cornell-box-lights again after the rectangle "
+                  "samplers' shorter chains (notebook §37), which made its own 1.17x faster on one core",
+                  "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-4s-1129 multi 128 4000 2 16384 \\\n"
+                  "    cornell-box-lights", "## 37."),
                  ("h200-auto-strategy-10s", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 10 s, 1 seed for the full comparison, 4 recheck seeds; the pilot's "
                   "frames on the render's integrator, in one batch, their time their paths' (notebook §36; before the "
