@@ -97,7 +97,8 @@ RT_FN vec3 sampleSphericalRectangle(RT_IN(SphericalRectangle) r, vec2 u)
     // cu^2), multiplied through by sin(au) with 1 - b0^2 = c0: xu = -sign(a) sin(au) z0 / sqrt(a^2 - c0 sin(au)^2)
     // for a = fu sin(au). One square root and one division where the paper's form chains three divisions and two
     // roots, each waiting on the last (docs/notebook/PERFORMANCE.md §37), and none by sin(au), which may be 0.
-    // q <= 0 where the cut plane is the rectangle's own (|cu| = 1): xu is then infinite, toward sign(a sin(au)).
+    // q = (sin(au) z0 / xu)^2 > 0 in exact arithmetic; <= 0 only by rounding, where the cut plane through o is all
+    // but parallel to the rectangle's (|cu| = 1): xu is then infinite, toward sign(a sin(au)).
     const float a = cos(au) * r.b0 - r.b1;
     const float q = a * a - r.c0 * sinAu * sinAu;
     const float xu = q > 0.0f ? clamp(-signNotZero(a) * sinAu * r.z0 / sqrt(q), r.x0, r.x1)
