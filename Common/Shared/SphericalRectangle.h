@@ -74,6 +74,16 @@ RT_FN SphericalRectangle makeSphericalRectangleInFrame(vec3 o, vec3 s, vec3 x, v
     return r;
 }
 
+/// Whether r's float setup resolves the rectangle: z0^2 at least 1e-6 of every edge coordinate's square. Nearer the
+/// rectangle's plane the planes' normals round toward the plane's own, so the angles lose their digits (u off by
+/// 1e-3 and more) and, within about 1e-4 of the plane over the rectangle, round to pi each (S = 2 pi, every sample
+/// at one edge; measured against long double, docs/notebook/PERFORMANCE.md §37). The samplers take the area there.
+RT_FN bool sphericalRectangleResolved(RT_IN(SphericalRectangle) r)
+{
+    const float e2 = max(max(r.x0 * r.x0, r.x1 * r.x1), max(r.y0 * r.y0, r.y1 * r.y1));
+    return r.z0 * r.z0 >= 1e-6f * e2;
+}
+
 /// The rectangle s + a ex + b ey (a, b in [0, 1], ex . ey = 0) as seen from o: makeSphericalRectangleInFrame
 /// with the frame of its edges.
 RT_FN SphericalRectangle makeSphericalRectangle(vec3 o, vec3 s, vec3 ex, vec3 ey)

@@ -138,11 +138,14 @@ TEST(SphericalRectangle, InversionReturnsTheSamplesCoordinates)
 
 TEST(SphericalRectangle, SmallOrSkewedQuadsFallBackToAreaSampling)
 {
-    // Below kMinSphericalRectangle, and for parallelograms, the density is area sampling's.
+    // Below kMinSphericalRectangle, for parallelograms, and from 1e-5 above a unit rectangle (nearly 2 pi sr,
+    // which float's setup cannot resolve: every sample at one edge), the density is area sampling's.
     const LightData far = test::makeQuadLight({-0.05f, -0.05f, 10.0f}, {0.1f, 0, 0}, {0, 0.1f, 0});
     const LightData skewed = test::makeQuadLight({0, 0, 1}, {1, 0, 0}, {0.5f, 1, 0});
+    const LightData grazed = test::makeQuadLight({-0.3f, -0.4f, 1e-5f}, {1, 0, 0}, {0, 1, 0});
     EXPECT_FALSE(shader::isRectangle(skewed));
-    for (const LightData& l : {far, skewed})
+    EXPECT_GT(shader::lightSphericalRectangle(grazed, vec3(0.0f)).solidAngle, 6.0f);
+    for (const LightData& l : {far, skewed, grazed})
     {
         Rng rng(pcgHash(700));
         for (int i = 0; i < 1000; ++i)
@@ -155,6 +158,12 @@ TEST(SphericalRectangle, SmallOrSkewedQuadsFallBackToAreaSampling)
             EXPECT_EQ(a.point, b.point);
         }
     }
+    // 1e-2 above it the setup resolves the rectangle (z0^2 / the farthest edge's square: 2e-4): its own sampler.
+    const LightData near = test::makeQuadLight({-0.3f, -0.4f, 1e-2f}, {1, 0, 0}, {0, 1, 0});
+    LightSample a, b;
+    ASSERT_TRUE(sampleLight(near, LightSampler::SolidAngle, vec3(0.0f), kNoNormal, vec2(0.3f, 0.6f), a));
+    ASSERT_TRUE(sampleLight(near, LightSampler::Area, vec3(0.0f), kNoNormal, vec2(0.3f, 0.6f), b));
+    EXPECT_NE(a.pdf, b.pdf);
 }
 
 // ---- Spheres by area from outside ---------------------------------------------------------------------------

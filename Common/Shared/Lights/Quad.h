@@ -62,14 +62,15 @@ RT_FN vec4 rectangleCosineWeights(RT_IN(SphericalRectangle) r, vec3 n)
 }
 
 /// NEE's solid-angle pdf of wi from p with receiver normal n (0 in a medium) by `strategy`: over a rectangle of
-/// at least kMinSphericalRectangle sr, 1 / S (SolidAngle, or no receiver), or the bilinear cosine warp's density
+/// at least kMinSphericalRectangle sr whose setup resolves it (sphericalRectangleResolved), 1 / S (SolidAngle, or
+/// no receiver), or the bilinear cosine warp's density
 /// at the direction's u (the inverse of the spherical map) over 1 / S (Projected); else the area density.
 RT_FN float quadLightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec3 wi)
 {
     if (strategy != RT_ENUM(LightSampler, Area) && isRectangle(light))
     {
         const SphericalRectangle r = lightSphericalRectangle(light, p);
-        if (r.solidAngle >= kMinSphericalRectangle)
+        if (r.solidAngle >= kMinSphericalRectangle && sphericalRectangleResolved(r))
         {
             const float t = planarHit(light, p, wi);
             if (t < 0.0f)
@@ -92,7 +93,7 @@ RT_FN bool sampleQuadLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy
     if (strategy != RT_ENUM(LightSampler, Area) && isRectangle(light))
     {
         const SphericalRectangle r = lightSphericalRectangle(light, p);
-        if (r.solidAngle >= kMinSphericalRectangle)
+        if (r.solidAngle >= kMinSphericalRectangle && sphericalRectangleResolved(r))
         {
             // Projected warps u toward the receiver's cosine first; SolidAngle (or no receiver) takes u as is.
             const bool warp = strategy == RT_ENUM(LightSampler, Projected) && dot(n, n) > 0.0f;
