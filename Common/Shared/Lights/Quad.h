@@ -63,8 +63,8 @@ RT_FN vec4 rectangleCosineWeights(RT_IN(SphericalRectangle) r, vec3 n)
 
 /// NEE's solid-angle pdf of wi from p with receiver normal n (0 in a medium) by `strategy`: over a rectangle of
 /// at least kMinSphericalRectangle sr whose setup resolves it (sphericalRectangleResolved), 1 / S (SolidAngle, or
-/// no receiver), or the bilinear cosine warp's density
-/// at the direction's u (the inverse of the spherical map) over 1 / S (Projected); else the area density.
+/// no receiver), or the bilinear cosine warp's density at the direction's u (the inverse of the spherical map) over
+/// 1 / S (Projected); else the area density.
 RT_FN float quadLightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec3 wi)
 {
     if (strategy != RT_ENUM(LightSampler, Area) && isRectangle(light))
