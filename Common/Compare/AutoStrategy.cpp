@@ -119,15 +119,27 @@ std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& candidates)
 
 std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& measured, const std::vector<PilotHalves>& estimates)
 {
+    auto pointers = [](const std::vector<PilotHalves>& halves) {
+        std::vector<const PilotHalves*> p;
+        for (const PilotHalves& h : halves)
+            p.push_back(&h);
+        return p;
+    };
+    return pilotRelMse(pointers(measured), pointers(estimates));
+}
+
+std::vector<PilotError> pilotRelMse(std::span<const PilotHalves* const> measured,
+                                    std::span<const PilotHalves* const> estimates)
+{
     const std::size_t n = measured.size();
     if (n == 0)
         return {};
     if (estimates.size() != n)
         throw UsageError(fmt::format("{} pilot candidates measured and {} estimates", n, estimates.size()));
-    const int width = measured.front().a.width(), height = measured.front().a.height();
-    for (const auto* set : {&measured, &estimates})
-        for (const PilotHalves& c : *set)
-            for (const Image* image : {&c.a, &c.b})
+    const int width = measured.front()->a.width(), height = measured.front()->a.height();
+    for (const auto set : {measured, estimates})
+        for (const PilotHalves* c : set)
+            for (const Image* image : {&c->a, &c->b})
                 if (image->width() != width || image->height() != height)
                     throw UsageError(fmt::format("pilot images differ in size ({}x{} and {}x{})", width, height,
                                                  image->width(), image->height()));
@@ -139,13 +151,6 @@ std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& measured, co
     // 160 MB of them.
     static_assert(sizeof(vec3) == 3 * sizeof(float), "an image's values are its pixels' channels, packed");
     auto values_of = [](const Image& image) { return &image.data()->x; };
-    auto x = [&](std::size_t i, std::size_t k) {
-        return 0.5 * (double(values_of(estimates[i].a)[k]) + values_of(estimates[i].b)[k]);
-    };
-    auto v = [&](std::size_t i, std::size_t k) {
-        const double a = values_of(measured[i].a)[k], b = values_of(measured[i].b)[k];
-        return 0.25 * (a - b) * (a - b);
-    };
     // relMSE's denominator for candidate i: the others' estimate, per pixel. Never candidate i's own image: a firefly
     // divided by itself would make the spikiest estimator look the best (measured: bsdf chosen over nee-mis, which
     // is 2x as efficient, on cornell-box-lights at 2 spp).
@@ -154,55 +159,103 @@ std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& measured, co
     // The others' weighted mean is the weighted sum of all less the candidate's own term: one sum per pass, not one per
     // candidate (n^2 passes over the pixels took seconds of the host's clock on a GPU's pilot, which the search's
     // guard of twice its budget then cut short).
-    // The mean of v_i / (others^2 + epsilon) over the values, and its standard error.
-    auto relative = [&](std::size_t i, const std::vector<double>& total, double weight, const std::vector<double>& w) {
-        // Four partial sums: one chain of dependent additions over every value was most of the time.
-        double sum[4] = {}, squares[4] = {};
-        // Where the candidate's weight is all but the whole (its relMSE orders of magnitude below the others'), the
-        // difference would cancel: the others' sum directly.
-        const bool direct = n > 1 && weight - w[i] <= 1e-9 * weight;
-        const double othersWeight = n == 1 || direct ? 0.0 : 1.0 / (weight - w[i]);
-        auto othersDirect = [&](std::size_t k) {
-            double sumOthers = 0.0, weightOthers = 0.0;
-            for (std::size_t j = 0; j < n; ++j)
-                if (j != i)
-                {
-                    sumOthers += w[j] * x(j, k);
-                    weightOthers += w[j];
-                }
-            return sumOthers / weightOthers;
-        };
-        for (std::size_t k = 0; k < values; ++k)
-        {
-            const double own = x(i, k);
-            const double others = n == 1 ? own : direct ? othersDirect(k) : (total[k] - w[i] * own) * othersWeight;
-            const double t = v(i, k) / (others * others + kRelMseEpsilon);
-            sum[k % 4] += t;
-            squares[k % 4] += t * t;
-        }
-        const double sumAll = (sum[0] + sum[1]) + (sum[2] + sum[3]);
-        const double sumSquares = (squares[0] + squares[1]) + (squares[2] + squares[3]);
-        const double mean = sumAll / double(values);
-        const double variance = std::max(sumSquares / double(values) - mean * mean, 0.0);
-        return PilotError{mean, std::sqrt(variance / double(values))};
-    };
+    // The images are read a tile of values at a time, the weighted sum of the tile held in cache for every candidate's
+    // terms, in loops of kLanes independent sums the compiler vectorises: one pass over each image per pass, where a
+    // pass over the whole image per candidate took 0.4 s of an H200 host's clock a round at 13 x 512 x 512 (half a
+    // 10 s render's pilot, whose guard then stopped the search before its final round).
+    constexpr std::size_t kTile = 4096, kLanes = 8;
     // Twice: the others' plain mean gives every candidate's error, whose inverses weight the others' mean of the
     // second pass, so that a noisy candidate does not make its neighbours' denominators noisy.
     std::vector<double> w(n, 1.0);
     std::vector<PilotError> errors(n);
-    std::vector<double> total(values);
+    std::array<double, kTile> total{}, others{};
     for (int pass = 0; pass < 2; ++pass)
     {
         double weight = 0.0;
-        std::fill(total.begin(), total.end(), 0.0);
         for (std::size_t j = 0; j < n; ++j)
-        {
             weight += w[j];
-            for (std::size_t k = 0; k < values; ++k)
-                total[k] += w[j] * x(j, k);
+        // The mean of v_i / (others^2 + epsilon) over the values, and its standard error, from kLanes partial sums.
+        std::vector<std::array<double, kLanes>> sums(n), squares(n);
+        for (std::size_t begin = 0; begin < values; begin += kTile)
+        {
+            const std::size_t count = std::min(kTile, values - begin);
+            std::fill_n(total.begin(), count, 0.0);
+            for (std::size_t j = 0; j < n; ++j)
+            {
+                const float* a = values_of(estimates[j]->a) + begin;
+                const float* b = values_of(estimates[j]->b) + begin;
+                const double half = 0.5 * w[j];
+                for (std::size_t k = 0; k < count; ++k)
+                    total[k] += half * (double(a[k]) + double(b[k]));
+            }
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                const float* ea = values_of(estimates[i]->a) + begin;
+                const float* eb = values_of(estimates[i]->b) + begin;
+                const float* ma = values_of(measured[i]->a) + begin;
+                const float* mb = values_of(measured[i]->b) + begin;
+                // Where the candidate's weight is all but the whole (its relMSE orders of magnitude below the
+                // others'), the difference would cancel: the others' sum directly.
+                const double rest = weight - w[i];
+                if (n == 1)
+                    for (std::size_t k = 0; k < count; ++k)
+                        others[k] = 0.5 * (double(ea[k]) + double(eb[k]));
+                else if (rest <= 1e-9 * weight)
+                    for (std::size_t k = 0; k < count; ++k)
+                    {
+                        double sumOthers = 0.0, weightOthers = 0.0;
+                        for (std::size_t j = 0; j < n; ++j)
+                            if (j != i)
+                            {
+                                sumOthers += w[j] * 0.5 *
+                                             (double(values_of(estimates[j]->a)[begin + k]) +
+                                              double(values_of(estimates[j]->b)[begin + k]));
+                                weightOthers += w[j];
+                            }
+                        others[k] = sumOthers / weightOthers;
+                    }
+                else
+                {
+                    const double ownHalf = 0.5 * w[i], othersWeight = 1.0 / rest;
+                    for (std::size_t k = 0; k < count; ++k)
+                        others[k] = (total[k] - ownHalf * (double(ea[k]) + double(eb[k]))) * othersWeight;
+                }
+                std::array<double, kLanes>& sum = sums[i];
+                std::array<double, kLanes>& square = squares[i];
+                // In float (its rounding, 1e-7 of a term, far below a pilot's noise): half the time of double's
+                // divisions, which held the loop.
+                auto term = [&](std::size_t k) {
+                    const float d = ma[k] - mb[k], o = float(others[k]);
+                    return double(0.25f * d * d / (o * o + float(kRelMseEpsilon)));
+                };
+                std::size_t k = 0;
+                for (; k + kLanes <= count; k += kLanes)
+                    for (std::size_t l = 0; l < kLanes; ++l)
+                    {
+                        const double t = term(k + l);
+                        sum[l] += t;
+                        square[l] += t * t;
+                    }
+                for (; k < count; ++k)
+                {
+                    const double t = term(k);
+                    sum[0] += t;
+                    square[0] += t * t;
+                }
+            }
         }
         for (std::size_t i = 0; i < n; ++i)
-            errors[i] = relative(i, total, weight, w);
+        {
+            double sumAll = 0.0, sumSquares = 0.0;
+            for (std::size_t l = 0; l < kLanes; ++l)
+            {
+                sumAll += sums[i][l];
+                sumSquares += squares[i][l];
+            }
+            const double mean = sumAll / double(values);
+            const double variance = std::max(sumSquares / double(values) - mean * mean, 0.0);
+            errors[i] = PilotError{mean, std::sqrt(variance / double(values))};
+        }
         for (std::size_t i = 0; i < n; ++i)
             w[i] = 1.0 / std::max(errors[i].relMse, 1e-300);
     }
@@ -315,11 +368,22 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // A half's share of the budget on the engine's clock, but no more than the search's guard (twice the budget, on
     // the host's clock) leaves it beside each render's host time beyond the engine's (its set-up and read-back, the
     // waits between a GPU's submissions: 9-12 ms a render of 512 x 512 on an H200 against its 2-7 ms on the GPU's
-    // clock, when the guard stopped every search before its final round).
+    // clock, when the guard stopped every search before its final round). Not less: the scoring between rounds
+    // (0.2 s of an H200 host's clock for 12 candidates of 512 x 512) can then pass the guard as the final round
+    // begins, but a quarter of the guard kept for it left an H200's --compare auto rows at 10 s, whose renders
+    // cost the host 12-14 ms beyond the GPU's, no share at all (3 of 4 pilots too short to measure).
     // The probe's pixels where the share holds them at 1 spp, fewer where not; the rest of the share as samples per
     // pixel, up to half the render's: stratification gains with the spp, and a pilot of 2 spp cannot see it (it
-    // chose random over sobol on rect-light-closeup, where sobol is 3.5x as efficient at 1 s).
-    const int sppCap = std::max(1, request.settings.trueSpp() / 2);
+    // chose random over sobol on rect-light-closeup, where sobol is 3.5x as efficient at 1 s). A render held to a
+    // time (--compare's equal-time auto row) has no spp of its own: the spp its time gives by the probe's model (its
+    // request's, the scene's few, held an H200's glossy-cornell pilots at 2 spp a half for a render of 8,600).
+    int renderSpp = request.settings.trueSpp();
+    if (budget.renderSeconds > 0.0)
+    {
+        const double spp = cost.sppFor(budget.renderSeconds * 1e3, pixelsOf(request.settings));
+        renderSpp = spp >= 1.0 ? static_cast<int>(std::min(spp, double(kMaxSpp))) : 1; // NaN: 1
+    }
+    const int sppCap = std::max(1, renderSpp / 2);
     auto planHalves = [&](double budgetMs, double hostBudgetMs) {
         const double shareMs = std::min(budgetMs / double(measurements) / 2.0,
                                         hostBudgetMs / double(measurements) / 2.0 - choice.hostExtraMs);
@@ -344,7 +408,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
                                         pixelsOf(large) * cost.sppFor(timingBudgetMs, pixelsOf(large)));
     RenderSettings timing = large;
     timing.width = widthFor(request.settings, std::min(timingPaths, pixelsOf(large)));
-    timing.spp = std::clamp(static_cast<int>(timingPaths / pixelsOf(timing)), 1, request.settings.trueSpp());
+    timing.spp = std::clamp(static_cast<int>(timingPaths / pixelsOf(timing)), 1, renderSpp);
     if (pixelsOf(timing) * timing.spp > 2.0 * pixelsOf(pilot) * pilot.spp)
     {
         const double timingMs = double(2 * kFinalMeasurements) * cost.ms(pixelsOf(timing), timing.spp);
@@ -388,6 +452,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // --compare are compiled before they are timed too; the host's time for it is in pilotWallSeconds, and alone in
     // prepareSeconds.
     const auto prepareStart = std::chrono::steady_clock::now();
+    choice.probeSeconds = std::chrono::duration<double>(prepareStart - start).count();
     for (const Strategy& strategy : grid)
         engine.beginFrame(strategy.applyTo(pilot));
     // The search's own clock: the probe and the preparation are not part of the budget the measurements fill.
@@ -404,35 +469,46 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     /// Sums of a candidate's A and B halves over measurements of the same size, and their time.
     struct Sums
     {
-        Image a, b;
+        PilotHalves sum;
         double ms = 0.0;
         int count = 0;
 
         void add(Image&& imageA, Image&& imageB, double measurementMs)
         {
             ms += measurementMs;
+            current = false;
             if (count++ == 0)
             {
-                a = std::move(imageA);
-                b = std::move(imageB);
+                sum = {std::move(imageA), std::move(imageB)};
                 return;
             }
-            for (std::size_t k = 0; k < a.pixelCount(); ++k)
+            for (std::size_t k = 0; k < sum.a.pixelCount(); ++k)
             {
-                a.data()[k] += imageA.data()[k];
-                b.data()[k] += imageB.data()[k];
+                sum.a.data()[k] += imageA.data()[k];
+                sum.b.data()[k] += imageB.data()[k];
             }
         }
-        PilotHalves mean() const
+        /// Kept until the next add: the search scores every candidate after each round, most of them unchanged.
+        const PilotHalves& mean()
         {
-            PilotHalves m{a, b};
-            for (std::size_t k = 0; k < a.pixelCount(); ++k)
+            if (count == 1)
+                return sum;
+            if (!current)
             {
-                m.a.data()[k] /= float(count);
-                m.b.data()[k] /= float(count);
+                means = sum;
+                for (std::size_t k = 0; k < sum.a.pixelCount(); ++k)
+                {
+                    means.a.data()[k] /= float(count);
+                    means.b.data()[k] /= float(count);
+                }
+                current = true;
             }
-            return m;
+            return means;
         }
+
+    private:
+        PilotHalves means;
+        bool current = false;
     };
     /// A candidate's measurements: all of them, and those of the final round.
     struct Candidate
@@ -452,7 +528,11 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             RenderRequest frame = request;
             frame.settings = c.row.strategy.applyTo(timing);
             frame.settings.seed = request.settings.seed + 7919u * (2u * measured + 1u) + 3u;
+            const auto frameStart = std::chrono::steady_clock::now();
             const Measurement t = measure(engine, frame, nullptr, {}, true);
+            choice.renderHostSeconds +=
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count();
+            choice.tracingHostSeconds += t.wallMs * 1e-3;
             if (t.cancelled)
                 return false;
             choice.pilotMs += t.ms();
@@ -523,11 +603,12 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // relMSE of each candidate's mean over all its measurements (its cost: their summed time): the table's figures
     // and the halving's order.
     auto rescore = [&] {
+        const auto scoringStart = std::chrono::steady_clock::now();
         const std::vector<Candidate*> measuredRuns = scored();
-        std::vector<PilotHalves> halves;
-        for (const Candidate* c : measuredRuns)
-            halves.push_back(c->all.mean());
-        const std::vector<PilotError> errors = pilotRelMse(halves);
+        std::vector<const PilotHalves*> halves;
+        for (Candidate* c : measuredRuns)
+            halves.push_back(&c->all.mean());
+        const std::vector<PilotError> errors = pilotRelMse(halves, halves);
         for (std::size_t i = 0; i < measuredRuns.size(); ++i)
         {
             PilotRow& row = measuredRuns[i]->row;
@@ -535,17 +616,17 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             row.relMseError = errors[i].standardError;
             row.efficiency = row.relMse > 0.0 && row.ms > 0.0 ? 1.0 / (row.relMse * row.ms * 1e-3) : 0.0;
         }
+        choice.scoringSeconds +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - scoringStart).count();
     };
 
     bool finished = true;
     std::vector<std::size_t> active(runs.size());
     for (std::size_t i = 0; i < active.size(); ++i)
         active[i] = i;
-    bool finalStarted = false;
     while (finished && !choice.budgetSpent)
     {
         const bool finalRound = active.size() <= 2;
-        finalStarted |= finalRound;
         for (int repeat = 0; repeat < (finalRound ? kFinalMeasurements : 1) && finished && !choice.budgetSpent;
              ++repeat)
             for (const std::size_t i : active)
@@ -587,6 +668,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             break;
     }
     choice.pilotWallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    choice.searchSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - searchStart).count();
     if (!finished)
     {
         choice.cancelled = true;
@@ -605,11 +687,11 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     });
     if (challenger != measuredRuns.end() && measuredRuns.front() == &runs.front())
     {
-        std::vector<PilotHalves> measuredHalves, estimates;
-        for (const Candidate* c : measuredRuns)
+        std::vector<const PilotHalves*> measuredHalves, estimates;
+        for (Candidate* c : measuredRuns)
         {
-            measuredHalves.push_back(c == *challenger ? c->final.mean() : c->all.mean());
-            estimates.push_back(c->all.mean());
+            measuredHalves.push_back(c == *challenger ? &c->final.mean() : &c->all.mean());
+            estimates.push_back(&c->all.mean());
         }
         const std::vector<PilotError> errors = pilotRelMse(measuredHalves, estimates);
         const std::size_t at = std::size_t(challenger - measuredRuns.begin());
@@ -635,7 +717,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         std::vector<PilotError> each;
         for (const PilotHalves& halves : ownRun.each)
         {
-            measuredHalves.front() = halves;
+            measuredHalves.front() = &halves;
             each.push_back(pilotRelMse(measuredHalves, estimates).front());
         }
         std::sort(each.begin(), each.end(),
@@ -659,9 +741,12 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         if (pilotSwitches(ownScore, {row.finalEfficiency, relative(row.finalRelMse, row.finalRelMseError)}))
             choice.chosen = row.strategy;
     }
-    else if (choice.budgetSpent && !finalStarted && measuredRuns.size() > 1 && measuredRuns.front() == &runs.front())
+    else if (choice.budgetSpent && challenger == measuredRuns.end() && measuredRuns.size() > 1 &&
+             measuredRuns.front() == &runs.front())
     {
-        // No final round: the host's clock passed the budget first (a GPU compiling the candidates' pipelines). The
+        // No final round: the host's clock passed the budget first (a GPU compiling the candidates' pipelines; or
+        // right as the final round began, before its challenger's first measurement: an H200's glossy-cornell at
+        // 10 s then kept the own, 0.65x the best, whose lead of 1.3x its measurements had shown). The
         // most efficient measured, on all its measurements, against the same rule: a lead of a few standard errors
         // may be the best of several draws, a lead of 3x (book 3's mixture on rtrol-cornell-box, on lavapipe) is not.
         const PilotRow* leader = nullptr;
@@ -705,6 +790,9 @@ nlohmann::json AutoChoice::toJson() const
     j["pilot_ms"] = pilotMs;
     j["pilot_wall_seconds"] = pilotWallSeconds;
     j["prepare_seconds"] = prepareSeconds;
+    j["probe_seconds"] = probeSeconds;
+    j["search_seconds"] = searchSeconds;
+    j["search_scoring_seconds"] = scoringSeconds;
     j["probe_host_extra_ms"] = hostExtraMs;
     j["timing_width"] = timingWidth;
     j["timing_spp"] = timingSpp;

@@ -41,6 +41,7 @@
 #pragma once
 
 #include <array>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -140,6 +141,9 @@ struct AutoChoice
     double pilotMs = 0.0; // the probe's and every candidate's render time, on the engine's clock
     double pilotWallSeconds = 0.0; // the whole pilot on the host's clock (GPU pipelines compiled included)
     double prepareSeconds = 0.0; // of which: every candidate prepared (a GPU's pipelines compiled), on the host's clock
+    double probeSeconds = 0.0; // of which: the set-up and the probe, on the host's clock
+    double searchSeconds = 0.0; // of which: the search (every candidate's measurements and their scoring)
+    double scoringSeconds = 0.0; // of the search: the candidates' relMSE between its rounds, on the host's clock
     /// Of the search, on the host's clock: its renders (Compare/Measurement.h's measure calls), of which their
     /// tracing (the rest: each frame's set-up and read-back; the rest of the search is the pilot's own arithmetic).
     double renderHostSeconds = 0.0;
@@ -198,6 +202,11 @@ std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& candidates);
 /// (the decision measures the final round's challenger by its final measurements, normalised by every
 /// measurement's estimate). Both lists of the same length and image size; throws UsageError otherwise.
 std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& measured, const std::vector<PilotHalves>& estimates);
+
+/// The same on halves held elsewhere (the search's running means: no copy of a GPU pilot's 13 x 2 images of 3 MB).
+/// No pointer null.
+std::vector<PilotError> pilotRelMse(std::span<const PilotHalves* const> measured,
+                                    std::span<const PilotHalves* const> estimates);
 
 /// A candidate as the decision reads it: its efficiency 1 / (relMSE s) and its relMSE's relative standard error.
 struct PilotScore

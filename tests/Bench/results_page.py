@@ -849,6 +849,20 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "samplers' shorter chains (notebook §37), which made its own 1.17x faster on one core",
                   "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-4s-1129 multi 128 4000 2 16384 \\\n"
                   "    cornell-box-lights", "## 37."),
+                 ("h200-auto-strategy-10s-1129", "NVIDIA H200, driver 580",
+                  "600 px wide, each strategy for 10 s, 1 seed for the full comparison, 4 recheck seeds: glossy-cornell "
+                  "after the pilot's scoring was made 4x faster on the host and a guard passed before the final "
+                  "round's challenger left the decision to every measurement (notebook §38; the build before the "
+                  "equal-time row's spp cap, not measured on a GPU)",
+                  "bash tests/Bench/device_carry.sh  # then on the device:\n"
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=10000 SEEDS=1 REF_SPP=65536 SCENES=glossy-cornell \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 38.", "2026-11-29"),
+                 ("h200-auto-strategy-10s-1129-before", "NVIDIA H200, driver 580",
+                  "the same, the build before (notebook §37's): auto kept the own 4 of 4 (headless pilots of the same "
+                  "render passed the host-clock guard as their final round began)",
+                  "bash tests/Bench/device_carry.sh  # then on the device:\n"
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=10000 SEEDS=1 REF_SPP=65536 SCENES=glossy-cornell \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 38.", "2026-11-29"),
                  ("h200-auto-strategy-10s", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 10 s, 1 seed for the full comparison, 4 recheck seeds; the pilot's "
                   "frames on the render's integrator, in one batch, their time their paths' (notebook §36; before the "
@@ -902,6 +916,7 @@ def section_auto_strategy():
     for run in AUTO["runs"]:
         folder, machine, size, command = run[:4]
         notebook = run[4] if len(run) > 4 else AUTO["notebook"]  # an older run's own section
+        date = run[5] if len(run) > 5 else AUTO["date"]
         if not (RESULTS / folder).is_dir():
             raise ParseError(f"missing results folder docs/results/{folder}")
         rows = scene_rows(RESULTS / folder)
@@ -917,7 +932,7 @@ def section_auto_strategy():
             out.append(f"| {r['scene']} | {r['strategies']} | {' '.join(r['best'].split()[:3])} | "
                        f"{' '.join(r['own'].split()[:3])} | {ratio(r['own_best'])} | {tally(r['chosen'])} | "
                        f"{ratio(r['auto_best'])} | {ratio(r['auto_own'])} |")
-        out += ["", sources([("machine", machine), ("date", AUTO["date"]), ("results", link(folder + "/")),
+        out += ["", sources([("machine", machine), ("date", date), ("results", link(folder + "/")),
                              ("notebook", notebook_link(notebook))]), "", code(command)]
     return out
 

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <functional>
 #include <random>
+#include <thread>
 
 #include "Compare/AutoStrategy.h"
 #include "Error.h"
@@ -55,6 +56,8 @@ public:
         int batches = 0;
     };
     const std::vector<Frame>& frames() const { return m_frames; }
+    /// Called as each frame begins, with how many began before it: a host's delay (a GPU's set-up) where it sleeps.
+    void setOnFrame(std::function<void(std::size_t)> onFrame) { m_onFrame = std::move(onFrame); }
     NoiseEngine(std::function<double(const RenderSettings&)> sigma, std::uint64_t concurrentPaths,
                 double secondsPerPath, double fixedSeconds = 0.0, double secondsPerPixel = 0.0)
         : SceneHoldingEngine("noise"), m_sigma(std::move(sigma)), m_concurrentPaths(concurrentPaths),
@@ -65,6 +68,8 @@ public:
     std::uint64_t concurrentPaths() const override { return m_concurrentPaths; }
     void beginFrame(const RenderSettings& settings) override
     {
+        if (m_onFrame)
+            m_onFrame(m_frames.size());
         m_settings = settings;
         m_frames.push_back({representedPaths(std::uint64_t(settings.width) * std::uint64_t(settings.height()) *
                                              std::uint64_t(settings.trueSpp())),
@@ -115,6 +120,7 @@ private:
     std::function<double(const RenderSettings&)> m_pathCost;
     double m_throughputPaths = 0.0;
     std::vector<Frame> m_frames;
+    std::function<void(std::size_t)> m_onFrame;
 };
 
 /// The engine the pilots run on: as a CPU (a pilot of 1024 pixels at a few hundred spp per half) or as a GPU (2^18
@@ -379,6 +385,53 @@ TEST(PilotDecision, ACandidateFasterPerPathWinsWhereEachRendersFixedCostHidesIt)
         taken += choice.chosen == theBetterOne();
     }
     EXPECT_EQ(taken, 4);
+}
+
+TEST(PilotDecision, AGuardThatStopsTheFinalRoundBeforeItsChallengerLeavesTheDecisionToEveryMeasurement)
+{
+    // The host's clock passes the search's guard (twice the budget) in the final round's first measurement, the
+    // scene's own: the challenger, twice as efficient, has no final measurement. The decision is then the one for
+    // a search stopped earlier, on every candidate's measurements (a guard passed as the final round began once
+    // kept the own on an H200's glossy-cornell at 10 s, 0.65x the best, whose 1.3x lead the rounds had shown).
+    // Frames: the probe's 4, the 12 candidates prepared, then two halves a measurement over rounds of 12, 6 and 3.
+    constexpr std::size_t kFinalRoundsFirstFrame = 4 + 12 + 2 * (12 + 6 + 3);
+    const Scene scene = makeScene("cornell-box-lights");
+    NoiseEngine engine(oneBetterBy(2.0), kCpuLike.concurrentPaths, kCpuLike.secondsPerPath);
+    engine.setScene(scene);
+    // A 6 s render: a budget of 0.3 s of the fake's device time, a guard of 0.6 s on the host's, passed here.
+    engine.setOnFrame([&](std::size_t frame) {
+        if (frame == kFinalRoundsFirstFrame)
+            std::this_thread::sleep_for(std::chrono::milliseconds(650));
+    });
+    RenderRequest request = pilotRequest(scene);
+    request.settings.seed = 700;
+    const AutoChoice choice = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 6.0});
+    ASSERT_TRUE(choice.budgetSpent) << "the guard did not stop the search (host clock " << choice.searchSeconds
+                                    << " s)";
+    ASSERT_EQ(engine.frames().size(), kFinalRoundsFirstFrame + 2) << "the own's final measurement, then the guard";
+    const auto measurements = [&](const Strategy& s) {
+        const auto row = std::find_if(choice.rows.begin(), choice.rows.end(),
+                                      [&](const PilotRow& r) { return r.strategy == s; });
+        return row == choice.rows.end() ? -1 : row->measurements;
+    };
+    EXPECT_EQ(measurements(Strategy::of(request.settings)), 4);
+    EXPECT_EQ(measurements(theBetterOne()), 3) << "the better one reached the final round";
+    EXPECT_EQ(choice.chosen.name(), theBetterOne().name());
+}
+
+TEST(PilotDecision, ARenderHeldToATimeIsPilotedAtTheSppItsTimeGives)
+{
+    // --compare's equal-time auto row: its request's spp is the scene's few (4 here), not the render's; the halves'
+    // spp are capped at half the spp the 40 s give by the probe's model (2,500 at 400 x 400 on the fake), not at 2.
+    const Scene scene = makeScene("cornell-box-lights");
+    NoiseEngine engine(oneBetterBy(2.0), kCpuLike.concurrentPaths, kCpuLike.secondsPerPath);
+    engine.setScene(scene);
+    RenderRequest request = pilotRequest(scene);
+    request.settings.spp = 4;
+    const AutoChoice choice = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 40.0});
+    EXPECT_GT(choice.spp / 2, 2) << "spp a half, " << choice.width << " x " << choice.height << " pixels";
+    EXPECT_LE(choice.spp / 2, 1250);
+    EXPECT_EQ(choice.chosen.name(), theBetterOne().name());
 }
 
 TEST(PilotDecision, TimingFramesShowTheCostASmallFrameHides)
