@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/fmt/ranges.h>
@@ -111,6 +112,47 @@ StrategyLists autoCandidates(const Scene& scene, const StrategyLists& given, con
     }
     return lists;
 }
+
+namespace
+{
+template <std::size_t Lanes>
+struct PartialSums
+{
+    std::array<double, Lanes> terms{}, squares{};
+};
+
+/// The sums of relMSE's terms 0.25 (a - b)^2 / (others^2 + epsilon) over `count` values and of their squares, in
+/// Lanes independent sums (which the compiler vectorises), each term computed in Real.
+template <class Real, std::size_t Lanes>
+PartialSums<Lanes> relMseTerms(const float* a, const float* b, const double* others, std::size_t count)
+{
+    // Local sums, copied out at the end: the result's (the caller's memory) might alias `others` for all the
+    // compiler knows, which kept every addition a store and a load.
+    double terms[Lanes] = {}, squares[Lanes] = {};
+    auto term = [&](std::size_t k) {
+        const Real d = Real(a[k]) - Real(b[k]), o = Real(others[k]);
+        return double(Real(0.25) * d * d / (o * o + Real(kRelMseEpsilon)));
+    };
+    std::size_t k = 0;
+    for (; k + Lanes <= count; k += Lanes)
+        for (std::size_t l = 0; l < Lanes; ++l)
+        {
+            const double t = term(k + l);
+            terms[l] += t;
+            squares[l] += t * t;
+        }
+    for (; k < count; ++k)
+    {
+        const double t = term(k);
+        terms[0] += t;
+        squares[0] += t * t;
+    }
+    PartialSums<Lanes> s;
+    std::copy_n(terms, Lanes, s.terms.begin());
+    std::copy_n(squares, Lanes, s.squares.begin());
+    return s;
+}
+} // namespace
 
 std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& candidates)
 {
@@ -220,27 +262,16 @@ std::vector<PilotError> pilotRelMse(std::span<const PilotHalves* const> measured
                     for (std::size_t k = 0; k < count; ++k)
                         others[k] = (total[k] - ownHalf * (double(ea[k]) + double(eb[k]))) * othersWeight;
                 }
-                std::array<double, kLanes>& sum = sums[i];
-                std::array<double, kLanes>& square = squares[i];
                 // In float (its rounding, 1e-7 of a term, far below a pilot's noise): half the time of double's
-                // divisions, which held the loop.
-                auto term = [&](std::size_t k) {
-                    const float d = ma[k] - mb[k], o = float(others[k]);
-                    return double(0.25f * d * d / (o * o + float(kRelMseEpsilon)));
-                };
-                std::size_t k = 0;
-                for (; k + kLanes <= count; k += kLanes)
-                    for (std::size_t l = 0; l < kLanes; ++l)
-                    {
-                        const double t = term(k + l);
-                        sum[l] += t;
-                        square[l] += t * t;
-                    }
-                for (; k < count; ++k)
+                // divisions, which held the loop. A tile whose float terms overflow (values of 1e19 and more,
+                // which double holds) is summed again in double.
+                PartialSums<kLanes> sum = relMseTerms<float, kLanes>(ma, mb, others.data(), count);
+                if (!std::isfinite(std::accumulate(sum.squares.begin(), sum.squares.end(), 0.0)))
+                    sum = relMseTerms<double, kLanes>(ma, mb, others.data(), count);
+                for (std::size_t l = 0; l < kLanes; ++l)
                 {
-                    const double t = term(k);
-                    sum[0] += t;
-                    square[0] += t * t;
+                    sums[i][l] += sum.terms[l];
+                    squares[i][l] += sum.squares[l];
                 }
             }
         }

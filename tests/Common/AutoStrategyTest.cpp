@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "Compare/AutoStrategy.h"
@@ -105,6 +106,23 @@ TEST(PilotError, FirefliesAreNotDividedByThemselves)
     // The firefly estimate is heavy-tailed: 6 of its standard errors.
     EXPECT_NEAR(errors[2].relMse, spiky, 6.0 * errors[2].standardError);
     EXPECT_GT(errors[2].relMse, 200.0 * errors[0].relMse);
+}
+
+TEST(PilotError, AFireflyBeyondFloatsRangeStaysFinite)
+{
+    // One sample of 1e20 in a half: its term, 0.25 x 1e40 over the others' square, overflows float (the terms'
+    // precision), not double. Its candidate's relMSE stays finite and huge; the smooth candidates keep their own.
+    std::mt19937 rng(15);
+    constexpr float kSigma = 0.05f;
+    std::vector<PilotHalves> candidates{halves(rng, gaussian(kSigma)), halves(rng, gaussian(kSigma)),
+                                        halves(rng, gaussian(kSigma))};
+    candidates[2].a.data()[100].y = 1e20f;
+    const std::vector<PilotError> errors = pilotRelMse(candidates);
+    const double smooth = relMseOf(0.5 * kSigma * kSigma);
+    ASSERT_TRUE(std::isfinite(errors[2].relMse) && std::isfinite(errors[2].standardError));
+    EXPECT_GT(errors[2].relMse, 1e30);
+    for (int i = 0; i < 2; ++i)
+        EXPECT_NEAR(errors[i].relMse, smooth, 5.0 * errors[i].standardError) << "candidate " << i;
 }
 
 TEST(PilotError, OneCandidateIsItsOwnVarianceAndSizesMustMatch)
