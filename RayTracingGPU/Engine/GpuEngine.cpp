@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <functional>
+#include <map>
+#include <optional>
+#include <tuple>
 
 #include <spdlog/fmt/fmt.h>
 
@@ -29,8 +32,8 @@ namespace rt::gpu
 namespace
 {
 /// Segments of a wave the wavefront first records, before it knows how many its paths need (then as many as
-/// the frame's last wave needed), and the segments of each further submission while paths remain: the launches
-/// of a segment whose queue is empty cost the H100 about 25 us each.
+/// the last wave of the same kind of path needed), and the segments of each further submission while paths
+/// remain: the launches of a segment whose queue is empty cost the H100 about 25 us each.
 constexpr std::uint32_t kFirstWaveSegments = 8;
 constexpr std::uint32_t kWaveSegmentChunk = 8;
 /// Timestamp queries: 0-1 around a dispatch, 2-3 around a clear or readback, from 4 on around restir-di's passes.
@@ -63,6 +66,12 @@ struct GpuEngine::Impl
     std::map<std::string, double> frameStages; // stageSeconds() of the frame
     std::unique_ptr<WaveStageTimer> waveTimer; // made at the first wavefront launch on a device with timestamps
     std::uint32_t waveSegments = kFirstWaveSegments; // the wavefront's first submission per wave: its segments
+    /// What the last wave needed, per kind of path of the scene (WaveKind): a frame starts from it. Begun anew at
+    /// kFirstWaveSegments, the first wave of every frame (a pilot has 54, of 2-13 ms each on an H200) waited on up
+    /// to six more submissions of eight segments, the host reading the queue's count before each.
+    using WaveKind = std::tuple<int, Estimator, RussianRoulette>; // depth, estimator, roulette: the paths' length
+    std::map<WaveKind, std::uint32_t> learnedWaveSegments;
+    WaveKind waveKind{};
     bool countRays = false; // GpuEngineOptions::countRays
     bool recordCost = false; // setCostRecording
     std::unique_ptr<CostTarget> cost; // the frame's, with cost recording; kept while the size stays
@@ -201,6 +210,7 @@ struct GpuEngine::Impl
                 last = next;
             }
             waveSegments = std::max(buffers.readCounters().segments, 1u);
+            learnedWaveSegments[waveKind] = waveSegments;
         }
         if (unfinished)
             submit([&](WavefrontPipeline::Recorder& r) { r.finish(*unfinished); });
@@ -422,6 +432,7 @@ std::uint64_t GpuEngine::concurrentPaths() const
 double GpuEngine::setScene(const Scene& scene)
 {
     m_impl->descriptors = {};
+    m_impl->learnedWaveSegments.clear();
     return m_impl->tracer.setScene(scene);
 }
 
@@ -466,7 +477,11 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
                                  : e.tracer.prepare(e.uniforms, e.integrator);
     e.target->reset(e.uniforms);
     e.clear();
-    e.waveSegments = kFirstWaveSegments;
+    e.waveKind = {settings.depth, settings.estimator, settings.russianRoulette};
+    const auto learned = e.learnedWaveSegments.find(e.waveKind);
+    const std::optional<std::uint32_t> learnedSegments =
+        learned != e.learnedWaveSegments.end() ? std::optional(learned->second) : std::nullopt;
+    e.waveSegments = learnedSegments.value_or(kFirstWaveSegments);
     if (compiled)
     {
         // A driver may finish a new pipeline's compilation at its first launch (lavapipe: a 16-px render took
@@ -481,7 +496,12 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
         e.target->reset(e.uniforms);
         e.clear();
         e.restirHistory = false;
-        e.waveSegments = kFirstWaveSegments; // the render plans its first wave as with a cached pipeline
+        // The render plans its first wave as with a cached pipeline, not by that row's paths.
+        e.waveSegments = learnedSegments.value_or(kFirstWaveSegments);
+        if (learnedSegments)
+            e.learnedWaveSegments[e.waveKind] = *learnedSegments;
+        else
+            e.learnedWaveSegments.erase(e.waveKind);
     }
     if (compiled) // a frame whose pipelines were all compiled before has no compilation to tell
         e.frameStages["pipeline_host"] =

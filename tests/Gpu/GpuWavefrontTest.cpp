@@ -137,6 +137,29 @@ TEST_F(GpuWavefront, TheWaveSizeDoesNotChangeTheImage)
     }
 }
 
+// A frame's first wave starts from the segments the last frame of the same kind of path needed (not from 8):
+// the submissions change, not the paths. Frames of depth 12, then 3, then 12 again with waves of 97 paths (many
+// waves, each learning) on one scene: the third renders the first's image bit for bit, and a fresh scene's
+// frame (learning from 8 again) the same.
+TEST_F(GpuWavefront, FramesThatStartFromTheLearnedSegmentsRenderTheSameImage)
+{
+    const Scene scene = makeScene("rtnw-cornell-smoke");
+    RenderSettings deep = ::rt::test::settingsFor(scene, 16, 4, 12);
+    deep.estimator = Estimator::NeeMis;
+    RenderSettings shallow = deep;
+    shallow.depth = 3;
+    useWavefront(97);
+    GpuEngine& engine = *sharedEngine();
+    engine.setScene(scene);
+    RenderControl control;
+    const RenderResult first = renderWithSettings(engine, deep, control);
+    const RenderResult between = renderWithSettings(engine, shallow, control);
+    const RenderResult again = renderWithSettings(engine, deep, control);
+    EXPECT_EQ(again.image.pixels(), first.image.pixels());
+    EXPECT_NE(between.image.pixels(), first.image.pixels()) << "depth 3 renders another image";
+    EXPECT_EQ(renderOnGpu(scene, deep).image.pixels(), first.image.pixels()) << "a fresh scene's frame";
+}
+
 // The furnace converges to Le / (1 - a) in every pixel (GpuFurnace.* on the suite's integrator).
 TEST_F(GpuWavefront, TheFurnaceGivesLeOverOneMinusAlbedo)
 {
