@@ -652,6 +652,9 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     };
 
     bool finished = true;
+    // Whether the final round began its challenger's first measurement: where it did, the final round decides (a
+    // challenger stopped there as too slow keeps the own, whatever the host's clock did next).
+    bool challengerInFinal = false;
     std::vector<std::size_t> active(runs.size());
     for (std::size_t i = 0; i < active.size(); ++i)
         active[i] = i;
@@ -676,6 +679,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
                     choice.budgetSpent = true;
                     break;
                 }
+                challengerInFinal |= finalRound && i != 0;
                 if (!(finished = measureOnce(runs[i], finalRound)))
                     break;
             }
@@ -772,7 +776,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         if (pilotSwitches(ownScore, {row.finalEfficiency, relative(row.finalRelMse, row.finalRelMseError)}))
             choice.chosen = row.strategy;
     }
-    else if (choice.budgetSpent && challenger == measuredRuns.end() && measuredRuns.size() > 1 &&
+    else if (choice.budgetSpent && !challengerInFinal && measuredRuns.size() > 1 &&
              measuredRuns.front() == &runs.front())
     {
         // No final round: the host's clock passed the budget first (a GPU compiling the candidates' pipelines; or

@@ -410,6 +410,7 @@ void GpuEngine::setCountRays(bool countRays) { m_impl->countRays = countRays; }
 void GpuEngine::setIntegrator(GpuIntegrator integrator, std::uint32_t waveCapacity)
 {
     m_impl->descriptors = {}; // they name the old wave buffers
+    m_impl->learnedWaveSegments.clear(); // what a wave of another size needed
     m_impl->tracer.setIntegrator(integrator, waveCapacity);
 }
 

@@ -849,6 +849,13 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "samplers' shorter chains (notebook §37), which made its own 1.17x faster on one core",
                   "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-4s-1129 multi 128 4000 2 16384 \\\n"
                   "    cornell-box-lights", "## 37."),
+                 ("cpu-auto-strategy-4s-1129b", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                  "128 px wide, each strategy for 4 s, 12 fresh recheck seeds against the full comparison and reference "
+                  "of the row above (RECHECK_ONLY): this session's pilot (its scoring, the guard's decision, the "
+                  "time-held render's spp cap) on the CPU, where nothing was to change (notebook §38)",
+                  "RECHECK_ONLY=1 IMAGES=<the row above's images> bash tests/Bench/auto_strategy.sh build/bin \\\n"
+                  "    docs/results/cpu-auto-strategy-4s-1129b multi 128 4000 2 16384 cornell-box-lights", "## 38.",
+                  "2026-11-29"),
                  ("h200-auto-strategy-10s-1129", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 10 s, 1 seed for the full comparison, 4 recheck seeds: glossy-cornell "
                   "after the pilot's scoring was made 4x faster on the host and a guard passed before the final "
