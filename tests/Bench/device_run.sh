@@ -10,7 +10,8 @@
 #                                      REF_SPP 8192) or multi (the host's every core; WIDTH 128, MS 1000)
 #   tests/Bench/device_run.sh equal-error  issue 42: cornell-box-lights' time to the thesis' mixture-1000 error
 #                                      (equal_error.sh; its STRATEGIES, SPP_LIST, SEEDS, ROUNDS, REF_SPP)
-#   tests/Bench/device_run.sh pilot        --strategy auto's headless pilot on SCENES at SPPS, 600 px: its table
+#   tests/Bench/device_run.sh pilot        --strategy auto's headless pilot on SCENES at SPPS, 600 px, for SEEDS:
+#                                      its table and its host clock
 #   tests/Bench/device_run.sh pilot-sizes  the GPU's time by image size, spp and integrator (pilot_sizes.sh)
 #   tests/Bench/device_run.sh auto     --strategy auto against a full --compare at equal time (auto_strategy.sh)
 #   tests/Bench/device_run.sh heavy    the heavy part: CPU/GPU agreement of every scene at 128 px, 64 spp (FILTER:
@@ -209,12 +210,18 @@ roulette)
     ;;
 pilot)
     # Issue 37: --strategy auto's headless pilot (its table, time model and frames) on SCENES at 600 px, at each
-    # of SPPS (the first render of the lease compiles the candidates' pipelines).
+    # of SPPS, for each of SEEDS (default 0; the first render of the lease compiles the candidates' pipelines), with
+    # PILOT_BUDGET (default 0.05): the table, then the pilot's host clock (the probe's extra per render, the search,
+    # its renders, their tracing and its scoring) beside the GPU's.
     for scene in ${SCENES:-cornell-box-lights}; do
         for spp in ${SPPS:-1460}; do
-            "$bin/ray-tracing-gpu" --headless --strategy auto --strategy-cache off --scene "$scene" --width 600 \
-                --spp "$spp" --stats "$out/pilot-$scene-$spp.json" 2>&1 | grep -v "^\[" | tail -20
-            python3 -c "import json,sys; c=json.load(open(sys.argv[1]))['strategy_choice']; print({k: c[k] for k in ('render_cost', 'half_overhead_ms', 'pilot_frame_configuration', 'pilot_width', 'pilot_spp', 'budget_seconds', 'pilot_ms', 'too_short')})" "$out/pilot-$scene-$spp.json"
+            for seed in ${SEEDS:-0}; do
+                stats="$out/pilot-$scene-$spp-$seed.json"
+                "$bin/ray-tracing-gpu" --headless --strategy auto --strategy-cache off --scene "$scene" --width 600 \
+                    --spp "$spp" --seed "$seed" --pilot-budget "${PILOT_BUDGET:-0.05}" --stats "$stats" 2>&1 |
+                    grep -v "^\[" | tail -20
+                python3 -c "import json,sys; c=json.load(open(sys.argv[1]))['strategy_choice']; print({k: c[k] for k in ('render_cost', 'half_overhead_ms', 'pilot_frame_configuration', 'pilot_width', 'pilot_spp', 'budget_seconds', 'pilot_ms', 'too_short', 'budget_spent', 'probe_host_extra_ms', 'prepare_seconds', 'search_seconds', 'search_render_host_seconds', 'search_tracing_host_seconds', 'search_scoring_seconds')})" "$stats"
+            done
         done
     done
     ;;
