@@ -58,6 +58,9 @@ public:
     const std::vector<Frame>& frames() const { return m_frames; }
     /// Called as each frame begins, with how many began before it: a host's delay (a GPU's set-up) where it sleeps.
     void setOnFrame(std::function<void(std::size_t)> onFrame) { m_onFrame = std::move(onFrame); }
+    /// Each frame's device time as a multiple of its paths' (default 1), by how many frames began before it: a
+    /// device slow to wake.
+    void setFrameScale(std::function<double(std::size_t)> scale) { m_frameScale = std::move(scale); }
     NoiseEngine(std::function<double(const RenderSettings&)> sigma, std::uint64_t concurrentPaths,
                 double secondsPerPath, double fixedSeconds = 0.0, double secondsPerPixel = 0.0)
         : SceneHoldingEngine("noise"), m_sigma(std::move(sigma)), m_concurrentPaths(concurrentPaths),
@@ -95,7 +98,9 @@ public:
         const double framePaths = double(m_sums.size() / 3) * m_settings.trueSpp();
         const double seen = m_throughputPaths > 0.0 ? std::min(framePaths / m_throughputPaths, 1.0) : 1.0;
         const double pathCost = m_pathCost ? 1.0 + (m_pathCost(m_settings) - 1.0) * seen : 1.0;
-        return {.complete = true, .deviceSeconds = frameSeconds + double(paths) * m_secondsPerPath * pathCost};
+        const double frameScale = m_frameScale ? m_frameScale(m_frames.size() - 1) : 1.0;
+        return {.complete = true,
+                .deviceSeconds = (frameSeconds + double(paths) * m_secondsPerPath * pathCost) * frameScale};
     }
     Image estimate(std::uint32_t samples) override
     {
@@ -121,6 +126,7 @@ private:
     double m_throughputPaths = 0.0;
     std::vector<Frame> m_frames;
     std::function<void(std::size_t)> m_onFrame;
+    std::function<double(std::size_t)> m_frameScale;
 };
 
 /// The engine the pilots run on: as a CPU (a pilot of 1024 pixels at a few hundred spp per half) or as a GPU (2^18
@@ -417,6 +423,30 @@ TEST(PilotDecision, AGuardThatStopsTheFinalRoundBeforeItsChallengerLeavesTheDeci
     EXPECT_EQ(measurements(Strategy::of(request.settings)), 4);
     EXPECT_EQ(measurements(theBetterOne()), 3) << "the better one reached the final round";
     EXPECT_EQ(choice.chosen.name(), theBetterOne().name());
+}
+
+TEST(PilotDecision, AFirstMeasurementSlowToWakeDoesNotLengthenTheEstimate)
+{
+    // A render of 400 x 400 at 1024 spp (no time given: the pilot estimates it), 16.4 s of the fake's device. The
+    // first candidate's two halves, right after the 12 candidates' preparation, take 10x their paths' time (a GPU
+    // whose clocks fell while the host compiled): the estimate stays the probe's, not 10x it, and so the budget.
+    constexpr std::size_t kFirstHalf = 4 + 12; // the probe's frames, the candidates prepared
+    const Scene scene = makeScene("cornell-box-lights");
+    NoiseEngine engine([](const RenderSettings&) { return 1.0; }, kCpuLike.concurrentPaths, kCpuLike.secondsPerPath);
+    engine.setScene(scene);
+    RenderRequest request = pilotRequest(scene);
+    const double renderSeconds = 400.0 * 400.0 * 1024.0 * kCpuLike.secondsPerPath;
+    const AutoChoice steady = chooseStrategy(engine, request, twelveCandidates());
+    EXPECT_NEAR(steady.estimatedRenderSeconds, renderSeconds, 0.05 * renderSeconds);
+    const std::size_t begun = engine.frames().size();
+    engine.setFrameScale([&](std::size_t frame) {
+        return frame == begun + kFirstHalf || frame == begun + kFirstHalf + 1 ? 10.0 : 1.0;
+    });
+    const AutoChoice slow = chooseStrategy(engine, request, twelveCandidates());
+    ASSERT_EQ(slow.rows.front().strategy, Strategy::of(request.settings)) << "the first candidate is the own";
+    EXPECT_NEAR(slow.estimatedRenderSeconds, renderSeconds, 0.05 * renderSeconds)
+        << "the probe's estimate " << slow.cost.ms(400.0 * 400.0, 1024.0) * 1e-3 << " s";
+    EXPECT_NEAR(slow.budgetSeconds, steady.budgetSeconds, 0.05 * steady.budgetSeconds);
 }
 
 TEST(PilotDecision, ARenderHeldToATimeIsPilotedAtTheSppItsTimeGives)
