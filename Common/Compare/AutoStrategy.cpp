@@ -600,8 +600,8 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             // overestimated a 1 s render 2.7x on 2 cores), hence the render's time and the budget. Never above the
             // probe's estimate: both err long (small frames; a device slow to wake), and the first measurement
             // after the candidates' preparation can meet a GPU whose clocks fell while the host compiled (an
-            // H200, 11 s of cold compiles: the render estimated at 66.6 s against the probe's 25 s, the strategy it chose
-            // rendered in 8.5 s).
+            // H200, 11 s of cold compiles: the render estimated at 66.6 s against the probe's 25 s, the strategy
+            // it chose rendered in 8.5 s).
             const double halfMs = std::min(a.ms(), b.ms());
             const double paths = pixelsOf(half.settings) * half.settings.trueSpp();
             RenderCost measuredCost = cost;

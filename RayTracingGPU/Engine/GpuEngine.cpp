@@ -4,7 +4,6 @@
 #include <chrono>
 #include <functional>
 #include <map>
-#include <optional>
 #include <tuple>
 
 #include <spdlog/fmt/fmt.h>
@@ -65,10 +64,10 @@ struct GpuEngine::Impl
     GpuIntegrator integrator = GpuIntegrator::Megakernel; // the frame's (SceneTracer::integratorFor)
     std::map<std::string, double> frameStages; // stageSeconds() of the frame
     std::unique_ptr<WaveStageTimer> waveTimer; // made at the first wavefront launch on a device with timestamps
-    std::uint32_t waveSegments = kFirstWaveSegments; // the wavefront's first submission per wave: its segments
-    /// What the last wave needed, per kind of path of the scene (WaveKind): a frame starts from it. Begun anew at
-    /// kFirstWaveSegments, the first wave of every frame (a pilot has 54, of 2-13 ms each on an H200) waited on up
-    /// to six more submissions of eight segments, the host reading the queue's count before each.
+    /// The wavefront's first submission per wave, its segments: what the last wave of the scene's same kind of path
+    /// (WaveKind) needed, kFirstWaveSegments before any. Begun anew at each frame, the first wave of every frame (a
+    /// pilot has 54, of 2-13 ms each on an H200) waited on up to six more submissions of eight segments, the host
+    /// reading the queue's count before each.
     using WaveKind = std::tuple<int, Estimator, RussianRoulette>; // depth, estimator, roulette: the paths' length
     std::map<WaveKind, std::uint32_t> learnedWaveSegments;
     WaveKind waveKind{};
@@ -195,7 +194,8 @@ struct GpuEngine::Impl
         const Wave* unfinished = nullptr; // the wave whose sums the next submission records first
         for (const Wave& wave : waves)
         {
-            std::uint32_t last = std::min(depth, waveSegments);
+            std::uint32_t& learned = learnedWaveSegments.try_emplace(waveKind, kFirstWaveSegments).first->second;
+            std::uint32_t last = std::min(depth, learned);
             submit([&](WavefrontPipeline::Recorder& r) {
                 if (unfinished)
                     r.finish(*unfinished);
@@ -209,8 +209,7 @@ struct GpuEngine::Impl
                 submit([&](WavefrontPipeline::Recorder& r) { r.segments(wave, last, next); });
                 last = next;
             }
-            waveSegments = std::max(buffers.readCounters().segments, 1u);
-            learnedWaveSegments[waveKind] = waveSegments;
+            learned = std::max(buffers.readCounters().segments, 1u);
         }
         if (unfinished)
             submit([&](WavefrontPipeline::Recorder& r) { r.finish(*unfinished); });
@@ -479,12 +478,10 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     e.target->reset(e.uniforms);
     e.clear();
     e.waveKind = {settings.depth, settings.estimator, settings.russianRoulette};
-    const auto learned = e.learnedWaveSegments.find(e.waveKind);
-    const std::optional<std::uint32_t> learnedSegments =
-        learned != e.learnedWaveSegments.end() ? std::optional(learned->second) : std::nullopt;
-    e.waveSegments = learnedSegments.value_or(kFirstWaveSegments);
     if (compiled)
     {
+        // The render plans its first wave as with a cached pipeline, not by the warm-up row's paths.
+        const auto learnedBefore = e.learnedWaveSegments;
         // A driver may finish a new pipeline's compilation at its first launch (lavapipe: a 16-px render took
         // 1.6 s at first use against 0.009 s cached; restir-di's three passes 7.6 s at 96 px in the CPU window):
         // one row of one sample keeps that in the compilation's time too. Its sums, counters and reservoirs are
@@ -497,12 +494,7 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
         e.target->reset(e.uniforms);
         e.clear();
         e.restirHistory = false;
-        // The render plans its first wave as with a cached pipeline, not by that row's paths.
-        e.waveSegments = learnedSegments.value_or(kFirstWaveSegments);
-        if (learnedSegments)
-            e.learnedWaveSegments[e.waveKind] = *learnedSegments;
-        else
-            e.learnedWaveSegments.erase(e.waveKind);
+        e.learnedWaveSegments = learnedBefore;
     }
     if (compiled) // a frame whose pipelines were all compiled before has no compilation to tell
         e.frameStages["pipeline_host"] =
