@@ -856,6 +856,21 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "RECHECK_ONLY=1 IMAGES=<the row above's images> bash tests/Bench/auto_strategy.sh build/bin \\\n"
                   "    docs/results/cpu-auto-strategy-4s-1129b multi 128 4000 2 16384 cornell-box-lights", "## 38.",
                   "2026-11-29"),
+                 ("h200-auto-strategy-10s-1129b", "NVIDIA H200, driver 580",
+                  "600 px wide, each strategy for 10 s, 1 seed for the full comparison, 4 recheck seeds; this "
+                  "session's build (8109ba9: the scoring 4x faster, the final round's fallback, the equal-time row's "
+                  "spp cap, the first measurement's estimate capped by the probe's, the wavefront's first wave from "
+                  "the learned segments)",
+                  "LEAN=1 bash tests/Bench/device_carry.sh  # then on the device, one scene a run:\n"
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=10000 SEEDS=1 REF_SPP=65536 SCENES=glossy-cornell \\\n"
+                  "    bash tests/Bench/device_run.sh auto  # and SCENES=cornell-box-lights", "## 39.", "2026-11-29"),
+                 ("h200-auto-strategy-5s-1129", "NVIDIA H200, driver 580",
+                  "the same build, each strategy for 5 s: the scenes of one light, where the own is the best and auto "
+                  "pays its pilot (5 % of the time) for keeping it",
+                  "LEAN=1 bash tests/Bench/device_carry.sh  # then on the device:\n"
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=5000 SEEDS=1 REF_SPP=65536 \\\n"
+                  "    SCENES=\"rect-light-closeup sphere-light-closeup\" bash tests/Bench/device_run.sh auto", "## 39.",
+                  "2026-11-29"),
                  ("h200-auto-strategy-10s-1129", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 10 s, 1 seed for the full comparison, 4 recheck seeds: glossy-cornell "
                   "after the pilot's scoring was made 4x faster on the host and a guard passed before the final "
