@@ -23,6 +23,7 @@ vec3 traceRadiance(vec3 origin, vec3 direction, inout Rng rng)
         traceToFirstHit(path.origin, path.direction, segment == 0u);
         ShadowRay shadow;
         bool goesOn = shadePathVertex(path, segment, payload, shadow, false);
+        countLightSample(shadow.lightSample);
         if (shadow.pending && unoccluded(shadow.origin, shadow.direction, shadow.distance))
             path.radiance += shadow.contribution;
         if (!goesOn)

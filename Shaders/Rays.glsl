@@ -8,9 +8,12 @@
 const float kRayTMax = 3.0e38;
 
 #include "RayCount.glsl"
+#include "Shared/Lights/LightSample.h"
 
-// This invocation's rays by kind (kRayCamera, kRayExtension, kRayShadow) since it began, for flushRayCounts.
+// This invocation's rays by kind (kRayCamera, kRayExtension, kRayShadow) and NEE's light samples by outcome
+// (drawn, fallback, declined: kCountLight*) since it began, for flushRayCounts.
 uvec3 tracedRays = uvec3(0u);
+uvec3 lightSamples = uvec3(0u);
 
 /// Counts one ray of `kind` where the render counts rays (--count-rays) and the wavefront does not count its
 /// queues instead; nothing at all (the constants fold it away) elsewhere.
@@ -20,15 +23,26 @@ void countRay(uint kind)
         tracedRays[kind] += 1u;
 }
 
-/// Adds this invocation's counted rays to RayCounters: the last thing every ray-generation shader that traces does
-/// (the wavefront's rays are counted by Prepare.comp).
+/// Counts a vertex's light sample (ShadowRay::lightSample, Shared/PathState.h) as countRay counts rays.
+void countLightSample(uint lightSample)
+{
+    if (settingCountRays() && !kWavefront)
+        lightSamples += uvec3(notEqual(uvec3(lightSample) & uvec3(kLightSampleDrawn, kLightSampleFallback,
+                                                                  kLightSampleDeclined), uvec3(0u)));
+}
+
+/// Adds this invocation's counted rays and light samples to TraceCounters: the last thing every ray-generation
+/// shader that traces does (the wavefront's are counted by Prepare.comp and Shade.comp).
 void flushRayCounts()
 {
     if (!settingCountRays() || kWavefront)
         return;
     for (uint kind = 0u; kind < kRayKinds; ++kind)
         if (tracedRays[kind] > 0u)
-            addRays(gl_LaunchIDEXT.x, kind, tracedRays[kind]);
+            addCount(gl_LaunchIDEXT.x, kind, tracedRays[kind]);
+    for (uint outcome = 0u; outcome < 3u; ++outcome)
+        if (lightSamples[outcome] > 0u)
+            addCount(gl_LaunchIDEXT.x, kCountLightDrawn + outcome, lightSamples[outcome]);
 }
 
 /// Traces the path ray (origin, direction) into `payload`: its closest hit, or the background (Background.rmiss).

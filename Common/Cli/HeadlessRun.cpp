@@ -143,6 +143,7 @@ void mergeShares(std::vector<double> sums, cluster::Job& job, const cluster::Ver
     st.trueSpp = static_cast<int>(frameSamples);
     st.paths = st.nanSamples = st.infSamples = 0;
     st.rays = {};
+    st.lightSamples = {};
     st.raysCounted = !verdict.ranks.empty();
     st.threadsUsed = 0;
     st.renderSeconds = 0.0;
@@ -152,7 +153,10 @@ void mergeShares(std::vector<double> sums, cluster::Job& job, const cluster::Ver
         // The job's rays are every rank's, counted only where every rank counted them.
         st.raysCounted = st.raysCounted && r.contains("rays");
         if (r.contains("rays"))
+        {
             st.rays += rayCountsFromJson(r.at("rays"));
+            st.lightSamples += lightSampleCountsFromJson(r.at("light_samples"));
+        }
         st.nanSamples += r.at("nan_samples").get<std::uint64_t>();
         st.infSamples += r.at("inf_samples").get<std::uint64_t>();
         st.threadsUsed += r.at("threads_used").get<int>();
@@ -315,10 +319,15 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& a
     std::string setup = fmt::format("{:.3f} s", s.buildSeconds);
     if (const auto compile = s.stageSeconds.find("pipeline_host"); compile != s.stageSeconds.end())
         setup += fmt::format(", pipelines {:.3f} s", compile->second);
-    const std::string rays = s.raysCounted ? fmt::format(" ({:.2f} Mrays/s: camera {:.2f}, extension {:.2f}, shadow {:.2f})",
-                                                          s.mraysPerSecond(s.rays.total()), s.mraysPerSecond(s.rays.camera),
-                                                          s.mraysPerSecond(s.rays.extension), s.mraysPerSecond(s.rays.shadow))
-                                           : std::string();
+    std::string rays = s.raysCounted ? fmt::format(" ({:.2f} Mrays/s: camera {:.2f}, extension {:.2f}, shadow {:.2f})",
+                                                    s.mraysPerSecond(s.rays.total()), s.mraysPerSecond(s.rays.camera),
+                                                    s.mraysPerSecond(s.rays.extension), s.mraysPerSecond(s.rays.shadow))
+                                     : std::string();
+    // The samplers' shortcuts are said where they were taken (LightSample.h): share of NEE's samples.
+    const LightSampleCounts& ls = s.lightSamples;
+    if (s.raysCounted && ls.drawn > 0 && ls.fallback + ls.declined > 0)
+        rays += fmt::format(", light samples {:.2f} % by a fallback sampler, {:.2g} % declined",
+                            100.0 * double(ls.fallback) / double(ls.drawn), 100.0 * double(ls.declined) / double(ls.drawn));
     std::printf("%s: %dx%d, %d spp (%s, %s), depth %d, %s engine%s: render %.3f s, build %s, %.2f Mpaths/s%s, "
                 "NaN %llu, Inf %llu%s\n",
                 request.scene.id.c_str(), s.width, s.height, s.trueSpp, toString(settings.sampling), estimatorLabel(settings).c_str(),

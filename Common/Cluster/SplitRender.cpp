@@ -236,7 +236,10 @@ nlohmann::json rankStats(const Job& job, const FramePart& share, const RenderSta
     if (stats.gpuSeconds >= 0.0)
         j["gpu_seconds"] = stats.gpuSeconds;
     if (stats.raysCounted)
+    {
         j["rays"] = toJson(stats.rays, stats.renderSeconds);
+        j["light_samples"] = toJson(stats.lightSamples);
+    }
     return j;
 }
 } // namespace rt::cluster

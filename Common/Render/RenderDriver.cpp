@@ -99,6 +99,7 @@ RenderResult render(RenderEngine& engine, const RenderRequest& request, RenderCo
     st.gpuSeconds = deviceTimed ? deviceSeconds : -1.0;
     st.paths = pixels * samplesDone;
     st.rays = tally.rays;
+    st.lightSamples = tally.lightSamples;
     st.raysCounted = tally.raysCounted;
     st.nanSamples = tally.nanSamples;
     st.infSamples = tally.infSamples;

@@ -12,6 +12,7 @@
 
 #include "Image/Image.h"
 #include "Render/CostMap.h"
+#include "Render/LightSampleCounts.h"
 #include "Render/RayCounts.h"
 #include "Render/RenderControl.h"
 #include "Render/RenderSettings.h"
@@ -23,6 +24,7 @@ namespace rt
 struct SampleTally
 {
     RayCounts rays; // rays traced, by kind
+    LightSampleCounts lightSamples; // NEE's light samples by outcome, counted with the rays
     bool raysCounted = false; // false: the engine did not count them (the GPU engine without --count-rays)
     std::uint64_t nanSamples = 0; // camera samples whose radiance had a NaN (dropped from the accumulator)
     std::uint64_t infSamples = 0; // ... or an infinity

@@ -33,6 +33,7 @@ nlohmann::json RenderStats::toJson() const
         j["segments"] = segments;
         j["segments_per_path"] = paths ? double(segments) / double(paths) : 0.0;
         j["rays"] = rt::toJson(rays, renderSeconds);
+        j["light_samples"] = rt::toJson(lightSamples);
     }
     j["nan_samples"] = nanSamples;
     j["inf_samples"] = infSamples;

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "Render/LightSampleCounts.h"
 #include "Render/RayCounts.h"
 #include "Render/RenderRequest.h"
 
@@ -28,6 +29,7 @@ struct RenderStats
     double gpuSeconds = -1.0; // tracing only, the device's own clock (GPU timestamp queries); < 0: none
     std::uint64_t paths = 0; // camera paths traced (pixels x true spp)
     RayCounts rays; // rays traced by kind (the camera ray and the extension rays are a path's segments)
+    LightSampleCounts lightSamples; // NEE's light samples by outcome (fallback, declined), counted with the rays
     bool raysCounted = false; // false: the engine did not count them (the GPU engine without --count-rays)
     std::uint64_t nanSamples = 0; // camera samples whose radiance had a NaN (dropped from the image)
     std::uint64_t infSamples = 0; // ... or an infinity

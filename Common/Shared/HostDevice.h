@@ -260,7 +260,7 @@ struct RenderUniforms
     uint restirSpatial; // restir-di: neighbours of spatial reuse per pixel and iteration (k)
     uint restirBiased; // restir-di: 1: the biased combination (1 / sum of M), without the neighbours' shadow rays
     uint restirTemporalCap; // restir-di: the last iteration's M capped at this many times restirCandidates; 0: none
-    uint countRays; // 1: count the rays traced by kind in RayCounters (GPU, --count-rays)
+    uint countRays; // 1: count the rays traced by kind in TraceCounters (GPU, --count-rays)
     uint pad1;
     uint pad2;
 };
@@ -334,7 +334,7 @@ RT_CONST(uint, kBindingRestirSurfaces, 24u)   // RestirSurface[width * height]: 
 RT_CONST(uint, kBindingRestirTemporal, 25u)   // Reservoir[width * height]: after candidates and temporal reuse
 RT_CONST(uint, kBindingRestirFinal, 26u)      // Reservoir[width * height]: after spatial reuse, the next history
 RT_CONST(uint, kBindingRestirTraced, 27u)     // uvec2[width * height]: the camera sample a restir ray is traced as
-RT_CONST(uint, kBindingRayCounters, 28u)      // RayCounters: rays traced by kind (--count-rays)
+RT_CONST(uint, kBindingTraceCounters, 28u)      // TraceCounters: rays by kind, light samples by outcome (--count-rays)
 RT_CONST(uint, kBindingImages, 29u)           // sampler2D[]: the scene's images, 8-bit sRGB
 RT_CONST(uint, kBindingCount, 30u)
 // The mixture's pdf reads every light at every vertex, all threads the same light at once: from a uniform
@@ -383,7 +383,7 @@ RT_CONST(uint, kSpecIdExactSphereC, 5u)
 // acos and atan, a mesh's uv interpolation. Not a feature bit either, so that the mixture's pipelines set it
 // too: computing the uv cost the light book scenes and furnace 1-6 % on an H200 (§8.10).
 RT_CONST(uint, kSpecIdHitUv, 6u)
-// RenderUniforms::countRays: 1 counts every ray traced in RayCounters (--count-rays); 0, the default, leaves the
+// RenderUniforms::countRays: 1 counts every ray traced in TraceCounters (--count-rays); 0, the default, leaves the
 // counting code out of the pipeline.
 RT_CONST(uint, kSpecIdCountRays, 7u)
 RT_CONST(uint, kSpecIdCount, 8u)
@@ -523,21 +523,27 @@ struct SampleCounters
     uint infSamples;
 };
 
-// RayCounters: the rays of each kind (Render/RayCounts.h) as 64-bit counts of two words, low and high, which 32-bit
-// atomics keep (the invocation whose add wraps the low word carries one into the high word), so that no device
-// needs 64-bit atomics. Each kind has kRayCounterSlots such counts, an invocation adding to the slot of its launch
-// column: the invocations of a subgroup add to different addresses instead of queueing on one. Device-local (an
-// atomic over PCIe per ray would be the render's cost); the host sums the slots.
+// TraceCounters (--count-rays): the rays of each kind (Render/RayCounts.h) and NEE's light samples by outcome
+// (Render/LightSampleCounts.h) as 64-bit counts of two words, low and high, which 32-bit atomics keep (the
+// invocation whose add wraps the low word carries one into the high word), so that no device needs 64-bit atomics.
+// Each kind has kTraceCounterSlots such counts, an invocation adding to the slot of its launch column (the
+// wavefront's Shade.comp: of its workgroup; Prepare.comp: slot 0): the invocations of a subgroup add to different
+// addresses instead of queueing on one. Device-local (an atomic over
+// PCIe per ray would be the render's cost); the host sums the slots.
 RT_CONST(uint, kRayCamera, 0u)
 RT_CONST(uint, kRayExtension, 1u)
 RT_CONST(uint, kRayShadow, 2u)
 RT_CONST(uint, kRayKinds, 3u)
-RT_CONST(uint, kRayCounterSlots, 32u)
-RT_CONST(uint, kRayCounterWords, 192u) // kRayCounterSlots x kRayKinds x 2 words: (slot x kRayKinds + kind) x 2 (+ 1: high)
+RT_CONST(uint, kCountLightDrawn, 3u) // NEE's light samples drawn (kLightSampleDrawn)
+RT_CONST(uint, kCountLightFallback, 4u) // ... made by a fallback sampler (kLightSampleFallback)
+RT_CONST(uint, kCountLightDeclined, 5u) // ... declined (kLightSampleDeclined)
+RT_CONST(uint, kCountKinds, 6u)
+RT_CONST(uint, kTraceCounterSlots, 32u)
+RT_CONST(uint, kTraceCounterWords, 384u) // kTraceCounterSlots x kCountKinds x 2 words: (slot x kCountKinds + kind) x 2 (+ 1: high)
 
-struct RayCounters
+struct TraceCounters
 {
-    uint words[kRayCounterWords];
+    uint words[kTraceCounterWords];
 };
 
 // ---- The window of ray-tracing-gpu (RayTracingGPU/App/Gui): heatmap, display pass, raster preview ----------
@@ -598,7 +604,7 @@ static_assert(sizeof(MediumRecord) == 64);
 static_assert(offsetof(MediumRecord, boxMax) == 32);
 static_assert(offsetof(MediumRecord, phaseMaterial) == 48);
 static_assert(sizeof(SampleCounters) == 8);
-static_assert(kRayCounterWords == kRayCounterSlots * kRayKinds * 2 && sizeof(RayCounters) == 4 * kRayCounterWords);
+static_assert(kTraceCounterWords == kTraceCounterSlots * kCountKinds * 2 && sizeof(TraceCounters) == 4 * kTraceCounterWords);
 static_assert(sizeof(CostStats) == 4 * (1 + kCostBuckets));
 static_assert(sizeof(DisplayPushConstants) == 32 && offsetof(DisplayPushConstants, imageOrigin) == 16);
 static_assert(sizeof(PreviewPushConstants) == 80 && offsetof(PreviewPushConstants, eye) == 64);

@@ -70,7 +70,8 @@ RT_FN float lightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3
 }
 
 /// Samples a point of `light` for NEE from p (receiver normal n, or 0 in a medium) with the density
-/// lightPdf(light, strategy, p, n, .) reports (the sample's pdf is that density of its direction).
+/// lightPdf(light, strategy, p, n, .) reports (the sample's pdf is that density of its direction); ls.outcome
+/// says whether a fallback sampler made it and whether it was declined (Lights/LightSample.h).
 RT_FN bool sampleLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec2 u,
                        RT_OUT(LightSample) ls)
 {
@@ -83,8 +84,11 @@ RT_FN bool sampleLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, ve
             clearLightSample(light, ls);
             return false;
         }
-        return projectedPolygonApplies(g) ? sampleProjectedPolygonLight(light, g, p, n, u, ls)
-                                          : samplePlanarLight(light, p, u, ls);
+        if (projectedPolygonApplies(g))
+            return sampleProjectedPolygonLight(light, g, p, n, u, ls);
+        const bool sampled = samplePlanarLight(light, p, u, ls);
+        ls.outcome |= kLightSampleFallback;
+        return sampled;
     }
     if (RT_LIGHT_IS(light.shape, Sphere))
         return sampleSphereLight(light, strategy, p, n, u, ls);

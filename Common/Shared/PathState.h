@@ -55,6 +55,9 @@ struct ShadowRay
     vec3 direction; // unit
     float distance;
     vec3 contribution;
+    // NEE's light sample at the vertex, for the stats: kLightSampleDrawn with the sample's outcome
+    // (Lights/LightSample.h: made by a fallback sampler, declined), 0 when the vertex drew none.
+    uint lightSample;
 };
 
 /// The hit a material scatters at.

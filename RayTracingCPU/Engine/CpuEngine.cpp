@@ -192,7 +192,7 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
                 const std::uint64_t j = first + i;
                 jobs[i] = cameraJob(camera, media, std::uint32_t(j / count), std::uint32_t(y), firstSample + std::uint32_t(j % count));
             }
-            trace(scene, uniforms, std::span<const PathJob>(jobs, n), radiance, t.rays);
+            trace(scene, uniforms, std::span<const PathJob>(jobs, n), radiance, t.counts);
             if (cost)
                 cost[first / count] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             for (std::uint32_t i = 0; i < n; ++i)
@@ -247,7 +247,7 @@ BatchResult CpuEngine::traceRestir(std::uint32_t firstSample, std::uint32_t coun
                 return;
             RestirRowTally t;
             restirCandidatesRow(scene, uniforms, buffers, y, s, t);
-            f.rows[y].rays += t.rays;
+            f.rows[y].counts += t.counts;
         });
         if (control.cancelRequested())
         {
@@ -262,7 +262,7 @@ BatchResult CpuEngine::traceRestir(std::uint32_t firstSample, std::uint32_t coun
             RestirRowTally t;
             std::vector<vec3> radiance(std::size_t(f.width));
             restirShadeRow(scene, uniforms, buffers, y, s, radiance.data(), t);
-            tally.rays += t.rays;
+            tally.counts += t.counts;
             const std::size_t rowStart = std::size_t(y) * std::size_t(f.width);
             for (int x = 0; x < f.width; ++x)
             {
@@ -334,11 +334,12 @@ SampleTally CpuEngine::tally() const
     SampleTally total;
     if (!m_frame)
         return total;
-    total.raysCounted = true; // always: a count per traced ray, next to its traversal, costs nothing measurable
+    total.raysCounted = true; // always: a count per traced ray (and light sample) costs nothing measurable
     std::unordered_set<std::size_t> threads;
     for (const RowTally& t : m_frame->rows)
     {
-        total.rays += t.rays;
+        total.rays += t.counts.rays;
+        total.lightSamples += t.counts.lightSamples;
         total.nanSamples += t.nan;
         total.infSamples += t.inf;
         if (t.thread)

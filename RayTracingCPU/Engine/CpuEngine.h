@@ -65,7 +65,7 @@ private:
     /// Per-row tallies, written by exactly one task at a time: no atomics on the hot path, summed by tally().
     struct RowTally
     {
-        RayCounts rays;
+        TraceCounts counts;
         std::uint64_t nan = 0;
         std::uint64_t inf = 0;
         std::size_t thread = 0; // hash of the thread that traced the row last

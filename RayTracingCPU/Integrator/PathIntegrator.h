@@ -12,7 +12,7 @@
 #include <span>
 
 #include "Integrator/CpuShading.h"
-#include "Render/RayCounts.h"
+#include "Integrator/TraceCounts.h"
 #include "Render/RenderSettings.h"
 #include "Engine/CpuScene.h"
 #include "Shared/Medium.h"
@@ -50,10 +50,10 @@ RT_FLATTEN inline PathJob cameraJob(CpuShading<PathCode{}>& shading, bool media,
 }
 
 /// Counts the path ray of segment `segment`: its camera ray (0) or an extension ray (without a branch).
-inline void countPathRay(RayCounts& rays, std::uint32_t segment)
+inline void countPathRay(TraceCounts& counts, std::uint32_t segment)
 {
-    rays.camera += segment == 0;
-    rays.extension += segment != 0;
+    counts.rays.camera += segment == 0;
+    counts.rays.extension += segment != 0;
 }
 
 /// The hit of `ray` (`found` false: it left the scene) as the shared vertex reads it.
@@ -77,17 +77,19 @@ inline shader::HitPayload hitPayload(const CpuScene& cs, const Ray& ray, bool fo
 
 /// What the path does at `payload`, the hit of its ray: the shared vertex (`directResampled`: restir-di's
 /// resampled vertex, Shared/Shading/PathVertex.h), then its shadow ray if it sampled a light. Returns false when
-/// the path ends (path.radiance is then its estimate). `rays` counts the shadow ray it traces.
+/// the path ends (path.radiance is then its estimate). `counts` counts the shadow ray it traces and NEE's light
+/// sample.
 template <PathCode C>
 inline bool continuePath(CpuShading<C>& shading, const CpuScene& cs, shader::PathState& path, const PathJob& job,
                          std::uint32_t segment, const shader::HitPayload& payload, bool directResampled,
-                         RayCounts& rays)
+                         TraceCounts& counts)
 {
     shader::ShadowRay shadow{}; // its fields but pending are set only when pending, which GCC cannot follow
     const bool goesOn = shading.shadePathVertex(path, segment, payload, shadow, directResampled);
+    countLightSample(counts.lightSamples, shadow.lightSample);
     if (shadow.pending)
     {
-        ++rays.shadow;
+        ++counts.rays.shadow;
         if (!cs.occluded(TraceRay(Ray{shadow.origin, shadow.direction, job.ray.time}, cs.rayNeeds()), 0.0f, shadow.distance,
                          job.mediumSeed))
             path.radiance += shadow.contribution;
@@ -98,39 +100,39 @@ inline bool continuePath(CpuShading<C>& shading, const CpuScene& cs, shader::Pat
 /// continuePath at the hit of the path's ray (`found` false: the ray left the scene), no vertex resampled.
 template <PathCode C>
 inline bool continuePath(CpuShading<C>& shading, const CpuScene& cs, shader::PathState& path, const PathJob& job,
-                         std::uint32_t segment, bool found, const HitRecord& hit, RayCounts& rays)
+                         std::uint32_t segment, bool found, const HitRecord& hit, TraceCounts& counts)
 {
     return continuePath<C>(shading, cs, path, job, segment,
-                           hitPayload(cs, Ray{path.origin, path.direction, job.ray.time}, found, hit), false, rays);
+                           hitPayload(cs, Ray{path.origin, path.direction, job.ray.time}, found, hit), false, counts);
 }
 
-/// Traces the path of `job` to its end and returns its radiance (linear RGB). `rays` counts the rays it traces.
+/// Traces the path of `job` to its end and returns its radiance (linear RGB). `counts` counts what it traces.
 template <PathCode C>
-inline vec3 tracePath(CpuShading<C>& shading, const CpuScene& cs, const PathJob& job, RayCounts& rays)
+inline vec3 tracePath(CpuShading<C>& shading, const CpuScene& cs, const PathJob& job, TraceCounts& counts)
 {
     shader::PathState path = shader::startPath(job.ray.origin, job.ray.direction, job.rng);
     const TraceRay::Needs needs = cs.rayNeeds();
     for (std::uint32_t segment = 0; segment < shading.uniforms.depth; ++segment)
     {
         HitRecord hit{};
-        countPathRay(rays, segment);
+        countPathRay(counts, segment);
         const bool found = cs.intersect(TraceRay(Ray{path.origin, path.direction, job.ray.time}, needs), 0.0f, kInfinity,
                                         hit, job.mediumSeed);
-        if (!continuePath<C>(shading, cs, path, job, segment, found, hit, rays))
+        if (!continuePath<C>(shading, cs, path, job, segment, found, hit, counts))
             break;
     }
     return path.radiance;
 }
 
 /// Traces every job's path, one after the other, and writes job i's radiance (linear RGB) to radiance[i].
-/// `rays` counts the rays traced. An instance other than the general one must
+/// `counts` counts the rays traced and NEE's light samples. An instance other than the general one must
 /// match the scene and the uniforms (Integrator/PathVariants.h).
 template <PathCode C = PathCode{}>
 RT_FLATTEN inline void traceJobs(const CpuScene& cs, const shader::RenderUniforms& uniforms, std::span<const PathJob> jobs,
-                                 vec3* radiance, RayCounts& rays)
+                                 vec3* radiance, TraceCounts& counts)
 {
     CpuShading<C> shading(cs, uniforms);
     for (std::size_t i = 0; i < jobs.size(); ++i)
-        radiance[i] = tracePath(shading, cs, jobs[i], rays);
+        radiance[i] = tracePath(shading, cs, jobs[i], counts);
 }
 } // namespace rt::cpu

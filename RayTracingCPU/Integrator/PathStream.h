@@ -23,7 +23,7 @@ namespace detail
 /// makes them (a scene of one leaf): two loops, as the second's bookkeeping cost the one-leaf scenes 3-9 %.
 template <PathCode C, bool ShadowLanes>
 RT_FLATTEN inline void traceLanes(const CpuScene& cs, const shader::RenderUniforms& uniforms,
-                                  std::span<const PathJob> jobs, vec3* radiance, RayCounts& counts)
+                                  std::span<const PathJob> jobs, vec3* radiance, TraceCounts& counts)
 {
     CpuShading<C> shading(cs, uniforms);
     shader::PathState paths[kLanes];
@@ -107,9 +107,10 @@ RT_FLATTEN inline void traceLanes(const CpuScene& cs, const shader::RenderUnifor
                 hitPayload(cs, Ray{path.origin, path.direction, pathJob.ray.time}, hits[lane].prim != kNoIndex, hits[lane]);
             shader::ShadowRay shadow{}; // its fields but pending are set only when pending, which GCC cannot follow
             const bool goesOn = shading.shadePathVertex(path, segmentOf[lane]++, payload, shadow, false);
+            countLightSample(counts.lightSamples, shadow.lightSample);
             if (shadow.pending)
             {
-                ++counts.shadow;
+                ++counts.rays.shadow;
                 shadowRays.set(lane, TraceRay(Ray{shadow.origin, shadow.direction, pathJob.ray.time}, needs));
                 shadowDistance[lane] = shadow.distance;
                 shadowLight[lane] = shadow.contribution;
@@ -145,10 +146,10 @@ RT_FLATTEN inline void traceLanes(const CpuScene& cs, const shader::RenderUnifor
 } // namespace detail
 
 /// Traces every job's path and writes job i's radiance (linear RGB) to radiance[i]. `counts` counts the rays
-/// traced. Precondition: cs.tracesRayLanes(); C matches the scene and uniforms as tracePath's must.
+/// traced and NEE's light samples. Precondition: cs.tracesRayLanes(); C matches the scene and uniforms as tracePath's must.
 template <PathCode C = PathCode{}>
 inline void tracePaths(const CpuScene& cs, const shader::RenderUniforms& uniforms, std::span<const PathJob> jobs,
-                       vec3* radiance, RayCounts& counts)
+                       vec3* radiance, TraceCounts& counts)
 {
     if (cs.bvh4().rootIsLeaf)
         detail::traceLanes<C, false>(cs, uniforms, jobs, radiance, counts);

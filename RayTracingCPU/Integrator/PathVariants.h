@@ -15,7 +15,7 @@
 namespace rt::cpu
 {
 using TracePathsFn = void (*)(const CpuScene&, const shader::RenderUniforms&, std::span<const PathJob>, vec3*,
-                              RayCounts&);
+                              TraceCounts&);
 
 struct PathVariant
 {

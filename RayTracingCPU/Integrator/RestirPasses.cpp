@@ -48,7 +48,7 @@ shader::RestirSurface findSurface(PassContext& c, const PathJob& job, shader::Pa
     for (segment = 0; segment < c.uniforms.depth; ++segment)
     {
         HitRecord hit{};
-        countPathRay(tally.rays, segment);
+        countPathRay(tally.counts, segment);
         const bool found = c.scene.intersect(TraceRay(Ray{path.origin, path.direction, job.ray.time}, needs), 0.0f,
                                              kInfinity, hit, job.mediumSeed);
         const shader::HitPayload payload =
@@ -137,7 +137,7 @@ void restirCandidatesRow(const CpuScene& scene, const shader::RenderUniforms& un
         }
         buffers.temporal[i] = n == 1 ? r : c.combine(inputs, n, rng);
     }
-    tally.rays.shadow += c.shading.restirShadowRays;
+    tally.counts.rays.shadow += c.shading.restirShadowRays;
 }
 
 void restirShadeRow(const CpuScene& scene, const shader::RenderUniforms& uniforms, RestirBuffers& buffers, int y,
@@ -193,7 +193,7 @@ void restirShadeRow(const CpuScene& scene, const shader::RenderUniforms& uniform
         for (std::uint32_t segment = 0; segment < uniforms.depth; ++segment)
         {
             HitRecord hit{};
-            countPathRay(tally.rays, segment);
+            countPathRay(tally.counts, segment);
             const bool found = scene.intersect(TraceRay(Ray{path.origin, path.direction, job.ray.time}, needs), 0.0f,
                                                kInfinity, hit, job.mediumSeed);
             const shader::HitPayload payload =
@@ -203,7 +203,7 @@ void restirShadeRow(const CpuScene& scene, const shader::RenderUniforms& uniform
             if (here && final.weight > 0.0f)
                 direct = path.beta * c.shading.restirIntegrand(inputs[0].vertex, final.light, final.point) * final.weight;
             // No shadow ray is pending at the resampled vertex: `direct` is added after its emission, as NEE's would be.
-            const bool goesOn = continuePath(c.shading, scene, path, job, segment, payload, here, tally.rays);
+            const bool goesOn = continuePath(c.shading, scene, path, job, segment, payload, here, tally.counts);
             path.radiance += direct;
             resampled = resampled || here;
             if (!goesOn)
@@ -211,6 +211,6 @@ void restirShadeRow(const CpuScene& scene, const shader::RenderUniforms& uniform
         }
         radiance[x] = path.radiance;
     }
-    tally.rays.shadow += c.shading.restirShadowRays;
+    tally.counts.rays.shadow += c.shading.restirShadowRays;
 }
 } // namespace rt::cpu

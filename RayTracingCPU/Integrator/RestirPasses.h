@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "Engine/CpuScene.h"
-#include "Render/RayCounts.h"
+#include "Integrator/TraceCounts.h"
 #include "Shared/HostDevice.h"
 #include "Shared/Restir.h"
 
@@ -41,7 +41,7 @@ struct RestirBuffers
 /// What a row of a pass traced, for the engine's tally.
 struct RestirRowTally
 {
-    RayCounts rays;
+    TraceCounts counts;
 };
 
 /// Pass 1 for row y of sample `sampleIndex`.

@@ -193,9 +193,10 @@ int main(int argc, char** argv)
     bool countRays = false;
     app.add_flag("--count-rays", countRays,
                  "Headless and --compare: count the rays traced by kind (camera, extension, shadow) and report them "
-                 "per second in the summary line, --stats (\"rays\") and --compare's CSV. The counting is a "
-                 "specialization constant: off, the pipelines hold none of it; on, it cost 0.94-1.07x of the time "
-                 "on the H100 and leaves the image bit for bit (docs/GPU.md)");
+                 "per second in the summary line, --stats (\"rays\") and --compare's CSV; and NEE's light samples by "
+                 "outcome (drawn, made by a fallback sampler, declined: --stats' \"light_samples\"). The counting is a "
+                 "specialization constant: off, the pipelines hold none of it; on, the rays cost 0.94-1.07x of the "
+                 "time on the H100, the light samples 3-4 % more on the H200's cornell-box-lights (docs/GPU.md)");
     std::string shaderDir;
     app.add_option("--shader-dir", shaderDir,
                    "Load the SPIR-V shaders from this folder instead of the 'shaders' folder beside the app (the same "

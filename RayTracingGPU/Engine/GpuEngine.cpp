@@ -637,8 +637,9 @@ SampleTally GpuEngine::tally() const
     if (e.uniforms.countRays != 0u)
     {
         vk::submitAndWait(e.device(), e.context.commandPool(),
-                          [&](VkCommandBuffer cmd) { e.target->recordRayCountersReadback(cmd); });
+                          [&](VkCommandBuffer cmd) { e.target->recordTraceCountersReadback(cmd); });
         t.rays = e.target->readRayCounts();
+        t.lightSamples = e.target->readLightSampleCounts();
         t.raysCounted = true;
     }
     return t;

@@ -44,7 +44,7 @@ std::vector<vk::DescriptorBinding> bindingsOf(std::uint32_t maxImages)
           kBindingUvs, kBindingTriangles, kBindingTriangleMaterials, kBindingSpheres, kBindingMedia, kBindingCounters,
           kBindingPrimitiveLights, kBindingLightAlias, kBindingLightBvh, kBindingLightBvhLeaves, kBindingWavePaths,
           kBindingWaveQueues, kBindingWaveCounters, kBindingRestirSurfaces, kBindingRestirTemporal, kBindingRestirFinal,
-          kBindingRestirTraced, kBindingRayCounters})
+          kBindingRestirTraced, kBindingTraceCounters})
         add(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     add(kBindingImages, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, maxImages,
         VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT | VK_DESCRIPTOR_BINDING_VARIABLE_DESCRIPTOR_COUNT_BIT);
@@ -193,7 +193,7 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
     bufferInfos.push_back({target.uniforms, 0, VK_WHOLE_SIZE});
     bufferInfos.push_back({target.counters, 0, VK_WHOLE_SIZE});
     bufferInfos.push_back({buffers.mixtureLights.Handle(), 0, VK_WHOLE_SIZE});
-    bufferInfos.push_back({target.rayCounters, 0, VK_WHOLE_SIZE});
+    bufferInfos.push_back({target.traceCounters, 0, VK_WHOLE_SIZE});
     for (const auto& [binding, buffer] : storage)
         bufferInfos.push_back({buffer->Handle(), 0, VK_WHOLE_SIZE});
     std::vector<VkDescriptorImageInfo> imageInfos;
@@ -217,7 +217,7 @@ void PathTracingPipeline::writeDescriptors(const vk::Device& device, VkDescripto
     write(kBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1).pBufferInfo = &bufferInfos[0];
     write(kBindingCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[1];
     write(kBindingMixtureLights, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1).pBufferInfo = &bufferInfos[2];
-    write(kBindingRayCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[3];
+    write(kBindingTraceCounters, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[3];
     for (std::size_t i = 0; i < std::size(storage); ++i)
         write(storage[i].first, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1).pBufferInfo = &bufferInfos[i + 4];
     // A scene without images binds none: the binding is partially bound with a variable count, allocated at 0

@@ -35,14 +35,14 @@ inline constexpr VkShaderStageFlags kPathTracerStages =
     VK_SHADER_STAGE_INTERSECTION_BIT_KHR | VK_SHADER_STAGE_COMPUTE_BIT;
 
 /// Where a render writes: bound to kBindingAccumulation, kBindingCompensation, kBindingUniforms, kBindingCounters
-/// and kBindingRayCounters, and restir-di's buffers to kBindingRestirSurfaces .. kBindingRestirTraced.
+/// and kBindingTraceCounters, and restir-di's buffers to kBindingRestirSurfaces .. kBindingRestirTraced.
 struct TargetBindings
 {
     VkImageView accumulation = VK_NULL_HANDLE; // rgba32f storage image in GENERAL layout
     VkImageView compensation = VK_NULL_HANDLE; // rgba32f storage image in GENERAL layout, the sum's Kahan term
     VkBuffer uniforms = VK_NULL_HANDLE; // RenderUniforms
     VkBuffer counters = VK_NULL_HANDLE; // SampleCounters
-    VkBuffer rayCounters = VK_NULL_HANDLE; // RayCounters
+    VkBuffer traceCounters = VK_NULL_HANDLE; // TraceCounters
     const RestirBuffers* restir = nullptr; // the frame's, for restir-di; null: the tracer's of one pixel
 };
 

@@ -29,7 +29,7 @@ ProgressiveFrame::ProgressiveFrame(const GpuEngine& engine, std::uint32_t frameS
     : m_engine(&engine),
       m_counters(engine.context().device(), sizeof(shader::SampleCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                  vk::MemoryUse::Readback),
-      m_rayCounters(engine.context().device(), sizeof(shader::RayCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+      m_traceCounters(engine.context().device(), sizeof(shader::TraceCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                     vk::MemoryUse::DeviceLocal)
 {
     const vk::Device& device = engine.context().device();
@@ -79,7 +79,7 @@ void ProgressiveFrame::makeSets()
     m_sets.clear();
     for (const vk::Buffer& uniforms : m_uniforms)
         m_sets.push_back(m_engine->tracer().makeDescriptors({m_accumulationView.Handle(), m_compensationView.Handle(),
-                                                             uniforms.Handle(), m_counters.Handle(), m_rayCounters.Handle(),
+                                                             uniforms.Handle(), m_counters.Handle(), m_traceCounters.Handle(),
                                                              m_restir.get()}));
 }
 

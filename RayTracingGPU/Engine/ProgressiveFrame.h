@@ -144,7 +144,7 @@ private:
     vk::QueryPool m_timestamps; // two per slot: before and after its samples; none without timestamps
     std::vector<bool> m_slotTimed; // the slot's timestamps were written and not taken yet
     vk::Buffer m_counters; // NaN / Inf samples, shared: only atomics touch it
-    vk::Buffer m_rayCounters; // RayCounters, bound but never counted in: the window's uniforms leave countRays 0
+    vk::Buffer m_traceCounters; // TraceCounters, bound but never counted in: the window's uniforms leave countRays 0
     vk::Image m_accumulation;
     vk::ImageView m_accumulationView;
     vk::Image m_compensation; // the Kahan compensation of m_accumulation's sums

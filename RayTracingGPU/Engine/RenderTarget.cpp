@@ -1,6 +1,7 @@
 #include "Engine/RenderTarget.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <utility>
 
@@ -24,14 +25,14 @@ RenderTarget::RenderTarget(const vk::Device& device, std::uint32_t width, std::u
                              vk::MemoryUse::Readback),
       m_uniforms(device, sizeof(shader::RenderUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::Upload),
       m_counters(device, sizeof(shader::SampleCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Readback),
-      m_rayCounters(device, sizeof(shader::RayCounters),
+      m_traceCounters(device, sizeof(shader::TraceCounters),
                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                         VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                     vk::MemoryUse::DeviceLocal),
-      m_rayCountersSnapshot(device, sizeof(shader::RayCounters),
+      m_traceCountersSnapshot(device, sizeof(shader::TraceCounters),
                             VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                             vk::MemoryUse::DeviceLocal),
-      m_rayCountersReadback(device, sizeof(shader::RayCounters), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+      m_traceCountersReadback(device, sizeof(shader::TraceCounters), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                             vk::MemoryUse::Readback)
 {
 }
@@ -44,7 +45,7 @@ void copyAfterTracing(VkCommandBuffer cmd, VkBuffer from, VkBuffer to)
 {
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
-    const VkBufferCopy region{0, 0, sizeof(shader::RayCounters)};
+    const VkBufferCopy region{0, 0, sizeof(shader::TraceCounters)};
     vkCmdCopyBuffer(cmd, from, to, 1, &region);
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
@@ -74,7 +75,7 @@ void RenderTarget::recordClear(VkCommandBuffer cmd) const
                           VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
         vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &vk::kColorRange);
     }
-    vkCmdFillBuffer(cmd, m_rayCounters.Handle(), 0, VK_WHOLE_SIZE, 0u);
+    vkCmdFillBuffer(cmd, m_traceCounters.Handle(), 0, VK_WHOLE_SIZE, 0u);
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 }
@@ -89,33 +90,45 @@ void RenderTarget::recordReadback(VkCommandBuffer cmd) const
                                 VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                                 VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
                                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-    copyAfterTracing(cmd, m_rayCounters.Handle(), m_rayCountersSnapshot.Handle());
+    copyAfterTracing(cmd, m_traceCounters.Handle(), m_traceCountersSnapshot.Handle());
 }
 
-void RenderTarget::recordRayCountersReadback(VkCommandBuffer cmd) const
+void RenderTarget::recordTraceCountersReadback(VkCommandBuffer cmd) const
 {
-    copyAfterTracing(cmd, m_rayCounters.Handle(), m_rayCountersReadback.Handle());
+    copyAfterTracing(cmd, m_traceCounters.Handle(), m_traceCountersReadback.Handle());
     vk::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
                       VK_ACCESS_HOST_READ_BIT);
 }
 
-RayCounts RenderTarget::readRayCounts() const
+std::array<std::uint64_t, shader::kCountKinds> RenderTarget::readTraceCounts() const
 {
-    shader::RayCounters c;
-    std::memcpy(&c, m_rayCountersReadback.mapped(), sizeof(c));
-    std::uint64_t kinds[shader::kRayKinds] = {};
-    for (std::uint32_t slot = 0; slot < shader::kRayCounterSlots; ++slot)
-        for (std::uint32_t kind = 0; kind < shader::kRayKinds; ++kind)
+    shader::TraceCounters c;
+    std::memcpy(&c, m_traceCountersReadback.mapped(), sizeof(c));
+    std::array<std::uint64_t, shader::kCountKinds> kinds{};
+    for (std::uint32_t slot = 0; slot < shader::kTraceCounterSlots; ++slot)
+        for (std::uint32_t kind = 0; kind < shader::kCountKinds; ++kind)
         {
-            const std::uint32_t word = (slot * shader::kRayKinds + kind) * 2u;
+            const std::uint32_t word = (slot * shader::kCountKinds + kind) * 2u;
             kinds[kind] += std::uint64_t(c.words[word]) | std::uint64_t(c.words[word + 1]) << 32;
         }
+    return kinds;
+}
+
+RayCounts RenderTarget::readRayCounts() const
+{
+    const auto kinds = readTraceCounts();
     return {kinds[shader::kRayCamera], kinds[shader::kRayExtension], kinds[shader::kRayShadow]};
+}
+
+LightSampleCounts RenderTarget::readLightSampleCounts() const
+{
+    const auto kinds = readTraceCounts();
+    return {kinds[shader::kCountLightDrawn], kinds[shader::kCountLightFallback], kinds[shader::kCountLightDeclined]};
 }
 
 void RenderTarget::recordRestore(VkCommandBuffer cmd) const
 {
-    copyAfterTracing(cmd, m_rayCountersSnapshot.Handle(), m_rayCounters.Handle());
+    copyAfterTracing(cmd, m_traceCountersSnapshot.Handle(), m_traceCounters.Handle());
     // The launches' contents are discarded (UNDEFINED) once they finished writing; back to GENERAL after.
     for (const auto& [image, buffer] : {std::pair{m_image.Handle(), m_readback.Handle()},
                                         std::pair{m_compensation.Handle(), m_compensationSnapshot.Handle()}})

@@ -1,13 +1,15 @@
 // What a render of one size writes: the RGBA32F accumulation image (rgb: sum of sample radiances, a: sample
 // count) and its Kahan compensation image, a host-visible copy of the sum for readback, the per-render
-// uniforms, the NaN/Inf counters and the ray counters (--count-rays: device-local, with a snapshot for a cancelled
-// batch and a host-visible copy to read).
+// uniforms, the NaN/Inf counters and the trace counters (--count-rays, rays and light samples: device-local, with
+// a snapshot for a cancelled batch and a host-visible copy to read).
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "Engine/PathTracingPipeline.h"
 #include "Image/Image.h"
+#include "Render/LightSampleCounts.h"
 #include "Render/RayCounts.h"
 #include "Shared/HostDevice.h"
 #include "Vulkan/Buffer.h"
@@ -33,26 +35,29 @@ public:
     TargetBindings bindings() const
     {
         return {m_view.Handle(), m_compensationView.Handle(), m_uniforms.Handle(), m_counters.Handle(),
-                m_rayCounters.Handle()};
+                m_traceCounters.Handle()};
     }
 
     /// Writes the uniforms and zeroes the counters (host-visible memory; call while the device is idle).
     void reset(const shader::RenderUniforms& uniforms);
     shader::SampleCounters readCounters() const;
 
-    /// Records: UNDEFINED -> GENERAL and clear to zero, both images, and zeroes the ray counters.
+    /// Records: UNDEFINED -> GENERAL and clear to zero, both images, and zeroes the trace counters.
     void recordClear(VkCommandBuffer cmd) const;
     /// Records the copy of the accumulation image into the readback buffer (and of the compensation image and the
-    /// ray counters into their snapshots), after the ray-tracing writes.
+    /// trace counters into their snapshots), after the ray-tracing writes.
     void recordReadback(VkCommandBuffer cmd) const;
-    /// Records the copy of the readback buffer (and the snapshots) back into the two images and the ray counters:
+    /// Records the copy of the readback buffer (and the snapshots) back into the two images and the trace counters:
     /// with recordReadback before a batch, this puts back the frame as the batch found it (a batch cancelled
     /// between its bands).
     void recordRestore(VkCommandBuffer cmd) const;
-    /// Records the copy of the ray counters into their host-visible buffer, after the ray-tracing writes.
-    void recordRayCountersReadback(VkCommandBuffer cmd) const;
-    /// The ray counters' sums over their slots (call after recordRayCountersReadback completed).
+    /// Records the copy of the trace counters into their host-visible buffer, after the ray-tracing writes (the
+    /// wavefront's compute writes are ordered before the transfer by its own barriers, WaveBuffers and Recorder).
+    void recordTraceCountersReadback(VkCommandBuffer cmd) const;
+    /// The rays' counts summed over their slots (call after recordTraceCountersReadback completed).
     RayCounts readRayCounts() const;
+    /// NEE's light samples by outcome, summed over their slots (likewise).
+    LightSampleCounts readLightSampleCounts() const;
     /// Overwrites the NaN/Inf counters (host-visible; call while the device is idle).
     void writeCounters(const shader::SampleCounters& counters);
     /// The estimate from the readback buffer: sum / `samples`, RGB (call after recordReadback completed).
@@ -70,8 +75,11 @@ private:
     vk::Buffer m_compensationSnapshot; // the compensation image at the last readback, for recordRestore
     vk::Buffer m_uniforms;
     vk::Buffer m_counters;
-    vk::Buffer m_rayCounters; // RayCounters, device-local: the shaders' atomics stay on the device
-    vk::Buffer m_rayCountersSnapshot; // the ray counters at the last recordReadback, for recordRestore
-    vk::Buffer m_rayCountersReadback; // host-visible, for readRayCounts
+    vk::Buffer m_traceCounters; // TraceCounters, device-local: the shaders' atomics stay on the device
+    vk::Buffer m_traceCountersSnapshot; // the trace counters at the last recordReadback, for recordRestore
+    vk::Buffer m_traceCountersReadback; // host-visible, for readRayCounts and readLightSampleCounts
+
+    /// Every kind's count summed over the slots, from m_traceCountersReadback.
+    std::array<std::uint64_t, shader::kCountKinds> readTraceCounts() const;
 };
 } // namespace rt::gpu

@@ -20,9 +20,9 @@ void main()
     if (settingCountRays())
     {
         if (paths > 0u)
-            addRays(0u, push.waveSegment == 0u ? kRayCamera : kRayExtension, paths);
+            addCount(0u, push.waveSegment == 0u ? kRayCamera : kRayExtension, paths);
         if (waveCounters.shadowsPushed > 0u)
-            addRays(0u, kRayShadow, waveCounters.shadowsPushed);
+            addCount(0u, kRayShadow, waveCounters.shadowsPushed);
     }
     waveCounters.extendRays = uvec4(paths, 1u, 1u, 0u);
     waveCounters.shadeGroups = uvec4((paths + kWaveGroupSize - 1u) / kWaveGroupSize, 1u, 1u, 0u);

@@ -10,10 +10,24 @@
 #define RT_COMPUTE_KERNEL
 #include "Bindings.glsl"
 #include "Shared/Shading/PathVertex.h"
+#include "RayCount.glsl"
 #include "Wavefront/QueueAppend.glsl"
 #include "Wavefront/WavePath.glsl"
 
 layout(local_size_x = kWaveGroupSize) in;
+
+/// --count-rays: the subgroup's light samples by outcome (ShadowRay::lightSample), one atomic per outcome a vertex
+/// of the subgroup had. Every active invocation of the subgroup must call it.
+void countLightSamples(uint lightSample)
+{
+    const uint bits[3] = uint[3](kLightSampleDrawn, kLightSampleFallback, kLightSampleDeclined);
+    for (uint outcome = 0u; outcome < 3u; ++outcome)
+    {
+        const uint n = subgroupBallotBitCount(subgroupBallot((lightSample & bits[outcome]) != 0u));
+        if (n > 0u && subgroupElect())
+            addCount(gl_WorkGroupID.x, kCountLightDrawn + outcome, n);
+    }
+}
 
 void main()
 {
@@ -26,6 +40,8 @@ void main()
     uint sampleIndex = waveField(kWaveDirectionSample, p).w;
     ShadowRay shadow;
     bool goesOn = shadePathVertex(path, push.waveSegment, loadHit(p), shadow, false);
+    if (settingCountRays())
+        countLightSamples(shadow.lightSample);
     if (goesOn && !(isFiniteVec(path.origin) && isFiniteVec(path.direction)))
     {
         path.radiance = vec3(uintBitsToFloat(0x7FC00000u)); // a quiet NaN, as the megakernel returns

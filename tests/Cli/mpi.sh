@@ -56,15 +56,21 @@ for x in r:  # consecutive shares of the sample indices, the first ranks one mor
 assert max(x["samples"] for x in r) - min(x["samples"] for x in r) <= 1, r
 assert s["paths"] == 40 * 40 * 7, s["paths"]
 assert all(x["device"] and x["host"] for x in r), r
-# The job's rays by kind are its ranks' summed: on the CPU (which always counts) one process's paths and rays;
-# the GPU counts none without --count-rays.
+# The job's rays by kind and light samples by outcome are its ranks' summed: on the CPU (which always counts) one
+# process's; the GPU counts none without --count-rays.
 kinds = ("camera", "extension", "shadow")
 if sys.argv[4] == "cpu":
     assert {k: s["rays"][k] for k in kinds} == {k: one["rays"][k] for k in kinds}, (s["rays"], one["rays"])
     assert all(sum(x["rays"][k] for x in r) == s["rays"][k] for k in kinds), r
     assert s["rays"]["camera"] == s["paths"], s["rays"]
+    # NEE's light samples likewise (cornell-box-lights' strips fall back to area sampling at some vertices).
+    outcomes = ("drawn", "fallback", "declined")
+    assert s["light_samples"] == one["light_samples"], (s["light_samples"], one["light_samples"])
+    assert all(sum(x["light_samples"][k] for x in r) == s["light_samples"][k] for k in outcomes), r
+    assert s["light_samples"]["fallback"] > 0, s["light_samples"]
 else:
     assert "rays" not in s and all("rays" not in x for x in r), s
+    assert "light_samples" not in s and all("light_samples" not in x for x in r), s
 PY
 done
 echo "ok: 2 and 3 ranks render one process's image"

@@ -199,26 +199,31 @@ void expectTracePathsIsTracePath(const Scene& scene, Estimator estimator, std::v
     settings.estimator = estimator;
     const shader::RenderUniforms uniforms = makeUniforms(scene, scene.camera, settings, 64, 64);
     std::vector<vec3> radiance(jobs.size(), vec3(-1.0f));
-    RayCounts laneRays;
-    variant.traceLanes(cs, uniforms, jobs, radiance.data(), laneRays);
-    RayCounts rays;
+    TraceCounts laneCounts;
+    variant.traceLanes(cs, uniforms, jobs, radiance.data(), laneCounts);
+    TraceCounts counts;
     bool light = false;
     for (std::size_t i = 0; i < jobs.size(); ++i)
     {
         vec3 alone;
-        variant.trace(cs, uniforms, std::span<const PathJob>(&jobs[i], 1), &alone, rays);
+        variant.trace(cs, uniforms, std::span<const PathJob>(&jobs[i], 1), &alone, counts);
         ASSERT_TRUE(sameBits(radiance[i], alone))
             << name << ", depth " << depth << ", " << jobs.size() << " jobs: job " << i << " (" << radiance[i].x
             << " against " << alone.x << ")";
         light |= maxComponent(alone) > 0.0f;
     }
-    // The same rays of each kind: a path ray of each job per segment traced, a shadow ray per light sample.
-    EXPECT_EQ(laneRays, rays) << name;
+    // The same rays of each kind: a path ray of each job per segment traced, a shadow ray per light sample; and
+    // the same light samples.
+    const RayCounts& rays = counts.rays;
+    EXPECT_EQ(laneCounts.rays, rays) << name;
+    EXPECT_EQ(laneCounts.lightSamples, counts.lightSamples) << name;
     EXPECT_EQ(rays.camera, depth > 0 ? jobs.size() : 0u) << name;
     if (depth > 1 && jobs.size() > 50)
     {
         EXPECT_GT(rays.extension, 0u) << name;
         EXPECT_EQ(rays.shadow > 0u, shader::usesNee(estimator)) << name << ": shadow rays are NEE's alone";
+        EXPECT_EQ(counts.lightSamples.drawn >= rays.shadow && counts.lightSamples.drawn > 0u, shader::usesNee(estimator))
+            << name << ": NEE's light samples, one per shadow ray at least";
     }
     if (depth > 1 && jobs.size() > 50)
     {

@@ -35,6 +35,9 @@ TEST(RayCounts, InTheFurnaceEveryPathTracesItsDepthAndNeeAShadowRayPerVertexButT
             EXPECT_EQ(st.rays.camera, st.paths) << toString(e);
             EXPECT_EQ(st.rays.extension, (kDepth - 1) * st.paths) << toString(e);
             EXPECT_EQ(st.rays.shadow, shader::usesNee(e) ? (kDepth - 1) * st.paths : 0u) << toString(e);
+            // Each of those vertices drew one light sample (the furnace's sphere: its own samplers, no fallback).
+            EXPECT_EQ(st.lightSamples.drawn, st.rays.shadow) << toString(e);
+            EXPECT_EQ(st.lightSamples.fallback + st.lightSamples.declined, 0u) << toString(e);
             EXPECT_DOUBLE_EQ(st.mraysPerSecond(st.rays.total()), double(st.rays.total()) / st.renderSeconds * 1e-6);
         }
 }
@@ -59,6 +62,38 @@ TEST(RayCounts, RussianRouletteEndsPathsAsItsRuleSays)
         EXPECT_GT(st.rays.shadow, st.rays.extension);
         EXPECT_LE(st.rays.shadow, st.rays.extension + st.paths);
     }
+}
+
+TEST(LightSampleCounts, TheSamplerChangesNoPathAndItsFallbacksAreCounted)
+{
+    // NEE's numbers are drawn whatever its sample becomes and the path's direction does not depend on it, so every
+    // light sampler draws at the same vertices. Area sampling asked for is no fallback; the solid-angle and the
+    // projected samplers share the spherical rectangle's bounds, so they fall back at the same vertices: on
+    // cornell-box-lights the points that see a light below 1e-2 sr (its nine 355 x 10 strips on the back wall:
+    // 0.005-0.03 sr from the floor's centre, mostly below 1e-2 from the front of the room).
+    const Scene scene = makeScene("cornell-box-lights");
+    RenderSettings s = smallSettings(24, 2, 50, Estimator::NeeMis);
+    s.unidirectionalLight = scene.defaults.unidirectionalLight;
+    LightSampleCounts counts[4];
+    const LightSampler samplers[4] = {LightSampler::Area, LightSampler::SolidAngle, LightSampler::Projected,
+                                      LightSampler::ProjectedExact};
+    for (int i = 0; i < 4; ++i)
+    {
+        s.lightSampler = samplers[i];
+        const RenderStats st = renderCpu(scene, s, EngineKind::Multi).stats;
+        counts[i] = st.lightSamples;
+        EXPECT_GE(counts[i].drawn, st.rays.shadow) << toString(samplers[i]);
+        EXPECT_EQ(counts[i].drawn, counts[0].drawn) << toString(samplers[i]);
+        EXPECT_EQ(counts[i].declined, 0u) << toString(samplers[i]) << ": no receiver lies in a light's plane";
+    }
+    EXPECT_GT(counts[0].drawn, 2000u);
+    EXPECT_EQ(counts[0].fallback, 0u);
+    EXPECT_GT(counts[1].fallback, counts[1].drawn / 20) << "too few to say the bounds are applied";
+    EXPECT_LT(counts[1].fallback, counts[1].drawn / 2);
+    EXPECT_EQ(counts[2].fallback, counts[1].fallback);
+    // Peters' sampler falls back below 1e-4 sr of projected solid angle: fewer vertices.
+    EXPECT_GT(counts[3].fallback, 0u);
+    EXPECT_LT(counts[3].fallback, counts[1].fallback);
 }
 
 TEST(RayCounts, RestirTracesEachCameraPathTwice)

@@ -1,7 +1,8 @@
 // --count-rays on the GPU (GpuEngineOptions::countRays, Shaders/Rays.glsl's countRay): the closed form of the
 // furnace (every path of a closed sphere traces `depth` segments, NEE a shadow ray at each vertex but the last:
-// tests/Cpu/RayCountTest.cpp) on both integrators, the CPU engine's counts on the benchmark scene, and an image
-// that counting leaves as it was, bit for bit. Without the option the engine reports no rays.
+// tests/Cpu/RayCountTest.cpp) on both integrators, the CPU engine's counts (rays, and NEE's light samples by
+// outcome) on the benchmark scene, and an image that counting leaves as it was, bit for bit. Without the option
+// the engine reports no rays.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -65,6 +66,8 @@ TEST_F(GpuRayCounts, InTheFurnaceEveryPathTracesItsDepthOnBothIntegrators)
             EXPECT_EQ(st.rays.camera, st.paths) << what;
             EXPECT_EQ(st.rays.extension, (kDepth - 1) * st.paths) << what;
             EXPECT_EQ(st.rays.shadow, shader::usesNee(e) ? (kDepth - 1) * st.paths : 0u) << what;
+            EXPECT_EQ(st.lightSamples.drawn, st.rays.shadow) << what << ": a light sample at each NEE vertex";
+            EXPECT_EQ(st.lightSamples.fallback + st.lightSamples.declined, 0u) << what;
         }
 }
 
@@ -111,6 +114,31 @@ TEST_F(GpuRayCounts, AgreeWithTheCpuEngineAndLeaveTheImageAsItWas)
         EXPECT_GT(c, gpu.paths / 2) << name << ": too few to compare";
         EXPECT_NEAR(double(g), double(c), 0.01 * double(c)) << name;
     }
+    // NEE's light samples likewise: the projected sampler falls back to area sampling where a light is below
+    // 1e-2 sr (tests/Cpu/RayCountTest.cpp), on the GPU's float trigonometry as on the CPU's. The fallbacks (a few
+    // hundred) to 3 %, a path sent another way moving one vertex or two.
+    EXPECT_NEAR(double(gpu.lightSamples.drawn), double(reference.lightSamples.drawn),
+                0.01 * double(reference.lightSamples.drawn));
+    EXPECT_GT(reference.lightSamples.fallback, reference.lightSamples.drawn / 20) << "too few to compare";
+    EXPECT_NEAR(double(gpu.lightSamples.fallback), double(reference.lightSamples.fallback),
+                0.03 * double(reference.lightSamples.fallback));
+    EXPECT_EQ(gpu.lightSamples.declined, reference.lightSamples.declined);
+    EXPECT_EQ(plain.stats.lightSamples, LightSampleCounts{}) << "counted without --count-rays";
+}
+
+TEST_F(GpuRayCounts, TheWavefrontCountsTheMegakernelsLightSamples)
+{
+    // The same paths on both integrators; the wavefront adds its vertices' outcomes once per subgroup.
+    const Scene scene = makeScene("cornell-box-lights");
+    RenderSettings s = settingsOf(scene, 24, 2, 50, Estimator::NeeMis, RussianRoulette::Throughput);
+    s.lightSampler = LightSampler::SolidAngle;
+    sharedEngine()->setIntegrator(GpuIntegrator::Megakernel);
+    const LightSampleCounts mega = renderOnGpu(scene, s).stats.lightSamples;
+    sharedEngine()->setIntegrator(GpuIntegrator::Wavefront);
+    const LightSampleCounts wave = renderOnGpu(scene, s).stats.lightSamples;
+    EXPECT_GT(mega.fallback, mega.drawn / 20) << "too few to compare";
+    EXPECT_NEAR(double(wave.drawn), double(mega.drawn), 0.01 * double(mega.drawn));
+    EXPECT_NEAR(double(wave.fallback), double(mega.fallback), 0.03 * double(mega.fallback));
 }
 } // namespace
 } // namespace rt::gpu::test

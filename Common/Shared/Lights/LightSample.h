@@ -28,7 +28,20 @@ struct LightSample
     float distance; // |y - p|
     vec3 normal; // unit normal of the light at y, on its front side (outward for spheres)
     vec2 uv; // the light's surface coordinates at y: (a, b) of quads, barycentrics (b1, b2) of triangles, 0 on spheres
+    uint outcome; // how it was made: kLightSampleFallback, kLightSampleDeclined (bits), 0 as the strategy asked
 };
+
+// LightSample::outcome, counted in the stats at NEE's vertices (--stats' "light_samples"; restir-di's candidates
+// are not): the polygon samplers' documented shortcuts are never taken silently. (A receiver inside a sphere light
+// is sampled by area under every strategy, having no cone to sample: by design, not marked.)
+/// Made by a simpler sampler than the strategy asked: by area where a polygon is too small for its spherical or
+/// projected sampler (a triangle also too large), a rectangle's setup does not resolve, or a quad is not a
+/// rectangle (Lights/Quad.h, Lights/Triangle.h, LightSampling.h's projected-exact).
+RT_CONST(uint, kLightSampleFallback, 1u)
+/// Made, then dropped: off the light as its pdf finds it (0), by rounding or for a receiver in the light's plane.
+RT_CONST(uint, kLightSampleDeclined, 2u)
+/// Beside those two in ShadowRay::lightSample (Shared/PathState.h): the vertex drew a light sample.
+RT_CONST(uint, kLightSampleDrawn, 4u)
 
 /// Area-measure pdf 1/area turned into solid angle at squared distance `dist2` with |cos| at the light.
 RT_FN float areaToSolidAngle(float dist2, float cosLight, float area)
@@ -46,16 +59,30 @@ RT_FN void clearLightSample(RT_IN(LightData) light, RT_OUT(LightSample) ls)
     ls.distance = 0.0f;
     ls.normal = light.normal;
     ls.uv = vec2(0.0f);
+    ls.outcome = 0u;
 }
 
-/// Completes a sample whose point on the light is set: its distance and direction from p (false when the point
-/// is p itself).
+/// The sampler's last step where rounding may have put its sample off the light: true when ls.pdf > 0, else
+/// the sample is marked declined (kLightSampleDeclined) and false returned.
+RT_FN bool keepLightSample(RT_INOUT(LightSample) ls)
+{
+    if (ls.pdf > 0.0f)
+        return true;
+    ls.outcome |= kLightSampleDeclined;
+    return false;
+}
+
+/// Completes a sample whose point on the light is set: its distance and direction from p (false, the sample
+/// declined, when the point is p itself).
 RT_FN bool lightSampleDirection(vec3 p, RT_INOUT(LightSample) ls)
 {
     const vec3 w = ls.point - p;
     const float dist2 = lengthSquared(w);
     if (!(dist2 > 0.0f))
+    {
+        ls.outcome |= kLightSampleDeclined;
         return false;
+    }
     ls.distance = sqrt(dist2);
     ls.wi = w / ls.distance;
     return true;

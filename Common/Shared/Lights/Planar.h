@@ -78,7 +78,7 @@ RT_FN bool samplePlanarLight(RT_IN(LightData) light, vec3 p, vec2 u, RT_OUT(Ligh
     if (!lightSampleDirection(p, ls))
         return false;
     ls.pdf = planarLightPdf(light, p, ls.wi);
-    return ls.pdf > 0.0f;
+    return keepLightSample(ls);
 }
 
 RT_SHADER_NAMESPACE_END

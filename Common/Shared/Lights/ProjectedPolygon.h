@@ -383,7 +383,7 @@ RT_FN bool sampleProjectedPolygonLight(RT_IN(LightData) light, RT_IN(ProjectedPo
     const vec3 planar = ls.point - light.p0;
     ls.uv = vec2(dot(planar, light.dualU), dot(planar, light.dualV));
     ls.pdf = projectedPolygonPdf(light, g, p, n, ls.wi);
-    return ls.pdf > 0.0f;
+    return keepLightSample(ls);
 }
 
 RT_SHADER_NAMESPACE_END

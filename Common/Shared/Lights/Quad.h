@@ -86,7 +86,8 @@ RT_FN float quadLightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, 
     return planarLightPdf(light, p, wi);
 }
 
-/// NEE's sample from p by `strategy`, with the density quadLightPdf reports.
+/// NEE's sample from p by `strategy`, with the density quadLightPdf reports; marked kLightSampleFallback where a
+/// strategy other than Area samples by area.
 RT_FN bool sampleQuadLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec2 u,
                            RT_OUT(LightSample) ls)
 {
@@ -101,6 +102,7 @@ RT_FN bool sampleQuadLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy
             const vec2 warped = warp ? sampleBilinear(u, w.x, w.y, w.z, w.w) : u;
             ls.point = sampleSphericalRectangle(r, warped);
             ls.normal = light.normal;
+            ls.outcome = 0u;
             const vec3 planar = ls.point - light.p0;
             ls.uv = vec2(dot(planar, light.dualU), dot(planar, light.dualV));
             const vec3 toPoint = ls.point - p;
@@ -110,10 +112,13 @@ RT_FN bool sampleQuadLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy
             // rounding put the direction off the rectangle, as quadLightPdf finds it.
             const float warpPdf = warp ? bilinearPdf(warped, w.x, w.y, w.z, w.w) : 1.0f;
             ls.pdf = planarHit(light, p, ls.wi) > 0.0f ? warpPdf / r.solidAngle : 0.0f;
-            return ls.pdf > 0.0f;
+            return keepLightSample(ls);
         }
     }
-    return samplePlanarLight(light, p, u, ls);
+    const bool sampled = samplePlanarLight(light, p, u, ls);
+    if (strategy != RT_ENUM(LightSampler, Area))
+        ls.outcome |= kLightSampleFallback;
+    return sampled;
 }
 
 RT_SHADER_NAMESPACE_END

@@ -109,14 +109,14 @@ RT_FN bool sampleSphereLight(RT_IN(LightData) light, vec3 p, vec2 u, RT_OUT(Ligh
         ls.distance = sphereEntryDistance(light, p, ls.wi);
         ls.normal = normalize(p + ls.distance * ls.wi - light.p0);
         ls.point = light.p0 + light.radius * ls.normal; // re-projected, as the engines' sphere hits are
-        return ls.pdf > 0.0f;
+        return keepLightSample(ls);
     }
     ls.normal = sampleUniformSphere(u);
     ls.point = light.p0 + light.radius * ls.normal;
     if (!lightSampleDirection(p, ls))
         return false;
     ls.pdf = sphereLightPdf(light, p, ls.wi);
-    return ls.pdf > 0.0f;
+    return keepLightSample(ls);
 }
 
 /// NEE's solid-angle pdf of wi from p with receiver normal n (0 in a medium) by `strategy`: Projected, cos / F
@@ -176,12 +176,13 @@ RT_FN bool sampleSphereLight(RT_IN(LightData) light, RT_TAG(LightSampler) strate
             // cone (where the pdf's chord test says 0: 3 in 1e6 for a cap of 1e-3 rad) keeps it rather than
             // being dropped; the two differ only on that rim, a set of no measure.
             ls.pdf = max(dot(n, ls.wi), 0.0f) / cap.area;
-            return ls.pdf > 0.0f;
+            return keepLightSample(ls);
         }
     }
     if (strategy == RT_ENUM(LightSampler, Area) && lengthSquared(p - light.p0) > light.radius * light.radius)
     {
         ls.uv = vec2(0.0f);
+        ls.outcome = 0u; // a point on the far side, pdf 0, is a sample of no contribution, not one declined
         ls.normal = sampleUniformSphere(u);
         ls.point = light.p0 + light.radius * ls.normal;
         const vec3 w = ls.point - p;

@@ -67,7 +67,8 @@ RT_FN float triangleLightPdf(RT_IN(LightData) light, RT_TAG(LightSampler) strate
 }
 
 /// NEE's sample from p by `strategy`, with the density triangleLightPdf reports. The sampled direction becomes
-/// the point where it meets the triangle, its barycentrics clamped onto it.
+/// the point where it meets the triangle, its barycentrics clamped onto it; marked kLightSampleFallback where a
+/// strategy other than Area samples by area.
 RT_FN bool sampleTriangleLight(RT_IN(LightData) light, RT_TAG(LightSampler) strategy, vec3 p, vec3 n, vec2 u,
                                RT_OUT(LightSample) ls)
 {
@@ -82,6 +83,7 @@ RT_FN bool sampleTriangleLight(RT_IN(LightData) light, RT_TAG(LightSampler) stra
         ls.uv = sphericalTrianglePoint(tri, sphericalTriangleDirection(tri, warped));
         ls.point = light.p0 + ls.uv.x * light.p1 + ls.uv.y * light.p2;
         ls.normal = light.normal;
+        ls.outcome = 0u;
         const vec3 toPoint = ls.point - p;
         ls.distance = length(toPoint);
         ls.wi = toPoint / ls.distance;
@@ -89,9 +91,12 @@ RT_FN bool sampleTriangleLight(RT_IN(LightData) light, RT_TAG(LightSampler) stra
         // planarHit's slack finds every such point again, so this 0 (the sample dropped, as triangleLightPdf
         // would drop its direction) is a guard the tests check is never taken.
         ls.pdf = planarHit(light, p, ls.wi) > 0.0f ? warpPdf / float(tri.solidAngle) : 0.0f;
-        return ls.pdf > 0.0f;
+        return keepLightSample(ls);
     }
-    return samplePlanarLight(light, p, u, ls);
+    const bool sampled = samplePlanarLight(light, p, u, ls);
+    if (strategy != RT_ENUM(LightSampler, Area))
+        ls.outcome |= kLightSampleFallback;
+    return sampled;
 }
 
 RT_SHADER_NAMESPACE_END

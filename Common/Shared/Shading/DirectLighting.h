@@ -32,8 +32,9 @@ RT_FN float selectionPmf(uint light, vec3 origin, vec3 receiver)
 /// that no emitter reaches origin; the point faces away or lies where the BSDF is 0; it emits nothing towards
 /// origin); else shadow.contribution = f cos Le / (pmf pdf) x the MIS weight (nee-mis: the power heuristic
 /// against the BSDF strategy's pdf of the same direction; nee: 1), valid if the shadow ray is unoccluded.
-/// Takes the vertex's numbers uSelect for the selection and u for the point. One function for both kinds of
-/// lobe: the megakernel inlines the light samplers once (two call sites made NEE 2.4-4.2x slower on the H100,
+/// Takes the vertex's numbers uSelect for the selection and u for the point; shadow.lightSample says how the
+/// light sample was made, whatever the result (Shared/PathState.h). One function for both kinds of lobe: the
+/// megakernel inlines the light samplers once (two call sites made NEE 2.4-4.2x slower on the H100,
 /// docs/notebook §10).
 RT_FN bool sampleDirect(vec3 origin, vec3 receiver, vec3 ns, bool phase, vec3 albedo, bool microfacet,
                         RT_IN(MicrofacetBsdf) b, vec3 wo, float uSelect, vec2 u, RT_OUT(ShadowRay) shadow)
@@ -43,13 +44,16 @@ RT_FN bool sampleDirect(vec3 origin, vec3 receiver, vec3 ns, bool phase, vec3 al
     shadow.direction = vec3(0.0f);
     shadow.distance = 0.0f;
     shadow.contribution = vec3(0.0f);
+    shadow.lightSample = 0u;
     float pmf;
     const uint picked = selectLight(RT_PASS(lightAlias) RT_PASS(lightBvh) settingLightSelection(), uSelect,
                                     uniforms.emitterCount, origin, receiver, uniforms.unidirectionalLight == 0u, pmf);
     if (picked == kNoIndex)
         return false;
     LightSample ls;
-    if (!sampleLight(lights[picked], settingLightSampler(), origin, receiver, u, ls))
+    const bool sampled = sampleLight(lights[picked], settingLightSampler(), origin, receiver, u, ls);
+    shadow.lightSample = kLightSampleDrawn | ls.outcome;
+    if (!sampled)
         return false;
     float bsdfPdf;
     vec3 f = vec3(0.0f); // f |cos theta_i| of a microfacet BSDF; a diffuse lobe's is albedo x bsdfPdf

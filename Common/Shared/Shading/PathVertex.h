@@ -44,6 +44,7 @@ RT_FN bool shadePathVertex(RT_INOUT(PathState) path, uint segment, RT_IN(HitPayl
     shadow.direction = vec3(0.0f);
     shadow.distance = 0.0f;
     shadow.contribution = vec3(0.0f);
+    shadow.lightSample = 0u;
     if (hit.material == kNoIndex)
     {
         path.radiance += path.beta * background(path.direction);

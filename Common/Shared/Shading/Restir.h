@@ -154,6 +154,7 @@ RT_FN ShadowRay restirShadowRay(RT_IN(RestirVertex) v, vec3 point)
     ShadowRay shadow;
     shadow.pending = true;
     shadow.contribution = vec3(0.0f);
+    shadow.lightSample = 0u; // restir-di's candidates are not counted (LightSample.h)
     const vec3 d = point - v.origin;
     const float distance = length(d);
     shadow.direction = distance > 0.0f ? d / distance : v.ns;
