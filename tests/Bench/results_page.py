@@ -856,6 +856,12 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "RECHECK_ONLY=1 IMAGES=<the row above's images> bash tests/Bench/auto_strategy.sh build/bin \\\n"
                   "    docs/results/cpu-auto-strategy-4s-1129b multi 128 4000 2 16384 cornell-box-lights", "## 38.",
                   "2026-11-29"),
+                 ("cpu-auto-strategy-4s-1129c", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                  "128 px wide, each strategy for 4 s, 12 recheck seeds: the other scenes of the 4 s table above "
+                  "(notebook §36's build) with this session's (cce2eb8: the pilot of notebook §38, the light samples "
+                  "counted), notebook §40",
+                  "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-4s-1129c multi 128 4000 2 16384 \\\n"
+                  "    glossy-cornell triangle-lights veach-mis", "## 40.", "2026-11-29"),
                  ("h200-auto-strategy-10s-1129b", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 10 s, 1 seed for the full comparison, 4 recheck seeds; this "
                   "session's build (8109ba9: the scoring 4x faster, the final round's fallback, the equal-time row's "
