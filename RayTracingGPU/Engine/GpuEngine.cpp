@@ -192,9 +192,9 @@ struct GpuEngine::Impl
         const std::vector<Wave> waves = planWaves(firstSample, samples, {target->width(), rows}, firstRow,
                                                   buffers.capacity());
         const Wave* unfinished = nullptr; // the wave whose sums the next submission records first
+        std::uint32_t& learned = learnedWaveSegments.try_emplace(waveKind, kFirstWaveSegments).first->second;
         for (const Wave& wave : waves)
         {
-            std::uint32_t& learned = learnedWaveSegments.try_emplace(waveKind, kFirstWaveSegments).first->second;
             std::uint32_t last = std::min(depth, learned);
             submit([&](WavefrontPipeline::Recorder& r) {
                 if (unfinished)
@@ -638,8 +638,7 @@ SampleTally GpuEngine::tally() const
     {
         vk::submitAndWait(e.device(), e.context.commandPool(),
                           [&](VkCommandBuffer cmd) { e.target->recordTraceCountersReadback(cmd); });
-        t.rays = e.target->readRayCounts();
-        t.lightSamples = e.target->readLightSampleCounts();
+        std::tie(t.rays, t.lightSamples) = e.target->readTraceCounts();
         t.raysCounted = true;
     }
     return t;

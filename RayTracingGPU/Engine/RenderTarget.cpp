@@ -1,7 +1,6 @@
 #include "Engine/RenderTarget.h"
 
 #include <algorithm>
-#include <array>
 #include <cstring>
 #include <utility>
 
@@ -100,30 +99,19 @@ void RenderTarget::recordTraceCountersReadback(VkCommandBuffer cmd) const
                       VK_ACCESS_HOST_READ_BIT);
 }
 
-std::array<std::uint64_t, shader::kCountKinds> RenderTarget::readTraceCounts() const
+std::pair<RayCounts, LightSampleCounts> RenderTarget::readTraceCounts() const
 {
     shader::TraceCounters c;
     std::memcpy(&c, m_traceCountersReadback.mapped(), sizeof(c));
-    std::array<std::uint64_t, shader::kCountKinds> kinds{};
+    std::uint64_t kinds[shader::kCountKinds] = {};
     for (std::uint32_t slot = 0; slot < shader::kTraceCounterSlots; ++slot)
         for (std::uint32_t kind = 0; kind < shader::kCountKinds; ++kind)
         {
             const std::uint32_t word = (slot * shader::kCountKinds + kind) * 2u;
             kinds[kind] += std::uint64_t(c.words[word]) | std::uint64_t(c.words[word + 1]) << 32;
         }
-    return kinds;
-}
-
-RayCounts RenderTarget::readRayCounts() const
-{
-    const auto kinds = readTraceCounts();
-    return {kinds[shader::kRayCamera], kinds[shader::kRayExtension], kinds[shader::kRayShadow]};
-}
-
-LightSampleCounts RenderTarget::readLightSampleCounts() const
-{
-    const auto kinds = readTraceCounts();
-    return {kinds[shader::kCountLightDrawn], kinds[shader::kCountLightFallback], kinds[shader::kCountLightDeclined]};
+    return {{kinds[shader::kRayCamera], kinds[shader::kRayExtension], kinds[shader::kRayShadow]},
+            {kinds[shader::kCountLightDrawn], kinds[shader::kCountLightFallback], kinds[shader::kCountLightDeclined]}};
 }
 
 void RenderTarget::recordRestore(VkCommandBuffer cmd) const

@@ -4,8 +4,8 @@
 // a snapshot for a cancelled batch and a host-visible copy to read).
 #pragma once
 
-#include <array>
 #include <cstdint>
+#include <utility>
 
 #include "Engine/PathTracingPipeline.h"
 #include "Image/Image.h"
@@ -54,10 +54,9 @@ public:
     /// Records the copy of the trace counters into their host-visible buffer, after the ray-tracing writes (the
     /// wavefront's compute writes are ordered before the transfer by its own barriers, WaveBuffers and Recorder).
     void recordTraceCountersReadback(VkCommandBuffer cmd) const;
-    /// The rays' counts summed over their slots (call after recordTraceCountersReadback completed).
-    RayCounts readRayCounts() const;
-    /// NEE's light samples by outcome, summed over their slots (likewise).
-    LightSampleCounts readLightSampleCounts() const;
+    /// The rays by kind and NEE's light samples by outcome, summed over their slots (call after
+    /// recordTraceCountersReadback completed).
+    std::pair<RayCounts, LightSampleCounts> readTraceCounts() const;
     /// Overwrites the NaN/Inf counters (host-visible; call while the device is idle).
     void writeCounters(const shader::SampleCounters& counters);
     /// The estimate from the readback buffer: sum / `samples`, RGB (call after recordReadback completed).
@@ -77,9 +76,6 @@ private:
     vk::Buffer m_counters;
     vk::Buffer m_traceCounters; // TraceCounters, device-local: the shaders' atomics stay on the device
     vk::Buffer m_traceCountersSnapshot; // the trace counters at the last recordReadback, for recordRestore
-    vk::Buffer m_traceCountersReadback; // host-visible, for readRayCounts and readLightSampleCounts
-
-    /// Every kind's count summed over the slots, from m_traceCountersReadback.
-    std::array<std::uint64_t, shader::kCountKinds> readTraceCounts() const;
+    vk::Buffer m_traceCountersReadback; // host-visible, for readTraceCounts
 };
 } // namespace rt::gpu
