@@ -121,78 +121,140 @@ struct PartialSums
     std::array<double, Lanes> terms{}, squares{};
 };
 
-/// The sums of relMSE's terms 0.25 (a - b)^2 / (others^2 + epsilon) over `count` values and of their squares, in
-/// Lanes independent sums (which the compiler vectorises), each term computed in Real.
+/// The sums of relMSE's terms variance / (others^2 + epsilon) over `count` values and, in `squares`, of their squares
+/// or, where `error` is given, of error / (others^2 + epsilon)^2 (each term's own variance), in Lanes independent
+/// sums (which the compiler vectorises), each term computed in Real.
 template <class Real, std::size_t Lanes>
-PartialSums<Lanes> relMseTerms(const float* a, const float* b, const double* others, std::size_t count)
+PartialSums<Lanes> relMseTerms(const float* variance, const float* error, const double* others, std::size_t count)
 {
     // Local sums, copied out at the end: the result's (the caller's memory) might alias `others` for all the
     // compiler knows, which kept every addition a store and a load.
     double terms[Lanes] = {}, squares[Lanes] = {};
-    auto term = [&](std::size_t k) {
-        const Real d = Real(a[k]) - Real(b[k]), o = Real(others[k]);
-        return double(Real(0.25) * d * d / (o * o + Real(kRelMseEpsilon)));
+    auto add = [&](std::size_t k, std::size_t l) {
+        const Real o = Real(others[k]);
+        const Real scale = Real(1) / (o * o + Real(kRelMseEpsilon));
+        const double t = double(Real(variance[k]) * scale);
+        terms[l] += t;
+        squares[l] += error ? double(Real(error[k]) * scale * scale) : t * t;
     };
     std::size_t k = 0;
     for (; k + Lanes <= count; k += Lanes)
         for (std::size_t l = 0; l < Lanes; ++l)
-        {
-            const double t = term(k + l);
-            terms[l] += t;
-            squares[l] += t * t;
-        }
+            add(k + l, l);
     for (; k < count; ++k)
-    {
-        const double t = term(k);
-        terms[0] += t;
-        squares[0] += t * t;
-    }
+        add(k, 0);
     PartialSums<Lanes> s;
     std::copy_n(terms, Lanes, s.terms.begin());
     std::copy_n(squares, Lanes, s.squares.begin());
     return s;
 }
+
+float heldToFloat(double value) { return float(std::min(value, double(std::numeric_limits<float>::max()))); }
 } // namespace
+
+PilotEstimate PilotEstimate::of(const PilotHalves& halves)
+{
+    PilotEstimate e{halves.a.width(), halves.a.height(), {}, {}, {}};
+    const std::size_t values = halves.a.pixelCount() * 3;
+    e.mean.resize(values);
+    e.variance.resize(values);
+    const float* a = &halves.a.data()->x;
+    const float* b = &halves.b.data()->x;
+    for (std::size_t k = 0; k < values; ++k)
+    {
+        const double d = double(a[k]) - double(b[k]);
+        e.mean[k] = float(0.5 * (double(a[k]) + double(b[k])));
+        e.variance[k] = heldToFloat(0.25 * d * d);
+    }
+    return e;
+}
+
+void PilotSums::add(const Image& imageA, const Image& imageB, double measurementMs)
+{
+    if (count > 0 && (imageA.width() != width || imageA.height() != height))
+        throw UsageError(fmt::format("pilot measurements differ in size ({}x{} and {}x{})", width, height,
+                                     imageA.width(), imageA.height()));
+    if (imageB.width() != imageA.width() || imageB.height() != imageA.height())
+        throw UsageError(fmt::format("a pilot measurement's halves differ in size ({}x{} and {}x{})", imageA.width(),
+                                     imageA.height(), imageB.width(), imageB.height()));
+    ms += measurementMs;
+    leastMs = count == 0 ? measurementMs : std::min(leastMs, measurementMs);
+    current = false;
+    if (count++ == 0)
+    {
+        width = imageA.width();
+        height = imageA.height();
+        sum.assign(imageA.pixelCount() * 3, 0.0);
+        u.assign(sum.size(), 0.0);
+        uSquares.assign(sum.size(), 0.0);
+    }
+    const float* a = &imageA.data()->x;
+    const float* b = &imageB.data()->x;
+    for (std::size_t k = 0; k < sum.size(); ++k)
+    {
+        const double d = double(a[k]) - double(b[k]), variance = 0.5 * d * d;
+        sum[k] += double(a[k]) + double(b[k]);
+        u[k] += variance;
+        uSquares[k] += variance * variance;
+    }
+}
+
+const PilotEstimate& PilotSums::estimate()
+{
+    if (current)
+        return estimated;
+    const double k = double(count), halves = 2.0 * k;
+    estimated = {width, height, std::vector<float>(sum.size()), std::vector<float>(sum.size()), {}};
+    if (count > 1)
+        estimated.varianceError.resize(sum.size());
+    for (std::size_t i = 0; i < sum.size(); ++i)
+    {
+        estimated.mean[i] = float(sum[i] / halves);
+        // The mean of the k u's over the 2k halves; the variance of that: the u's sample variance over k, over (2k)^2.
+        estimated.variance[i] = heldToFloat(u[i] / k / halves);
+        if (count > 1)
+            estimated.varianceError[i] =
+                heldToFloat(std::max(uSquares[i] - u[i] * u[i] / k, 0.0) / (k - 1.0) / k / (halves * halves));
+    }
+    current = true;
+    return estimated;
+}
 
 std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& candidates)
 {
-    return pilotRelMse(candidates, candidates);
+    const int width = candidates.empty() ? 0 : candidates.front().a.width();
+    const int height = candidates.empty() ? 0 : candidates.front().a.height();
+    std::vector<PilotEstimate> estimates;
+    std::vector<const PilotEstimate*> pointers;
+    for (const PilotHalves& c : candidates)
+        for (const Image* image : {&c.a, &c.b})
+            if (image->width() != width || image->height() != height)
+                throw UsageError(fmt::format("pilot images differ in size ({}x{} and {}x{})", width, height,
+                                             image->width(), image->height()));
+    estimates.reserve(candidates.size());
+    for (const PilotHalves& c : candidates)
+        pointers.push_back(&estimates.emplace_back(PilotEstimate::of(c)));
+    return pilotRelMse(pointers, pointers);
 }
 
-std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& measured, const std::vector<PilotHalves>& estimates)
-{
-    auto pointers = [](const std::vector<PilotHalves>& halves) {
-        std::vector<const PilotHalves*> p;
-        for (const PilotHalves& h : halves)
-            p.push_back(&h);
-        return p;
-    };
-    return pilotRelMse(pointers(measured), pointers(estimates));
-}
-
-std::vector<PilotError> pilotRelMse(std::span<const PilotHalves* const> measured,
-                                    std::span<const PilotHalves* const> estimates)
+std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> measured,
+                                    std::span<const PilotEstimate* const> estimates)
 {
     const std::size_t n = measured.size();
     if (n == 0)
         return {};
     if (estimates.size() != n)
         throw UsageError(fmt::format("{} pilot candidates measured and {} estimates", n, estimates.size()));
-    const int width = measured.front()->a.width(), height = measured.front()->a.height();
-    for (const auto set : {measured, estimates})
-        for (const PilotHalves* c : set)
-            for (const Image* image : {&c->a, &c->b})
-                if (image->width() != width || image->height() != height)
-                    throw UsageError(fmt::format("pilot images differ in size ({}x{} and {}x{})", width, height,
-                                                 image->width(), image->height()));
+    const int width = measured.front()->width, height = measured.front()->height;
     const std::size_t values = std::size_t(width) * std::size_t(height) * 3;
+    for (const auto set : {measured, estimates})
+        for (const PilotEstimate* c : set)
+            if (c->width != width || c->height != height || c->mean.size() != values || c->variance.size() != values ||
+                (!c->varianceError.empty() && c->varianceError.size() != values))
+                throw UsageError(fmt::format("pilot images differ in size ({}x{} and {}x{})", width, height, c->width,
+                                             c->height));
     if (values == 0)
         return std::vector<PilotError>(n);
-    // x: each candidate's estimate (the halves' mean); v: the variance of its measured halves, (a - b)^2 / 4
-    // (Image/Metrics.h). Read from the images where needed: a GPU's pilot of 512 x 512 pixels over 13 candidates held
-    // 160 MB of them.
-    static_assert(sizeof(vec3) == 3 * sizeof(float), "an image's values are its pixels' channels, packed");
-    auto values_of = [](const Image& image) { return &image.data()->x; };
     // relMSE's denominator for candidate i: the others' estimate, per pixel. Never candidate i's own image: a firefly
     // divided by itself would make the spikiest estimator look the best (measured: bsdf chosen over nee-mis, which
     // is 2x as efficient, on cornell-box-lights at 2 spp).
@@ -224,24 +286,19 @@ std::vector<PilotError> pilotRelMse(std::span<const PilotHalves* const> measured
             std::fill_n(total.begin(), count, 0.0);
             for (std::size_t j = 0; j < n; ++j)
             {
-                const float* a = values_of(estimates[j]->a) + begin;
-                const float* b = values_of(estimates[j]->b) + begin;
-                const double half = 0.5 * w[j];
+                const float* x = estimates[j]->mean.data() + begin;
                 for (std::size_t k = 0; k < count; ++k)
-                    total[k] += half * (double(a[k]) + double(b[k]));
+                    total[k] += w[j] * double(x[k]);
             }
             for (std::size_t i = 0; i < n; ++i)
             {
-                const float* ea = values_of(estimates[i]->a) + begin;
-                const float* eb = values_of(estimates[i]->b) + begin;
-                const float* ma = values_of(measured[i]->a) + begin;
-                const float* mb = values_of(measured[i]->b) + begin;
+                const float* own = estimates[i]->mean.data() + begin;
                 // Where the candidate's weight is all but the whole (its relMSE orders of magnitude below the
                 // others'), the difference would cancel: the others' sum directly.
                 const double rest = weight - w[i];
                 if (n == 1)
                     for (std::size_t k = 0; k < count; ++k)
-                        others[k] = 0.5 * (double(ea[k]) + double(eb[k]));
+                        others[k] = double(own[k]);
                 else if (rest <= 1e-9 * weight)
                     for (std::size_t k = 0; k < count; ++k)
                     {
@@ -249,25 +306,25 @@ std::vector<PilotError> pilotRelMse(std::span<const PilotHalves* const> measured
                         for (std::size_t j = 0; j < n; ++j)
                             if (j != i)
                             {
-                                sumOthers += w[j] * 0.5 *
-                                             (double(values_of(estimates[j]->a)[begin + k]) +
-                                              double(values_of(estimates[j]->b)[begin + k]));
+                                sumOthers += w[j] * double(estimates[j]->mean[begin + k]);
                                 weightOthers += w[j];
                             }
                         others[k] = sumOthers / weightOthers;
                     }
                 else
                 {
-                    const double ownHalf = 0.5 * w[i], othersWeight = 1.0 / rest;
+                    const double othersWeight = 1.0 / rest;
                     for (std::size_t k = 0; k < count; ++k)
-                        others[k] = (total[k] - ownHalf * (double(ea[k]) + double(eb[k]))) * othersWeight;
+                        others[k] = (total[k] - w[i] * double(own[k])) * othersWeight;
                 }
                 // In float (its rounding, 1e-7 of a term, far below a pilot's noise): half the time of double's
-                // divisions, which held the loop. A tile whose float terms overflow (values of 1e19 and more,
+                // divisions, which held the loop. A tile whose float terms overflow (a variance of 1e38 and more,
                 // which double holds) is summed again in double.
-                PartialSums<kLanes> sum = relMseTerms<float, kLanes>(ma, mb, others.data(), count);
+                const float* v = measured[i]->variance.data() + begin;
+                const float* e = measured[i]->varianceError.empty() ? nullptr : measured[i]->varianceError.data() + begin;
+                PartialSums<kLanes> sum = relMseTerms<float, kLanes>(v, e, others.data(), count);
                 if (!std::isfinite(std::accumulate(sum.squares.begin(), sum.squares.end(), 0.0)))
-                    sum = relMseTerms<double, kLanes>(ma, mb, others.data(), count);
+                    sum = relMseTerms<double, kLanes>(v, e, others.data(), count);
                 for (std::size_t l = 0; l < kLanes; ++l)
                 {
                     sums[i][l] += sum.terms[l];
@@ -284,8 +341,12 @@ std::vector<PilotError> pilotRelMse(std::span<const PilotHalves* const> measured
                 sumSquares += squares[i][l];
             }
             const double mean = sumAll / double(values);
-            const double variance = std::max(sumSquares / double(values) - mean * mean, 0.0);
-            errors[i] = PilotError{mean, std::sqrt(variance / double(values))};
+            // The mean of independent terms: its variance their variances' sum over values^2, measured value by
+            // value where the estimate has them, else from the terms' spread.
+            const double variance = measured[i]->varianceError.empty()
+                                        ? std::max(sumSquares / double(values) - mean * mean, 0.0) / double(values)
+                                        : sumSquares / (double(values) * double(values));
+            errors[i] = PilotError{mean, std::sqrt(variance)};
         }
         for (std::size_t i = 0; i < n; ++i)
             w[i] = 1.0 / std::max(errors[i].relMse, 1e-300);
@@ -497,56 +558,12 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     const double shareMs = cost.ms(pixelsOf(pilot), pilot.spp); // a half's, as planned
     const auto timeLimit = std::chrono::nanoseconds(static_cast<std::int64_t>(std::max(4.0 * shareMs, 5.0) * 1e6));
 
-    /// Sums of a candidate's A and B halves over measurements of the same size, and their time.
-    struct Sums
-    {
-        PilotHalves sum;
-        double ms = 0.0;
-        int count = 0;
-
-        void add(Image&& imageA, Image&& imageB, double measurementMs)
-        {
-            ms += measurementMs;
-            current = false;
-            if (count++ == 0)
-            {
-                sum = {std::move(imageA), std::move(imageB)};
-                return;
-            }
-            for (std::size_t k = 0; k < sum.a.pixelCount(); ++k)
-            {
-                sum.a.data()[k] += imageA.data()[k];
-                sum.b.data()[k] += imageB.data()[k];
-            }
-        }
-        /// Kept until the next add: the search scores every candidate after each round, most of them unchanged.
-        const PilotHalves& mean()
-        {
-            if (count == 1)
-                return sum;
-            if (!current)
-            {
-                means = sum;
-                for (std::size_t k = 0; k < sum.a.pixelCount(); ++k)
-                {
-                    means.a.data()[k] /= float(count);
-                    means.b.data()[k] /= float(count);
-                }
-                current = true;
-            }
-            return means;
-        }
-
-    private:
-        PilotHalves means;
-        bool current = false;
-    };
     /// A candidate's measurements: all of them, and those of the final round.
     struct Candidate
     {
         PilotRow row;
-        Sums all, final;
-        std::vector<PilotHalves> each; // the scene's own: every measurement's halves (the decision's median)
+        PilotSums all, final;
+        std::vector<PilotEstimate> each; // the scene's own: every measurement's estimate (the decision's median)
     };
     const double halfPaths = pixelsOf(pilot) * double(pilot.spp);
     std::vector<Candidate> runs;
@@ -622,10 +639,10 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         c.row.ms += ms;
         ++c.row.measurements;
         if (finalRound)
-            c.final.add(Image(a.image), Image(b.image), ms);
+            c.final.add(a.image, b.image, ms);
+        c.all.add(a.image, b.image, ms);
         if (&c == &runs.front())
-            c.each.push_back({Image(a.image), Image(b.image)});
-        c.all.add(std::move(a.image), std::move(b.image), ms);
+            c.each.push_back(PilotEstimate::of({std::move(a.image), std::move(b.image)}));
         return true;
     };
     // Every candidate measured: their halves' means over all their measurements, in runs' order.
@@ -641,10 +658,10 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     auto rescore = [&] {
         const auto scoringStart = std::chrono::steady_clock::now();
         const std::vector<Candidate*> measuredRuns = scored();
-        std::vector<const PilotHalves*> halves;
+        std::vector<const PilotEstimate*> estimates;
         for (Candidate* c : measuredRuns)
-            halves.push_back(&c->all.mean());
-        const std::vector<PilotError> errors = pilotRelMse(halves, halves);
+            estimates.push_back(&c->all.estimate());
+        const std::vector<PilotError> errors = pilotRelMse(estimates, estimates);
         for (std::size_t i = 0; i < measuredRuns.size(); ++i)
         {
             PilotRow& row = measuredRuns[i]->row;
@@ -727,25 +744,27 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     });
     if (challenger != measuredRuns.end() && measuredRuns.front() == &runs.front())
     {
-        std::vector<const PilotHalves*> measuredHalves, estimates;
+        std::vector<const PilotEstimate*> measuredEstimates, estimates;
         for (Candidate* c : measuredRuns)
         {
-            measuredHalves.push_back(c == *challenger ? &c->final.mean() : &c->all.mean());
-            estimates.push_back(&c->all.mean());
+            measuredEstimates.push_back(c == *challenger ? &c->final.estimate() : &c->all.estimate());
+            estimates.push_back(&c->all.estimate());
         }
-        const std::vector<PilotError> errors = pilotRelMse(measuredHalves, estimates);
+        const std::vector<PilotError> errors = pilotRelMse(measuredEstimates, estimates);
         const std::size_t at = std::size_t(challenger - measuredRuns.begin());
         PilotRow& row = (*challenger)->row;
         row.finalMeasurements = (*challenger)->final.count;
         row.finalRelMse = errors[at].relMse;
         row.finalRelMseError = errors[at].standardError;
-        // A measurement's time: from the timing frames where the final round had them, else as measured.
+        // A measurement's time: from the timing frames where the final round had them, else the least of the final
+        // round's measurements of each (they take turns; a stall only adds time: on 2 cores one measurement of the
+        // own's 6 ms renders took 7.9 ms where its others took 5.6-6.6).
         Candidate& ownRun = runs.front();
         const bool timed = row.timingMsPerPath > 0.0 && ownRun.row.timingMsPerPath > 0.0;
         const double finalMs = timed ? double(row.finalMeasurements) * 2.0 * halfPaths * row.timingMsPerPath
-                                     : (*challenger)->final.ms;
+                                     : double(row.finalMeasurements) * (*challenger)->final.leastMs;
         const double ownMs = timed ? double(ownRun.row.measurements) * 2.0 * halfPaths * ownRun.row.timingMsPerPath
-                                   : ownRun.row.ms;
+                                   : double(ownRun.row.measurements) * ownRun.final.leastMs;
         row.finalEfficiency = row.finalRelMse > 0.0 ? 1.0 / (row.finalRelMse * finalMs * 1e-3) : 0.0;
         // The scene's own by its median measurement, the challenger by the mean of its: a pilot's small renders see a
         // heavy-tailed error as a rare firefly, which then decides. On veach-mis at 1 s on 2 cores (3 spp a half over
@@ -755,10 +774,10 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         // the pilot to a challenger: both ways the scene's own stays unless the challenger leads the own's typical
         // measurement. (A challenger's median would hide its heavier tail: area sampling on veach-mis, 0.13x.)
         std::vector<PilotError> each;
-        for (const PilotHalves& halves : ownRun.each)
+        for (const PilotEstimate& measurement : ownRun.each)
         {
-            measuredHalves.front() = &halves;
-            each.push_back(pilotRelMse(measuredHalves, estimates).front());
+            measuredEstimates.front() = &measurement;
+            each.push_back(pilotRelMse(measuredEstimates, estimates).front());
         }
         std::sort(each.begin(), each.end(),
                   [](const PilotError& x, const PilotError& y) { return x.relMse < y.relMse; });
@@ -772,9 +791,13 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             incumbent.medianRelMse > 0.0 ? 1.0 / (incumbent.medianRelMse * ownMs * 1e-3) : 0.0;
         const double ownEfficiency = incumbent.relMse > 0.0 ? 1.0 / (incumbent.relMse * ownMs * 1e-3) : 0.0;
         auto relative = [](double value, double error) { return value > 0.0 ? error / value : 0.0; };
-        // The own by the better of its median and its mean: the median's own noise (six measurements' median, a
-        // tenth below their mean on veach-mis) must not push the pilot to a challenger either.
-        const bool byMedian = incumbent.medianEfficiency > ownEfficiency;
+        // The own by its median where that is kFireflyMedian times its mean's: a firefly among its measurements. Not
+        // the better of the two: a few measurements' relMSE is skewed (their median below their mean), and on
+        // cornell-box-lights at 4 s (2 cores) the median's efficiency was 1.0-1.14x the mean's in 7 of 8 pilots (1.38x
+        // once), which held the own 7 % above its efficiency and, with the 10 %, asked a challenger to lead by 18 %;
+        // veach-mis's firefly put it at 8x.
+        constexpr double kFireflyMedian = 1.5;
+        const bool byMedian = incumbent.medianEfficiency > kFireflyMedian * ownEfficiency;
         const PilotScore ownScore =
             byMedian ? PilotScore{incumbent.medianEfficiency, relative(lower.relMse, lower.standardError)}
                      : PilotScore{ownEfficiency, relative(incumbent.relMse, incumbent.relMseError)};
@@ -809,13 +832,17 @@ bool pilotSwitches(const PilotScore& own, const PilotScore& challenger)
         return false;
     if (own.efficiency <= 0.0)
         return true;
-    // The lead must also be 10 %: the relMSE's standard error leaves the times out, and a pilot's renders of a few
-    // milliseconds are timed to about that (on an H200, 600 px, a pilot right after its pipelines' compilation
-    // switched sphere-light-closeup to solid-angle sampling, 0.7x the scene's projected at the render's 10,000 spp);
-    // a smaller lead would also gain less than the pilot cost.
+    // One standard error, not two: the challenger's final measurements are fresh (unbiased), so its measured lead is
+    // the best guess of its true lead, and the costs are even: a wrong switch loses what a wrong keep would have
+    // gained. Two standard errors kept cornell-box-lights' own (0.87x the best) in 7 of 8 CPU pilots at 4 s, whose
+    // relMSE a 0.2 s pilot knows to 7-10 % per candidate (the paths' heavy tails, pixel by pixel), against leads of
+    // 12-20 %. The lead must also be 10 %: the relMSE's standard error leaves the times out, and a pilot's renders of
+    // a few milliseconds are timed to about that (on an H200, 600 px, a pilot right after its pipelines'
+    // compilation switched sphere-light-closeup to solid-angle sampling, 0.7x the scene's projected at the render's
+    // 10,000 spp); a smaller lead would also gain less than the pilot cost.
     constexpr double kMinimumLead = 1.1;
     return std::log(challenger.efficiency / own.efficiency) >
-           std::max(std::log(kMinimumLead), 2.0 * std::hypot(own.relativeError, challenger.relativeError));
+           std::max(std::log(kMinimumLead), std::hypot(own.relativeError, challenger.relativeError));
 }
 
 nlohmann::json AutoChoice::toJson() const

@@ -19,17 +19,19 @@
 // sampler kept book 3's mixture on rtrol-cornell-box, where an estimator with NEE and a cheaper sampler is 2x as
 // efficient.
 //
-// A candidate's error is the variance of its estimate from its halves (Image/Metrics.h's two-half estimate), as
+// A candidate's error is the variance of its estimate from its measurements' halves (PilotEstimate), as
 // relMSE, whose denominator is the other candidates' combined estimate (weighted by their inverse errors), never
 // the candidate's own image (a firefly over itself is about 1). Every candidate is
 // unbiased (the engines' agreement tests), so its variance is its error: the error against the others' estimate
 // would add their noise, and on a glossy scene's heavy tails (veach-mis) its correction for that noise failed and
-// read as a bias. Its efficiency is 1 / (relMSE x seconds), twice the faster half's time
-// on the engine's clock (Compare/Measurement.h) less the half's fixed and per-pixel cost (the render's paths' time). The final round's challenger wins where, on its final round's
-// measurements alone (the earlier ones chose it, and are lucky), its lead over the scene's own is more than twice
-// the standard error of their ratio and 10 % (pilotSwitches): otherwise the scene's own stays. The own counts by the
-// better of its measurements' median and their mean (a firefly in one of a small pilot's renders is not a
-// measurement of a tail), the challenger by its mean (its fireflies count against it). The measurements are
+// read as a bias. Its efficiency is 1 / (relMSE x seconds), twice the faster half's time on the engine's clock
+// (Compare/Measurement.h) less the half's fixed and per-pixel cost (the render's paths' time; in the decision every
+// measurement at the least of its final round's, since a stall only adds time). The final round's challenger wins
+// where, on its final round's measurements alone (the earlier ones chose it, and are lucky), its lead over the
+// scene's own is more than the standard error of their ratio and 10 % (pilotSwitches): otherwise the scene's own
+// stays. The own counts by its mean, or by its measurements' median where a firefly put that at 1.5x (a firefly in
+// one of a small pilot's renders is not a measurement of a tail), the challenger by its mean (its fireflies count
+// against it). The measurements are
 // planned to fill the budget on the engine's clock; the search stops once its time on the host's clock passes twice
 // the budget (each render's set-up on the host): the candidates left are not measured, and without a final
 // round the most efficient measured, on all its measurements, against the same rule (a final round cut short keeps
@@ -187,26 +189,64 @@ struct PilotHalves
     Image b;
 };
 
+/// A candidate's estimate from its k >= 1 measurements, each two independent renders of the same size and spp (its
+/// halves), per value (pixel channel, Image's order): their mean, that mean's variance, and where k >= 2 the
+/// variance of that variance's estimate. Each measurement's halves give the value's variance once, u = (a - b)^2 / 2
+/// (for one measurement (a - b)^2 / 4 as the mean's: Image/Metrics.h's two-half estimate); the mean of the k u's has
+/// k degrees of freedom where the mean of the A halves against the mean of the B halves had one, and their spread
+/// measures its own error, value by value, whatever the paths' distribution. (The spread of the values' terms, the
+/// error where k = 1, also holds how much the pixels' true variances differ: on cornell-box-lights that kept a
+/// pilot's relMSE at 7-10 % however many measurements it pooled.)
+struct PilotEstimate
+{
+    int width = 0;
+    int height = 0;
+    std::vector<float> mean;
+    std::vector<float> variance; // of the mean; at most float's largest (a value past its range is held there)
+    std::vector<float> varianceError; // of `variance`, as a variance; empty where k = 1
+
+    static PilotEstimate of(const PilotHalves& halves);
+};
+
+/// A candidate's measurements of the same size summed as they come, in double (a firefly's u squared spans float's
+/// range): their halves, each measurement's u and its square (PilotEstimate), and their time.
+class PilotSums
+{
+public:
+    /// One measurement: its halves (the same size as every earlier one's; throws UsageError otherwise) and its time.
+    void add(const Image& a, const Image& b, double ms);
+    /// The estimate from every measurement added (at least one), kept until the next add: the search scores every
+    /// candidate after each round, most of them unchanged.
+    const PilotEstimate& estimate();
+
+    double ms = 0.0; // every measurement's
+    double leastMs = 0.0; // the least of them
+    int count = 0; // measurements
+
+private:
+    std::vector<double> sum, u, uSquares;
+    int width = 0;
+    int height = 0;
+    PilotEstimate estimated;
+    bool current = false;
+};
+
 struct PilotError
 {
     double relMse = 0.0;
-    double standardError = 0.0; // of relMse, from the spread of its pixels' terms
+    double standardError = 0.0; // of relMse: from PilotEstimate::varianceError, else the spread of its pixels' terms
 };
 
-/// The pilot's error of each candidate (see above: its halves' variance as relMSE, normalised by the others'
-/// combined estimate; one candidate: by its own). Every image the same
-/// size; throws UsageError otherwise.
+/// The pilot's error of each candidate (see above: its estimate's variance as relMSE, normalised by the others'
+/// combined estimate; one candidate: by its own). Every image the same size; throws UsageError otherwise.
 std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& candidates);
 
-/// The same with each candidate's variance from `measured[i]` and the others' combined estimate from `estimates`
-/// (the decision measures the final round's challenger by its final measurements, normalised by every
-/// measurement's estimate). Both lists of the same length and image size; throws UsageError otherwise.
-std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& measured, const std::vector<PilotHalves>& estimates);
-
-/// The same on halves held elsewhere (the search's running means: no copy of a GPU pilot's 13 x 2 images of 3 MB).
-/// No pointer null.
-std::vector<PilotError> pilotRelMse(std::span<const PilotHalves* const> measured,
-                                    std::span<const PilotHalves* const> estimates);
+/// The same with each candidate's variance from `measured[i]` and the others' combined estimate from the means of
+/// `estimates` (the decision measures the final round's challenger by its final measurements, normalised by every
+/// measurement's estimate). Both lists of the same length and image size, no pointer null; throws UsageError
+/// otherwise.
+std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> measured,
+                                    std::span<const PilotEstimate* const> estimates);
 
 /// A candidate as the decision reads it: its efficiency 1 / (relMSE s) and its relMSE's relative standard error.
 struct PilotScore
@@ -216,10 +256,9 @@ struct PilotScore
 };
 
 /// Whether the pilot leaves the scene's own strategy for `challenger`: where the log of their efficiencies' ratio
-/// is more than twice its standard error (the relMSEs' relative errors) and the lead more than 10 % (the times'
-/// noise, which that error leaves out). Within that, a tie
-/// or noise, the scene's own stays: with one standard error, and the challenger's lucky measurements counted, the
-/// best of 12 candidates beat the scene's own by noise alone (uniform light selection on an H100's
-/// cornell-box-lights, 0.85x the BVH's efficiency).
+/// is more than its standard error (the relMSEs' relative errors) and the lead more than 10 % (the times' noise,
+/// which that error leaves out). Within that, a tie or noise, the scene's own stays. `challenger` must be measured
+/// afresh, not by the measurements that chose it: with those counted, the best of 12 candidates beat the scene's
+/// own by noise alone (uniform light selection on an H100's cornell-box-lights, 0.85x the BVH's efficiency).
 bool pilotSwitches(const PilotScore& own, const PilotScore& challenger);
 } // namespace rt::compare

@@ -137,6 +137,96 @@ TEST(PilotError, OneCandidateIsItsOwnVarianceAndSizesMustMatch)
     EXPECT_THROW(pilotRelMse(mismatched), UsageError);
 }
 
+/// relMSE of candidate 0, measured by `sums` and normalised by the estimate of a second candidate `other`.
+PilotError relMseAgainst(PilotSums& sums, PilotSums& other)
+{
+    const std::vector<const PilotEstimate*> measured{&sums.estimate(), &other.estimate()};
+    return pilotRelMse(measured, measured).front();
+}
+
+TEST(PilotSums, OneMeasurementIsItsTwoHalves)
+{
+    std::mt19937 rng(16);
+    const PilotHalves h = halves(rng, gaussian(0.1f));
+    PilotSums sums;
+    sums.add(h.a, h.b, 2.0);
+    const PilotEstimate& e = sums.estimate();
+    const PilotEstimate direct = PilotEstimate::of(h);
+    ASSERT_EQ(e.variance.size(), direct.variance.size());
+    for (std::size_t k = 0; k < e.variance.size(); k += 97)
+    {
+        EXPECT_FLOAT_EQ(e.mean[k], direct.mean[k]);
+        EXPECT_FLOAT_EQ(e.variance[k], direct.variance[k]);
+    }
+    EXPECT_TRUE(e.varianceError.empty()) << "one measurement's u has no spread";
+    EXPECT_THROW(sums.add(Image(4, 4), Image(4, 4), 1.0), UsageError);
+}
+
+TEST(PilotSums, MeasurementsPoolTheirVarianceAndMeasureItsError)
+{
+    // k measurements of Gaussian halves: the mean of 2k halves has variance sigma^2 / 2k; each value's estimate of it
+    // has relative standard error sqrt(2 / k) (a mean of k chi-square(1) terms), the mean over N values sqrt(2 / kN).
+    std::mt19937 rng(17);
+    constexpr float kSigma = 0.1f;
+    constexpr int kMeasurements = 4;
+    PilotSums sums, other;
+    for (int m = 0; m < kMeasurements; ++m)
+        for (PilotSums* s : {&sums, &other})
+        {
+            const PilotHalves h = halves(rng, gaussian(kSigma));
+            s->add(h.a, h.b, 1.0);
+        }
+    const PilotError error = relMseAgainst(sums, other);
+    const double expected = relMseOf(kSigma * kSigma / (2.0 * kMeasurements));
+    const double relative = std::sqrt(2.0 / (kMeasurements * 20172.0));
+    EXPECT_NEAR(error.relMse, expected, 5.0 * relative * expected);
+    EXPECT_GT(error.standardError, 0.7 * relative * expected);
+    EXPECT_LT(error.standardError, 1.4 * relative * expected);
+}
+
+TEST(PilotSums, TheStandardErrorIsTheSpreadOfRepeatedPilotsWherePixelsDiffer)
+{
+    // A field whose pixels' noise differs 30-fold (a light's edge beside a dark wall): the spread of the values'
+    // terms holds the differences between pixels too, which repeated pilots over the same pixels do not show (here
+    // it is 1.6x the spread). The standard error from each value's own spread (PilotEstimate::varianceError) against the relMSE's
+    // spread over 40 independent pilots of 3 measurements each: within 30 % (the spread of 40 draws is itself known
+    // to about 11 %).
+    std::mt19937 rng(18);
+    // One pixel in 16 with 30x the others' noise.
+    auto image = [&] {
+        Image i(kSide, kSide);
+        std::size_t index = 0;
+        for (vec3& p : i.pixels())
+        {
+            const float sigma = index++ % 16 == 0 ? 0.3f : 0.01f;
+            for (int c = 0; c < 3; ++c)
+                p[c] = kRadiance + sigma * std::normal_distribution<float>()(rng);
+        }
+        return i;
+    };
+    constexpr int kPilots = 40;
+    std::vector<double> relMses;
+    double meanStandardError = 0.0;
+    for (int pilot = 0; pilot < kPilots; ++pilot)
+    {
+        PilotSums sums, other;
+        for (int m = 0; m < 3; ++m)
+            for (PilotSums* s : {&sums, &other})
+                s->add(image(), image(), 1.0);
+        const PilotError error = relMseAgainst(sums, other);
+        relMses.push_back(error.relMse);
+        meanStandardError += error.standardError / kPilots;
+    }
+    double mean = 0.0, squares = 0.0;
+    for (const double r : relMses)
+        mean += r / kPilots;
+    for (const double r : relMses)
+        squares += (r - mean) * (r - mean);
+    const double spread = std::sqrt(squares / (kPilots - 1));
+    EXPECT_GT(meanStandardError, 0.7 * spread);
+    EXPECT_LT(meanStandardError, 1.3 * spread);
+}
+
 TEST(AutoCandidates, FollowTheScenesLights)
 {
     const Scene spheres = makeScene("sphere-light-closeup");
