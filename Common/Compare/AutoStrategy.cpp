@@ -121,35 +121,55 @@ struct PartialSums
     std::array<double, Lanes> terms{}, squares{};
 };
 
-/// The sums of relMSE's terms variance / (others^2 + epsilon) over `count` values and, in `squares`, of their squares
-/// or, where `error` is given, of error / (others^2 + epsilon)^2 (each term's own variance), in Lanes independent
-/// sums (which the compiler vectorises), each term computed in Real.
-template <class Real, std::size_t Lanes>
-PartialSums<Lanes> relMseTerms(const float* variance, const float* error, const double* others, std::size_t count)
+/// Over `pixels` pixels: the sums of their relMSE terms T = sum over the channels of deviation^2 / (others^2 +
+/// epsilon) and, in `squares`, of T^2 or, where `error` is given, of each T's own variance (the pixel's error times
+/// the square of its channels' mean 1 / (others^2 + epsilon): the channels' weights nearly equal where they matter),
+/// in Lanes independent sums (which the compiler vectorises), each term computed in Real.
+template <class Real, bool HasError, std::size_t Lanes>
+PartialSums<Lanes> relMseTerms(const float* deviation, const double* error, const double* others, std::size_t pixels)
 {
     // Local sums, copied out at the end: the result's (the caller's memory) might alias `others` for all the
     // compiler knows, which kept every addition a store and a load.
     double terms[Lanes] = {}, squares[Lanes] = {};
-    auto add = [&](std::size_t k, std::size_t l) {
-        const Real o = Real(others[k]);
-        const Real scale = Real(1) / (o * o + Real(kRelMseEpsilon));
-        const double t = double(Real(variance[k]) * scale);
-        terms[l] += t;
-        squares[l] += error ? double(Real(error[k]) * scale * scale) : t * t;
+    auto add = [&](std::size_t p, std::size_t l) {
+        Real t = 0, meanScale = 0;
+        for (std::size_t c = 0; c < 3; ++c)
+        {
+            const Real o = Real(others[3 * p + c]), d = Real(deviation[3 * p + c]);
+            const Real scale = Real(1) / (o * o + Real(kRelMseEpsilon));
+            t += d * d * scale;
+            meanScale += scale / Real(3);
+        }
+        terms[l] += double(t);
+        if constexpr (HasError)
+            squares[l] += error[p] * double(meanScale) * double(meanScale);
+        else
+            squares[l] += double(t) * double(t);
     };
-    std::size_t k = 0;
-    for (; k + Lanes <= count; k += Lanes)
+    std::size_t p = 0;
+    for (; p + Lanes <= pixels; p += Lanes)
         for (std::size_t l = 0; l < Lanes; ++l)
-            add(k + l, l);
-    for (; k < count; ++k)
-        add(k, 0);
+            add(p + l, l);
+    for (; p < pixels; ++p)
+        add(p, 0);
     PartialSums<Lanes> s;
     std::copy_n(terms, Lanes, s.terms.begin());
     std::copy_n(squares, Lanes, s.squares.begin());
     return s;
 }
 
-float heldToFloat(double value) { return float(std::min(value, double(std::numeric_limits<float>::max()))); }
+template <class Real, std::size_t Lanes>
+PartialSums<Lanes> relMseTerms(const float* deviation, const double* error, const double* others, std::size_t pixels)
+{
+    return error ? relMseTerms<Real, true, Lanes>(deviation, error, others, pixels)
+                 : relMseTerms<Real, false, Lanes>(deviation, error, others, pixels);
+}
+
+/// A standard deviation in float: float's largest where it is beyond (a half of 1e38 and more).
+float deviationOf(double variance)
+{
+    return float(std::min(std::sqrt(variance), double(std::numeric_limits<float>::max())));
+}
 } // namespace
 
 PilotEstimate PilotEstimate::of(const PilotHalves& halves)
@@ -157,14 +177,14 @@ PilotEstimate PilotEstimate::of(const PilotHalves& halves)
     PilotEstimate e{halves.a.width(), halves.a.height(), {}, {}, {}};
     const std::size_t values = halves.a.pixelCount() * 3;
     e.mean.resize(values);
-    e.variance.resize(values);
+    e.deviation.resize(values);
     const float* a = &halves.a.data()->x;
     const float* b = &halves.b.data()->x;
     for (std::size_t k = 0; k < values; ++k)
     {
-        const double d = double(a[k]) - double(b[k]);
         e.mean[k] = float(0.5 * (double(a[k]) + double(b[k])));
-        e.variance[k] = heldToFloat(0.25 * d * d);
+        e.deviation[k] = float(std::min(0.5 * std::abs(double(a[k]) - double(b[k])),
+                                        double(std::numeric_limits<float>::max())));
     }
     return e;
 }
@@ -184,18 +204,23 @@ void PilotSums::add(const Image& imageA, const Image& imageB, double measurement
     {
         width = imageA.width();
         height = imageA.height();
-        sum.assign(imageA.pixelCount() * 3, 0.0);
+        sum.assign(imageA.pixelCount() * 3, 0.0f);
         u.assign(sum.size(), 0.0);
-        uSquares.assign(sum.size(), 0.0);
+        pixelUSquares.assign(imageA.pixelCount(), 0.0);
     }
     const float* a = &imageA.data()->x;
     const float* b = &imageB.data()->x;
-    for (std::size_t k = 0; k < sum.size(); ++k)
+    for (std::size_t p = 0; p < pixelUSquares.size(); ++p)
     {
-        const double d = double(a[k]) - double(b[k]), variance = 0.5 * d * d;
-        sum[k] += double(a[k]) + double(b[k]);
-        u[k] += variance;
-        uSquares[k] += variance * variance;
+        double pixelU = 0.0;
+        for (std::size_t k = 3 * p; k < 3 * p + 3; ++k)
+        {
+            const double d = double(a[k]) - double(b[k]), variance = 0.5 * d * d;
+            sum[k] += a[k] + b[k];
+            u[k] += variance;
+            pixelU += variance;
+        }
+        pixelUSquares[p] += pixelU * pixelU;
     }
 }
 
@@ -205,16 +230,22 @@ const PilotEstimate& PilotSums::estimate()
         return estimated;
     const double k = double(count), halves = 2.0 * k;
     estimated = {width, height, std::vector<float>(sum.size()), std::vector<float>(sum.size()), {}};
-    if (count > 1)
-        estimated.varianceError.resize(sum.size());
     for (std::size_t i = 0; i < sum.size(); ++i)
     {
-        estimated.mean[i] = float(sum[i] / halves);
-        // The mean of the k u's over the 2k halves; the variance of that: the u's sample variance over k, over (2k)^2.
-        estimated.variance[i] = heldToFloat(u[i] / k / halves);
-        if (count > 1)
-            estimated.varianceError[i] =
-                heldToFloat(std::max(uSquares[i] - u[i] * u[i] / k, 0.0) / (k - 1.0) / k / (halves * halves));
+        estimated.mean[i] = float(double(sum[i]) / halves);
+        // The mean of the k u's over the 2k halves.
+        estimated.deviation[i] = deviationOf(u[i] / k / halves);
+    }
+    if (count > 1)
+    {
+        // A pixel's summed u's sample variance over k, over (2k)^2.
+        estimated.pixelVarianceError.resize(pixelUSquares.size());
+        for (std::size_t p = 0; p < pixelUSquares.size(); ++p)
+        {
+            const double pixelU = u[3 * p] + u[3 * p + 1] + u[3 * p + 2];
+            estimated.pixelVarianceError[p] =
+                std::max(pixelUSquares[p] - pixelU * pixelU / k, 0.0) / (k - 1.0) / k / (halves * halves);
+        }
     }
     current = true;
     return estimated;
@@ -246,11 +277,11 @@ std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> measur
     if (estimates.size() != n)
         throw UsageError(fmt::format("{} pilot candidates measured and {} estimates", n, estimates.size()));
     const int width = measured.front()->width, height = measured.front()->height;
-    const std::size_t values = std::size_t(width) * std::size_t(height) * 3;
+    const std::size_t pixels = std::size_t(width) * std::size_t(height), values = pixels * 3;
     for (const auto set : {measured, estimates})
         for (const PilotEstimate* c : set)
-            if (c->width != width || c->height != height || c->mean.size() != values || c->variance.size() != values ||
-                (!c->varianceError.empty() && c->varianceError.size() != values))
+            if (c->width != width || c->height != height || c->mean.size() != values || c->deviation.size() != values ||
+                (!c->pixelVarianceError.empty() && c->pixelVarianceError.size() != pixels))
                 throw UsageError(fmt::format("pilot images differ in size ({}x{} and {}x{})", width, height, c->width,
                                              c->height));
     if (values == 0)
@@ -263,11 +294,11 @@ std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> measur
     // The others' weighted mean is the weighted sum of all less the candidate's own term: one sum per pass, not one per
     // candidate (n^2 passes over the pixels took seconds of the host's clock on a GPU's pilot, which the search's
     // guard of twice its budget then cut short).
-    // The images are read a tile of values at a time, the weighted sum of the tile held in cache for every candidate's
+    // The images are read a tile of pixels at a time, the weighted sum of the tile held in cache for every candidate's
     // terms, in loops of kLanes independent sums the compiler vectorises: one pass over each image per pass, where a
     // pass over the whole image per candidate took 0.4 s of an H200 host's clock a round at 13 x 512 x 512 (half a
     // 10 s render's pilot, whose guard then stopped the search before its final round).
-    constexpr std::size_t kTile = 4096, kLanes = 8;
+    constexpr std::size_t kTilePixels = 1365, kTile = 3 * kTilePixels, kLanes = 8;
     // Twice: the others' plain mean gives every candidate's error, whose inverses weight the others' mean of the
     // second pass, so that a noisy candidate does not make its neighbours' denominators noisy.
     std::vector<double> w(n, 1.0);
@@ -278,7 +309,8 @@ std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> measur
         double weight = 0.0;
         for (std::size_t j = 0; j < n; ++j)
             weight += w[j];
-        // The mean of v_i / (others^2 + epsilon) over the values, and its standard error, from kLanes partial sums.
+        // The mean of v_i / (others^2 + epsilon) over the values, and its standard error over the pixels, from kLanes
+        // partial sums.
         std::vector<std::array<double, kLanes>> sums(n), squares(n);
         for (std::size_t begin = 0; begin < values; begin += kTile)
         {
@@ -318,13 +350,16 @@ std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> measur
                         others[k] = (total[k] - w[i] * double(own[k])) * othersWeight;
                 }
                 // In float (its rounding, 1e-7 of a term, far below a pilot's noise): half the time of double's
-                // divisions, which held the loop. A tile whose float terms overflow (a variance of 1e38 and more,
-                // which double holds) is summed again in double.
-                const float* v = measured[i]->variance.data() + begin;
-                const float* e = measured[i]->varianceError.empty() ? nullptr : measured[i]->varianceError.data() + begin;
-                PartialSums<kLanes> sum = relMseTerms<float, kLanes>(v, e, others.data(), count);
-                if (!std::isfinite(std::accumulate(sum.squares.begin(), sum.squares.end(), 0.0)))
-                    sum = relMseTerms<double, kLanes>(v, e, others.data(), count);
+                // divisions, which held the loop. A tile whose float terms overflow (a deviation of 1e19 and more,
+                // whose square double holds) is summed again in double.
+                const float* d = measured[i]->deviation.data() + begin;
+                const double* e = measured[i]->pixelVarianceError.empty()
+                                      ? nullptr
+                                      : measured[i]->pixelVarianceError.data() + begin / 3;
+                PartialSums<kLanes> sum = relMseTerms<float, kLanes>(d, e, others.data(), count / 3);
+                if (!std::isfinite(std::accumulate(sum.terms.begin(), sum.terms.end(), 0.0) +
+                                   std::accumulate(sum.squares.begin(), sum.squares.end(), 0.0)))
+                    sum = relMseTerms<double, kLanes>(d, e, others.data(), count / 3);
                 for (std::size_t l = 0; l < kLanes; ++l)
                 {
                     sums[i][l] += sum.terms[l];
@@ -340,12 +375,13 @@ std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> measur
                 sumAll += sums[i][l];
                 sumSquares += squares[i][l];
             }
-            const double mean = sumAll / double(values);
-            // The mean of independent terms: its variance their variances' sum over values^2, measured value by
-            // value where the estimate has them, else from the terms' spread.
-            const double variance = measured[i]->varianceError.empty()
-                                        ? std::max(sumSquares / double(values) - mean * mean, 0.0) / double(values)
-                                        : sumSquares / (double(values) * double(values));
+            // The mean over the values of the pixels' independent terms: its variance their variances' sum over
+            // values^2, measured pixel by pixel where the estimate has them, else from the pixels' terms' spread.
+            const double mean = sumAll / double(values), pixelMean = sumAll / double(pixels);
+            const double variance =
+                measured[i]->pixelVarianceError.empty()
+                    ? std::max(sumSquares / double(pixels) - pixelMean * pixelMean, 0.0) / double(pixels) / 9.0
+                    : sumSquares / (double(values) * double(values));
             errors[i] = PilotError{mean, std::sqrt(variance)};
         }
         for (std::size_t i = 0; i < n; ++i)
@@ -409,9 +445,12 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
                                       ProbeTiming{pixelsOf(large), std::clamp(request.settings.trueSpp(), 1, kProbeSpp)},
                                       ProbeTiming{pixelsOf(small), 1}};
     // The first render after a scene is set is the slower (2-3 ms against 0.7-0.9 ms for 1024 paths on 2 cores: a
-    // pool's first dispatch, cold caches): the first probe is rendered again after the others, the faster kept.
+    // pool's first dispatch, cold caches): the first probe is rendered again after the others, the faster kept. So is
+    // the second, whose time over the first's is the paths' cost: on 2 cores one slow render of its 3 ms put that at
+    // 1.75x the render's, and the pilot planned a CPU's cornell-box-lights at 2 spp a half where 4 fitted, used half
+    // its budget and kept the own, 0.87x the best, in 2 of 6 seeds.
     double hostExtraMs = std::numeric_limits<double>::infinity(); // AutoChoice::hostExtraMs
-    for (const std::size_t i : {0, 1, 2, 0})
+    for (const std::size_t i : {0, 1, 2, 0, 1})
     {
         RenderRequest probe = request;
         probe.settings = i == 2 ? small : large;
@@ -562,8 +601,10 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     struct Candidate
     {
         PilotRow row;
-        PilotSums all, final;
+        PilotSums all;
+        PilotSums final; // the challenger's (the own keeps only finalLeastMs of its final round)
         std::vector<PilotEstimate> each; // the scene's own: every measurement's estimate (the decision's median)
+        double finalLeastMs = 0.0; // the scene's own: the least of its final round's measurements' time
     };
     const double halfPaths = pixelsOf(pilot) * double(pilot.spp);
     std::vector<Candidate> runs;
@@ -638,7 +679,9 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         const double ms = 2.0 * std::max(fasterMs - choice.overheadMs, 0.1 * fasterMs);
         c.row.ms += ms;
         ++c.row.measurements;
-        if (finalRound)
+        if (finalRound && &c == &runs.front())
+            c.finalLeastMs = c.finalLeastMs > 0.0 ? std::min(c.finalLeastMs, ms) : ms;
+        else if (finalRound)
             c.final.add(a.image, b.image, ms);
         c.all.add(a.image, b.image, ms);
         if (&c == &runs.front())
@@ -742,7 +785,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     const auto challenger = std::find_if(measuredRuns.begin(), measuredRuns.end(), [&](const Candidate* c) {
         return c != &runs.front() && c->final.count > 0;
     });
-    if (challenger != measuredRuns.end() && measuredRuns.front() == &runs.front())
+    if (challenger != measuredRuns.end() && measuredRuns.front() == &runs.front() && runs.front().finalLeastMs > 0.0)
     {
         std::vector<const PilotEstimate*> measuredEstimates, estimates;
         for (Candidate* c : measuredRuns)
@@ -764,7 +807,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         const double finalMs = timed ? double(row.finalMeasurements) * 2.0 * halfPaths * row.timingMsPerPath
                                      : double(row.finalMeasurements) * (*challenger)->final.leastMs;
         const double ownMs = timed ? double(ownRun.row.measurements) * 2.0 * halfPaths * ownRun.row.timingMsPerPath
-                                   : double(ownRun.row.measurements) * ownRun.final.leastMs;
+                                   : double(ownRun.row.measurements) * ownRun.finalLeastMs;
         row.finalEfficiency = row.finalRelMse > 0.0 ? 1.0 / (row.finalRelMse * finalMs * 1e-3) : 0.0;
         // The scene's own by its median measurement, the challenger by the mean of its: a pilot's small renders see a
         // heavy-tailed error as a rare firefly, which then decides. On veach-mis at 1 s on 2 cores (3 spp a half over
@@ -832,17 +875,18 @@ bool pilotSwitches(const PilotScore& own, const PilotScore& challenger)
         return false;
     if (own.efficiency <= 0.0)
         return true;
-    // One standard error, not two: the challenger's final measurements are fresh (unbiased), so its measured lead is
-    // the best guess of its true lead, and the costs are even: a wrong switch loses what a wrong keep would have
-    // gained. Two standard errors kept cornell-box-lights' own (0.87x the best) in 7 of 8 CPU pilots at 4 s, whose
-    // relMSE a 0.2 s pilot knows to 7-10 % per candidate (the paths' heavy tails, pixel by pixel), against leads of
-    // 12-20 %. The lead must also be 10 %: the relMSE's standard error leaves the times out, and a pilot's renders of
-    // a few milliseconds are timed to about that (on an H200, 600 px, a pilot right after its pipelines'
-    // compilation switched sphere-light-closeup to solid-angle sampling, 0.7x the scene's projected at the render's
-    // 10,000 spp); a smaller lead would also gain less than the pilot cost.
+    // Two standard errors, though the challenger's final measurements are fresh: a heavy tail its few renders did not
+    // meet is in no standard error, and its measured lead is then high more often than low. At one, CPU pilots of
+    // veach-mis (4 s, 12 seeds) left the own for area sampling with uniform selection once, 0.2x its efficiency, and
+    // on cornell-box-lights and glossy-cornell, whose best leads the own by 10-15 %, gained nothing a 0.2 s pilot
+    // could show (auto 0.85x and 0.86x the best, as at two): notebook §41. The lead must also be 10 %: the relMSE's
+    // standard error leaves the times out, and a pilot's renders of a few milliseconds are timed to about that (on
+    // an H200, 600 px, a pilot right after its pipelines' compilation switched sphere-light-closeup to solid-angle
+    // sampling, 0.7x the scene's projected at the render's 10,000 spp); a smaller lead would also gain less than the
+    // pilot cost.
     constexpr double kMinimumLead = 1.1;
     return std::log(challenger.efficiency / own.efficiency) >
-           std::max(std::log(kMinimumLead), std::hypot(own.relativeError, challenger.relativeError));
+           std::max(std::log(kMinimumLead), 2.0 * std::hypot(own.relativeError, challenger.relativeError));
 }
 
 nlohmann::json AutoChoice::toJson() const

@@ -3,8 +3,9 @@
 // scene, the engine and the build (issue 37: the project's own tables changed their verdict as the code got
 // faster).
 //
-// The pilot: three probe renders of the scene's strategy time a render's fixed cost, a pixel's and a path's
-// (RenderCost), and so estimate the render and plan the pilot's renders; the budget is a fraction of that estimate
+// The pilot: three probe renders of the scene's strategy (the first two twice, the faster kept) time a render's fixed
+// cost, a pixel's and a path's (RenderCost), and so estimate the render and plan the pilot's renders; the budget is a
+// fraction of that estimate
 // (5 % by default), at most a few seconds. Every frame of the pilot runs what the render will run (the GPU's
 // integrator for the render's paths: RenderEngine::setRepresentedPaths), each in one batch. Every candidate is
 // prepared (a GPU's pipelines compiled) before the budget's clock starts. Then every combination of the candidates
@@ -28,7 +29,7 @@
 // (Compare/Measurement.h) less the half's fixed and per-pixel cost (the render's paths' time; in the decision every
 // measurement at the least of its final round's, since a stall only adds time). The final round's challenger wins
 // where, on its final round's measurements alone (the earlier ones chose it, and are lucky), its lead over the
-// scene's own is more than the standard error of their ratio and 10 % (pilotSwitches): otherwise the scene's own
+// scene's own is more than twice the standard error of their ratio and 10 % (pilotSwitches): otherwise the scene's own
 // stays. The own counts by its mean, or by its measurements' median where a firefly put that at 1.5x (a firefly in
 // one of a small pilot's renders is not a measurement of a tail), the challenger by its mean (its fireflies count
 // against it). The measurements are
@@ -190,26 +191,28 @@ struct PilotHalves
 };
 
 /// A candidate's estimate from its k >= 1 measurements, each two independent renders of the same size and spp (its
-/// halves), per value (pixel channel, Image's order): their mean, that mean's variance, and where k >= 2 the
-/// variance of that variance's estimate. Each measurement's halves give the value's variance once, u = (a - b)^2 / 2
-/// (for one measurement (a - b)^2 / 4 as the mean's: Image/Metrics.h's two-half estimate); the mean of the k u's has
-/// k degrees of freedom where the mean of the A halves against the mean of the B halves had one, and their spread
-/// measures its own error, value by value, whatever the paths' distribution. (The spread of the values' terms, the
-/// error where k = 1, also holds how much the pixels' true variances differ: on cornell-box-lights that kept a
-/// pilot's relMSE at 7-10 % however many measurements it pooled.)
+/// halves), per value (pixel channel, Image's order): their mean and the standard deviation of that mean, and per
+/// pixel, where k >= 2, the variance of the estimate of its three channels' summed variance. Each measurement's halves
+/// give a value's variance once, u = (a - b)^2 / 2 (for one measurement (a - b)^2 / 4 as the mean's: Image/Metrics.h's
+/// two-half estimate); the mean of the k u's has k degrees of freedom where the mean of the A halves against the mean
+/// of the B halves had one, and the spread of a pixel's k summed u's measures its own error, pixel by pixel, for any
+/// paths' distribution of finite fourth moment. (The spread of the pixels' terms, the error where k = 1, also holds
+/// how much the pixels' true variances differ: on cornell-box-lights that kept a pilot's relMSE at 7-10 % however
+/// many measurements it pooled.) Per pixel, not per value: a path adds to a pixel's three channels at once.
 struct PilotEstimate
 {
     int width = 0;
     int height = 0;
     std::vector<float> mean;
-    std::vector<float> variance; // of the mean; at most float's largest (a value past its range is held there)
-    std::vector<float> varianceError; // of `variance`, as a variance; empty where k = 1
+    /// The mean's standard deviation (square root of its variance: float holds a firefly's, its square need not).
+    std::vector<float> deviation;
+    std::vector<double> pixelVarianceError; // per pixel; empty where k = 1
 
     static PilotEstimate of(const PilotHalves& halves);
 };
 
-/// A candidate's measurements of the same size summed as they come, in double (a firefly's u squared spans float's
-/// range): their halves, each measurement's u and its square (PilotEstimate), and their time.
+/// A candidate's measurements of the same size summed as they come: their halves, each measurement's u (in double: a
+/// firefly's spans float's range) and the square of each pixel's summed u (PilotEstimate), and their time.
 class PilotSums
 {
 public:
@@ -224,7 +227,8 @@ public:
     int count = 0; // measurements
 
 private:
-    std::vector<double> sum, u, uSquares;
+    std::vector<float> sum;
+    std::vector<double> u, pixelUSquares;
     int width = 0;
     int height = 0;
     PilotEstimate estimated;
@@ -234,7 +238,7 @@ private:
 struct PilotError
 {
     double relMse = 0.0;
-    double standardError = 0.0; // of relMse: from PilotEstimate::varianceError, else the spread of its pixels' terms
+    double standardError = 0.0; // of relMse: from PilotEstimate::pixelVarianceError, else the spread of its pixels' terms
 };
 
 /// The pilot's error of each candidate (see above: its estimate's variance as relMSE, normalised by the others'
@@ -256,9 +260,10 @@ struct PilotScore
 };
 
 /// Whether the pilot leaves the scene's own strategy for `challenger`: where the log of their efficiencies' ratio
-/// is more than its standard error (the relMSEs' relative errors) and the lead more than 10 % (the times' noise,
-/// which that error leaves out). Within that, a tie or noise, the scene's own stays. `challenger` must be measured
-/// afresh, not by the measurements that chose it: with those counted, the best of 12 candidates beat the scene's
-/// own by noise alone (uniform light selection on an H100's cornell-box-lights, 0.85x the BVH's efficiency).
+/// is more than twice its standard error (the relMSEs' relative errors) and the lead more than 10 % (the times'
+/// noise, which that error leaves out). Within that, a tie or noise, the scene's own stays: with one standard error,
+/// and the challenger's lucky measurements counted, the best of 12 candidates beat the scene's own by noise alone
+/// (uniform light selection on an H100's cornell-box-lights, 0.85x the BVH's efficiency); with its measurements
+/// fresh, a heavy tail they did not meet (area sampling on veach-mis, 0.2x the own's efficiency).
 bool pilotSwitches(const PilotScore& own, const PilotScore& challenger);
 } // namespace rt::compare

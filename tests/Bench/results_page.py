@@ -862,6 +862,43 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "counted), notebook §40",
                   "bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-4s-1129c multi 128 4000 2 16384 \\\n"
                   "    glossy-cornell triangle-lights veach-mis", "## 40.", "2026-11-29"),
+                 ("cpu-auto-strategy-4s-1129d", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                  "128 px wide, each strategy for 4 s, 12 fresh recheck seeds against the full comparisons and "
+                  "references of the rows above (RECHECK_ONLY; rect-light-closeup's of notebook §36's table): the "
+                  "pilot's measurements pooled and its switch at one standard error (8cc48c9's build)",
+                  "RECHECK_ONLY=1 IMAGES=<those rows' images> bash tests/Bench/auto_strategy.sh build/bin \\\n"
+                  "    docs/results/cpu-auto-strategy-4s-1129d multi 128 4000 2 16384 \\\n"
+                  "    cornell-box-lights glossy-cornell veach-mis rect-light-closeup triangle-lights", "## 41.",
+                  "2026-11-29"),
+                 ("cpu-auto-strategy-4s-1129e", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                  "the same, the standard error per pixel, not per channel, and the probe's second render repeated; "
+                  "still one standard error: veach-mis left its own for area sampling once, 0.2x (not kept)",
+                  "RECHECK_ONLY=1 IMAGES=<the row above's images> bash tests/Bench/auto_strategy.sh build/bin \\\n"
+                  "    docs/results/cpu-auto-strategy-4s-1129e multi 128 4000 2 16384 \\\n"
+                  "    cornell-box-lights glossy-cornell triangle-lights veach-mis rect-light-closeup", "## 41.",
+                  "2026-11-29"),
+                 ("cpu-auto-strategy-4s-1129f", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                  "the same with this session's last build (two standard errors again), and the three light scenes "
+                  "without a 4 s row in full",
+                  "RECHECK_ONLY=1 IMAGES=<the row above's images> bash tests/Bench/auto_strategy.sh build/bin \\\n"
+                  "    docs/results/cpu-auto-strategy-4s-1129f multi 128 4000 2 16384 cornell-box-lights glossy-cornell \\\n"
+                  "    triangle-lights veach-mis rect-light-closeup sphere-light-closeup many-lights rtrol-cornell-box",
+                  "## 41.", "2026-11-29"),
+                 ("h200-auto-strategy-10s-1129d", "NVIDIA H200, driver 580",
+                  "600 px wide, each strategy for 10 s, 1 seed for the full comparison, 4 recheck seeds: the light "
+                  "scenes without a GPU row of the current pilot, with 8cc48c9's build (the pilot's measurements "
+                  "pooled, its switch at one standard error; before the standard error per pixel)",
+                  "LEAN=1 bash tests/Bench/device_carry.sh  # then on the device, one scene a run:\n"
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=10000 SEEDS=1 REF_SPP=65536 SCENES=triangle-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto  # and SCENES=veach-mis", "## 41.", "2026-11-29"),
+                 ("h200-auto-strategy-5s-1129d", "NVIDIA H200, driver 580",
+                  "the same build, each strategy for 5 s: the scenes of one light (the own the best, where a switch "
+                  "at one standard error could leave it) and many-lights (3 recheck seeds, a reference of 32,768 spp: "
+                  "the device's budget)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=5000 SEEDS=1 REF_SPP=65536 \\\n"
+                  "    SCENES=\"sphere-light-closeup rect-light-closeup\" bash tests/Bench/device_run.sh auto\n"
+                  "RECHECK_SEEDS=3 HEADLESS_RUNS= MS=5000 SEEDS=1 REF_SPP=32768 SCENES=many-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 41.", "2026-11-29"),
                  ("h200-auto-strategy-10s-1129b", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 10 s, 1 seed for the full comparison, 4 recheck seeds; this "
                   "session's build (8109ba9: the scoring 4x faster, the final round's fallback, the equal-time row's "
