@@ -197,7 +197,6 @@ void PilotSums::add(const Image& imageA, const Image& imageB, double measurement
     if (imageB.width() != imageA.width() || imageB.height() != imageA.height())
         throw UsageError(fmt::format("a pilot measurement's halves differ in size ({}x{} and {}x{})", imageA.width(),
                                      imageA.height(), imageB.width(), imageB.height()));
-    ms += measurementMs;
     leastMs = count == 0 ? measurementMs : std::min(leastMs, measurementMs);
     current = false;
     if (count++ == 0)

@@ -212,7 +212,7 @@ struct PilotEstimate
 };
 
 /// A candidate's measurements of the same size summed as they come: their halves, each measurement's u (in double: a
-/// firefly's spans float's range) and the square of each pixel's summed u (PilotEstimate), and their time.
+/// firefly's spans float's range) and the square of each pixel's summed u (PilotEstimate), and their least time.
 class PilotSums
 {
 public:
@@ -222,8 +222,7 @@ public:
     /// candidate after each round, most of them unchanged.
     const PilotEstimate& estimate();
 
-    double ms = 0.0; // every measurement's
-    double leastMs = 0.0; // the least of them
+    double leastMs = 0.0; // the least of its measurements' times
     int count = 0; // measurements
 
 private:
