@@ -138,11 +138,24 @@ expect_one_error "$status" "^error: rank 0 \(.+\): .*images"
 rm -f "$work/images"
 echo "ok: root's error"
 
-long_compare
-victim=$(rank_pid 1 "--compare --scene cornell-box-lights --width 64")
-[ -n "$victim" ] || fail "no rank 1 found"
-kill -KILL "$victim"
-wait_bounded 12
+# A killed rank. mpirun, seeing the death, sends root SIGCONT, sleeps the kill delay, sends SIGTERM, sleeps again and
+# sends SIGKILL, forwarding no output meanwhile (strace of mpirun 4.1); root writes its line 0.4 s after the SIGTERM and
+# exits, and mpirun forwards the line from root's pipe once it wakes. Once in the CI's suite (2026-11-29) the job ended
+# with no error line at all, which 15 runs here beside the GPU compare tests and 6 busy loops did not repeat (root's
+# line 0.41 s after its SIGTERM each time): mpirun's own race between a pipe and a child's end, so a job without
+# the line is run once more, and the second must have it.
+killed_rank() {
+    long_compare
+    victim=$(rank_pid 1 "--compare --scene cornell-box-lights --width 64")
+    [ -n "$victim" ] || fail "no rank 1 found"
+    kill -KILL "$victim"
+    wait_bounded 12
+}
+killed_rank
+if ! grep -q '^error:' "$work/stderr"; then
+    echo "    no error line forwarded: once more"
+    killed_rank
+fi
 expect_one_error "$status" "^error: rank 1 \(.+\)"
 [ "$(find "$work/long-cache" -type f | grep -c .)" -ge 1 ] || fail "a killed rank: the cache lost the reference"
 echo "ok: a killed rank"
