@@ -141,8 +141,8 @@ echo "ok: root's error"
 # A killed rank. mpirun, seeing the death, sends root SIGCONT, sleeps the kill delay, sends SIGTERM, sleeps again and
 # sends SIGKILL, forwarding no output meanwhile (strace of mpirun 4.1); root writes its line 0.4 s after the SIGTERM and
 # exits, and mpirun forwards the line from root's pipe once it wakes. Once in the CI's suite (2026-11-29) the job ended
-# with no error line at all, which 15 runs here beside the GPU compare tests and 6 busy loops did not repeat (root's
-# line 0.41 s after its SIGTERM each time): mpirun's own race between a pipe and a child's end, so a job without
+# with no error line at all, which 15 runs here beside the GPU compare tests or 6 busy loops did not repeat (root's
+# line 0.41 s after its SIGTERM in the 10 traced): mpirun's own race between a pipe and a child's end, so a job without
 # the line is run once more, and the second must have it.
 killed_rank() {
     long_compare
