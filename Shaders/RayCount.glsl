@@ -7,6 +7,8 @@
 #ifndef RT_RAY_COUNT_GLSL
 #define RT_RAY_COUNT_GLSL
 
+#include "Shared/Lights/LightSample.h"
+
 /// Adds n to the count of `kind` (kRayCamera, kRayExtension, kRayShadow, kCountLight*) in slot `slot` (mod
 /// kTraceCounterSlots): the low word's add that wraps carries one into the high word.
 void addCount(uint slot, uint kind, uint n)
@@ -15,6 +17,14 @@ void addCount(uint slot, uint kind, uint n)
     const uint before = atomicAdd(traceCounters.words[word], n);
     if (before > 0xFFFFFFFFu - n)
         atomicAdd(traceCounters.words[word + 1u], 1u);
+}
+
+/// The outcomes of one ShadowRay::lightSample (Shared/Lights/LightSample.h) as 0 or 1 in the order of the
+/// counters (kCountLightDrawn, kCountLightFallback, kCountLightDeclined): component k adds to kCountLightDrawn + k.
+uvec3 lightSampleOutcomes(uint lightSample)
+{
+    return uvec3(notEqual(uvec3(lightSample) & uvec3(kLightSampleDrawn, kLightSampleFallback, kLightSampleDeclined),
+                          uvec3(0u)));
 }
 
 #endif

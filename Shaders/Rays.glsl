@@ -27,8 +27,7 @@ void countRay(uint kind)
 void countLightSample(uint lightSample)
 {
     if (settingCountRays() && !kWavefront)
-        lightSamples += uvec3(notEqual(uvec3(lightSample) & uvec3(kLightSampleDrawn, kLightSampleFallback,
-                                                                  kLightSampleDeclined), uvec3(0u)));
+        lightSamples += lightSampleOutcomes(lightSample);
 }
 
 /// Adds this invocation's counted rays and light samples to TraceCounters: the last thing every ray-generation

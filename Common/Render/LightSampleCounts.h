@@ -2,7 +2,7 @@
 // fallback sampler made (by area where the strategy asked for another: a polygon too small for its spherical or
 // projected sampler, a quad that is not a rectangle), and how many were declined (off the light as its pdf finds
 // it, by rounding or for a receiver in the light's plane: no shadow ray, no contribution). Counted beside the rays (SampleTally::raysCounted: always on the CPU,
-// with --count-rays on the GPU); restir-di's candidates are not counted.
+// with --count-rays on the GPU); restir-di counts each candidate's (Shading/Restir.h restirCandidate).
 #pragma once
 
 #include <cstdint>

@@ -116,7 +116,10 @@ void restirCandidatesRow(const CpuScene& scene, const shader::RenderUniforms& un
             std::uint32_t light;
             vec3 point;
             float target;
-            const float w = c.shading.restirCandidate(inputs[0].vertex, uSelect, uLight, light, point, target);
+            std::uint32_t lightSample;
+            const float w =
+                c.shading.restirCandidate(inputs[0].vertex, uSelect, uLight, light, point, target, lightSample);
+            countLightSample(tally.counts.lightSamples, lightSample);
             shader::offerCandidate(r, weightSum, light, point, target, w, uTake);
         }
         r.count = candidates;

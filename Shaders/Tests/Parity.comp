@@ -65,7 +65,7 @@ void main()
         outVec2(9u, sampleUniformDiskConcentric(u));
         outVec2(11u, sampleUniformTriangle(u));
     }
-    else if (mode == 3u) // LightSampling: (light, p, u, strategy, n) -> ok, wi, pdf, lightPdf(wi)
+    else if (mode == 3u) // LightSampling: (light, p, u, strategy, n) -> ok, wi, pdf, lightPdf(wi), outcome
     {                     // strategy kNoIndex: book 3's sampler, else NEE's LightSampler with receiver n
         LightData light = lights[inputs[inBase]];
         vec3 p = inVec3(1u);
@@ -78,6 +78,7 @@ void main()
         outVec3(1u, ls.wi);
         outFloat(4u, ls.pdf);
         outFloat(5u, !ok ? 0.0 : book3 ? lightPdf(light, p, ls.wi) : lightPdf(light, strategy, p, n, ls.wi));
+        outUint(6u, ls.outcome);
     }
     else if (mode == 4u) // Perlin: p -> noise, turbulence (7 octaves)
     {

@@ -20,10 +20,10 @@ layout(local_size_x = kWaveGroupSize) in;
 /// of the subgroup had. Every active invocation of the subgroup must call it.
 void countLightSamples(uint lightSample)
 {
-    const uint bits[3] = uint[3](kLightSampleDrawn, kLightSampleFallback, kLightSampleDeclined);
+    const uvec3 outcomes = lightSampleOutcomes(lightSample);
     for (uint outcome = 0u; outcome < 3u; ++outcome)
     {
-        const uint n = subgroupBallotBitCount(subgroupBallot((lightSample & bits[outcome]) != 0u));
+        const uint n = subgroupBallotBitCount(subgroupBallot(outcomes[outcome] != 0u));
         if (n > 0u && subgroupElect())
             addCount(gl_WorkGroupID.x, kCountLightDrawn + outcome, n);
     }

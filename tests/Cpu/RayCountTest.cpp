@@ -105,5 +105,15 @@ TEST(RayCounts, RestirTracesEachCameraPathTwice)
     EXPECT_EQ(st.rays.extension, (kDepth - 1) * st.paths);
     EXPECT_GT(st.rays.shadow, (kDepth - 2) * st.paths) << "NEE past the resampled vertex, and the reservoirs' rays";
 }
+
+TEST(LightSampleCounts, RestirCountsEachCandidateAndNeeBeyondTheResampledVertex)
+{
+    // In the furnace every vertex selects its light: each pixel's resampled vertex draws the render's M candidates,
+    // and NEE draws one sample at each of the depth - 2 vertices past it but the last.
+    const RenderStats st = renderFurnace(Estimator::RestirDi, RussianRoulette::Off, EngineKind::Multi).stats;
+    const std::uint64_t candidates = RenderSettings{}.restirCandidates;
+    EXPECT_EQ(st.lightSamples.drawn, (candidates + kDepth - 2) * st.paths);
+    EXPECT_EQ(st.lightSamples.fallback + st.lightSamples.declined, 0u);
+}
 } // namespace
 } // namespace rt::test

@@ -82,6 +82,9 @@ TEST_F(GpuRayCounts, RestirTracesEachCameraPathTwice)
     EXPECT_EQ(st.rays.camera, 2 * st.paths);
     EXPECT_EQ(st.rays.extension, (kDepth - 1) * st.paths);
     EXPECT_GT(st.rays.shadow, (kDepth - 2) * st.paths) << "NEE past the resampled vertex, and the reservoirs' rays";
+    // Light samples as on the CPU: each pixel's M candidates, and NEE at the depth - 2 vertices past the resampled one.
+    EXPECT_EQ(st.lightSamples.drawn, std::uint64_t(s.restirCandidates + kDepth - 2) * st.paths);
+    EXPECT_EQ(st.lightSamples.fallback + st.lightSamples.declined, 0u);
 }
 
 TEST_F(GpuRayCounts, AgreeWithTheCpuEngineAndLeaveTheImageAsItWas)

@@ -219,7 +219,7 @@ Histogramming histogrammingFor(const SamplerCase& c, std::uint32_t strategy, lon
 }
 
 /// The GPU's samples of `strategy` for `samples` uniform points of a fixed seed: Parity.comp's
-/// kLightSampling output, (ok, wi, pdf, lightPdf(wi)) per sample.
+/// kLightSampling output, (ok, wi, pdf, lightPdf(wi), outcome) per sample.
 std::vector<std::uint32_t> sampleOnGpu(const SamplerCase& c, std::uint32_t strategy, long samples,
                                        std::uint32_t seed)
 {
@@ -289,7 +289,7 @@ TEST_P(GpuSamplerChiSquare, SamplesFollowTheCpuPdf)
         long declined = 0, outside = 0, invalid = 0, mismatches = 0, rim = 0, illConditioned = 0;
         for (long i = 0; i < kSamples; ++i)
         {
-            const std::size_t o = 6 * std::size_t(i);
+            const std::size_t o = kParityLayouts[kLightSampling].outputWords * std::size_t(i);
             if (out[o] == 0)
             {
                 ++declined;

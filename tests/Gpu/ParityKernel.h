@@ -40,7 +40,7 @@ struct ParityLayout
     std::uint32_t inputWords;
     std::uint32_t outputWords;
 };
-inline constexpr ParityLayout kParityLayouts[] = {{3, 8},  {7, 3}, {3, 13}, {10, 6}, {3, 2},
+inline constexpr ParityLayout kParityLayouts[] = {{3, 8},  {7, 3}, {3, 13}, {10, 7}, {3, 2},
                                                   {10, 3}, {1, 1}, {8, 3},  {3, 8}, {15, 8}};
 
 inline std::uint32_t bits(float f) { return std::bit_cast<std::uint32_t>(f); }

@@ -31,8 +31,8 @@ struct LightSample
     uint outcome; // how it was made: kLightSampleFallback, kLightSampleDeclined (bits), 0 as the strategy asked
 };
 
-// LightSample::outcome, counted in the stats at NEE's vertices (--stats' "light_samples"; restir-di's candidates
-// are not): the polygon samplers' documented shortcuts are never taken silently. (A receiver inside a sphere light
+// LightSample::outcome, counted in the stats at NEE's vertices and restir-di's candidates (--stats'
+// "light_samples"): the polygon samplers' documented shortcuts are never taken silently. (A receiver inside a sphere light
 // is sampled by area under every strategy, having no cone to sample: by design, not marked.)
 /// Made by a simpler sampler than the strategy asked: by area where a polygon is too small for its spherical or
 /// projected sampler (a triangle also too large), a rectangle's setup does not resolve, or a quad is not a

@@ -122,20 +122,24 @@ RT_FN vec3 restirIntegrand(RT_IN(RestirVertex) v, uint light, vec3 point)
 
 /// One candidate of restir-di's initial resampling at `v` (Bitterli et al. 2020, Alg. 3's candidates): a light
 /// selected with uSelect and a point on it sampled with u, as NEE does. Returns its resampling weight
-/// p-hat(y) / p(y) (0 when it contributes nothing); `light`, `point` and `target` (p-hat(y)) describe it.
+/// p-hat(y) / p(y) (0 when it contributes nothing); `light`, `point` and `target` (p-hat(y)) describe it, and
+/// `lightSample` how its light sample was made for the stats, as NEE's ShadowRay::lightSample (0: no light picked).
 RT_FN float restirCandidate(RT_IN(RestirVertex) v, float uSelect, vec2 u, RT_OUT(uint) light, RT_OUT(vec3) point,
-                            RT_OUT(float) target)
+                            RT_OUT(float) target, RT_OUT(uint) lightSample)
 {
     light = kNoIndex;
     point = vec3(0.0f);
     target = 0.0f;
+    lightSample = 0u;
     float pmf;
     const uint picked = selectLight(RT_PASS(lightAlias) RT_PASS(lightBvh) settingLightSelection(), uSelect,
                                     uniforms.emitterCount, v.origin, v.receiver, uniforms.unidirectionalLight == 0u, pmf);
     if (picked == kNoIndex)
         return 0.0f;
     LightSample ls;
-    if (!sampleLight(lights[picked], settingLightSampler(), v.origin, v.receiver, u, ls))
+    const bool sampled = sampleLight(lights[picked], settingLightSampler(), v.origin, v.receiver, u, ls);
+    lightSample = kLightSampleDrawn | ls.outcome;
+    if (!sampled)
         return 0.0f;
     const float cosLight = abs(dot(ls.normal, ls.wi));
     const float areaPdf = pmf * ls.pdf * cosLight / (ls.distance * ls.distance);
@@ -154,7 +158,7 @@ RT_FN ShadowRay restirShadowRay(RT_IN(RestirVertex) v, vec3 point)
     ShadowRay shadow;
     shadow.pending = true;
     shadow.contribution = vec3(0.0f);
-    shadow.lightSample = 0u; // restir-di's candidates are not counted (LightSample.h)
+    shadow.lightSample = 0u; // counted as its candidate was (restirCandidate)
     const vec3 d = point - v.origin;
     const float distance = length(d);
     shadow.direction = distance > 0.0f ? d / distance : v.ns;
