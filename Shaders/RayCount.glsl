@@ -1,8 +1,8 @@
-// --count-rays (HostDevice.h's TraceCounters): adds to the 64-bit count of one kind of ray (or of NEE's light samples
-// by outcome) in one slot. Each invocation counts its rays in registers and adds them once, as it ends (Rays.glsl
-// flushRayCounts); the wavefront adds the lengths of its queues, once per segment (Wavefront/Prepare.comp), and its
-// vertices' light samples once per subgroup (Wavefront/Shade.comp): an atomic per ray cost the H100 up to 4x on the
-// books' scenes (docs/notebook/PERFORMANCE.md §24).
+// --count-rays (HostDevice.h's TraceCounters): adds to the 64-bit count of one kind of ray (or of the light samples of
+// NEE and restir-di's candidates by outcome) in one slot. Each invocation counts its rays in registers and adds them
+// once, as it ends (Rays.glsl flushRayCounts); the wavefront adds the lengths of its queues, once per segment
+// (Wavefront/Prepare.comp), and its vertices' light samples once per subgroup (Wavefront/Shade.comp): an atomic per
+// ray cost the H100 up to 4x on the books' scenes (docs/notebook/PERFORMANCE.md §24).
 // Needs the traceCounters of Bindings.glsl.
 #ifndef RT_RAY_COUNT_GLSL
 #define RT_RAY_COUNT_GLSL

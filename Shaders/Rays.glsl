@@ -10,8 +10,8 @@ const float kRayTMax = 3.0e38;
 #include "RayCount.glsl"
 #include "Shared/Lights/LightSample.h"
 
-// This invocation's rays by kind (kRayCamera, kRayExtension, kRayShadow) and NEE's light samples by outcome
-// (drawn, fallback, declined: kCountLight*) since it began, for flushRayCounts.
+// This invocation's rays by kind (kRayCamera, kRayExtension, kRayShadow) and light samples (NEE's, restir-di's
+// candidates') by outcome (drawn, fallback, declined: kCountLight*) since it began, for flushRayCounts.
 uvec3 tracedRays = uvec3(0u);
 uvec3 lightSamples = uvec3(0u);
 

@@ -109,6 +109,7 @@ echo "ok: refusals and a rank's error"
 # program's ending, not the scheduler's.
 long_compare() { # [FLAG...]
     rm -rf "$work/out.csv" "$work/long-cache"
+    : >"$work/stderr" # the wait below must not read the last job's rows before mpirun's start empties the file
     OMPI_MCA_odls_base_sigkill_timeout=3 mpirun -q -np 2 "$app" --compare --scene cornell-box-lights --width 64 --engines single --spp-list 64,128 \
         --seeds 8 --rounds 5 --reference-spp 512 --reference-cache "$work/long-cache" --csv "$work/out.csv" "$@" \
         >"$work/stdout" 2>"$work/stderr" &

@@ -109,9 +109,10 @@ TEST(RayCounts, RestirTracesEachCameraPathTwice)
 TEST(LightSampleCounts, RestirCountsEachCandidateAndNeeBeyondTheResampledVertex)
 {
     // In the furnace every vertex selects its light: each pixel's resampled vertex draws the render's M candidates,
-    // and NEE draws one sample at each of the depth - 2 vertices past it but the last.
+    // and NEE one sample at each vertex past it but the last, depth - 2 of them.
     const RenderStats st = renderFurnace(Estimator::RestirDi, RussianRoulette::Off, EngineKind::Multi).stats;
-    const std::uint64_t candidates = RenderSettings{}.restirCandidates;
+    // renderFurnace's M.
+    const std::uint64_t candidates = smallSettings(16, 3, kDepth, Estimator::RestirDi).restirCandidates;
     EXPECT_EQ(st.lightSamples.drawn, (candidates + kDepth - 2) * st.paths);
     EXPECT_EQ(st.lightSamples.fallback + st.lightSamples.declined, 0u);
 }
