@@ -165,10 +165,10 @@ PartialSums<Lanes> relMseTerms(const float* deviation, const double* error, cons
                  : relMseTerms<Real, false, Lanes>(deviation, error, others, pixels);
 }
 
-/// A standard deviation in float: float's largest where it is beyond (a half of 1e38 and more).
-float deviationOf(double variance)
+/// A standard deviation in float: float's largest where it is beyond (a firefly's of 1e38 and more).
+float deviationInFloat(double deviation)
 {
-    return float(std::min(std::sqrt(variance), double(std::numeric_limits<float>::max())));
+    return float(std::min(deviation, double(std::numeric_limits<float>::max())));
 }
 } // namespace
 
@@ -183,8 +183,7 @@ PilotEstimate PilotEstimate::of(const PilotHalves& halves)
     for (std::size_t k = 0; k < values; ++k)
     {
         e.mean[k] = float(0.5 * (double(a[k]) + double(b[k])));
-        e.deviation[k] = float(std::min(0.5 * std::abs(double(a[k]) - double(b[k])),
-                                        double(std::numeric_limits<float>::max())));
+        e.deviation[k] = deviationInFloat(0.5 * std::abs(double(a[k]) - double(b[k])));
     }
     return e;
 }
@@ -233,7 +232,7 @@ const PilotEstimate& PilotSums::estimate()
     {
         estimated.mean[i] = float(double(sum[i]) / halves);
         // The mean of the k u's over the 2k halves.
-        estimated.deviation[i] = deviationOf(u[i] / k / halves);
+        estimated.deviation[i] = deviationInFloat(std::sqrt(u[i] / k / halves));
     }
     if (count > 1)
     {
