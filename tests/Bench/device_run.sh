@@ -120,7 +120,8 @@ specialization)
     ;;
 rays)
     # Issue 42: every catalogue scene at 600 px, 256 spp without and with --count-rays (the same build), the
-    # images compared (counting must leave them bit for bit), then the rays per second by kind.
+    # images compared (NEE's the same bits; restir-di's within a driver's rounding, notebook §43), then the rays
+    # per second by kind.
     renders=/tmp/rays-renders.txt
     grep -v '^\s*\(#\|$\)' "${2:-tests/Bench/renders/catalogue-256.txt}" | sed 's/^\([^ ]*\) \(.*\)$/\1 \2 || \2 --count-rays/' \
         >"$renders"

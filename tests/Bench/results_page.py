@@ -884,6 +884,14 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "    docs/results/cpu-auto-strategy-4s-1129f multi 128 4000 2 16384 cornell-box-lights glossy-cornell \\\n"
                   "    triangle-lights veach-mis rect-light-closeup sphere-light-closeup many-lights rtrol-cornell-box",
                   "## 41.", "2026-11-29"),
+                 ("h200-auto-strategy-8s-1129", "NVIDIA H200, driver 580",
+                  "600 px wide, each strategy for 8 s, 1 seed for the full comparison, 4 recheck seeds: the pilot "
+                  "of c2dc4a3 (its switch at two standard errors of the error per pixel; 320beb0's build) on the "
+                  "three scenes where the own is not the best",
+                  "LEAN=1 bash tests/Bench/device_carry.sh  # then on the device, one scene a run:\n"
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=triangle-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto  # and SCENES=rtrol-cornell-box, cornell-box-lights",
+                  "## 43.", "2026-11-29"),
                  ("h200-auto-strategy-10s-1129d", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 10 s, 1 seed for the full comparison, 4 recheck seeds: the light "
                   "scenes without a GPU row of the current pilot, with 8cc48c9's build (the pilot's measurements "
