@@ -27,7 +27,8 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
                  "print time, CPU/GPU ratio and relMSE against a --reference-spp render; with --output FILE.png, "
                  "every engine x strategy's image at every spp with its false-colour error image in one figure (the "
                  "thesis' Tables 5.1-5.3); under mpirun, the ranks share its renders (docs/SCALING.md)");
-    app.add_option("--spp-list", flags.sppList, "With --compare: sample counts, comma separated")->capture_default_str();
+    CLI::Option* sppList =
+        app.add_option("--spp-list", flags.sppList, "With --compare: sample counts, comma separated")->capture_default_str();
     app.add_option("--engines", flags.engines,
                    "With --compare: engines, comma separated (single, multi, gpu; default: every engine this app "
                    "links)");
@@ -76,7 +77,8 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
                            : fmt::format("must be a positive number of milliseconds (got '{}')", text);
             },
             "MS"))
-        ->needs(compareFlag);
+        ->needs(compareFlag)
+        ->excludes(sppList); // the time sizes each row: a ladder's spp would be silently ignored
     app.add_option("--images", flags.images,
                    "With --compare: write every render's linear image (PFM) and the reference to this folder (made "
                    "when missing), with images.json listing each one's engine, strategy, spp, time and relMSE, for "

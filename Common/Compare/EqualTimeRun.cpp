@@ -3,13 +3,87 @@
 #include <algorithm>
 #include <cstdio>
 
+#include <nlohmann/json.hpp>
 #include <spdlog/fmt/fmt.h>
 
 #include "Compare/EqualTime.h"
 #include "Compare/SeededRow.h"
+#include "IO/AtomicFile.h"
+#include "Render/SettingsTable.h"
 
 namespace rt::compare
 {
+namespace
+{
+/// --table of an equal-time comparison: the settings, the reference and each row in the tiles' order (engine,
+/// strategy, spp, times, error and efficiency; over seeds their means, intervals and values, the efficiency
+/// against the best's); the auto row also each seed's pilot, as --stats records it (strategy_choice).
+nlohmann::json equalTimeJson(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
+                             const std::vector<EngineUnderTest>& engines, const Reference& reference,
+                             const std::vector<EqualTimeTile>& tiles, const std::vector<const SeededRow*>& rows,
+                             std::size_t best, const std::vector<std::vector<AutoChoice>>* choices)
+{
+    const RenderSettings& b = base.settings;
+    nlohmann::json json = toJson(b); // the base settings by the settings table's keys; each row names its spp
+    json.erase("spp");
+    json["scene"] = scene.id;
+    json["height"] = b.height();
+    json["equal_time_ms"] = options.equalTimeMs;
+    json["seeds"] = options.seeds;
+    json["rounds"] = options.rounds;
+    if (options.referencePath.empty())
+        json["reference_spp"] = reference.spp;
+    else
+        json["reference"] = options.referencePath;
+    json["relmse_epsilon"] = kRelMseEpsilon;
+    json["metric"] = toString(options.metric);
+    json["reference_relmse"] = reference.ownRelMse ? nlohmann::json(*reference.ownRelMse) : nlohmann::json();
+    for (const EngineUnderTest& e : engines)
+        json["devices"][toString(e.kind)] = e.engine->deviceName();
+    const std::size_t perEngine = rows.size() / std::max<std::size_t>(engines.size(), 1);
+    json["rows"] = nlohmann::json::array();
+    for (std::size_t i = 0; i < rows.size(); ++i)
+    {
+        const SeededRow& row = *rows[i];
+        const bool isAuto = choices && i % perEngine == perEngine - 1;
+        const Interval shown = row.metric(options.metric);
+        const Interval relMse = row.relMse();
+        nlohmann::json j = {{"engine", toString(tiles[i].engine)},
+                            {"strategy", isAuto ? std::string("auto") : tiles[i].strategy.name()},
+                            {"label", tiles[i].label},
+                            {"spp", row.first().spp},
+                            {"ms", row.ms()},
+                            {"render_ms", row.wallMs()},
+                            {"gpu_ms", row.gpuMs()},
+                            {"relmse", relMse.mean},
+                            {"efficiency", 1.0 / meanInterval(row.costs(options.metric)).mean},
+                            {"best", i == best}};
+        if (options.metric != ErrorMetric::RelMse)
+            j[toString(options.metric)] = shown.mean;
+        if (options.seeds > 1)
+        {
+            j["relmse_ci95"] = {relMse.lo, relMse.hi};
+            j["relmse_seeds"] = row.values([](const Measurement& x) { return x.error.relMse; });
+            j["spp_seeds"] = row.values([](const Measurement& x) { return double(x.spp); });
+            if (i != best)
+            {
+                const Interval r = ratioInterval(rows[best]->costs(options.metric), row.costs(options.metric));
+                j["efficiency_over_best"] = r.mean;
+                j["efficiency_over_best_ci95"] = {r.lo, r.hi};
+            }
+        }
+        if (isAuto)
+        {
+            j["strategy_choice"] = nlohmann::json::array();
+            for (const AutoChoice& c : (*choices)[i / perEngine])
+                j["strategy_choice"].push_back(c.toJson());
+        }
+        json["rows"].push_back(std::move(j));
+    }
+    return json;
+}
+} // namespace
+
 bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
                   std::vector<EngineUnderTest>& engines, const Reference& reference, ConvergenceCsv* csv,
                   ImageFolder& images)
@@ -149,6 +223,11 @@ bool runEqualTime(const Scene& scene, const RenderRequest& base, const CompareOp
                         toString(engines[e].kind), base.settings.seed + unsigned(k), c.chosen.name().c_str(), c.pilotMs,
                         c.pilotWallSeconds, c.prepareSeconds, c.rows.size(), c.width, c.height, c.spp);
         }
+    if (!options.json.empty())
+        writeFileAtomically(options.json, equalTimeJson(scene, base, options, engines, reference, tiles, rows, best,
+                                                        autoRow ? &choices : nullptr)
+                                                  .dump(2) +
+                                              "\n");
     if (!options.grid.empty())
     {
         writeEqualTimeGrid(options.grid,

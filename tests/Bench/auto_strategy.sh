@@ -12,7 +12,8 @@
 #     spp: the scene's mixture's reference had 5x the noise of nee-mis's, half the rows' relMSE at 1 s), so rows
 #     measured against two references do not compare. With RECHECK_ONLY=1, a scene whose full comparison's CSV and
 #     reference (IMAGES/SCENE-reference.pfm) exist is only rechecked.
-# auto_strategy_table.py OUT_DIR then prints auto's efficiency against the best's and the scene's own.
+# auto_strategy_table.py OUT_DIR then prints auto's efficiency against the best's and the scene's own. Each
+# comparison's --table JSON is kept beside its CSV (SCENE.json, SCENE-auto-SEED.json): the auto row's pilots' tables.
 #   tests/Bench/auto_strategy.sh BIN_DIR OUT_DIR ENGINE WIDTH EQUAL_MS SEEDS REFERENCE_SPP SCENE...
 # e.g. on the CPU: auto_strategy.sh build/bin docs/results/cpu-auto-strategy multi 128 1000 2 8192 cornell-box-lights
 # The renders' images go to IMAGES (default OUT_DIR) and are deleted after each scene but the reference.
@@ -42,7 +43,7 @@ for scene in "$@"; do
     if [ "${RECHECK_ONLY:-0}" != 1 ] || [ ! -f "$out/$scene.csv" ] || [ ! -f "$reference" ]; then
         $app --compare "${common[@]}" --seeds "$seeds" --reference-spp "$referenceSpp" --strategy auto \
             --estimators "$estimators" --light-samplers "$samplers" --light-selections "$selections" \
-            --csv "$out/$scene.csv" --images "$images/$scene-images" \
+            --csv "$out/$scene.csv" --images "$images/$scene-images" --table "$out/$scene.json" \
             >"$out/$scene.txt" 2>"$out/$scene.log"
         mv "$images/$scene-images/reference.pfm" "$reference"
     fi
@@ -59,7 +60,7 @@ for scene in "$@"; do
             --images "$images/$scene-recheck-images" >>"$out/$scene-recheck-best.txt" 2>/dev/null
         $app --compare "${common[@]}" --seeds 1 --seed "$seed" --reference "$reference" --strategy auto \
             --csv "$images/$scene-auto-$seed.csv" --images "$images/$scene-recheck-images" \
-            >>"$out/$scene-recheck.txt" 2>/dev/null
+            --table "$out/$scene-auto-$seed.json" >>"$out/$scene-recheck.txt" 2>/dev/null
         for kind in best:recheck-best auto:recheck; do
             part="$images/$scene-${kind%%:*}-$seed.csv" whole="$out/$scene-${kind#*:}.csv"
             if [ -f "$whole" ]; then tail -n +2 "$part" >>"$whole"; else cp "$part" "$whole"; fi

@@ -887,10 +887,10 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                  ("h200-auto-strategy-8s-1129", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 8 s, 1 seed for the full comparison, 4 recheck seeds: the pilot "
                   "of c2dc4a3 (its switch at two standard errors of the error per pixel; 320beb0's build) on the "
-                  "three scenes where the own is not the best",
+                  "four scenes where the own is not the best: glossy-cornell 0.79x, 0.95x with 8109ba9's pilot (notebook §43)",
                   "LEAN=1 bash tests/Bench/device_carry.sh  # then on the device, one scene a run:\n"
                   "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=triangle-lights \\\n"
-                  "    bash tests/Bench/device_run.sh auto  # and SCENES=rtrol-cornell-box, cornell-box-lights",
+                  "    bash tests/Bench/device_run.sh auto  # and SCENES=rtrol-cornell-box, cornell-box-lights, glossy-cornell",
                   "## 43.", "2026-11-29"),
                  ("h200-auto-strategy-10s-1129d", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 10 s, 1 seed for the full comparison, 4 recheck seeds: the light "

@@ -3,7 +3,8 @@
 # --strategy auto as a user runs it: the pilot's choice is logged and recorded in --stats (strategy_choice), the
 # render uses it, a flag given is never varied, the choice is kept for the next render of the same settings (any
 # seed: no pilot, the same image for the same seed; --strategy-cache off pilots again), --strategy takes only scene
-# and auto, and --compare --strategy auto adds a row "auto" whose JSON holds the pilot's record.
+# and auto, and --compare --strategy auto adds a row "auto" whose JSON holds the pilot's record (a ladder's and an
+# equal-time comparison's).
 set -eu
 app=$1
 work=$(mktemp -d)
@@ -70,4 +71,32 @@ auto = next(r for r in d["rows"] if r["strategy"] == "auto")[engine]
 choice = auto["strategy_choice"][0]
 assert len(choice["candidates"]) == 2 and choice["chosen"].split()[3] in ("sobol", "random"), choice
 assert choice["candidates"][0]["measurements"] > 0, choice
+PY
+# --compare --equal-time: the rows' figures and the auto row's pilots (one per seed) in --table's JSON.
+"$app" --compare --quiet --engines "$2" --scene cornell-box-lights --width 16 --depth 4 --equal-time 300 --seeds 2 \
+    --pilot-budget 1 --reference-spp 1024 --reference-cache off --rounds 1 --strategy auto --estimator nee-mis \
+    --light-sampler projected --light-selection bvh --samplings sobol,random --images "$work/eqt" \
+    --table "$work/e.json" >"$work/eqt.txt" 2>"$work/eqt.err" || { cat "$work/eqt.err"; exit 1; }
+/usr/bin/python3 - "$work/e.json" "$2" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+engine = sys.argv[2]
+assert d["scene"] == "cornell-box-lights" and d["equal_time_ms"] == 300 and d["seeds"] == 2, d
+assert d["reference_spp"] == 1024 and d["devices"][engine], d
+rows = d["rows"]
+assert [r["strategy"] for r in rows].count("auto") == 1 and len(rows) == 3, rows
+assert sum(r["best"] for r in rows) == 1, rows
+for r in rows:
+    assert r["engine"] == engine and r["spp"] > 0 and r["ms"] > 0, r
+    # The row's relMSE is the mean of its seeds', inside its interval.
+    seeds = r["relmse_seeds"]
+    assert len(seeds) == 2 and abs(r["relmse"] - sum(seeds) / 2) <= 1e-9 * r["relmse"], r
+    assert r["relmse_ci95"][0] <= r["relmse"] <= r["relmse_ci95"][1], r
+    assert r["efficiency"] > 0 and ("efficiency_over_best" in r) != r["best"], r
+auto = next(r for r in rows if r["strategy"] == "auto")
+choices = auto["strategy_choice"]
+assert len(choices) == 2 and all(len(c["candidates"]) == 2 for c in choices), choices
+assert auto["label"].startswith("auto"), auto
+assert all(c["chosen"].split()[3] in ("sobol", "random") for c in choices), choices
+assert "strategy_choice" not in rows[0], rows[0]
 PY

@@ -192,6 +192,7 @@ bad --compare --scene cornell-box-lights --estimators mixture,bogus --csv "$work
 bad --compare --scene cornell-box-lights --light-selections nearest
 bad --compare --scene cornell-box-lights --equal-time 100
 bad --compare --scene cornell-box-lights --equal-time -5 --output "$work/x.png"
+bad --compare --scene cornell-box-lights --equal-time 100 --spp-list 4,16 --output "$work/x.png"
 bad --compare --scene cornell-box-lights --seeds 0
 bad --compare --scene cornell-box-lights --seeds 101
 bad --compare --scene cornell-box-lights --rounds 0

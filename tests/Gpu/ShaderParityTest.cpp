@@ -174,7 +174,9 @@ TEST(GpuShaderParity, LightSamplersMatchCommon)
         ASSERT_EQ(o[0] != 0, ok) << "case " << c;
         // How NEE's sample was made (fallback, declined), which --stats counts on either engine.
         if (!book3)
+        {
             EXPECT_EQ(o[6], ls.outcome) << "outcome, case " << c;
+        }
         outcomes += !book3;
         fallbacks += !book3 && (ls.outcome & shader::kLightSampleFallback) != 0;
         if (!ok)
