@@ -63,6 +63,8 @@ nlohmann::json equalTimeJson(const Scene& scene, const RenderRequest& base, cons
         if (options.seeds > 1)
         {
             j["relmse_ci95"] = {relMse.lo, relMse.hi};
+            if (options.metric != ErrorMetric::RelMse)
+                j[fmt::format("{}_ci95", toString(options.metric))] = {shown.lo, shown.hi};
             j["relmse_seeds"] = row.values([](const Measurement& x) { return x.error.relMse; });
             j["spp_seeds"] = row.values([](const Measurement& x) { return double(x.spp); });
             if (i != best)

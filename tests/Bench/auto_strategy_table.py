@@ -8,6 +8,10 @@ where it exists. Standard library only.
 
     auto_strategy_table.py OUT_DIR          a Markdown table on stdout
     auto_strategy_table.py --best FILE.csv  the best strategy's words (estimator sampler selection sampling rr)
+    auto_strategy_table.py --pilots OUT_DIR what each recheck's pilot saw (SCENE-auto-SEED.json, --table's) against
+                                            the full comparison: per candidate, its time per path, error per path
+                                            and efficiency over the scene's own's, by the pilot and by the
+                                            comparison; the final round's challenger and the choice marked
 """
 import csv
 import math
@@ -97,7 +101,62 @@ def scene_rows(out):
     return rows
 
 
+def per_path(path, reference):
+    """{strategy: (ms per spp, (relMSE - the reference's own) x spp, efficiency)} of the full comparison's CSV,
+    means over its seeds."""
+    sums = {}
+    for r in csv.DictReader(path.open()):
+        if r["label"].startswith("auto"):
+            continue
+        ms = float(r["gpu_ms"]) if float(r["gpu_ms"]) >= 0 else float(r["wall_ms"])
+        spp, relmse = int(r["spp"]), float(r["relmse"]) - reference
+        sums.setdefault(r["strategy"], []).append((ms / spp, relmse * spp, 1.0 / (relmse * ms * 1e-3)))
+    return {k: tuple(statistics.mean(x[i] for x in v) for i in range(3)) for k, v in sums.items()}
+
+
+def pilots(out):
+    """Markdown per recheck seed: each candidate's time per path, error per path and efficiency as the pilot measured
+    them over the scene's own's, beside the full comparison's (a pilot that ranks a candidate wrongly shows which
+    of the two misled it)."""
+    for path in sorted(Path(out).glob("*.csv")):
+        if "recheck" in path.stem:
+            continue
+        scene = path.stem
+        full = per_path(path, reference_relmse(path))
+        own = strategy_of(json.load((Path(out) / f"{scene}-defaults.json").open())["settings"])
+        for table in sorted(Path(out).glob(f"{scene}-auto-*.json")):
+            for row in json.load(table.open())["rows"]:
+                for choice in row.get("strategy_choice", []):
+                    rows = [c for c in choice["candidates"] if c["measurements"] > 0 and not c["too_slow"]]
+                    mine = next((c for c in rows if c["strategy"] == own), None)
+                    if not mine or own not in full:
+                        continue
+                    print(f"\n{scene}, {table.stem}: chose {choice['chosen']}; pilot {choice['pilot_width']}x"
+                          f"{choice['pilot_height']}, {choice['pilot_spp']} spp a measurement\n")
+                    print("| candidate | measurements | time/own: pilot, comparison | error/own: pilot, comparison | "
+                          "efficiency/own: pilot, comparison | |")
+                    print("|---|---:|---:|---:|---:|---|")
+
+                    def pilot(c):  # time per measurement, relMSE of the mean of all its measurements x their count
+                        return c["ms"] / c["measurements"], c["relmse"] * c["measurements"]
+                    t0, e0 = pilot(mine)
+                    f0 = full[own]
+                    for c in sorted(rows, key=lambda c: -c["efficiency"]):
+                        t, e = pilot(c)
+                        f = full.get(c["strategy"])
+                        if not f:
+                            continue
+                        mark = ", ".join(m for m, on in (("own", c is mine), ("final round", c["final_measurements"] > 0),
+                                                         ("chosen", c["strategy"] == choice["chosen"])) if on)
+                        print(f"| {c['strategy']} | {c['measurements']} | {t / t0:.2f}, {f[0] / f0[0]:.2f} | "
+                              f"{e / e0:.2f}, {f[1] / f0[1]:.2f} | {c['efficiency'] / mine['efficiency']:.2f}, "
+                              f"{f[2] / f0[2]:.2f} | {mark} |")
+
+
 def main():
+    if sys.argv[1] == "--pilots":
+        pilots(sys.argv[2])
+        return
     if sys.argv[1] == "--best":
         eff, _ = efficiencies(Path(sys.argv[2]))
         print(best_of(eff))

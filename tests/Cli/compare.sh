@@ -193,6 +193,8 @@ bad --compare --scene cornell-box-lights --light-selections nearest
 bad --compare --scene cornell-box-lights --equal-time 100
 bad --compare --scene cornell-box-lights --equal-time -5 --output "$work/x.png"
 bad --compare --scene cornell-box-lights --equal-time 100 --spp-list 4,16 --output "$work/x.png"
+"$app" --compare --scene cornell-box-lights --equal-time 100 --spp-list 4,16 --output "$work/x.png" 2>&1 |
+    grep -q "^error: .*excludes" || fail "--equal-time with --spp-list: not the exclusion's error"
 bad --compare --scene cornell-box-lights --seeds 0
 bad --compare --scene cornell-box-lights --seeds 101
 bad --compare --scene cornell-box-lights --rounds 0

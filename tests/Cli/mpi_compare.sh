@@ -84,7 +84,12 @@ PY
 done
 echo "ok: 2 and 3 ranks write one process's rows, tables and images"
 
-mpi -np 2 "$app" "${compare[@]}" --equal-time 10 --images "$work/eq" >/dev/null 2>"$work/stderr"
+# The comparison without its --spp-list, which --equal-time excludes.
+equalTime=()
+for ((i = 0; i < ${#compare[@]}; ++i)); do
+    if [ "${compare[i]}" = --spp-list ]; then ((++i)); else equalTime+=("${compare[i]}"); fi
+done
+mpi -np 2 "$app" "${equalTime[@]}" --equal-time 10 --images "$work/eq" >/dev/null 2>"$work/stderr"
 expect_one_error $? "^error: --equal-time"
 mpi -np 2 "$app" "${compare[@]}" --strategy auto >/dev/null 2>"$work/stderr"
 expect_one_error $? "^error: --strategy auto"
