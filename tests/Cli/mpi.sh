@@ -144,11 +144,21 @@ echo "ok: Ctrl-C"
 # A rank killed: one error line naming it, no file. Root names the silent rank once it is out of its batch, within
 # the second between mpirun's SIGTERM and its SIGKILL: on the CPU engine (cancelled between camera samples) always;
 # lavapipe's batches can outlast that second on this 2-core machine, so there the line may be missing, never wrong.
-long_render
-victim=$(rank_pid 1 "--headless --scene many-lights")
-[ -n "$victim" ] || fail "no rank 1 found"
-kill -KILL "$victim"
-wait_bounded 3
+# mpirun forwards root's line from its pipe only after the SIGKILL, and lost it once to its own race between that
+# pipe and root's end (mpi_compare.sh, in CI): on the CPU a job without the line runs once more, and the second
+# must have it.
+killed_rank() {
+    long_render
+    victim=$(rank_pid 1 "--headless --scene many-lights")
+    [ -n "$victim" ] || fail "no rank 1 found"
+    kill -KILL "$victim"
+    wait_bounded 3
+}
+killed_rank
+if [ "$kind" = cpu ] && ! grep -q '^error:' "$work/stderr"; then
+    echo "    no error line forwarded: once more"
+    killed_rank
+fi
 if [ "$kind" = cpu ] || grep -q '^error:' "$work/stderr"; then
     expect_one_error "$status" "^error: rank 1 \(.+\)"
 else
