@@ -3,8 +3,9 @@
 one spp count and many seeds (notebook §43). Each candidate's "measurement" is two renders (two seeds) taken as
 halves: the pixel's variance from their difference, u = (a - b)^2 / 2, over k measurements, normalised either as the
 pilot does (by the leave-one-out mean of the other candidates' images, Compare/AutoStrategy.cpp pilotRelMse's first
-pass) or by the folder's reference; the candidates' seeds either independent (as the pilot draws them) or the same
-for every candidate (common random numbers). Prints, per candidate, the median and the 10 % and 90 % points of its
+pass), by the own's mean over DENOMINATOR_SEEDS seeds that no measurement uses (a pilot's own render of other seeds),
+or by the folder's reference; the candidates' seeds either independent (as the pilot draws them) or the same for
+every candidate (common random numbers). Prints, per candidate, the median and the 10 % and 90 % points of its
 error over the own's (the first label given) over TRIALS pilots, beside the ratio of their true relMSE against the
 reference (the mean over every seed). Standard library only; slow (pure Python), meant for small images.
 
@@ -21,6 +22,7 @@ import sys
 from pathlib import Path
 
 EPSILON = 0.01  # relMSE's epsilon (Common/Image/Metrics.h)
+DENOMINATOR_SEEDS = 8  # the own's renders of other seeds averaged into the third normalisation
 
 
 def read_pfm(path):
@@ -63,10 +65,14 @@ def main():
         for k in (1, 3, 6):
             if 2 * k > len(seeds):
                 continue
-            ratios = {l: ([], []) for l in labels if l != own}
+            ratios = {l: ([], [], []) for l in labels if l != own}
+            if 2 * k + DENOMINATOR_SEEDS > len(seeds):
+                continue
             for _ in range(trials):
-                shared = rng.sample(seeds, 2 * k)
+                drawn = rng.sample(seeds, 2 * k + DENOMINATOR_SEEDS)
+                shared, spare = drawn[:2 * k], drawn[2 * k:]
                 est = {l: estimate(images[l], shared if paired else rng.sample(seeds, 2 * k)) for l in labels}
+                own_mean = [sum(images[own][s][i] for s in spare) / len(spare) for i in range(len(reference))]
                 errors = {}
                 for l in labels:
                     others = [0.0] * len(reference)
@@ -75,17 +81,18 @@ def main():
                             for i, x in enumerate(est[o][0]):
                                 others[i] += x / (len(labels) - 1)
                     variance = est[l][1]
-                    errors[l] = (sum(v / (o * o + EPSILON) for v, o in zip(variance, others)) / len(variance),
-                                 sum(v / (r * r + EPSILON) for v, r in zip(variance, reference)) / len(variance))
+                    errors[l] = tuple(sum(v / (o * o + EPSILON) for v, o in zip(variance, d)) / len(variance)
+                                      for d in (others, own_mean, reference))
                 for l in ratios:
-                    for j in (0, 1):
+                    for j in range(3):
                         ratios[l][j].append(errors[l][j] / errors[own][j])
-            for l, (pilot, by_reference) in ratios.items():
+            for l, (pilot, by_spare, by_reference) in ratios.items():
                 def shown(v):
                     v = sorted(v)
                     return f"{statistics.median(v):.2f} [{v[len(v) // 10]:.2f}, {v[-1 - len(v) // 10]:.2f}]"
                 print(f"{'common' if paired else 'independent'} seeds, k={k}, {l}: the pilot's {shown(pilot)}, "
-                      f"against the reference {shown(by_reference)}, true {truth[l] / truth[own]:.2f}")
+                      f"the own's other seeds' {shown(by_spare)}, the reference's {shown(by_reference)}, "
+                      f"true {truth[l] / truth[own]:.2f}")
 
 
 if __name__ == "__main__":
