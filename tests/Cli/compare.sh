@@ -193,6 +193,10 @@ bad --compare --scene cornell-box-lights --light-selections nearest
 bad --compare --scene cornell-box-lights --equal-time 100
 bad --compare --scene cornell-box-lights --equal-time -5 --output "$work/x.png"
 bad --compare --scene cornell-box-lights --equal-time 100 --spp-list 4,16 --output "$work/x.png"
+# One render's outputs and samples, which a comparison would ignore.
+bad --compare --scene cornell-box-lights --spp-list 4 --stats "$work/x.json"
+bad --compare --scene cornell-box-lights --spp-list 4 --hdr "$work/x.pfm"
+bad --compare --scene cornell-box-lights --spp-list 4 --spp 16
 "$app" --compare --scene cornell-box-lights --equal-time 100 --spp-list 4,16 --output "$work/x.png" 2>&1 |
     grep -q "^error: .*excludes" || fail "--equal-time with --spp-list: not the exclusion's error"
 bad --compare --scene cornell-box-lights --seeds 0
