@@ -122,14 +122,11 @@ int runCompare(const CompareFlags& flags, const CommonOptions& options, const En
 {
     if (!options.heatmap.empty())
         throw UsageError("--heatmap times one render's pixels: run it with --headless, not --compare");
-    // One render's outputs, which a comparison of many would silently ignore.
+    // One render's outputs, which a comparison of many renders would silently ignore.
     if (!options.hdr.empty())
         throw UsageError("--hdr writes one render's image: with --compare, --images DIR keeps every render's PFM");
     if (!options.stats.empty())
         throw UsageError("--stats records one render: with --compare, --table FILE.json writes every figure");
-    if (options.given("spp"))
-        throw UsageError("--spp is one render's samples: with --compare, --spp-list gives the ladder's, --equal-time a "
-                         "time per strategy");
     const CommandLineRender job = resolveCommandLine(options);
     CompareOptions c;
     c.spps = parseSppList(flags.sppList);

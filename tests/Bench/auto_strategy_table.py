@@ -102,16 +102,19 @@ def scene_rows(out):
 
 
 def per_path(path, reference):
-    """{strategy: (ms per spp, (relMSE - the reference's own) x spp, efficiency)} of the full comparison's CSV,
-    means over its seeds."""
+    """{strategy: (ms per spp, (relMSE - the reference's own) x spp, efficiency)} of the full comparison's CSV: the
+    means over its seeds, the efficiency as the main table's (the inverse of the mean of relMSE x s)."""
     sums = {}
     for r in csv.DictReader(path.open()):
         if r["label"].startswith("auto"):
             continue
         ms = float(r["gpu_ms"]) if float(r["gpu_ms"]) >= 0 else float(r["wall_ms"])
         spp, relmse = int(r["spp"]), float(r["relmse"]) - reference
-        sums.setdefault(r["strategy"], []).append((ms / spp, relmse * spp, 1.0 / (relmse * ms * 1e-3)))
-    return {k: tuple(statistics.mean(x[i] for x in v) for i in range(3)) for k, v in sums.items()}
+        if relmse <= 0.0:
+            raise SystemExit(f"{path}: a relMSE {r['relmse']} at or below its reference's own {reference}")
+        sums.setdefault(r["strategy"], []).append((ms / spp, relmse * spp, relmse * ms * 1e-3))
+    means = {k: tuple(statistics.mean(x[i] for x in v) for i in range(3)) for k, v in sums.items()}
+    return {k: (m[0], m[1], 1.0 / m[2]) for k, m in means.items()}
 
 
 def pilots(out):

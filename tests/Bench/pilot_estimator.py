@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """How well the --strategy auto pilot's error estimator ranks candidates, emulated on a --compare --images folder of
 one spp count and many seeds (notebook §43). Each candidate's "measurement" is two renders (two seeds) taken as
-halves: the pixel's variance from their difference, u = (a - b)^2 / 2, over k measurements, normalised either as the
-pilot does (by the leave-one-out mean of the other candidates' images, Compare/AutoStrategy.cpp pilotRelMse's first
-pass), by the own's mean over DENOMINATOR_SEEDS seeds that no measurement uses (a pilot's own render of other seeds),
+halves: the pixel's variance from their difference, u = (a - b)^2 / 2, over k measurements, normalised as the pilot
+does (by the other candidates' mean, weighted by the inverse of their errors from a first pass by the plain mean:
+Compare/AutoStrategy.cpp pilotRelMse), by the own's mean over DENOMINATOR_SEEDS seeds that no measurement uses (a pilot's own render of other seeds),
 or by the folder's reference; the candidates' seeds either independent (as the pilot draws them) or the same for
 every candidate (common random numbers). Prints, per candidate, the median and the 10 % and 90 % points of its
 error over the own's (the first label given) over TRIALS pilots, beside the ratio of their true relMSE against the
@@ -71,18 +71,22 @@ def main():
             for _ in range(trials):
                 drawn = rng.sample(seeds, 2 * k + DENOMINATOR_SEEDS)
                 shared, spare = drawn[:2 * k], drawn[2 * k:]
-                est = {l: estimate(images[l], shared if paired else rng.sample(seeds, 2 * k)) for l in labels}
+                unused = [s for s in seeds if s not in spare]
+                est = {l: estimate(images[l], shared if paired else rng.sample(unused, 2 * k)) for l in labels}
                 own_mean = [sum(images[own][s][i] for s in spare) / len(spare) for i in range(len(reference))]
                 errors = {}
-                for l in labels:
-                    others = [0.0] * len(reference)
-                    for o in labels:
-                        if o != l:
-                            for i, x in enumerate(est[o][0]):
-                                others[i] += x / (len(labels) - 1)
-                    variance = est[l][1]
-                    errors[l] = tuple(sum(v / (o * o + EPSILON) for v, o in zip(variance, d)) / len(variance)
-                                      for d in (others, own_mean, reference))
+                weights = {l: 1.0 for l in labels}
+                for _ in range(2):  # pilotRelMse's two passes: the others' plain mean, then weighted by 1/error
+                    for l in labels:
+                        others, total = [0.0] * len(reference), sum(weights[o] for o in labels if o != l)
+                        for o in labels:
+                            if o != l:
+                                for i, x in enumerate(est[o][0]):
+                                    others[i] += weights[o] * x / total
+                        variance = est[l][1]
+                        errors[l] = tuple(sum(v / (o * o + EPSILON) for v, o in zip(variance, d)) / len(variance)
+                                          for d in (others, own_mean, reference))
+                    weights = {l: 1.0 / max(errors[l][0], 1e-300) for l in labels}
                 for l in ratios:
                     for j in range(3):
                         ratios[l][j].append(errors[l][j] / errors[own][j])

@@ -193,10 +193,14 @@ bad --compare --scene cornell-box-lights --light-selections nearest
 bad --compare --scene cornell-box-lights --equal-time 100
 bad --compare --scene cornell-box-lights --equal-time -5 --output "$work/x.png"
 bad --compare --scene cornell-box-lights --equal-time 100 --spp-list 4,16 --output "$work/x.png"
-# One render's outputs and samples, which a comparison would ignore.
-bad --compare --scene cornell-box-lights --spp-list 4 --stats "$work/x.json"
-bad --compare --scene cornell-box-lights --spp-list 4 --hdr "$work/x.pfm"
-bad --compare --scene cornell-box-lights --spp-list 4 --spp 16
+# One render's outputs, which a comparison would ignore: refused, each by its own error.
+for flag in "--stats $work/x.json" "--hdr $work/x.pfm"; do
+    # shellcheck disable=SC2086 # the flag and its file
+    bad --compare --scene cornell-box-lights --spp-list 4 $flag
+    # shellcheck disable=SC2086
+    "$app" --compare --scene cornell-box-lights --spp-list 4 $flag 2>&1 | grep -q "^error: ${flag%% *} " ||
+        fail "$flag with --compare: not its own error"
+done
 "$app" --compare --scene cornell-box-lights --equal-time 100 --spp-list 4,16 --output "$work/x.png" 2>&1 |
     grep -q "^error: .*excludes" || fail "--equal-time with --spp-list: not the exclusion's error"
 bad --compare --scene cornell-box-lights --seeds 0

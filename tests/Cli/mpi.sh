@@ -116,6 +116,7 @@ fi
 "$app" --headless --quiet --scene many-lights --width 2 --aspect 2 --spp 1 --russian-roulette off >/dev/null 2>&1
 long_render() {
     rm -f "$work"/out*
+    : >"$work/stderr" # the start check below must not read the last job's lines
     mpirun -q -np 2 "$app" --headless --scene many-lights --width 64 --spp 16777216 --russian-roulette off \
         --hdr "$work/out.pfm" --output "$work/out.png" --stats "$work/out.json" >"$work/stdout" 2>"$work/stderr" &
     pid=$!
@@ -156,6 +157,8 @@ killed_rank() {
 }
 killed_rank
 if [ "$kind" = cpu ] && ! grep -q '^error:' "$work/stderr"; then
+    [ "$status" != 0 ] || fail "a killed rank: status 0"
+    ! left_behind || fail "a killed rank: files left behind: $(ls "$work")"
     echo "    no error line forwarded: once more"
     killed_rank
 fi
