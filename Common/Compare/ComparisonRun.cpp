@@ -92,6 +92,26 @@ void warnNearReferenceNoise(const Reference& reference, const std::vector<double
                  near, relMses.size(), floor, *std::min_element(relMses.begin(), relMses.end()));
 }
 
+nlohmann::json tableHead(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
+                         const std::vector<EngineUnderTest>& engines, const Reference& reference)
+{
+    const RenderSettings& b = base.settings;
+    nlohmann::json json = toJson(b);
+    json.erase("spp");
+    json["scene"] = scene.id;
+    json["height"] = b.height();
+    if (options.referencePath.empty())
+        json["reference_spp"] = reference.spp;
+    else
+        json["reference"] = options.referencePath;
+    json["relmse_epsilon"] = kRelMseEpsilon;
+    json["metric"] = toString(options.metric);
+    json["reference_relmse"] = reference.ownRelMse ? nlohmann::json(*reference.ownRelMse) : nlohmann::json();
+    for (const EngineUnderTest& e : engines)
+        json["devices"][toString(e.kind)] = e.engine->deviceName();
+    return json;
+}
+
 std::string describeStrategy(const RenderSettings& settings)
 {
     std::vector<std::string> parts;

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "Compare/AutoStrategy.h"
 #include "Compare/Compare.h"
 #include "Compare/Confidence.h"
@@ -65,6 +67,12 @@ Reference finishReference(const Scene& scene, const RenderRequest& base, const C
 /// Rows whose relMSE is less than 3x the reference's own carry a third or more of the reference's noise: one
 /// warning naming how many and the smallest.
 void warnNearReferenceNoise(const Reference& reference, const std::vector<double>& relMses);
+
+/// --table's head, shared by the ladder's and the equal-time comparison's: the base settings by the settings
+/// table's keys (no spp: each row names its own), the scene, the reference (its spp, or the file given), relMSE's
+/// epsilon, the metric, the reference's own relMSE and each engine's device.
+nlohmann::json tableHead(const Scene& scene, const RenderRequest& base, const CompareOptions& options,
+                         const std::vector<EngineUnderTest>& engines, const Reference& reference);
 
 /// "estimator nee-mis, light-sampler projected, ...": the strategy settings, as the command line names them.
 std::string describeStrategy(const RenderSettings& settings);

@@ -9,7 +9,6 @@
 #include "Compare/EqualTime.h"
 #include "Compare/SeededRow.h"
 #include "IO/AtomicFile.h"
-#include "Render/SettingsTable.h"
 
 namespace rt::compare
 {
@@ -23,23 +22,10 @@ nlohmann::json equalTimeJson(const Scene& scene, const RenderRequest& base, cons
                              const std::vector<EqualTimeTile>& tiles, const std::vector<const SeededRow*>& rows,
                              std::size_t best, const std::vector<std::vector<AutoChoice>>* choices)
 {
-    const RenderSettings& b = base.settings;
-    nlohmann::json json = toJson(b); // the base settings by the settings table's keys; each row names its spp
-    json.erase("spp");
-    json["scene"] = scene.id;
-    json["height"] = b.height();
+    nlohmann::json json = tableHead(scene, base, options, engines, reference);
     json["equal_time_ms"] = options.equalTimeMs;
     json["seeds"] = options.seeds;
     json["rounds"] = options.rounds;
-    if (options.referencePath.empty())
-        json["reference_spp"] = reference.spp;
-    else
-        json["reference"] = options.referencePath;
-    json["relmse_epsilon"] = kRelMseEpsilon;
-    json["metric"] = toString(options.metric);
-    json["reference_relmse"] = reference.ownRelMse ? nlohmann::json(*reference.ownRelMse) : nlohmann::json();
-    for (const EngineUnderTest& e : engines)
-        json["devices"][toString(e.kind)] = e.engine->deviceName();
     const std::size_t perEngine = rows.size() / std::max<std::size_t>(engines.size(), 1);
     json["rows"] = nlohmann::json::array();
     for (std::size_t i = 0; i < rows.size(); ++i)

@@ -9,7 +9,6 @@
 
 #include "Cluster/Job.h"
 #include "IO/AtomicFile.h"
-#include "Render/SettingsTable.h"
 
 namespace rt::compare
 {
@@ -126,19 +125,7 @@ void LadderTable::print()
     const std::size_t strategyCount = m_options.strategies.size();
     const std::size_t rowCount = rowCountOf(m_options);
     const RenderSettings& b = m_base.settings;
-    nlohmann::json json = toJson(b); // the base settings by the settings table's keys; each row names its spp
-    json.erase("spp");
-    json["scene"] = m_scene.id;
-    json["height"] = b.height();
-    if (m_options.referencePath.empty())
-        json["reference_spp"] = m_reference.spp;
-    else
-        json["reference"] = m_options.referencePath;
-    json["relmse_epsilon"] = kRelMseEpsilon;
-    json["metric"] = toString(m_options.metric);
-    json["reference_relmse"] = m_reference.ownRelMse ? nlohmann::json(*m_reference.ownRelMse) : nlohmann::json();
-    for (const EngineUnderTest& e : m_engines)
-        json["devices"][toString(e.kind)] = e.engine->deviceName();
+    nlohmann::json json = tableHead(m_scene, m_base, m_options, m_engines, m_reference);
     if (cluster::job().distributed())
         json["ranks"] = cluster::job().size(); // each row's renders came from any of them (the CSV names which)
     json["rows"] = nlohmann::json::array();

@@ -17,18 +17,17 @@ reference (the mean over every seed). Standard library only; slow (pure Python),
 import json
 import random
 import statistics
-import struct
 import sys
 from pathlib import Path
+
+import pfm_relmse  # beside this script
 
 EPSILON = 0.01  # relMSE's epsilon (Common/Image/Metrics.h)
 DENOMINATOR_SEEDS = 8  # the own's renders of other seeds averaged into the third normalisation
 
 
 def read_pfm(path):
-    data = path.read_bytes().split(b"\n", 3)
-    w, h = map(int, data[1].split())
-    return list(struct.unpack(f"<{w * h * 3}f", data[3]))
+    return list(pfm_relmse.read_pfm(path)[2])
 
 
 def estimate(images, seeds):
