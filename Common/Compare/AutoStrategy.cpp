@@ -263,25 +263,21 @@ std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& candidates)
     estimates.reserve(candidates.size());
     for (const PilotHalves& c : candidates)
         pointers.push_back(&estimates.emplace_back(PilotEstimate::of(c)));
-    return pilotRelMse(pointers, pointers);
+    return pilotRelMse(pointers);
 }
 
-std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> measured,
-                                    std::span<const PilotEstimate* const> estimates)
+std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> estimates)
 {
-    const std::size_t n = measured.size();
+    const std::size_t n = estimates.size();
     if (n == 0)
         return {};
-    if (estimates.size() != n)
-        throw UsageError(fmt::format("{} pilot candidates measured and {} estimates", n, estimates.size()));
-    const int width = measured.front()->width, height = measured.front()->height;
+    const int width = estimates.front()->width, height = estimates.front()->height;
     const std::size_t pixels = std::size_t(width) * std::size_t(height), values = pixels * 3;
-    for (const auto set : {measured, estimates})
-        for (const PilotEstimate* c : set)
-            if (c->width != width || c->height != height || c->mean.size() != values || c->deviation.size() != values ||
-                (!c->pixelVarianceError.empty() && c->pixelVarianceError.size() != pixels))
-                throw UsageError(fmt::format("pilot images differ in size ({}x{} and {}x{})", width, height, c->width,
-                                             c->height));
+    for (const PilotEstimate* c : estimates)
+        if (c->width != width || c->height != height || c->mean.size() != values || c->deviation.size() != values ||
+            (!c->pixelVarianceError.empty() && c->pixelVarianceError.size() != pixels))
+            throw UsageError(fmt::format("pilot images differ in size ({}x{} and {}x{})", width, height, c->width,
+                                         c->height));
     if (values == 0)
         return std::vector<PilotError>(n);
     // relMSE's denominator for candidate i: the others' estimate, per pixel. Never candidate i's own image: a firefly
@@ -350,10 +346,10 @@ std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> measur
                 // In float (its rounding, 1e-7 of a term, far below a pilot's noise): half the time of double's
                 // divisions, which held the loop. A tile whose float terms overflow (a deviation of 1e19 and more,
                 // whose square double holds) is summed again in double.
-                const float* d = measured[i]->deviation.data() + begin;
-                const double* e = measured[i]->pixelVarianceError.empty()
+                const float* d = estimates[i]->deviation.data() + begin;
+                const double* e = estimates[i]->pixelVarianceError.empty()
                                       ? nullptr
-                                      : measured[i]->pixelVarianceError.data() + begin / 3;
+                                      : estimates[i]->pixelVarianceError.data() + begin / 3;
                 PartialSums<kLanes> sum = relMseTerms<float, kLanes>(d, e, others.data(), count / 3);
                 if (!std::isfinite(std::accumulate(sum.terms.begin(), sum.terms.end(), 0.0) +
                                    std::accumulate(sum.squares.begin(), sum.squares.end(), 0.0)))
@@ -377,7 +373,7 @@ std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> measur
             // values^2, measured pixel by pixel where the estimate has them, else from the pixels' terms' spread.
             const double mean = sumAll / double(values), pixelMean = sumAll / double(pixels);
             const double variance =
-                measured[i]->pixelVarianceError.empty()
+                estimates[i]->pixelVarianceError.empty()
                     ? std::max(sumSquares / double(pixels) - pixelMean * pixelMean, 0.0) / double(pixels) / 9.0
                     : sumSquares / (double(values) * double(values));
             errors[i] = PilotError{mean, std::sqrt(variance)};
@@ -386,6 +382,93 @@ std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> measur
             w[i] = 1.0 / std::max(errors[i].relMse, 1e-300);
     }
     return errors;
+}
+
+PairedRelMse pairedRelMse(std::span<const PilotPair> pairs)
+{
+    if (pairs.empty())
+        throw UsageError("pairedRelMse: no pair");
+    const int width = pairs.front().own ? pairs.front().own->a.width() : 0;
+    const int height = pairs.front().own ? pairs.front().own->a.height() : 0;
+    const std::size_t pixels = std::size_t(width) * std::size_t(height), values = 3 * pixels;
+    for (const PilotPair& pair : pairs)
+    {
+        if (!pair.own || !pair.challenger || !pair.denominator)
+            throw UsageError("pairedRelMse: a pair without its halves or denominator");
+        for (const Image* image : {&pair.own->a, &pair.own->b, &pair.challenger->a, &pair.challenger->b})
+            if (image->width() != width || image->height() != height)
+                throw UsageError(fmt::format("pilot pairs differ in size ({}x{} and {}x{})", width, height,
+                                             image->width(), image->height()));
+        if (pair.denominator->size() != values)
+            throw UsageError(fmt::format("a pilot pair's denominator holds {} values for {}x{} pixels",
+                                         pair.denominator->size(), width, height));
+    }
+    const std::size_t k = pairs.size();
+    PairedRelMse r;
+    r.ownPerPair.assign(k, 0.0);
+    std::vector<double> challengerPerPair(k, 0.0), x(k), y(k);
+    // Per pixel, the spread over the pairs of x, of y and their covariance, summed over the pixels: the variance of
+    // sum (y - R x) is then k / (k - 1) (Cyy - 2 R Cxy + R^2 Cxx), one pass for any R. With one pair, the pixels'
+    // spread: their raw moments (sum (y - R x) is 0), P / (P - 1) (Syy - 2 R Sxy + R^2 Sxx).
+    double cxx = 0.0, cyy = 0.0, cxy = 0.0, sxx = 0.0, syy = 0.0, sxy = 0.0;
+    for (std::size_t p = 0; p < pixels; ++p)
+    {
+        double meanX = 0.0, meanY = 0.0;
+        for (std::size_t m = 0; m < k; ++m)
+        {
+            const float* ownA = &pairs[m].own->a.data()[p].x;
+            const float* ownB = &pairs[m].own->b.data()[p].x;
+            const float* rivalA = &pairs[m].challenger->a.data()[p].x;
+            const float* rivalB = &pairs[m].challenger->b.data()[p].x;
+            const float* d = pairs[m].denominator->data() + 3 * p;
+            double xm = 0.0, ym = 0.0;
+            for (std::size_t c = 0; c < 3; ++c)
+            {
+                const double scale = 0.25 / (double(d[c]) * double(d[c]) + kRelMseEpsilon);
+                const double dx = double(ownA[c]) - double(ownB[c]), dy = double(rivalA[c]) - double(rivalB[c]);
+                xm += dx * dx * scale;
+                ym += dy * dy * scale;
+            }
+            x[m] = xm;
+            y[m] = ym;
+            r.ownPerPair[m] += xm;
+            challengerPerPair[m] += ym;
+            meanX += xm;
+            meanY += ym;
+        }
+        sxx += meanX * meanX;
+        syy += meanY * meanY;
+        sxy += meanX * meanY;
+        meanX /= double(k);
+        meanY /= double(k);
+        for (std::size_t m = 0; m < k; ++m)
+        {
+            cxx += (x[m] - meanX) * (x[m] - meanX);
+            cyy += (y[m] - meanY) * (y[m] - meanY);
+            cxy += (x[m] - meanX) * (y[m] - meanY);
+        }
+    }
+    const double sumX = std::accumulate(r.ownPerPair.begin(), r.ownPerPair.end(), 0.0);
+    const double sumY = std::accumulate(challengerPerPair.begin(), challengerPerPair.end(), 0.0);
+    const double scale = 1.0 / (double(k) * double(k) * double(values));
+    const double n = double(pixels);
+    const double spread = k > 1 ? double(k) / double(k - 1) : pixels > 1 ? n / (n - 1.0)
+                                                                          : std::numeric_limits<double>::infinity();
+    r.own = sumX * scale;
+    r.challenger = sumY * scale;
+    r.ratio = sumX > 0.0 ? sumY / sumX : 0.0;
+    const double ratioSpread = k > 1 ? cyy - 2.0 * r.ratio * cxy + r.ratio * r.ratio * cxx
+                                     : syy - 2.0 * r.ratio * sxy + r.ratio * r.ratio * sxx;
+    if (k == 1)
+    {
+        cxx = sxx - sumX * sumX / n;
+        cyy = syy - sumY * sumY / n;
+    }
+    r.ownError = std::sqrt(spread * std::max(cxx, 0.0)) * scale;
+    r.challengerError = std::sqrt(spread * std::max(cyy, 0.0)) * scale;
+    r.ratioError = sumX > 0.0 && std::isfinite(spread) ? std::sqrt(std::max(spread * ratioSpread, 0.0)) / sumX
+                                                       : std::numeric_limits<double>::infinity();
+    return r;
 }
 
 AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, const StrategyLists& candidates,
@@ -591,30 +674,39 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // A half of another strategy than the scene's that runs past 4x its planned time is stopped (or, where the engine
     // cannot stop it, not measured further): the candidate is too
     // slow to win (it would need 4x less error per path than the probe's strategy), and the budget holds (book 3's
-    // mixture over 1000 lights took 15x its share on many-lights).
+    // mixture over 1000 lights took 15x its share on many-lights). Or past 4x the own's slower half of the round, on
+    // the host's clock, where that is more: a machine loaded by other work slows every candidate (lavapipe beside
+    // a test suite took every nee-mis candidate of rtrol-cornell-box past 4x its share, and the pilot kept the
+    // mixture, half as efficient).
     const double shareMs = cost.ms(pixelsOf(pilot), pilot.spp); // a half's, as planned
-    const auto timeLimit = std::chrono::nanoseconds(static_cast<std::int64_t>(std::max(4.0 * shareMs, 5.0) * 1e6));
+    double ownHalfWallMs = 0.0; // the own's slower half in the round
+    auto timeLimit = [&] {
+        return std::chrono::nanoseconds(
+            static_cast<std::int64_t>(std::max(4.0 * std::max(shareMs, ownHalfWallMs), 5.0) * 1e6));
+    };
 
-    /// A candidate's measurements: all of them, and those of the final round.
+    /// A candidate's measurements: all of them, and those of the final round by their seeds' slot.
     struct Candidate
     {
         PilotRow row;
         PilotSums all;
-        PilotSums final; // the challenger's (the own keeps only finalLeastMs of its final round)
-        std::vector<PilotEstimate> each; // the scene's own: every measurement's estimate (the decision's median)
-        double finalLeastMs = 0.0; // the scene's own: the least of its final round's measurements' time
+        std::vector<std::pair<std::uint32_t, PilotHalves>> finals;
+        double finalLeastMs = 0.0; // the least of its final round's measurements' time
     };
     const double halfPaths = pixelsOf(pilot) * double(pilot.spp);
     std::vector<Candidate> runs;
     for (const Strategy& strategy : grid)
         runs.push_back({PilotRow{strategy, differences(own, strategy)}, {}, {}});
-    std::uint32_t measured = 0; // measurements made, for their seeds
-    auto measureOnce = [&](Candidate& c, bool finalRound) {
+    std::uint32_t measured = 0; // measurements made
+    // Every candidate's measurement of a round (and of each of the final round's repeats) takes that slot's seeds:
+    // common random numbers (see the header).
+    auto seedOf = [&](std::uint32_t slot) { return request.settings.seed + 7919u * (2u * slot + 1u); };
+    auto measureOnce = [&](Candidate& c, bool finalRound, std::uint32_t slot) {
         if (finalRound && choice.timingSpp > 0)
         {
             RenderRequest frame = request;
             frame.settings = c.row.strategy.applyTo(timing);
-            frame.settings.seed = request.settings.seed + 7919u * (2u * measured + 1u) + 3u;
+            frame.settings.seed = seedOf(slot) + 3u;
             const auto frameStart = std::chrono::steady_clock::now();
             const Measurement t = measure(engine, frame, nullptr, {}, true);
             choice.renderHostSeconds +=
@@ -629,10 +721,12 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         }
         RenderRequest half = request;
         half.settings = c.row.strategy.applyTo(pilot);
-        half.settings.seed = request.settings.seed + 7919u * (2u * measured++ + 1u);
+        half.settings.seed = seedOf(slot);
+        ++measured;
         // The scene's own strategy is the one to beat (and the probe's): never stopped, or nothing would compare
         // (a loaded machine took it past 4x its share of a 3 ms render's pilot).
-        const auto limit = &c == &runs.front() ? std::chrono::nanoseconds(0) : timeLimit;
+        const bool isOwn = &c == &runs.front();
+        const auto limit = isOwn ? std::chrono::nanoseconds(0) : timeLimit();
         const auto renderStart = std::chrono::steady_clock::now();
         Measurement a = measure(engine, half, nullptr, limit, true);
         ++half.settings.seed;
@@ -643,6 +737,8 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         choice.tracingHostSeconds += (a.wallMs + b.wallMs) * 1e-3;
         if (b.cancelled && !b.timedOut)
             return false;
+        if (isOwn)
+            ownHalfWallMs = std::max(a.wallMs, b.wallMs);
         choice.pilotMs += a.ms() + b.ms();
         if (b.timedOut)
         {
@@ -677,13 +773,12 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         const double ms = 2.0 * std::max(fasterMs - choice.overheadMs, 0.1 * fasterMs);
         c.row.ms += ms;
         ++c.row.measurements;
-        if (finalRound && &c == &runs.front())
-            c.finalLeastMs = c.finalLeastMs > 0.0 ? std::min(c.finalLeastMs, ms) : ms;
-        else if (finalRound)
-            c.final.add(a.image, b.image, ms);
         c.all.add(a.image, b.image, ms);
-        if (&c == &runs.front())
-            c.each.push_back(PilotEstimate::of({std::move(a.image), std::move(b.image)}));
+        if (finalRound)
+        {
+            c.finalLeastMs = c.finalLeastMs > 0.0 ? std::min(c.finalLeastMs, ms) : ms;
+            c.finals.emplace_back(slot, PilotHalves{std::move(a.image), std::move(b.image)});
+        }
         return true;
     };
     // Every candidate measured: their halves' means over all their measurements, in runs' order.
@@ -702,7 +797,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         std::vector<const PilotEstimate*> estimates;
         for (Candidate* c : measuredRuns)
             estimates.push_back(&c->all.estimate());
-        const std::vector<PilotError> errors = pilotRelMse(estimates, estimates);
+        const std::vector<PilotError> errors = pilotRelMse(estimates);
         for (std::size_t i = 0; i < measuredRuns.size(); ++i)
         {
             PilotRow& row = measuredRuns[i]->row;
@@ -721,11 +816,12 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     std::vector<std::size_t> active(runs.size());
     for (std::size_t i = 0; i < active.size(); ++i)
         active[i] = i;
+    std::uint32_t slot = 0; // the round's (its repeat's) seeds
     while (finished && !choice.budgetSpent)
     {
         const bool finalRound = active.size() <= 2;
         for (int repeat = 0; repeat < (finalRound ? kFinalMeasurements : 1) && finished && !choice.budgetSpent;
-             ++repeat)
+             ++repeat, ++slot)
             for (const std::size_t i : active)
             {
                 if (runs[i].row.tooSlow)
@@ -743,7 +839,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
                     break;
                 }
                 challengerInFinal |= finalRound && i != 0;
-                if (!(finished = measureOnce(runs[i], finalRound)))
+                if (!(finished = measureOnce(runs[i], finalRound, slot)))
                     break;
             }
         if (!finished || finalRound)
@@ -774,79 +870,101 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         return choice;
     }
     rescore();
-    // The decision: the final round's challenger against the scene's own. Its earlier measurements chose it for
-    // that round, so they are the luckiest of their round (the winner's curse): on the CPU's cornell-box-lights,
-    // whose 13 candidates are within 10 % of each other, deciding on them switched with 3 seeds of 3, to three
-    // different strategies. Its final measurements are fresh; the scene's own is measured in every round whatever
-    // its results, so all of its measurements count. Both normalised by every candidate's estimate.
+    // The decision: the final round's challenger against the scene's own, on their final measurements paired by
+    // seed. The challenger's earlier measurements chose it for that round, so they are the luckiest of their round
+    // (the winner's curse): on the CPU's cornell-box-lights, whose 13 candidates are within 10 % of each other,
+    // deciding on them switched with 3 seeds of 3, to three different strategies.
     const std::vector<Candidate*> measuredRuns = scored();
+    Candidate& ownRun = runs.front();
     const auto challenger = std::find_if(measuredRuns.begin(), measuredRuns.end(), [&](const Candidate* c) {
-        return c != &runs.front() && c->final.count > 0;
+        return c != &ownRun && !c->finals.empty();
     });
-    if (challenger != measuredRuns.end() && measuredRuns.front() == &runs.front() && runs.front().finalLeastMs > 0.0)
+    // Whether two pairs or more decided: a final round the host's clock cut to one (lavapipe beside other work:
+    // 48 s of a pilot held to 20 s, nee-mis 4x as efficient as the own) decides as a search without one.
+    bool decidedByPairs = false;
+    if (challenger != measuredRuns.end() && measuredRuns.front() == &ownRun && !ownRun.finals.empty())
     {
-        std::vector<const PilotEstimate*> measuredEstimates, estimates;
-        for (Candidate* c : measuredRuns)
-        {
-            measuredEstimates.push_back(c == *challenger ? &c->final.estimate() : &c->all.estimate());
-            estimates.push_back(&c->all.estimate());
-        }
-        const std::vector<PilotError> errors = pilotRelMse(measuredEstimates, estimates);
-        const std::size_t at = std::size_t(challenger - measuredRuns.begin());
-        PilotRow& row = (*challenger)->row;
-        row.finalMeasurements = (*challenger)->final.count;
-        row.finalRelMse = errors[at].relMse;
-        row.finalRelMseError = errors[at].standardError;
+        Candidate& rival = **challenger;
+        // Each pair's denominator: every candidate's estimate without that seed's measurement, weighted by its
+        // inverse relMSE (its measurements' count, less the one left out, over one measurement's relMSE).
+        const std::size_t values = ownRun.all.estimate().mean.size();
+        auto otherSeeds = [&](std::uint32_t leftOut) {
+            std::vector<double> total(values, 0.0);
+            double weight = 0.0;
+            for (Candidate* c : measuredRuns)
+            {
+                const PilotEstimate& e = c->all.estimate();
+                const auto left = std::find_if(c->finals.begin(), c->finals.end(),
+                                               [&](const auto& f) { return f.first == leftOut; });
+                const double k = double(c->all.count), kept = left != c->finals.end() ? k - 1.0 : k;
+                if (kept <= 0.0)
+                    continue;
+                const double w = kept / k / std::max(c->row.relMse, 1e-300);
+                weight += w;
+                if (left == c->finals.end())
+                    for (std::size_t v = 0; v < values; ++v)
+                        total[v] += w * double(e.mean[v]);
+                else
+                {
+                    const float* a = &left->second.a.data()->x;
+                    const float* b = &left->second.b.data()->x;
+                    for (std::size_t v = 0; v < values; ++v)
+                        total[v] += w * (2.0 * k * double(e.mean[v]) - double(a[v]) - double(b[v])) / (2.0 * kept);
+                }
+            }
+            std::vector<float> d(values, 0.0f);
+            if (weight > 0.0)
+                for (std::size_t v = 0; v < values; ++v)
+                    d[v] = float(total[v] / weight);
+            return d;
+        };
+        std::vector<std::vector<float>> denominators;
+        std::vector<PilotPair> pairs;
+        denominators.reserve(ownRun.finals.size());
+        for (const auto& [ownSlot, halves] : ownRun.finals)
+            for (const auto& [rivalSlot, rivalHalves] : rival.finals)
+                if (rivalSlot == ownSlot)
+                    pairs.push_back({&halves, &rivalHalves, &denominators.emplace_back(otherSeeds(ownSlot))});
         // A measurement's time: from the timing frames where the final round had them, else the least of the final
         // round's measurements of each (they take turns; a stall only adds time: on 2 cores one measurement of the
         // own's 6 ms renders took 7.9 ms where its others took 5.6-6.6).
-        Candidate& ownRun = runs.front();
-        const bool timed = row.timingMsPerPath > 0.0 && ownRun.row.timingMsPerPath > 0.0;
-        const double finalMs = timed ? double(row.finalMeasurements) * 2.0 * halfPaths * row.timingMsPerPath
-                                     : double(row.finalMeasurements) * (*challenger)->final.leastMs;
-        const double ownMs = timed ? double(ownRun.row.measurements) * 2.0 * halfPaths * ownRun.row.timingMsPerPath
-                                   : double(ownRun.row.measurements) * ownRun.finalLeastMs;
-        row.finalEfficiency = row.finalRelMse > 0.0 ? 1.0 / (row.finalRelMse * finalMs * 1e-3) : 0.0;
-        // The scene's own by its median measurement, the challenger by the mean of its: a pilot's small renders see a
-        // heavy-tailed error as a rare firefly, which then decides. On veach-mis at 1 s on 2 cores (3 spp a half over
-        // 39 x 26 pixels) one firefly in the own's six measurements put its efficiency at 1-360 where its other
-        // pilots measured 2,900-5,500, and the pilot left it for strategies 0.13-0.7x as efficient in 7 of 12 seeds.
-        // Counted in the challenger's mean, a firefly keeps the own; left out of the own's median, it cannot push
-        // the pilot to a challenger: both ways the scene's own stays unless the challenger leads the own's typical
-        // measurement. (A challenger's median would hide its heavier tail: area sampling on veach-mis, 0.13x.)
-        std::vector<PilotError> each;
-        for (const PilotEstimate& measurement : ownRun.each)
-        {
-            measuredEstimates.front() = &measurement;
-            each.push_back(pilotRelMse(measuredEstimates, estimates).front());
-        }
-        std::sort(each.begin(), each.end(),
-                  [](const PilotError& x, const PilotError& y) { return x.relMse < y.relMse; });
-        const std::size_t n = each.size();
-        const PilotError& lower = each[(n - 1) / 2];
-        const PilotError& upper = each[n / 2];
+        PilotRow& row = rival.row;
         PilotRow& incumbent = ownRun.row;
-        // As the relMSE of the mean of them all.
-        incumbent.medianRelMse = 0.5 * (lower.relMse + upper.relMse) / double(n);
-        incumbent.medianEfficiency =
-            incumbent.medianRelMse > 0.0 ? 1.0 / (incumbent.medianRelMse * ownMs * 1e-3) : 0.0;
-        const double ownEfficiency = incumbent.relMse > 0.0 ? 1.0 / (incumbent.relMse * ownMs * 1e-3) : 0.0;
-        auto relative = [](double value, double error) { return value > 0.0 ? error / value : 0.0; };
-        // The own by its median where that is kFireflyMedian times its mean's: a firefly among its measurements. Not
-        // the better of the two: a few measurements' relMSE is skewed (their median below their mean), and on
-        // cornell-box-lights at 4 s (2 cores) the median's efficiency was 1.0-1.14x the mean's in 7 of 8 pilots (1.38x
-        // once), which held the own 7 % above its efficiency and, with the 10 %, asked a challenger to lead by 18 %;
-        // veach-mis's firefly put it at 8x.
-        constexpr double kFireflyMedian = 1.5;
-        const bool byMedian = incumbent.medianEfficiency > kFireflyMedian * ownEfficiency;
-        const PilotScore ownScore =
-            byMedian ? PilotScore{incumbent.medianEfficiency, relative(lower.relMse, lower.standardError)}
-                     : PilotScore{ownEfficiency, relative(incumbent.relMse, incumbent.relMseError)};
-        if (pilotSwitches(ownScore, {row.finalEfficiency, relative(row.finalRelMse, row.finalRelMseError)}))
-            choice.chosen = row.strategy;
+        const bool timed = row.timingMsPerPath > 0.0 && incumbent.timingMsPerPath > 0.0;
+        const double rivalMs = timed ? 2.0 * halfPaths * row.timingMsPerPath : rival.finalLeastMs;
+        const double ownMs = timed ? 2.0 * halfPaths * incumbent.timingMsPerPath : ownRun.finalLeastMs;
+        if (pairs.size() >= 2)
+        {
+            decidedByPairs = true;
+            const PairedRelMse paired = pairedRelMse(pairs);
+            const double k = double(pairs.size());
+            auto fill = [&](PilotRow& r, double relMse, double error, double ms) {
+                r.finalMeasurements = int(pairs.size());
+                r.finalRelMse = relMse;
+                r.finalRelMseError = error;
+                r.finalEfficiency = relMse > 0.0 ? 1.0 / (relMse * k * ms * 1e-3) : 0.0;
+            };
+            fill(incumbent, paired.own, paired.ownError, ownMs);
+            fill(row, paired.challenger, paired.challengerError, rivalMs);
+            row.relMseRatio = paired.ratio;
+            row.relMseRatioError = paired.ratioError;
+            // Again without the pair where the own's error was largest: a firefly in the own's renders is one
+            // pair's, and a lead that stands on it alone is no measurement of the own's tail.
+            std::vector<PilotPair> trimmed = pairs;
+            trimmed.erase(trimmed.begin() + (std::max_element(paired.ownPerPair.begin(), paired.ownPerPair.end()) -
+                                             paired.ownPerPair.begin()));
+            const PairedRelMse rest = trimmed.empty() ? PairedRelMse{} : pairedRelMse(trimmed);
+            row.trimmedRelMseRatio = rest.ratio;
+            row.trimmedRelMseRatioError = trimmed.empty() ? std::numeric_limits<double>::infinity() : rest.ratioError;
+            auto switches = [&](double ratio, double error) {
+                return ratio > 0.0 && rivalMs > 0.0 && pilotSwitches(ownMs / (ratio * rivalMs), error / ratio);
+            };
+            if (switches(paired.ratio, paired.ratioError) && switches(rest.ratio, row.trimmedRelMseRatioError))
+                choice.chosen = row.strategy;
+        }
     }
-    else if (choice.budgetSpent && !challengerInFinal && measuredRuns.size() > 1 &&
-             measuredRuns.front() == &runs.front())
+    if (!decidedByPairs && choice.budgetSpent && (!challengerInFinal || challenger != measuredRuns.end()) &&
+        measuredRuns.size() > 1 && measuredRuns.front() == &runs.front())
     {
         // No final round: the host's clock passed the budget first (a GPU compiling the candidates' pipelines; or
         // right as the final round began, before its challenger's first measurement: an H200's glossy-cornell at
@@ -867,12 +985,10 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     return choice;
 }
 
-bool pilotSwitches(const PilotScore& own, const PilotScore& challenger)
+bool pilotSwitches(double lead, double logLeadError)
 {
-    if (challenger.efficiency <= 0.0)
+    if (!(lead > 0.0))
         return false;
-    if (own.efficiency <= 0.0)
-        return true;
     // Two standard errors, though the challenger's final measurements are fresh: a heavy tail its few renders did not
     // meet is in no standard error, and its measured lead is then high more often than low. At one, CPU pilots of
     // veach-mis (4 s, 12 seeds) left the own for area sampling with uniform selection once, 0.2x its efficiency, and
@@ -883,8 +999,16 @@ bool pilotSwitches(const PilotScore& own, const PilotScore& challenger)
     // sampling, 0.7x the scene's projected at the render's 10,000 spp); a smaller lead would also gain less than the
     // pilot cost.
     constexpr double kMinimumLead = 1.1;
-    return std::log(challenger.efficiency / own.efficiency) >
-           std::max(std::log(kMinimumLead), 2.0 * std::hypot(own.relativeError, challenger.relativeError));
+    return std::log(lead) > std::max(std::log(kMinimumLead), 2.0 * logLeadError);
+}
+
+bool pilotSwitches(const PilotScore& own, const PilotScore& challenger)
+{
+    if (challenger.efficiency <= 0.0)
+        return false;
+    if (own.efficiency <= 0.0)
+        return true;
+    return pilotSwitches(challenger.efficiency / own.efficiency, std::hypot(own.relativeError, challenger.relativeError));
 }
 
 nlohmann::json AutoChoice::toJson() const
@@ -929,8 +1053,10 @@ nlohmann::json AutoChoice::toJson() const
                                    {"final_relmse", r.finalRelMse},
                                    {"final_relmse_standard_error", r.finalRelMseError},
                                    {"final_efficiency", r.finalEfficiency},
-                                   {"median_measurement_relmse", r.medianRelMse},
-                                   {"median_measurement_efficiency", r.medianEfficiency},
+                                   {"final_relmse_ratio_to_own", r.relMseRatio},
+                                   {"final_relmse_ratio_standard_error", r.relMseRatioError},
+                                   {"final_relmse_ratio_without_owns_worst", r.trimmedRelMseRatio},
+                                   {"final_relmse_ratio_without_owns_worst_standard_error", r.trimmedRelMseRatioError},
                                    {"timing_ms_per_path", r.timingMsPerPath},
                                    {"too_slow", r.tooSlow}});
     return j;
@@ -944,20 +1070,20 @@ std::string AutoChoice::table() const
     {
         const std::string timed =
             r.timingMsPerPath > 0.0 ? fmt::format(" (timing frames: {:.3g} ns a path)", r.timingMsPerPath * 1e6) : "";
-        const std::string decided =
-            r.medianRelMse > 0.0
-                ? fmt::format("  its median measurement: relMSE {:.3g}, 1/(relMSE s) {:.4g}", r.medianRelMse,
-                              r.medianEfficiency)
-            : r.finalMeasurements > 0
-                ? fmt::format("  final round: {} x2 halves, relMSE {:.3g} ±{:.2g}, 1/(relMSE s) {:.4g}{}",
-                              r.finalMeasurements, r.finalRelMse, r.finalRelMseError, r.finalEfficiency,
-                              r.strategy == chosen ? ": chosen" : ": not enough to switch")
-                : "";
+        std::string decided;
+        if (r.finalMeasurements > 0)
+            decided = fmt::format("  final round: {} x2 halves, relMSE {:.3g} ±{:.2g}, 1/(relMSE s) {:.4g}",
+                                  r.finalMeasurements, r.finalRelMse, r.finalRelMseError, r.finalEfficiency);
+        if (r.relMseRatio > 0.0)
+            decided += fmt::format("; relMSE over the own's, paired: {:.3g} ±{:.2g}, without the own's worst pair "
+                                   "{:.3g} ±{:.2g}{}",
+                                   r.relMseRatio, r.relMseRatioError, r.trimmedRelMseRatio, r.trimmedRelMseRatioError,
+                                   r.strategy == chosen ? ": chosen" : ": not enough to switch");
         text += fmt::format("{:<44} {:>30} {:>3} {:>9.2f} {:>10.3g} {:>8.2g} {:>12.4g}{}{}{}\n", r.strategy.name(),
                             r.differs, r.measurements, r.ms, r.relMse, r.relMseError, r.efficiency,
                             r.tooSlow                                        ? "  stopped: 4x its share"
                             : r.measurements == 0                            ? "  not measured: the budget was spent"
-                            : r.strategy == chosen && r.finalMeasurements == 0 ? "  <- chosen"
+                            : r.strategy == chosen && r.relMseRatio == 0.0     ? "  <- chosen"
                                                                              : "",
                             decided, timed);
     }

@@ -20,23 +20,33 @@
 // sampler kept book 3's mixture on rtrol-cornell-box, where an estimator with NEE and a cheaper sampler is 2x as
 // efficient.
 //
-// A candidate's error is the variance of its estimate from its measurements' halves (PilotEstimate), as
-// relMSE, whose denominator is the other candidates' combined estimate (weighted by their inverse errors), never
-// the candidate's own image (a firefly over itself is about 1). Every candidate is
-// unbiased (the engines' agreement tests), so its variance is its error: the error against the others' estimate
-// would add their noise, and on a glossy scene's heavy tails (veach-mis) its correction for that noise failed and
-// read as a bias. Its efficiency is 1 / (relMSE x seconds), twice the faster half's time on the engine's clock
-// (Compare/Measurement.h) less the half's fixed and per-pixel cost (the render's paths' time; in the decision every
-// measurement at the least of its final round's, since a stall only adds time). The final round's challenger wins
-// where, on its final round's measurements alone (the earlier ones chose it, and are lucky), its lead over the
-// scene's own is more than twice the standard error of their ratio and 10 % (pilotSwitches): otherwise the scene's own
-// stays. The own counts by its mean, or by its measurements' median where a firefly put that at 1.5x (a firefly in
-// one of a small pilot's renders is not a measurement of a tail), the challenger by its mean (its fireflies count
-// against it). The measurements are
+// Every candidate of a round is rendered with the round's seeds (common random numbers): the strategies share a
+// seed's camera rays and BSDF directions, so their fireflies, and the ratio of two candidates' errors is 5-10x
+// tighter than with seeds of their own (notebook §43: with independent seeds a pilot's ratio to the own spanned a
+// factor of 3-6 at one measurement on glossy-cornell). A candidate's error is the variance of its estimate from its
+// measurements' halves (PilotEstimate), as relMSE; between rounds (the halving's order, the table) its denominator
+// is the other candidates' combined estimate (weighted by their inverse errors), never the candidate's own image (a
+// firefly over itself is about 1). Every candidate is unbiased (the engines' agreement tests), so its variance is
+// its error: the error against the others' estimate would add their noise, and on a glossy scene's heavy tails
+// (veach-mis) its correction for that noise failed and read as a bias. Its efficiency is 1 / (relMSE x seconds),
+// twice the faster half's time on the engine's clock (Compare/Measurement.h) less the half's fixed and per-pixel
+// cost (the render's paths' time; in the decision every measurement at the least of its final round's, since a
+// stall only adds time).
+// The decision pairs the final round's measurements of the scene's own and the challenger, seed by seed
+// (pairedRelMse): the ratio of their errors, each normalised by the estimate of every other seed's measurements (an
+// estimate from the same seeds shares their fireflies and pulled the ratio toward 1: 1.01x where it was 1.14x), its
+// standard error from the pairs' differences pixel by pixel (their covariance counted). The challenger wins where
+// its lead in efficiency is more than twice that standard error and 10 % (pilotSwitches), on all the pairs and on
+// the pairs left without the own's worst (a firefly in one of a small pilot's renders of the own is not a
+// measurement of a tail: one in the own's six renders of veach-mis once made a pilot leave it for 0.13x its
+// efficiency); otherwise the scene's own stays. The final round's measurements alone decide: the earlier ones
+// chose the challenger, and are lucky. The measurements are
 // planned to fill the budget on the engine's clock; the search stops once its time on the host's clock passes twice
 // the budget (each render's set-up on the host): the candidates left are not measured, and without a final
-// round the most efficient measured, on all its measurements, against the same rule (a final round cut short keeps
-// the scene's own). A budget that gives a half fewer than kMinimumPilotPaths measures nothing: the scene's own stays.
+// round (or with one pair of it) the most efficient measured, on all its measurements, against the same rule (the
+// scene's own stays where the final round stopped its challenger as too slow). A budget that gives a half fewer than kMinimumPilotPaths measures nothing: the scene's own stays.
+// A half of a candidate other than the scene's own that runs past 4x its share of the budget (or 4x the own's
+// slower half in its round, where a loaded machine slowed that) is stopped: too slow to win.
 //
 // The choice depends on timings, so two runs may choose differently where candidates are close: the record names
 // the strategy chosen, and giving its flags renders it again, bit for bit (headless, the choice is kept for the
@@ -111,15 +121,18 @@ struct PilotRow
     double relMseError = 0.0; // relMse's standard error (over the pixels' terms)
     double efficiency = 0.0; // 1 / (relMse x seconds)
     bool tooSlow = false; // a half ran past 4x its share of the budget and was stopped: efficiency 0
-    /// The final round's challenger: the same figures from its final round's measurements alone, which decide.
+    /// The final round's two (the scene's own and the challenger): the same figures from the final round's
+    /// measurements alone, which decide (pairedRelMse; relMSE as that of their mean).
     int finalMeasurements = 0;
     double finalRelMse = 0.0;
     double finalRelMseError = 0.0;
     double finalEfficiency = 0.0;
-    /// The scene's own, in the decision: its median measurement's relMSE over its measurements' count (as the
-    /// relMSE of their mean) and the efficiency from it.
-    double medianRelMse = 0.0;
-    double medianEfficiency = 0.0;
+    /// The challenger: its final relMSE over the own's, paired seed by seed, and the ratio's standard error; the same
+    /// without the pair where the own's error was largest (its error infinite where that leaves none).
+    double relMseRatio = 0.0;
+    double relMseRatioError = 0.0;
+    double trimmedRelMseRatio = 0.0;
+    double trimmedRelMseRatioError = 0.0;
     /// The final round's two where it had timing frames (AutoChoice::timingSpp): the least time per path of them on
     /// the engine's clock, which the decision's efficiencies (final and median) take instead of the halves' times.
     double timingMsPerPath = 0.0;
@@ -244,12 +257,38 @@ struct PilotError
 /// combined estimate; one candidate: by its own). Every image the same size; throws UsageError otherwise.
 std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& candidates);
 
-/// The same with each candidate's variance from `measured[i]` and the others' combined estimate from the means of
-/// `estimates` (the decision measures the final round's challenger by its final measurements, normalised by every
-/// measurement's estimate). Both lists of the same length and image size, no pointer null; throws UsageError
+/// The same from each candidate's estimate (PilotSums' over its measurements). Every one of the same image size, no
+/// pointer null; throws UsageError otherwise.
+std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> estimates);
+
+/// One seed's measurement of the final round's two candidates: each one's halves, and the denominator of their
+/// relMSE (an estimate from other seeds: per value, Image's order, the halves' size).
+struct PilotPair
+{
+    const PilotHalves* own = nullptr;
+    const PilotHalves* challenger = nullptr;
+    const std::vector<float>* denominator = nullptr;
+};
+
+/// The paired comparison of the final round. Per pair m and pixel p, x = sum over the channels of (a - b)^2 / 4 /
+/// (denominator^2 + epsilon), the variance of the halves' mean over the denominator (y the challenger's): the relMSEs
+/// are the x's and y's sums over (pairs^2 x values), as the relMSE of the mean of the pairs; the ratio R = sum y /
+/// sum x. Its variance by the delta method, pixels and seeds independent (a pair's two renders are not: they share
+/// the seed): the sum over pixels of k / (k - 1) times the spread over the k pairs of y - R x, over (sum x)^2; with
+/// one pair, the spread of y - R x over the pixels (which also holds how much the pixels' own ratios differ: the
+/// larger). Every halves' image and denominator the same size, no pointer null, at least one pair; throws UsageError
 /// otherwise.
-std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> measured,
-                                    std::span<const PilotEstimate* const> estimates);
+struct PairedRelMse
+{
+    double own = 0.0;
+    double ownError = 0.0;
+    double challenger = 0.0;
+    double challengerError = 0.0;
+    double ratio = 0.0; // challenger / own
+    double ratioError = 0.0;
+    std::vector<double> ownPerPair; // each pair's x summed over the pixels (the own's worst pair: the largest)
+};
+PairedRelMse pairedRelMse(std::span<const PilotPair> pairs);
 
 /// A candidate as the decision reads it: its efficiency 1 / (relMSE s) and its relMSE's relative standard error.
 struct PilotScore
@@ -258,11 +297,14 @@ struct PilotScore
     double relativeError = 0.0;
 };
 
-/// Whether the pilot leaves the scene's own strategy for `challenger`: where the log of their efficiencies' ratio
-/// is more than twice its standard error (the relMSEs' relative errors) and the lead more than 10 % (the times'
+/// Whether the pilot leaves the scene's own strategy for a challenger whose efficiency is `lead` times the own's:
+/// where log(lead) is more than twice its standard error `logLeadError` and the lead more than 10 % (the times'
 /// noise, which that error leaves out). Within that, a tie or noise, the scene's own stays: with one standard error,
 /// and the challenger's lucky measurements counted, the best of 12 candidates beat the scene's own by noise alone
 /// (uniform light selection on an H100's cornell-box-lights, 0.85x the BVH's efficiency); with its measurements
 /// fresh, a heavy tail they did not meet (area sampling on veach-mis, 0.2x the own's efficiency).
+bool pilotSwitches(double lead, double logLeadError);
+/// The same for two candidates measured independently: the lead their efficiencies' ratio, its error the hypot of
+/// their relative errors.
 bool pilotSwitches(const PilotScore& own, const PilotScore& challenger);
 } // namespace rt::compare

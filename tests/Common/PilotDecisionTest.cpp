@@ -1,17 +1,19 @@
 // --strategy auto's decision (Compare/AutoStrategy.h) on an engine whose candidates' noise and cost are known:
 // every pixel channel of a sample is R + sigma N(0, 1), sigma set by the light sampler and selection, and each path
-// costs the same device time, so a candidate's efficiency is 1 / sigma^2 up to a constant. No timing of the host
-// decides anything (the device times are the fake's), so the pilots are deterministic for their seeds.
+// costs the same device time, so a candidate's efficiency is 1 / sigma^2 up to a constant. Two strategies' samples
+// of a seed correlate by 0.9 (the pilot renders a round's candidates with its seeds; a real scene's share their
+// camera rays and BSDF directions). No timing of the host decides anything (the device times are the fake's), so the
+// pilots are deterministic for their seeds.
 //
 // Equal candidates: each pilot is a search over 12 candidates whose luckiest draws look better than the scene's own;
-// a switch is a false alarm. The final round's challenger must lead on its fresh measurements by twice the ratio's
-// standard error and 10 % (pilotSwitches): none of these 40 pilots switched (1 of 40 with the variance from the mean
-// of the A halves against the B halves', one degree of freedom where each measurement's halves now give one each);
-// the test allows 4. (With one standard error, 8 of 40 switched then and the test failed.)
-// A candidate twice as efficient (sigma / sqrt 2): every pilot must take it; 1.15x was taken by 40 of 40, 1.1x by 14:
-// the pilot's noise at a CPU's size hides part of a 10 % lead.
+// a switch is a false alarm. The final round's challenger must lead on its fresh measurements, paired with the
+// own's seed by seed, by twice the ratio's standard error and 10 % (pilotSwitches): none of these 40 pilots switched;
+// the test allows 4. (With independent seeds and one standard error, 8 of 40 switched and the test failed.)
+// A candidate twice as efficient (sigma / sqrt 2): every pilot must take it; 1.15x was taken by 40 of 40, 1.1x by 18
+// (14 with independent seeds): the pilot's noise at a CPU's size hides part of a 10 % lead; 1.05x by none.
 // A 5 % lead where a GPU-sized pilot resolves it: never taken (without the 10 %, 3 of 6 took it and the test failed).
-// Fireflies in the scene's own measurements: at most 3 of 20 pilots switch (by the own's mean alone, 11 of 20).
+// Fireflies in the scene's own measurements: at most 3 of 20 pilots switch (2 do; 5 without the rule that the lead
+// must hold without the own's worst pair; 11 of 20 by the own's mean with independent seeds).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -83,12 +85,18 @@ public:
     BatchResult traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control) override
     {
         ++m_frames.back().batches;
-        // The sum of `count` samples of R + sigma N(0, 1) is count R + sigma sqrt(count) N(0, 1).
+        // The sum of `count` samples of R + sigma N(0, 1) is count R + sigma sqrt(count) N(0, 1). Of N, the part
+        // kSharedNoise is the seed's whatever the strategy (its camera rays and BSDF directions), the rest the
+        // strategy's own.
         std::mt19937_64 rng(std::uint64_t(m_settings.seed) * 0x9E3779B97F4A7C15ull + firstSample);
+        std::mt19937_64 own(rng() ^ (std::uint64_t(m_settings.estimator) << 16 |
+                                     std::uint64_t(m_settings.lightSampler) << 8 |
+                                     std::uint64_t(m_settings.lightSelection)) * 0xD1B54A32D192ED03ull);
         std::normal_distribution<double> normal;
         const double sigma = m_sigma(m_settings) * std::sqrt(double(count));
+        const double ownNoise = std::sqrt(1.0 - kSharedNoise * kSharedNoise);
         for (std::size_t k = 0; k < m_sums.size(); ++k)
-            m_sums[k] += double(count) * radiance(k) + sigma * normal(rng);
+            m_sums[k] += double(count) * radiance(k) + sigma * (kSharedNoise * normal(rng) + ownNoise * normal(own));
         if (m_fireflies.chance && firstSample == 0 &&
             std::uniform_real_distribution<double>()(rng) < m_fireflies.chance(m_settings))
             m_sums[std::uniform_int_distribution<std::size_t>(0, m_sums.size() - 1)(rng)] += m_fireflies.value;
@@ -114,6 +122,8 @@ public:
 
 private:
     static double radiance(std::size_t k) { return 0.2 + 0.1 * double(k % 7); }
+    /// The correlation of two strategies' samples of a seed (the pilot renders a round's candidates with its seeds).
+    static constexpr double kSharedNoise = 0.9;
 
     std::function<double(const RenderSettings&)> m_sigma;
     std::uint64_t m_concurrentPaths;
@@ -218,12 +228,11 @@ TEST(PilotDecision, EqualCandidatesKeepTheScenesOwn)
 TEST(PilotDecision, AFireflyInTheOwnsMeasurementsDoesNotPushThePilotAway)
 {
     // Every candidate equal, but the scene's own meets a firefly (one sample of 10^5 where pixels are 0.2-0.8) in
-    // one render of 16: a pilot renders it 12 times (its halves in six measurements), so half the pilots see one,
-    // and by the mean of its measurements its relMSE is then the firefly's, 10^4 times the others'. Its median
-    // measurement is clean unless three of the six met one (3 % of pilots). A pilot cannot measure
-    // such a tail from a few renders: the own is judged by its median measurement (or its mean, the better), the
-    // challenger by its mean. (By the own's mean alone, veach-mis's pilots on 2 cores left the own in 7 of 12 seeds,
-    // once for 0.13x its efficiency.)
+    // one render of 16: its final round renders it 6 times (its halves in three measurements), so a third of the
+    // pilots see one there, and the own's relMSE over those three is then the firefly's, 10^4 times the challenger's.
+    // A pilot cannot measure such a tail from a few renders: the lead must also hold on the pairs left without the
+    // own's worst, which are clean unless two of the three met one. (By the own's mean alone, veach-mis's pilots on 2
+    // cores left the own in 7 of 12 seeds, once for 0.13x its efficiency.)
     const Fireflies ownFireflies{[](const RenderSettings& s) {
                                      return s.lightSampler == LightSampler::Projected &&
                                                     s.lightSelection == LightSelection::Bvh
