@@ -884,6 +884,12 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "    docs/results/cpu-auto-strategy-4s-1129f multi 128 4000 2 16384 cornell-box-lights glossy-cornell \\\n"
                   "    triangle-lights veach-mis rect-light-closeup sphere-light-closeup many-lights rtrol-cornell-box",
                   "## 41.", "2026-11-29"),
+                 ("cpu-auto-strategy-4s-1129g", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                  "128 px wide, each strategy for 4 s, 2 seeds, 4 recheck seeds: the pilot of common seeds "
+                  "(e37b299): cornell-box-lights 1.00x the best (0.86x before), glossy-cornell 0.88x, veach-mis its "
+                  "own every time (notebook §44)",
+                  "RECHECK_SEEDS=4 bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-4s-1129g \\\n"
+                  "    multi 128 4000 2 16384 glossy-cornell cornell-box-lights veach-mis", "## 44.", "2026-11-29"),
                  ("h200-auto-strategy-8s-1129", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 8 s, 1 seed for the full comparison, 4 recheck seeds: the pilot "
                   "of c2dc4a3 (its switch at two standard errors of the error per pixel; 320beb0's build) on the "
@@ -892,6 +898,19 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=triangle-lights \\\n"
                   "    bash tests/Bench/device_run.sh auto  # and SCENES=rtrol-cornell-box, cornell-box-lights, glossy-cornell",
                   "## 43.", "2026-11-29"),
+                 ("h200-auto-strategy-8s-1129b", "NVIDIA H200, driver 580",
+                  "the same on glossy-cornell with the pilot of common seeds (9e17803: a round's candidates share "
+                  "its seeds, the final round paired seed by seed): every search stopped by its guard before the "
+                  "final round (scoring 0.35 s of its 0.8 s), the leader then from candidates of one measurement "
+                  "(notebook §44)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=glossy-cornell \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 44.", "2026-11-29"),
+                 ("h200-auto-strategy-8s-1129c", "NVIDIA H200, driver 580",
+                  "the same with e37b299 (the scoring on the host's cores, the leader among the most measured): "
+                  "glossy-cornell 0.84x the best, cornell-box-lights 0.76x, below its own (0.91x before): the paired "
+                  "ratio of its 2-spp halves 1.15 where the render's is 1.41 (notebook §44)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=glossy-cornell \\\n"
+                  "    bash tests/Bench/device_run.sh auto  # and SCENES=cornell-box-lights", "## 44.", "2026-11-29"),
                  ("h200-auto-strategy-10s-1129d", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 10 s, 1 seed for the full comparison, 4 recheck seeds: the light "
                   "scenes without a GPU row of the current pilot, with 8cc48c9's build (the pilot's measurements "
