@@ -208,7 +208,7 @@ PilotEstimate PilotEstimate::of(const PilotHalves& halves)
     return e;
 }
 
-void PilotSums::add(const Image& imageA, const Image& imageB, double measurementMs)
+void PilotSums::add(const Image& imageA, const Image& imageB)
 {
     if (count > 0 && (imageA.width() != width || imageA.height() != height))
         throw UsageError(fmt::format("pilot measurements differ in size ({}x{} and {}x{})", width, height,
@@ -216,13 +216,12 @@ void PilotSums::add(const Image& imageA, const Image& imageB, double measurement
     if (imageB.width() != imageA.width() || imageB.height() != imageA.height())
         throw UsageError(fmt::format("a pilot measurement's halves differ in size ({}x{} and {}x{})", imageA.width(),
                                      imageA.height(), imageB.width(), imageB.height()));
-    leastMs = count == 0 ? measurementMs : std::min(leastMs, measurementMs);
     current = false;
     if (count++ == 0)
     {
         width = imageA.width();
         height = imageA.height();
-        sum.assign(imageA.pixelCount() * 3, 0.0f);
+        sum.assign(imageA.pixelCount() * 3, 0.0);
         u.assign(sum.size(), 0.0);
         pixelUSquares.assign(imageA.pixelCount(), 0.0);
     }
@@ -234,7 +233,7 @@ void PilotSums::add(const Image& imageA, const Image& imageB, double measurement
         for (std::size_t k = 3 * p; k < 3 * p + 3; ++k)
         {
             const double d = double(a[k]) - double(b[k]), variance = 0.5 * d * d;
-            sum[k] += a[k] + b[k];
+            sum[k] += double(a[k]) + double(b[k]);
             u[k] += variance;
             pixelU += variance;
         }
@@ -255,7 +254,7 @@ const PilotEstimate& PilotSums::estimate()
     estimated.deviation.resize(sum.size());
     for (std::size_t i = 0; i < sum.size(); ++i)
     {
-        estimated.mean[i] = float(double(sum[i]) / halves);
+        estimated.mean[i] = float(sum[i] / halves);
         // The mean of the k u's over the 2k halves.
         estimated.deviation[i] = deviationInFloat(std::sqrt(u[i] / k / halves));
     }
@@ -440,6 +439,8 @@ PairedRelMse pairedRelMse(std::span<const PilotPair> pairs)
     const int width = pairs.front().own ? pairs.front().own->a.width() : 0;
     const int height = pairs.front().own ? pairs.front().own->a.height() : 0;
     const std::size_t pixels = std::size_t(width) * std::size_t(height), values = 3 * pixels;
+    if (pixels == 0)
+        throw UsageError("pairedRelMse: images of no pixel");
     for (const PilotPair& pair : pairs)
     {
         if (!pair.own || !pair.challenger || !pair.denominator)
@@ -645,11 +646,33 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         renderSpp = spp >= 1.0 ? static_cast<int>(std::min(spp, double(kMaxSpp))) : 1; // NaN: 1
     }
     const int sppCap = std::max(1, renderSpp / 2);
+    // Where the engine stays busy on fewer pixels at more spp (RenderEngine::busyPixels: a GPU's wavefront), the
+    // halves take kPilotSpp spp over fewer pixels, never fewer than 1024 or the engine's busy pixels at that spp for
+    // any candidate: a candidate's error per path over the own's grows with the spp (Sobol's stratification gains
+    // more for some samplers: solid-angle sampling with uniform selection over the own on cornell-box-lights 1.26 at
+    // 2 spp, 1.37 from 128 on), and an H200's halves of 512 x 512 at 2 spp paired it at 1.15 where its render is
+    // 1.41 (notebook §44). Elsewhere (a CPU's 1024 pixels, a GPU's megakernel) the most pixels first, as before.
+    constexpr int kPilotSpp = 16;
+    auto busyPixels = [&](int spp) {
+        RenderSettings s = request.settings;
+        s.width = large.width;
+        s.spp = spp;
+        std::uint64_t most = 0;
+        for (const Strategy& strategy : grid)
+            most = std::max(most, engine.busyPixels(strategy.applyTo(s)));
+        return std::max(1024.0, double(most));
+    };
+    const int pilotSpp = std::min(kPilotSpp, sppCap);
+    const double floorPixels = std::min(pixelsOf(large), busyPixels(pilotSpp));
     auto planHalves = [&](double budgetMs, double hostBudgetMs) {
         const double shareMs = std::min(budgetMs / double(measurements) / 2.0,
                                         hostBudgetMs / double(measurements) / 2.0 - choice.hostExtraMs);
         RenderSettings half = request.settings;
-        const double pixels = std::min(pixelsOf(large), cost.pixelsFor(shareMs, 1));
+        // Never more pixels than the share holds at 1 spp.
+        const double pixels = std::min({floorPixels < pixelsOf(large)
+                                            ? std::max(cost.pixelsFor(shareMs, pilotSpp), floorPixels)
+                                            : pixelsOf(large),
+                                        pixelsOf(large), cost.pixelsFor(shareMs, 1)});
         half.width = widthFor(request.settings, std::max(pixels, 1.0));
         half.spp = std::clamp(static_cast<int>(cost.sppFor(shareMs, pixelsOf(half))), 1, sppCap);
         return half;
@@ -822,7 +845,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         const double ms = 2.0 * std::max(fasterMs - choice.overheadMs, 0.1 * fasterMs);
         c.row.ms += ms;
         ++c.row.measurements;
-        c.all.add(a.image, b.image, ms);
+        c.all.add(a.image, b.image);
         if (finalRound)
         {
             c.finalLeastMs = c.finalLeastMs > 0.0 ? std::min(c.finalLeastMs, ms) : ms;
@@ -1006,9 +1029,9 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             std::vector<PilotPair> trimmed = pairs;
             trimmed.erase(trimmed.begin() + (std::max_element(paired.ownPerPair.begin(), paired.ownPerPair.end()) -
                                              paired.ownPerPair.begin()));
-            const PairedRelMse rest = trimmed.empty() ? PairedRelMse{} : pairedRelMse(trimmed);
+            const PairedRelMse rest = pairedRelMse(trimmed);
             row.trimmedRelMseRatio = rest.ratio;
-            row.trimmedRelMseRatioError = trimmed.empty() ? std::numeric_limits<double>::infinity() : rest.ratioError;
+            row.trimmedRelMseRatioError = rest.ratioError;
             auto switches = [&](double ratio, double error) {
                 return ratio > 0.0 && rivalMs > 0.0 && pilotSwitches(ownMs / (ratio * rivalMs), error / ratio);
             };
@@ -1050,7 +1073,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
 
 bool pilotSwitches(double lead, double logLeadError)
 {
-    if (!(lead > 0.0))
+    if (!(lead > 0.0) || !std::isfinite(logLeadError))
         return false;
     // Two standard errors, though the challenger's final measurements are fresh: a heavy tail its few renders did not
     // meet is in no standard error, and its measured lead is then high more often than low. At one, CPU pilots of

@@ -43,8 +43,11 @@
 // chose the challenger, and are lucky. The measurements are
 // planned to fill the budget on the engine's clock; the search stops once its time on the host's clock passes twice
 // the budget (each render's set-up on the host): the candidates left are not measured, and without a final
-// round (or with one pair of it) the most efficient measured, on all its measurements, against the same rule (the
-// scene's own stays where the final round stopped its challenger as too slow). A budget that gives a half fewer than kMinimumPilotPaths measures nothing: the scene's own stays.
+// round (or with one pair of it) the most efficient of the candidates measured most often, on all their
+// measurements, against the same rule (the scene's own stays where the final round stopped its challenger as too
+// slow). A budget that gives a half fewer than kMinimumPilotPaths measures nothing: the scene's own stays.
+// The halves: about 1024 pixels or the engine's concurrent paths (above), and where the engine stays busy on fewer
+// pixels at more spp (RenderEngine::busyPixels), 16 spp over fewer pixels.
 // A half of a candidate other than the scene's own that runs past 4x its share of the budget (or 4x the own's
 // slower half in its round, where a loaded machine slowed that) is stopped: too slow to win.
 //
@@ -128,13 +131,13 @@ struct PilotRow
     double finalRelMseError = 0.0;
     double finalEfficiency = 0.0;
     /// The challenger: its final relMSE over the own's, paired seed by seed, and the ratio's standard error; the same
-    /// without the pair where the own's error was largest (its error infinite where that leaves none).
+    /// without the pair where the own's error was largest (with two pairs, the one left's error from its pixels).
     double relMseRatio = 0.0;
     double relMseRatioError = 0.0;
     double trimmedRelMseRatio = 0.0;
     double trimmedRelMseRatioError = 0.0;
     /// The final round's two where it had timing frames (AutoChoice::timingSpp): the least time per path of them on
-    /// the engine's clock, which the decision's efficiencies (final and median) take instead of the halves' times.
+    /// the engine's clock, which the decision's final efficiencies take instead of the halves' times.
     double timingMsPerPath = 0.0;
 };
 
@@ -225,22 +228,21 @@ struct PilotEstimate
 };
 
 /// A candidate's measurements of the same size summed as they come: their halves, each measurement's u (in double: a
-/// firefly's spans float's range) and the square of each pixel's summed u (PilotEstimate), and their least time.
+/// firefly's spans float's range, and so do the halves' sums) and the square of each pixel's summed u
+/// (PilotEstimate).
 class PilotSums
 {
 public:
-    /// One measurement: its halves (the same size as every earlier one's; throws UsageError otherwise) and its time.
-    void add(const Image& a, const Image& b, double ms);
+    /// One measurement: its halves (the same size as every earlier one's; throws UsageError otherwise).
+    void add(const Image& a, const Image& b);
     /// The estimate from every measurement added (at least one), kept until the next add: the search scores every
     /// candidate after each round, most of them unchanged.
     const PilotEstimate& estimate();
 
-    double leastMs = 0.0; // the least of its measurements' times
     int count = 0; // measurements
 
 private:
-    std::vector<float> sum;
-    std::vector<double> u, pixelUSquares;
+    std::vector<double> sum, u, pixelUSquares;
     int width = 0;
     int height = 0;
     PilotEstimate estimated;

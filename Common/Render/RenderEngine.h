@@ -73,6 +73,16 @@ public:
     /// time per path says little about a larger frame's (--strategy auto's pilot keeps at least this many pixels, and
     /// times its final round on frames of up to 16x this many paths where its measurements hold fewer).
     virtual std::uint64_t concurrentPaths() const { return 1024; }
+    /// The fewest pixels a frame of `settings` (its spp; the paths it stands for: setRepresentedPaths) needs to keep
+    /// the device busy: concurrentPaths() where a thread traces its pixel's samples in turn (the default; the GPU's
+    /// megakernel), concurrentPaths() / spp where a frame's samples run at once (the GPU's wavefront, whose waves
+    /// hold pixels x samples paths). --strategy auto's pilot measures at more spp over fewer pixels where it can: a
+    /// candidate's error per path over another's changes with the spp (notebook §44).
+    virtual std::uint64_t busyPixels(const RenderSettings& settings) const
+    {
+        (void)settings;
+        return concurrentPaths();
+    }
 
     /// Starts a frame of `settings` (validated by the caller) on the current scene: an accumulator of the
     /// settings' size, cleared, and zero tallies. Throws UsageError before setScene, DeviceError naming the

@@ -429,6 +429,22 @@ std::uint64_t GpuEngine::concurrentPaths() const
     return m_impl->device().properties().type == vk::DeviceType::Cpu ? std::uint64_t(4096) : std::uint64_t(1) << 18;
 }
 
+std::uint64_t GpuEngine::busyPixels(const RenderSettings& settings) const
+{
+    const Impl& e = *m_impl;
+    if (!e.tracer.scene() || settings.estimator == Estimator::RestirDi || e.recordCost)
+        return concurrentPaths();
+    const auto width = static_cast<std::uint32_t>(settings.width);
+    const auto height = static_cast<std::uint32_t>(settings.height());
+    const std::uint64_t spp = static_cast<std::uint64_t>(std::max(settings.trueSpp(), 1));
+    const shader::RenderUniforms uniforms =
+        e.tracer.uniforms(frameCamera(*e.tracer.scene()), settings, {width, height});
+    if (e.tracer.integratorFor(uniforms, representedPaths(std::uint64_t(width) * height * spp)) !=
+        GpuIntegrator::Wavefront)
+        return concurrentPaths();
+    return (concurrentPaths() + spp - 1) / spp;
+}
+
 double GpuEngine::setScene(const Scene& scene)
 {
     m_impl->descriptors = {};

@@ -75,6 +75,8 @@ public:
     std::uint64_t pathsPerBatch() const override;
     /// 2^18 on a GPU (an H100 holds 132 SMs x 2048 threads), 4096 on a CPU device (lavapipe).
     std::uint64_t concurrentPaths() const override;
+    /// concurrentPaths() / spp where `settings` run on the wavefront, else concurrentPaths().
+    std::uint64_t busyPixels(const RenderSettings& settings) const override;
     /// Throws rt::UsageError when no scene is set, rt::DeviceError naming the limit when the image does not fit
     /// the device (dimension, memory, invocations per dispatch).
     void beginFrame(const RenderSettings& settings) override;
