@@ -911,6 +911,13 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "ratio of its 2-spp halves 1.15 where the render's is 1.41 (notebook §44)",
                   "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=glossy-cornell \\\n"
                   "    bash tests/Bench/device_run.sh auto  # and SCENES=cornell-box-lights", "## 44.", "2026-11-29"),
+                 ("h200-auto-strategy-6s-1129e", "NVIDIA H200, driver 580",
+                  "cornell-box-lights, each strategy for 6 s, 3 recheck seeds (what the device's last minutes held), "
+                  "96c09d7: the wavefront's pilot halves at 14 spp over 128 x 128 (2 spp over 512 x 512 before): "
+                  "solid-angle uniform paired at 1.26 (the render's 1.41), the own kept where the final round ran; "
+                  "2 of 3 searches cut short by the guard chose by the leader rule (notebook §44)",
+                  "RECHECK_SEEDS=3 HEADLESS_RUNS= MS=6000 SEEDS=1 REF_SPP=32768 SCENES=cornell-box-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 44.", "2026-11-29"),
                  ("h200-auto-strategy-10s-1129d", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 10 s, 1 seed for the full comparison, 4 recheck seeds: the light "
                   "scenes without a GPU row of the current pilot, with 8cc48c9's build (the pilot's measurements "
