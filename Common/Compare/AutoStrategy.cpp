@@ -647,8 +647,9 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     }
     const int sppCap = std::max(1, renderSpp / 2);
     // Where the engine stays busy on fewer pixels at more spp (RenderEngine::busyPixels: a GPU's wavefront), the
-    // halves take kPilotSpp spp over fewer pixels, never fewer than 1024 or the engine's busy pixels at that spp for
-    // any candidate: a candidate's error per path over the own's grows with the spp (Sobol's stratification gains
+    // halves take the pixels their share holds at kPilotSpp spp (or the request's half, if fewer), never fewer than
+    // 1024 or the engine's busy pixels at that spp for any candidate (where the share cannot fill those at that spp,
+    // they take fewer spp, and the device is then partly idle, as the probe's pixels at 1 spp would leave it too): a candidate's error per path over the own's grows with the spp (Sobol's stratification gains
     // more for some samplers: solid-angle sampling with uniform selection over the own on cornell-box-lights 1.26 at
     // 2 spp, 1.37 from 128 on), and an H200's halves of 512 x 512 at 2 spp paired it at 1.15 where its render is
     // 1.41 (notebook §44). Elsewhere (a CPU's 1024 pixels, a GPU's megakernel) the most pixels first, as before.
@@ -663,16 +664,18 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         return std::max(1024.0, double(most));
     };
     const int pilotSpp = std::min(kPilotSpp, sppCap);
-    const double floorPixels = std::min(pixelsOf(large), busyPixels(pilotSpp));
+    const double floorPixels = busyPixels(pilotSpp);
+    const bool bySpp = floorPixels < pilotPixels; // the engine's own answer, not the probe's rounded width
     auto planHalves = [&](double budgetMs, double hostBudgetMs) {
-        const double shareMs = std::min(budgetMs / double(measurements) / 2.0,
-                                        hostBudgetMs / double(measurements) / 2.0 - choice.hostExtraMs);
+        double shareMs = std::min(budgetMs / double(measurements) / 2.0,
+                                  hostBudgetMs / double(measurements) / 2.0 - choice.hostExtraMs);
+        if (!(shareMs > 0.0))
+            shareMs = 0.0; // NaN too: nothing fits, and the plan is too short to measure
         RenderSettings half = request.settings;
         // Never more pixels than the share holds at 1 spp.
-        const double pixels = std::min({floorPixels < pixelsOf(large)
-                                            ? std::max(cost.pixelsFor(shareMs, pilotSpp), floorPixels)
-                                            : pixelsOf(large),
-                                        pixelsOf(large), cost.pixelsFor(shareMs, 1)});
+        const double pixels =
+            std::min({bySpp ? std::max(cost.pixelsFor(shareMs, pilotSpp), floorPixels) : pixelsOf(large),
+                      pixelsOf(large), cost.pixelsFor(shareMs, 1)});
         half.width = widthFor(request.settings, std::max(pixels, 1.0));
         half.spp = std::clamp(static_cast<int>(cost.sppFor(shareMs, pixelsOf(half))), 1, sppCap);
         return half;

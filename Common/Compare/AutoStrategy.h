@@ -47,7 +47,8 @@
 // measurements, against the same rule (the scene's own stays where the final round stopped its challenger as too
 // slow). A budget that gives a half fewer than kMinimumPilotPaths measures nothing: the scene's own stays.
 // The halves: about 1024 pixels or the engine's concurrent paths (above), and where the engine stays busy on fewer
-// pixels at more spp (RenderEngine::busyPixels), 16 spp over fewer pixels.
+// pixels at more spp (RenderEngine::busyPixels), the pixels their share holds at 16 spp (at most the render's half),
+// never fewer than 1024 or the engine's busy pixels at 16 spp.
 // A half of a candidate other than the scene's own that runs past 4x its share of the budget (or 4x the own's
 // slower half in its round, where a loaded machine slowed that) is stopped: too slow to win.
 //

@@ -560,10 +560,11 @@ TEST(PilotDecision, TimingFramesShowTheCostASmallFrameHides)
 
 TEST(PilotDecision, AnEngineBusyOnFewerPixelsIsPilotedAtMoreSpp)
 {
-    // A GPU-like engine (2^18 paths at once, 25 ns a path: a 40 s render's pilot of 37 ms a half, 1.5 M paths) whose
-    // frames fill the device by pixels x spp, as an H200's wavefront does: the halves take 16 spp over about 92,000
-    // pixels, where by pixels alone they take all of the render's 160,000 at 7. A candidate's error per path over
-    // the own's changes with the spp (notebook §44): the render's is nearer at 16.
+    // A GPU-like engine (2^18 paths at once, 25 ns a path: a 40 s render's pilot of about 28 ms a half beside its
+    // timing frames) whose frames fill the device by pixels x spp, as an H200's wavefront does: the halves take 16
+    // spp over about 70,000 pixels (15 where the width rounds up), where by pixels alone they take all of the
+    // render's 160,000 at 7. A candidate's error per path over the own's changes with the spp (notebook §44): the
+    // render's is nearer at 16.
     const Scene scene = makeScene("cornell-box-lights");
     for (const bool byPaths : {false, true})
     {
@@ -573,10 +574,15 @@ TEST(PilotDecision, AnEngineBusyOnFewerPixelsIsPilotedAtMoreSpp)
         RenderRequest request = pilotRequest(scene);
         request.settings.seed = 900;
         const AutoChoice choice = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 40.0});
+        EXPECT_FALSE(choice.tooShort);
+        // The probe renders its first two frames twice.
+        const double probeMs = 2.0 * choice.probes[0].ms + 2.0 * choice.probes[1].ms + choice.probes[2].ms;
+        EXPECT_LE(choice.pilotMs, 1.1 * choice.budgetSeconds * 1e3 + probeMs) << "the pilot's renders beyond the probe";
         const double pixels = double(choice.width) * choice.height;
         if (byPaths)
         {
-            EXPECT_EQ(choice.spp, 2 * 16) << choice.width << " x " << choice.height;
+            EXPECT_GE(choice.spp, 2 * 14) << choice.width << " x " << choice.height;
+            EXPECT_LE(choice.spp, 2 * 16) << choice.width << " x " << choice.height;
             EXPECT_GE(pixels, 16384.0);
             EXPECT_LT(pixels, 150000.0);
         }
