@@ -765,8 +765,12 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     {
         PilotRow row;
         PilotSums all;
-        std::vector<std::pair<std::uint32_t, PilotHalves>> finals;
+        /// Every measurement's halves by their slot, those of the final round apart; the earlier ones dropped once
+        /// the halving leaves the candidate out (their slots kept: they share seeds with the others').
+        std::vector<std::pair<std::uint32_t, PilotHalves>> finals, earlier;
+        std::vector<std::uint32_t> slots;
         double finalLeastMs = 0.0; // the least of its final round's measurements' time
+        double leastMs = 0.0; // of all its measurements
     };
     const double halfPaths = pixelsOf(pilot) * double(pilot.spp);
     std::vector<Candidate> runs;
@@ -849,11 +853,11 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         c.row.ms += ms;
         ++c.row.measurements;
         c.all.add(a.image, b.image);
+        c.leastMs = c.leastMs > 0.0 ? std::min(c.leastMs, ms) : ms;
+        c.slots.push_back(slot);
         if (finalRound)
-        {
             c.finalLeastMs = c.finalLeastMs > 0.0 ? std::min(c.finalLeastMs, ms) : ms;
-            c.finals.emplace_back(slot, PilotHalves{std::move(a.image), std::move(b.image)});
-        }
+        (finalRound ? c.finals : c.earlier).emplace_back(slot, PilotHalves{std::move(a.image), std::move(b.image)});
         return true;
     };
     // Every candidate measured: their halves' means over all their measurements, in runs' order.
@@ -936,6 +940,9 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
                   [&](std::size_t x, std::size_t y) { return runs[x].row.efficiency > runs[y].row.efficiency; });
         next.resize(std::min(next.size(), keep - 1));
         next.insert(next.begin(), 0);
+        for (const std::size_t i : active)
+            if (std::find(next.begin(), next.end(), i) == next.end())
+                runs[i].earlier = {};
         active = std::move(next);
         if (active.size() <= 1)
             break;
@@ -949,125 +956,146 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         return choice;
     }
     rescore();
-    // The decision: the final round's challenger against the scene's own, on their final measurements paired by
-    // seed. The challenger's earlier measurements chose it for that round, so they are the luckiest of their round
-    // (the winner's curse): on the CPU's cornell-box-lights, whose 13 candidates are within 10 % of each other,
-    // deciding on them switched with 3 seeds of 3, to three different strategies.
+    // The decision: a challenger against the scene's own, on their measurements paired by seed. Where the final round
+    // ran, its challenger on its final measurements alone: its earlier ones chose it for that round, so they are the
+    // luckiest of their round (the winner's curse: on the CPU's cornell-box-lights, whose 13 candidates are within
+    // 10 % of each other, deciding on them switched with 3 seeds of 3, to three different strategies).
     const std::vector<Candidate*> measuredRuns = scored();
     Candidate& ownRun = runs.front();
-    const auto challenger = std::find_if(measuredRuns.begin(), measuredRuns.end(), [&](const Candidate* c) {
-        return c != &ownRun && !c->finals.empty();
-    });
-    // Whether two pairs or more decided: a final round the host's clock cut to one (lavapipe beside other work:
-    // 48 s of a pilot held to 20 s, nee-mis 4x as efficient as the own) decides as a search without one.
-    bool decidedByPairs = false;
-    if (challenger != measuredRuns.end() && measuredRuns.front() == &ownRun && !ownRun.finals.empty())
-    {
-        Candidate& rival = **challenger;
-        // Each pair's denominator: every candidate's estimate without that seed's measurement, weighted by its
-        // inverse relMSE (its measurements' count, less the one left out, over one measurement's relMSE).
-        const std::size_t values = ownRun.all.estimate().mean.size();
-        auto otherSeeds = [&](std::uint32_t leftOut) {
-            std::vector<double> total(values, 0.0);
-            double weight = 0.0;
-            for (Candidate* c : measuredRuns)
-            {
-                const PilotEstimate& e = c->all.estimate();
-                const auto left = std::find_if(c->finals.begin(), c->finals.end(),
-                                               [&](const auto& f) { return f.first == leftOut; });
-                const double k = double(c->all.count), kept = left != c->finals.end() ? k - 1.0 : k;
-                if (kept <= 0.0)
-                    continue;
-                const double w = kept / k / std::max(c->row.relMse, 1e-300);
-                weight += w;
-                if (left == c->finals.end())
-                    for (std::size_t v = 0; v < values; ++v)
-                        total[v] += w * double(e.mean[v]);
-                else
-                {
-                    const float* a = &left->second.a.data()->x;
-                    const float* b = &left->second.b.data()->x;
-                    for (std::size_t v = 0; v < values; ++v)
-                        total[v] += w * (2.0 * k * double(e.mean[v]) - double(a[v]) - double(b[v])) / (2.0 * kept);
-                }
-            }
-            std::vector<float> d(values, 0.0f);
-            if (weight > 0.0)
+    const std::size_t values = ownRun.all.estimate().mean.size();
+    auto halvesAt = [](Candidate& c, std::uint32_t at) -> const PilotHalves* {
+        for (const auto* list : {&c.finals, &c.earlier})
+            for (const auto& [s, halves] : *list)
+                if (s == at)
+                    return &halves;
+        return nullptr;
+    };
+    // A pair's denominator: every candidate's estimate without that seed's measurement (a candidate left out of the
+    // halving whose halves of that seed are gone: not at all), weighted by its inverse relMSE (its measurements'
+    // count, less the one left out, over one measurement's relMSE).
+    auto otherSeeds = [&](std::uint32_t leftOut) {
+        std::vector<double> total(values, 0.0);
+        double weight = 0.0;
+        for (Candidate* c : measuredRuns)
+        {
+            const PilotHalves* left = halvesAt(*c, leftOut);
+            if (!left && std::find(c->slots.begin(), c->slots.end(), leftOut) != c->slots.end())
+                continue;
+            const PilotEstimate& e = c->all.estimate();
+            const double k = double(c->all.count), kept = left ? k - 1.0 : k;
+            if (kept <= 0.0)
+                continue;
+            const double w = kept / k / std::max(c->row.relMse, 1e-300);
+            weight += w;
+            if (!left)
                 for (std::size_t v = 0; v < values; ++v)
-                    d[v] = float(total[v] / weight);
-            return d;
-        };
+                    total[v] += w * double(e.mean[v]);
+            else
+            {
+                const float* a = &left->a.data()->x;
+                const float* b = &left->b.data()->x;
+                for (std::size_t v = 0; v < values; ++v)
+                    total[v] += w * (2.0 * k * double(e.mean[v]) - double(a[v]) - double(b[v])) / (2.0 * kept);
+            }
+        }
+        std::vector<float> d(values, 0.0f);
+        if (weight > 0.0)
+            for (std::size_t v = 0; v < values; ++v)
+                d[v] = float(total[v] / weight);
+        return d;
+    };
+    // `rival` against the own over the seeds both measured (the final round's alone, where `finalOnly`), each at
+    // its measurement's time (ownMs, rivalMs): false where they share no seed. The switch needs the lead on all the
+    // pairs and, where there are two or more, without the own's worst: a firefly in the own's renders is one pair's,
+    // and a lead that stands on it alone is no measurement of the own's tail.
+    auto decidePaired = [&](Candidate& rival, bool finalOnly, double ownMs, double rivalMs) {
         std::vector<std::vector<float>> denominators;
         std::vector<PilotPair> pairs;
-        denominators.reserve(ownRun.finals.size());
-        for (const auto& [ownSlot, halves] : ownRun.finals)
-            for (const auto& [rivalSlot, rivalHalves] : rival.finals)
-                if (rivalSlot == ownSlot)
-                    pairs.push_back({&halves, &rivalHalves, &denominators.emplace_back(otherSeeds(ownSlot))});
-        // A measurement's time: from the timing frames where the final round had them, else the least of the final
-        // round's measurements of each (they take turns; a stall only adds time: on 2 cores one measurement of the
-        // own's 6 ms renders took 7.9 ms where its others took 5.6-6.6).
+        denominators.reserve(ownRun.slots.size());
+        for (const std::uint32_t shared : ownRun.slots)
+        {
+            const bool inFinal = std::any_of(ownRun.finals.begin(), ownRun.finals.end(),
+                                             [&](const auto& f) { return f.first == shared; });
+            const PilotHalves* ownHalves = halvesAt(ownRun, shared);
+            const PilotHalves* rivalHalves = halvesAt(rival, shared);
+            if ((inFinal || !finalOnly) && ownHalves && rivalHalves)
+                pairs.push_back({ownHalves, rivalHalves, &denominators.emplace_back(otherSeeds(shared))});
+        }
+        if (pairs.empty())
+            return false;
         PilotRow& row = rival.row;
         PilotRow& incumbent = ownRun.row;
-        const bool timed = row.timingMsPerPath > 0.0 && incumbent.timingMsPerPath > 0.0;
-        const double rivalMs = timed ? 2.0 * halfPaths * row.timingMsPerPath : rival.finalLeastMs;
-        const double ownMs = timed ? 2.0 * halfPaths * incumbent.timingMsPerPath : ownRun.finalLeastMs;
+        const PairedRelMse paired = pairedRelMse(pairs);
+        const double k = double(pairs.size());
+        auto fill = [&](PilotRow& r, double relMse, double error, double ms) {
+            r.finalMeasurements = int(pairs.size());
+            r.finalRelMse = relMse;
+            r.finalRelMseError = error;
+            r.finalEfficiency = relMse > 0.0 ? 1.0 / (relMse * k * ms * 1e-3) : 0.0;
+        };
+        fill(incumbent, paired.own, paired.ownError, ownMs);
+        fill(row, paired.challenger, paired.challengerError, rivalMs);
+        row.relMseRatio = paired.ratio;
+        row.relMseRatioError = paired.ratioError;
+        auto switches = [&](double ratio, double error) {
+            return ratio > 0.0 && rivalMs > 0.0 && pilotSwitches(ownMs / (ratio * rivalMs), error / ratio);
+        };
+        bool switching = switches(paired.ratio, paired.ratioError);
         if (pairs.size() >= 2)
         {
-            decidedByPairs = true;
-            const PairedRelMse paired = pairedRelMse(pairs);
-            const double k = double(pairs.size());
-            auto fill = [&](PilotRow& r, double relMse, double error, double ms) {
-                r.finalMeasurements = int(pairs.size());
-                r.finalRelMse = relMse;
-                r.finalRelMseError = error;
-                r.finalEfficiency = relMse > 0.0 ? 1.0 / (relMse * k * ms * 1e-3) : 0.0;
-            };
-            fill(incumbent, paired.own, paired.ownError, ownMs);
-            fill(row, paired.challenger, paired.challengerError, rivalMs);
-            row.relMseRatio = paired.ratio;
-            row.relMseRatioError = paired.ratioError;
-            // Again without the pair where the own's error was largest: a firefly in the own's renders is one
-            // pair's, and a lead that stands on it alone is no measurement of the own's tail.
             std::vector<PilotPair> trimmed = pairs;
             trimmed.erase(trimmed.begin() + (std::max_element(paired.ownPerPair.begin(), paired.ownPerPair.end()) -
                                              paired.ownPerPair.begin()));
             const PairedRelMse rest = pairedRelMse(trimmed);
             row.trimmedRelMseRatio = rest.ratio;
             row.trimmedRelMseRatioError = rest.ratioError;
-            auto switches = [&](double ratio, double error) {
-                return ratio > 0.0 && rivalMs > 0.0 && pilotSwitches(ownMs / (ratio * rivalMs), error / ratio);
-            };
-            if (switches(paired.ratio, paired.ratioError) && switches(rest.ratio, row.trimmedRelMseRatioError))
-                choice.chosen = row.strategy;
+            switching = switching && switches(rest.ratio, rest.ratioError);
         }
-    }
-    if (!decidedByPairs && choice.budgetSpent && (!challengerInFinal || challenger != measuredRuns.end()) &&
-        measuredRuns.size() > 1 && measuredRuns.front() == &runs.front())
+        if (switching)
+            choice.chosen = row.strategy;
+        return true;
+    };
+    const auto challenger = std::find_if(measuredRuns.begin(), measuredRuns.end(), [&](const Candidate* c) {
+        return c != &ownRun && !c->finals.empty();
+    });
+    // Whether the final round decided: one cut to a single pair by the host's clock (lavapipe beside other work:
+    // 48 s of a pilot held to 20 s, nee-mis 4x as efficient as the own) decides as a search without one.
+    bool decided = false;
+    if (challenger != measuredRuns.end() && measuredRuns.front() == &ownRun && ownRun.finals.size() >= 2 &&
+        (*challenger)->finals.size() >= 2)
     {
-        // No final round: the host's clock passed the budget first (a GPU compiling the candidates' pipelines; or
-        // right as the final round began, before its challenger's first measurement: an H200's glossy-cornell at
-        // 10 s then kept the own, 0.65x the best, whose lead of 1.3x its measurements had shown). The
-        // most efficient measured, on all its measurements, against the same rule: a lead of a few standard errors
-        // may be the best of several draws, a lead of 3x (book 3's mixture on rtrol-cornell-box, on lavapipe) is not.
-        // The leader among the candidates measured most often, the last round's: where a path's error is
-        // heavy-tailed, one measurement's relMSE is most often below its mean (it rarely meets the tail) and more
-        // measurements meet more of it; on an H200's glossy-cornell at 8 s, candidates of one measurement scored
-        // 0.2-0.6x the own's error per path (of three) where the full comparison put them at 1-1.75x, and
-        // area sampling with uniform selection, out in the first round, was chosen (0.77x the best's efficiency).
+        // A measurement's time: from the timing frames where the final round had them, else the least of the final
+        // round's measurements of each (they take turns; a stall only adds time: on 2 cores one measurement of the
+        // own's 6 ms renders took 7.9 ms where its others took 5.6-6.6).
+        Candidate& rival = **challenger;
+        const bool timed = rival.row.timingMsPerPath > 0.0 && ownRun.row.timingMsPerPath > 0.0;
+        decided = decidePaired(rival, true, timed ? 2.0 * halfPaths * ownRun.row.timingMsPerPath : ownRun.finalLeastMs,
+                               timed ? 2.0 * halfPaths * rival.row.timingMsPerPath : rival.finalLeastMs);
+    }
+    if (!decided && choice.budgetSpent && (!challengerInFinal || challenger != measuredRuns.end()) &&
+        measuredRuns.size() > 1 && measuredRuns.front() == &ownRun)
+    {
+        // The search stopped before its final round decided: the host's clock passed the budget first (a GPU
+        // compiling the candidates' pipelines; the host's set-up of each render, 7.9 ms on an H200's; or right as
+        // the final round began, before its challenger's first measurement: an H200's glossy-cornell at 10 s then
+        // kept the own, 0.65x the best, whose lead of 1.3x its measurements had shown). The most efficient of the
+        // last round's candidates measured most often, against the own on every seed they share, by the same rule:
+        // those measurements chose it, but paired with the own's they hold little of the luck a lone measurement
+        // does (with independent seeds, the leader taken among candidates of one measurement, which a heavy-tailed
+        // error most often puts below its mean, chose area sampling with uniform selection on an H200's
+        // glossy-cornell at 8 s, 0.77x the best, and unpaired, solid-angle uniform on its cornell-box-lights, 0.90x
+        // the own).
         int most = 0;
-        for (const Candidate* c : measuredRuns)
-            if (c != &runs.front())
-                most = std::max(most, c->row.measurements);
-        const PilotRow* leader = nullptr;
-        for (const Candidate* c : measuredRuns)
-            if (c != &runs.front() && c->row.measurements == most &&
-                (!leader || c->row.efficiency > leader->efficiency))
-                leader = &c->row;
-        const PilotRow& incumbent = runs.front().row;
-        auto relative = [](const PilotRow& r) { return r.relMse > 0.0 ? r.relMseError / r.relMse : 0.0; };
-        if (leader && pilotSwitches({incumbent.efficiency, relative(incumbent)}, {leader->efficiency, relative(*leader)}))
-            choice.chosen = leader->strategy;
+        for (const std::size_t i : active)
+            if (i != 0 && !runs[i].row.tooSlow)
+                most = std::max(most, runs[i].row.measurements);
+        Candidate* leader = nullptr;
+        for (const std::size_t i : active)
+            if (i != 0 && !runs[i].row.tooSlow && most > 0 && runs[i].row.measurements == most &&
+                (!leader || runs[i].row.efficiency > leader->row.efficiency))
+                leader = &runs[i];
+        if (leader)
+            decidePaired(*leader, false, ownRun.leastMs, leader->leastMs);
     }
     for (const Candidate& c : runs)
         choice.rows.push_back(c.row);
@@ -1161,7 +1189,7 @@ std::string AutoChoice::table() const
             r.timingMsPerPath > 0.0 ? fmt::format(" (timing frames: {:.3g} ns a path)", r.timingMsPerPath * 1e6) : "";
         std::string decided;
         if (r.finalMeasurements > 0)
-            decided = fmt::format("  final round: {} x2 halves, relMSE {:.3g} ±{:.2g}, 1/(relMSE s) {:.4g}",
+            decided = fmt::format("  decided on {} seeds' x2 halves: relMSE {:.3g} ±{:.2g}, 1/(relMSE s) {:.4g}",
                                   r.finalMeasurements, r.finalRelMse, r.finalRelMseError, r.finalEfficiency);
         if (r.relMseRatio > 0.0)
             decided += fmt::format("; relMSE over the own's, paired: {:.3g} ±{:.2g}, without the own's worst pair "

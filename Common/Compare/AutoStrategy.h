@@ -43,9 +43,9 @@
 // chose the challenger, and are lucky. The measurements are
 // planned to fill the budget on the engine's clock; the search stops once its time on the host's clock passes twice
 // the budget (each render's set-up on the host): the candidates left are not measured, and without a final
-// round (or with one pair of it) the most efficient of the candidates measured most often, on all their
-// measurements, against the same rule (the scene's own stays where the final round stopped its challenger as too
-// slow). A budget that gives a half fewer than kMinimumPilotPaths measures nothing: the scene's own stays.
+// round (or with one pair of it) the most efficient of the last round's candidates measured most often, paired with
+// the own on every seed they share, by the same rule (the scene's own stays where the final round stopped its
+// challenger as too slow). A budget that gives a half fewer than kMinimumPilotPaths measures nothing: the scene's own stays.
 // The halves: about 1024 pixels or the engine's concurrent paths (above), and where the engine stays busy on fewer
 // pixels at more spp (RenderEngine::busyPixels), the pixels their share holds at 16 spp (at most the render's half),
 // never fewer than 1024 or the engine's busy pixels at 16 spp.
@@ -125,8 +125,9 @@ struct PilotRow
     double relMseError = 0.0; // relMse's standard error (over the pixels' terms)
     double efficiency = 0.0; // 1 / (relMse x seconds)
     bool tooSlow = false; // a half ran past 4x its share of the budget and was stopped: efficiency 0
-    /// The final round's two (the scene's own and the challenger): the same figures from the final round's
-    /// measurements alone, which decide (pairedRelMse; relMSE as that of their mean).
+    /// The decision's two (the scene's own and the challenger): the same figures from the pairs that decide
+    /// (pairedRelMse; relMSE as that of their mean): the final round's, or where the search stopped before it
+    /// decided, every seed the own and the last round's leader share.
     int finalMeasurements = 0;
     double finalRelMse = 0.0;
     double finalRelMseError = 0.0;

@@ -149,7 +149,7 @@ def pilots(out):
                         f = full.get(c["strategy"])
                         if not f:
                             continue
-                        mark = ", ".join(m for m, on in (("own", c is mine), ("final round", c["final_measurements"] > 0),
+                        mark = ", ".join(m for m, on in (("own", c is mine), ("decided", c["final_measurements"] > 0),
                                                          ("chosen", c["strategy"] == choice["chosen"])) if on)
                         print(f"| {c['strategy']} | {c['measurements']} | {t / t0:.2f}, {f[0] / f0[0]:.2f} | "
                               f"{e / e0:.2f}, {f[1] / f0[1]:.2f} | {c['efficiency'] / mine['efficiency']:.2f}, "

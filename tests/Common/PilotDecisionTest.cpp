@@ -435,8 +435,9 @@ TEST(PilotDecision, AGuardThatStopsTheFinalRoundBeforeItsChallengerLeavesTheDeci
 {
     // The host's clock passes the search's guard (twice the budget) in the final round's first measurement, the
     // scene's own: the challenger, twice as efficient, has no final measurement. The decision is then the one for
-    // a search stopped earlier, on every candidate's measurements (a guard passed as the final round began once
-    // kept the own on an H200's glossy-cornell at 10 s, 0.65x the best, whose 1.3x lead the rounds had shown).
+    // a search stopped earlier: the last round's leader against the own on the seeds they share, its three (a guard
+    // passed as the final round began once kept the own on an H200's glossy-cornell at 10 s, 0.65x the best, whose
+    // 1.3x lead the rounds had shown).
     // Frames: the probe's 5, the 12 candidates prepared, then two halves a measurement over rounds of 12, 6 and 3.
     constexpr std::size_t kFinalRoundsFirstFrame = 5 + 12 + 2 * (12 + 6 + 3);
     const Scene scene = makeScene("cornell-box-lights");
@@ -461,6 +462,11 @@ TEST(PilotDecision, AGuardThatStopsTheFinalRoundBeforeItsChallengerLeavesTheDeci
     EXPECT_EQ(measurements(Strategy::of(request.settings)), 4);
     EXPECT_EQ(measurements(theBetterOne()), 3) << "the better one reached the final round";
     EXPECT_EQ(choice.chosen.name(), theBetterOne().name());
+    const auto better = std::find_if(choice.rows.begin(), choice.rows.end(),
+                                     [&](const PilotRow& r) { return r.strategy == theBetterOne(); });
+    ASSERT_NE(better, choice.rows.end());
+    EXPECT_EQ(better->finalMeasurements, 3) << "paired with the own on the three seeds they share";
+    EXPECT_NEAR(better->relMseRatio, 0.5, 0.1) << "its variance half the own's";
 }
 
 TEST(PilotDecision, AStallInTheFinalRoundDoesNotDecide)
