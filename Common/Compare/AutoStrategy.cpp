@@ -760,7 +760,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             static_cast<std::int64_t>(std::max(4.0 * std::max(shareMs, ownHalfWallMs), 5.0) * 1e6));
     };
 
-    /// A candidate's measurements: all of them, and those of the final round by their seeds' slot.
+    /// A candidate's measurements: their sums, and each one's halves by its seeds' slot.
     struct Candidate
     {
         PilotRow row;
@@ -998,10 +998,10 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
                     total[v] += w * (2.0 * k * double(e.mean[v]) - double(a[v]) - double(b[v])) / (2.0 * kept);
             }
         }
-        std::vector<float> d(values, 0.0f);
-        if (weight > 0.0)
-            for (std::size_t v = 0; v < values; ++v)
-                d[v] = float(total[v] / weight);
+        // None where no other seed's measurement is left (a search stopped in its first round): no pair of it.
+        std::vector<float> d(weight > 0.0 ? values : 0, 0.0f);
+        for (std::size_t v = 0; v < d.size(); ++v)
+            d[v] = float(total[v] / weight);
         return d;
     };
     // `rival` against the own over the seeds both measured (the final round's alone, where `finalOnly`), each at
@@ -1019,7 +1019,11 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             const PilotHalves* ownHalves = halvesAt(ownRun, shared);
             const PilotHalves* rivalHalves = halvesAt(rival, shared);
             if ((inFinal || !finalOnly) && ownHalves && rivalHalves)
-                pairs.push_back({ownHalves, rivalHalves, &denominators.emplace_back(otherSeeds(shared))});
+            {
+                std::vector<float>& d = denominators.emplace_back(otherSeeds(shared));
+                if (!d.empty())
+                    pairs.push_back({ownHalves, rivalHalves, &d});
+            }
         }
         if (pairs.empty())
             return false;
@@ -1094,8 +1098,16 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             if (i != 0 && !runs[i].row.tooSlow && most > 0 && runs[i].row.measurements == most &&
                 (!leader || runs[i].row.efficiency > leader->row.efficiency))
                 leader = &runs[i];
-        if (leader)
-            decidePaired(*leader, false, ownRun.leastMs, leader->leastMs);
+        // Without a pair (a search stopped in its first round, every candidate measured once on the same seed):
+        // the leader's and the own's scores, unpaired, as before common seeds.
+        if (leader && !decidePaired(*leader, false, ownRun.leastMs, leader->leastMs))
+        {
+            const PilotRow& incumbent = ownRun.row;
+            auto relative = [](const PilotRow& r) { return r.relMse > 0.0 ? r.relMseError / r.relMse : 0.0; };
+            if (pilotSwitches({incumbent.efficiency, relative(incumbent)},
+                              {leader->row.efficiency, relative(leader->row)}))
+                choice.chosen = leader->row.strategy;
+        }
     }
     for (const Candidate& c : runs)
         choice.rows.push_back(c.row);
@@ -1192,9 +1204,12 @@ std::string AutoChoice::table() const
             decided = fmt::format("  decided on {} seeds' x2 halves: relMSE {:.3g} ±{:.2g}, 1/(relMSE s) {:.4g}",
                                   r.finalMeasurements, r.finalRelMse, r.finalRelMseError, r.finalEfficiency);
         if (r.relMseRatio > 0.0)
-            decided += fmt::format("; relMSE over the own's, paired: {:.3g} ±{:.2g}, without the own's worst pair "
-                                   "{:.3g} ±{:.2g}{}",
-                                   r.relMseRatio, r.relMseRatioError, r.trimmedRelMseRatio, r.trimmedRelMseRatioError,
+            decided += fmt::format("; relMSE over the own's, paired: {:.3g} ±{:.2g}{}{}", r.relMseRatio,
+                                   r.relMseRatioError,
+                                   r.finalMeasurements >= 2
+                                       ? fmt::format(", without the own's worst pair {:.3g} ±{:.2g}",
+                                                     r.trimmedRelMseRatio, r.trimmedRelMseRatioError)
+                                       : std::string(),
                                    r.strategy == chosen ? ": chosen" : ": not enough to switch");
         text += fmt::format("{:<44} {:>30} {:>3} {:>9.2f} {:>10.3g} {:>8.2g} {:>12.4g}{}{}{}\n", r.strategy.name(),
                             r.differs, r.measurements, r.ms, r.relMse, r.relMseError, r.efficiency,

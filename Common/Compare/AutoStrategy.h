@@ -30,8 +30,8 @@
 // its error: the error against the others' estimate would add their noise, and on a glossy scene's heavy tails
 // (veach-mis) its correction for that noise failed and read as a bias. Its efficiency is 1 / (relMSE x seconds),
 // twice the faster half's time on the engine's clock (Compare/Measurement.h) less the half's fixed and per-pixel
-// cost (the render's paths' time; in the decision every measurement at the least of its final round's, since a
-// stall only adds time).
+// cost (the render's paths' time; in the decision every measurement at the least of its final round's, or of all
+// its measurements where the search stopped before that, since a stall only adds time).
 // The decision pairs the final round's measurements of the scene's own and the challenger, seed by seed
 // (pairedRelMse): the ratio of their errors, each normalised by the estimate of every other seed's measurements (an
 // estimate from the same seeds shares their fireflies and pulled the ratio toward 1: 1.01x where it was 1.14x), its
@@ -45,7 +45,8 @@
 // the budget (each render's set-up on the host): the candidates left are not measured, and without a final
 // round (or with one pair of it) the most efficient of the last round's candidates measured most often, paired with
 // the own on every seed they share, by the same rule (the scene's own stays where the final round stopped its
-// challenger as too slow). A budget that gives a half fewer than kMinimumPilotPaths measures nothing: the scene's own stays.
+// challenger as too slow; with no other seed to normalise a pair by, a search stopped in its first round, their
+// scores unpaired). A budget that gives a half fewer than kMinimumPilotPaths measures nothing: the scene's own stays.
 // The halves: about 1024 pixels or the engine's concurrent paths (above), and where the engine stays busy on fewer
 // pixels at more spp (RenderEngine::busyPixels), the pixels their share holds at 16 spp (at most the render's half),
 // never fewer than 1024 or the engine's busy pixels at 16 spp.

@@ -431,7 +431,7 @@ TEST(PilotDecision, ACandidateFasterPerPathWinsWhereEachRendersFixedCostHidesIt)
     EXPECT_EQ(taken, 4);
 }
 
-TEST(PilotDecision, AGuardThatStopsTheFinalRoundBeforeItsChallengerLeavesTheDecisionToEveryMeasurement)
+TEST(PilotDecision, AGuardThatStopsTheFinalRoundBeforeItsChallengerLeavesTheDecisionToTheSeedsTheyShare)
 {
     // The host's clock passes the search's guard (twice the budget) in the final round's first measurement, the
     // scene's own: the challenger, twice as efficient, has no final measurement. The decision is then the one for
@@ -467,6 +467,36 @@ TEST(PilotDecision, AGuardThatStopsTheFinalRoundBeforeItsChallengerLeavesTheDeci
     ASSERT_NE(better, choice.rows.end());
     EXPECT_EQ(better->finalMeasurements, 3) << "paired with the own on the three seeds they share";
     EXPECT_NEAR(better->relMseRatio, 0.5, 0.1) << "its variance half the own's";
+}
+
+TEST(PilotDecision, AGuardInTheFirstRoundDecidesUnpaired)
+{
+    // The guard passes after three of round 1's twelve measurements: every candidate measured once, on the same
+    // seed, so no other seed's measurement is left to normalise a pair by (with none, the pairs' relMSE was plain
+    // MSE). The leader and the own are then compared by their scores, unpaired: no row has a paired decision, and
+    // among equal candidates the own stays.
+    constexpr std::size_t kThirdMeasurement = 5 + 12 + 2 * 2;
+    const Scene scene = makeScene("cornell-box-lights");
+    NoiseEngine engine([](const RenderSettings&) { return 1.0; }, kCpuLike.concurrentPaths, kCpuLike.secondsPerPath);
+    engine.setScene(scene);
+    engine.setOnFrame([&](std::size_t frame) {
+        if (frame == kThirdMeasurement)
+            std::this_thread::sleep_for(std::chrono::milliseconds(650));
+    });
+    RenderRequest request = pilotRequest(scene);
+    request.settings.seed = 710;
+    const AutoChoice choice = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 6.0});
+    ASSERT_TRUE(choice.budgetSpent) << "the guard did not stop the search (host clock " << choice.searchSeconds
+                                    << " s)";
+    int measured = 0;
+    for (const PilotRow& r : choice.rows)
+    {
+        EXPECT_LE(r.measurements, 1) << r.strategy.name();
+        EXPECT_EQ(r.finalMeasurements, 0) << r.strategy.name() << ": paired with no other seed";
+        measured += r.measurements > 0;
+    }
+    EXPECT_EQ(measured, 3);
+    EXPECT_EQ(choice.chosen.name(), Strategy::of(request.settings).name()) << "among equal candidates, the own";
 }
 
 TEST(PilotDecision, AStallInTheFinalRoundDoesNotDecide)
