@@ -431,6 +431,30 @@ TEST(PilotDecision, ACandidateFasterPerPathWinsWhereEachRendersFixedCostHidesIt)
     EXPECT_EQ(taken, 4);
 }
 
+/// A pilot of a 6 s render of `scene` on `engine` (a budget of 0.3 s of the fake's device time, a guard of 0.6 s on
+/// the host's) whose host sleeps 0.65 s as frame `guardFrame` begins: the guard stops the search there.
+AutoChoice pilotStoppedAt(NoiseEngine& engine, const Scene& scene, std::size_t guardFrame, std::uint32_t seed)
+{
+    engine.setScene(scene);
+    engine.setOnFrame([guardFrame](std::size_t frame) {
+        if (frame == guardFrame)
+            std::this_thread::sleep_for(std::chrono::milliseconds(650));
+    });
+    RenderRequest request = pilotRequest(scene);
+    request.settings.seed = seed;
+    const AutoChoice choice = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 6.0});
+    EXPECT_TRUE(choice.budgetSpent) << "the guard did not stop the search (host clock " << choice.searchSeconds
+                                    << " s)";
+    return choice;
+}
+
+/// The row of `strategy` (rows' end where the pilot has none).
+std::vector<PilotRow>::const_iterator rowOf(const AutoChoice& choice, const Strategy& strategy)
+{
+    return std::find_if(choice.rows.begin(), choice.rows.end(),
+                        [&](const PilotRow& r) { return r.strategy == strategy; });
+}
+
 TEST(PilotDecision, AGuardThatStopsTheFinalRoundBeforeItsChallengerLeavesTheDecisionToTheSeedsTheyShare)
 {
     // The host's clock passes the search's guard (twice the budget) in the final round's first measurement, the
@@ -442,28 +466,17 @@ TEST(PilotDecision, AGuardThatStopsTheFinalRoundBeforeItsChallengerLeavesTheDeci
     constexpr std::size_t kFinalRoundsFirstFrame = 5 + 12 + 2 * (12 + 6 + 3);
     const Scene scene = makeScene("cornell-box-lights");
     NoiseEngine engine(oneBetterBy(2.0), kCpuLike.concurrentPaths, kCpuLike.secondsPerPath);
-    engine.setScene(scene);
-    // A 6 s render: a budget of 0.3 s of the fake's device time, a guard of 0.6 s on the host's, passed here.
-    engine.setOnFrame([&](std::size_t frame) {
-        if (frame == kFinalRoundsFirstFrame)
-            std::this_thread::sleep_for(std::chrono::milliseconds(650));
-    });
-    RenderRequest request = pilotRequest(scene);
-    request.settings.seed = 700;
-    const AutoChoice choice = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 6.0});
-    ASSERT_TRUE(choice.budgetSpent) << "the guard did not stop the search (host clock " << choice.searchSeconds
-                                    << " s)";
+    const AutoChoice choice = pilotStoppedAt(engine, scene, kFinalRoundsFirstFrame, 700);
+    ASSERT_TRUE(choice.budgetSpent);
     ASSERT_EQ(engine.frames().size(), kFinalRoundsFirstFrame + 2) << "the own's final measurement, then the guard";
     const auto measurements = [&](const Strategy& s) {
-        const auto row = std::find_if(choice.rows.begin(), choice.rows.end(),
-                                      [&](const PilotRow& r) { return r.strategy == s; });
+        const auto row = rowOf(choice, s);
         return row == choice.rows.end() ? -1 : row->measurements;
     };
-    EXPECT_EQ(measurements(Strategy::of(request.settings)), 4);
+    EXPECT_EQ(measurements(Strategy::of(pilotRequest(scene).settings)), 4);
     EXPECT_EQ(measurements(theBetterOne()), 3) << "the better one reached the final round";
     EXPECT_EQ(choice.chosen.name(), theBetterOne().name());
-    const auto better = std::find_if(choice.rows.begin(), choice.rows.end(),
-                                     [&](const PilotRow& r) { return r.strategy == theBetterOne(); });
+    const auto better = rowOf(choice, theBetterOne());
     ASSERT_NE(better, choice.rows.end());
     EXPECT_EQ(better->finalMeasurements, 3) << "paired with the own on the three seeds they share";
     EXPECT_NEAR(better->relMseRatio, 0.5, 0.1) << "its variance half the own's";
@@ -478,16 +491,8 @@ TEST(PilotDecision, AGuardInTheFirstRoundDecidesUnpaired)
     constexpr std::size_t kThirdMeasurement = 5 + 12 + 2 * 2;
     const Scene scene = makeScene("cornell-box-lights");
     NoiseEngine engine([](const RenderSettings&) { return 1.0; }, kCpuLike.concurrentPaths, kCpuLike.secondsPerPath);
-    engine.setScene(scene);
-    engine.setOnFrame([&](std::size_t frame) {
-        if (frame == kThirdMeasurement)
-            std::this_thread::sleep_for(std::chrono::milliseconds(650));
-    });
-    RenderRequest request = pilotRequest(scene);
-    request.settings.seed = 710;
-    const AutoChoice choice = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 6.0});
-    ASSERT_TRUE(choice.budgetSpent) << "the guard did not stop the search (host clock " << choice.searchSeconds
-                                    << " s)";
+    const AutoChoice choice = pilotStoppedAt(engine, scene, kThirdMeasurement, 710);
+    ASSERT_TRUE(choice.budgetSpent);
     int measured = 0;
     for (const PilotRow& r : choice.rows)
     {
@@ -496,7 +501,7 @@ TEST(PilotDecision, AGuardInTheFirstRoundDecidesUnpaired)
         measured += r.measurements > 0;
     }
     EXPECT_EQ(measured, 3);
-    EXPECT_EQ(choice.chosen.name(), Strategy::of(request.settings).name()) << "among equal candidates, the own";
+    EXPECT_EQ(choice.chosen.name(), Strategy::of(pilotRequest(scene).settings).name()) << "among equal candidates, the own";
 }
 
 TEST(PilotDecision, AStallInTheFinalRoundDoesNotDecide)
