@@ -432,6 +432,67 @@ std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> estima
     return errors;
 }
 
+PilotError measuredRelMse(std::span<const PilotMeasurement> measurements)
+{
+    if (measurements.empty())
+        throw UsageError("measuredRelMse: no measurement");
+    const PilotHalves* first = measurements.front().halves;
+    const int width = first ? first->a.width() : 0;
+    const int height = first ? first->a.height() : 0;
+    const std::size_t pixels = std::size_t(width) * std::size_t(height), values = 3 * pixels;
+    if (pixels == 0)
+        throw UsageError("measuredRelMse: images of no pixel");
+    for (const PilotMeasurement& m : measurements)
+    {
+        if (!m.halves || !m.denominator)
+            throw UsageError("measuredRelMse: a measurement without its halves or denominator");
+        for (const Image* image : {&m.halves->a, &m.halves->b})
+            if (image->width() != width || image->height() != height)
+                throw UsageError(fmt::format("pilot measurements differ in size ({}x{} and {}x{})", width, height,
+                                             image->width(), image->height()));
+        if (m.denominator->size() != values)
+            throw UsageError(fmt::format("a pilot measurement's denominator holds {} values for {}x{} pixels",
+                                         m.denominator->size(), width, height));
+    }
+    const std::size_t k = measurements.size();
+    // In double: a firefly's square spans float's range.
+    double sum = 0.0, spread = 0.0, squares = 0.0;
+    std::vector<double> t(k);
+    for (std::size_t p = 0; p < pixels; ++p)
+    {
+        double pixelSum = 0.0;
+        for (std::size_t m = 0; m < k; ++m)
+        {
+            const float* a = &measurements[m].halves->a.data()[p].x;
+            const float* b = &measurements[m].halves->b.data()[p].x;
+            const float* d = measurements[m].denominator->data() + 3 * p;
+            double term = 0.0;
+            for (std::size_t c = 0; c < 3; ++c)
+            {
+                const double half = 0.5 * (double(a[c]) - double(b[c]));
+                term += half * half / (double(d[c]) * double(d[c]) + kRelMseEpsilon);
+            }
+            t[m] = term;
+            pixelSum += term;
+        }
+        sum += pixelSum;
+        squares += pixelSum * pixelSum;
+        if (k >= 2)
+        {
+            const double mean = pixelSum / double(k);
+            for (std::size_t m = 0; m < k; ++m)
+                spread += (t[m] - mean) * (t[m] - mean);
+        }
+    }
+    const double scale = 1.0 / (double(k) * double(k) * double(values));
+    // Var(sum over the pixels): with k >= 2, each pixel's k / (k - 1) spread; with one, P / (P - 1) times the pixels'.
+    const double variance =
+        k >= 2 ? double(k) / double(k - 1) * spread
+               : (pixels > 1 ? double(pixels) / double(pixels - 1) * std::max(squares - sum * sum / double(pixels), 0.0)
+                             : 0.0);
+    return {sum * scale, std::sqrt(variance) * scale};
+}
+
 PairedRelMse pairedRelMse(std::span<const PilotPair> pairs)
 {
     if (pairs.empty())
@@ -625,7 +686,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             measurements += m * kFinalMeasurements;
             break;
         }
-        measurements += m;
+        measurements += m + (m == planned ? 1 : 0); // the first round's own twice (kOwnSeedSlot)
     }
     // A half's share of the budget on the engine's clock, but no more than the search's guard (twice the budget, on
     // the host's clock) leaves it beside each render's host time beyond the engine's (its set-up and read-back, the
@@ -780,6 +841,9 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // Every candidate's measurement of a round (and of each of the final round's repeats) takes that slot's seeds:
     // common random numbers (see the header).
     auto seedOf = [&](std::uint32_t slot) { return request.settings.seed + 7919u * (2u * slot + 1u); };
+    // The first round's own once more, on seeds no other candidate takes: the first round's denominator (every other
+    // candidate is measured on that round's seeds alone; see PilotMeasurement).
+    constexpr std::uint32_t kOwnSeedSlot = 1u << 20, kNoSeedSlot = ~0u;
     auto measureOnce = [&](Candidate& c, bool finalRound, std::uint32_t slot) {
         if (finalRound && choice.timingSpp > 0)
         {
@@ -868,8 +932,51 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
                 out.push_back(&c);
         return out;
     };
-    // relMSE of each candidate's mean over all its measurements (its cost: their summed time): the table's figures
-    // and the halving's order.
+    auto halvesAt = [](const Candidate& c, std::uint32_t at) -> const PilotHalves* {
+        for (const auto* list : {&c.finals, &c.earlier})
+            for (const auto& [s, halves] : *list)
+                if (s == at)
+                    return &halves;
+        return nullptr;
+    };
+    const std::size_t values = 3 * std::size_t(pixelsOf(pilot));
+    // The estimate without one seed's measurements (`leftOut`'s slot): every candidate's estimate without its
+    // measurement of that seed (a candidate left out of the halving whose halves of that seed are gone: not at all),
+    // weighted by its inverse relMSE (its measurements' count, less the one left out, over one measurement's relMSE),
+    // or, where `plain`, by its measurements' count. None where no other seed's measurement is left.
+    auto otherSeeds = [&](const std::vector<Candidate*>& measuredRuns, std::uint32_t leftOut, bool plain) {
+        std::vector<double> total(values, 0.0);
+        double weight = 0.0;
+        for (Candidate* c : measuredRuns)
+        {
+            const PilotHalves* left = halvesAt(*c, leftOut);
+            if (!left && std::find(c->slots.begin(), c->slots.end(), leftOut) != c->slots.end())
+                continue;
+            const PilotEstimate& e = c->all.estimate(); // made before (rescore): only read here, on any core
+            const double k = double(c->all.count), kept = left ? k - 1.0 : k;
+            if (kept <= 0.0)
+                continue;
+            const double w = plain ? kept : kept / k / std::max(c->row.relMse, 1e-300);
+            weight += w;
+            if (!left)
+                for (std::size_t v = 0; v < values; ++v)
+                    total[v] += w * double(e.mean[v]);
+            else
+            {
+                const float* a = &left->a.data()->x;
+                const float* b = &left->b.data()->x;
+                for (std::size_t v = 0; v < values; ++v)
+                    total[v] += w * (2.0 * k * double(e.mean[v]) - double(a[v]) - double(b[v])) / (2.0 * kept);
+            }
+        }
+        std::vector<float> d(weight > 0.0 ? values : 0, 0.0f);
+        for (std::size_t v = 0; v < d.size(); ++v)
+            d[v] = float(total[v] / weight);
+        return d;
+    };
+    // The relMSE of each candidate whose measurements' halves are kept (one left out of the halving keeps its last),
+    // each measurement normalised by the estimate from every other seed's (measuredRelMse): the table's figures and
+    // the halving's order. Twice: the first with the estimates' plain mean, whose errors then weight the second.
     auto rescore = [&] {
         const auto scoringStart = std::chrono::steady_clock::now();
         const std::vector<Candidate*> measuredRuns = scored();
@@ -877,16 +984,47 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         // images are large (a GPU's pilot).
         if (pixelsOf(pilot) >= 65536.0)
             onHostCores(measuredRuns.size(), [&](std::size_t i) { measuredRuns[i]->all.estimate(); });
-        std::vector<const PilotEstimate*> estimates;
+        else
+            for (Candidate* c : measuredRuns)
+                c->all.estimate();
+        std::vector<Candidate*> kept;
+        std::vector<std::uint32_t> seeds;
         for (Candidate* c : measuredRuns)
-            estimates.push_back(&c->all.estimate());
-        const std::vector<PilotError> errors = pilotRelMse(estimates);
-        for (std::size_t i = 0; i < measuredRuns.size(); ++i)
+            if (!c->finals.empty() || !c->earlier.empty())
+            {
+                kept.push_back(c);
+                for (const auto* list : {&c->finals, &c->earlier})
+                    for (const auto& measurement : *list)
+                        if (std::find(seeds.begin(), seeds.end(), measurement.first) == seeds.end())
+                            seeds.push_back(measurement.first);
+            }
+        std::vector<std::vector<float>> denominators(seeds.size());
+        std::vector<float> everySeed; // where no other seed was measured (a guard in the first round)
+        for (int pass = 0; pass < 2; ++pass)
         {
-            PilotRow& row = measuredRuns[i]->row;
-            row.relMse = errors[i].relMse;
-            row.relMseError = errors[i].standardError;
-            row.efficiency = row.relMse > 0.0 && row.ms > 0.0 ? 1.0 / (row.relMse * row.ms * 1e-3) : 0.0;
+            onHostCores(seeds.size(),
+                        [&](std::size_t i) { denominators[i] = otherSeeds(measuredRuns, seeds[i], pass == 0); });
+            if (std::any_of(denominators.begin(), denominators.end(), [](const auto& d) { return d.empty(); }))
+                everySeed = otherSeeds(measuredRuns, kNoSeedSlot, pass == 0);
+            std::vector<PilotError> errors(kept.size());
+            onHostCores(kept.size(), [&](std::size_t i) {
+                std::vector<PilotMeasurement> terms;
+                for (const auto* list : {&kept[i]->finals, &kept[i]->earlier})
+                    for (const auto& [seed, halves] : *list)
+                    {
+                        const std::vector<float>& d =
+                            denominators[std::size_t(std::find(seeds.begin(), seeds.end(), seed) - seeds.begin())];
+                        terms.push_back({&halves, d.empty() ? &everySeed : &d});
+                    }
+                errors[i] = measuredRelMse(terms);
+            });
+            for (std::size_t i = 0; i < kept.size(); ++i)
+            {
+                PilotRow& row = kept[i]->row;
+                row.relMse = errors[i].relMse;
+                row.relMseError = errors[i].standardError;
+                row.efficiency = row.relMse > 0.0 && row.ms > 0.0 ? 1.0 / (row.relMse * row.ms * 1e-3) : 0.0;
+            }
         }
         choice.scoringSeconds +=
             std::chrono::duration<double>(std::chrono::steady_clock::now() - scoringStart).count();
@@ -905,7 +1043,17 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         const bool finalRound = active.size() <= 2;
         for (int repeat = 0; repeat < (finalRound ? kFinalMeasurements : 1) && finished && !choice.budgetSpent;
              ++repeat, ++slot)
+        {
+            // The round's measurements: every active candidate on the slot's seeds, and in the first round the own
+            // once more on seeds of its own (kOwnSeedSlot).
+            std::vector<std::pair<std::size_t, std::uint32_t>> round;
             for (const std::size_t i : active)
+            {
+                round.emplace_back(i, slot);
+                if (i == 0 && slot == 0 && !finalRound)
+                    round.emplace_back(i, kOwnSeedSlot);
+            }
+            for (const auto& [i, seeds] : round)
             {
                 if (runs[i].row.tooSlow)
                     continue;
@@ -922,9 +1070,10 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
                     break;
                 }
                 challengerInFinal |= finalRound && i != 0;
-                if (!(finished = measureOnce(runs[i], finalRound, slot)))
+                if (!(finished = measureOnce(runs[i], finalRound, seeds)))
                     break;
             }
+        }
         if (!finished || finalRound)
             break;
         rescore();
@@ -962,48 +1111,6 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // 10 % of each other, deciding on them switched with 3 seeds of 3, to three different strategies).
     const std::vector<Candidate*> measuredRuns = scored();
     Candidate& ownRun = runs.front();
-    const std::size_t values = ownRun.all.estimate().mean.size();
-    auto halvesAt = [](Candidate& c, std::uint32_t at) -> const PilotHalves* {
-        for (const auto* list : {&c.finals, &c.earlier})
-            for (const auto& [s, halves] : *list)
-                if (s == at)
-                    return &halves;
-        return nullptr;
-    };
-    // A pair's denominator: every candidate's estimate without that seed's measurement (a candidate left out of the
-    // halving whose halves of that seed are gone: not at all), weighted by its inverse relMSE (its measurements'
-    // count, less the one left out, over one measurement's relMSE).
-    auto otherSeeds = [&](std::uint32_t leftOut) {
-        std::vector<double> total(values, 0.0);
-        double weight = 0.0;
-        for (Candidate* c : measuredRuns)
-        {
-            const PilotHalves* left = halvesAt(*c, leftOut);
-            if (!left && std::find(c->slots.begin(), c->slots.end(), leftOut) != c->slots.end())
-                continue;
-            const PilotEstimate& e = c->all.estimate();
-            const double k = double(c->all.count), kept = left ? k - 1.0 : k;
-            if (kept <= 0.0)
-                continue;
-            const double w = kept / k / std::max(c->row.relMse, 1e-300);
-            weight += w;
-            if (!left)
-                for (std::size_t v = 0; v < values; ++v)
-                    total[v] += w * double(e.mean[v]);
-            else
-            {
-                const float* a = &left->a.data()->x;
-                const float* b = &left->b.data()->x;
-                for (std::size_t v = 0; v < values; ++v)
-                    total[v] += w * (2.0 * k * double(e.mean[v]) - double(a[v]) - double(b[v])) / (2.0 * kept);
-            }
-        }
-        // None where no other seed's measurement is left (a search stopped in its first round): no pair of it.
-        std::vector<float> d(weight > 0.0 ? values : 0, 0.0f);
-        for (std::size_t v = 0; v < d.size(); ++v)
-            d[v] = float(total[v] / weight);
-        return d;
-    };
     // `rival` against the own over the seeds both measured (the final round's alone, where `finalOnly`), each at
     // its measurement's time (ownMs, rivalMs): false where they share no seed. The switch needs the lead on all the
     // pairs and, where there are two or more, without the own's worst: a firefly in the own's renders is one pair's,
@@ -1020,7 +1127,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             const PilotHalves* rivalHalves = halvesAt(rival, shared);
             if ((inFinal || !finalOnly) && ownHalves && rivalHalves)
             {
-                std::vector<float>& d = denominators.emplace_back(otherSeeds(shared));
+                std::vector<float>& d = denominators.emplace_back(otherSeeds(measuredRuns, shared, false));
                 if (!d.empty())
                     pairs.push_back({ownHalves, rivalHalves, &d});
             }
@@ -1098,16 +1205,9 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             if (i != 0 && !runs[i].row.tooSlow && most > 0 && runs[i].row.measurements == most &&
                 (!leader || runs[i].row.efficiency > leader->row.efficiency))
                 leader = &runs[i];
-        // Without a pair (a search stopped in its first round, every candidate measured once on the same seed):
-        // the leader's and the own's scores, unpaired, as before common seeds.
-        if (leader && !decidePaired(*leader, false, ownRun.leastMs, leader->leastMs))
-        {
-            const PilotRow& incumbent = ownRun.row;
-            auto relative = [](const PilotRow& r) { return r.relMse > 0.0 ? r.relMseError / r.relMse : 0.0; };
-            if (pilotSwitches({incumbent.efficiency, relative(incumbent)},
-                              {leader->row.efficiency, relative(leader->row)}))
-                choice.chosen = leader->row.strategy;
-        }
+        // A leader was measured after the own's two seeds of the first round, so it has a pair at least.
+        if (leader)
+            decidePaired(*leader, false, ownRun.leastMs, leader->leastMs);
     }
     for (const Candidate& c : runs)
         choice.rows.push_back(c.row);
@@ -1129,15 +1229,6 @@ bool pilotSwitches(double lead, double logLeadError)
     // pilot cost.
     constexpr double kMinimumLead = 1.1;
     return std::log(lead) > std::max(std::log(kMinimumLead), 2.0 * logLeadError);
-}
-
-bool pilotSwitches(const PilotScore& own, const PilotScore& challenger)
-{
-    if (challenger.efficiency <= 0.0)
-        return false;
-    if (own.efficiency <= 0.0)
-        return true;
-    return pilotSwitches(challenger.efficiency / own.efficiency, std::hypot(own.relativeError, challenger.relativeError));
 }
 
 nlohmann::json AutoChoice::toJson() const

@@ -24,9 +24,12 @@
 // seed's camera rays and BSDF directions, so their fireflies, and the ratio of two candidates' errors is 5-10x
 // tighter than with seeds of their own (notebook §43: with independent seeds a pilot's ratio to the own spanned a
 // factor of 3-6 at one measurement on glossy-cornell). A candidate's error is the variance of its estimate from its
-// measurements' halves (PilotEstimate), as relMSE; between rounds (the halving's order, the table) its denominator
-// is the other candidates' combined estimate (weighted by their inverse errors), never the candidate's own image (a
-// firefly over itself is about 1). Every candidate is unbiased (the engines' agreement tests), so its variance is
+// measurements' halves, as relMSE; between rounds (the halving's order, the table) each measurement's denominator is
+// the estimate of every other seed's measurements (weighted by their inverse errors; measuredRelMse), never one
+// that holds its own seed: the candidates of a round share that seed's fireflies, and an estimate of them pulled
+// every ratio toward 1 (1.06 where it was 1.25), so that the halving went by time alone. The first round's own is
+// measured twice, the second time on seeds no other candidate takes, to be the first round's denominator (a firefly
+// over itself, the candidate's own image, is about 1). Every candidate is unbiased (the engines' agreement tests), so its variance is
 // its error: the error against the others' estimate would add their noise, and on a glossy scene's heavy tails
 // (veach-mis) its correction for that noise failed and read as a bias. Its efficiency is 1 / (relMSE x seconds),
 // twice the faster half's time on the engine's clock (Compare/Measurement.h) less the half's fixed and per-pixel
@@ -45,8 +48,7 @@
 // the budget (each render's set-up on the host): the candidates left are not measured, and without a final
 // round (or with one pair of it) the most efficient of the last round's candidates measured most often, paired with
 // the own on every seed they share, by the same rule (the scene's own stays where the final round stopped its
-// challenger as too slow; with no other seed to normalise a pair by, a search stopped in its first round, their
-// scores unpaired). A budget that gives a half fewer than kMinimumPilotPaths measures nothing: the scene's own stays.
+// challenger as too slow). A budget that gives a half fewer than kMinimumPilotPaths measures nothing: the scene's own stays.
 // The halves: about 1024 pixels or the engine's concurrent paths (above), and where the engine stays busy on fewer
 // pixels at more spp (RenderEngine::busyPixels), the pixels their share holds at 16 spp (at most the render's half),
 // never fewer than 1024 or the engine's busy pixels at 16 spp.
@@ -266,6 +268,27 @@ std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& candidates);
 /// pointer null; throws UsageError otherwise.
 std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> estimates);
 
+/// One measurement of a candidate, as the search scores it between rounds: its halves and its relMSE's denominator,
+/// an estimate from other seeds than the measurement's (per value, Image's order, the halves' size). Not an estimate
+/// that holds the measurement's seed: with common seeds every candidate of a round shares that seed's camera rays
+/// and BSDF directions, hence its fireflies, and normalised by an estimate of them the candidates' errors all come
+/// out alike (CPU, cornell-box-lights at 32 x 32 px and 14 spp, 20 seeds: solid-angle uniform's error over the own's
+/// 1.06 against the same seed's estimate, 1.25 against the reference; 1.20 against one measurement of the own on
+/// another seed, 1.25 against four).
+struct PilotMeasurement
+{
+    const PilotHalves* halves = nullptr;
+    const std::vector<float>* denominator = nullptr;
+};
+
+/// A candidate's error from its k >= 1 measurements: per measurement m and pixel p, t = the sum over the channels of
+/// (a - b)^2 / 4 / (denominator^2 + epsilon), the variance of the halves' mean over the denominator; relMSE = sum t /
+/// (k^2 values), that of the mean of the k measurements. Its standard error with the pixels independent: each pixel's
+/// sum over m has the variance k / (k - 1) times the spread of its t's over m; with one measurement, the pixels'
+/// spread (which also holds how much the pixels' own variances differ). Every halves' image and denominator the same
+/// size, no pointer null, at least one measurement; throws UsageError otherwise.
+PilotError measuredRelMse(std::span<const PilotMeasurement> measurements);
+
 /// One seed's measurement of the final round's two candidates: each one's halves, and the denominator of their
 /// relMSE (an estimate from other seeds: per value, Image's order, the halves' size).
 struct PilotPair
@@ -295,13 +318,6 @@ struct PairedRelMse
 };
 PairedRelMse pairedRelMse(std::span<const PilotPair> pairs);
 
-/// A candidate as the decision reads it: its efficiency 1 / (relMSE s) and its relMSE's relative standard error.
-struct PilotScore
-{
-    double efficiency = 0.0;
-    double relativeError = 0.0;
-};
-
 /// Whether the pilot leaves the scene's own strategy for a challenger whose efficiency is `lead` times the own's:
 /// where log(lead) is more than twice its standard error `logLeadError` and the lead more than 10 % (the times'
 /// noise, which that error leaves out). Within that, a tie or noise, the scene's own stays: with one standard error,
@@ -309,7 +325,4 @@ struct PilotScore
 /// (uniform light selection on an H100's cornell-box-lights, 0.85x the BVH's efficiency); with its measurements
 /// fresh, a heavy tail they did not meet (area sampling on veach-mis, 0.2x the own's efficiency).
 bool pilotSwitches(double lead, double logLeadError);
-/// The same for two candidates measured independently: the lead their efficiencies' ratio, its error the hypot of
-/// their relative errors.
-bool pilotSwitches(const PilotScore& own, const PilotScore& challenger);
 } // namespace rt::compare

@@ -229,6 +229,72 @@ TEST(PairedRelMse, OnePairTakesItsStandardErrorFromThePixels)
     EXPECT_NEAR(errors / kTrials / spread, 1.0, 0.25) << "standard error " << errors / kTrials << ", spread " << spread;
 }
 
+TEST(MeasuredRelMse, IsTheVarianceOfTheMeasurementsMeanOverTheDenominator)
+{
+    // k measurements of Gaussian noise sigma around R, each normalised by the exact R: the halves' mean has variance
+    // sigma^2 / 2, the mean of k measurements sigma^2 / (2k). The standard error: (a - b)^2 / 4 has twice its mean's
+    // square as variance, over 3 x 82 x 82 values and k measurements: sqrt(2 / (20172 k)) of the relMSE, right within
+    // a factor 2; the estimate within 5 of them.
+    std::mt19937 rng(21);
+    constexpr float kSigma = 0.1f;
+    const std::vector<float> exact(std::size_t(kSide) * kSide * 3, kRadiance);
+    for (const int k : {1, 3})
+    {
+        std::vector<PilotHalves> halvesOf;
+        for (int m = 0; m < k; ++m)
+            halvesOf.push_back(halves(rng, gaussian(kSigma)));
+        std::vector<PilotMeasurement> measurements;
+        for (const PilotHalves& h : halvesOf)
+            measurements.push_back({&h, &exact});
+        const PilotError e = measuredRelMse(measurements);
+        const double expected = relMseOf(0.5 * kSigma * kSigma / k);
+        const double relative = std::sqrt(2.0 / (20172.0 * k));
+        EXPECT_NEAR(e.relMse, expected, 5.0 * relative * expected) << k << " measurements";
+        EXPECT_GT(e.standardError, 0.5 * relative * expected) << k << " measurements";
+        EXPECT_LT(e.standardError, 2.0 * relative * expected) << k << " measurements";
+    }
+}
+
+TEST(MeasuredRelMse, EachMeasurementHasItsOwnDenominator)
+{
+    // Two measurements of the same noise, one normalised by R, the other by 2R: each term by its own, so the relMSE
+    // is the mean of the two (over k^2 = 4), not either's twice. The second's denominator taken for both would give
+    // 1 / (4 R^2 + 0.01) twice.
+    std::mt19937 rng(22);
+    constexpr float kSigma = 0.1f;
+    const std::vector<float> once(std::size_t(kSide) * kSide * 3, kRadiance), twice(once.size(), 2.0f * kRadiance);
+    const PilotHalves first = halves(rng, gaussian(kSigma)), second = halves(rng, gaussian(kSigma));
+    const std::vector<PilotMeasurement> measurements{{&first, &once}, {&second, &twice}};
+    const PilotError e = measuredRelMse(measurements);
+    const double variance = 0.5 * kSigma * kSigma;
+    const double expected = 0.25 * (variance / (double(kRadiance) * kRadiance + kRelMseEpsilon) +
+                                    variance / (4.0 * kRadiance * kRadiance + kRelMseEpsilon));
+    EXPECT_NEAR(e.relMse, expected, 0.05 * expected);
+}
+
+TEST(MeasuredRelMse, AFireflyBeyondFloatsRangeStaysFiniteAndBadInputIsRefused)
+{
+    std::mt19937 rng(23);
+    const std::vector<float> exact(std::size_t(kSide) * kSide * 3, kRadiance);
+    PilotHalves spiky = halves(rng, gaussian(0.05f));
+    spiky.a.data()[100].y = 1e20f;
+    const PilotMeasurement one{&spiky, &exact};
+    const PilotError e = measuredRelMse({&one, 1});
+    ASSERT_TRUE(std::isfinite(e.relMse) && std::isfinite(e.standardError));
+    // Its one term: (1e20 / 2)^2 over R^2 + 0.01, over the values.
+    EXPECT_NEAR(e.relMse, relMseOf(0.25e40) / 20172.0, 0.01 * relMseOf(0.25e40) / 20172.0);
+
+    EXPECT_THROW(measuredRelMse({}), UsageError);
+    const std::vector<float> small(12, kRadiance);
+    const PilotMeasurement wrongDenominator{&spiky, &small};
+    EXPECT_THROW(measuredRelMse({&wrongDenominator, 1}), UsageError);
+    const PilotMeasurement missing{nullptr, &exact};
+    EXPECT_THROW(measuredRelMse({&missing, 1}), UsageError);
+    const PilotHalves other{Image(4, 4), Image(4, 4)};
+    const std::vector<PilotMeasurement> mismatched{{&spiky, &exact}, {&other, &exact}};
+    EXPECT_THROW(measuredRelMse(mismatched), UsageError);
+}
+
 TEST(PairedRelMse, BadInputIsRefused)
 {
     const std::vector<float> denominator(std::size_t(kSide) * kSide * 3, kRadiance);
