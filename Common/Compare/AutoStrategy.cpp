@@ -116,56 +116,6 @@ StrategyLists autoCandidates(const Scene& scene, const StrategyLists& given, con
 
 namespace
 {
-template <std::size_t Lanes>
-struct PartialSums
-{
-    std::array<double, Lanes> terms{}, squares{};
-};
-
-/// Over `pixels` pixels: the sums of their relMSE terms T = sum over the channels of deviation^2 / (others^2 +
-/// epsilon) and, in `squares`, of T^2 or, where `error` is given, of each T's own variance (the pixel's error times
-/// the square of its channels' mean 1 / (others^2 + epsilon): the channels' weights nearly equal where they matter),
-/// in Lanes independent sums (which the compiler vectorises), each term computed in Real.
-template <class Real, bool HasError, std::size_t Lanes>
-PartialSums<Lanes> relMseTerms(const float* deviation, const double* error, const double* others, std::size_t pixels)
-{
-    // Local sums, copied out at the end: the result's (the caller's memory) might alias `others` for all the
-    // compiler knows, which kept every addition a store and a load.
-    double terms[Lanes] = {}, squares[Lanes] = {};
-    auto add = [&](std::size_t p, std::size_t l) {
-        Real t = 0, meanScale = 0;
-        for (std::size_t c = 0; c < 3; ++c)
-        {
-            const Real o = Real(others[3 * p + c]), d = Real(deviation[3 * p + c]);
-            const Real scale = Real(1) / (o * o + Real(kRelMseEpsilon));
-            t += d * d * scale;
-            meanScale += scale / Real(3);
-        }
-        terms[l] += double(t);
-        if constexpr (HasError)
-            squares[l] += error[p] * double(meanScale) * double(meanScale);
-        else
-            squares[l] += double(t) * double(t);
-    };
-    std::size_t p = 0;
-    for (; p + Lanes <= pixels; p += Lanes)
-        for (std::size_t l = 0; l < Lanes; ++l)
-            add(p + l, l);
-    for (; p < pixels; ++p)
-        add(p, 0);
-    PartialSums<Lanes> s;
-    std::copy_n(terms, Lanes, s.terms.begin());
-    std::copy_n(squares, Lanes, s.squares.begin());
-    return s;
-}
-
-template <class Real, std::size_t Lanes>
-PartialSums<Lanes> relMseTerms(const float* deviation, const double* error, const double* others, std::size_t pixels)
-{
-    return error ? relMseTerms<Real, true, Lanes>(deviation, error, others, pixels)
-                 : relMseTerms<Real, false, Lanes>(deviation, error, others, pixels);
-}
-
 /// fn(i) for every i < count, spread over the host's cores (in this thread where there is one, or one i).
 template <class F>
 void onHostCores(std::size_t count, F&& fn)
@@ -185,28 +135,7 @@ void onHostCores(std::size_t count, F&& fn)
         });
 }
 
-/// A standard deviation in float: float's largest where it is beyond (a firefly's of 1e38 and more).
-float deviationInFloat(double deviation)
-{
-    return float(std::min(deviation, double(std::numeric_limits<float>::max())));
-}
 } // namespace
-
-PilotEstimate PilotEstimate::of(const PilotHalves& halves)
-{
-    PilotEstimate e{halves.a.width(), halves.a.height(), {}, {}, {}};
-    const std::size_t values = halves.a.pixelCount() * 3;
-    e.mean.resize(values);
-    e.deviation.resize(values);
-    const float* a = &halves.a.data()->x;
-    const float* b = &halves.b.data()->x;
-    for (std::size_t k = 0; k < values; ++k)
-    {
-        e.mean[k] = float(0.5 * (double(a[k]) + double(b[k])));
-        e.deviation[k] = deviationInFloat(0.5 * std::abs(double(a[k]) - double(b[k])));
-    }
-    return e;
-}
 
 void PilotSums::add(const Image& imageA, const Image& imageB)
 {
@@ -216,236 +145,32 @@ void PilotSums::add(const Image& imageA, const Image& imageB)
     if (imageB.width() != imageA.width() || imageB.height() != imageA.height())
         throw UsageError(fmt::format("a pilot measurement's halves differ in size ({}x{} and {}x{})", imageA.width(),
                                      imageA.height(), imageB.width(), imageB.height()));
-    current = false;
     if (count++ == 0)
     {
         width = imageA.width();
         height = imageA.height();
-        sum.assign(imageA.pixelCount() * 3, 0.0);
-        u.assign(sum.size(), 0.0);
-        pixelUSquares.assign(imageA.pixelCount(), 0.0);
+        halfSums.assign(imageA.pixelCount() * 3, 0.0);
     }
     const float* a = &imageA.data()->x;
     const float* b = &imageB.data()->x;
-    for (std::size_t p = 0; p < pixelUSquares.size(); ++p)
-    {
-        double pixelU = 0.0;
-        for (std::size_t k = 3 * p; k < 3 * p + 3; ++k)
-        {
-            const double d = double(a[k]) - double(b[k]), variance = 0.5 * d * d;
-            sum[k] += double(a[k]) + double(b[k]);
-            u[k] += variance;
-            pixelU += variance;
-        }
-        pixelUSquares[p] += pixelU * pixelU;
-    }
-}
-
-const PilotEstimate& PilotSums::estimate()
-{
-    if (current)
-        return estimated;
-    const double k = double(count), halves = 2.0 * k;
-    // In the buffers of the last estimate: a GPU pilot's are megabytes a candidate, and fresh ones each round cost
-    // the host's page faults, which held most of the scoring between rounds.
-    estimated.width = width;
-    estimated.height = height;
-    estimated.mean.resize(sum.size());
-    estimated.deviation.resize(sum.size());
-    for (std::size_t i = 0; i < sum.size(); ++i)
-    {
-        estimated.mean[i] = float(sum[i] / halves);
-        // The mean of the k u's over the 2k halves.
-        estimated.deviation[i] = deviationInFloat(std::sqrt(u[i] / k / halves));
-    }
-    estimated.pixelVarianceError.clear();
-    if (count > 1)
-    {
-        // A pixel's summed u's sample variance over k, over (2k)^2.
-        estimated.pixelVarianceError.resize(pixelUSquares.size());
-        for (std::size_t p = 0; p < pixelUSquares.size(); ++p)
-        {
-            const double pixelU = u[3 * p] + u[3 * p + 1] + u[3 * p + 2];
-            estimated.pixelVarianceError[p] =
-                std::max(pixelUSquares[p] - pixelU * pixelU / k, 0.0) / (k - 1.0) / k / (halves * halves);
-        }
-    }
-    current = true;
-    return estimated;
-}
-
-std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& candidates)
-{
-    const int width = candidates.empty() ? 0 : candidates.front().a.width();
-    const int height = candidates.empty() ? 0 : candidates.front().a.height();
-    std::vector<PilotEstimate> estimates;
-    std::vector<const PilotEstimate*> pointers;
-    for (const PilotHalves& c : candidates)
-        for (const Image* image : {&c.a, &c.b})
-            if (image->width() != width || image->height() != height)
-                throw UsageError(fmt::format("pilot images differ in size ({}x{} and {}x{})", width, height,
-                                             image->width(), image->height()));
-    estimates.reserve(candidates.size());
-    for (const PilotHalves& c : candidates)
-        pointers.push_back(&estimates.emplace_back(PilotEstimate::of(c)));
-    return pilotRelMse(pointers);
-}
-
-std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> estimates)
-{
-    const std::size_t n = estimates.size();
-    if (n == 0)
-        return {};
-    const int width = estimates.front()->width, height = estimates.front()->height;
-    const std::size_t pixels = std::size_t(width) * std::size_t(height), values = pixels * 3;
-    for (const PilotEstimate* c : estimates)
-        if (c->width != width || c->height != height || c->mean.size() != values || c->deviation.size() != values ||
-            (!c->pixelVarianceError.empty() && c->pixelVarianceError.size() != pixels))
-            throw UsageError(fmt::format("pilot images differ in size ({}x{} and {}x{})", width, height, c->width,
-                                         c->height));
-    if (values == 0)
-        return std::vector<PilotError>(n);
-    // relMSE's denominator for candidate i: the others' estimate, per pixel. Never candidate i's own image: a firefly
-    // divided by itself would make the spikiest estimator look the best (measured: bsdf chosen over nee-mis, which
-    // is 2x as efficient, on cornell-box-lights at 2 spp).
-    // (Not blurred: over 5 x 5 pixels of a 40 x 27 pilot a light's bright pixels took their dark neighbours' values,
-    // and their antialiasing noise over those read as relMSE 100x the render's on veach-mis.)
-    // The others' weighted mean is the weighted sum of all less the candidate's own term: one sum per pass, not one per
-    // candidate (n^2 passes over the pixels took seconds of the host's clock on a GPU's pilot, which the search's
-    // guard of twice its budget then cut short).
-    // The images are read a tile of pixels at a time, the weighted sum of the tile held in cache for every candidate's
-    // terms, in loops of kLanes independent sums the compiler vectorises: one pass over each image per pass, where a
-    // pass over the whole image per candidate took 0.4 s of an H200 host's clock a round at 13 x 512 x 512 (half a
-    // 10 s render's pilot, whose guard then stopped the search before its final round).
-    constexpr std::size_t kTilePixels = 1365, kTile = 3 * kTilePixels, kLanes = 8;
-    // Twice: the others' plain mean gives every candidate's error, whose inverses weight the others' mean of the
-    // second pass, so that a noisy candidate does not make its neighbours' denominators noisy.
-    std::vector<double> w(n, 1.0);
-    std::vector<PilotError> errors(n);
-    // The tiles in a fixed number of chunks, summed on the host's cores and merged in chunk order (the same sums
-    // whatever the cores): the scoring between rounds counts against the search's guard, and on an H200's host 12
-    // candidates of 512 x 512 took 0.12 s a round on one core, 0.35 s of a 0.8 s guard (every search of
-    // glossy-cornell at 8 s then stopped before its final round).
-    const std::size_t tiles = (values + kTile - 1) / kTile;
-    const std::size_t chunks = std::min<std::size_t>(tiles, 16);
-    for (int pass = 0; pass < 2; ++pass)
-    {
-        double weight = 0.0;
-        for (std::size_t j = 0; j < n; ++j)
-            weight += w[j];
-        // The mean of v_i / (others^2 + epsilon) over the values, and its standard error over the pixels, from kLanes
-        // partial sums, per chunk.
-        std::vector<std::vector<std::array<double, kLanes>>> chunkSums(chunks), chunkSquares(chunks);
-        auto scoreChunk = [&](std::size_t chunk) {
-            std::vector<std::array<double, kLanes>>& sums = chunkSums[chunk];
-            std::vector<std::array<double, kLanes>>& squares = chunkSquares[chunk];
-            sums.assign(n, {});
-            squares.assign(n, {});
-            std::vector<double> total(kTile), others(kTile);
-            const std::size_t lastTile = (chunk + 1) * tiles / chunks;
-            for (std::size_t begin = chunk * tiles / chunks * kTile; begin < std::min(values, lastTile * kTile);
-                 begin += kTile)
-            {
-                const std::size_t count = std::min(kTile, values - begin);
-                std::fill_n(total.begin(), count, 0.0);
-                for (std::size_t j = 0; j < n; ++j)
-                {
-                    const float* x = estimates[j]->mean.data() + begin;
-                    for (std::size_t k = 0; k < count; ++k)
-                        total[k] += w[j] * double(x[k]);
-                }
-                for (std::size_t i = 0; i < n; ++i)
-                {
-                    const float* own = estimates[i]->mean.data() + begin;
-                    // Where the candidate's weight is all but the whole (its relMSE orders of magnitude below the
-                    // others'), the difference would cancel: the others' sum directly.
-                    const double rest = weight - w[i];
-                    if (n == 1)
-                        for (std::size_t k = 0; k < count; ++k)
-                            others[k] = double(own[k]);
-                    else if (rest <= 1e-9 * weight)
-                        for (std::size_t k = 0; k < count; ++k)
-                        {
-                            double sumOthers = 0.0, weightOthers = 0.0;
-                            for (std::size_t j = 0; j < n; ++j)
-                                if (j != i)
-                                {
-                                    sumOthers += w[j] * double(estimates[j]->mean[begin + k]);
-                                    weightOthers += w[j];
-                                }
-                            others[k] = sumOthers / weightOthers;
-                        }
-                    else
-                    {
-                        const double othersWeight = 1.0 / rest;
-                        for (std::size_t k = 0; k < count; ++k)
-                            others[k] = (total[k] - w[i] * double(own[k])) * othersWeight;
-                    }
-                    // In float (its rounding, 1e-7 of a term, far below a pilot's noise): half the time of double's
-                    // divisions, which held the loop. A tile whose float terms overflow (a deviation of 1e19 and more,
-                    // whose square double holds) is summed again in double.
-                    const float* d = estimates[i]->deviation.data() + begin;
-                    const double* e = estimates[i]->pixelVarianceError.empty()
-                                          ? nullptr
-                                          : estimates[i]->pixelVarianceError.data() + begin / 3;
-                    PartialSums<kLanes> sum = relMseTerms<float, kLanes>(d, e, others.data(), count / 3);
-                    if (!std::isfinite(std::accumulate(sum.terms.begin(), sum.terms.end(), 0.0) +
-                                       std::accumulate(sum.squares.begin(), sum.squares.end(), 0.0)))
-                        sum = relMseTerms<double, kLanes>(d, e, others.data(), count / 3);
-                    for (std::size_t l = 0; l < kLanes; ++l)
-                    {
-                        sums[i][l] += sum.terms[l];
-                        squares[i][l] += sum.squares[l];
-                    }
-                }
-            }
-        };
-        onHostCores(chunks, scoreChunk);
-        std::vector<std::array<double, kLanes>> sums(n), squares(n);
-        for (std::size_t chunk = 0; chunk < chunks; ++chunk)
-            for (std::size_t i = 0; i < n; ++i)
-                for (std::size_t l = 0; l < kLanes; ++l)
-                {
-                    sums[i][l] += chunkSums[chunk][i][l];
-                    squares[i][l] += chunkSquares[chunk][i][l];
-                }
-        for (std::size_t i = 0; i < n; ++i)
-        {
-            double sumAll = 0.0, sumSquares = 0.0;
-            for (std::size_t l = 0; l < kLanes; ++l)
-            {
-                sumAll += sums[i][l];
-                sumSquares += squares[i][l];
-            }
-            // The mean over the values of the pixels' independent terms: its variance their variances' sum over
-            // values^2, measured pixel by pixel where the estimate has them, else from the pixels' terms' spread.
-            const double mean = sumAll / double(values), pixelMean = sumAll / double(pixels);
-            const double variance =
-                estimates[i]->pixelVarianceError.empty()
-                    ? std::max(sumSquares / double(pixels) - pixelMean * pixelMean, 0.0) / double(pixels) / 9.0
-                    : sumSquares / (double(values) * double(values));
-            errors[i] = PilotError{mean, std::sqrt(variance)};
-        }
-        for (std::size_t i = 0; i < n; ++i)
-            w[i] = 1.0 / std::max(errors[i].relMse, 1e-300);
-    }
-    return errors;
+    for (std::size_t k = 0; k < halfSums.size(); ++k)
+        halfSums[k] += double(a[k]) + double(b[k]);
 }
 
 PilotError measuredRelMse(std::span<const PilotMeasurement> measurements)
 {
     if (measurements.empty())
         throw UsageError("measuredRelMse: no measurement");
-    const PilotHalves* first = measurements.front().halves;
-    const int width = first ? first->a.width() : 0;
-    const int height = first ? first->a.height() : 0;
+    for (const PilotMeasurement& m : measurements)
+        if (!m.halves || !m.denominator)
+            throw UsageError("measuredRelMse: a measurement without its halves or denominator");
+    const int width = measurements.front().halves->a.width();
+    const int height = measurements.front().halves->a.height();
     const std::size_t pixels = std::size_t(width) * std::size_t(height), values = 3 * pixels;
     if (pixels == 0)
         throw UsageError("measuredRelMse: images of no pixel");
     for (const PilotMeasurement& m : measurements)
     {
-        if (!m.halves || !m.denominator)
-            throw UsageError("measuredRelMse: a measurement without its halves or denominator");
         for (const Image* image : {&m.halves->a, &m.halves->b})
             if (image->width() != width || image->height() != height)
                 throw UsageError(fmt::format("pilot measurements differ in size ({}x{} and {}x{})", width, height,
@@ -681,12 +406,13 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     std::size_t measurements = 0;
     for (std::size_t m = planned;; m = (m + 1) / 2)
     {
+        measurements += m == planned ? 1 : 0; // the first round's own twice (kOwnSeedSlot)
         if (m <= 2)
         {
             measurements += m * kFinalMeasurements;
             break;
         }
-        measurements += m + (m == planned ? 1 : 0); // the first round's own twice (kOwnSeedSlot)
+        measurements += m;
     }
     // A half's share of the budget on the engine's clock, but no more than the search's guard (twice the budget, on
     // the host's clock) leaves it beside each render's host time beyond the engine's (its set-up and read-back, the
@@ -747,11 +473,11 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // candidate costs in the render: on an H200's glossy-cornell the pilot's halves of 512 x 512 at 1-17 spp put
     // projected sampling with the BVH at 1.35-1.57x the time per path of solid-angle sampling with uniform selection,
     // the render at 2x, and at 10 s the pilot kept the own, 0.65x the best. The final round then times each of its
-    // two candidates on a frame of the probe's pixels with up to that many paths (a quarter of the budget holds the
-    // six), once per measurement, and decides on the least time per path of them (less the probe's fixed and
-    // per-pixel terms). A frame of no more than twice a half's paths tells nothing the halves do not.
+    // two candidates on a frame of the probe's pixels with up to that many paths and on one of twice its spp, with
+    // the final round's first two measurements (a quarter of the budget holds the four), and decides on their
+    // slope (timingMsPerPath). A frame of no more than twice a half's paths tells nothing the halves do not.
     constexpr double kThroughputFactor = 16.0;
-    const double timingBudgetMs = 0.25 * choice.budgetSeconds * 1e3 / double(2 * kFinalMeasurements);
+    const double timingBudgetMs = 0.25 * choice.budgetSeconds * 1e3 / 6.0; // two candidates' frames of 1 and 2 units
     const double timingPaths = std::min(kThroughputFactor * double(engine.concurrentPaths()),
                                         pixelsOf(large) * cost.sppFor(timingBudgetMs, pixelsOf(large)));
     RenderSettings timing = large;
@@ -759,10 +485,11 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     timing.spp = std::clamp(static_cast<int>(timingPaths / pixelsOf(timing)), 1, renderSpp);
     if (pixelsOf(timing) * timing.spp > 2.0 * pixelsOf(pilot) * pilot.spp)
     {
-        const double timingMs = double(2 * kFinalMeasurements) * cost.ms(pixelsOf(timing), timing.spp);
+        const double timingMs =
+            2.0 * (cost.ms(pixelsOf(timing), timing.spp) + cost.ms(pixelsOf(timing), 2 * timing.spp));
         const RenderSettings timedPilot =
             planHalves(choice.budgetSeconds * 1e3 - timingMs,
-                       2.0 * choice.budgetSeconds * 1e3 - (timingMs + double(2 * kFinalMeasurements) * choice.hostExtraMs));
+                       2.0 * choice.budgetSeconds * 1e3 - (timingMs + 4.0 * choice.hostExtraMs));
         // Not where the budget left to the halves would then measure nothing (kMinimumPilotPaths below).
         if (pixelsOf(timedPilot) * double(timedPilot.spp) >= kMinimumPilotPaths)
         {
@@ -831,6 +558,8 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         std::vector<std::pair<std::uint32_t, PilotHalves>> finals, earlier;
         std::vector<std::uint32_t> slots;
         double finalLeastMs = 0.0; // the least of its final round's measurements' time
+        double timingMs[2] = {0.0, 0.0}; // its timing frames' time, at the timing spp and twice it
+        int timingFrames = 0;
         double leastMs = 0.0; // of all its measurements
     };
     const double halfPaths = pixelsOf(pilot) * double(pilot.spp);
@@ -844,11 +573,28 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // The first round's own once more, on seeds no other candidate takes: the first round's denominator (every other
     // candidate is measured on that round's seeds alone; see PilotMeasurement).
     constexpr std::uint32_t kOwnSeedSlot = 1u << 20, kNoSeedSlot = ~0u;
+    // A path's time from the timing frames' times at the timing spp (one) and twice it (two): their slope, as
+    // every frame of a GPU's wavefront has a cost of its own that the probe's small frames do not show (its last
+    // segments, a few paths each: on an H200's glossy-cornell at 600 px 5.4 ms a frame for every light sampler,
+    // against 3.2 ns a path of the own and 1.7 of solid-angle sampling with uniform selection; the frames' whole
+    // time, less the probe's fixed cost, put that ratio at 0.8, the render's 0.53, and the pilot kept the own at
+    // 0.63x the best). Not below a quarter of the larger frame's time a path (a slope of noise), and with one frame
+    // only, its time less the probe's fixed and per-pixel terms, as before.
+    auto timingMsPerPath = [&](double one, double two) {
+        const double paths = pixelsOf(timing) * double(timing.spp);
+        if (one > 0.0 && two > 0.0)
+            return std::max(two - one, 0.25 * two / 2.0) / paths;
+        return one > 0.0 ? std::max(one - cost.ms(pixelsOf(timing), 0.0), 0.1 * one) / paths : 0.0;
+    };
     auto measureOnce = [&](Candidate& c, bool finalRound, std::uint32_t slot) {
-        if (finalRound && choice.timingSpp > 0)
+        if (finalRound && choice.timingSpp > 0 && c.timingFrames < 2)
         {
+            // A frame of the timing spp, then one of twice it: a path's time is their slope.
+            const int level = c.timingFrames++;
+            RenderSettings timed = timing;
+            timed.spp = timing.spp * (level + 1);
             RenderRequest frame = request;
-            frame.settings = c.row.strategy.applyTo(timing);
+            frame.settings = c.row.strategy.applyTo(timed);
             frame.settings.seed = seedOf(slot) + 3u;
             const auto frameStart = std::chrono::steady_clock::now();
             const Measurement t = measure(engine, frame, nullptr, {}, true);
@@ -858,9 +604,8 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             if (t.cancelled)
                 return false;
             choice.pilotMs += t.ms();
-            const double paths = pixelsOf(timing) * double(timing.spp);
-            const double msPerPath = std::max(t.ms() - cost.ms(pixelsOf(timing), 0.0), 0.1 * t.ms()) / paths;
-            c.row.timingMsPerPath = c.row.timingMsPerPath > 0.0 ? std::min(c.row.timingMsPerPath, msPerPath) : msPerPath;
+            c.timingMs[level] = t.ms();
+            c.row.timingMsPerPath = timingMsPerPath(c.timingMs[0], c.timingMs[1]);
         }
         RenderRequest half = request;
         half.settings = c.row.strategy.applyTo(pilot);
@@ -952,7 +697,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             const PilotHalves* left = halvesAt(*c, leftOut);
             if (!left && std::find(c->slots.begin(), c->slots.end(), leftOut) != c->slots.end())
                 continue;
-            const PilotEstimate& e = c->all.estimate(); // made before (rescore): only read here, on any core
+            const std::vector<double>& sums = c->all.sums();
             const double k = double(c->all.count), kept = left ? k - 1.0 : k;
             if (kept <= 0.0)
                 continue;
@@ -960,13 +705,13 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             weight += w;
             if (!left)
                 for (std::size_t v = 0; v < values; ++v)
-                    total[v] += w * double(e.mean[v]);
+                    total[v] += w * sums[v] / (2.0 * k);
             else
             {
                 const float* a = &left->a.data()->x;
                 const float* b = &left->b.data()->x;
                 for (std::size_t v = 0; v < values; ++v)
-                    total[v] += w * (2.0 * k * double(e.mean[v]) - double(a[v]) - double(b[v])) / (2.0 * kept);
+                    total[v] += w * (sums[v] - double(a[v]) - double(b[v])) / (2.0 * kept);
             }
         }
         std::vector<float> d(weight > 0.0 ? values : 0, 0.0f);
@@ -974,19 +719,12 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             d[v] = float(total[v] / weight);
         return d;
     };
-    // The relMSE of each candidate whose measurements' halves are kept (one left out of the halving keeps its last),
+    // The relMSE of each candidate whose measurements' halves are kept (one left out of the halving keeps its row's),
     // each measurement normalised by the estimate from every other seed's (measuredRelMse): the table's figures and
     // the halving's order. Twice: the first with the estimates' plain mean, whose errors then weight the second.
     auto rescore = [&] {
         const auto scoringStart = std::chrono::steady_clock::now();
         const std::vector<Candidate*> measuredRuns = scored();
-        // Each candidate's estimate (those measured since the last scoring change) on its own core where the
-        // images are large (a GPU's pilot).
-        if (pixelsOf(pilot) >= 65536.0)
-            onHostCores(measuredRuns.size(), [&](std::size_t i) { measuredRuns[i]->all.estimate(); });
-        else
-            for (Candidate* c : measuredRuns)
-                c->all.estimate();
         std::vector<Candidate*> kept;
         std::vector<std::uint32_t> seeds;
         for (Candidate* c : measuredRuns)
@@ -999,7 +737,9 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
                             seeds.push_back(measurement.first);
             }
         std::vector<std::vector<float>> denominators(seeds.size());
-        std::vector<float> everySeed; // where no other seed was measured (a guard in the first round)
+        // Where no other seed was measured (the guard passed before the own's second seed: no challenger was
+        // measured, and nothing is decided), the table's figures against the estimate of every measurement.
+        std::vector<float> everySeed;
         for (int pass = 0; pass < 2; ++pass)
         {
             onHostCores(seeds.size(),
@@ -1044,16 +784,23 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         for (int repeat = 0; repeat < (finalRound ? kFinalMeasurements : 1) && finished && !choice.budgetSpent;
              ++repeat, ++slot)
         {
-            // The round's measurements: every active candidate on the slot's seeds, and in the first round the own
-            // once more on seeds of its own (kOwnSeedSlot).
-            std::vector<std::pair<std::size_t, std::uint32_t>> round;
+            // The round's measurements: every active candidate on the slot's seeds, and in the first round (a final
+            // one of two candidates too) the own once more on seeds of its own (kOwnSeedSlot), not one of the final
+            // round's.
+            struct Entry
+            {
+                std::size_t i;
+                std::uint32_t seeds;
+                bool final;
+            };
+            std::vector<Entry> round;
             for (const std::size_t i : active)
             {
-                round.emplace_back(i, slot);
-                if (i == 0 && slot == 0 && !finalRound)
-                    round.emplace_back(i, kOwnSeedSlot);
+                round.push_back({i, slot, finalRound});
+                if (i == 0 && slot == 0)
+                    round.push_back({i, kOwnSeedSlot, false});
             }
-            for (const auto& [i, seeds] : round)
+            for (const auto& [i, seeds, final] : round)
             {
                 if (runs[i].row.tooSlow)
                     continue;
@@ -1070,7 +817,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
                     break;
                 }
                 challengerInFinal |= finalRound && i != 0;
-                if (!(finished = measureOnce(runs[i], finalRound, seeds)))
+                if (!(finished = measureOnce(runs[i], final, seeds)))
                     break;
             }
         }

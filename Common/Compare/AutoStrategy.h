@@ -16,7 +16,8 @@
 // successive halving: all once, the better half again, and so on down to two, the scene's own in every round; the
 // final two are measured three times, each time with a timing frame where the halves are too small to keep the
 // engine's device busy (a GPU's: their time per path then hides part of a costlier candidate's cost; the decision
-// takes the timing frames' time per path). Not one setting at a time: the estimator compared at the scene's light
+// takes the timing frames' time per path: the slope between frames of one and two times their spp, since each
+// frame of a GPU's wavefront also has a cost of its own). Not one setting at a time: the estimator compared at the scene's light
 // sampler kept book 3's mixture on rtrol-cornell-box, where an estimator with NEE and a cheaper sampler is 2x as
 // efficient.
 //
@@ -141,8 +142,9 @@ struct PilotRow
     double relMseRatioError = 0.0;
     double trimmedRelMseRatio = 0.0;
     double trimmedRelMseRatioError = 0.0;
-    /// The final round's two where it had timing frames (AutoChoice::timingSpp): the least time per path of them on
-    /// the engine's clock, which the decision's final efficiencies take instead of the halves' times.
+    /// The final round's two where it had timing frames (AutoChoice::timingSpp and twice it): a path's time on the
+    /// engine's clock, the slope between the least times at the two spp, which the decision's final efficiencies
+    /// take instead of the halves' times.
     double timingMsPerPath = 0.0;
 };
 
@@ -160,7 +162,7 @@ struct AutoChoice
     double overheadMs = 0.0; // a half's fixed and per-pixel cost by the time model, taken off the candidates' times
     double hostExtraMs = 0.0; // a probe's render on the host's clock less the engine's (the least of the probe's)
     int timingWidth = 0; // the final round's timing frames, where it has them (0: none); their height is the image's
-    int timingSpp = 0;
+    int timingSpp = 0; // and every other frame twice it
     double budgetSeconds = 0.0;
     double pilotMs = 0.0; // the probe's and every candidate's render time, on the engine's clock
     double pilotWallSeconds = 0.0; // the whole pilot on the host's clock (GPU pipelines compiled included)
@@ -211,62 +213,30 @@ struct PilotHalves
     Image b;
 };
 
-/// A candidate's estimate from its k >= 1 measurements, each two independent renders of the same size and spp (its
-/// halves), per value (pixel channel, Image's order): their mean and the standard deviation of that mean, and per
-/// pixel, where k >= 2, the variance of the estimate of its three channels' summed variance. Each measurement's halves
-/// give a value's variance once, u = (a - b)^2 / 2 (for one measurement (a - b)^2 / 4 as the mean's: Image/Metrics.h's
-/// two-half estimate); the mean of the k u's has k degrees of freedom where the mean of the A halves against the mean
-/// of the B halves had one, and the spread of a pixel's k summed u's measures its own error, pixel by pixel, for any
-/// paths' distribution of finite fourth moment. (The spread of the pixels' terms, the error where k = 1, also holds
-/// how much the pixels' true variances differ: on cornell-box-lights that kept a pilot's relMSE at 7-10 % however
-/// many measurements it pooled.) Per pixel, not per value: a path adds to a pixel's three channels at once.
-struct PilotEstimate
-{
-    int width = 0;
-    int height = 0;
-    std::vector<float> mean;
-    /// The mean's standard deviation (square root of its variance: float holds a firefly's, its square need not).
-    std::vector<float> deviation;
-    std::vector<double> pixelVarianceError; // per pixel; empty where k = 1
-
-    static PilotEstimate of(const PilotHalves& halves);
-};
-
-/// A candidate's measurements of the same size summed as they come: their halves, each measurement's u (in double: a
-/// firefly's spans float's range, and so do the halves' sums) and the square of each pixel's summed u
-/// (PilotEstimate).
+/// A candidate's measurements of the same size summed as they come: their halves' values (in double: a firefly's
+/// spans float's range, and so do its sums), from which the search's denominators are made (an estimate without one
+/// seed's measurement: the sums less its halves).
 class PilotSums
 {
 public:
     /// One measurement: its halves (the same size as every earlier one's; throws UsageError otherwise).
     void add(const Image& a, const Image& b);
-    /// The estimate from every measurement added (at least one), kept until the next add: the search scores every
-    /// candidate after each round, most of them unchanged.
-    const PilotEstimate& estimate();
+    /// Per value (Image's order), the sum of every measurement's two halves: 2 x count renders.
+    const std::vector<double>& sums() const { return halfSums; }
 
     int count = 0; // measurements
 
 private:
-    std::vector<double> sum, u, pixelUSquares;
+    std::vector<double> halfSums;
     int width = 0;
     int height = 0;
-    PilotEstimate estimated;
-    bool current = false;
 };
 
 struct PilotError
 {
     double relMse = 0.0;
-    double standardError = 0.0; // of relMse: from PilotEstimate::pixelVarianceError, else the spread of its pixels' terms
+    double standardError = 0.0; // of relMse (measuredRelMse)
 };
-
-/// The pilot's error of each candidate (see above: its estimate's variance as relMSE, normalised by the others'
-/// combined estimate; one candidate: by its own). Every image the same size; throws UsageError otherwise.
-std::vector<PilotError> pilotRelMse(const std::vector<PilotHalves>& candidates);
-
-/// The same from each candidate's estimate (PilotSums' over its measurements). Every one of the same image size, no
-/// pointer null; throws UsageError otherwise.
-std::vector<PilotError> pilotRelMse(std::span<const PilotEstimate* const> estimates);
 
 /// One measurement of a candidate, as the search scores it between rounds: its halves and its relMSE's denominator,
 /// an estimate from other seeds than the measurement's (per value, Image's order, the halves' size). Not an estimate

@@ -3,7 +3,7 @@
 one spp count and many seeds (notebook §43). Each candidate's "measurement" is two renders (two seeds) taken as
 halves: the pixel's variance from their difference, u = (a - b)^2 / 2, over k measurements, normalised as the pilot
 does (by the other candidates' mean, weighted by the inverse of their errors from a first pass by the plain mean:
-Compare/AutoStrategy.cpp pilotRelMse), by the own's mean over DENOMINATOR_SEEDS seeds that no measurement uses (a pilot's own render of other seeds),
+the scoring between rounds until notebook §45, pilotRelMse), by the own's mean over DENOMINATOR_SEEDS seeds that no measurement uses (a pilot's own render of other seeds),
 or by the folder's reference; the candidates' seeds either independent (as the pilot draws them) or the same for
 every candidate (common random numbers). Prints, per candidate, the median and the 10 % and 90 % points of its
 error over the own's (the first label given) over TRIALS pilots, beside the ratio of their true relMSE against the
@@ -75,7 +75,7 @@ def main():
                 own_mean = [sum(images[own][s][i] for s in spare) / len(spare) for i in range(len(reference))]
                 errors = {}
                 weights = {l: 1.0 for l in labels}
-                for _ in range(2):  # pilotRelMse's two passes: the others' plain mean, then weighted by 1/error
+                for _ in range(2):  # that scoring's two passes: the others' plain mean, then weighted by 1/error
                     for l in labels:
                         others, total = [0.0] * len(reference), sum(weights[o] for o in labels if o != l)
                         for o in labels:

@@ -890,6 +890,14 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "own every time (notebook §44)",
                   "RECHECK_SEEDS=4 bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-4s-1129g \\\n"
                   "    multi 128 4000 2 16384 glossy-cornell cornell-box-lights veach-mis", "## 44.", "2026-11-29"),
+                 ("cpu-auto-strategy-4s-1129h", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                  "4 fresh recheck seeds against the row above's comparisons and references (RECHECK_ONLY): the "
+                  "scoring between rounds against other seeds' estimates (c1c2490): cornell-box-lights 0.95x the best "
+                  "(its best 4 of 4), glossy-cornell 0.94x, veach-mis 1.00x (notebook §45)",
+                  "RECHECK_ONLY=1 RECHECK_SEEDS=4 bash tests/Bench/auto_strategy.sh build/bin \\\n"
+                  "    docs/results/cpu-auto-strategy-4s-1129h multi 128 4000 2 16384 \\\n"
+                  "    cornell-box-lights glossy-cornell veach-mis  # OUT holding 1129g's CSVs and references",
+                  "## 45.", "2026-11-29"),
                  ("h200-auto-strategy-8s-1129", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 8 s, 1 seed for the full comparison, 4 recheck seeds: the pilot "
                   "of c2dc4a3 (its switch at two standard errors of the error per pixel; 320beb0's build) on the "
@@ -918,6 +926,18 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "2 of 3 searches cut short by the guard chose by the leader rule (notebook §44)",
                   "RECHECK_SEEDS=3 HEADLESS_RUNS= MS=6000 SEEDS=1 REF_SPP=32768 SCENES=cornell-box-lights \\\n"
                   "    bash tests/Bench/device_run.sh auto", "## 44.", "2026-11-29"),
+                 ("h200-auto-strategy-8s-1129f", "NVIDIA H200, driver 580",
+                  "cornell-box-lights, each strategy for 8 s, 4 recheck seeds, 7a55775 (the paired leader rule of "
+                  "c3c66be): the own kept 4 of 4, auto 0.84x the best, 0.96x its own (notebook §45)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=cornell-box-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 45.", "2026-11-29"),
+                 ("h200-auto-strategy-8s-1129h", "NVIDIA H200, driver 580",
+                  "the same and glossy-cornell with c1c2490 (the scoring between rounds against other seeds' "
+                  "estimates): cornell-box-lights 0.92x the best (its best 3 of 4); glossy-cornell 0.63x, its own "
+                  "kept 4 of 4: the timing frames put solid-angle uniform's time per path at 0.8x the own's, the "
+                  "render's 0.53 (notebook §45)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=cornell-box-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto  # and SCENES=glossy-cornell", "## 45.", "2026-11-29"),
                  ("h200-auto-strategy-10s-1129d", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 10 s, 1 seed for the full comparison, 4 recheck seeds: the light "
                   "scenes without a GPU row of the current pilot, with 8cc48c9's build (the pilot's measurements "

@@ -1,9 +1,8 @@
 // --strategy auto's measurement (Compare/AutoStrategy.h) on synthetic pilot images whose error is known in closed
 // form, and the candidates it draws for a scene.
 //
-// PilotError: each candidate's halves are a constant image R plus independent noise per pixel channel; the mean of
-// two halves has variance sigma^2 / 2 (Gaussian) or (1 - p) / p R^2 / 2 (a firefly estimator: R / p with
-// probability p, else 0). relMSE normalises by R^2 + 0.01. 20000 pixel channels per image:
+// measuredRelMse and pairedRelMse: each candidate's halves are a constant image R plus independent noise per pixel
+// channel; the mean of two halves has variance sigma^2 / 2. relMSE normalises by R^2 + 0.01. 20000 pixel channels per image:
 // the estimates' standard error is a few percent, the tolerances 5-6 of them (stated per test).
 #include <gtest/gtest.h>
 
@@ -41,101 +40,9 @@ Noise gaussian(float sigma)
     return [=](std::mt19937& rng) { return kRadiance + sigma * std::normal_distribution<float>()(rng); };
 }
 
-/// R / p with probability p, else 0: unbiased, variance (1 - p) / p R^2 per sample.
-Noise fireflies(float p)
-{
-    return [=](std::mt19937& rng) {
-        return std::uniform_real_distribution<float>()(rng) < p ? kRadiance / p : 0.0f;
-    };
-}
-
 double relMseOf(double varianceOfMean)
 {
     return varianceOfMean / (double(kRadiance) * kRadiance + kRelMseEpsilon);
-}
-
-TEST(PilotError, UnbiasedCandidatesMeasureTheirVariance)
-{
-    std::mt19937 rng(11);
-    const std::vector<float> sigmas{0.05f, 0.1f, 0.2f, 0.4f};
-    std::vector<PilotHalves> candidates;
-    for (float s : sigmas)
-        candidates.push_back(halves(rng, gaussian(s)));
-    const std::vector<PilotError> errors = pilotRelMse(candidates);
-    ASSERT_EQ(errors.size(), sigmas.size());
-    for (std::size_t i = 0; i < sigmas.size(); ++i)
-    {
-        const double expected = relMseOf(0.5 * sigmas[i] * sigmas[i]);
-        // 5 standard errors, and the standard error itself right within a factor 2 (Gaussian squares: sqrt(2)
-        // times the mean over sqrt(n)).
-        EXPECT_NEAR(errors[i].relMse, expected, 5.0 * errors[i].standardError) << "sigma " << sigmas[i];
-        EXPECT_GT(errors[i].standardError, 0.5 * std::sqrt(2.0 / 20172.0) * expected);
-        EXPECT_LT(errors[i].standardError, 2.0 * std::sqrt(2.0 / 20172.0) * expected + 1e-12);
-    }
-}
-
-TEST(PilotError, ANoisyCandidateDoesNotSkewTheOthers)
-{
-    // Three smooth candidates and one of fireflies: the denominators weight the others by their inverse errors, so
-    // the fireflies barely enter the smooth ones' and each keeps its variance over R^2 + 0.01 (with the others'
-    // plain mean, the fireflies' noise shared by 3 biases 1 / (r^2 + 0.01) up).
-    std::mt19937 rng(12);
-    constexpr float kSigma = 0.05f, kP = 0.02f;
-    std::vector<PilotHalves> candidates;
-    for (int i = 0; i < 3; ++i)
-        candidates.push_back(halves(rng, gaussian(kSigma)));
-    candidates.push_back(halves(rng, fireflies(kP)));
-    const std::vector<PilotError> errors = pilotRelMse(candidates);
-    const double smooth = relMseOf(0.5 * kSigma * kSigma);
-    for (int i = 0; i < 3; ++i)
-        EXPECT_NEAR(errors[i].relMse, smooth, 0.05 * smooth) << "candidate " << i;
-    EXPECT_GT(errors[3].relMse, 100.0 * smooth);
-}
-
-TEST(PilotError, FirefliesAreNotDividedByThemselves)
-{
-    // A spiky estimator normalised by an image holding its own spikes looks bounded (a firefly over itself is
-    // about 1): the pilot once chose bsdf over nee-mis that way. Against the others' estimate it keeps its true
-    // relMSE, (1 - p) / (2p) R^2 / (R^2 + 0.01), here 475 times the smooth candidates'.
-    std::mt19937 rng(13);
-    constexpr float kP = 0.05f, kSigma = 0.1f;
-    std::vector<PilotHalves> candidates{halves(rng, gaussian(kSigma)), halves(rng, gaussian(kSigma)),
-                                        halves(rng, fireflies(kP))};
-    const std::vector<PilotError> errors = pilotRelMse(candidates);
-    const double spiky = relMseOf(0.5 * (1.0 - kP) / kP * kRadiance * kRadiance);
-    // The firefly estimate is heavy-tailed: 6 of its standard errors.
-    EXPECT_NEAR(errors[2].relMse, spiky, 6.0 * errors[2].standardError);
-    EXPECT_GT(errors[2].relMse, 200.0 * errors[0].relMse);
-}
-
-TEST(PilotError, AFireflyBeyondFloatsRangeStaysFinite)
-{
-    // One sample of 1e20 in a half: its term, 0.25 x 1e40 over the others' square, overflows float (the terms'
-    // precision), not double. Its candidate's relMSE stays finite and huge; the smooth candidates keep their own.
-    std::mt19937 rng(15);
-    constexpr float kSigma = 0.05f;
-    std::vector<PilotHalves> candidates{halves(rng, gaussian(kSigma)), halves(rng, gaussian(kSigma)),
-                                        halves(rng, gaussian(kSigma))};
-    candidates[2].a.data()[100].y = 1e20f;
-    const std::vector<PilotError> errors = pilotRelMse(candidates);
-    const double smooth = relMseOf(0.5 * kSigma * kSigma);
-    ASSERT_TRUE(std::isfinite(errors[2].relMse) && std::isfinite(errors[2].standardError));
-    // Its one term: (1e20 / 2)^2 over the others' R^2 + 0.01 (R within a few 0.05 / sqrt 2), over the values.
-    EXPECT_NEAR(errors[2].relMse, relMseOf(0.25e40) / 20172.0, 0.3 * relMseOf(0.25e40) / 20172.0);
-    for (int i = 0; i < 2; ++i)
-        EXPECT_NEAR(errors[i].relMse, smooth, 5.0 * errors[i].standardError) << "candidate " << i;
-}
-
-TEST(PilotError, OneCandidateIsItsOwnVarianceAndSizesMustMatch)
-{
-    std::mt19937 rng(14);
-    // Normalised by its own image (there is no other): its noise biases 1 / (r^2 + 0.01) up by about 3 Var r / R^2,
-    // 1.5 % at sigma 0.05, within the tolerance.
-    const std::vector<PilotError> one = pilotRelMse({halves(rng, gaussian(0.05f))});
-    ASSERT_EQ(one.size(), 1u);
-    EXPECT_NEAR(one[0].relMse, relMseOf(0.5 * 0.05 * 0.05), 5.0 * one[0].standardError);
-    std::vector<PilotHalves> mismatched{halves(rng, gaussian(0.2f)), {Image(4, 4), Image(4, 4)}};
-    EXPECT_THROW(pilotRelMse(mismatched), UsageError);
 }
 
 /// A final round of `pairs` pairs: the own's noise sigma 0.1, the challenger's `ratio` times its variance, their
@@ -307,83 +214,41 @@ TEST(PairedRelMse, BadInputIsRefused)
     EXPECT_THROW(pairedRelMse({&missing, 1}), UsageError);
 }
 
-/// relMSE of candidate 0, measured by `sums` and normalised by the estimate of a second candidate `other`.
-PilotError relMseAgainst(PilotSums& sums, PilotSums& other)
+TEST(PilotSums, SumTheHalvesOfEveryMeasurement)
 {
-    const std::vector<const PilotEstimate*> measured{&sums.estimate(), &other.estimate()};
-    return pilotRelMse(measured).front();
-}
-
-TEST(PilotSums, OneMeasurementIsItsTwoHalves)
-{
+    // Two measurements, one half with a sample of 3e38 (float's largest is 3.4e38: two such would overflow a float
+    // sum, not the double one). The sums are each value's four halves.
     std::mt19937 rng(16);
-    const PilotHalves h = halves(rng, gaussian(0.1f));
+    PilotHalves first = halves(rng, gaussian(0.1f));
+    PilotHalves second = halves(rng, gaussian(0.1f));
+    first.a.data()[100].y = 3e38f;
+    second.b.data()[100].y = 3e38f;
     PilotSums sums;
-    sums.add(h.a, h.b);
-    const PilotEstimate& e = sums.estimate();
-    const PilotEstimate direct = PilotEstimate::of(h);
-    ASSERT_EQ(e.deviation.size(), direct.deviation.size());
-    for (std::size_t k = 0; k < e.deviation.size(); k += 97)
-    {
-        EXPECT_FLOAT_EQ(e.mean[k], direct.mean[k]);
-        EXPECT_FLOAT_EQ(e.deviation[k], direct.deviation[k]);
-        EXPECT_FLOAT_EQ(e.deviation[k], 0.5f * std::abs(h.a.data()[k / 3][int(k % 3)] - h.b.data()[k / 3][int(k % 3)]));
-    }
-    EXPECT_TRUE(e.pixelVarianceError.empty()) << "one measurement's u has no spread";
+    sums.add(first.a, first.b);
+    sums.add(second.a, second.b);
+    ASSERT_EQ(sums.count, 2);
+    ASSERT_EQ(sums.sums().size(), std::size_t(kSide) * kSide * 3);
+    auto four = [&](std::size_t k) {
+        const int p = int(k / 3), c = int(k % 3);
+        return double(first.a.data()[p][c]) + double(first.b.data()[p][c]) + double(second.a.data()[p][c]) +
+               double(second.b.data()[p][c]);
+    };
+    for (std::size_t k = 0; k < sums.sums().size(); k += 97)
+        EXPECT_DOUBLE_EQ(sums.sums()[k], four(k));
+    EXPECT_DOUBLE_EQ(sums.sums()[3 * 100 + 1], four(3 * 100 + 1));
+    EXPECT_GT(sums.sums()[3 * 100 + 1], 6e38) << "beyond float's range";
     EXPECT_THROW(sums.add(Image(4, 4), Image(4, 4)), UsageError);
+    EXPECT_THROW(PilotSums().add(Image(4, 4), Image(5, 4)), UsageError);
 }
 
-TEST(PilotSums, MeasurementsPoolTheirVarianceAndMeasureItsError)
-{
-    // k measurements of Gaussian halves: the mean of 2k halves has variance sigma^2 / 2k; each value's estimate of it
-    // has relative standard error sqrt(2 / k) (a mean of k chi-square(1) terms), the mean over N values sqrt(2 / kN).
-    std::mt19937 rng(17);
-    constexpr float kSigma = 0.1f;
-    constexpr int kMeasurements = 4;
-    PilotSums sums, other;
-    for (int m = 0; m < kMeasurements; ++m)
-        for (PilotSums* s : {&sums, &other})
-        {
-            const PilotHalves h = halves(rng, gaussian(kSigma));
-            s->add(h.a, h.b);
-        }
-    const PilotError error = relMseAgainst(sums, other);
-    const double expected = relMseOf(kSigma * kSigma / (2.0 * kMeasurements));
-    const double relative = std::sqrt(2.0 / (kMeasurements * 20172.0));
-    EXPECT_NEAR(error.relMse, expected, 5.0 * relative * expected);
-    EXPECT_GT(error.standardError, 0.7 * relative * expected);
-    EXPECT_LT(error.standardError, 1.4 * relative * expected);
-}
-
-TEST(PilotSums, AFireflyBeyondFloatsRangeStaysFiniteWithItsError)
-{
-    // Two measurements, one half of the first with a sample of 1e20: its deviation (float) holds it, its square and
-    // its error only double. The mean of its two u's, (1e20)^2 / 2 and about 0, over the four halves: a variance of
-    // 6.25e38 at that value, finite, with a finite standard error.
-    std::mt19937 rng(19);
-    PilotSums sums, other;
-    for (int m = 0; m < 2; ++m)
-        for (PilotSums* s : {&sums, &other})
-        {
-            PilotHalves h = halves(rng, gaussian(0.05f));
-            if (m == 0 && s == &sums)
-                h.a.data()[100].y = 1e20f;
-            s->add(h.a, h.b);
-        }
-    const PilotError error = relMseAgainst(sums, other);
-    ASSERT_TRUE(std::isfinite(error.relMse) && std::isfinite(error.standardError));
-    EXPECT_NEAR(error.relMse, relMseOf(6.25e38) / 20172.0, 0.3 * relMseOf(6.25e38) / 20172.0);
-    EXPECT_GT(error.standardError, 0.1 * error.relMse) << "one pixel's term is all of it";
-}
-
-TEST(PilotSums, TheStandardErrorIsTheSpreadOfRepeatedPilotsWherePixelsDiffer)
+TEST(MeasuredRelMse, TheStandardErrorIsTheSpreadOfRepeatedPilotsWherePixelsDiffer)
 {
     // A field whose pixels' noise differs 30-fold (a light's edge beside a dark wall), each pixel's noise the same in
     // its three channels (a path adds to all three): the spread of the pixels' terms holds the differences between
     // pixels too, which repeated pilots over the same pixels do not show (here 1.4x the spread), and channels taken
-    // as independent would put the error at 1 / sqrt 3 of it. The standard error from each pixel's own spread
-    // (PilotEstimate::pixelVarianceError) against the relMSE's spread over 40 independent pilots of 3 measurements
-    // each: within 30 % (0.9x here; the spread of 40 draws is itself known to about 11 %).
+    // as independent would put the error at 1 / sqrt 3 of it. The standard error from each pixel's own spread over
+    // the measurements against the relMSE's spread over 40 independent pilots of 3 measurements each (every one
+    // normalised by the exact radiance): within 30 % (the spread of 40 draws is itself known to about 11 %).
     std::mt19937 rng(18);
     // One pixel in 16 with 30x the others' noise.
     auto image = [&] {
@@ -396,16 +261,19 @@ TEST(PilotSums, TheStandardErrorIsTheSpreadOfRepeatedPilotsWherePixelsDiffer)
         }
         return i;
     };
+    const std::vector<float> exact(std::size_t(kSide) * kSide * 3, kRadiance);
     constexpr int kPilots = 40;
     std::vector<double> relMses;
     double meanStandardError = 0.0;
     for (int pilot = 0; pilot < kPilots; ++pilot)
     {
-        PilotSums sums, other;
+        std::vector<PilotHalves> measured;
         for (int m = 0; m < 3; ++m)
-            for (PilotSums* s : {&sums, &other})
-                s->add(image(), image());
-        const PilotError error = relMseAgainst(sums, other);
+            measured.push_back({image(), image()});
+        std::vector<PilotMeasurement> list;
+        for (const PilotHalves& h : measured)
+            list.push_back({&h, &exact});
+        const PilotError error = measuredRelMse(list);
         relMses.push_back(error.relMse);
         meanStandardError += error.standardError / kPilots;
     }
