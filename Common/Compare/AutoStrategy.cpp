@@ -473,23 +473,23 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // candidate costs in the render: on an H200's glossy-cornell the pilot's halves of 512 x 512 at 1-17 spp put
     // projected sampling with the BVH at 1.35-1.57x the time per path of solid-angle sampling with uniform selection,
     // the render at 2x, and at 10 s the pilot kept the own, 0.65x the best. The final round then times each of its
-    // two candidates on a frame of the probe's pixels with up to that many paths and on one of twice its spp, with
-    // the final round's first two measurements (a quarter of the budget holds the four), and decides on their
-    // slope (timingMsPerPath). A frame of no more than twice a half's paths tells nothing the halves do not.
+    // two candidates on frames of the probe's pixels with up to that many paths, once per measurement, the second at
+    // twice the spp (a quarter of the budget holds the six), and decides on their least times' slope
+    // (timingMsPerPath). Frames of no more than twice a half's paths tell nothing the halves do not.
     constexpr double kThroughputFactor = 16.0;
-    const double timingBudgetMs = 0.25 * choice.budgetSeconds * 1e3 / 6.0; // two candidates' frames of 1 and 2 units
+    const double timingBudgetMs = 0.25 * choice.budgetSeconds * 1e3 / 8.0; // two candidates' frames of 1, 2 and 1 units
     const double timingPaths = std::min(kThroughputFactor * double(engine.concurrentPaths()),
                                         pixelsOf(large) * cost.sppFor(timingBudgetMs, pixelsOf(large)));
     RenderSettings timing = large;
     timing.width = widthFor(request.settings, std::min(timingPaths, pixelsOf(large)));
     timing.spp = std::clamp(static_cast<int>(timingPaths / pixelsOf(timing)), 1, renderSpp);
-    if (pixelsOf(timing) * timing.spp > 2.0 * pixelsOf(pilot) * pilot.spp)
+    if (pixelsOf(timing) * 2.0 * timing.spp > 2.0 * pixelsOf(pilot) * pilot.spp)
     {
         const double timingMs =
-            2.0 * (cost.ms(pixelsOf(timing), timing.spp) + cost.ms(pixelsOf(timing), 2 * timing.spp));
+            2.0 * (2.0 * cost.ms(pixelsOf(timing), timing.spp) + cost.ms(pixelsOf(timing), 2 * timing.spp));
         const RenderSettings timedPilot =
             planHalves(choice.budgetSeconds * 1e3 - timingMs,
-                       2.0 * choice.budgetSeconds * 1e3 - (timingMs + 4.0 * choice.hostExtraMs));
+                       2.0 * choice.budgetSeconds * 1e3 - (timingMs + 6.0 * choice.hostExtraMs));
         // Not where the budget left to the halves would then measure nothing (kMinimumPilotPaths below).
         if (pixelsOf(timedPilot) * double(timedPilot.spp) >= kMinimumPilotPaths)
         {
@@ -558,7 +558,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         std::vector<std::pair<std::uint32_t, PilotHalves>> finals, earlier;
         std::vector<std::uint32_t> slots;
         double finalLeastMs = 0.0; // the least of its final round's measurements' time
-        double timingMs[2] = {0.0, 0.0}; // its timing frames' time, at the timing spp and twice it
+        double timingLeastMs[2] = {0.0, 0.0}; // the least of its timing frames' times, at the timing spp and twice it
         int timingFrames = 0;
         double leastMs = 0.0; // of all its measurements
     };
@@ -573,24 +573,29 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // The first round's own once more, on seeds no other candidate takes: the first round's denominator (every other
     // candidate is measured on that round's seeds alone; see PilotMeasurement).
     constexpr std::uint32_t kOwnSeedSlot = 1u << 20, kNoSeedSlot = ~0u;
-    // A path's time from the timing frames' times at the timing spp (one) and twice it (two): their slope, as
+    // A path's time from the timing frames' least times at the timing spp (one) and twice it (two): their slope, as
     // every frame of a GPU's wavefront has a cost of its own that the probe's small frames do not show (its last
     // segments, a few paths each: on an H200's glossy-cornell at 600 px 5.4 ms a frame for every light sampler,
     // against 3.2 ns a path of the own and 1.7 of solid-angle sampling with uniform selection; the frames' whole
     // time, less the probe's fixed cost, put that ratio at 0.8, the render's 0.53, and the pilot kept the own at
-    // 0.63x the best). Not below a quarter of the larger frame's time a path (a slope of noise), and with one frame
-    // only, its time less the probe's fixed and per-pixel terms, as before.
+    // 0.63x the best). Not below a tenth of the larger frame's time a path (a slope of noise); with one frame, or
+    // where the two hold the same paths (stratified sampling's square spp), its time less the probe's fixed and
+    // per-pixel terms, as before.
     auto timingMsPerPath = [&](double one, double two) {
-        const double paths = pixelsOf(timing) * double(timing.spp);
-        if (one > 0.0 && two > 0.0)
-            return std::max(two - one, 0.25 * two / 2.0) / paths;
+        RenderSettings twice = timing;
+        twice.spp = 2 * timing.spp;
+        const double paths = pixelsOf(timing) * double(timing.trueSpp());
+        const double twicePaths = pixelsOf(timing) * double(twice.trueSpp());
+        if (one > 0.0 && two > 0.0 && twicePaths > paths)
+            return std::max((two - one) / (twicePaths - paths), 0.1 * two / twicePaths);
         return one > 0.0 ? std::max(one - cost.ms(pixelsOf(timing), 0.0), 0.1 * one) / paths : 0.0;
     };
     auto measureOnce = [&](Candidate& c, bool finalRound, std::uint32_t slot) {
-        if (finalRound && choice.timingSpp > 0 && c.timingFrames < 2)
+        if (finalRound && choice.timingSpp > 0 && c.timingFrames < 3)
         {
-            // A frame of the timing spp, then one of twice it: a path's time is their slope.
-            const int level = c.timingFrames++;
+            // Frames of the timing spp, twice it, then the timing spp again (a one-off stall, as the first render
+            // after the scoring of a round meets, is not the least): a path's time is their least times' slope.
+            const int level = c.timingFrames++ == 1 ? 1 : 0;
             RenderSettings timed = timing;
             timed.spp = timing.spp * (level + 1);
             RenderRequest frame = request;
@@ -604,8 +609,9 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             if (t.cancelled)
                 return false;
             choice.pilotMs += t.ms();
-            c.timingMs[level] = t.ms();
-            c.row.timingMsPerPath = timingMsPerPath(c.timingMs[0], c.timingMs[1]);
+            double& least = c.timingLeastMs[level];
+            least = least > 0.0 ? std::min(least, t.ms()) : t.ms();
+            c.row.timingMsPerPath = timingMsPerPath(c.timingLeastMs[0], c.timingLeastMs[1]);
         }
         RenderRequest half = request;
         half.settings = c.row.strategy.applyTo(pilot);

@@ -144,7 +144,8 @@ struct PilotRow
     double trimmedRelMseRatioError = 0.0;
     /// The final round's two where it had timing frames (AutoChoice::timingSpp and twice it): a path's time on the
     /// engine's clock, the slope between the least times at the two spp, which the decision's final efficiencies
-    /// take instead of the halves' times.
+    /// take instead of the halves' times (with one frame, a search the guard stopped: its time less the probe's fixed
+    /// and per-pixel terms, a path's; never what decides).
     double timingMsPerPath = 0.0;
 };
 
@@ -162,7 +163,7 @@ struct AutoChoice
     double overheadMs = 0.0; // a half's fixed and per-pixel cost by the time model, taken off the candidates' times
     double hostExtraMs = 0.0; // a probe's render on the host's clock less the engine's (the least of the probe's)
     int timingWidth = 0; // the final round's timing frames, where it has them (0: none); their height is the image's
-    int timingSpp = 0; // and every other frame twice it
+    int timingSpp = 0; // the first and third; the second twice it
     double budgetSeconds = 0.0;
     double pilotMs = 0.0; // the probe's and every candidate's render time, on the engine's clock
     double pilotWallSeconds = 0.0; // the whole pilot on the host's clock (GPU pipelines compiled included)
