@@ -898,6 +898,14 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "    docs/results/cpu-auto-strategy-4s-1129h multi 128 4000 2 16384 \\\n"
                   "    cornell-box-lights glossy-cornell veach-mis  # OUT holding 1129g's CSVs and references",
                   "## 45.", "2026-11-29"),
+                 ("cpu-auto-strategy-4s-1129i", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                  "128 px wide, each strategy for 4 s, 2 seeds, 4 recheck seeds: the other five light scenes with "
+                  "ff77aca: triangle-lights 1.03x the best, rect-light-closeup 0.98x, rtrol-cornell-box 0.88x (its "
+                  "best 4 of 4, the search at twice its budget), sphere-light-closeup 0.80x, many-lights 0.85x; no "
+                  "interval wholly below 0.9x (notebook §45)",
+                  "RECHECK_SEEDS=4 bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-4s-1129i \\\n"
+                  "    multi 128 4000 2 16384 triangle-lights rect-light-closeup sphere-light-closeup rtrol-cornell-box \\\n"
+                  "    many-lights", "## 45.", "2026-11-29"),
                  ("h200-auto-strategy-8s-1129", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 8 s, 1 seed for the full comparison, 4 recheck seeds: the pilot "
                   "of c2dc4a3 (its switch at two standard errors of the error per pixel; 320beb0's build) on the "
