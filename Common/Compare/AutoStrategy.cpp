@@ -135,6 +135,37 @@ void onHostCores(std::size_t count, F&& fn)
         });
 }
 
+/// Throws UsageError (its message naming `caller`) unless `halves` and `denominator` are there, the halves of
+/// `width` x `height` pixels and the denominator of their values.
+void checkMeasurement(const char* caller, const PilotHalves* halves, const std::vector<float>* denominator, int width,
+                      int height)
+{
+    if (!halves || !denominator)
+        throw UsageError(fmt::format("{}: a measurement without its halves or denominator", caller));
+    for (const Image* image : {&halves->a, &halves->b})
+        if (image->width() != width || image->height() != height)
+            throw UsageError(fmt::format("{}: pilot images differ in size ({}x{} and {}x{})", caller, width, height,
+                                         image->width(), image->height()));
+    if (denominator->size() != 3 * std::size_t(width) * std::size_t(height))
+        throw UsageError(fmt::format("{}: a denominator of {} values for {}x{} pixels", caller, denominator->size(),
+                                     width, height));
+}
+
+/// Pixel p's relMSE term of one measurement: the variance of its halves' mean, (a - b)^2 / 4, over denominator^2 +
+/// epsilon, summed over the pixel's three channels (in double: a firefly's square spans float's range).
+double pixelTerm(const PilotHalves& halves, const std::vector<float>& denominator, std::size_t p)
+{
+    const float* a = &halves.a.data()[p].x;
+    const float* b = &halves.b.data()[p].x;
+    const float* d = denominator.data() + 3 * p;
+    double term = 0.0;
+    for (std::size_t c = 0; c < 3; ++c)
+    {
+        const double difference = double(a[c]) - double(b[c]);
+        term += difference * difference * (0.25 / (double(d[c]) * double(d[c]) + kRelMseEpsilon));
+    }
+    return term;
+}
 } // namespace
 
 void PilotSums::add(const Image& imageA, const Image& imageB)
@@ -161,26 +192,15 @@ PilotError measuredRelMse(std::span<const PilotMeasurement> measurements)
 {
     if (measurements.empty())
         throw UsageError("measuredRelMse: no measurement");
+    const PilotHalves* first = measurements.front().halves;
+    const int width = first ? first->a.width() : 0;
+    const int height = first ? first->a.height() : 0;
     for (const PilotMeasurement& m : measurements)
-        if (!m.halves || !m.denominator)
-            throw UsageError("measuredRelMse: a measurement without its halves or denominator");
-    const int width = measurements.front().halves->a.width();
-    const int height = measurements.front().halves->a.height();
+        checkMeasurement("measuredRelMse", m.halves, m.denominator, width, height);
     const std::size_t pixels = std::size_t(width) * std::size_t(height), values = 3 * pixels;
     if (pixels == 0)
         throw UsageError("measuredRelMse: images of no pixel");
-    for (const PilotMeasurement& m : measurements)
-    {
-        for (const Image* image : {&m.halves->a, &m.halves->b})
-            if (image->width() != width || image->height() != height)
-                throw UsageError(fmt::format("pilot measurements differ in size ({}x{} and {}x{})", width, height,
-                                             image->width(), image->height()));
-        if (m.denominator->size() != values)
-            throw UsageError(fmt::format("a pilot measurement's denominator holds {} values for {}x{} pixels",
-                                         m.denominator->size(), width, height));
-    }
     const std::size_t k = measurements.size();
-    // In double: a firefly's square spans float's range.
     double sum = 0.0, spread = 0.0, squares = 0.0;
     std::vector<double> t(k);
     for (std::size_t p = 0; p < pixels; ++p)
@@ -188,17 +208,8 @@ PilotError measuredRelMse(std::span<const PilotMeasurement> measurements)
         double pixelSum = 0.0;
         for (std::size_t m = 0; m < k; ++m)
         {
-            const float* a = &measurements[m].halves->a.data()[p].x;
-            const float* b = &measurements[m].halves->b.data()[p].x;
-            const float* d = measurements[m].denominator->data() + 3 * p;
-            double term = 0.0;
-            for (std::size_t c = 0; c < 3; ++c)
-            {
-                const double half = 0.5 * (double(a[c]) - double(b[c]));
-                term += half * half / (double(d[c]) * double(d[c]) + kRelMseEpsilon);
-            }
-            t[m] = term;
-            pixelSum += term;
+            t[m] = pixelTerm(*measurements[m].halves, *measurements[m].denominator, p);
+            pixelSum += t[m];
         }
         sum += pixelSum;
         squares += pixelSum * pixelSum;
@@ -224,21 +235,12 @@ PairedRelMse pairedRelMse(std::span<const PilotPair> pairs)
         throw UsageError("pairedRelMse: no pair");
     const int width = pairs.front().own ? pairs.front().own->a.width() : 0;
     const int height = pairs.front().own ? pairs.front().own->a.height() : 0;
+    for (const PilotPair& pair : pairs)
+        for (const PilotHalves* halves : {pair.own, pair.challenger})
+            checkMeasurement("pairedRelMse", halves, pair.denominator, width, height);
     const std::size_t pixels = std::size_t(width) * std::size_t(height), values = 3 * pixels;
     if (pixels == 0)
         throw UsageError("pairedRelMse: images of no pixel");
-    for (const PilotPair& pair : pairs)
-    {
-        if (!pair.own || !pair.challenger || !pair.denominator)
-            throw UsageError("pairedRelMse: a pair without its halves or denominator");
-        for (const Image* image : {&pair.own->a, &pair.own->b, &pair.challenger->a, &pair.challenger->b})
-            if (image->width() != width || image->height() != height)
-                throw UsageError(fmt::format("pilot pairs differ in size ({}x{} and {}x{})", width, height,
-                                             image->width(), image->height()));
-        if (pair.denominator->size() != values)
-            throw UsageError(fmt::format("a pilot pair's denominator holds {} values for {}x{} pixels",
-                                         pair.denominator->size(), width, height));
-    }
     const std::size_t k = pairs.size();
     PairedRelMse r;
     r.ownPerPair.assign(k, 0.0);
@@ -252,19 +254,8 @@ PairedRelMse pairedRelMse(std::span<const PilotPair> pairs)
         double meanX = 0.0, meanY = 0.0;
         for (std::size_t m = 0; m < k; ++m)
         {
-            const float* ownA = &pairs[m].own->a.data()[p].x;
-            const float* ownB = &pairs[m].own->b.data()[p].x;
-            const float* rivalA = &pairs[m].challenger->a.data()[p].x;
-            const float* rivalB = &pairs[m].challenger->b.data()[p].x;
-            const float* d = pairs[m].denominator->data() + 3 * p;
-            double xm = 0.0, ym = 0.0;
-            for (std::size_t c = 0; c < 3; ++c)
-            {
-                const double scale = 0.25 / (double(d[c]) * double(d[c]) + kRelMseEpsilon);
-                const double dx = double(ownA[c]) - double(ownB[c]), dy = double(rivalA[c]) - double(rivalB[c]);
-                xm += dx * dx * scale;
-                ym += dy * dy * scale;
-            }
+            const double xm = pixelTerm(*pairs[m].own, *pairs[m].denominator, p);
+            const double ym = pixelTerm(*pairs[m].challenger, *pairs[m].denominator, p);
             x[m] = xm;
             y[m] = ym;
             r.ownPerPair[m] += xm;
@@ -436,10 +427,11 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // Where the engine stays busy on fewer pixels at more spp (RenderEngine::busyPixels: a GPU's wavefront), the
     // halves take the pixels their share holds at kPilotSpp spp (or the request's half, if fewer), never fewer than
     // 1024 or the engine's busy pixels at that spp for any candidate (where the share cannot fill those at that spp,
-    // they take fewer spp, and the device is then partly idle, as the probe's pixels at 1 spp would leave it too): a candidate's error per path over the own's grows with the spp (Sobol's stratification gains
-    // more for some samplers: solid-angle sampling with uniform selection over the own on cornell-box-lights 1.26 at
-    // 2 spp, 1.37 from 128 on), and an H200's halves of 512 x 512 at 2 spp paired it at 1.15 where its render is
-    // 1.41 (notebook §44). Elsewhere (a CPU's 1024 pixels, a GPU's megakernel) the most pixels first, as before.
+    // they take fewer spp, and the device is then partly idle, as the probe's pixels at 1 spp would leave it too): a
+    // candidate's error per path over the own's grows with the spp (Sobol's stratification gains more for some
+    // samplers: solid-angle sampling with uniform selection over the own on cornell-box-lights 1.26 at 2 spp, 1.37
+    // from 128 on), and an H200's halves of 512 x 512 at 2 spp paired it at 1.15 where its render is 1.41 (notebook
+    // §44). Elsewhere (a CPU's 1024 pixels, a GPU's megakernel) the most pixels first, as before.
     constexpr int kPilotSpp = 16;
     auto busyPixels = [&](int spp) {
         RenderSettings s = request.settings;
@@ -581,14 +573,14 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // 0.63x the best). Not below a tenth of the larger frame's time a path (a slope of noise); with one frame, or
     // where the two hold the same paths (stratified sampling's square spp), its time less the probe's fixed and
     // per-pixel terms, as before.
+    RenderSettings twiceTiming = timing;
+    twiceTiming.spp = 2 * timing.spp;
+    const double oncePaths = pixelsOf(timing) * double(timing.trueSpp());
+    const double twicePaths = pixelsOf(twiceTiming) * double(twiceTiming.trueSpp());
     auto timingMsPerPath = [&](double one, double two) {
-        RenderSettings twice = timing;
-        twice.spp = 2 * timing.spp;
-        const double paths = pixelsOf(timing) * double(timing.trueSpp());
-        const double twicePaths = pixelsOf(timing) * double(twice.trueSpp());
-        if (one > 0.0 && two > 0.0 && twicePaths > paths)
-            return std::max((two - one) / (twicePaths - paths), 0.1 * two / twicePaths);
-        return one > 0.0 ? std::max(one - cost.ms(pixelsOf(timing), 0.0), 0.1 * one) / paths : 0.0;
+        if (one > 0.0 && two > 0.0 && twicePaths > oncePaths)
+            return std::max((two - one) / (twicePaths - oncePaths), 0.1 * two / twicePaths);
+        return one > 0.0 ? std::max(one - cost.ms(pixelsOf(timing), 0.0), 0.1 * one) / oncePaths : 0.0;
     };
     auto measureOnce = [&](Candidate& c, bool finalRound, std::uint32_t slot) {
         if (finalRound && choice.timingSpp > 0 && c.timingFrames < 3)
@@ -596,10 +588,8 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             // Frames of the timing spp, twice it, then the timing spp again (a one-off stall, as the first render
             // after the scoring of a round meets, is not the least): a path's time is their least times' slope.
             const int level = c.timingFrames++ == 1 ? 1 : 0;
-            RenderSettings timed = timing;
-            timed.spp = timing.spp * (level + 1);
             RenderRequest frame = request;
-            frame.settings = c.row.strategy.applyTo(timed);
+            frame.settings = c.row.strategy.applyTo(level == 1 ? twiceTiming : timing);
             frame.settings.seed = seedOf(slot) + 3u;
             const auto frameStart = std::chrono::steady_clock::now();
             const Measurement t = measure(engine, frame, nullptr, {}, true);

@@ -242,6 +242,29 @@ Strategy theBetterOne()
     return Strategy::of(better);
 }
 
+/// The row of `strategy` (rows' end where the pilot has none).
+std::vector<PilotRow>::const_iterator rowOf(const AutoChoice& choice, const Strategy& strategy)
+{
+    return std::find_if(choice.rows.begin(), choice.rows.end(),
+                        [&](const PilotRow& r) { return r.strategy == strategy; });
+}
+
+/// Pilots of a 40 s render of `request` on `engine` (its scene set) over the twelve candidates, with `trials` seeds
+/// from `firstSeed`, each passed to `check` with the request's own strategy; how many chose theBetterOne.
+int betterOneTaken(NoiseEngine& engine, RenderRequest request, std::uint32_t firstSeed, int trials,
+                   const std::function<void(const AutoChoice&, const Strategy& own)>& check)
+{
+    int taken = 0;
+    for (int trial = 0; trial < trials; ++trial)
+    {
+        request.settings.seed = firstSeed + std::uint32_t(trial);
+        const AutoChoice choice = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 40.0});
+        check(choice, Strategy::of(request.settings));
+        taken += choice.chosen == theBetterOne();
+    }
+    return taken;
+}
+
 TEST(PilotDecision, EqualCandidatesKeepTheScenesOwn)
 {
     const int switched = pilotsChoosing([](const RenderSettings&) { return 1.0; }, 40);
@@ -360,8 +383,8 @@ TEST(PilotDecision, APilotOnRendersWithFixedCostsFillsItsBudget)
     // 52 ms, planned within a quarter of the budget), over 28 measurements of two halves (12 candidates and the own on
     // a second seed, 6, 3, and the final two 3 times) leave 29.6 ms a half, which hold 47,900 pixels at 1 spp.
     // Planned from one render of 1 spp over the whole image with its time taken as its paths', such a pilot measured
-    // too few paths (an H200's used half its budget); planned from a fixed cost without the pixels' share, none (an H200's image clearing and read-back
-    // counted as fixed exceeded a half's share).
+    // too few paths (an H200's used half its budget); planned from a fixed cost without the pixels' share, none (an
+    // H200's image clearing and read-back counted as fixed exceeded a half's share).
     const Scene scene = makeScene("cornell-box-lights");
     NoiseEngine engine([](const RenderSettings&) { return 1.0; }, std::uint64_t(1) << 18, 1e-7, 20e-3, 1e-7);
     engine.setScene(scene);
@@ -424,23 +447,14 @@ TEST(PilotDecision, ACandidateFasterPerPathWinsWhereEachRendersFixedCostHidesIt)
     NoiseEngine engine([](const RenderSettings&) { return 1.0; }, kGpuLike.concurrentPaths, 1e-7, 20e-3, 1e-7);
     engine.setPathCost(forTheBetterOne(1.0 / 1.6));
     engine.setScene(scene);
-    RenderRequest request = pilotRequest(scene);
-    int taken = 0;
-    for (int trial = 0; trial < 4; ++trial)
-    {
-        request.settings.seed = std::uint32_t(300 + trial);
-        const AutoChoice choice = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 40.0});
+    const int taken = betterOneTaken(engine, pilotRequest(scene), 300, 4,
+                                     [](const AutoChoice& choice, const Strategy& s) {
         EXPECT_NEAR(choice.overheadMs, 20.0 + 1e-4 * choice.width * choice.height, 1e-3);
-        const auto row = [&](const Strategy& strategy) {
-            return *std::find_if(choice.rows.begin(), choice.rows.end(),
-                                 [&](const PilotRow& r) { return r.strategy == strategy; });
-        };
-        const PilotRow own = row(Strategy::of(request.settings)), better = row(theBetterOne());
+        const PilotRow own = *rowOf(choice, s), better = *rowOf(choice, theBetterOne());
         ASSERT_GT(better.measurements, 0);
         EXPECT_NEAR((own.ms / own.measurements) / (better.ms / better.measurements), 1.6, 0.05)
             << "each measurement's time, less the probe's fixed and per-pixel terms";
-        taken += choice.chosen == theBetterOne();
-    }
+    });
     EXPECT_EQ(taken, 4);
 }
 
@@ -459,13 +473,6 @@ AutoChoice pilotStoppedAt(NoiseEngine& engine, const Scene& scene, std::size_t g
     EXPECT_TRUE(choice.budgetSpent) << "the guard did not stop the search (host clock " << choice.searchSeconds
                                     << " s)";
     return choice;
-}
-
-/// The row of `strategy` (rows' end where the pilot has none).
-std::vector<PilotRow>::const_iterator rowOf(const AutoChoice& choice, const Strategy& strategy)
-{
-    return std::find_if(choice.rows.begin(), choice.rows.end(),
-                        [&](const PilotRow& r) { return r.strategy == strategy; });
 }
 
 TEST(PilotDecision, AGuardThatStopsTheFinalRoundBeforeItsChallengerLeavesTheDecisionToTheSeedsTheyShare)
@@ -548,7 +555,8 @@ TEST(PilotDecision, AStallInTheFinalRoundDoesNotDecide)
         });
         const AutoChoice choice = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 40.0});
         ASSERT_FALSE(choice.budgetSpent);
-        ASSERT_EQ(choice.rows.front().measurements, 7) << "three rounds (the first on two seeds) and the final round's three";
+        ASSERT_EQ(choice.rows.front().measurements, 7)
+            << "three rounds (the first on two seeds) and the final round's three";
         switched += !(choice.chosen == Strategy::of(request.settings));
     }
     EXPECT_LE(switched, 1) << "of 10 pilots over equal candidates, the own's final measurement stalled";
@@ -606,20 +614,15 @@ TEST(PilotDecision, TimingFramesShowTheCostASmallFrameHides)
     NoiseEngine engine([](const RenderSettings&) { return 1.0; }, std::uint64_t(1) << 14, 4e-7);
     engine.setPathCost(forTheBetterOne(1.0 / 1.6), 24.0 * double(std::uint64_t(1) << 14));
     engine.setScene(scene);
-    RenderRequest request = pilotRequest(scene);
-    int taken = 0;
-    for (int trial = 0; trial < 4; ++trial)
-    {
-        request.settings.seed = std::uint32_t(500 + trial);
-        const AutoChoice choice = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 40.0});
+    const int taken = betterOneTaken(engine, pilotRequest(scene), 500, 4,
+                                     [](const AutoChoice& choice, const Strategy&) {
         EXPECT_GT(choice.timingSpp, 0) << "halves of " << choice.width << " x " << choice.height << " at "
                                         << choice.spp / 2 << " spp hold fewer paths than the timing frames";
         EXPECT_FALSE(choice.budgetSpent);
         const double timingPaths = double(choice.timingWidth) * choice.timingWidth * choice.timingSpp;
         const double halfPaths = double(choice.width) * choice.height * (choice.spp / 2);
         EXPECT_GT(timingPaths, 2.0 * halfPaths);
-        taken += choice.chosen == theBetterOne();
-    }
+    });
     EXPECT_EQ(taken, 4);
 }
 
@@ -636,22 +639,17 @@ TEST(PilotDecision, TheTimingFramesSlopeLeavesOutEachFramesOwnCost)
     engine.setPathCost(forTheBetterOne(1.0 / 1.6));
     engine.setFrameTail(0.08, 16384.0);
     engine.setScene(scene);
-    RenderRequest request = pilotRequest(scene);
-    int taken = 0;
-    for (int trial = 0; trial < 4; ++trial)
-    {
-        request.settings.seed = std::uint32_t(520 + trial);
-        const AutoChoice choice = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 40.0});
+    const int taken = betterOneTaken(engine, pilotRequest(scene), 520, 4,
+                                     [](const AutoChoice& choice, const Strategy& s) {
         EXPECT_GT(choice.timingSpp, 0);
         EXPECT_FALSE(choice.budgetSpent);
         const auto row = rowOf(choice, theBetterOne());
-        const auto own = rowOf(choice, Strategy::of(request.settings));
+        const auto own = rowOf(choice, s);
         if (row != choice.rows.end() && row->timingMsPerPath > 0.0)
         {
             EXPECT_NEAR(own->timingMsPerPath / row->timingMsPerPath, 1.6, 0.1) << "the slope";
         }
-        taken += choice.chosen == theBetterOne();
-    }
+    });
     EXPECT_EQ(taken, 4);
 }
 
