@@ -35,7 +35,8 @@
 // (veach-mis) its correction for that noise failed and read as a bias. Its efficiency is 1 / (relMSE x seconds),
 // twice the faster half's time on the engine's clock (Compare/Measurement.h) less the half's fixed and per-pixel
 // cost (the render's paths' time; in the decision every measurement at the least of its final round's, or of all
-// its measurements where the search stopped before that, since a stall only adds time).
+// its measurements where the search stopped before that, since a stall only adds time; or by the timing frames where
+// the plan has them, taken after the guard for the leader and the own where the final round did not).
 // The decision pairs the final round's measurements of the scene's own and the challenger, seed by seed
 // (pairedRelMse): the ratio of their errors, each normalised by the estimate of every other seed's measurements (an
 // estimate from the same seeds shares their fireflies and pulled the ratio toward 1: 1.01x where it was 1.14x), its
@@ -142,7 +143,8 @@ struct PilotRow
     double relMseRatioError = 0.0;
     double trimmedRelMseRatio = 0.0;
     double trimmedRelMseRatioError = 0.0;
-    /// The final round's two where it had timing frames (AutoChoice::timingSpp and twice it): a path's time on the
+    /// The final round's two (or, where the guard stopped the search before it decided, the leader and the own,
+    /// timed then) where the plan has timing frames (AutoChoice::timingSpp and twice it): a path's time on the
     /// engine's clock, the slope between the least times at the two spp, which the decision's final efficiencies
     /// take instead of the halves' times (with one frame, a search the guard stopped: its time less the probe's fixed
     /// and per-pixel terms, a path's; never what decides).

@@ -534,6 +534,41 @@ TEST(PilotDecision, AGuardInTheFirstRoundPairsTheLeaderOnTheOwnsSecondSeed)
     EXPECT_EQ(choice.chosen.name(), own.name()) << "among equal candidates, the own";
 }
 
+TEST(PilotDecision, AGuardBeforeTheFinalRoundDecidedStillTimesTheLeaderOnTimingFrames)
+{
+    // An engine whose small frames hide a costlier candidate's cost, as in TimingFramesShowTheCostASmallFrameHides
+    // (solid-angle sampling with power selection 1.6x as fast per path in a render, every candidate's error the
+    // same), with the host's clock past the guard as the final round begins: after the own's first final
+    // measurement, before the challenger's. The leader and the own then take their timing frames before the decision,
+    // and their slope takes the better one. (Timed by the halves, 1.07x, the own stayed: so did an H200's
+    // glossy-cornell in one pilot of four at 8 s, 0.66x the best.)
+    constexpr std::size_t kFinalRoundsFirstFrame = 5 + 12 + 2 * (13 + 6 + 3);
+    const Scene scene = makeScene("cornell-box-lights");
+    NoiseEngine engine([](const RenderSettings&) { return 1.0; }, std::uint64_t(1) << 14, 4e-7);
+    engine.setPathCost(forTheBetterOne(1.0 / 1.6), 4.0 * double(std::uint64_t(1) << 14));
+    engine.setScene(scene);
+    int taken = 0;
+    for (std::uint32_t seed = 900; seed < 903; ++seed)
+    {
+        const std::size_t begun = engine.frames().size();
+        const AutoChoice choice = pilotStoppedAt(engine, scene, begun + kFinalRoundsFirstFrame, seed);
+        ASSERT_GT(choice.timingSpp, 0) << "the plan has timing frames";
+        const auto better = rowOf(choice, theBetterOne());
+        const auto own = rowOf(choice, Strategy::of(pilotRequest(scene).settings));
+        ASSERT_NE(better, choice.rows.end());
+        EXPECT_EQ(better->measurements, 3) << "it reached the final round, with no final measurement";
+        ASSERT_GT(better->timingMsPerPath, 0.0) << "timed after the guard";
+        // Frames of 16,384 and 32,768 paths, a quarter and half the 65,536 that show all: a slope of 1.39x.
+        EXPECT_GT(own->timingMsPerPath / better->timingMsPerPath, 1.3) << "the frames' slope";
+        EXPECT_LT((own->ms / own->measurements) / (better->ms / better->measurements), 1.1)
+            << "the halves' time: no lead a switch needs";
+        EXPECT_EQ(engine.frames().size() - begun, kFinalRoundsFirstFrame + 3 + 2 + 3)
+            << "the own's final measurement (a timing frame, two halves), then its two more frames and the leader's three";
+        taken += choice.chosen == theBetterOne();
+    }
+    EXPECT_EQ(taken, 3);
+}
+
 TEST(PilotDecision, AStallInTheFinalRoundDoesNotDecide)
 {
     // Equal candidates; one measurement of the scene's own in the final round (both halves) takes 3x its time, as a
