@@ -946,6 +946,19 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "render's 0.53 (notebook §45)",
                   "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=cornell-box-lights \\\n"
                   "    bash tests/Bench/device_run.sh auto  # and SCENES=glossy-cornell", "## 45.", "2026-11-29"),
+                 ("h200-auto-strategy-8s-1129j", "NVIDIA H200, driver 580",
+                  "the same with 297c14f (ff77aca's timing frames' slope): glossy-cornell 0.83x the best, its best "
+                  "3 of 4 (the fourth's guard passed before its final round, and the halves' time kept the own); "
+                  "cornell-box-lights 0.87x, its own kept 3 of 4 (a lead of 1.07-1.14 by the pilot, 1.11 by the "
+                  "comparison: at the switch's 10 %) (notebook §46)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=glossy-cornell \\\n"
+                  "    bash tests/Bench/device_run.sh auto  # and SCENES=cornell-box-lights", "## 46.", "2026-11-29"),
+                 ("h200-auto-strategy-8s-1129k", "NVIDIA H200, driver 580",
+                  "glossy-cornell with ad00ecb (a search the guard stops before its final round decides on timing "
+                  "frames taken then): 0.92x the best, its best 4 of 4 (one pilot decided after the guard) "
+                  "(notebook §46)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=glossy-cornell \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 46.", "2026-11-29"),
                  ("h200-auto-strategy-10s-1129d", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 10 s, 1 seed for the full comparison, 4 recheck seeds: the light "
                   "scenes without a GPU row of the current pilot, with 8cc48c9's build (the pilot's measurements "
