@@ -3,10 +3,11 @@
 // scene, the engine and the build (issue 37: the project's own tables changed their verdict as the code got
 // faster).
 //
-// The pilot: three probe renders of the scene's strategy (the first two twice, the faster kept) time a render's fixed
-// cost, a pixel's and a path's (RenderCost), and so estimate the render and plan the pilot's renders; the budget is a
-// fraction of that estimate
-// (5 % by default), at most a few seconds. Every frame of the pilot runs what the render will run (the GPU's
+// The pilot: three probe renders of the scene's strategy (each twice, the faster kept) time a render's fixed cost, a
+// pixel's and a path's (RenderCost), and so estimate the render and plan the pilot's renders; the budget is a
+// fraction of that estimate (5 % by default), at most a few seconds. Where a render costs the host little beside the
+// budget (a CPU's), one more render of each other candidate scales the plan's time per path to the candidates' mean
+// (candidatesCostScale). Every frame of the pilot runs what the render will run (the GPU's
 // integrator for the render's paths: RenderEngine::setRepresentedPaths), each in one batch. Every candidate is
 // prepared (a GPU's pipelines compiled) before the budget's clock starts. Then every combination of the candidates
 // (strategyGrid: a setting a strategy does not use is not varied), the scene's own first, each rendered as two
@@ -164,7 +165,12 @@ struct AutoChoice
     RenderCost cost;
     double overheadMs = 0.0; // a half's fixed and per-pixel cost by the time model, taken off the candidates' times
     double hostExtraMs = 0.0; // a probe's render on the host's clock less the engine's (the least of the probe's)
-    int timingWidth = 0; // the final round's timing frames, where it has them (0: none); their height is the image's
+    double probeMs = 0.0; // the probe's renders (each twice) and the candidates' cost probes, on the engine's clock
+    /// The candidates' mean time per path over the own's, by a render of each at the probe's second size, which
+    /// scales the plan's (1 where those renders would cost the host too much beside the budget: a GPU's).
+    double candidatesCostScale = 1.0;
+    int timingWidth = 0; // the timing frames (the final round's, or the guard's fallback's), where planned (0: none);
+                         // their height is the image's
     int timingSpp = 0; // the first and third; the second twice it
     double budgetSeconds = 0.0;
     double pilotMs = 0.0; // the probe's and every candidate's render time, on the engine's clock
