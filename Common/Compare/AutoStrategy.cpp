@@ -390,18 +390,23 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         budget.renderSeconds > 0.0 ? budget.renderSeconds
                                    : cost.ms(pixelsOf(request.settings), request.settings.trueSpp()) * 1e-3;
     choice.budgetSeconds = std::min(budget.maxSeconds, budget.fraction * choice.estimatedRenderSeconds);
-    // The plan's time per path: the candidates' mean, not the own's alone, where a render of each at the probe's
-    // second size costs the host little beside the budget (a CPU's: a GPU's renders cost its host 7-14 ms each,
-    // and twelve of them would take a quarter of an 8 s render's budget). Planned by the own's, a search whose
-    // own is cheap per path ran past its budget: on a CPU's rtrol-cornell-box (book 3's mixture; the nee-mis
-    // candidates 2-3.5x its time per path) 0.35-0.41 s of the engine's clock for a budget of 0.2 s, and auto lost
-    // 12 % to its pilot, though it chose the best 4 of 4. Each candidate's ratio is held to [1/4, 4]: one past 4x
-    // the own's share is stopped (timeLimit below).
+    // The plan's time per path: the candidates' mean, not the own's alone, by a render of each at the probe's second
+    // size, where a render costs the host little beyond the engine's clock (a CPU's: a GPU's renders cost its host
+    // 7-14 ms each, and twelve of them would take a quarter of an 8 s render's budget) and the renders a quarter of
+    // the budget at most. Planned by the own's, a search whose own is cheap per path ran past its budget: on a CPU's
+    // rtrol-cornell-box (book 3's mixture; the nee-mis candidates 2-3.5x its time per path) 0.35-0.41 s of the
+    // engine's clock for a budget of 0.2 s, and auto lost 12 % to its pilot, though it chose the best 4 of 4. Each
+    // candidate's ratio is held to [1/4, 4]: one past 4x the own's share is stopped (timeLimit below). (A bound on
+    // both costs together, a tenth of the budget, sat at a CPU's veach-mis pilots' size: two seeds of four took the
+    // cost probes and planned 40 spp a half, two did not and planned 14-16.)
     RenderCost planCost = cost;
-    if (double(planned) * (hostExtraMs + 2.0 * probes[1].ms) <= 0.1 * choice.budgetSeconds * 1e3)
+    if (const double n = double(planned), budgetMs = choice.budgetSeconds * 1e3;
+        n * hostExtraMs <= 0.05 * budgetMs && n * 2.0 * probes[1].ms <= 0.25 * budgetMs)
     {
         const double paths = probes[1].pixels * double(probes[1].spp);
-        auto perPath = [&](double ms) { return std::max(ms - cost.ms(probes[1].pixels, 0.0), 0.25 * ms) / paths; };
+        auto perPath = [&](double renderMs) {
+            return std::max(renderMs - cost.ms(probes[1].pixels, 0.0), 0.25 * renderMs) / paths;
+        };
         const double ownPerPath = perPath(probes[1].ms);
         double sum = 1.0; // the own's
         for (std::size_t k = 1; k < grid.size(); ++k)
