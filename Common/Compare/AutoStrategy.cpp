@@ -6,13 +6,13 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <thread>
 
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/fmt/ranges.h>
 
 #include "Compare/Measurement.h"
 #include "Error.h"
+#include "HostThreads.h"
 #include "Image/Metrics.h"
 #include "Render/SettingsTable.h"
 
@@ -116,23 +116,17 @@ StrategyLists autoCandidates(const Scene& scene, const StrategyLists& given, con
 
 namespace
 {
-/// fn(i) for every i < count, spread over the host's cores (in this thread where there is one, or one i).
+/// fn(i) for every i < count, spread over the host's cores (runInParallel: an exception reaches the caller).
 template <class F>
 void onHostCores(std::size_t count, F&& fn)
 {
-    const std::size_t threads = std::min<std::size_t>(count, std::max(1u, std::thread::hardware_concurrency()));
-    if (threads <= 1)
-    {
-        for (std::size_t i = 0; i < count; ++i)
-            fn(i);
+    if (count == 0)
         return;
-    }
-    std::vector<std::jthread> pool;
-    for (std::size_t t = 0; t < threads; ++t)
-        pool.emplace_back([&, t] {
-            for (std::size_t i = t; i < count; i += threads)
-                fn(i);
-        });
+    const int parts = static_cast<int>(std::min<std::size_t>(count, static_cast<std::size_t>(usableCores())));
+    runInParallel(parts, [&](int part) {
+        for (std::size_t i = static_cast<std::size_t>(part); i < count; i += static_cast<std::size_t>(parts))
+            fn(i);
+    });
 }
 
 /// Throws UsageError (its message naming `caller`) unless `halves` and `denominator` are there, the halves of
@@ -390,44 +384,6 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         budget.renderSeconds > 0.0 ? budget.renderSeconds
                                    : cost.ms(pixelsOf(request.settings), request.settings.trueSpp()) * 1e-3;
     choice.budgetSeconds = std::min(budget.maxSeconds, budget.fraction * choice.estimatedRenderSeconds);
-    // The plan's time per path: the candidates' mean, not the own's alone, by a render of each at the probe's second
-    // size, where a render costs the host little beyond the engine's clock (a CPU's: a GPU's renders cost its host
-    // 7-14 ms each, and twelve of them would take a quarter of an 8 s render's budget) and the renders a quarter of
-    // the budget at most. Planned by the own's, a search whose own is cheap per path ran past its budget: on a CPU's
-    // rtrol-cornell-box (book 3's mixture; the nee-mis candidates 2-3.5x its time per path) 0.35-0.41 s of the
-    // engine's clock for a budget of 0.2 s, and auto lost 12 % to its pilot, though it chose the best 4 of 4. Each
-    // candidate's ratio is held to [1/4, 4]: one past 4x the own's share is stopped (timeLimit below). (A bound on
-    // both costs together, a tenth of the budget, sat at a CPU's veach-mis pilots' size: two seeds of four took the
-    // cost probes and planned 40 spp a half, two did not and planned 14-16.)
-    RenderCost planCost = cost;
-    if (const double n = double(planned), budgetMs = choice.budgetSeconds * 1e3;
-        n * hostExtraMs <= 0.05 * budgetMs && n * 2.0 * probes[1].ms <= 0.25 * budgetMs)
-    {
-        const double paths = probes[1].pixels * double(probes[1].spp);
-        auto perPath = [&](double renderMs) {
-            return std::max(renderMs - cost.ms(probes[1].pixels, 0.0), 0.25 * renderMs) / paths;
-        };
-        const double ownPerPath = perPath(probes[1].ms);
-        double sum = 1.0; // the own's
-        for (std::size_t k = 1; k < grid.size(); ++k)
-        {
-            RenderRequest probe = request;
-            probe.settings = grid[k].applyTo(large);
-            probe.settings.spp = probes[1].spp;
-            const Measurement probed = measure(engine, probe, nullptr, {}, true);
-            if (probed.cancelled)
-            {
-                choice.cancelled = true;
-                choice.chosen = Strategy::of(request.settings);
-                return choice;
-            }
-            choice.pilotMs += probed.ms();
-            choice.probeMs += probed.ms();
-            sum += ownPerPath > 0.0 ? std::clamp(perPath(probed.ms()) / ownPerPath, 0.25, 4.0) : 1.0;
-        }
-        choice.candidatesCostScale = sum / double(planned);
-        planCost.msPerPath *= choice.candidatesCostScale;
-    }
     // Successive halving (Jamieson & Talwalkar 2016): every candidate measured once, then the better half again,
     // and so on down to two, the scene's own (the one to beat) in every round. A candidate whose first
     // measurement was lucky (a pilot sees few of the rare paths that carry a glossy scene's light) is measured
@@ -436,16 +392,65 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // is measured kFinalMeasurements times, and only those measurements speak for the challenger (pilotSwitches).
     // Every measurement of every round is the same size.
     constexpr int kFinalMeasurements = 3;
-    std::size_t measurements = 0;
+    std::size_t measurements = 0, ownMeasurements = 0;
     for (std::size_t m = planned;; m = (m + 1) / 2)
     {
         measurements += m == planned ? 1 : 0; // the first round's own twice (kOwnSeedSlot)
+        ownMeasurements += (m == planned ? 1 : 0) + (m <= 2 ? kFinalMeasurements : 1);
         if (m <= 2)
         {
             measurements += m * kFinalMeasurements;
             break;
         }
         measurements += m;
+    }
+    // The plan's time per path: the candidates', not the own's alone, by a render of each at the probe's second size,
+    // each weighed by its share of the search's measurements (the own's known, the others' alike), on a CPU (a GPU
+    // compiles a pipeline for each strategy's first render, and its renders cost its host 7-14 ms each) where the
+    // host adds little to each render and the renders take a quarter of the budget at most. Planned by the own's, a
+    // search whose own is cheap per path ran past its budget: on a CPU's rtrol-cornell-box (book 3's mixture; the
+    // nee-mis candidates 2-3.5x its time per path) 0.35-0.41 s of the engine's clock for a budget of 0.2 s, and auto
+    // lost 12 % to its pilot, though it chose the best 4 of 4. Each candidate's ratio is held to [1/4, 4], and a
+    // candidate's render stopped at 4x the own's time counts 4: one past 4x the own's share is stopped in the search
+    // too (timeLimit below). (A bound on both costs together, a tenth of the budget, sat at a CPU's veach-mis pilots'
+    // size: two seeds of four took the cost probes and planned 40 spp a measurement, both halves, two did not and
+    // planned 14-16.)
+    RenderCost planCost = cost;
+    if (const double n = double(planned), budgetMs = choice.budgetSeconds * 1e3;
+        engine.kind() != EngineKind::Gpu && n * hostExtraMs <= 0.05 * budgetMs &&
+        n * 2.0 * probes[1].ms <= 0.25 * budgetMs)
+    {
+        RenderSettings ownProbe = large;
+        ownProbe.spp = probes[1].spp;
+        auto perPath = [&](double renderMs, int trueSpp) {
+            return std::max(renderMs - cost.ms(probes[1].pixels, 0.0), 0.25 * renderMs) /
+                   (probes[1].pixels * double(std::max(trueSpp, 1)));
+        };
+        const double ownPerPath = perPath(probes[1].ms, ownProbe.trueSpp());
+        const auto limit = std::chrono::nanoseconds(static_cast<std::int64_t>(std::max(4.0 * probes[1].ms, 1.0) * 1e6));
+        double others = 0.0;
+        for (std::size_t k = 1; k < grid.size(); ++k)
+        {
+            RenderRequest probe = request;
+            probe.settings = grid[k].applyTo(ownProbe);
+            const Measurement probed = measure(engine, probe, nullptr, limit, true);
+            if (probed.cancelled && !probed.timedOut)
+            {
+                choice.cancelled = true;
+                choice.chosen = Strategy::of(request.settings);
+                return choice;
+            }
+            const double ms = probed.cancelled ? probed.wallMs : probed.ms();
+            choice.pilotMs += ms;
+            choice.probeMs += ms;
+            others += probed.timedOut || !(ownPerPath > 0.0)
+                          ? (probed.timedOut ? 4.0 : 1.0)
+                          : std::clamp(perPath(ms, probed.spp) / ownPerPath, 0.25, 4.0);
+        }
+        others /= n - 1.0;
+        const double ownShare = double(ownMeasurements) / double(measurements);
+        choice.candidatesCostScale = ownShare + (1.0 - ownShare) * others;
+        planCost.msPerPath *= choice.candidatesCostScale;
     }
     // A half's share of the budget on the engine's clock, but no more than the search's guard (twice the budget, on
     // the host's clock) leaves it beside each render's host time beyond the engine's (its set-up and read-back, the
@@ -575,7 +580,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // the host's clock, where that is more: a machine loaded by other work slows every candidate (lavapipe beside
     // a test suite took every nee-mis candidate of rtrol-cornell-box past 4x its share, and the pilot kept the
     // mixture, half as efficient).
-    const double shareMs = cost.ms(pixelsOf(pilot), pilot.spp); // a half's, as planned
+    const double shareMs = cost.ms(pixelsOf(pilot), pilot.spp); // the own's half, by the probe (not planCost)
     double ownHalfWallMs = 0.0; // the own's slower half in the round
     auto timeLimit = [&] {
         return std::chrono::nanoseconds(

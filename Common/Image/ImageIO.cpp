@@ -14,6 +14,7 @@
 
 #include <spdlog/fmt/fmt.h>
 
+#include "HostThreads.h"
 #include "Image/ParallelDeflate.h"
 
 namespace

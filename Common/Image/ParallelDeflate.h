@@ -6,19 +6,10 @@
 #pragma once
 
 #include <cstddef>
-#include <functional>
 #include <vector>
 
 namespace rt
 {
-/// The number of cores this process may run on (its affinity mask on Linux, else the hardware's threads), at
-/// least 1.
-int usableCores();
-
-/// Runs work(part) for part in [0, parts) on parts threads (the calling thread takes the last) and returns when
-/// all have. Precondition: parts >= 1. An exception thrown by a part is rethrown here.
-void runInParallel(int parts, const std::function<void(int part)>& work);
-
 /// `data` (length bytes) as a zlib stream at compression level `level` (0-9), compressed in `parts` pieces of
 /// equal length on as many threads (parts >= 1; fewer when the data is shorter). Empty on a zlib failure.
 std::vector<unsigned char> deflateInParts(const unsigned char* data, std::size_t length, int level, int parts);
