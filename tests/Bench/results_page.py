@@ -907,11 +907,11 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "    multi 128 4000 2 16384 triangle-lights rect-light-closeup sphere-light-closeup rtrol-cornell-box \\\n"
                   "    many-lights", "## 45.", "2026-11-29"),
                  ("cpu-auto-strategy-4s-1130", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
-                  "the eight light scenes with 8c64545 (the plan by the candidates' mean time per path, each probe "
+                  "the eight light scenes with 8820e05 (the plan by the candidates' time per path, each probe "
                   "twice), 4 fresh recheck seeds against the full comparisons of 1129h and 1129i (copied here): "
-                  "every scene 0.94-1.02x the best but glossy-cornell 0.88x (its best 3 of 4); rtrol-cornell-box "
-                  "0.99x (0.88x), its pilot 138-183 ms of the engine's clock for 0.2 s (350-410 ms); many-lights "
-                  "0.95x, the own 4 of 4 (notebook §47)",
+                  "every scene 0.90-0.96x the best, no point value below 0.9x; rtrol-cornell-box 0.96x (0.88x), its "
+                  "pilot 170 ms of the engine's clock for 0.2 s (350-410 ms); many-lights 0.95x (0.85x), the own 4 of "
+                  "4 (notebook §47)",
                   "RECHECK_ONLY=1 RECHECK_SEEDS=4 bash tests/Bench/auto_strategy.sh build/bin OUT multi 128 4000 2 16384 \\\n"
                   "    cornell-box-lights glossy-cornell veach-mis many-lights rect-light-closeup sphere-light-closeup \\\n"
                   "    triangle-lights rtrol-cornell-box  # OUT: the full comparisons' CSV and references", "## 47.",
