@@ -5,9 +5,9 @@
 //
 // The pilot: three probe renders of the scene's strategy (each twice, the faster kept) time a render's fixed cost, a
 // pixel's and a path's (RenderCost), and so estimate the render and plan the pilot's renders; the budget is a
-// fraction of that estimate (5 % by default), at most a few seconds. Where a render costs the host little beside the
-// budget (a CPU's), one more render of each other candidate scales the plan's time per path to the candidates' mean
-// (candidatesCostScale). Every frame of the pilot runs what the render will run (the GPU's
+// fraction of that estimate (5 % by default), at most a few seconds. On a CPU engine, where its renders cost little
+// beside the budget, one more render of each other candidate scales the plan's time per path to the candidates',
+// each weighed by its share of the search's measurements (candidatesCostScale). Every frame of the pilot runs what the render will run (the GPU's
 // integrator for the render's paths: RenderEngine::setRepresentedPaths), each in one batch. Every candidate is
 // prepared (a GPU's pipelines compiled) before the budget's clock starts. Then every combination of the candidates
 // (strategyGrid: a setting a strategy does not use is not varied), the scene's own first, each rendered as two
@@ -166,8 +166,9 @@ struct AutoChoice
     double overheadMs = 0.0; // a half's fixed and per-pixel cost by the time model, taken off the candidates' times
     double hostExtraMs = 0.0; // a probe's render on the host's clock less the engine's (the least of the probe's)
     double probeMs = 0.0; // the probe's renders (each twice) and the candidates' cost probes, on the engine's clock
-    /// The candidates' mean time per path over the own's, by a render of each at the probe's second size, which
-    /// scales the plan's (1 where those renders would cost the host too much beside the budget: a GPU's).
+    /// The candidates' time per path over the own's, by a render of each at the probe's second size, weighed by
+    /// their shares of the search's measurements: the plan's scale (1 on a GPU, or where those renders would cost
+    /// too much beside the budget).
     double candidatesCostScale = 1.0;
     int timingWidth = 0; // the timing frames (the final round's, or the guard's fallback's), where planned (0: none);
                          // their height is the image's
