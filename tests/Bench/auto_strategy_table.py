@@ -134,8 +134,12 @@ def pilots(out):
                     mine = next((c for c in rows if c["strategy"] == own), None)
                     if not mine or own not in full:
                         continue
+                    scale = choice.get("candidates_cost_scale", 1.0)  # not in the results of 2026-11-29 and before
+                    planned = "" if scale == 1.0 else f", planned at {scale:.2f}x the own's time per path"
                     print(f"\n{scene}, {table.stem}: chose {choice['chosen']}; pilot {choice['pilot_width']}x"
-                          f"{choice['pilot_height']}, {choice['pilot_spp']} spp a measurement\n")
+                          f"{choice['pilot_height']}, {choice['pilot_spp']} spp a measurement, "
+                          f"{choice['pilot_ms']:.0f} ms on the engine's clock of a {choice['budget_seconds']:g} s "
+                          f"budget{planned}\n")
                     print("| candidate | measurements | time/own: pilot, comparison | error/own: pilot, comparison | "
                           "efficiency/own: pilot, comparison | |")
                     print("|---|---:|---:|---:|---:|---|")

@@ -221,7 +221,7 @@ pilot)
                 "$bin/ray-tracing-gpu" --headless --strategy auto --strategy-cache off --scene "$scene" --width 600 \
                     --spp "$spp" --seed "$seed" --pilot-budget "${PILOT_BUDGET:-0.05}" --stats "$stats" 2>&1 |
                     grep -v "^\[" | tail -20
-                python3 -c "import json,sys; c=json.load(open(sys.argv[1]))['strategy_choice']; print({k: c[k] for k in ('render_cost', 'half_overhead_ms', 'pilot_frame_configuration', 'pilot_width', 'pilot_spp', 'budget_seconds', 'pilot_ms', 'too_short', 'budget_spent', 'probe_host_extra_ms', 'prepare_seconds', 'search_seconds', 'search_render_host_seconds', 'search_tracing_host_seconds', 'search_scoring_seconds')})" "$stats"
+                python3 -c "import json,sys; c=json.load(open(sys.argv[1]))['strategy_choice']; print({k: c[k] for k in ('render_cost', 'half_overhead_ms', 'pilot_frame_configuration', 'pilot_width', 'pilot_spp', 'budget_seconds', 'pilot_ms', 'too_short', 'budget_spent', 'probe_host_extra_ms', 'probe_ms', 'candidates_cost_scale', 'prepare_seconds', 'search_seconds', 'search_render_host_seconds', 'search_tracing_host_seconds', 'search_scoring_seconds')})" "$stats"
             done
         done
     done
