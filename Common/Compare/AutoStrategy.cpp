@@ -297,6 +297,12 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
 {
     const auto start = std::chrono::steady_clock::now();
     AutoChoice choice;
+    // Ctrl-C: the request's own strategy, unmeasured.
+    auto cancelled = [&] {
+        choice.cancelled = true;
+        choice.chosen = Strategy::of(request.settings);
+        return choice;
+    };
     // Every combination of the lists (what a strategy does not use kept once: strategyGrid), the request's own
     // first: it is the one to beat.
     std::vector<Strategy> grid = strategyGrid(candidates, request.settings);
@@ -365,11 +371,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         const double hostMs =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - probeStart).count();
         if (probed.cancelled)
-        {
-            choice.cancelled = true;
-            choice.chosen = Strategy::of(request.settings);
-            return choice;
-        }
+            return cancelled();
         choice.pilotMs += probed.ms();
         choice.probeMs += probed.ms();
         probes[i].ms = probes[i].ms > 0.0 ? std::min(probes[i].ms, probed.ms()) : probed.ms();
@@ -435,17 +437,14 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             probe.settings = grid[k].applyTo(ownProbe);
             const Measurement probed = measure(engine, probe, nullptr, limit, true);
             if (probed.cancelled && !probed.timedOut)
-            {
-                choice.cancelled = true;
-                choice.chosen = Strategy::of(request.settings);
-                return choice;
-            }
+                return cancelled();
             const double ms = probed.cancelled ? probed.wallMs : probed.ms();
             choice.pilotMs += ms;
             choice.probeMs += ms;
-            others += probed.timedOut || !(ownPerPath > 0.0)
-                          ? (probed.timedOut ? 4.0 : 1.0)
-                          : std::clamp(perPath(ms, probed.spp) / ownPerPath, 0.25, 4.0);
+            if (probed.timedOut)
+                others += 4.0;
+            else
+                others += ownPerPath > 0.0 ? std::clamp(perPath(ms, probed.spp) / ownPerPath, 0.25, 4.0) : 1.0;
         }
         others /= n - 1.0;
         const double ownShare = double(ownMeasurements) / double(measurements);
@@ -894,9 +893,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     };
     auto cancelledChoice = [&] {
         stopClocks();
-        choice.cancelled = true;
-        choice.chosen = Strategy::of(request.settings);
-        return choice;
+        return cancelled();
     };
     if (!finished)
         return cancelledChoice();
