@@ -963,6 +963,20 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "comparison: at the switch's 10 %) (notebook §46)",
                   "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=glossy-cornell \\\n"
                   "    bash tests/Bench/device_run.sh auto  # and SCENES=cornell-box-lights", "## 46.", "2026-11-29"),
+                 ("h200-auto-strategy-8s-1130", "NVIDIA H200, driver 580",
+                  "600 px wide, each strategy for 8 s, 1 seed for the full comparison, 4 recheck seeds, 1713885 (the "
+                  "CPU's cost probes, which a GPU's pilot skips; every probe render twice): the four light scenes "
+                  "without a row of the current pilot: rect-light-closeup 0.95x the best, sphere-light-closeup 0.94x "
+                  "(their own the best, kept 4 of 4), triangle-lights 0.94x, rtrol-cornell-box 0.94x (notebook §48)",
+                  "LEAN=1 bash tests/Bench/device_carry.sh  # then on the device:\n"
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 \\\n"
+                  "    SCENES=\"rect-light-closeup sphere-light-closeup\" bash tests/Bench/device_run.sh auto\n"
+                  "# and SCENES=triangle-lights, SCENES=rtrol-cornell-box (one run each)", "## 48.", "2026-11-30"),
+                 ("h200-auto-strategy-5s-1130", "NVIDIA H200, driver 580",
+                  "the same build, each strategy for 5 s and a reference of 32,768 spp (what the device's budget "
+                  "left): veach-mis 0.96x the best, its own kept 4 of 4 (notebook §48)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=5000 SEEDS=1 REF_SPP=32768 SCENES=veach-mis \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 48.", "2026-11-30"),
                  ("h200-auto-strategy-8s-1129k", "NVIDIA H200, driver 580",
                   "glossy-cornell with ad00ecb (a search the guard stops before its final round decides on timing "
                   "frames taken then): 0.92x the best, its best 4 of 4 (one pilot decided after the guard) "
