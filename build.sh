@@ -100,7 +100,7 @@ build() {
 main_job() {
     mkdir -p out
     # 512 spp at 600x600 takes about a minute on a 2-core machine of the CI kind (docs/notebook/PERFORMANCE.md).
-    echo "== main job: cornell-box-lights, 600x600, 512 spp, depth 50, multi-core CPU"
+    echo "== main job: cornell-box-lights, 600x600, 512 spp, depth 50, multi-core CPU, the strategy a pilot chooses"
     "$BUILD_DIR/bin/ray-tracing-cpu" --headless --scene cornell-box-lights --width 600 --spp 512 --depth 50 \
         --engine multi --output out/cornell-box-lights.png --hdr out/cornell-box-lights.pfm \
         --stats out/cornell-box-lights.json

@@ -119,17 +119,23 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
         ->check(CLI::Range(kMinRoughnessScale, kMaxRoughnessScale))
         ->type_name("X");
     app.add_option("--strategy", o.strategy,
-                   "Headless and in both windows: scene renders with the scene's estimator, light "
-                   "sampler, light selection and pixel sampling (and the flags given); auto first runs a short pilot on the render's engine that measures "
-                   "the efficiency 1/(relMSE x time) of every combination of the candidates (nee-mis and mixture; area, "
-                   "solid-angle, projected and, for quad and triangle lights, projected-exact; every light selection "
-                   "with two lights or more; the pixel sampling stays the scene's), renders with the best where its "
-                   "lead over the scene's own is beyond the pilot's noise and 10 % (a render too short for a pilot keeps "
-                   "the scene's own), logs the pilot's table and "
-                   "records it in --stats (strategy_choice); a choice is kept for the next render (--strategy-cache). A setting given as a flag is not varied. With --compare: "
-                   "adds a row 'auto' over the same candidates, its time including the pilot's")
+                   "auto (the default of a headless render) first runs a short pilot on the render's engine that "
+                   "measures the efficiency 1/(relMSE x time) of every combination of the candidates (nee-mis and "
+                   "mixture; area, solid-angle, projected and, for quad and triangle lights, projected-exact; every "
+                   "light selection with two lights or more; the pixel sampling stays the scene's), renders with the "
+                   "best where its lead over the scene's own is beyond the pilot's noise and 10 % (a render too short "
+                   "for a pilot keeps the scene's own), logs the pilot's table and records it in --stats "
+                   "(strategy_choice); a choice is kept for the next render (--strategy-cache). A setting given as a "
+                   "flag is not varied, nor an estimator the pilot does not choose among (bsdf, nee: kept as asked; "
+                   "restir-di: no pilot). scene renders with the scene's estimator, light sampler, light selection and "
+                   "pixel sampling (and the flags given), the same image for the same seed on every machine. The "
+                   "windows open on scene (their first frame at once) and offer the pilot as a button; a given auto "
+                   "opens them on its choice. Over mpirun's ranks the default is scene (one process chooses; a given "
+                   "auto is refused there). With --compare: a given auto adds a row 'auto' over the same candidates, "
+                   "its time including the pilot's")
         ->capture_default_str()
-        ->check(CLI::IsMember({"scene", "auto"}));
+        ->check(CLI::IsMember({"scene", "auto"}))
+        ->each([&o](const std::string&) { o.strategyGiven = true; });
     app.add_option("--pilot-budget", o.pilotBudget,
                    "With --strategy auto: the pilot's time as a fraction of the render's estimated time (from a "
                    "probe render), 0.001 to 1")

@@ -40,7 +40,11 @@ struct CommonOptions
     std::optional<std::string> fresnel; // schlick | exact; empty: each dielectric's own
     float roughnessScale = 1.0f; // in [kMinRoughnessScale, kMaxRoughnessScale] (CLI11 checks)
     bool quiet = false;
-    std::string strategy = "scene"; // --strategy: scene (the scene's defaults and the flags) | auto (a pilot chooses)
+    /// --strategy: auto (a pilot chooses; the default) | scene (the scene's defaults and the flags).
+    std::string strategy = "auto";
+    /// --strategy was given: the default auto gives way to the scene's own where a pilot cannot run (over mpirun's
+    /// ranks) and adds no row to --compare; a given auto refuses the first and adds the row.
+    bool strategyGiven = false;
     double pilotBudget = 0.05; // --pilot-budget: the pilot's share of the render's estimated time
     double pilotMaxSeconds = 2.0; // --pilot-max-seconds
     std::string strategyCache; // --strategy-cache: a folder, or off; empty: the default (Compare/StrategyCache.h)

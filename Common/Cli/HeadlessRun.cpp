@@ -171,14 +171,23 @@ void mergeShares(std::vector<double> sums, cluster::Job& job, const cluster::Ver
 } // namespace
 
 int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& asked, const CommonOptions& o,
-                const RequestChooser& choose)
+                const RequestChooser& chooser)
 {
     cluster::Job& job = cluster::job();
     if (job.root())
         checkOutputPaths(o); // root alone writes (on its host's folders)
+    RequestChooser choose = chooser;
     if (job.distributed() && choose)
-        throw UsageError("--strategy auto chooses on one process: run it without mpirun, then render the strategy "
-                         "it names on the ranks");
+    {
+        // A pilot measures one process's engine; the ranks must render one strategy, so none chooses.
+        if (o.strategyGiven)
+            throw UsageError("--strategy auto chooses on one process: run it without mpirun, then render the "
+                             "strategy it names on the ranks");
+        if (job.root())
+            spdlog::info("over {} ranks: the scene's own strategy (--strategy auto chooses on one process)",
+                         job.size());
+        choose = {};
+    }
     if (job.distributed() && 3ull * std::uint64_t(asked.settings.width) * std::uint64_t(asked.settings.height()) >
                                  std::uint64_t(std::numeric_limits<int>::max()))
         throw UsageError(fmt::format("a {}x{} image is more values than one MPI reduction holds (2^31 - 1): split it "

@@ -34,12 +34,13 @@ struct ChosenRequest
 /// Compare/AutoStrategy.h); runs inside the render's Ctrl-C scope.
 using RequestChooser = std::function<ChosenRequest(RenderEngine& engine, const RenderRequest& request)>;
 
-/// Renders `request` of `scene` (the scene it names, built), or what `choose` makes of it when given, and writes
-/// the outputs, all or none (IO/OutputSet.h). Returns the process exit status: 0, or 130 when cancelled by SIGINT
-/// (nothing is written then). Throws rt::Error for failures (OutputError, with no output left behind, when one
-/// cannot be written).
+/// Renders `request` of `scene` (the scene it names, built), or what `chooser` makes of it when given, and writes
+/// the outputs, all or none (IO/OutputSet.h). Over mpirun's ranks no chooser runs: the default --strategy renders
+/// the request as it is, a given --strategy auto is refused (UsageError). Returns the process exit status: 0, or 130
+/// when cancelled by SIGINT (nothing is written then). Throws rt::Error for failures (OutputError, with no output
+/// left behind, when one cannot be written).
 int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& request, const CommonOptions& options,
-                const RequestChooser& choose = {});
+                const RequestChooser& chooser = {});
 
 /// Parses the command line, then runs `body`, turning every rt::Error and CLI11 parse error into one
 /// "error: ..." line on stderr and the error's exit status. `--help` prints the help and returns 0.

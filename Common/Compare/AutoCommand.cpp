@@ -1,19 +1,27 @@
 #include "Compare/AutoCommand.h"
 
+#include <algorithm>
+
 #include <spdlog/spdlog.h>
 
 #include "Compare/StrategyCache.h"
+#include "Render/SettingsTable.h"
 
 namespace rt::compare
 {
-StrategyLists commandLineCandidates(const Scene& scene, const CommonOptions& options, const StrategyLists& lists)
+std::vector<std::string> fixedSettings(const CommonOptions& options)
 {
     std::vector<std::string> fixed;
     for (const auto& [name, value] : options.settings)
         fixed.push_back(name);
     if (options.pdf)
         fixed.push_back("estimator");
-    return autoCandidates(scene, lists, fixed);
+    return fixed;
+}
+
+StrategyLists commandLineCandidates(const Scene& scene, const CommonOptions& options, const StrategyLists& lists)
+{
+    return autoCandidates(scene, lists, fixedSettings(options));
 }
 
 PilotBudget pilotBudget(const CommonOptions& options)
@@ -28,8 +36,23 @@ RequestChooser strategyChooser(const Scene& scene, const CommonOptions& options)
     const std::filesystem::path cacheDir = options.strategyCache.empty()   ? defaultStrategyCacheDir()
                                            : options.strategyCache == "off" ? std::filesystem::path()
                                                                             : std::filesystem::path(options.strategyCache);
-    return [candidates = commandLineCandidates(scene, options), budget = pilotBudget(options),
+    return [lists = commandLineCandidates(scene, options), budget = pilotBudget(options),
             cache = StrategyCache(cacheDir)](RenderEngine& engine, const RenderRequest& request) {
+        // restir-di's pixels are correlated (reservoirs reused across pixels and iterations): one seed's error, all
+        // a pilot's measurement has, does not score it (--compare takes the mean of several seeds for it).
+        if (request.settings.estimator == Estimator::RestirDi)
+        {
+            spdlog::info("--strategy auto: restir-di's pixels are correlated, which a pilot's error of one seed "
+                         "does not score: the strategy asked, no pilot");
+            return ChosenRequest{request, nullptr, false};
+        }
+        // An estimator the pilot does not choose among (a single strategy, bsdf or nee, from the scene or a flag)
+        // stays: the pilot's estimators combine strategies, and replacing the one asked is not its to do.
+        StrategyLists candidates = lists;
+        const Setting& estimators = *findSetting("estimator");
+        if (const std::vector<std::string> words = listedWords(candidates, estimators, request.settings);
+            std::find(words.begin(), words.end(), estimators.text(request.settings)) == words.end())
+            candidates.erase(std::string(estimators.compareFlag));
         const std::string key = StrategyCache::key(*engine.scene(), request, engine, candidates, budget);
         if (const std::optional<CachedChoice> cached = cache.find(key))
         {

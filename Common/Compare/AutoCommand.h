@@ -13,6 +13,10 @@ namespace rt::compare
 /// included) fixed, and `lists` (--compare's) where given.
 StrategyLists commandLineCandidates(const Scene& scene, const CommonOptions& options, const StrategyLists& lists = {});
 
+/// The strategy settings given as flags (--pdf as the estimator): names of the settings table, which no pilot of the
+/// process varies (the windows' included).
+std::vector<std::string> fixedSettings(const CommonOptions& options);
+
 /// The pilot budget of --pilot-budget and --pilot-max-seconds.
 PilotBudget pilotBudget(const CommonOptions& options);
 

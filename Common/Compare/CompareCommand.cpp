@@ -165,7 +165,7 @@ int runCompare(const CompareFlags& flags, const CommonOptions& options, const En
     for (ErrorMetric m : {ErrorMetric::RelMse, ErrorMetric::TrimmedRelMse, ErrorMetric::Mape, ErrorMetric::Flip})
         if (flags.metric == toString(m))
             c.metric = m;
-    if (options.strategy == "auto")
+    if (options.strategy == "auto" && options.strategyGiven) // the default adds no row: a comparison names its rows
     {
         c.autoCandidates = commandLineCandidates(job.scene, options, flags.strategies);
         c.pilotBudget = pilotBudget(options);

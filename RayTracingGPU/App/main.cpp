@@ -121,10 +121,11 @@ int runWindow(const rt::CommonOptions& options, const WindowFlags& flags, std::o
     w.screenshot = flags.screenshot;
     w.stateJson = flags.stateJson;
     w.savePath = options.output.empty() ? "ray-tracing-gpu.png" : options.output;
-    // --strategy auto: the window opens on the pilot's choice (the panel's Choose strategy, run before the first
-    // frame).
-    w.initial.pilotRequest = options.strategy == "auto";
+    // A given --strategy auto: the window opens on the pilot's choice (the panel's Choose strategy, run before the
+    // first frame). Not by default: the first frame shows at once, not after a pilot's pipelines are compiled.
+    w.initial.pilotRequest = options.strategy == "auto" && options.strategyGiven;
     w.pilotBudget = rt::compare::pilotBudget(options);
+    w.fixedSettings = rt::compare::fixedSettings(options);
     return rt::gpu::gui::runWindow(w, std::move(job.scene));
 }
 #else

@@ -38,7 +38,7 @@ for scene in "$@"; do
     esac
     common=(--scene "$scene" --engines "$engine" --width "$width" --equal-time "$equalMs" --rounds 1)
     # The scene's own strategy, as the stats record it.
-    $app --headless --quiet --scene "$scene" --width 8 --spp 1 --depth 1 --stats "$out/$scene-defaults.json" >/dev/null
+    $app --headless --quiet --strategy scene --scene "$scene" --width 8 --spp 1 --depth 1 --stats "$out/$scene-defaults.json" >/dev/null
     reference="$images/$scene-reference.pfm"
     if [ "${RECHECK_ONLY:-0}" != 1 ] || [ ! -f "$out/$scene.csv" ] || [ ! -f "$reference" ]; then
         $app --compare "${common[@]}" --seeds "$seeds" --reference-spp "$referenceSpp" --strategy auto \

@@ -20,7 +20,7 @@ args=(--compare --scene cornell-box-lights --width "$width" --engines gpu --ligh
 # pipelines the sweep's renders use (else the first command of a fresh machine pays their compilation: 3-4 s).
 for sampler in area projected; do
     for selection in power bvh; do
-        "$bin/ray-tracing-gpu" --headless --quiet --scene cornell-box-lights --width "$width" --spp 1 \
+        "$bin/ray-tracing-gpu" --headless --quiet --strategy scene --scene cornell-box-lights --width "$width" --spp 1 \
             --light-sampler "$sampler" --light-selection "$selection" >/dev/null
     done
 done

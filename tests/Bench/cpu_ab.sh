@@ -20,7 +20,7 @@ grep -v '^\s*\(#\|$\)' "$renders" | while read -r name args; do
             [ "$which" = b ] && bin=$b
             start=$EPOCHREALTIME
             # shellcheck disable=SC2086
-            taskset -c "${CORES:-0}" "$bin" --headless --engine "${ENGINE:-single}" --quiet $args --hdr "$out/$which.pfm" >/dev/null
+            taskset -c "${CORES:-0}" "$bin" --headless --strategy scene --engine "${ENGINE:-single}" --quiet $args --hdr "$out/$which.pfm" >/dev/null
             seconds=$(python3 -c "print(f'{$EPOCHREALTIME - $start:.3f}')")
             if [ "$which" = a ]; then
                 best_a=$(python3 -c "print(min(float('$best_a'), $seconds))")

@@ -34,7 +34,7 @@ render)
             "bsdf-no-roulette:--estimator bsdf --russian-roulette off")
         for variant in "${variants[@]}"; do
             # shellcheck disable=SC2086
-            "$bin" --headless --quiet --engine multi --scene "$scene" --width "$width" --spp "$spp" ${variant#*:} \
+            "$bin" --headless --quiet --strategy scene --engine multi --scene "$scene" --width "$width" --spp "$spp" ${variant#*:} \
                 --hdr "$out/$scene-${variant%%:*}.pfm" >/dev/null
             n=$((n + 1))
         done

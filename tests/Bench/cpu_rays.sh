@@ -8,6 +8,6 @@ app=$1 renders=$2 out=$3
 mkdir -p "$out"
 grep -v '^\s*\(#\|$\)' "$renders" | while read -r name args; do
     # shellcheck disable=SC2086 # the render's flags split on spaces
-    "$app" --headless --quiet --engine "${ENGINE:-multi}" $args --stats "$out/$name.json" >/dev/null
+    "$app" --headless --quiet --strategy scene --engine "${ENGINE:-multi}" $args --stats "$out/$name.json" >/dev/null
 done
 python3 "$(dirname "$0")/rays_table.py" --cpu "$out" "$renders"

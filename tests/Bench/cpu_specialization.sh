@@ -20,7 +20,7 @@ for scene in "${scenes[@]}"; do
     declare -A best=()
     for ((r = 0; r < rounds; ++r)); do
         for mode in off on; do
-            "${pin[@]}" "$bin/ray-tracing-cpu" --headless --engine single --scene "$scene" --width "$width" \
+            "${pin[@]}" "$bin/ray-tracing-cpu" --headless --strategy scene --engine single --scene "$scene" --width "$width" \
                 --spp "$spp" --specialize "$mode" --hdr "$out/$scene-$mode.pfm" --stats "$out/$scene-$mode.json" \
                 2>"$out/$scene-$mode.log" >/dev/null
             s=$(python3 -c "import json; print(json.load(open('$out/$scene-$mode.json'))['render_seconds'])")

@@ -74,12 +74,12 @@ echo "CPU: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
 
 case "$mode" in
 tests)
-    "$bin/ray-tracing-gpu" --headless --validation --scene rtrol-cornell-glass --width 200 --spp 16 \
+    "$bin/ray-tracing-gpu" --headless --strategy scene --validation --scene rtrol-cornell-glass --width 200 --spp 16 \
         --output "$out/glass.png" --stats "$out/glass.json"
     "$bin/rt_gpu_tests" --gtest_brief=1 --gtest_filter='-Heavy/*' 2>&1 | tail -40
     bash tests/Cli/bad_input.sh "$bin/ray-tracing-gpu" | grep -v "^ok"
     bash tests/Cli/heatmap.sh "$bin/ray-tracing-gpu"
-    "$bin/ray-tracing-gpu" --headless --quiet --scene rtrol-cornell-glass --width 400 --spp 64 --heatmap "$out/glass-cost.png" \
+    "$bin/ray-tracing-gpu" --headless --quiet --strategy scene --scene rtrol-cornell-glass --width 400 --spp 64 --heatmap "$out/glass-cost.png" \
         --stats "$out/glass-cost.json" --output "$out/glass-cost-image.png"
     RT_GLTF_MODELS=$PWD/.devcarry/gltf bash tests/Cli/scene_files.sh "$bin/ray-tracing-gpu" . | grep -v "^ok"
     ;;
@@ -100,7 +100,7 @@ table)
 estimators)
     # One reference for every estimator (nee-mis, the least noisy, at 50,000 spp), then each estimator's
     # ladder against it: relMSE against GPU time.
-    "$bin/ray-tracing-gpu" --headless --quiet --scene cornell-box-lights --width 600 --depth 50 \
+    "$bin/ray-tracing-gpu" --headless --quiet --strategy scene --scene cornell-box-lights --width 600 --depth 50 \
         --estimator nee-mis --spp 50000 --seed 7777 --hdr "$out/reference.pfm" --stats "$out/reference.json"
     for e in mixture nee nee-mis; do
         "$bin/ray-tracing-gpu" --compare --quiet --scene cornell-box-lights --width 600 --depth 50 \

@@ -25,7 +25,7 @@ if [ -n "${STRATEGIES:-}" ]; then IFS=';' read -r -a strategies <<<"$STRATEGIES"
 for scene in "$@"; do
     reference="$out/$scene-reference.pfm"
     if [ "$engine" = gpu ]; then app="$bin/ray-tracing-gpu"; else app="$bin/ray-tracing-cpu --engine $engine"; fi
-    $app --headless --quiet --scene "$scene" --width "$width" --estimator nee-mis --spp "$referenceSpp" \
+    $app --headless --quiet --strategy scene --scene "$scene" --width "$width" --estimator nee-mis --spp "$referenceSpp" \
         --seed 7777 --hdr "$reference" --stats "$out/$scene-reference.json" >/dev/null
     for s in "${strategies[@]}"; do
         set -- $s

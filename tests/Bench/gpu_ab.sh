@@ -30,7 +30,7 @@ grep -v '^\s*\(#\|$\)' "$renders" | while read -r name args; do
             dir=$a flags=$args_a
             [ "$side" = b ] && dir=$b flags=$args_b
             # shellcheck disable=SC2086 # the render's flags split on spaces
-            "$dir/ray-tracing-gpu" --headless --quiet $flags --hdr "$out/$name-$side.pfm" \
+            "$dir/ray-tracing-gpu" --headless --quiet --strategy scene $flags --hdr "$out/$name-$side.pfm" \
                 --stats "$out/$name-$side-$r.json" >/dev/null
         done
     done

@@ -15,10 +15,10 @@ ranks=${*:-2 4}
 width=${WIDTH:-1200}
 spp=${SPP:-65536}
 mkdir -p "$out"
-args=(--headless --quiet --scene cornell-box-lights --width "$width" --spp "$spp" --seed 40)
+args=(--headless --quiet --strategy scene --scene cornell-box-lights --width "$width" --spp "$spp" --seed 40)
 # The driver's pipeline cache, once, out of every timed command: one sample per pixel of the same image runs the
 # same integrator (the wavefront, from 2^20 camera paths) and so compiles the same pipelines.
-"$bin/ray-tracing-gpu" --headless --quiet --scene cornell-box-lights --width "$width" --spp 1 >/dev/null
+"$bin/ray-tracing-gpu" --headless --quiet --strategy scene --scene cornell-box-lights --width "$width" --spp 1 >/dev/null
 for n in $ranks; do
     start=$(date +%s.%N)
     if [ "$n" = 1 ]; then

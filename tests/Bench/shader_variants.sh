@@ -23,7 +23,7 @@ grep -v '^\s*\(#\|$\)' "$renders" | while read -r name args; do
         i=0
         for v in "$@"; do
             # shellcheck disable=SC2086 # the render's flags split on spaces
-            "$bin/ray-tracing-gpu" --headless --quiet $args --shader-dir "$v" --stats "$out/$name-$i-$r.json" \
+            "$bin/ray-tracing-gpu" --headless --quiet --strategy scene $args --shader-dir "$v" --stats "$out/$name-$i-$r.json" \
                 --hdr "$out/$name-$i.pfm" </dev/null >/dev/null
             i=$((i + 1))
         done

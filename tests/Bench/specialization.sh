@@ -29,7 +29,7 @@ for scene in "${scenes[@]}"; do
     declare -A best=()
     for ((r = 0; r < rounds; ++r)); do
         for mode in "${modes[@]}"; do
-            "$bin/ray-tracing-gpu" --headless --quiet --scene "$scene" --width "$width" --spp "$spp" \
+            "$bin/ray-tracing-gpu" --headless --quiet --strategy scene --scene "$scene" --width "$width" --spp "$spp" \
                 --specialize "$mode" --hdr "$out/$scene-$mode.pfm" --stats "$out/$scene-$mode.json" >/dev/null
             s=$(gpuSeconds "$out/$scene-$mode.json")
             best[$mode]=$(python3 -c "import sys; print(min(float(sys.argv[1]), float(sys.argv[2])))" "$s" "${best[$mode]:-inf}")

@@ -14,7 +14,7 @@ mkdir -p "$out"
 echo "$scene ${width}x${width}, $spp spp, --estimator $estimator, $rounds rounds"
 for ((r = 1; r <= rounds; ++r)); do
     for mode in off strategy on; do
-        "$bin/ray-tracing-gpu" --headless --quiet --scene "$scene" --width "$width" --spp "$spp" \
+        "$bin/ray-tracing-gpu" --headless --quiet --strategy scene --scene "$scene" --width "$width" --spp "$spp" \
             --estimator "$estimator" --specialize "$mode" --hdr "$out/figure-$mode.pfm" \
             --stats "$out/figure-$mode-$r.json" >/dev/null
     done

@@ -20,8 +20,8 @@ settings=(--scene "$scene" --width "$width" --spp "$spp" --seed 1)
 echo "# $(date -u +%F) $(nproc) cores, $scene ${width} px, $spp spp, $rounds rounds: render seconds, headless and window"
 for round in $(seq 1 "$rounds"); do
     for engine in single multi; do
-        "$app" --headless "${settings[@]}" --engine "$engine" --output "$work/h.png" --stats "$work/h.json" >/dev/null 2>&1
-        "${display[@]}" "$app" "${settings[@]}" --engine "$engine" --actions wait --frames 1 ${WINDOW_FLAGS:-} \
+        "$app" --headless --strategy scene "${settings[@]}" --engine "$engine" --output "$work/h.png" --stats "$work/h.json" >/dev/null 2>&1
+        "${display[@]}" "$app" --strategy scene "${settings[@]}" --engine "$engine" --actions wait --frames 1 ${WINDOW_FLAGS:-} \
             --state-json "$work/w.json" 2>/dev/null
         python3 - "$work/h.json" "$work/w.json" "$engine" "$round" >>"$work/pairs.txt" <<'PY'
 import json, sys

@@ -2,8 +2,8 @@
 # Usage: auto_strategy.sh APP
 # --strategy auto as a user runs it: the pilot's choice is logged and recorded in --stats (strategy_choice), the
 # render uses it, a flag given is never varied, the choice is kept for the next render of the same settings (any
-# seed: no pilot, the same image for the same seed; --strategy-cache off pilots again), --strategy takes only scene
-# and auto, and --compare --strategy auto adds a row "auto" whose JSON holds the pilot's record (a ladder's and an
+# seed: no pilot, the same image for the same seed; --strategy-cache off pilots again), auto is the default,
+# --strategy takes only scene and auto, and --compare --strategy auto (given, not the default) adds a row "auto" whose JSON holds the pilot's record (a ladder's and an
 # equal-time comparison's).
 set -eu
 app=$1
@@ -48,8 +48,48 @@ assert kept["settings"]["light_selection"] == first["settings"]["light_selection
 assert kept["settings"]["seed"] == 5
 assert "cached" not in off["strategy_choice"], "--strategy-cache off read the cache"
 PY
-# --strategy scene (the default) records no choice.
-"$app" --headless --quiet --scene cornell-box-lights --width 8 --spp 1 --depth 2 --stats "$work/b.json" >/dev/null
+# The default is auto: a render too short for a pilot records that it kept the scene's own; --strategy scene records
+# no choice.
+"$app" --headless --quiet --scene cornell-box-lights --width 8 --spp 1 --depth 2 --strategy-cache off \
+    --stats "$work/default.json" >/dev/null
+/usr/bin/python3 - "$work/default.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+c = d["strategy_choice"]
+assert c["too_short"] and c["chosen"].split()[:3] == ["nee-mis", "projected", "bvh"], c
+PY
+# By default as when given: an estimator the pilot does not choose among stays, a scene file's nee (the pilot varies
+# the light selection alone here, the sampler a flag) and restir-di (no pilot: its pixels are correlated).
+"$app" --scene cornell-box-lights --export-scene "$work/nee.json" >/dev/null
+/usr/bin/python3 - "$work/nee.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+d["render"]["estimator"] = "nee"
+json.dump(d, open(sys.argv[1], "w"))
+PY
+# (The CPU's pilot only: which estimator stays is the app's, not the engine's; a GPU compiles a pipeline a candidate.)
+nee=()
+if [ "$2" != gpu ]; then
+    "$app" --headless --quiet --scene "$work/nee.json" --width 24 --spp 4096 --depth 6 --pilot-budget 1 \
+        --pilot-max-seconds 120 --light-sampler solid-angle --sampling random --strategy-cache off \
+        --stats "$work/nee-stats.json" >/dev/null
+    nee=("$work/nee-stats.json")
+fi
+"$app" --headless --quiet --scene cornell-box-lights --width 8 --spp 2 --depth 2 --estimator restir-di \
+    --stats "$work/restir.json" >/dev/null
+/usr/bin/python3 - "$work/restir.json" "${nee[@]}" <<'PY'
+import json, sys
+restir = json.load(open(sys.argv[1]))
+assert "strategy_choice" not in restir and restir["settings"]["estimator"] == "restir-di", restir["settings"]
+for f in sys.argv[2:]:
+    nee = json.load(open(f))
+    c = nee["strategy_choice"]
+    assert not c["too_short"] and len(c["candidates"]) == 3, c
+    assert all(r["strategy"].startswith("nee solid-angle") for r in c["candidates"]), c["candidates"]
+    assert nee["settings"]["estimator"] == "nee", nee["settings"]
+PY
+"$app" --headless --quiet --scene cornell-box-lights --width 8 --spp 1 --depth 2 --strategy scene \
+    --stats "$work/b.json" >/dev/null
 grep -q strategy_choice "$work/b.json" && { echo "--strategy scene recorded a choice"; exit 1; }
 "$app" --headless --quiet --scene cornell-box-lights --width 8 --spp 1 --strategy best >/dev/null 2>"$work/bad.txt" &&
     { echo "--strategy best was accepted"; exit 1; }

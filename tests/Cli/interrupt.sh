@@ -18,14 +18,14 @@ started() { cat "$work/stdout" "$work/stderr" 2>/dev/null | grep -q "acceleratio
 
 # One tiny render of the same settings first: lavapipe compiles the specialised pipeline in it (Mesa's disk
 # cache keeps it), so that no timed render below spends its settle time compiling, which cannot be interrupted.
-"$app" --headless --quiet --scene "$scene" --width 2 --aspect 2 --spp 1 --russian-roulette off >/dev/null 2>&1 || true
+"$app" --headless --quiet --strategy scene --scene "$scene" --width 2 --aspect 2 --spp 1 --russian-roulette off >/dev/null 2>&1 || true
 
 # 2x1 pixels: 2^19 samples per pixel in one batch of a fixed path budget, seconds per row; 64x64: many rows;
 # 200x200: one sample per pixel is seconds on lavapipe, so the GPU engine must cut a batch into bands of rows;
 # 800x800: 24 ms a row there, so even the first band must be shorter than a pass of the interleaved rows.
 for size in ${SIZES:-2 64 200 800}; do
     rm -f "$work"/*
-    "$app" --headless --scene "$scene" --width "$size" --aspect "$((size == 2 ? 2 : 1))" --spp 16777216 --russian-roulette off --output "$work/out.png" --hdr "$work/out.pfm" \
+    "$app" --headless --strategy scene --scene "$scene" --width "$size" --aspect "$((size == 2 ? 2 : 1))" --spp 16777216 --russian-roulette off --output "$work/out.png" --hdr "$work/out.pfm" \
         --stats "$work/out.json" >"$work/stdout" 2>"$work/stderr" &
     pid=$!
     # Wait (at most 120 s) for the scene to be built: a Ctrl-C before the render is the default action's.

@@ -13,9 +13,12 @@ source "$(dirname "$0")/mpi_lib.sh"
 left_behind() { find "$work" -name 'out*' | grep -q .; }
 
 common=(--headless --quiet --scene cornell-box-lights --width 40 --seed 11 --depth 8)
-"$app" "${common[@]}" --spp 7 --hdr "$work/one.pfm" --output "$work/one.png" --stats "$work/one.json" \
-    >/dev/null 2>"$work/stderr" || fail "one process"
-"$app" "${common[@]}" --spp 1 --hdr "$work/one-1spp.pfm" >/dev/null 2>"$work/stderr" || fail "one process, 1 spp"
+# One process renders the scene's own strategy (--strategy scene); the ranks do so by default (a pilot chooses on
+# one process only), and refuse a given --strategy auto (below).
+"$app" "${common[@]}" --strategy scene --spp 7 --hdr "$work/one.pfm" --output "$work/one.png" \
+    --stats "$work/one.json" >/dev/null 2>"$work/stderr" || fail "one process"
+"$app" "${common[@]}" --strategy scene --spp 1 --hdr "$work/one-1spp.pfm" >/dev/null 2>"$work/stderr" ||
+    fail "one process, 1 spp"
 
 same_image() { # A B: bit for bit on the CPU, relMSE < 1e-6 on the GPU (float sums)
     if [ "$kind" = cpu ]; then cmp -s "$1" "$2"; return; fi
@@ -99,6 +102,8 @@ echo "ok: one rank's error"
 # What cannot be split is refused, once.
 mpi -np 2 "$app" "${common[@]}" --spp 4 --estimator restir-di --hdr "$work/out.pfm" >/dev/null 2>"$work/stderr"
 expect_one_error $? "^error: restir-di"
+mpi -np 2 "$app" "${common[@]}" --spp 4 --strategy auto --hdr "$work/out.pfm" >/dev/null 2>"$work/stderr"
+expect_one_error $? "^error: --strategy auto chooses on one process"
 mpi -np 2 "$app" --scene cornell-box-lights >/dev/null 2>"$work/stderr"
 expect_one_error $? "^error: the window runs as one process"
 echo "ok: refusals"

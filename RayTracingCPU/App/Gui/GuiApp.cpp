@@ -20,6 +20,7 @@
 #include "App/Gui/Session.h"
 #include "App/Gui/SettingsPanel.h"
 #include "App/Gui/Theme.h"
+#include "Compare/AutoCommand.h"
 #include "Compare/ReferenceCache.h"
 #include "Error.h"
 #include "Gui/PlotWindow.h"
@@ -53,14 +54,14 @@ public:
     /// `fitToMonitor` for the default size.
     GuiApp(const GuiOptions& options, WindowSize size, bool fitToMonitor, std::optional<ActionScript> script,
            const RenderRequest& initial, std::shared_ptr<const Scene> scene, EngineKind engine, bool chooseStrategy,
-           bool heatmap)
+           bool heatmap, PilotOptions pilot)
         : m_options(options),
           m_window(size, fitToMonitor, "ray-tracing-cpu: light-sampling lab"),
           // The launch render waits for the first frame, and the GPU engine's start for the launch render's end
           // (RenderJob.h): the window's start-up made a 1.1 s multi-core render 10 % slower than headless on 2
           // cores (tests/Bench/window_vs_headless.sh).
           m_job({.enabled = !options.noGpu, .validation = options.validation, .deferred = true}, initial,
-                std::move(scene), [] { GlWindow::wake(); }, compare::defaultReferenceCacheDir(), true),
+                std::move(scene), [] { GlWindow::wake(); }, compare::defaultReferenceCacheDir(), true, std::move(pilot)),
           m_session(m_job, initial, engine, false, chooseStrategy, heatmap)
     {
         m_session.setFont(availableFonts().front().name);
@@ -279,7 +280,9 @@ int runGui(const CommonOptions& options, const std::string& engineName, const Gu
     const RenderSettings& s = initial.settings;
     const WindowSize fitting = defaultWindowSize(s.width, s.height(), DisplaySettings{}.fontSize);
     GuiApp app(gui, size.value_or(fitting), !size, std::move(script), initial,
-               std::make_shared<const Scene>(std::move(job.scene)), *engine, options.strategy == "auto", heatmap);
+               std::make_shared<const Scene>(std::move(job.scene)), *engine,
+               options.strategy == "auto" && options.strategyGiven, heatmap,
+               {.budget = compare::pilotBudget(options), .fixed = compare::fixedSettings(options)});
     return app.run();
 }
 } // namespace rt::gui

@@ -34,9 +34,10 @@ Image combine(const Image& mean, int meanSamples, const Image& estimate, int sam
 
 RenderJob::RenderJob(const GpuStartup::Options& gpu, const RenderRequest& initial,
                      std::shared_ptr<const Scene> initialScene, std::function<void()> wakeUi,
-                     std::filesystem::path referenceCache, bool held)
+                     std::filesystem::path referenceCache, bool held, PilotOptions pilot)
     : m_gpu(gpu), m_scene(std::move(initialScene)), m_sceneKey(initial.scene), m_held(held),
-      m_wakeUi(std::move(wakeUi)), m_referenceCache(std::move(referenceCache)), m_currentScene(initial.scene)
+      m_wakeUi(std::move(wakeUi)), m_referenceCache(std::move(referenceCache)), m_pilot(std::move(pilot)),
+      m_currentScene(initial.scene)
 {
     m_slots[std::size_t(EngineKind::Single)].engine = &m_single;
     m_slots[std::size_t(EngineKind::Multi)].engine = &m_multi;
@@ -225,7 +226,8 @@ void RenderJob::run(const JobRequest& request, std::shared_ptr<RenderControl> co
             setPhase(JobPhase::ChoosingStrategy);
             auto chosen = std::make_shared<StrategyChoice>();
             chosen->asked = request.image;
-            chosen->choice = compare::chooseStrategy(*engine, request.image, compare::autoCandidates(*scene, {}, {}));
+            chosen->choice = compare::chooseStrategy(*engine, request.image,
+                                                     compare::autoCandidates(*scene, {}, m_pilot.fixed), m_pilot.budget);
             job.image.settings = chosen->choice.chosen.applyTo(job.image.settings);
             job.chooseStrategy = false;
             std::lock_guard lock(m_mutex);

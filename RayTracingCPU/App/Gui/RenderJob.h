@@ -113,6 +113,14 @@ struct SceneSummary
     std::uint64_t objects = 0; // primitives and lights: the memory estimate's (Render/MemoryBudget.h)
 };
 
+/// The strategy pilot's budget (--pilot-budget, --pilot-max-seconds) and the strategy settings given as flags, which
+/// it does not vary (Compare/AutoCommand.h).
+struct PilotOptions
+{
+    compare::PilotBudget budget;
+    std::vector<std::string> fixed;
+};
+
 class RenderJob
 {
 public:
@@ -124,7 +132,8 @@ public:
     /// first frame, so that its start-up does not share the CPU with the render it times). A deferred GPU start
     /// (GpuStartup::Options) begins once the first render has ended, or at once for a render on the GPU.
     RenderJob(const GpuStartup::Options& gpu, const RenderRequest& initial, std::shared_ptr<const Scene> initialScene,
-              std::function<void()> wakeUi = {}, std::filesystem::path referenceCache = {}, bool held = false);
+              std::function<void()> wakeUi = {}, std::filesystem::path referenceCache = {}, bool held = false,
+              PilotOptions pilot = {});
     /// Cancels the render in progress and joins the render thread (and the GPU engine's start).
     ~RenderJob();
     RenderJob(const RenderJob&) = delete;
@@ -228,6 +237,7 @@ private:
     std::atomic<int> m_redraws{0}; // of the render in progress
     std::atomic<int> m_redrawsOnInput{0};
     std::filesystem::path m_referenceCache;
+    PilotOptions m_pilot;
     SceneRef m_currentScene; // m_sceneKey, for the UI thread's questions
     std::deque<QueuedReference> m_references; // queued, oldest first; the one rendering stays in it
     bool m_referenceRendering = false;

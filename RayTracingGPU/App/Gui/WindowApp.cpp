@@ -377,7 +377,7 @@ private:
         try
         {
             compare::AutoChoice choice = compare::chooseStrategy(
-                m_engine, request, compare::autoCandidates(*m_scene, {}, {}), m_options.pilotBudget);
+                m_engine, request, compare::autoCandidates(*m_scene, {}, m_options.fixedSettings), m_options.pilotBudget);
             m_state.image.request.settings = choice.chosen.applyTo(m_state.image.request.settings);
             m_state.message =
                 choice.tooShort ? fmt::format("the image is too short to choose a strategy for (a pilot's share of it "

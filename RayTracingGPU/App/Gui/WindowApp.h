@@ -37,6 +37,7 @@ struct WindowOptions
     std::vector<Action> actions;
     std::string savePath; // the panel's initial file name for Save image
     compare::PilotBudget pilotBudget; // the strategy pilot's (--pilot-budget, --pilot-max-seconds)
+    std::vector<std::string> fixedSettings; // the strategy settings given as flags, which the pilot does not vary
 };
 
 /// Opens the window on `scene` and runs until it is closed or `options.frames` have run. Returns the exit

@@ -43,7 +43,7 @@ for ((r = 1; r <= rounds; ++r)); do
     cycles_times+=("$(cycles "$spp" "$out/cycles.pfm")")
     for i in "${!ours[@]}"; do
         # shellcheck disable=SC2086 # the strategy's flags split on spaces
-        "$app" --headless --quiet --engine multi --scene "$scene" --width "$width" --spp "$spp" ${ours[$i]} \
+        "$app" --headless --quiet --strategy scene --engine multi --scene "$scene" --width "$width" --spp "$spp" ${ours[$i]} \
             --hdr "$out/ours-$i.pfm" --stats "$out/ours-$i.json" >/dev/null 2>&1
         our_times[$i]="${our_times[$i]:-} $(python3 -c "import json, sys; print(json.load(open(sys.argv[1]))['render_seconds'])" "$out/ours-$i.json")"
     done

@@ -20,8 +20,8 @@ seconds() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['ren
 headless=()
 window=()
 for i in $(seq "$repeats"); do
-    "$app" --headless --quiet "${render[@]}" --engine single --stats "$work/s.json" >/dev/null 2>&1
-    "$app" --headless --quiet "${render[@]}" --engine multi --stats "$work/m.json" >/dev/null 2>&1
+    "$app" --headless --quiet --strategy scene "${render[@]}" --engine single --stats "$work/s.json" >/dev/null 2>&1
+    "$app" --headless --quiet --strategy scene "${render[@]}" --engine multi --stats "$work/m.json" >/dev/null 2>&1
     s=$(seconds "$work/s.json")
     m=$(seconds "$work/m.json")
     headless+=("$(python3 -c "print($s / $m)")")

@@ -19,8 +19,10 @@ check_run strategy_pilot "$status" "$work/app.err"
     --actions "wait;choose-strategy;wait;estimator=mixture;wait" --frames 2 \
     --state-json "$work/overridden.json" 2>"$work/app2.err" || status=$?
 check_run strategy_pilot_override "$status" "$work/app2.err"
-# --strategy auto opens the window on the pilot's choice.
+# A given --strategy auto opens the window on the pilot's choice; a setting given as a flag is not varied, and the
+# pilot takes --pilot-max-seconds.
 "$app" --no-gpu --window-size 1100x760 --scene rtrol-cornell-box --width 96 --spp 1024 --depth 8 --strategy auto \
+    --light-sampler solid-angle --pilot-max-seconds 0.5 \
     --actions "wait" --frames 2 --state-json "$work/launch.json" 2>"$work/app3.err" || status=$?
 check_run strategy_pilot_launch "$status" "$work/app3.err"
 python3 - "$work" <<'PY'
@@ -40,6 +42,10 @@ assert over["panel"]["estimator"] == "mixture" and over["image_matches_panel"], 
 assert over["strategy_choice"] is not None, "the override must keep the pilot's record"
 launch = json.load(open(f"{work}/launch.json"))
 assert launch["strategy_choice"] is not None and launch["image_matches_panel"], launch
+rows = launch["strategy_choice"]["candidates"]
+assert len(rows) >= 2 and all(r["strategy"].split()[1] == "solid-angle" or r["strategy"].startswith("mixture")
+                              for r in rows), rows
+assert launch["strategy_choice"]["budget_seconds"] <= 0.5, launch["strategy_choice"]["budget_seconds"]
 PY
 python3 "$here/window_checks.py" settled "$work/chosen.json"
 keep_pngs "$work"
