@@ -12,6 +12,10 @@ where it exists. Standard library only.
                                             the full comparison: per candidate, its time per path, error per path
                                             and efficiency over the scene's own's, by the pilot and by the
                                             comparison; the final round's challenger and the choice marked
+    auto_strategy_table.py --leads OUT_DIR...  each pilot's final-round challenger: its lead over the own (the ratio
+                                            of their final efficiencies), two standard errors of its log, the same
+                                            without the own's worst pair, whether the switch would take it at 10 %
+                                            and at 5 %, and the comparison's ratio of the two (the true lead)
 """
 import csv
 import math
@@ -160,7 +164,50 @@ def pilots(out):
                               f"{f[2] / f0[2]:.2f} | {mark} |")
 
 
+def leads(outs):
+    """One line per pilot's final-round challenger (see the module's docstring): whether a switch rule at another
+    minimum lead would have decided otherwise, against the full comparison's ratio."""
+    print("| results | scene | seed | challenger | lead | 2 s.e. | trimmed lead | 2 s.e. | switch at 10 % | at 5 % | "
+          "comparison's lead | chosen |")
+    print("|---|---|---:|---|---:|---:|---:|---:|---|---|---:|---|")
+    for out in outs:
+        for path in sorted(Path(out).glob("*.csv")):
+            if "recheck" in path.stem:
+                continue
+            scene = path.stem
+            full = per_path(path, reference_relmse(path))
+            own = strategy_of(json.load((Path(out) / f"{scene}-defaults.json").open())["settings"])
+            for table in sorted(Path(out).glob(f"{scene}-auto-*.json")):
+                for row in json.load(table.open())["rows"]:
+                    for choice in row.get("strategy_choice", []):
+                        mine = next((c for c in choice["candidates"] if c["strategy"] == own), None)
+                        if not mine or mine["final_efficiency"] <= 0 or own not in full:
+                            continue
+                        for c in choice["candidates"]:
+                            if c is mine or c["final_measurements"] == 0 or c["final_relmse_ratio_to_own"] <= 0:
+                                continue
+                            lead = c["final_efficiency"] / mine["final_efficiency"]
+                            error = c["final_relmse_ratio_standard_error"] / c["final_relmse_ratio_to_own"]
+                            trimmed = c["final_relmse_ratio_without_owns_worst"]
+                            t_lead = lead * c["final_relmse_ratio_to_own"] / trimmed if trimmed > 0 else None
+                            t_error = (c["final_relmse_ratio_without_owns_worst_standard_error"] / trimmed
+                                       if trimmed > 0 else None)
+
+                            def switches(minimum):  # AutoStrategy.cpp's pilotSwitches, on both pairings
+                                ok = math.log(lead) > max(math.log(minimum), 2 * error)
+                                return ok and (t_lead is None or math.log(t_lead) > max(math.log(minimum), 2 * t_error))
+                            true = full[c["strategy"]][2] / full[own][2] if c["strategy"] in full else float("nan")
+                            t = f"{t_lead:.3f} | {2 * t_error:.3f}" if t_lead else "- | -"
+                            print(f"| {Path(out).name} | {scene} | {table.stem.rsplit('-', 1)[1]} | {c['strategy']} | "
+                                  f"{lead:.3f} | {2 * error:.3f} | {t} | {'yes' if switches(1.1) else 'no'} | "
+                                  f"{'yes' if switches(1.05) else 'no'} | {true:.2f} | "
+                                  f"{'yes' if choice['chosen'] == c['strategy'] else 'no'} |")
+
+
 def main():
+    if sys.argv[1] == "--leads":
+        leads(sys.argv[2:])
+        return
     if sys.argv[1] == "--pilots":
         pilots(sys.argv[2])
         return

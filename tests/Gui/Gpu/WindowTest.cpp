@@ -589,10 +589,11 @@ TEST(GpuWindow, StrategyPilotChoosesOnTheGpuAndASettingOverridesIt)
     // and opens on its choice; a setting changed afterwards overrides it. rtrol-cornell-box's own strategy is book
     // 3's mixture, which nee-mis outdoes about 2x in efficiency on every engine measured (docs/RESULTS.md §9): the
     // pilot must leave it. The spp make the render's estimate long, so that the budget (all of it, 20 s at most)
-    // holds lavapipe's compilation of the candidates' pipelines.
+    // holds lavapipe's compilation of the candidates' pipelines. The light sampler given as a flag is not varied.
     const ::rt::test::ScratchDir dir;
     RT_RUN_WINDOW(run, "--validation --scene rtrol-cornell-box --width 32 --spp 1000000 --depth 8 --strategy auto "
-                       "--pilot-budget 1 --pilot-max-seconds 20 --window-size 1280x800 --frames 2" +
+                       "--light-sampler solid-angle --pilot-budget 1 --pilot-max-seconds 20 --window-size 1280x800 "
+                       "--frames 2" +
                            stateJsonArgument(dir) + " --actions 'frames=1;estimator=nee'");
     const nlohmann::json state = nlohmann::json::parse(::rt::test::fileContents(dir / "state.json"));
     const nlohmann::json& choice = state["strategy_choice"];
@@ -601,6 +602,13 @@ TEST(GpuWindow, StrategyPilotChoosesOnTheGpuAndASettingOverridesIt)
     EXPECT_GE(choice["candidates"].size(), 2u) << choice.dump(2);
     EXPECT_EQ(choice["candidates"][0]["strategy"].get<std::string>().rfind("mixture ", 0), 0u)
         << "the search starts at the scene's own";
+    for (const nlohmann::json& c : choice["candidates"])
+    {
+        const std::string strategy = c["strategy"].get<std::string>();
+        EXPECT_TRUE(strategy.rfind("mixture ", 0) == 0 || strategy.rfind("nee-mis solid-angle ", 0) == 0)
+            << "a flag was varied: " << strategy;
+    }
+    EXPECT_LE(choice["budget_seconds"].get<double>(), 20.0) << "--pilot-max-seconds";
     EXPECT_EQ(state["settings"]["estimator"], "nee") << "the setting changed after the pilot overrides its choice";
     EXPECT_NE(run.output.find("strategy chosen by a pilot"), std::string::npos) << run.output;
 }
