@@ -36,7 +36,12 @@ RequestChooser strategyChooser(const Scene& scene, const CommonOptions& options)
     const std::filesystem::path cacheDir = options.strategyCache.empty()   ? defaultStrategyCacheDir()
                                            : options.strategyCache == "off" ? std::filesystem::path()
                                                                             : std::filesystem::path(options.strategyCache);
-    return [lists = commandLineCandidates(scene, options), budget = pilotBudget(options),
+    PilotBudget budget = pilotBudget(options);
+    // The default bounds the candidates' preparation (a GPU's pipelines): a render asked for no pilot must not wait
+    // on compiles longer than a fifth of itself; a given auto prepares every candidate.
+    if (!options.strategyGiven)
+        budget.prepareFraction = kDefaultPrepareFraction;
+    return [lists = commandLineCandidates(scene, options), budget,
             cache = StrategyCache(cacheDir)](RenderEngine& engine, const RenderRequest& request) {
         // restir-di's pixels are correlated (reservoirs reused across pixels and iterations): one seed's error, all
         // a pilot's measurement has, does not score it (--compare takes the mean of several seeds for it).
@@ -69,18 +74,26 @@ RequestChooser strategyChooser(const Scene& scene, const CommonOptions& options)
         cache.store(key, choice);
         ChosenRequest chosen{request, choice.toJson(), choice.cancelled};
         chosen.request.settings = choice.chosen.applyTo(request.settings);
-        if (choice.tooShort)
+        if (choice.rows.empty() && choice.unprepared > 0)
+            spdlog::info("--strategy auto: preparing the candidates passed the default's bound (a fifth of the "
+                         "render's estimated time, {:.1f} s; a given --strategy auto has none) after {:.2f} s, before "
+                         "any but the scene's own: it stays, {}",
+                         choice.estimatedRenderSeconds, choice.prepareSeconds, choice.chosen.name());
+        else if (choice.tooShort)
             spdlog::info("--strategy auto: the render is too short to choose for (its pilot's budget, {:.3f} s, gives "
                          "each candidate fewer than {:.0f} paths a half): the scene's own, {}",
                          choice.budgetSeconds, kMinimumPilotPaths, choice.chosen.name());
         else if (choice.rows.empty())
             spdlog::info("--strategy auto: the flags leave one candidate, {}", choice.chosen.name());
         else
-            spdlog::info("--strategy auto: {} (pilot {:.2f} s, {:.2f} s of it preparing the candidates, of a {:.2f} s "
-                         "budget{}, {}x{} at {} spp per candidate; render estimated at {:.1f} s):\n{}",
-                         choice.chosen.name(), choice.pilotWallSeconds, choice.prepareSeconds, choice.budgetSeconds,
-                         choice.budgetSpent ? ", stopped there before every candidate" : "", choice.width,
-                         choice.height, choice.spp, choice.estimatedRenderSeconds, choice.table());
+            spdlog::info("--strategy auto: {} (pilot {:.2f} s, {:.2f} s of it preparing the candidates{}, of a {:.2f} "
+                         "s budget{}, {}x{} at {} spp per candidate; render estimated at {:.1f} s):\n{}",
+                         choice.chosen.name(), choice.pilotWallSeconds, choice.prepareSeconds,
+                         choice.unprepared > 0 ? fmt::format(" ({} more left out: the default's bound on it, a fifth "
+                                                             "of the render)", choice.unprepared)
+                                               : std::string(),
+                         choice.budgetSeconds, choice.budgetSpent ? ", stopped there before every candidate" : "",
+                         choice.width, choice.height, choice.spp, choice.estimatedRenderSeconds, choice.table());
         return chosen;
     };
 }

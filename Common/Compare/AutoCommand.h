@@ -20,6 +20,11 @@ std::vector<std::string> fixedSettings(const CommonOptions& options);
 /// The pilot budget of --pilot-budget and --pilot-max-seconds.
 PilotBudget pilotBudget(const CommonOptions& options);
 
-/// For runHeadless: the pilot's choice with --strategy auto, nothing (render as asked) with --strategy scene.
+/// The default --strategy auto's PilotBudget::prepareFraction: a GPU's candidates compiled in at most a fifth of the
+/// render's estimated time (or --pilot-max-seconds).
+inline constexpr double kDefaultPrepareFraction = 0.2;
+
+/// For runHeadless: the pilot's choice with --strategy auto (the default's preparation bounded by
+/// kDefaultPrepareFraction), nothing (render as asked) with --strategy scene.
 RequestChooser strategyChooser(const Scene& scene, const CommonOptions& options);
 } // namespace rt::compare

@@ -566,8 +566,27 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // prepareSeconds.
     const auto prepareStart = std::chrono::steady_clock::now();
     choice.probeSeconds = std::chrono::duration<double>(prepareStart - start).count();
-    for (const Strategy& strategy : grid)
-        engine.beginFrame(strategy.applyTo(pilot));
+    // Under PilotBudget::prepareFraction the preparation stops at its bound, checked before each candidate (one may
+    // pass it), and the candidates not prepared are left out; the own, prepared by the probe, always stays.
+    const double prepareBound = budget.prepareFraction > 0.0
+                                    ? std::min(budget.maxSeconds, budget.prepareFraction * choice.estimatedRenderSeconds)
+                                    : std::numeric_limits<double>::infinity();
+    std::size_t prepared = 0;
+    for (; prepared < grid.size(); ++prepared)
+    {
+        if (prepared > 0 &&
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - prepareStart).count() > prepareBound)
+            break;
+        engine.beginFrame(grid[prepared].applyTo(pilot));
+    }
+    choice.unprepared = static_cast<int>(grid.size() - prepared);
+    grid.resize(prepared);
+    if (grid.size() == 1)
+    {
+        choice.prepareSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - prepareStart).count();
+        choice.pilotWallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return choice;
+    }
     // The search's own clock: the probe and the preparation are not part of the budget the measurements fill.
     const auto searchStart = std::chrono::steady_clock::now();
     choice.prepareSeconds = std::chrono::duration<double>(searchStart - prepareStart).count();
@@ -1071,6 +1090,7 @@ nlohmann::json AutoChoice::toJson() const
     j["pilot_frame_configuration"] = frameConfiguration;
     j["budget_spent"] = budgetSpent;
     j["too_short"] = tooShort;
+    j["unprepared_candidates"] = unprepared;
     j["relmse_epsilon"] = kRelMseEpsilon;
     j["candidates"] = nlohmann::json::array();
     for (const PilotRow& r : rows)

@@ -83,6 +83,11 @@ struct PilotBudget
     double fraction = 0.05; // of the render's estimated time
     double maxSeconds = 2.0; // at most, whatever the render
     double renderSeconds = 0.0; // > 0: the render's time, known (--compare --equal-time), instead of the estimate
+    /// > 0: the candidates' preparation (a GPU's pipelines compiled, on the host's clock) stops once it has taken this
+    /// fraction of the render's estimated time, or maxSeconds if less, and the candidates left unprepared are not
+    /// measured: the default --strategy auto's bound (lavapipe compiles cornell-box-lights' 13 candidates in 34 s cold,
+    /// 5 s warm, for a render of 20 s; an H200 in 17 s cold). 0: every candidate prepared, outside the budget.
+    double prepareFraction = 0.0;
 };
 
 /// The fewest camera paths a half of a pilot's measurement must trace (its pixels x spp), below which the pilot
@@ -190,6 +195,9 @@ struct AutoChoice
     bool budgetSpent = false;
     /// The budget gave a candidate's half fewer than kMinimumPilotPaths: nothing was measured, the scene's own kept.
     bool tooShort = false;
+    /// Candidates not measured because their preparation would have passed PilotBudget::prepareFraction's bound (all
+    /// but the own: the own kept, nothing measured).
+    int unprepared = 0;
 
     nlohmann::json toJson() const;
     /// The table of rows, one per line, the chosen one marked: what the headless run logs.

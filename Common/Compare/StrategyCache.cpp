@@ -46,7 +46,7 @@ std::string StrategyCache::key(const Scene& scene, const RenderRequest& request,
     k["candidates"] = nlohmann::json::object();
     for (const auto& [flag, list] : candidates)
         k["candidates"][flag] = list;
-    k["budget"] = {budget.fraction, budget.maxSeconds, budget.renderSeconds};
+    k["budget"] = {budget.fraction, budget.maxSeconds, budget.renderSeconds, budget.prepareFraction};
     return k.dump();
 }
 

@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -74,6 +75,8 @@ public:
     /// Each frame's device time as a multiple of its paths' (default 1), by how many frames began before it: a
     /// device slow to wake.
     void setFrameScale(std::function<double(std::size_t)> scale) { m_frameScale = std::move(scale); }
+    /// The host's time of each strategy's first frame, as a GPU compiles its pipeline there (a sleep).
+    void setCompileSeconds(double seconds) { m_compileSeconds = seconds; }
     NoiseEngine(std::function<double(const RenderSettings&)> sigma, std::uint64_t concurrentPaths,
                 double secondsPerPath, double fixedSeconds = 0.0, double secondsPerPixel = 0.0)
         : SceneHoldingEngine("noise"), m_sigma(std::move(sigma)), m_concurrentPaths(concurrentPaths),
@@ -93,6 +96,12 @@ public:
     {
         if (m_onFrame)
             m_onFrame(m_frames.size());
+        if (const Strategy strategy = Strategy::of(settings);
+            m_compileSeconds > 0.0 && std::find(m_compiled.begin(), m_compiled.end(), strategy) == m_compiled.end())
+        {
+            m_compiled.push_back(strategy);
+            std::this_thread::sleep_for(std::chrono::duration<double>(m_compileSeconds));
+        }
         m_settings = settings;
         m_frames.push_back({representedPaths(std::uint64_t(settings.width) * std::uint64_t(settings.height()) *
                                              std::uint64_t(settings.trueSpp())),
@@ -165,6 +174,8 @@ private:
     std::function<void(std::size_t)> m_onFrame;
     std::function<double(std::size_t)> m_frameScale;
     bool m_busyByPaths = false;
+    double m_compileSeconds = 0.0;
+    std::vector<Strategy> m_compiled;
 };
 
 /// A pilot's first frames: the probe's three renders, each twice (kProbeFrames), and, on an engine whose renders cost
@@ -474,6 +485,34 @@ TEST(PilotDecision, ASearchWhoseOwnIsCheapPerPathHoldsItsBudget)
     EXPECT_GT(searchMs, 0.9 * budgetMs);
     EXPECT_LT(searchMs, 1.05 * budgetMs);
     EXPECT_EQ(choice.chosen, own) << "equal errors, the others slower";
+}
+
+TEST(PilotDecision, TheDefaultsBoundOnPreparationLeavesOutTheCandidatesPastIt)
+{
+    // A GPU-like engine whose every strategy's first frame costs its host 60 ms (a pipeline's compilation): the twelve
+    // candidates take 0.66 s to prepare. Under the default's bound (PilotBudget::prepareFraction; here 0.2 s of a
+    // 40 s render) the preparation stops once past it, the candidates left are not measured, and the search runs on
+    // the rest; without the bound every candidate is prepared.
+    const Scene scene = makeScene("cornell-box-lights");
+    const RenderRequest request = pilotRequest(scene);
+    auto pilot = [&](double prepareFraction) {
+        NoiseEngine engine([](const RenderSettings&) { return 1.0; }, kGpuLike.concurrentPaths, 1e-7);
+        engine.setCompileSeconds(0.06);
+        engine.setScene(scene);
+        return chooseStrategy(engine, request, twelveCandidates(),
+                              {.renderSeconds = 40.0, .prepareFraction = prepareFraction});
+    };
+    const AutoChoice bounded = pilot(0.005);
+    ASSERT_FALSE(bounded.tooShort);
+    ASSERT_FALSE(costProbed(bounded)) << "the cost probes would have compiled every candidate before the preparation";
+    EXPECT_GE(bounded.unprepared, 4) << "0.2 s holds four of eleven at most";
+    EXPECT_EQ(bounded.rows.size() + std::size_t(bounded.unprepared), 12u);
+    EXPECT_GE(bounded.rows.size(), 2u) << "the own and one candidate at least";
+    EXPECT_LT(bounded.prepareSeconds, 0.2 + 0.06 + 0.5) << "one candidate past the bound at most (and a loaded host)";
+    const AutoChoice whole = pilot(0.0);
+    EXPECT_EQ(whole.unprepared, 0);
+    EXPECT_EQ(whole.rows.size(), 12u);
+    EXPECT_GE(whole.prepareSeconds, 11 * 0.06);
 }
 
 TEST(PilotDecision, EveryFrameOfThePilotRunsWhatTheRenderRunsInOneBatch)
