@@ -1,11 +1,8 @@
 #include "Compare/AutoCommand.h"
 
-#include <algorithm>
-
 #include <spdlog/spdlog.h>
 
 #include "Compare/StrategyCache.h"
-#include "Render/SettingsTable.h"
 
 namespace rt::compare
 {
@@ -43,22 +40,14 @@ RequestChooser strategyChooser(const Scene& scene, const CommonOptions& options)
         budget.prepareFraction = kDefaultPrepareFraction;
     return [lists = commandLineCandidates(scene, options), budget,
             cache = StrategyCache(cacheDir)](RenderEngine& engine, const RenderRequest& request) {
-        // restir-di's pixels are correlated (reservoirs reused across pixels and iterations): one seed's error, all
-        // a pilot's measurement has, does not score it (--compare takes the mean of several seeds for it).
-        if (request.settings.estimator == Estimator::RestirDi)
+        const std::optional<StrategyLists> candidates = pilotCandidates(lists, request.settings);
+        if (!candidates)
         {
             spdlog::info("--strategy auto: restir-di's pixels are correlated, which a pilot's error of one seed "
                          "does not score: the strategy asked, no pilot");
             return ChosenRequest{request, nullptr, false};
         }
-        // An estimator the pilot does not choose among (a single strategy, bsdf or nee, from the scene or a flag)
-        // stays: the pilot's estimators combine strategies, and replacing the one asked is not its to do.
-        StrategyLists candidates = lists;
-        const Setting& estimators = *findSetting("estimator");
-        if (const std::vector<std::string> words = listedWords(candidates, estimators, request.settings);
-            std::find(words.begin(), words.end(), estimators.text(request.settings)) == words.end())
-            candidates.erase(std::string(estimators.compareFlag));
-        const std::string key = StrategyCache::key(*engine.scene(), request, engine, candidates, budget);
+        const std::string key = StrategyCache::key(*engine.scene(), request, engine, *candidates, budget);
         if (const std::optional<CachedChoice> cached = cache.find(key))
         {
             nlohmann::json record = cached->record;
@@ -70,15 +59,18 @@ RequestChooser strategyChooser(const Scene& scene, const CommonOptions& options)
                          cached->chosen.name(), cached->file.string());
             return chosen;
         }
-        const AutoChoice choice = chooseStrategy(engine, request, candidates, budget);
+        const AutoChoice choice = chooseStrategy(engine, request, *candidates, budget);
         cache.store(key, choice);
         ChosenRequest chosen{request, choice.toJson(), choice.cancelled};
         chosen.request.settings = choice.chosen.applyTo(request.settings);
+        if (choice.cancelled)
+            return chosen; // runHeadless says so
         if (choice.rows.empty() && choice.unprepared > 0)
-            spdlog::info("--strategy auto: preparing the candidates passed the default's bound (a fifth of the "
-                         "render's estimated time, {:.1f} s; a given --strategy auto has none) after {:.2f} s, before "
-                         "any but the scene's own: it stays, {}",
-                         choice.estimatedRenderSeconds, choice.prepareSeconds, choice.chosen.name());
+            spdlog::info("--strategy auto: preparing the candidates passed the default's bound, {:.2f} s (a fifth of "
+                         "the render's estimated {:.1f} s, at most --pilot-max-seconds; a given --strategy auto has "
+                         "none), after {:.2f} s, before any but the scene's own: it stays, {}",
+                         choice.prepareBoundSeconds, choice.estimatedRenderSeconds, choice.prepareSeconds,
+                         choice.chosen.name());
         else if (choice.tooShort)
             spdlog::info("--strategy auto: the render is too short to choose for (its pilot's budget, {:.3f} s, gives "
                          "each candidate fewer than {:.0f} paths a half): the scene's own, {}",
@@ -89,8 +81,8 @@ RequestChooser strategyChooser(const Scene& scene, const CommonOptions& options)
             spdlog::info("--strategy auto: {} (pilot {:.2f} s, {:.2f} s of it preparing the candidates{}, of a {:.2f} "
                          "s budget{}, {}x{} at {} spp per candidate; render estimated at {:.1f} s):\n{}",
                          choice.chosen.name(), choice.pilotWallSeconds, choice.prepareSeconds,
-                         choice.unprepared > 0 ? fmt::format(" ({} more left out: the default's bound on it, a fifth "
-                                                             "of the render)", choice.unprepared)
+                         choice.unprepared > 0 ? fmt::format(" ({} more left out: the default's bound on it, {:.2f} s)",
+                                                             choice.unprepared, choice.prepareBoundSeconds)
                                                : std::string(),
                          choice.budgetSeconds, choice.budgetSpent ? ", stopped there before every candidate" : "",
                          choice.width, choice.height, choice.spp, choice.estimatedRenderSeconds, choice.table());

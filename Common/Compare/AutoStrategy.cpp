@@ -114,6 +114,18 @@ StrategyLists autoCandidates(const Scene& scene, const StrategyLists& given, con
     return lists;
 }
 
+std::optional<StrategyLists> pilotCandidates(const StrategyLists& lists, const RenderSettings& settings)
+{
+    if (settings.estimator == Estimator::RestirDi)
+        return std::nullopt;
+    StrategyLists candidates = lists;
+    const Setting& estimators = *findSetting("estimator");
+    if (const std::vector<std::string> words = listedWords(candidates, estimators, settings);
+        std::find(words.begin(), words.end(), estimators.text(settings)) == words.end())
+        candidates.erase(std::string(estimators.compareFlag));
+    return candidates;
+}
+
 namespace
 {
 /// fn(i) for every i < count, spread over the host's cores (runInParallel: an exception reaches the caller).
@@ -571,6 +583,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     const double prepareBound = budget.prepareFraction > 0.0
                                     ? std::min(budget.maxSeconds, budget.prepareFraction * choice.estimatedRenderSeconds)
                                     : std::numeric_limits<double>::infinity();
+    choice.prepareBoundSeconds = prepareBound;
     std::size_t prepared = 0;
     for (; prepared < grid.size(); ++prepared)
     {
@@ -580,9 +593,12 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         engine.beginFrame(grid[prepared].applyTo(pilot));
     }
     choice.unprepared = static_cast<int>(grid.size() - prepared);
+    // The plan above stays: a pilot of fewer candidates measures each at the planned size and leaves the rest of
+    // its budget unspent (re-planning would prepare them again at another size).
     grid.resize(prepared);
     if (grid.size() == 1)
     {
+        choice.spp = 2 * pilot.spp;
         choice.prepareSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - prepareStart).count();
         choice.pilotWallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return choice;
@@ -1091,6 +1107,8 @@ nlohmann::json AutoChoice::toJson() const
     j["budget_spent"] = budgetSpent;
     j["too_short"] = tooShort;
     j["unprepared_candidates"] = unprepared;
+    if (std::isfinite(prepareBoundSeconds))
+        j["prepare_bound_seconds"] = prepareBoundSeconds;
     j["relmse_epsilon"] = kRelMseEpsilon;
     j["candidates"] = nlohmann::json::array();
     for (const PilotRow& r : rows)

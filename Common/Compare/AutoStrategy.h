@@ -64,6 +64,8 @@
 #pragma once
 
 #include <array>
+#include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -198,6 +200,8 @@ struct AutoChoice
     /// Candidates not measured because their preparation would have passed PilotBudget::prepareFraction's bound (all
     /// but the own: the own kept, nothing measured).
     int unprepared = 0;
+    /// The preparation's bound on the host's clock (PilotBudget::prepareFraction), seconds; infinity: none.
+    double prepareBoundSeconds = std::numeric_limits<double>::infinity();
 
     nlohmann::json toJson() const;
     /// The table of rows, one per line, the chosen one marked: what the headless run logs.
@@ -216,6 +220,13 @@ struct AutoChoice
 /// The pixel sampling and Russian roulette stay the request's: Sobol's gain over random grows with the spp, and a
 /// pilot of a few samples per pixel cannot measure what the render's many will gain (a list given varies them).
 StrategyLists autoCandidates(const Scene& scene, const StrategyLists& given, const std::vector<std::string>& fixed);
+
+/// The candidates a pilot of `settings` measures: `lists` (autoCandidates') without the estimators' list where
+/// the settings' estimator is not in it (a single strategy, bsdf or nee, stays as asked: the pilot's estimators
+/// combine strategies); nothing for restir-di, whose pixels are correlated (reservoirs reused across pixels and
+/// iterations), which one seed's error, all a pilot's measurement has, does not score (--compare takes the mean of
+/// several seeds for it). Every pilot of the apps (headless, the windows') takes it.
+std::optional<StrategyLists> pilotCandidates(const StrategyLists& lists, const RenderSettings& settings);
 
 /// Runs the pilot for `request` (whose strategy settings start the search) on `engine`, whose scene is set to
 /// `scene`, over `candidates` (autoCandidates' form; a setting without a list keeps the request's value).

@@ -79,7 +79,7 @@ std::optional<CachedChoice> StrategyCache::find(const std::string& key) const
 
 void StrategyCache::store(const std::string& key, const AutoChoice& choice) const
 {
-    if (m_dir.empty() || choice.cancelled || choice.budgetSpent)
+    if (m_dir.empty() || choice.cancelled || choice.budgetSpent || choice.unprepared > 0)
         return;
     nlohmann::json chosen = nlohmann::json::object();
     for (const Setting* s : strategySettings())

@@ -45,7 +45,8 @@ public:
     std::optional<CachedChoice> find(const std::string& key) const;
     /// Stores `choice` under `key` (atomically; a failure is logged, not thrown: the render does not depend on
     /// the cache). A cancelled pilot is not stored, nor one whose budget ran out before it measured every round (a
-    /// GPU's first pilot, compiling its pipelines): the next render pilots again.
+    /// GPU's first pilot, compiling its pipelines), nor one that left candidates unprepared (the default's bound on
+    /// a cold driver cache): the next render pilots again, its driver's cache warmer.
     void store(const std::string& key, const AutoChoice& choice) const;
 
     /// The JSON text of the key of a pilot for `request` (its seed aside) on `engine`, whose scene is `scene`.

@@ -318,5 +318,26 @@ TEST(AutoCandidates, FlagsFixAndListsReplace)
     EXPECT_EQ(s.at("--samplings"), "random,stratified");
     EXPECT_EQ(s.at("--light-selections"), "bvh,power,uniform");
 }
+
+TEST(AutoCandidates, APilotKeepsAnEstimatorItDoesNotChooseAmongAndLeavesRestirDiAlone)
+{
+    const Scene scene = makeScene("cornell-box-lights");
+    const StrategyLists lists = autoCandidates(scene, {}, {});
+    RenderSettings settings;
+    settings.estimator = Estimator::NeeMis;
+    const std::optional<StrategyLists> combining = pilotCandidates(lists, settings);
+    ASSERT_TRUE(combining);
+    EXPECT_EQ(combining->at("--estimators"), "nee-mis,mixture");
+    for (const Estimator single : {Estimator::Nee, Estimator::BsdfOnly})
+    {
+        settings.estimator = single;
+        const std::optional<StrategyLists> kept = pilotCandidates(lists, settings);
+        ASSERT_TRUE(kept);
+        EXPECT_EQ(kept->count("--estimators"), 0u) << "the estimator asked stays";
+        EXPECT_EQ(kept->at("--light-selections"), "bvh,power,uniform") << "the rest is still chosen";
+    }
+    settings.estimator = Estimator::RestirDi;
+    EXPECT_FALSE(pilotCandidates(lists, settings)) << "correlated pixels: no pilot";
+}
 } // namespace
 } // namespace rt::compare

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <utility>
 
+#include <spdlog/spdlog.h>
+
 #include "App/Gui/DisplayEncoding.h"
 #include "Error.h"
 #include "Image/Heatmap.h"
@@ -221,13 +223,20 @@ void RenderJob::run(const JobRequest& request, std::shared_ptr<RenderControl> co
         bindScene(request.engine, *engine, scene);
         JobRequest job = request;
         engine->setCostRecording(false); // the pilot's renders are not timed per pixel
-        if (request.chooseStrategy)
+        const std::optional<compare::StrategyLists> candidates =
+            request.chooseStrategy
+                ? compare::pilotCandidates(compare::autoCandidates(*scene, {}, m_pilot.fixed), request.image.settings)
+                : std::nullopt;
+        if (request.chooseStrategy && !candidates)
+            spdlog::info("restir-di's pixels are correlated, which a pilot's error of one seed does not score: no "
+                         "pilot");
+        job.chooseStrategy = job.chooseStrategy && candidates;
+        if (job.chooseStrategy)
         {
             setPhase(JobPhase::ChoosingStrategy);
             auto chosen = std::make_shared<StrategyChoice>();
             chosen->asked = request.image;
-            chosen->choice = compare::chooseStrategy(*engine, request.image,
-                                                     compare::autoCandidates(*scene, {}, m_pilot.fixed), m_pilot.budget);
+            chosen->choice = compare::chooseStrategy(*engine, request.image, *candidates, m_pilot.budget);
             job.image.settings = chosen->choice.chosen.applyTo(job.image.settings);
             job.chooseStrategy = false;
             std::lock_guard lock(m_mutex);

@@ -374,10 +374,18 @@ private:
         RenderRequest request = m_state.image.request;
         if (!(m_state.image.camera == m_state.sceneCamera))
             request.camera = m_state.image.camera;
+        const std::optional<compare::StrategyLists> candidates = compare::pilotCandidates(
+            compare::autoCandidates(*m_scene, {}, m_options.fixedSettings), request.settings);
+        if (!candidates)
+        {
+            m_state.message = "restir-di's pixels are correlated, which a pilot's error of one seed does not score: "
+                              "no pilot";
+            return;
+        }
         try
         {
-            compare::AutoChoice choice = compare::chooseStrategy(
-                m_engine, request, compare::autoCandidates(*m_scene, {}, m_options.fixedSettings), m_options.pilotBudget);
+            compare::AutoChoice choice =
+                compare::chooseStrategy(m_engine, request, *candidates, m_options.pilotBudget);
             m_state.image.request.settings = choice.chosen.applyTo(m_state.image.request.settings);
             m_state.message =
                 choice.tooShort ? fmt::format("the image is too short to choose a strategy for (a pilot's share of it "
