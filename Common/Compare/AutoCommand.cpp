@@ -43,8 +43,7 @@ RequestChooser strategyChooser(const Scene& scene, const CommonOptions& options)
         const std::optional<StrategyLists> candidates = pilotCandidates(lists, request.settings);
         if (!candidates)
         {
-            spdlog::info("--strategy auto: restir-di's pixels are correlated, which a pilot's error of one seed "
-                         "does not score: the strategy asked, no pilot");
+            spdlog::info("--strategy auto: {}", kNoPilotForRestirDi);
             return ChosenRequest{request, nullptr, false};
         }
         const std::string key = StrategyCache::key(*engine.scene(), request, engine, *candidates, budget);

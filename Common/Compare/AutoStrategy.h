@@ -227,6 +227,9 @@ StrategyLists autoCandidates(const Scene& scene, const StrategyLists& given, con
 /// iterations), which one seed's error, all a pilot's measurement has, does not score (--compare takes the mean of
 /// several seeds for it). Every pilot of the apps (headless, the windows') takes it.
 std::optional<StrategyLists> pilotCandidates(const StrategyLists& lists, const RenderSettings& settings);
+/// What the apps say where pilotCandidates gives nothing.
+inline constexpr const char* kNoPilotForRestirDi =
+    "restir-di's pixels are correlated, which a pilot's error of one seed does not score: no pilot";
 
 /// Runs the pilot for `request` (whose strategy settings start the search) on `engine`, whose scene is set to
 /// `scene`, over `candidates` (autoCandidates' form; a setting without a list keeps the request's value).

@@ -121,10 +121,9 @@ def per_path(path, reference):
     return {k: (m[0], m[1], 1.0 / m[2]) for k, m in means.items()}
 
 
-def pilots(out):
-    """Markdown per recheck seed: each candidate's time per path, error per path and efficiency as the pilot measured
-    them over the scene's own's, beside the full comparison's (a pilot that ranks a candidate wrongly shows which
-    of the two misled it)."""
+def recorded_pilots(out):
+    """(scene, the recheck's SCENE-auto-SEED.json, the full comparison's per_path, the scene's own strategy, one
+    pilot's strategy_choice) for every pilot recorded under `out`."""
     for path in sorted(Path(out).glob("*.csv")):
         if "recheck" in path.stem:
             continue
@@ -134,34 +133,42 @@ def pilots(out):
         for table in sorted(Path(out).glob(f"{scene}-auto-*.json")):
             for row in json.load(table.open())["rows"]:
                 for choice in row.get("strategy_choice", []):
-                    rows = [c for c in choice["candidates"] if c["measurements"] > 0 and not c["too_slow"]]
-                    mine = next((c for c in rows if c["strategy"] == own), None)
-                    if not mine or own not in full:
-                        continue
-                    scale = choice.get("candidates_cost_scale", 1.0)  # not in the results of 2026-11-29 and before
-                    planned = "" if scale == 1.0 else f", planned at {scale:.2f}x the own's time per path"
-                    print(f"\n{scene}, {table.stem}: chose {choice['chosen']}; pilot {choice['pilot_width']}x"
-                          f"{choice['pilot_height']}, {choice['pilot_spp']} spp a measurement, "
-                          f"{choice['pilot_ms']:.0f} ms on the engine's clock of a {choice['budget_seconds']:g} s "
-                          f"budget{planned}\n")
-                    print("| candidate | measurements | time/own: pilot, comparison | error/own: pilot, comparison | "
-                          "efficiency/own: pilot, comparison | |")
-                    print("|---|---:|---:|---:|---:|---|")
+                    yield scene, table, full, own, choice
 
-                    def pilot(c):  # time per measurement, relMSE of the mean of all its measurements x their count
-                        return c["ms"] / c["measurements"], c["relmse"] * c["measurements"]
-                    t0, e0 = pilot(mine)
-                    f0 = full[own]
-                    for c in sorted(rows, key=lambda c: -c["efficiency"]):
-                        t, e = pilot(c)
-                        f = full.get(c["strategy"])
-                        if not f:
-                            continue
-                        mark = ", ".join(m for m, on in (("own", c is mine), ("decided", c["final_measurements"] > 0),
-                                                         ("chosen", c["strategy"] == choice["chosen"])) if on)
-                        print(f"| {c['strategy']} | {c['measurements']} | {t / t0:.2f}, {f[0] / f0[0]:.2f} | "
-                              f"{e / e0:.2f}, {f[1] / f0[1]:.2f} | {c['efficiency'] / mine['efficiency']:.2f}, "
-                              f"{f[2] / f0[2]:.2f} | {mark} |")
+
+def pilots(out):
+    """Markdown per recheck seed: each candidate's time per path, error per path and efficiency as the pilot measured
+    them over the scene's own's, beside the full comparison's (a pilot that ranks a candidate wrongly shows which
+    of the two misled it)."""
+    for scene, table, full, own, choice in recorded_pilots(out):
+        rows = [c for c in choice["candidates"] if c["measurements"] > 0 and not c["too_slow"]]
+        mine = next((c for c in rows if c["strategy"] == own), None)
+        if not mine or own not in full:
+            continue
+        scale = choice.get("candidates_cost_scale", 1.0)  # not in the results of 2026-11-29 and before
+        planned = "" if scale == 1.0 else f", planned at {scale:.2f}x the own's time per path"
+        print(f"\n{scene}, {table.stem}: chose {choice['chosen']}; pilot {choice['pilot_width']}x"
+              f"{choice['pilot_height']}, {choice['pilot_spp']} spp a measurement, "
+              f"{choice['pilot_ms']:.0f} ms on the engine's clock of a {choice['budget_seconds']:g} s "
+              f"budget{planned}\n")
+        print("| candidate | measurements | time/own: pilot, comparison | error/own: pilot, comparison | "
+              "efficiency/own: pilot, comparison | |")
+        print("|---|---:|---:|---:|---:|---|")
+
+        def pilot(c):  # time per measurement, relMSE of the mean of all its measurements x their count
+            return c["ms"] / c["measurements"], c["relmse"] * c["measurements"]
+        t0, e0 = pilot(mine)
+        f0 = full[own]
+        for c in sorted(rows, key=lambda c: -c["efficiency"]):
+            t, e = pilot(c)
+            f = full.get(c["strategy"])
+            if not f:
+                continue
+            mark = ", ".join(m for m, on in (("own", c is mine), ("decided", c["final_measurements"] > 0),
+                                             ("chosen", c["strategy"] == choice["chosen"])) if on)
+            print(f"| {c['strategy']} | {c['measurements']} | {t / t0:.2f}, {f[0] / f0[0]:.2f} | "
+                  f"{e / e0:.2f}, {f[1] / f0[1]:.2f} | {c['efficiency'] / mine['efficiency']:.2f}, "
+                  f"{f[2] / f0[2]:.2f} | {mark} |")
 
 
 def leads(outs):
@@ -171,37 +178,29 @@ def leads(outs):
           "comparison's lead | chosen |")
     print("|---|---|---:|---|---:|---:|---:|---:|---|---|---:|---|")
     for out in outs:
-        for path in sorted(Path(out).glob("*.csv")):
-            if "recheck" in path.stem:
+        for scene, table, full, own, choice in recorded_pilots(out):
+            mine = next((c for c in choice["candidates"] if c["strategy"] == own), None)
+            if not mine or mine["final_efficiency"] <= 0 or own not in full:
                 continue
-            scene = path.stem
-            full = per_path(path, reference_relmse(path))
-            own = strategy_of(json.load((Path(out) / f"{scene}-defaults.json").open())["settings"])
-            for table in sorted(Path(out).glob(f"{scene}-auto-*.json")):
-                for row in json.load(table.open())["rows"]:
-                    for choice in row.get("strategy_choice", []):
-                        mine = next((c for c in choice["candidates"] if c["strategy"] == own), None)
-                        if not mine or mine["final_efficiency"] <= 0 or own not in full:
-                            continue
-                        for c in choice["candidates"]:
-                            if c is mine or c["final_measurements"] == 0 or c["final_relmse_ratio_to_own"] <= 0:
-                                continue
-                            lead = c["final_efficiency"] / mine["final_efficiency"]
-                            error = c["final_relmse_ratio_standard_error"] / c["final_relmse_ratio_to_own"]
-                            trimmed = c["final_relmse_ratio_without_owns_worst"]
-                            t_lead = lead * c["final_relmse_ratio_to_own"] / trimmed if trimmed > 0 else None
-                            t_error = (c["final_relmse_ratio_without_owns_worst_standard_error"] / trimmed
-                                       if trimmed > 0 else None)
+            for c in choice["candidates"]:
+                if c is mine or c["final_measurements"] == 0 or c["final_relmse_ratio_to_own"] <= 0:
+                    continue
+                lead = c["final_efficiency"] / mine["final_efficiency"]
+                error = c["final_relmse_ratio_standard_error"] / c["final_relmse_ratio_to_own"]
+                trimmed = c["final_relmse_ratio_without_owns_worst"]
+                t_lead = lead * c["final_relmse_ratio_to_own"] / trimmed if trimmed > 0 else None
+                t_error = (c["final_relmse_ratio_without_owns_worst_standard_error"] / trimmed
+                           if trimmed > 0 else None)
 
-                            def switches(minimum):  # AutoStrategy.cpp's pilotSwitches, on both pairings
-                                ok = math.log(lead) > max(math.log(minimum), 2 * error)
-                                return ok and (t_lead is None or math.log(t_lead) > max(math.log(minimum), 2 * t_error))
-                            true = full[c["strategy"]][2] / full[own][2] if c["strategy"] in full else float("nan")
-                            t = f"{t_lead:.3f} | {2 * t_error:.3f}" if t_lead else "- | -"
-                            print(f"| {Path(out).name} | {scene} | {table.stem.rsplit('-', 1)[1]} | {c['strategy']} | "
-                                  f"{lead:.3f} | {2 * error:.3f} | {t} | {'yes' if switches(1.1) else 'no'} | "
-                                  f"{'yes' if switches(1.05) else 'no'} | {true:.2f} | "
-                                  f"{'yes' if choice['chosen'] == c['strategy'] else 'no'} |")
+                def switches(minimum):  # AutoStrategy.cpp's pilotSwitches, on both pairings
+                    ok = math.log(lead) > max(math.log(minimum), 2 * error)
+                    return ok and (t_lead is None or math.log(t_lead) > max(math.log(minimum), 2 * t_error))
+                true = full[c["strategy"]][2] / full[own][2] if c["strategy"] in full else float("nan")
+                t = f"{t_lead:.3f} | {2 * t_error:.3f}" if t_lead else "- | -"
+                print(f"| {Path(out).name} | {scene} | {table.stem.rsplit('-', 1)[1]} | {c['strategy']} | "
+                      f"{lead:.3f} | {2 * error:.3f} | {t} | {'yes' if switches(1.1) else 'no'} | "
+                      f"{'yes' if switches(1.05) else 'no'} | {true:.2f} | "
+                      f"{'yes' if choice['chosen'] == c['strategy'] else 'no'} |")
 
 
 def main():

@@ -228,8 +228,7 @@ void RenderJob::run(const JobRequest& request, std::shared_ptr<RenderControl> co
                 ? compare::pilotCandidates(compare::autoCandidates(*scene, {}, m_pilot.fixed), request.image.settings)
                 : std::nullopt;
         if (request.chooseStrategy && !candidates)
-            spdlog::info("restir-di's pixels are correlated, which a pilot's error of one seed does not score: no "
-                         "pilot");
+            spdlog::info("{}", compare::kNoPilotForRestirDi);
         job.chooseStrategy = job.chooseStrategy && candidates;
         if (job.chooseStrategy)
         {

@@ -378,8 +378,7 @@ private:
             compare::autoCandidates(*m_scene, {}, m_options.fixedSettings), request.settings);
         if (!candidates)
         {
-            m_state.message = "restir-di's pixels are correlated, which a pilot's error of one seed does not score: "
-                              "no pilot";
+            m_state.message = compare::kNoPilotForRestirDi;
             return;
         }
         try
