@@ -1067,12 +1067,14 @@ bool pilotSwitches(double lead, double logLeadError)
     // meet is in no standard error, and its measured lead is then high more often than low. At one, CPU pilots of
     // veach-mis (4 s, 12 seeds) left the own for area sampling with uniform selection once, 0.2x its efficiency, and
     // on cornell-box-lights and glossy-cornell, whose best leads the own by 10-15 %, gained nothing a 0.2 s pilot
-    // could show (auto 0.85x and 0.86x the best, as at two): notebook §41. The lead must also be 10 %: the relMSE's
-    // standard error leaves the times out, and a pilot's renders of a few milliseconds are timed to about that (on
-    // an H200, 600 px, a pilot right after its pipelines' compilation switched sphere-light-closeup to solid-angle
-    // sampling, 0.7x the scene's projected at the render's 10,000 spp); a smaller lead would also gain less than the
-    // pilot cost.
-    constexpr double kMinimumLead = 1.1;
+    // could show (auto 0.85x and 0.86x the best, as at two): notebook §41. The lead must also be 5 %: the relMSE's
+    // standard error leaves the times out, and a pilot's renders of a few milliseconds are timed to a few percent; a
+    // smaller lead would also gain less than the pilot cost. Not 10 %, as it was: an H200's pilots of
+    // cornell-box-lights time its best (solid-angle sampling, 0.82x the own's time per path at 600 px) at 0.87-0.92x,
+    // see a lead of 1.07-1.10 where the render's is 1.11-1.14, and kept the own in 3 of 4 seeds, 0.86x the best
+    // (notebook §52); over the 130 recorded pilots of both engines, the 5 % changed 7 choices, 6 to a better strategy
+    // (leads of 1.11-1.49) and one to a worse (0.95x).
+    constexpr double kMinimumLead = 1.05;
     return std::log(lead) > std::max(std::log(kMinimumLead), 2.0 * logLeadError);
 }
 

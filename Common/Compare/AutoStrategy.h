@@ -42,7 +42,7 @@
 // (pairedRelMse): the ratio of their errors, each normalised by the estimate of every other seed's measurements (an
 // estimate from the same seeds shares their fireflies and pulled the ratio toward 1: 1.01x where it was 1.14x), its
 // standard error from the pairs' differences pixel by pixel (their covariance counted). The challenger wins where
-// its lead in efficiency is more than twice that standard error and 10 % (pilotSwitches), on all the pairs and on
+// its lead in efficiency is more than twice that standard error and 5 % (pilotSwitches), on all the pairs and on
 // the pairs left without the own's worst (a firefly in one of a small pilot's renders of the own is not a
 // measurement of a tail: one in the own's six renders of veach-mis once made a pilot leave it for 0.13x its
 // efficiency); otherwise the scene's own stays. The final round's measurements alone decide: the earlier ones
@@ -321,7 +321,7 @@ struct PairedRelMse
 PairedRelMse pairedRelMse(std::span<const PilotPair> pairs);
 
 /// Whether the pilot leaves the scene's own strategy for a challenger whose efficiency is `lead` times the own's:
-/// where log(lead) is more than twice its standard error `logLeadError` and the lead more than 10 % (the times'
+/// where log(lead) is more than twice its standard error `logLeadError` and the lead more than 5 % (the times'
 /// noise, which that error leaves out). Within that, a tie or noise, the scene's own stays: with one standard error,
 /// and the challenger's lucky measurements counted, the best of 12 candidates beat the scene's own by noise alone
 /// (uniform light selection on an H100's cornell-box-lights, 0.85x the BVH's efficiency); with its measurements

@@ -7,12 +7,12 @@
 //
 // Equal candidates: each pilot is a search over 12 candidates whose luckiest draws look better than the scene's own;
 // a switch is a false alarm. The final round's challenger must lead on its fresh measurements, paired with the
-// own's seed by seed, by twice the ratio's standard error and 10 % (pilotSwitches): none of these 40 pilots switched;
+// own's seed by seed, by twice the ratio's standard error and 5 % (pilotSwitches): none of these 40 pilots switched;
 // the test allows 4. (With independent seeds and one standard error, 8 of 40 switched and the test failed.)
-// A candidate twice as efficient (sigma / sqrt 2): every pilot must take it; 1.15x was taken by 39 of 40, 1.1x by 15
-// (14 with independent seeds): the pilot's noise at a CPU's size hides part of a 10 % lead; 1.05x by none.
-// A 5 % lead where a GPU-sized pilot resolves it: never taken (without the 10 %, 3 of 6 took it and the test failed);
-// at that size 1.15x was taken by 20 of 20, 1.1x by 6.
+// A candidate twice as efficient (sigma / sqrt 2): every pilot must take it; 1.15x was taken by 39 of 40 (at the
+// rule's earlier 10 %): the pilot's noise at a CPU's size hides part of a small lead.
+// A 2 % lead where a GPU-sized pilot resolves it: not taken (the times' noise, which the ratio's standard error leaves
+// out, is a few percent); an 8 % lead, an H200's cornell-box-lights as its pilots see it, taken.
 // Fireflies in the scene's own measurements: at most 3 of 20 pilots switch (none does; 11 of 20 by the own's mean
 // with independent seeds).
 #include <gtest/gtest.h>
@@ -369,11 +369,15 @@ TEST(PilotDecision, ALeadOfFifteenPercentIsTakenAndCandidatesBehindAreNot)
     EXPECT_LE(switched, 2) << "of 40 pilots where every candidate is 0.9x the own";
 }
 
-TEST(PilotDecision, ALeadUnderTenPercentIsNotTakenWhereThePilotResolvesIt)
+TEST(PilotDecision, ALeadUnderFivePercentIsNotTakenAndOneOfEightIsWhereThePilotResolvesIt)
 {
-    // A GPU's pilot: 11,000 pixels a candidate, the ratio's standard error about 2 %, a 5 % lead two of them; the
-    // times' noise, which that error leaves out, is larger. (With 6,900 pixels, 1 of 6 pilots took the 5 %.)
-    EXPECT_EQ(pilotsChoosing(oneBetterBy(1.05), 6, theBetterOne(), kGpuLike), 0);
+    // A GPU's pilot: 11,000 pixels a candidate, the ratio's standard error about 2 %, a 2 % lead one of them; the
+    // times' noise, which that error leaves out, is larger.
+    EXPECT_EQ(pilotsChoosing(oneBetterBy(1.02), 6, theBetterOne(), kGpuLike), 0);
+    // An 8 % lead: what an H200's pilots of cornell-box-lights saw (1.07-1.10) of solid-angle sampling's 1.11-1.14 at
+    // 600 px, their small frames hiding part of its speed; at the rule's earlier 10 % they kept the own in 3 of 4
+    // seeds (notebook §52), and none of these 6 pilots took it.
+    EXPECT_GE(pilotsChoosing(oneBetterBy(1.08), 6, theBetterOne(), kGpuLike), 5);
     EXPECT_EQ(pilotsChoosing(oneBetterBy(1.3), 6, theBetterOne(), kGpuLike), 6);
 }
 
@@ -384,13 +388,13 @@ TEST(PilotDecision, ARenderTooShortForAPilotKeepsTheScenesOwn)
     EXPECT_EQ(pilotsChoosing(oneBetterBy(2.0), 3, {}, kCpuLike, 0.1), 0);
 }
 
-TEST(PilotDecision, TheRuleIsTwiceTheRatiosStandardErrorAndTenPercent)
+TEST(PilotDecision, TheRuleIsTwiceTheRatiosStandardErrorAndFivePercent)
 {
     // log(1.25) = 0.223: beyond 2 x hypot(0.05, 0.05) = 0.141, within 2 x hypot(0.08, 0.08) = 0.226.
     EXPECT_TRUE(pilotSwitches(1.25, std::hypot(0.05, 0.05)));
     EXPECT_FALSE(pilotSwitches(1.25, std::hypot(0.08, 0.08)));
-    EXPECT_FALSE(pilotSwitches(1.08, 0.0)) << "a lead of 8 %, however sure";
-    EXPECT_TRUE(pilotSwitches(1.12, 0.0));
+    EXPECT_FALSE(pilotSwitches(1.04, 0.0)) << "a lead of 4 %, however sure";
+    EXPECT_TRUE(pilotSwitches(1.07, 0.0));
     EXPECT_FALSE(pilotSwitches(0.9, 0.0)) << "behind is never a switch";
     EXPECT_FALSE(pilotSwitches(0.0, 0.05)) << "a candidate not measured";
     EXPECT_FALSE(pilotSwitches(1.5, std::numeric_limits<double>::infinity())) << "an error not measured";
@@ -546,7 +550,7 @@ TEST(PilotDecision, ACandidateFasterPerPathWinsWhereEachRendersFixedCostHidesIt)
     // The fixed-cost engine above (a launch 20 ms, a pixel 100 ns, a path 100 ns: halves of 29.5 ms, of which their
     // paths 4.75 ms), every candidate's error the same, solid-angle sampling with power selection's paths 1.6x as
     // fast: 1.6x as efficient in a render, whose fixed costs are spread over 400 x 400 x 1024 paths. By each half's
-    // whole time the lead is 29.5 / 27.7 = 1.065, under the 10 % a switch needs; by its paths' time, 1.6: the table's
+    // whole time the lead is 29.5 / 27.7 = 1.065, hardly the 5 % a switch needs; by its paths' time, 1.6: the table's
     // times are the paths', and the search takes it (here through its timing frames, whose time is the paths' too).
     const Scene scene = makeScene("cornell-box-lights");
     NoiseEngine engine([](const RenderSettings&) { return 1.0; }, kGpuLike.concurrentPaths, 1e-7, 20e-3, 1e-7);
@@ -750,10 +754,10 @@ TEST(PilotDecision, TimingFramesShowTheCostASmallFrameHides)
     // A GPU-like engine of 2^14 paths at once, whose frames of fewer than 393,216 paths hide part of a costlier
     // candidate's cost, as an H200's wavefront does. Solid-angle sampling with power selection is 1.6x as fast per
     // path in a render, every candidate's error the same. The halves (16,384 pixels at 4 spp, 17 % of those
-    // paths) see 1.07x, under the 10 % lead a switch needs; the final round's timing frames (16,384 pixels at 9 and
+    // paths) see 1.07x, hardly the 5 % lead a switch needs; the final round's timing frames (16,384 pixels at 9 and
     // 18 spp, 37 and 75 %) see 1.73x by their slope (over, as a frame's cost per path here depends on its fill), and
     // every pilot takes it. (Without them the pilot, with the whole budget for its halves of 82,000 paths, sees
-    // 1.08x: no pilot took it.)
+    // 1.08x, against its 1.6x: at the rule's earlier 10 % no pilot took it.)
     const Scene scene = makeScene("cornell-box-lights");
     NoiseEngine engine([](const RenderSettings&) { return 1.0; }, std::uint64_t(1) << 14, 4e-7);
     engine.setPathCost(forTheBetterOne(1.0 / 1.6), 24.0 * double(std::uint64_t(1) << 14));
@@ -776,7 +780,8 @@ TEST(PilotDecision, TheTimingFramesSlopeLeavesOutEachFramesOwnCost)
     // that grows to 80 ms at 16,384 paths, one wave's (a wavefront's last segments); solid-angle sampling with power
     // selection is 1.6x as fast per path, every candidate's error the same. The timing frames pay all of it, the
     // probe's fit takes part of it for the pixels' and paths' cost: the frames' whole time less the probe's fixed cost
-    // measured 1.06x, and no pilot switched (an H200's glossy-cornell: 0.8 for the render's 0.53); the slope between
+    // measured 1.06x, and at the rule's earlier 10 % no pilot switched (an H200's glossy-cornell: 0.8 for the render's
+    // 0.53); the slope between
     // the frames of one and two times their spp measures 1.6x.
     const Scene scene = makeScene("cornell-box-lights");
     NoiseEngine engine([](const RenderSettings&) { return 1.0; }, std::uint64_t(1) << 14, 4e-7);
