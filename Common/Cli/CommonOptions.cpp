@@ -123,7 +123,7 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
                    "measures the efficiency 1/(relMSE x time) of every combination of the candidates (nee-mis and "
                    "mixture; area, solid-angle, projected and, for quad and triangle lights, projected-exact; every "
                    "light selection with two lights or more; the pixel sampling stays the scene's), renders with the "
-                   "best where its lead over the scene's own is beyond the pilot's noise and 10 % (a render too short "
+                   "best where its lead over the scene's own is beyond the pilot's noise and 5 % (a render too short "
                    "for a pilot keeps the scene's own), logs the pilot's table and records it in --stats "
                    "(strategy_choice); a choice is kept for the next render (--strategy-cache). A setting given as a "
                    "flag is not varied, nor an estimator the pilot does not choose among (bsdf, nee: kept as asked; "

@@ -632,7 +632,6 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         std::vector<std::uint32_t> slots;
         double finalLeastMs = 0.0; // the least of its final round's measurements' time
         double timingLeastMs[2] = {0.0, 0.0}; // the least of its timing frames' times, at the timing spp and twice it
-        int timingFrames = 0;
         double leastMs = 0.0; // of all its measurements
     };
     const double halfPaths = pixelsOf(pilot) * double(pilot.spp);
@@ -653,20 +652,25 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // time, less the probe's fixed cost, put that ratio at 0.8, the render's 0.53, and the pilot kept the own at
     // 0.63x the best). Not below a tenth of the larger frame's time a path (a slope of noise); with one frame, or
     // where the two hold the same paths (stratified sampling's square spp), its time less the probe's fixed and
-    // per-pixel terms, as before.
+    // per-pixel terms, as before. A frame's paths are its candidate's: the sampling may be one of its settings
+    // (--compare's --samplings), and stratified sampling rounds the spp to a square.
     RenderSettings twiceTiming = timing;
     twiceTiming.spp = 2 * timing.spp;
-    const double oncePaths = pixelsOf(timing) * double(timing.trueSpp());
-    const double twicePaths = pixelsOf(twiceTiming) * double(twiceTiming.trueSpp());
-    auto timingMsPerPath = [&](double one, double two) {
+    auto framePaths = [&](const Candidate& c, const RenderSettings& frame) {
+        return pixelsOf(frame) * double(c.row.strategy.applyTo(frame).trueSpp());
+    };
+    auto timingMsPerPath = [&](const Candidate& c) {
+        const double one = c.timingLeastMs[0], two = c.timingLeastMs[1];
+        const double oncePaths = framePaths(c, timing), twicePaths = framePaths(c, twiceTiming);
         if (one > 0.0 && two > 0.0 && twicePaths > oncePaths)
             return std::max((two - one) / (twicePaths - oncePaths), 0.1 * two / twicePaths);
         return one > 0.0 ? std::max(one - cost.ms(pixelsOf(timing), 0.0), 0.1 * one) / oncePaths : 0.0;
     };
     // A candidate's next timing frame, of three: the timing spp, twice it, then the timing spp again, so that a one-off
-    // stall (the first render after a round's scoring meets one) is not the least. False where cancelled.
+    // stall (the first render after a round's scoring meets one) is not the least; and a fourth at twice the spp where
+    // the second stalled (timingStalled). False where cancelled.
     auto timingFrame = [&](Candidate& c, std::uint32_t slot) {
-        const int level = c.timingFrames++ == 1 ? 1 : 0;
+        const int level = c.row.timingFrames++ % 2;
         RenderRequest frame = request;
         frame.settings = c.row.strategy.applyTo(level == 1 ? twiceTiming : timing);
         frame.settings.seed = seedOf(slot) + 3u;
@@ -680,12 +684,33 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         choice.pilotMs += t.ms();
         double& least = c.timingLeastMs[level];
         least = least > 0.0 ? std::min(least, t.ms()) : t.ms();
-        c.row.timingMsPerPath = timingMsPerPath(c.timingLeastMs[0], c.timingLeastMs[1]);
+        c.row.timingMsPerPath = timingMsPerPath(c);
         return true;
     };
+    // Whether the frame at twice the spp stalled: its least time more than 1.1x the paths' ratio (twice) times the
+    // least at the timing spp, a slope well above the smaller frame's whole time per path, which a frame's fixed cost,
+    // never negative, cannot give (the 10 % for a device whose time per path grows a little with a frame's fill). Its
+    // one frame was the slope's: an H200's pilots of cornell-box-lights timed the own at 4.8-7.2 ns a path in 3 of 8
+    // (2.6-2.9 in the others; stalls of 10-17 ms beside frames of 7-8 ms), and two of them chose strategies 0.95x and
+    // 0.90x the own (notebook §52). A shorter stall is not seen. Taking four frames from every candidate instead cost
+    // the halves a sixth of their paths, and two pilots of four then took book 3's mixture, 0.44x the own, to the
+    // final round. The fourth frame is outside the plan (at most two units of the eight planned for the frames).
+    auto timingStalled = [&](const Candidate& c) {
+        const double oncePaths = framePaths(c, timing), twicePaths = framePaths(c, twiceTiming);
+        return c.timingLeastMs[0] > 0.0 && c.timingLeastMs[1] > 0.0 && twicePaths > oncePaths &&
+               c.timingLeastMs[1] > 1.1 * c.timingLeastMs[0] * (twicePaths / oncePaths);
+    };
+    // Whether `c` takes another timing frame: its first three (one a measurement of the final round), and the fourth,
+    // right after the third (in the guard's fallback, after the other candidate's next), where timingStalled.
+    auto timingFrameDue = [&](const Candidate& c) {
+        return c.row.timingFrames < 3 || (c.row.timingFrames == 3 && timingStalled(c));
+    };
     auto measureOnce = [&](Candidate& c, bool finalRound, std::uint32_t slot) {
-        if (finalRound && choice.timingSpp > 0 && c.timingFrames < 3 && !timingFrame(c, slot))
-            return false;
+        if (finalRound && choice.timingSpp > 0 && c.row.timingFrames < 3)
+            do
+                if (!timingFrame(c, slot))
+                    return false;
+            while (c.row.timingFrames == 3 && timingFrameDue(c));
         RenderRequest half = request;
         half.settings = c.row.strategy.applyTo(pilot);
         half.settings.seed = seedOf(slot);
@@ -1038,15 +1063,16 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         // hide what the frames show (an H200's glossy-cornell at 8 s, whose guard passed before the final round in
         // one pilot of four: solid-angle sampling with uniform selection 0.83x the own's time by the halves, 0.51x by
         // the timing frames, 0.54x in the render; the pilot kept the own, 0.66x the best). That passes the guard
-        // by up to the frames' planned quarter of the budget, which buys the decision the search was for. The two
+        // by up to the frames' planned quarter of the budget (and a stalled frame's second take), which buys the
+        // decision the search was for. The two
         // take turns, the leader first: the first render after the scoring meets a stall where one comes, and the
         // leader's first frame is at the timing spp, which its third repeats (the own, stopped after its first final
         // measurement, would render its only frame at twice the spp there).
         if (leader)
         {
-            for (int frame = 0; frame < 3 && choice.timingSpp > 0; ++frame)
+            for (int frame = 0; frame < 4 && choice.timingSpp > 0; ++frame)
                 for (Candidate* c : {leader, &ownRun})
-                    if (c->timingFrames < 3 && !timingFrame(*c, slot))
+                    if (timingFrameDue(*c) && !timingFrame(*c, slot))
                         return cancelledChoice();
             const bool timed = leader->row.timingMsPerPath > 0.0 && ownRun.row.timingMsPerPath > 0.0;
             decidePaired(*leader, false, timed ? 2.0 * halfPaths * ownRun.row.timingMsPerPath : ownRun.leastMs,
@@ -1130,6 +1156,7 @@ nlohmann::json AutoChoice::toJson() const
                                    {"final_relmse_ratio_without_owns_worst", r.trimmedRelMseRatio},
                                    {"final_relmse_ratio_without_owns_worst_standard_error", r.trimmedRelMseRatioError},
                                    {"timing_ms_per_path", r.timingMsPerPath},
+                                   {"timing_frames", r.timingFrames},
                                    {"too_slow", r.tooSlow}});
     return j;
 }

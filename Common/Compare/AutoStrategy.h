@@ -18,7 +18,7 @@
 // final two are measured three times, each time with a timing frame where the halves are too small to keep the
 // engine's device busy (a GPU's: their time per path then hides part of a costlier candidate's cost; the decision
 // takes the timing frames' time per path: the slope between frames of one and two times their spp, since each
-// frame of a GPU's wavefront also has a cost of its own). Not one setting at a time: the estimator compared at the scene's light
+// frame of a GPU's wavefront also has a cost of its own; a fourth frame where the one at twice the spp stalled). Not one setting at a time: the estimator compared at the scene's light
 // sampler kept book 3's mixture on rtrol-cornell-box, where an estimator with NEE and a cheaper sampler is 2x as
 // efficient.
 //
@@ -157,6 +157,7 @@ struct PilotRow
     /// take instead of the halves' times (with one frame, a search the guard stopped: its time less the probe's fixed
     /// and per-pixel terms, a path's; never what decides).
     double timingMsPerPath = 0.0;
+    int timingFrames = 0; // its timing frames rendered: three, or four where the second stalled
 };
 
 /// What the pilot measured and chose: --stats' "strategy_choice", the log's table, --compare's auto row.

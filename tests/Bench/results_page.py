@@ -972,6 +972,21 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 \\\n"
                   "    SCENES=\"rect-light-closeup sphere-light-closeup\" bash tests/Bench/device_run.sh auto\n"
                   "# and SCENES=triangle-lights, SCENES=rtrol-cornell-box (one run each)", "## 48.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1130b", "NVIDIA H200, driver 580",
+                  "cornell-box-lights with 065d2f8 (the switch at 10 %): 0.86x the best, its own kept 3 of 4 (the "
+                  "pilots' leads 1.07-1.10 where the comparison's is 1.11) (notebook §52)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=cornell-box-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 52.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1130c", "NVIDIA H200, driver 580",
+                  "the same with bbeb769 (the switch at 5 %): 0.86x, its best 2 of 4; the two others' timing frames "
+                  "stalled (one frame at twice the spp, the slope's) (notebook §52)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=cornell-box-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 52.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1130d", "NVIDIA H200, driver 580",
+                  "the same with four timing frames each (not kept): 0.87x, steady slopes but halves a sixth smaller, "
+                  "and book 3's mixture in two final rounds of four (notebook §52)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=cornell-box-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 52.", "2026-11-30"),
                  ("h200-auto-strategy-5s-1130", "NVIDIA H200, driver 580",
                   "the same build, each strategy for 5 s and a reference of 32,768 spp (what the device's budget "
                   "left): veach-mis 0.96x the best, its own kept 4 of 4 (notebook §48)",
