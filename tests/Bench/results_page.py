@@ -1603,6 +1603,22 @@ def section_cycles():
         code('STRATEGIES="--estimator nee-mis --sampling sobol;--estimator nee-mis --sampling sobol --light-sampler '
              'area;--estimator nee-mis --sampling sobol --light-sampler solid-angle;--estimator mixture --sampling '
              'random" bash tests/Bench/cycles/cycles_compare.sh BIN/ray-tracing-cpu OUT_DIR   # BIN: each build'),
+        "",
+        "With `--strategy auto`, the default of a headless render since notebook §49 (2026-11-30, notebook §53, on "
+        "this session's 2-vCPU AMD EPYC, not the CI kind, against a new Cycles reference rendered there; its time "
+        "the render's and the pilot's wall clock, no strategy cache): the pilot chose area sampling with the BVH "
+        "in each round, with the scene's random pixel sampling, which it does not vary:",
+        "",
+        results_path("cpu-cycles-auto-1130/cycles.md").read_text().rstrip(),
+        "",
+        sources([("Machine", "2-vCPU AMD EPYC, both cores"), ("Date", "2026-11-30"),
+                 ("Results", link("cpu-cycles-auto-1130/cycles.md")), ("Notebook", notebook_link("## 53.")),
+                 ("Command", "")]),
+        "",
+        code('STRATEGIES="--estimator nee-mis --sampling sobol;--estimator nee-mis --sampling sobol --light-sampler '
+             'area;--strategy auto --strategy-cache off;--strategy auto --strategy-cache off --sampling sobol;'
+             '--estimator mixture --sampling random" bash tests/Bench/cycles/cycles_compare.sh '
+             'build/bin/ray-tracing-cpu OUT_DIR'),
     ]
 
 

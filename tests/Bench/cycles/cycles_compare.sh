@@ -5,7 +5,8 @@
 # APP: ray-tracing-cpu. SCENE (rtrol-cornell-box), WIDTH (300), SPP (64), REF_SPP (16384), THREADS (2), ROUNDS (3:
 # each render timed ROUNDS times, Cycles and ours alternating, the fastest kept), STRATEGIES (our renders, ";"
 # between their flags; default nee-mis with Sobol samples by the default (projected) and the area light sampler,
-# and book 3's mixture with random samples, the scene's defaults for the books' scenes). The reference is kept in
+# and book 3's mixture with random samples, the scene's defaults for the books' scenes; a strategy's flags may name
+# --strategy auto, whose pilot's wall time counts as the render's and whose choices are listed). The reference is kept in
 # OUT_DIR and reused by a later run of the same scene, width and REF_SPP (16,384 spp of 300 px: about 20 minutes
 # on two cores). Needs Debian's blender (apt-get install blender; 3.4.1 in bookworm). Prints a Markdown table.
 set -eu
@@ -16,6 +17,7 @@ strategies=${STRATEGIES:-"--estimator nee-mis --sampling sobol;--estimator nee-m
 here=$(dirname "$0")
 command -v blender >/dev/null || { echo "error: no blender (apt-get install blender)" >&2; exit 2; }
 mkdir -p "$out"
+rm -f "$out"/ours-*-choices.txt
 "$app" --scene "$scene" --export-scene "$out/$scene.json" 2>/dev/null
 cycles() { # SPP OUT.pfm: prints the render's seconds
     blender -b --factory-startup -noaudio -P "$here/cycles_render.py" -- "$out/$scene.json" "$2" "$1" "$width" \
@@ -42,10 +44,20 @@ IFS=';' read -r -a ours <<<"$strategies"
 for ((r = 1; r <= rounds; ++r)); do
     cycles_times+=("$(cycles "$spp" "$out/cycles.pfm")")
     for i in "${!ours[@]}"; do
+        # The scene's strategy unless the flags name one (--strategy auto: add --strategy-cache off, or every round
+        # after the first takes the first's choice without a pilot).
+        strategy=(--strategy scene)
+        [[ " ${ours[$i]} " == *" --strategy "* ]] && strategy=()
         # shellcheck disable=SC2086 # the strategy's flags split on spaces
-        "$app" --headless --quiet --strategy scene --engine multi --scene "$scene" --width "$width" --spp "$spp" ${ours[$i]} \
+        "$app" --headless --quiet "${strategy[@]}" --engine multi --scene "$scene" --width "$width" --spp "$spp" ${ours[$i]} \
             --hdr "$out/ours-$i.pfm" --stats "$out/ours-$i.json" >/dev/null 2>&1
-        our_times[$i]="${our_times[$i]:-} $(python3 -c "import json, sys; print(json.load(open(sys.argv[1]))['render_seconds'])" "$out/ours-$i.json")"
+        # A pilot's time (its wall clock, preparation included) is the render's too.
+        our_times[$i]="${our_times[$i]:-} $(python3 -c "import json, sys
+j = json.load(open(sys.argv[1]))
+c = j.get('strategy_choice')
+if c:
+    print(c['chosen'], file=open(sys.argv[2], 'a'))
+print(j['render_seconds'] + (c['pilot_wall_seconds'] if c else 0.0))" "$out/ours-$i.json" "$out/ours-$i-choices.txt")"
     done
 done
 cycles_s=$(best "${cycles_times[@]}")
@@ -64,6 +76,9 @@ for i in "${!ours[@]}"; do
     s=$(best ${our_times[$i]})
     rel=$(relmse "$out/ours-$i.pfm")
     label=${ours[$i]}
+    # --strategy auto: the choice of each round (the relMSE is the last round's image, the time the fastest round's).
+    [ -e "$out/ours-$i-choices.txt" ] && label="$label (chose: $(sort "$out/ours-$i-choices.txt" | uniq -c |
+        awk '{n = $1; $1 = ""; printf "%s%s x%d", sep, substr($0, 2), n; sep = "; "}'))"
     python3 - "$label" "$s" "$rel" "$cycles_s" "$cycles_rel" <<'PY'
 import sys
 label, s, rel, cs, crel = sys.argv[1].strip(), *map(float, sys.argv[2:])
