@@ -1,4 +1,5 @@
-// --strategy auto: the light-sampling strategy (estimator x light sampler x light selection; pixel sampling where asked)
+// --strategy auto: the light-sampling strategy (estimator x light sampler x light selection; pixel sampling where the
+// scene's is random, or where asked)
 // chosen for a scene by measurement on the engine that will render it, since which one wins depends on the
 // scene, the engine and the build (issue 37: the project's own tables changed their verdict as the code got
 // faster).
@@ -218,13 +219,17 @@ struct AutoChoice
 /// BSDF sampling alone: a pilot chose it on veach-mis, 0.002x nee-mis's efficiency); area, solid-angle and projected
 /// light sampling, and projected-exact where the scene has quad or triangle lights (on spheres it is projected),
 /// none but the request's when it has no emitter; every light selection where the scene has two emitters or more.
-/// The pixel sampling and Russian roulette stay the request's: Sobol's gain over random grows with the spp, and a
-/// pilot of a few samples per pixel cannot measure what the render's many will gain (a list given varies them).
+/// Where the scene's pixel sampling is random (the books' scenes, a scene file's), Sobol is a candidate too: its gain
+/// over random grows with the spp, which a pilot of few spp per pixel sees only in part (at 2 spp a pilot chose random
+/// over Sobol on rect-light-closeup, where Sobol is 3.5x as efficient), and the random samples are the scene's own,
+/// kept where the pilot sees no lead. Otherwise the pixel sampling, and always Russian roulette, stay the request's
+/// (a list given varies them).
 StrategyLists autoCandidates(const Scene& scene, const StrategyLists& given, const std::vector<std::string>& fixed);
 
 /// The candidates a pilot of `settings` measures: `lists` (autoCandidates') without the estimators' list where
 /// the settings' estimator is not in it (a single strategy, bsdf or nee, stays as asked: the pilot's estimators
-/// combine strategies); nothing for restir-di, whose pixels are correlated (reservoirs reused across pixels and
+/// combine strategies), and without the samplings' where its pixel sampling is not (a window's stratified samples
+/// or accumulation stay); nothing for restir-di, whose pixels are correlated (reservoirs reused across pixels and
 /// iterations), which one seed's error, all a pilot's measurement has, does not score (--compare takes the mean of
 /// several seeds for it). Every pilot of the apps (headless, the windows') takes it.
 std::optional<StrategyLists> pilotCandidates(const StrategyLists& lists, const RenderSettings& settings);

@@ -1611,8 +1611,13 @@ def section_cycles():
         "",
         results_path("cpu-cycles-auto-1130/cycles.md").read_text().rstrip(),
         "",
+        "With Sobol a candidate beside a books' scene's random samples (the same hour, the same reference):",
+        "",
+        results_path("cpu-cycles-auto-1130/cycles-sobol-candidate.md").read_text().rstrip(),
+        "",
         sources([("Machine", "2-vCPU AMD EPYC, both cores"), ("Date", "2026-11-30"),
-                 ("Results", link("cpu-cycles-auto-1130/cycles.md")), ("Notebook", notebook_link("## 53.")),
+                 ("Results", link("cpu-cycles-auto-1130/cycles.md") + ", " +
+                  link("cpu-cycles-auto-1130/cycles-sobol-candidate.md")), ("Notebook", notebook_link("## 53.")),
                  ("Command", "")]),
         "",
         code('STRATEGIES="--estimator nee-mis --sampling sobol;--estimator nee-mis --sampling sobol --light-sampler '
