@@ -174,6 +174,7 @@ def pilots(out):
 def leads(outs):
     """One line per pilot's final-round challenger (see the module's docstring): whether a switch rule at another
     minimum lead would have decided otherwise, against the full comparison's ratio."""
+    # pilotSwitches' rule is the 5 % since notebook §52; the 10 % was the rule before.
     print("| results | scene | seed | challenger | lead | 2 s.e. | trimmed lead | 2 s.e. | switch at 10 % | at 5 % | "
           "comparison's lead | chosen |")
     print("|---|---|---:|---|---:|---:|---:|---:|---|---|---:|---|")
