@@ -723,10 +723,12 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     };
     auto measureOnce = [&](Candidate& c, bool finalRound, std::uint32_t slot) {
         if (finalRound && choice.timingSpp > 0 && c.row.timingFrames < 3)
-            do
-                if (!timingFrame(c, slot))
-                    return false;
-            while (c.row.timingFrames == 3 && timingFrameDue(c));
+        {
+            if (!timingFrame(c, slot))
+                return false;
+            if (c.row.timingFrames == 3 && timingStalled(c) && !timingFrame(c, slot))
+                return false;
+        }
         RenderRequest half = request;
         half.settings = c.row.strategy.applyTo(pilot);
         half.settings.seed = seedOf(slot);
@@ -1080,10 +1082,9 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         // one pilot of four: solid-angle sampling with uniform selection 0.83x the own's time by the halves, 0.51x by
         // the timing frames, 0.54x in the render; the pilot kept the own, 0.66x the best). That passes the guard
         // by up to the frames' planned quarter of the budget (and a stalled frame's second take), which buys the
-        // decision the search was for. The two
-        // take turns, the leader first: the first render after the scoring meets a stall where one comes, and the
-        // leader's first frame is at the timing spp, which its third repeats (the own, stopped after its first final
-        // measurement, would render its only frame at twice the spp there).
+        // decision the search was for. The two take turns, the leader first: the first render after the scoring meets
+        // a stall where one comes, and the leader's first frame is at the timing spp, which its third repeats (the
+        // own, stopped after its first final measurement, would render its only frame at twice the spp there).
         if (leader)
         {
             for (int frame = 0; frame < 4 && choice.timingSpp > 0; ++frame)

@@ -19,9 +19,9 @@
 // final two are measured three times, each time with a timing frame where the halves are too small to keep the
 // engine's device busy (a GPU's: their time per path then hides part of a costlier candidate's cost; the decision
 // takes the timing frames' time per path: the slope between frames of one and two times their spp, since each
-// frame of a GPU's wavefront also has a cost of its own; a fourth frame where the one at twice the spp stalled). Not one setting at a time: the estimator compared at the scene's light
-// sampler kept book 3's mixture on rtrol-cornell-box, where an estimator with NEE and a cheaper sampler is 2x as
-// efficient.
+// frame of a GPU's wavefront also has a cost of its own; a fourth frame where the one at twice the spp stalled).
+// Not one setting at a time: the estimator compared at the scene's light sampler kept book 3's mixture on
+// rtrol-cornell-box, where an estimator with NEE and a cheaper sampler is 2x as efficient.
 //
 // Every candidate of a round is rendered with the round's seeds (common random numbers): the strategies share a
 // seed's camera rays and BSDF directions, so their fireflies, and the ratio of two candidates' errors is 5-10x

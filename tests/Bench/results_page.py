@@ -1523,108 +1523,81 @@ def section_rays():
 CYCLES = {"dir": "cpu-cycles", "date": "2026-11-27", "notebook": "## 27."}
 
 
+def cycles_run(intro, tables, machine, date, notebook, command):
+    """One run of the Cycles comparison: its introduction, its tables ((caption or None, results file) pairs), where
+    they come from and the command that made them."""
+    lines = [intro, ""]
+    for caption, rel in tables:
+        lines += [caption, ""] if caption else []
+        lines += [results_path(rel).read_text().rstrip(), ""]
+    items = [("Machine", machine), ("Date", date), ("Results", ", ".join(link(rel) for _, rel in tables))]
+    items += [("Notebook", notebook_link(notebook))] if notebook else []
+    return lines + [sources(items + [("Command", "")]), "", code(command)]
+
+
+# cycles_compare.sh's flags for the light samplers' runs.
+CYCLES_SAMPLERS = ("--estimator nee-mis --sampling sobol;--estimator nee-mis --sampling sobol --light-sampler area;"
+                   "--estimator nee-mis --sampling sobol --light-sampler solid-angle;--estimator mixture --sampling "
+                   "random")
+
+
 def section_cycles():
     rel = CYCLES["dir"]
-    return [
-        "## 15. Against Blender Cycles (issue 42)",
-        "",
-        "The CPU engine beside the renderer users would otherwise pick: Debian's Blender 3.4.1 with Cycles on the "
-        "CPU, given the same scene (exported by `--export-scene`, built in Cycles by "
-        "`tests/Bench/cycles/cycles_render.py`: box pixel filter, no adaptive sampling, denoising or clamping), at "
-        "the same size, samples and threads; both against one Cycles reference of 16,384 spp. Efficiency is "
-        "1/(relMSE x seconds); issue 42 asks for 2.5x Cycles' with NEE.",
-        "",
-        results_path(f"{rel}/cycles.md").read_text().rstrip(),
-        "",
-        sources([("Machine", "CI kind, 2 vCPU, both cores"), ("Date", CYCLES["date"]),
-                 ("Results", link(f"{rel}/cycles.md")), ("Notebook", notebook_link(CYCLES["notebook"])),
-                 ("Command", "")]),
-        "",
-        code("bash tests/Bench/cycles/cycles_compare.sh build/bin/ray-tracing-cpu OUT_DIR"),
-        "",
-        "The light samplers in the same comparison (a later run against the same reference). Area sampling "
-        "skips the spherical rectangle's setup, which costs this scene about 0.9 s of a 2.2 s render for 5 % "
-        "less error:",
-        "",
-        results_path(f"{rel}/cycles-samplers.md").read_text().rstrip(),
-        "",
-        sources([("Machine", "CI kind, 2 vCPU, both cores"), ("Date", CYCLES["date"]),
-                 ("Results", link(f"{rel}/cycles-samplers.md")), ("Command", "")]),
-        "",
-        code('STRATEGIES="--estimator nee-mis --sampling sobol;--estimator nee-mis --sampling sobol --light-sampler '
-             'area;--estimator nee-mis --sampling sobol --light-sampler solid-angle;--estimator mixture --sampling '
-             'random" bash tests/Bench/cycles/cycles_compare.sh build/bin/ray-tracing-cpu OUT_DIR'),
-        "",
-        "With Cycles' Russian roulette (`sqrt`, the default since §16's measurement; a later run against the same "
-        "reference), nee-mis has Cycles' error per sample; `--russian-roulette on` is pbrt-v4's rule, the default "
-        "before:",
-        "",
-        results_path(f"{rel}/cycles-roulette.md").read_text().rstrip(),
-        "",
-        sources([("Machine", "CI kind, 2 vCPU, both cores"), ("Date", CYCLES["date"]),
-                 ("Results", link(f"{rel}/cycles-roulette.md")), ("Notebook", notebook_link("## 28.")),
-                 ("Command", "")]),
-        "",
-        code('STRATEGIES="--estimator nee-mis --sampling sobol;--estimator nee-mis --sampling sobol --light-sampler '
-             'area;--estimator nee-mis --sampling sobol --light-sampler solid-angle;--estimator nee-mis --sampling '
-             'sobol --russian-roulette on;--estimator mixture --sampling random" '
-             'bash tests/Bench/cycles/cycles_compare.sh build/bin/ray-tracing-cpu OUT_DIR'),
-        "",
-        "With the paths in lanes over the scene's BVH (2026-11-28, notebook §30: the path and shadow rays of eight "
-        "paths traversed together; the same images bit for bit), against the same reference:",
-        "",
-        results_path(f"{rel}/cycles-lanes.md").read_text().rstrip(),
-        "",
-        sources([("Machine", "CI kind, 2 vCPU, both cores"), ("Date", "2026-11-28"),
-                 ("Results", link(f"{rel}/cycles-lanes.md")), ("Notebook", notebook_link("## 30.")),
-                 ("Command", "")]),
-        "",
-        code('STRATEGIES="--estimator nee-mis --sampling sobol;--estimator nee-mis --sampling sobol --light-sampler '
-             'area;--estimator nee-mis --sampling sobol --light-sampler solid-angle;--estimator mixture --sampling '
-             'random" bash tests/Bench/cycles/cycles_compare.sh build/bin/ray-tracing-cpu OUT_DIR'),
-        "",
-        "With the rectangle samplers' shorter chains (2026-11-28, notebook §37), on a 2-vCPU Intel Xeon of the CI "
-        "kind against a new Cycles reference of the same settings (rendered there on one thread); the build before "
-        "and this one in two runs of the same hour, each with its own Cycles rounds:",
-        "",
-        "The build before (fb466e1^):",
-        "",
-        results_path("cpu-rectangle-chains/cycles-before.md").read_text().rstrip(),
-        "",
-        "This build:",
-        "",
-        results_path("cpu-rectangle-chains/cycles-this.md").read_text().rstrip(),
-        "",
-        sources([("Machine", "CI kind (2-vCPU Intel Xeon), both cores"), ("Date", "2026-11-28"),
-                 ("Results", link("cpu-rectangle-chains/cycles-before.md") + ", " +
-                  link("cpu-rectangle-chains/cycles-this.md")), ("Notebook", notebook_link("## 37.")),
-                 ("Command", "")]),
-        "",
-        code('STRATEGIES="--estimator nee-mis --sampling sobol;--estimator nee-mis --sampling sobol --light-sampler '
-             'area;--estimator nee-mis --sampling sobol --light-sampler solid-angle;--estimator mixture --sampling '
-             'random" bash tests/Bench/cycles/cycles_compare.sh BIN/ray-tracing-cpu OUT_DIR   # BIN: each build'),
-        "",
-        "With `--strategy auto`, the default of a headless render since notebook §49 (2026-11-30, notebook §53, on "
-        "this session's 2-vCPU AMD EPYC, not the CI kind, against a new Cycles reference rendered there; its time "
-        "the render's and the pilot's wall clock, no strategy cache): the pilot chose area sampling with the BVH "
-        "in each round, with the scene's random pixel sampling, which it does not vary:",
-        "",
-        results_path("cpu-cycles-auto-1130/cycles.md").read_text().rstrip(),
-        "",
-        "With Sobol a candidate beside a books' scene's random samples (the same hour, the same reference):",
-        "",
-        results_path("cpu-cycles-auto-1130/cycles-sobol-candidate.md").read_text().rstrip(),
-        "",
-        sources([("Machine", "2-vCPU AMD EPYC, both cores"), ("Date", "2026-11-30"),
-                 ("Results", link("cpu-cycles-auto-1130/cycles.md") + ", " +
-                  link("cpu-cycles-auto-1130/cycles-sobol-candidate.md")), ("Notebook", notebook_link("## 53.")),
-                 ("Command", "")]),
-        "",
-        code('STRATEGIES="--estimator nee-mis --sampling sobol;--estimator nee-mis --sampling sobol --light-sampler '
-             'area;--strategy auto --strategy-cache off;--strategy auto --strategy-cache off --sampling sobol;'
-             '--estimator mixture --sampling random" bash tests/Bench/cycles/cycles_compare.sh '
-             'build/bin/ray-tracing-cpu OUT_DIR'),
+    ci = "CI kind, 2 vCPU, both cores"
+    runs = [
+        cycles_run("The CPU engine beside the renderer users would otherwise pick: Debian's Blender 3.4.1 with Cycles "
+                   "on the CPU, given the same scene (exported by `--export-scene`, built in Cycles by "
+                   "`tests/Bench/cycles/cycles_render.py`: box pixel filter, no adaptive sampling, denoising or "
+                   "clamping), at the same size, samples and threads; both against one Cycles reference of 16,384 "
+                   "spp. Efficiency is 1/(relMSE x seconds); issue 42 asks for 2.5x Cycles' with NEE.",
+                   [(None, f"{rel}/cycles.md")], ci, CYCLES["date"], CYCLES["notebook"],
+                   "bash tests/Bench/cycles/cycles_compare.sh build/bin/ray-tracing-cpu OUT_DIR"),
+        cycles_run("The light samplers in the same comparison (a later run against the same reference). Area "
+                   "sampling skips the spherical rectangle's setup, which costs this scene about 0.9 s of a 2.2 s "
+                   "render for 5 % less error:",
+                   [(None, f"{rel}/cycles-samplers.md")], ci, CYCLES["date"], None,
+                   f'STRATEGIES="{CYCLES_SAMPLERS}" bash tests/Bench/cycles/cycles_compare.sh '
+                   'build/bin/ray-tracing-cpu OUT_DIR'),
+        cycles_run("With Cycles' Russian roulette (`sqrt`, the default since §16's measurement; a later run against "
+                   "the same reference), nee-mis has Cycles' error per sample; `--russian-roulette on` is pbrt-v4's "
+                   "rule, the default before:",
+                   [(None, f"{rel}/cycles-roulette.md")], ci, CYCLES["date"], "## 28.",
+                   'STRATEGIES="--estimator nee-mis --sampling sobol;--estimator nee-mis --sampling sobol '
+                   '--light-sampler area;--estimator nee-mis --sampling sobol --light-sampler solid-angle;--estimator '
+                   'nee-mis --sampling sobol --russian-roulette on;--estimator mixture --sampling random" '
+                   'bash tests/Bench/cycles/cycles_compare.sh build/bin/ray-tracing-cpu OUT_DIR'),
+        cycles_run("With the paths in lanes over the scene's BVH (2026-11-28, notebook §30: the path and shadow rays "
+                   "of eight paths traversed together; the same images bit for bit), against the same reference:",
+                   [(None, f"{rel}/cycles-lanes.md")], ci, "2026-11-28", "## 30.",
+                   f'STRATEGIES="{CYCLES_SAMPLERS}" bash tests/Bench/cycles/cycles_compare.sh '
+                   'build/bin/ray-tracing-cpu OUT_DIR'),
+        cycles_run("With the rectangle samplers' shorter chains (2026-11-28, notebook §37), on a 2-vCPU Intel Xeon "
+                   "of the CI kind against a new Cycles reference of the same settings (rendered there on one "
+                   "thread); the build before and this one in two runs of the same hour, each with its own Cycles "
+                   "rounds:",
+                   [("The build before (fb466e1^):", "cpu-rectangle-chains/cycles-before.md"),
+                    ("This build:", "cpu-rectangle-chains/cycles-this.md")],
+                   "CI kind (2-vCPU Intel Xeon), both cores", "2026-11-28", "## 37.",
+                   f'STRATEGIES="{CYCLES_SAMPLERS}" bash tests/Bench/cycles/cycles_compare.sh '
+                   'BIN/ray-tracing-cpu OUT_DIR   # BIN: each build'),
+        cycles_run("With `--strategy auto`, the default of a headless render since notebook §49 (2026-11-30, "
+                   "notebook §53, on this session's 2-vCPU AMD EPYC, not the CI kind, against a new Cycles reference "
+                   "rendered there; its time the render's and the pilot's wall clock, no strategy cache): the pilot "
+                   "chose area sampling with the BVH in each round, with the scene's random pixel sampling, which it "
+                   "does not vary:",
+                   [(None, "cpu-cycles-auto-1130/cycles.md"),
+                    ("With Sobol a candidate beside a books' scene's random samples (the same hour, the same "
+                     "reference):", "cpu-cycles-auto-1130/cycles-sobol-candidate.md")],
+                   "2-vCPU AMD EPYC, both cores", "2026-11-30", "## 53.",
+                   'STRATEGIES="--estimator nee-mis --sampling sobol;--estimator nee-mis --sampling sobol '
+                   '--light-sampler area;--strategy auto --strategy-cache off;--strategy auto --strategy-cache off '
+                   '--sampling sobol;--estimator mixture --sampling random" bash tests/Bench/cycles/cycles_compare.sh '
+                   'build/bin/ray-tracing-cpu OUT_DIR'),
     ]
+    lines = ["## 15. Against Blender Cycles (issue 42)", ""]
+    for run in runs:
+        lines += run + [""]
+    return lines[:-1]
 
 
 ROULETTE = {"dir": "h100-roulette", "date": "2026-11-27", "notebook": "## 28."}

@@ -8,7 +8,8 @@
 // Equal candidates: each pilot is a search over 12 candidates whose luckiest draws look better than the scene's own;
 // a switch is a false alarm. The final round's challenger must lead on its fresh measurements, paired with the
 // own's seed by seed, by twice the ratio's standard error and 5 % (pilotSwitches): none of these 40 pilots switched
-// at the rule's earlier 10 %; the test allows 4. (With independent seeds and one standard error, 8 of 40 switched and the test failed.)
+// at the rule's earlier 10 %; the test allows 4. (With independent seeds and one standard error, 8 of 40 switched
+// and the test failed.)
 // A candidate twice as efficient (sigma / sqrt 2): every pilot must take it; 1.15x was taken by 39 of 40 (at the
 // rule's earlier 10 %): the pilot's noise at a CPU's size hides part of a small lead.
 // A 2 % lead where a GPU-sized pilot resolves it: not taken (a real device's times, which the ratio's standard error
