@@ -1584,7 +1584,7 @@ def section_cycles():
                    "notebook §53, on this session's 2-vCPU AMD EPYC, not the CI kind, against a new Cycles reference "
                    "rendered there; its time the render's and the pilot's wall clock, no strategy cache): the pilot "
                    "chose area sampling with the BVH in each round, with the scene's random pixel sampling, which it "
-                   "does not vary:",
+                   "did not vary then:",
                    [(None, "cpu-cycles-auto-1130/cycles.md"),
                     ("With Sobol a candidate beside a books' scene's random samples (the same hour, the same "
                      "reference):", "cpu-cycles-auto-1130/cycles-sobol-candidate.md")],
@@ -1592,6 +1592,10 @@ def section_cycles():
                    'STRATEGIES="--estimator nee-mis --sampling sobol;--estimator nee-mis --sampling sobol '
                    '--light-sampler area;--strategy auto --strategy-cache off;--strategy auto --strategy-cache off '
                    '--sampling sobol;--estimator mixture --sampling random" bash tests/Bench/cycles/cycles_compare.sh '
+                   'build/bin/ray-tracing-cpu OUT_DIR\n'
+                   '# the second table, with c4aee5a and its Sobol candidate (the reference kept in OUT_DIR):\n'
+                   'STRATEGIES="--estimator nee-mis --sampling sobol --light-sampler area;--strategy auto '
+                   '--strategy-cache off;--estimator mixture --sampling random" bash tests/Bench/cycles/cycles_compare.sh '
                    'build/bin/ray-tracing-cpu OUT_DIR'),
     ]
     lines = ["## 15. Against Blender Cycles (issue 42)", ""]
