@@ -2,7 +2,7 @@
 # Issue 37's check of --strategy auto, per scene, at equal time on one engine:
 #  1. a full --compare over every candidate of auto's defaults (estimators x light samplers x light selections; no
 #     selections where the scene has one light, no projected-exact where its lights are spheres, no mixture where it
-#     has a microfacet material; the scene's pixel sampling) with the auto row beside them, its time including its
+#     has a microfacet material; the scene's pixel sampling, and Sobol beside it where that is random) with the auto row beside them, its time including its
 #     pilot's;
 #  2. the best strategy of 1 measured again, and the scene's own strategy and auto with RECHECK_SEEDS fresh seeds
 #     (default 12, from seed 100: a render sharing a seed with its reference's halves, seed + 1000 and + 2000, would
@@ -27,8 +27,10 @@ here=$(cd "$(dirname "$0")" && pwd)
 if [ "$engine" = gpu ]; then app="$bin/ray-tracing-gpu"; else app="$bin/ray-tracing-cpu"; fi
 for scene in "$@"; do
     # auto's candidates (Compare/AutoStrategy.h autoCandidates): no light selection for one light, no
-    # projected-exact for sphere lights, no mixture where the scene has a microfacet material.
-    estimators=nee-mis,mixture
+    # projected-exact for sphere lights, no mixture where the scene has a microfacet material; Sobol beside random
+    # pixel samples where the scene's are random (the books' scenes: of the light scenes, rtrol-cornell-box).
+    estimators=nee-mis,mixture samplings=
+    [ "$scene" = rtrol-cornell-box ] && samplings=random,sobol
     case "$scene" in
     rect-light-closeup | rtrol-cornell-box) samplers=projected,solid-angle,area,projected-exact selections=bvh ;;
     sphere-light-closeup) samplers=projected,solid-angle,area selections=bvh ;;
@@ -43,7 +45,7 @@ for scene in "$@"; do
     if [ "${RECHECK_ONLY:-0}" != 1 ] || [ ! -f "$out/$scene.csv" ] || [ ! -f "$reference" ]; then
         $app --compare "${common[@]}" --seeds "$seeds" --reference-spp "$referenceSpp" --strategy auto \
             --estimators "$estimators" --light-samplers "$samplers" --light-selections "$selections" \
-            --csv "$out/$scene.csv" --images "$images/$scene-images" --table "$out/$scene.json" \
+            ${samplings:+--samplings "$samplings"} --csv "$out/$scene.csv" --images "$images/$scene-images" --table "$out/$scene.json" \
             >"$out/$scene.txt" 2>"$out/$scene.log"
         mv "$images/$scene-images/reference.pfm" "$reference"
     fi

@@ -916,6 +916,12 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "    cornell-box-lights glossy-cornell veach-mis many-lights rect-light-closeup sphere-light-closeup \\\n"
                   "    triangle-lights rtrol-cornell-box  # OUT: the full comparisons' CSV and references", "## 47.",
                   "2026-11-30"),
+                 ("cpu-auto-strategy-4s-1130b", "this session's 2-vCPU AMD EPYC, both cores (the multi engine)",
+                  "rtrol-cornell-box with 229e56f, Sobol a candidate beside the scene's random samples (and a row of "
+                  "the full comparison): 0.90x the best (nee-mis, area, Sobol), chosen 4 of 4; 3.7x the "
+                  "scene's own (notebook §54)",
+                  "RECHECK_SEEDS=4 bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-4s-1130b \\\n"
+                  "    multi 128 4000 2 16384 rtrol-cornell-box", "## 54.", "2026-11-30"),
                  ("h200-auto-strategy-8s-1129", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 8 s, 1 seed for the full comparison, 4 recheck seeds: the pilot "
                   "of c2dc4a3 (its switch at two standard errors of the error per pixel; 320beb0's build) on the "
@@ -987,6 +993,28 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "and book 3's mixture in two final rounds of four (notebook §52)",
                   "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=cornell-box-lights \\\n"
                   "    bash tests/Bench/device_run.sh auto", "## 52.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1130e", "NVIDIA H200, driver 580",
+                  "cornell-box-lights with 229e56f (the switch at 5 %, a stalled timing frame taken again): 0.91x "
+                  "the best, its best 3 of 4 (notebook §54)",
+                  "LEAN=1 bash tests/Bench/device_carry.sh  # then on the device:\n"
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=cornell-box-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 54.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1130f", "NVIDIA H200, driver 580",
+                  "many-lights with the same build: 0.92x the best, its own (0.95x the best) kept 3 of 4; auto / own "
+                  "0.96x, the pilot's cost (notebook §54)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=many-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 54.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1130g", "NVIDIA H200, driver 580",
+                  "glossy-cornell with the same build: 0.90x the best (0.899 [0.87, 0.93]), its best 3 of 4; the "
+                  "pilots 1.17-1.44x their 0.4 s budget on the engine's clock (notebook §54)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=glossy-cornell \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 54.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1130h", "NVIDIA H200, driver 580",
+                  "rtrol-cornell-box with the same build, Sobol a candidate beside the scene's random samples (and a "
+                  "row of the full comparison): 0.95x the best (nee-mis, solid-angle, Sobol), chosen 4 of 4; 5.0x "
+                  "the scene's own (notebook §54)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=rtrol-cornell-box \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 54.", "2026-11-30"),
                  ("h200-auto-strategy-5s-1130", "NVIDIA H200, driver 580",
                   "the same build, each strategy for 5 s and a reference of 32,768 spp (what the device's budget "
                   "left): veach-mis 0.96x the best, its own kept 4 of 4 (notebook §48)",
