@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <sstream>
 
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/fmt/ranges.h>
@@ -124,9 +125,19 @@ std::optional<StrategyLists> pilotCandidates(const StrategyLists& lists, const R
     if (settings.estimator == Estimator::RestirDi)
         return std::nullopt;
     StrategyLists candidates = lists;
-    // An estimator or a pixel sampling the lists do not hold is kept (a window's stratified samples, or the GPU
-    // window's accumulation, against a books' scene's "random,sobol"): the request's own would otherwise be measured
-    // as the list's first and replaced.
+    // The GPU window's accumulation is its passes' random samples (progressiveSampling): it stands for random in a
+    // books' scene's "random,sobol", so that Sobol is measured beside it there too.
+    if (const std::string flag(findSetting("sampling")->compareFlag);
+        settings.sampling == PixelSampling::Accumulate && candidates.count(flag))
+    {
+        std::string replaced;
+        std::istringstream words(candidates[flag]);
+        for (std::string word; std::getline(words, word, ',');)
+            replaced += (replaced.empty() ? "" : ",") + (word == "random" ? std::string("accumulate") : word);
+        candidates[flag] = replaced;
+    }
+    // An estimator or a pixel sampling the lists do not hold is kept (a window's stratified samples against a books'
+    // scene's "random,sobol"): the request's own would otherwise be measured as the list's first and replaced.
     for (const char* name : {"estimator", "sampling"})
     {
         const Setting& setting = *findSetting(name);
@@ -540,8 +551,9 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // projected sampling with the BVH at 1.35-1.57x the time per path of solid-angle sampling with uniform selection,
     // the render at 2x, and at 10 s the pilot kept the own, 0.65x the best. The final round then times each of its
     // two candidates on frames of the probe's pixels with up to that many paths, once per measurement, the second at
-    // twice the spp (a quarter of the budget holds the six), and decides on their least times' slope
-    // (timingMsPerPath). Frames of no more than twice a half's paths tell nothing the halves do not.
+    // twice the spp (a quarter of the budget holds the six; a stalled one's fourth is outside it: timingStalled), and
+    // decides on their least times' slope (timingMsPerPath). Frames of no more than twice a half's paths tell nothing
+    // the halves do not.
     constexpr double kThroughputFactor = 16.0;
     const double timingBudgetMs = 0.25 * choice.budgetSeconds * 1e3 / 8.0; // two candidates' frames of 1, 2 and 1 units
     const double timingPaths = std::min(kThroughputFactor * double(engine.concurrentPaths()),
@@ -710,7 +722,8 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // (2.6-2.9 in the others; stalls of 10-17 ms beside frames of 7-8 ms), and two of them chose strategies 0.95x and
     // 0.90x the own (notebook §52). A shorter stall is not seen. Taking four frames from every candidate instead cost
     // the halves a sixth of their paths, and two pilots of four then took book 3's mixture, 0.44x the own, to the
-    // final round. The fourth frame is outside the plan (at most two units of the eight planned for the frames).
+    // final round. The fourth frame is outside the plan (two units, four where both finalists stalled, beside the eight
+    // planned for the frames).
     auto timingStalled = [&](const Candidate& c) {
         const double oncePaths = framePaths(c, timing), twicePaths = framePaths(c, twiceTiming);
         return c.timingLeastMs[0] > 0.0 && c.timingLeastMs[1] > 0.0 && twicePaths > oncePaths &&
@@ -1043,6 +1056,17 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // Whether the final round decided: one cut to a single pair by the host's clock (lavapipe beside other work:
     // 48 s of a pilot held to 20 s, nee-mis 4x as efficient as the own) decides as a search without one.
     bool decided = false;
+    // The timing frames `first` and the own have not taken (their three, and a stalled one's fourth), in turns,
+    // `first` first: where the host's clock cut the final round, its frames were cut with it (after the own's third
+    // measurement, before the challenger's, a stalled frame at twice the spp was the challenger's slope: 0.25x the
+    // own's where 1.39x). False where cancelled.
+    auto completeTimingFrames = [&](Candidate& first) {
+        for (int frame = 0; frame < 4 && choice.timingSpp > 0; ++frame)
+            for (Candidate* c : {&first, &ownRun})
+                if (timingFrameDue(*c) && !timingFrame(*c, slot))
+                    return false;
+        return true;
+    };
     if (challenger != measuredRuns.end() && measuredRuns.front() == &ownRun && ownRun.finals.size() >= 2 &&
         (*challenger)->finals.size() >= 2)
     {
@@ -1050,6 +1074,8 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         // round's measurements of each (they take turns; a stall only adds time: on 2 cores one measurement of the
         // own's 6 ms renders took 7.9 ms where its others took 5.6-6.6).
         Candidate& rival = **challenger;
+        if (!completeTimingFrames(rival)) // a final round that ran whole has them all
+            return cancelledChoice();
         const bool timed = rival.row.timingMsPerPath > 0.0 && ownRun.row.timingMsPerPath > 0.0;
         decided = decidePaired(rival, true, timed ? 2.0 * halfPaths * ownRun.row.timingMsPerPath : ownRun.finalLeastMs,
                                timed ? 2.0 * halfPaths * rival.row.timingMsPerPath : rival.finalLeastMs);
@@ -1087,10 +1113,8 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         // own, stopped after its first final measurement, would render its only frame at twice the spp there).
         if (leader)
         {
-            for (int frame = 0; frame < 4 && choice.timingSpp > 0; ++frame)
-                for (Candidate* c : {leader, &ownRun})
-                    if (timingFrameDue(*c) && !timingFrame(*c, slot))
-                        return cancelledChoice();
+            if (!completeTimingFrames(*leader))
+                return cancelledChoice();
             const bool timed = leader->row.timingMsPerPath > 0.0 && ownRun.row.timingMsPerPath > 0.0;
             decidePaired(*leader, false, timed ? 2.0 * halfPaths * ownRun.row.timingMsPerPath : ownRun.leastMs,
                          timed ? 2.0 * halfPaths * leader->row.timingMsPerPath : leader->leastMs);

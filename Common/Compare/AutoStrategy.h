@@ -158,7 +158,9 @@ struct PilotRow
     /// take instead of the halves' times (with one frame, a search the guard stopped: its time less the probe's fixed
     /// and per-pixel terms, a path's; never what decides).
     double timingMsPerPath = 0.0;
-    int timingFrames = 0; // its timing frames rendered: three, or four where the second stalled
+    /// Its timing frames rendered: three for a finalist (four where the second stalled), fewer where the search was
+    /// cancelled, 0 for a candidate the final round (or the guard's fallback) did not time.
+    int timingFrames = 0;
 };
 
 /// What the pilot measured and chose: --stats' "strategy_choice", the log's table, --compare's auto row.
@@ -181,7 +183,7 @@ struct AutoChoice
     double candidatesCostScale = 1.0;
     int timingWidth = 0; // the timing frames (the final round's, or the guard's fallback's), where planned (0: none);
                          // their height is the image's
-    int timingSpp = 0; // the first and third; the second twice it
+    int timingSpp = 0; // the first and third; the second (and a stalled second's fourth) twice it
     double budgetSeconds = 0.0;
     double pilotMs = 0.0; // the probe's and every candidate's render time, on the engine's clock
     double pilotWallSeconds = 0.0; // the whole pilot on the host's clock (GPU pipelines compiled included)

@@ -376,8 +376,9 @@ TEST(PilotDecision, ALeadOfFifteenPercentIsTakenAndCandidatesBehindAreNot)
 
 TEST(PilotDecision, ALeadUnderFivePercentIsNotTakenAndOneOfEightIsWhereThePilotResolvesIt)
 {
-    // A GPU's pilot: 11,000 pixels a candidate, the ratio's standard error about 2 %, a 2 % lead one of them: its
-    // measured lead passes the 5 % in a pilot of fifteen by the error's noise alone (the fake's times are exact).
+    // A GPU's pilot: 11,000 pixels a candidate, the log ratio's standard error under 1 % (0.7-0.9 %), a 2 % lead one
+    // of them (measured 1.02-1.03): twice the error alone would pass it; the 5 % keeps it out (the fake's times are
+    // exact).
     EXPECT_EQ(pilotsChoosing(oneBetterBy(1.02), 6, theBetterOne(), kGpuLike), 0);
     // An 8 % lead: what an H200's pilots of cornell-box-lights saw (1.07-1.10) of solid-angle sampling's 1.11-1.14 at
     // 600 px, their small frames hiding part of its speed; at the rule's earlier 10 % they kept the own in 3 of 4
@@ -680,6 +681,53 @@ TEST(PilotDecision, AGuardBeforeTheFinalRoundDecidedStillTimesTheLeaderOnTimingF
             << "the halves' time: no lead a switch needs";
         EXPECT_EQ(engine.frames().size() - begun, kFinalRoundsFirstFrame + 3 + 2 + 3)
             << "the own's final measurement (a timing frame, two halves), then its two more frames and the leader's three";
+        taken += choice.chosen == theBetterOne();
+    }
+    EXPECT_EQ(taken, 3);
+}
+
+TEST(PilotDecision, ATimingFrameThatStalledIsTakenAgainWhereTheGuardCutsTheFinalRound)
+{
+    // AGuardBeforeTheFinalRoundDecidedStillTimesTheLeaderOnTimingFrames' engine, the host's clock past the guard in
+    // the own's third final measurement (its timing frame taken, the measurement not counted), before the
+    // challenger's: the challenger has two timing frames, and the second, at twice the spp, takes 3x its time (a
+    // stall, as ATimingFrameThatStalledAtTwiceTheSppIsTakenAgain's). Both finalists' frames are completed before the decision, the challenger's third and, as its second stalled, a
+    // fourth at twice the spp: its slope is the one without the stall, and every pilot takes it. (Decided on the
+    // stalled frame, the own's slope over the challenger's was 0.25 where 1.39, and the own stayed.)
+    constexpr std::size_t kFinalRoundsFirstFrame = kProbeFrames + 12 + 2 * (13 + 6 + 3); // no cost probes
+    // A final measurement's frames: its timing frame and its two halves; the own's third's second half.
+    constexpr std::size_t kOwnsThirdSecondHalf = kFinalRoundsFirstFrame + 4 * 3 + 2;
+    const Scene scene = makeScene("cornell-box-lights");
+    NoiseEngine engine([](const RenderSettings&) { return 1.0; }, std::uint64_t(1) << 14, 4e-7);
+    engine.setPathCost(forTheBetterOne(1.0 / 1.6), 4.0 * double(std::uint64_t(1) << 14));
+    const Strategy own = Strategy::of(pilotRequest(scene).settings);
+    int taken = 0;
+    for (std::uint32_t seed = 900; seed < 903; ++seed)
+    {
+        engine.setFrameScale({});
+        std::size_t begun = engine.frames().size();
+        const AutoChoice steady = pilotStoppedAt(engine, scene, begun + kOwnsThirdSecondHalf, seed);
+        ASSERT_GT(steady.timingSpp, 0) << "the plan has timing frames";
+        bool stalled = false;
+        engine.setFrameScale([&](std::size_t, const RenderSettings& s) {
+            if (stalled || !(Strategy::of(s) == theBetterOne()) || s.width != steady.timingWidth ||
+                s.spp != 2 * steady.timingSpp)
+                return 1.0;
+            stalled = true;
+            return 3.0;
+        });
+        begun = engine.frames().size();
+        const AutoChoice choice = pilotStoppedAt(engine, scene, begun + kOwnsThirdSecondHalf, seed);
+        ASSERT_TRUE(stalled) << "seed " << seed;
+        const auto better = rowOf(choice, theBetterOne());
+        ASSERT_NE(better, choice.rows.end());
+        EXPECT_EQ(rowOf(choice, own)->finalMeasurements, 2) << "its third stopped by the guard";
+        EXPECT_EQ(rowOf(choice, own)->timingFrames, 3);
+        EXPECT_EQ(better->finalMeasurements, 2);
+        EXPECT_EQ(better->timingFrames, 4) << "its third and fourth after the guard";
+        EXPECT_NEAR(rowOf(choice, own)->timingMsPerPath / better->timingMsPerPath,
+                    rowOf(steady, own)->timingMsPerPath / rowOf(steady, theBetterOne())->timingMsPerPath, 1e-9)
+            << "the slope of the frames without the stall";
         taken += choice.chosen == theBetterOne();
     }
     EXPECT_EQ(taken, 3);

@@ -237,7 +237,8 @@ void SettingsPanel::drawRenderControls(Session& session)
         session.chooseStrategy();
     tooltip("--strategy auto: a short pilot on the selected engine (5 % of the render's estimated time, 2 s at most) "
             "measures the efficiency 1/(relMSE s) of nee-mis and mixture with each light sampler and selection "
-            "(and Sobol samples where the scene's are random), sets the panel to the best and renders it; change "
+            "(and Sobol samples where the scene's and the panel's are random), sets the panel to the best and renders "
+            "it; change "
             "any setting afterwards to override it");
 
     ImGui::ProgressBar(session.progressFraction(), ImVec2(-1.0f, 0.0f), session.progressText().c_str());

@@ -165,8 +165,8 @@ void rayTracingSection(Controls& controls, const WindowState& state, const Panel
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("--strategy auto: a short pilot on the GPU (5 %% of the image's estimated time, 2 s at most, "
                           "and the pipelines it compiles; the window waits) measures the efficiency 1/(relMSE s) of "
-                          "nee-mis and mixture with each light sampler and selection (and Sobol samples where the "
-                          "scene's are random and the panel's are) and sets the panel to the best; "
+                          "nee-mis and mixture with each light sampler and selection (and Sobol samples beside the "
+                          "panel's accumulation where the scene's are random) and sets the panel to the best; "
                           "change any setting afterwards to override it");
     if (info.pilot && ImGui::TreeNodeEx("Strategy pilot", ImGuiTreeNodeFlags_DefaultOpen))
     {
