@@ -74,6 +74,10 @@ std::filesystem::path resolveAsset(const std::string& path, const std::string& w
     const std::filesystem::path inRoot = assetRoot() / given;
     if (std::filesystem::is_regular_file(inRoot))
         return inRoot;
+    // A folder, a pipe or a device is named as what it is: "not found" would send the user looking elsewhere.
+    for (const std::filesystem::path& p : {given, inRoot})
+        if (std::error_code ec; std::filesystem::exists(p, ec))
+            throw AssetError(fmt::format("{} file '{}' is not a regular file", what, p.string()));
     throw AssetError(fmt::format("{} file not found: '{}' (looked in the working directory and in '{}')", what,
                                  path, assetRoot().string()));
 }

@@ -123,7 +123,7 @@ private:
         {
             const auto value = finiteNumber(a);
             if (!value)
-                fail(m_line, fmt::format("{} coordinate '{}' is not a finite number", what, a));
+                fail(m_line, fmt::format("a {}'s number '{}' is not a finite number", what, a));
             values.push_back(*value);
         }
         if (values.size() < fewest || values.size() > most)

@@ -1,6 +1,7 @@
 #include "Assets/ObjLoader.h"
 
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -31,18 +32,19 @@ std::string firstLine(const std::string& text)
 MeshData loadObj(const std::string& path, ObjPlacement placement)
 {
     const std::filesystem::path file = resolveAsset(path, "mesh");
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
-    config.vertex_color = false;
-    config.mtl_search_path = file.parent_path().string();
     // Our scan first: it names the line of a problem tinyobjloader would read leniently or report vaguely.
     const ObjLines lines = scanObjLines(file);
-    tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(file.string(), config))
+    // Without a material reader: a mesh takes the scene's material, and an `mtllib` line may name any file (one
+    // outside the scene's folders, a pipe that never ends, /dev/zero), which would be read for nothing.
+    std::ifstream in(file, std::ios::binary);
+    tinyobj::attrib_t attrib;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> materials;
+    std::string warnings, error;
+    if (!in || !tinyobj::LoadObj(&attrib, &shapes, &materials, &warnings, &error, &in, nullptr, true, false))
         throw AssetError(fmt::format("malformed OBJ '{}': {}", file.string(),
-                                     firstLine(reader.Error().empty() ? "cannot be parsed" : reader.Error())));
+                                     firstLine(error.empty() ? "cannot be parsed" : error)));
 
-    const tinyobj::attrib_t& attrib = reader.GetAttrib();
     const std::size_t vertexCount = lines.positions.size();
     if (attrib.vertices.size() != 3 * vertexCount) // one per `v` statement in both readers
         throw AssetError(fmt::format("malformed OBJ '{}': tinyobjloader read {} vertices where the file has {}",
@@ -50,7 +52,7 @@ MeshData loadObj(const std::string& path, ObjPlacement placement)
     MeshData mesh;
     mesh.name = file.filename().string();
     // Positions are shared between faces as written: that keeps the mesh watertight for the triangle test.
-    for (const tinyobj::shape_t& shape : reader.GetShapes())
+    for (const tinyobj::shape_t& shape : shapes)
     {
         std::size_t offset = 0;
         for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f)

@@ -64,6 +64,16 @@ SceneRef CommonOptions::sceneRef() const
     return ref;
 }
 
+CLI::Validator finiteNumber()
+{
+    return CLI::Validator(
+        [](std::string& text) {
+            const std::optional<float> value = parseReal(text);
+            return value && std::isfinite(*value) ? std::string() : fmt::format("'{}' is not a finite number", text);
+        },
+        "");
+}
+
 CLI::Validator namesAFile()
 {
     return CLI::Validator([](std::string& path) { return path.empty() ? std::string("names no file") : std::string(); },
@@ -116,6 +126,7 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
                                "dielectric, glTF metallic-roughness) by this factor, {:g} to {:g}, alpha kept at "
                                "most 1: veach-mis's plates from mirror to matte (default: 1, the scene's own)",
                                kMinRoughnessScale, kMaxRoughnessScale))
+        ->check(finiteNumber())
         ->check(CLI::Range(kMinRoughnessScale, kMaxRoughnessScale))
         ->type_name("X");
     app.add_option("--strategy", o.strategy,
@@ -134,8 +145,9 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
                    "and pixel sampling (and the flags given), the same image for the same seed on every machine. The "
                    "windows open on scene (their first frame at once) and offer the pilot as a button; a given auto "
                    "opens them on its choice. Over mpirun's ranks the default is scene (one process chooses; a given "
-                   "auto is refused there). With --compare: a given auto adds a row 'auto' over the same candidates, "
-                   "its time including the pilot's")
+                   "auto is refused there). With --compare: a given auto adds a row 'auto', its pilot over the "
+                   "comparison's lists (auto's own candidates for a setting without one), its time including the "
+                   "pilot's")
         ->capture_default_str()
         ->check(CLI::IsMember({"scene", "auto"}))
         ->each([&o](const std::string&) { o.strategyGiven = true; });
@@ -143,10 +155,12 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
                    "With --strategy auto: the pilot's time as a fraction of the render's estimated time (from a "
                    "probe render), 0.001 to 1")
         ->capture_default_str()
+        ->check(finiteNumber())
         ->check(CLI::Range(0.001, 1.0));
     app.add_option("--pilot-max-seconds", o.pilotMaxSeconds,
                    "With --strategy auto: the pilot's time at most, in seconds (0.01 to 600)")
         ->capture_default_str()
+        ->check(finiteNumber())
         ->check(CLI::Range(0.01, 600.0));
     app.add_option("--strategy-cache", o.strategyCache,
                    "With --strategy auto, headless: the folder of pilots' choices kept between runs (a render of the "

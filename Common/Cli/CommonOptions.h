@@ -59,6 +59,9 @@ struct CommonOptions
 /// "not given".
 CLI::Validator namesAFile();
 
+/// CLI11's check of a number flag: NaN and the infinities are refused (CLI::Range lets NaN through).
+CLI::Validator finiteNumber();
+
 /// Registers the shared flags on `app` with help text for each: the render settings' from the settings table.
 void addCommonOptions(CLI::App& app, CommonOptions& options);
 

@@ -21,6 +21,7 @@
 #include "Cluster/SplitRender.h"
 #include "Error.h"
 #include "Format.h"
+#include "IO/AtomicFile.h"
 #include "IO/FileExtension.h"
 #include "IO/OutputSet.h"
 #include "Image/Heatmap.h"
@@ -123,6 +124,26 @@ void checkOutputPaths(const CommonOptions& o)
     checkOutputPath(o.output, "--output", {".png"});
     checkOutputPath(o.hdr, "--hdr", {".pfm", ".exr"});
     checkOutputPath(o.stats, "--stats", {".json"});
+    checkDistinctOutputs({{"--output", &o.output}, {"--hdr", &o.hdr}, {"--stats", &o.stats}, {"--heatmap", &o.heatmap}});
+}
+
+void checkDistinctOutputs(std::initializer_list<std::pair<const char*, const std::string*>> outputs)
+{
+    std::vector<std::pair<const char*, std::filesystem::path>> seen;
+    for (const auto& [flag, path] : outputs)
+    {
+        if (path->empty())
+            continue;
+        std::filesystem::path target;
+        outputTargetProblem(*path, target); // a problem is checkWritable's to name
+        std::error_code ec;
+        const std::filesystem::path resolved = std::filesystem::weakly_canonical(target, ec);
+        for (const auto& [other, otherPath] : seen)
+            if (!ec && resolved == otherPath)
+                throw UsageError(fmt::format("{} and {} name the same file '{}': give each its own", other, flag,
+                                             *path));
+        seen.emplace_back(flag, resolved);
+    }
 }
 
 namespace

@@ -19,9 +19,13 @@ namespace rt
 /// Throws UsageError (extension) or OutputError (folder), naming `flag`.
 void checkOutputPath(const std::string& path, const char* flag, std::initializer_list<const char*> extensions);
 
-/// Checks, before any work, that every output path can be written (folder exists, known extension).
-/// Throws UsageError or OutputError.
+/// Checks, before any work, that every output path can be written (folder exists, known extension) and that no
+/// two name one file (checkDistinctOutputs). Throws UsageError or OutputError.
 void checkOutputPaths(const CommonOptions& options);
+
+/// Throws UsageError naming both flags where two of `outputs` (flag, path; empty paths skipped) name one file: the
+/// same path, or a symbolic link to the other's (the second would replace the first's file).
+void checkDistinctOutputs(std::initializer_list<std::pair<const char*, const std::string*>> outputs);
 
 /// What a headless run renders once its scene is set: the request, and what chose it (--stats' "strategy_choice").
 struct ChosenRequest

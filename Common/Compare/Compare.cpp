@@ -58,6 +58,17 @@ std::vector<EngineKind> parseEngineList(const std::string& text)
     return engines;
 }
 
+std::string keptOnCancel(const CompareOptions& options, bool csvOpen, bool imagesFolder)
+{
+    std::string kept;
+    if (csvOpen)
+        kept = fmt::format("{} keeps the rows finished before", options.csv);
+    if (imagesFolder)
+        kept += fmt::format("{}{} keeps the images rendered before (images.json)", kept.empty() ? "" : "; ",
+                            options.images.string());
+    return kept.empty() ? ": nothing written" : ": " + kept;
+}
+
 void checkComparison(const CompareOptions& options)
 {
     if (options.strategies.empty())
@@ -66,6 +77,8 @@ void checkComparison(const CompareOptions& options)
     checkOutputPath(options.plot, "--plot", {".png"});
     checkOutputPath(options.json, "--table", {".json"});
     checkOutputPath(options.grid, "--output", {".png"});
+    checkDistinctOutputs(
+        {{"--csv", &options.csv}, {"--plot", &options.plot}, {"--table", &options.json}, {"--output", &options.grid}});
     if (!options.plot.empty() && options.csv.empty())
         throw UsageError("--plot draws the rows of --csv: give --csv FILE.csv too");
     if (options.equalTimeMs > 0.0 && options.grid.empty() && options.images.empty())
@@ -170,8 +183,7 @@ int runComparison(const Scene& scene, const RenderRequest& base, const CompareOp
     }
     if (!finished)
     {
-        spdlog::warn("comparison cancelled{}", csv ? fmt::format(": {} keeps the rows finished before", options.csv)
-                                                   : std::string(": nothing written"));
+        spdlog::warn("comparison cancelled{}", keptOnCancel(options, csv != nullptr, images.enabled()));
         return 130;
     }
     drawFigures(options, images);

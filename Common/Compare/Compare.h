@@ -55,6 +55,10 @@ std::vector<EngineKind> parseEngineList(const std::string& text);
 /// Throws UsageError, OutputError or AssetError.
 void checkComparison(const CompareOptions& options);
 
+/// The end of a cancelled comparison's warning, what it leaves: the CSV's finished rows and the --images folder's
+/// images (indexed by its images.json) where they were asked for, else ": nothing written".
+std::string keptOnCancel(const CompareOptions& options, bool csvOpen, bool imagesFolder);
+
 /// Runs the comparison and prints its table on stdout, progress on stderr; returns the process status (0, or
 /// 130 when Ctrl-C stopped it: the CSV keeps every row finished before). Engines that cannot start (no Vulkan
 /// ray-tracing device) are reported and left out rather than failing the comparison. `base` is the request

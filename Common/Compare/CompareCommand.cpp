@@ -35,12 +35,15 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
     app.add_option("--reference-spp", flags.referenceSpp,
                    "With --compare: spp of the reference image (default: 4x the largest count), rendered by the "
                    "last engine in two halves (seeds + 1000 and + 2000) whose difference gives the reference's own "
-                   "relMSE");
+                   "relMSE")
+        ->check(CLI::PositiveNumber);
     app.add_option("--reference", flags.referencePath,
                    "With --compare: a linear PFM or OpenEXR of the same size (e.g. a long --hdr render) to measure against "
                    "instead of rendering a reference")
         ->check(CLI::ExistingFile);
-    app.add_option("--table", flags.table, "With --compare: write every figure as JSON here")->check(namesAFile());
+    app.add_option("--table", flags.table, "With --compare: write every figure as JSON here")
+        ->check(namesAFile())
+        ->needs(compareFlag);
     for (const Setting* setting : strategySettings())
     {
         const std::string flag(setting->compareFlag);

@@ -22,7 +22,7 @@ struct CompareFlags
     bool compare = false;
     std::string sppList = "10,50,100";
     std::string engines; // empty: every engine the program links
-    int referenceSpp = 0;
+    long long referenceSpp = 0; // wider than an spp: a count past two renders' is refused by name, not by CLI11
     std::string referencePath;
     std::string table;
     StrategyLists strategies;

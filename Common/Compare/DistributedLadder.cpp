@@ -14,6 +14,7 @@
 #include "Cluster/Job.h"
 #include "Cluster/SplitRender.h"
 #include "Cluster/TaskPool.h"
+#include "Compare/Compare.h"
 #include "Compare/ConvergenceCsv.h"
 #include "Compare/Ladder.h"
 #include "Compare/RowJob.h"
@@ -198,9 +199,7 @@ int runDistributedLadder(const Scene& scene, const RenderRequest& base, const Co
     if (verdict.status == PartEnd::Status::Cancelled)
     {
         if (job.root())
-            spdlog::warn("comparison cancelled{}",
-                         csv ? fmt::format(": {} keeps the rows finished before", options.csv)
-                             : std::string(": nothing written"));
+            spdlog::warn("comparison cancelled{}", keptOnCancel(options, csv != nullptr, images.enabled()));
         // mpirun, ending the job, no longer lets MPI_Finalize finish: exit before its SIGKILL.
         job.leave(130);
     }

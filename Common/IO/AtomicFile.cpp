@@ -1,6 +1,8 @@
 #include "IO/AtomicFile.h"
 
+#include <atomic>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <system_error>
@@ -93,10 +95,46 @@ std::filesystem::path outputTarget(const std::filesystem::path& path)
     return target;
 }
 
+std::filesystem::path createTemporarySibling(const std::filesystem::path& path, const char* suffix)
+{
+    // The process and a counter: two writers of one process, or two processes, never share a name; a name taken by
+    // anything else (a user's file, a link planted to redirect the write) is skipped, not followed.
+    static std::atomic<std::uint64_t> counter = 0;
+    const std::filesystem::path parent = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    if (std::error_code ec; !std::filesystem::is_directory(parent, ec))
+        throw OutputError(fmt::format("cannot write '{}': folder '{}' does not exist", path.string(), parent.string()));
+    for (int attempt = 0; attempt < 1000; ++attempt)
+    {
+        std::filesystem::path candidate = path;
+#ifndef _WIN32
+        candidate += fmt::format("{}-{}-{}", suffix, ::getpid(), counter++);
+        const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        if (fd >= 0)
+        {
+            ::close(fd);
+            return candidate;
+        }
+        if (errno != EEXIST)
+            throw OutputError(fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno)));
+#else
+        candidate += fmt::format("{}-{}", suffix, counter++);
+        std::error_code ec;
+        if (!std::filesystem::exists(std::filesystem::symlink_status(candidate, ec)))
+        {
+            std::ofstream created(candidate, std::ios::binary);
+            if (created)
+                return candidate;
+            throw OutputError(fmt::format("cannot write '{}'", path.string()));
+        }
+#endif
+    }
+    throw OutputError(fmt::format("cannot write '{}': no free temporary name beside it", path.string()));
+}
+
 bool writeBytes(const std::filesystem::path& file, std::string_view bytes)
 {
 #ifndef _WIN32
-    const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0666);
     if (fd < 0)
         return false;
     for (std::size_t done = 0; done < bytes.size();)
@@ -126,11 +164,7 @@ void writeAtomically(const std::filesystem::path& shownPath,
                      const std::function<bool(const std::filesystem::path&)>& write)
 {
     const std::filesystem::path path = outputTarget(shownPath);
-    const std::filesystem::path parent = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-    if (!std::filesystem::is_directory(parent))
-        throw OutputError(fmt::format("cannot write '{}': folder '{}' does not exist", shownPath.string(), parent.string()));
-    std::filesystem::path tmp = path;
-    tmp += ".partial";
+    const std::filesystem::path tmp = createTemporarySibling(path, ".partial");
     std::error_code ec;
     errno = 0;
     if (!write(tmp) || !syncToDisk(tmp))

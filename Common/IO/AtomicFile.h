@@ -28,8 +28,14 @@ std::string outputTargetProblem(const std::filesystem::path& path, std::filesyst
 /// Throws OutputError ("cannot write 'path': ...") where outputTargetProblem names a problem.
 std::filesystem::path outputTarget(const std::filesystem::path& path);
 
-/// Writes `bytes` to `file` (created or truncated) and closes it, checking every write and the close. Returns
-/// false with errno set on a failure (a full disk: ENOSPC; a file size limit: EFBIG).
+/// Creates an empty file beside `path` named `path` + `suffix` + a number no file there has, exclusively (a file or
+/// a symbolic link already at a name is never followed, opened or replaced: another name is taken), with the
+/// permissions a new file gets (0666 less the umask), and returns its name: the temporary a writer then fills.
+/// Throws OutputError naming `path` where none can be created.
+std::filesystem::path createTemporarySibling(const std::filesystem::path& path, const char* suffix);
+
+/// Writes `bytes` to `file` (created or truncated; never through a symbolic link) and closes it, checking every
+/// write and the close. Returns false with errno set on a failure (a full disk: ENOSPC; a file size limit: EFBIG).
 bool writeBytes(const std::filesystem::path& file, std::string_view bytes);
 
 /// writeAtomically for a text or binary blob.

@@ -18,13 +18,6 @@ namespace rt
 {
 namespace
 {
-std::filesystem::path pendingPath(const std::filesystem::path& path)
-{
-    std::filesystem::path tmp = path;
-    tmp += ".pending";
-    return tmp;
-}
-
 void removeQuietly(const std::filesystem::path& path)
 {
     std::error_code ignored;
@@ -57,7 +50,14 @@ void checkWritable(const std::filesystem::path& shown, const char* flag)
 
 void OutputSet::add(std::filesystem::path path, Writer write)
 {
-    m_entries.push_back({outputTarget(path), std::move(write)});
+    std::filesystem::path target = outputTarget(path);
+    std::error_code ec;
+    const std::filesystem::path resolved = std::filesystem::weakly_canonical(target, ec);
+    for (const Entry& e : m_entries)
+        if (std::error_code other; std::filesystem::weakly_canonical(e.path, other) == resolved && !ec && !other)
+            throw OutputError(fmt::format("cannot write '{}': another output of this render is the same file",
+                                          path.string()));
+    m_entries.push_back({std::move(target), std::move(write), {}});
 }
 
 void OutputSet::commit()
@@ -68,16 +68,18 @@ void OutputSet::commit()
     {
         for (; written < m_entries.size(); ++written)
         {
-            const std::filesystem::path& path = m_entries[written].path;
+            Entry& entry = m_entries[written];
+            entry.pending = createTemporarySibling(entry.path, ".pending");
             try
             {
-                m_entries[written].write(pendingPath(path));
+                entry.write(entry.pending);
             }
             catch (const OutputError& e)
             {
-                // The writer names the file it was given, ours: the user named the one without ".pending".
+                // The writer names the file it was given, ours: the user named the one without ".pending-N".
                 std::string message = e.what();
-                const std::string pending = pendingPath(path).string();
+                const std::string pending = entry.pending.string();
+                const std::filesystem::path& path = entry.path;
                 for (std::size_t at = message.find(pending); at != std::string::npos; at = message.find(pending, at))
                     message.replace(at, pending.size(), path.string());
                 throw OutputError(message);
@@ -86,7 +88,7 @@ void OutputSet::commit()
         for (; placed < m_entries.size(); ++placed)
         {
             std::error_code ec;
-            std::filesystem::rename(pendingPath(m_entries[placed].path), m_entries[placed].path, ec);
+            std::filesystem::rename(m_entries[placed].pending, m_entries[placed].path, ec);
             if (ec)
                 throw OutputError(fmt::format("cannot write '{}': {}", m_entries[placed].path.string(), ec.message()));
         }
@@ -96,7 +98,8 @@ void OutputSet::commit()
         for (std::size_t i = 0; i < placed; ++i)
             removeQuietly(m_entries[i].path);
         for (std::size_t i = placed; i < m_entries.size() && i <= written; ++i)
-            removeQuietly(pendingPath(m_entries[i].path));
+            if (!m_entries[i].pending.empty())
+                removeQuietly(m_entries[i].pending);
         throw;
     }
 }

@@ -1,6 +1,6 @@
-// A render's outputs (--output, --hdr, --stats) as one set: written all or none. Each file alone was
-// already atomic (IO/AtomicFile.h), but a stats file that failed after the PNG was written left the PNG
-// behind with a failure status. Writable paths are checked before the render (checkWritable), so a
+// Files written as one set, all or none: a render's outputs (--output, --hdr, --stats), a scene export and its
+// images. Each file alone was already atomic (IO/AtomicFile.h), but a stats file that failed after the PNG was
+// written left the PNG behind with a failure status. Writable paths are checked before the render (checkWritable), so a
 // failure here is rare: a full disk, a folder removed meanwhile.
 #pragma once
 
@@ -23,11 +23,13 @@ public:
     /// `write(tmp)` writes the file to `tmp`, a sibling of `path`, throwing rt::Error on failure.
     using Writer = std::function<void(const std::filesystem::path& tmp)>;
 
+    /// Throws OutputError where `path` lands on the file another entry writes (two flags naming one file: the
+    /// second would replace the first, and a failure of either would remove the file both name).
     void add(std::filesystem::path path, Writer write);
 
-    /// Writes every file to its sibling `<path>.pending`, then renames each over its path. On a failure
-    /// removes every temporary and every file this call already put in place, and rethrows: no output of the
-    /// set is left behind (a file the set replaced is gone then; its old contents are not restored).
+    /// Writes every file to a new sibling `<path>.pending-N` (createTemporarySibling), then renames each over its
+    /// path. On a failure removes every temporary and every file this call already put in place, and rethrows: no
+    /// output of the set is left behind (a file the set replaced is gone then; its old contents are not restored).
     void commit();
 
 private:
@@ -35,6 +37,7 @@ private:
     {
         std::filesystem::path path;
         Writer write;
+        std::filesystem::path pending; // its temporary, once created
     };
     std::vector<Entry> m_entries;
 };

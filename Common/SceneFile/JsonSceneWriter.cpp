@@ -8,6 +8,7 @@
 #include "Assets/AssetPaths.h"
 #include "Error.h"
 #include "IO/AtomicFile.h"
+#include "IO/OutputSet.h"
 #include "Image/ImageIO.h"
 #include "Render/RenderSettings.h"
 #include "SceneFile/JsonSceneReader.h"
@@ -297,7 +298,9 @@ void exportScene(const Scene& scene, const std::filesystem::path& file)
     // or a file the exported scene may not read (outside its folder and the asset folder: AssetPaths.h), is
     // written beside the scene file as a PNG of the texels as held (8-bit sRGB RGBA), which reads back texel for
     // texel; the document names it relative to itself, where the reader looks first.
+    // The document and its images are one set, written all or none (a full disk after the first image left it).
     std::vector<std::string> paths;
+    OutputSet outputs;
     for (std::size_t i = 0; i < scene.images.size(); ++i)
     {
         const ImageData& image = scene.images[i];
@@ -307,10 +310,14 @@ void exportScene(const Scene& scene, const std::filesystem::path& file)
             continue;
         }
         paths.push_back(fmt::format("{}.image{}.png", file.stem().string(), i));
-        writePng8(file.parent_path() / paths.back(), image.width, image.height, image.rgba);
+        outputs.add(file.parent_path() / paths.back(), [&image](const std::filesystem::path& tmp) {
+            writePng8(tmp, image.width, image.height, image.rgba);
+        });
     }
     std::string text;
     layOut(sceneToJson(scene, paths), 0, false, text);
-    writeFileAtomically(file, text + "\n");
+    text += "\n";
+    outputs.add(file, [&text](const std::filesystem::path& tmp) { writeFileAtomically(tmp, text); });
+    outputs.commit();
 }
 } // namespace rt

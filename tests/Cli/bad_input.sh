@@ -215,5 +215,25 @@ fi
 rm -f "$work/good.png"
 expect_error "export to a non-JSON name" "--export-scene" --export-scene "$work/out.txt"
 expect_error "export into a missing folder" "does not exist" --export-scene "$work/no/such/out.json"
+# CLI::Range lets NaN through: a number flag refuses it by name.
+expect_error "roughness scale NaN" "--roughness-scale" --scene veach-mis --roughness-scale nan
+expect_error "pilot budget NaN" "--pilot-budget" --pilot-budget nan
+expect_error "pilot time NaN" "--pilot-max-seconds" --pilot-max-seconds nan
+# Two outputs naming one file: refused before the render (the second would replace the first, and a failure of
+# either removed the file both name: a user's x.exr, given as --hdr and --heatmap, was deleted).
+echo keep >"$work/keep.exr"
+expect_error "hdr and heatmap one file" "--hdr and --heatmap name the same file" --hdr "$work/keep.exr" \
+    --heatmap "$work/keep.exr"
+echo keep >"$work/shared.png"
+ln -s "$work/shared.png" "$work/alias.json"
+expect_error "output and a link to it" "--output and --stats name the same file" --output "$work/shared.png" \
+    --stats "$work/alias.json"
+grep -q keep "$work/keep.exr" && grep -q keep "$work/shared.png" ||
+    { echo "FAIL a refused render touched the user's file"; failures=$((failures + 1)); }
+# --compare's flags without --compare.
+expect_error "table without compare" "--table requires --compare" --table "$work/t.json"
+expect_error "zero reference spp" "--reference-spp" --compare --engines single --spp-list 1 --reference-spp 0
+# A mesh that is a folder is named as one, not "not found".
+expect_error "mesh is a folder" "is not a regular file" --scene mesh-in-one-weekend --mesh "$work"
 
 exit $failures

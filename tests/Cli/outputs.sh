@@ -50,6 +50,16 @@ fi
 "$app" --headless --quiet --scene rtrol-cornell-box --width 8 --spp 1 --hdr "$work/bad.png" >/dev/null 2>"$work/bad.txt" &&
     { echo "--hdr .png was accepted"; exit 1; }
 grep -q "must end in .pfm or .exr" "$work/bad.txt" || { cat "$work/bad.txt"; exit 1; }
+# A file or link at a temporary's name is another's: the render takes a name of its own beside it and leaves it be (a
+# link planted at the fixed "b.png.pending" of before had the PNG written through it into its target).
+echo victim >"$work/victim.txt"
+ln -s "$work/victim.txt" "$work/b.png.pending"
+"$app" --headless --quiet --scene rtrol-cornell-box --width 8 --spp 1 --output "$work/b.png" --hdr "$work/b.exr" \
+    >/dev/null
+[ "$(cat "$work/victim.txt")" = victim ] || { echo "the render wrote through a link at b.png.pending"; exit 1; }
+[ -f "$work/b.png" ] && [ ! -L "$work/b.png" ] && [ -L "$work/b.png.pending" ] ||
+    { ls -l "$work"; echo "b.png is not the render's own file, or the link was replaced"; exit 1; }
+! ls "$work" | grep -q -- "-[0-9]*-[0-9]*$" || { ls "$work"; echo "a temporary was left behind"; exit 1; }
 
 help=$("$app" --help)
 for flag in --headless --scene --spp --depth --width --aspect --sampling --pdf --unidirectional-light --seed \

@@ -3,10 +3,19 @@
 // failures returned cyan silently").
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <thread>
+
+#ifndef _WIN32
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#endif
 
 #include "Assets/AssetPaths.h"
 #include "Assets/ImageLoader.h"
@@ -59,6 +68,37 @@ TEST(ObjLoader, AFaceOfFewerThanThreeVerticesIsRejected)
     const auto fine = dir.write("fine.obj", "usemtl NoSuchMaterial\n" + vertices + "f 1 2 3\nf 2 4 3\n");
     EXPECT_EQ(loadObj(fine.string()).triangleCount(), 2u);
 }
+
+#ifndef _WIN32
+TEST(ObjLoader, AnMtllibLineIsNotRead)
+{
+    // A mesh takes the scene's material, and an OBJ's `mtllib` may name any file: one outside the scene's folders,
+    // /dev/zero, or a pipe. Here a pipe, watched by a thread that opens its writing end whenever a reader holds the
+    // other (a nonblocking open for writing succeeds only then) and closes it at once, so that a reader would get an
+    // empty file and the test an answer instead of a hang.
+    const test::ScratchDir dir;
+    const std::filesystem::path pipe = dir.path() / "materials.mtl";
+    ASSERT_EQ(mkfifo(pipe.c_str(), 0600), 0);
+    const auto file = dir.write("mesh.obj", "mtllib materials.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n");
+    std::atomic<bool> loaded = false, opened = false;
+    std::thread watcher([&] {
+        while (!loaded)
+        {
+            if (const int fd = open(pipe.c_str(), O_WRONLY | O_NONBLOCK); fd >= 0)
+            {
+                opened = true;
+                close(fd);
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+    });
+    const MeshData mesh = loadObj(file.string());
+    loaded = true;
+    watcher.join();
+    EXPECT_FALSE(opened) << "the loader opened the file its mtllib line names";
+    EXPECT_EQ(mesh.triangleCount(), 1u);
+}
+#endif
 
 TEST(ObjLoader, AVertexIndexOutOfRangeIsRejected)
 {

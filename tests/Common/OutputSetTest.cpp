@@ -12,6 +12,7 @@
 #include "Error.h"
 #include "IO/AtomicFile.h"
 #include "IO/OutputSet.h"
+#include "Support/FileContents.h"
 #include "Support/ScratchDir.h"
 
 namespace rt
@@ -35,6 +36,45 @@ TEST(OutputSet, WritesEveryFile)
     set.commit();
     EXPECT_EQ(filesIn(dir.path()), 3u); // no temporary left
     EXPECT_TRUE(std::filesystem::is_regular_file(dir / "a.json"));
+}
+
+TEST(OutputSet, TwoEntriesOfOneFileAreRefusedBeforeAnyIsWritten)
+{
+    // The same path, or a symbolic link to it: the second would replace the first, and a failure of either removed
+    // the file both name (a user's x.exr given as --hdr and --heatmap was deleted).
+    const test::ScratchDir dir;
+    writeFileAtomically(dir / "x.exr", "keep");
+    std::filesystem::create_symlink(dir / "x.exr", dir / "link.exr");
+    for (const char* second : {"x.exr", "link.exr"})
+    {
+        OutputSet set;
+        set.add(dir / "x.exr", [](const std::filesystem::path& tmp) { writeFileAtomically(tmp, "a"); });
+        EXPECT_THROW(set.add(dir / second, [](const std::filesystem::path& tmp) { writeFileAtomically(tmp, "b"); }),
+                     OutputError)
+            << second;
+    }
+    EXPECT_EQ(test::fileContents(dir / "x.exr"), "keep");
+}
+
+TEST(OutputSet, ATemporarysNameTakenByAFileOrALinkIsLeftAlone)
+{
+    // A link at the name the temporary of before took (`<path>.pending`, fixed) had the file written through it
+    // into its target; a user's file of that name was consumed. Each temporary is now created exclusively under a
+    // name of its own.
+    const test::ScratchDir dir;
+    writeFileAtomically(dir / "victim.txt", "victim");
+    std::filesystem::create_symlink(dir / "victim.txt", dir / "a.png.pending");
+    writeFileAtomically(dir / "b.json.pending", "a user's file");
+    OutputSet set;
+    set.add(dir / "a.png", [](const std::filesystem::path& tmp) { writeFileAtomically(tmp, "png"); });
+    set.add(dir / "b.json", [](const std::filesystem::path& tmp) { writeFileAtomically(tmp, "{}"); });
+    set.commit();
+    EXPECT_EQ(test::fileContents(dir / "victim.txt"), "victim");
+    EXPECT_EQ(test::fileContents(dir / "b.json.pending"), "a user's file");
+    EXPECT_TRUE(std::filesystem::is_symlink(dir / "a.png.pending"));
+    EXPECT_EQ(test::fileContents(dir / "a.png"), "png");
+    EXPECT_FALSE(std::filesystem::is_symlink(dir / "a.png"));
+    EXPECT_EQ(filesIn(dir.path()), 5u) << "no temporary left";
 }
 
 TEST(OutputSet, AFailingFileLeavesNoneOfTheSetBehind)
