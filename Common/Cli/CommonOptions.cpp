@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
+#include <string_view>
 
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
@@ -68,8 +69,12 @@ CLI::Validator finiteNumber()
 {
     return CLI::Validator(
         [](std::string& text) {
-            const std::optional<float> value = parseReal(text);
-            return value && std::isfinite(*value) ? std::string() : fmt::format("'{}' is not a finite number", text);
+            // strtod reads what CLI11's conversion reads ("+0.5", "0x1p-2", leading spaces), NaN and inf included.
+            char* end = nullptr;
+            const double value = std::strtod(text.c_str(), &end);
+            const bool number =
+                end != text.c_str() && std::string_view(end).find_first_not_of(" \t") == std::string_view::npos;
+            return number && std::isfinite(value) ? std::string() : fmt::format("'{}' is not a finite number", text);
         },
         "");
 }

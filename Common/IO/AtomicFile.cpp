@@ -14,6 +14,12 @@
 #ifndef _WIN32
 #include <fcntl.h>
 #include <unistd.h>
+#else
+#include <fcntl.h>
+#include <io.h>
+#include <process.h>
+#include <share.h>
+#include <sys/stat.h>
 #endif
 
 namespace rt
@@ -97,36 +103,40 @@ std::filesystem::path outputTarget(const std::filesystem::path& path)
 
 std::filesystem::path createTemporarySibling(const std::filesystem::path& path, const char* suffix)
 {
-    // The process and a counter: two writers of one process, or two processes, never share a name; a name taken by
-    // anything else (a user's file, a link planted to redirect the write) is skipped, not followed.
+    // The process and a counter, in hex: two writers of one process, or two processes, never share a name; a name
+    // taken by anything else (a user's file, a link planted to redirect the write) is skipped, not followed. Short
+    // (a temporary of a temporary is kTemporaryNameRoom longer than its file at most: checkWritable probes that).
     static std::atomic<std::uint64_t> counter = 0;
     const std::filesystem::path parent = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
     if (std::error_code ec; !std::filesystem::is_directory(parent, ec))
         throw OutputError(fmt::format("cannot write '{}': folder '{}' does not exist", path.string(), parent.string()));
+#ifndef _WIN32
+    const auto process = static_cast<unsigned long>(::getpid());
+#else
+    const auto process = static_cast<unsigned long>(::_getpid());
+#endif
     for (int attempt = 0; attempt < 1000; ++attempt)
     {
         std::filesystem::path candidate = path;
+        candidate += fmt::format("{}{:x}-{:x}", suffix, process, counter++);
 #ifndef _WIN32
-        candidate += fmt::format("{}-{}-{}", suffix, ::getpid(), counter++);
         const int fd = ::open(candidate.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+#else
+        int fd = -1;
+        ::_wsopen_s(&fd, candidate.c_str(), _O_WRONLY | _O_CREAT | _O_EXCL | _O_BINARY, _SH_DENYNO,
+                    _S_IREAD | _S_IWRITE);
+#endif
         if (fd >= 0)
         {
+#ifndef _WIN32
             ::close(fd);
+#else
+            ::_close(fd);
+#endif
             return candidate;
         }
         if (errno != EEXIST)
             throw OutputError(fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno)));
-#else
-        candidate += fmt::format("{}-{}", suffix, counter++);
-        std::error_code ec;
-        if (!std::filesystem::exists(std::filesystem::symlink_status(candidate, ec)))
-        {
-            std::ofstream created(candidate, std::ios::binary);
-            if (created)
-                return candidate;
-            throw OutputError(fmt::format("cannot write '{}'", path.string()));
-        }
-#endif
     }
     throw OutputError(fmt::format("cannot write '{}': no free temporary name beside it", path.string()));
 }
@@ -164,10 +174,30 @@ void writeAtomically(const std::filesystem::path& shownPath,
                      const std::function<bool(const std::filesystem::path&)>& write)
 {
     const std::filesystem::path path = outputTarget(shownPath);
-    const std::filesystem::path tmp = createTemporarySibling(path, ".partial");
+    const std::filesystem::path tmp = createTemporarySibling(path, ".~w");
     std::error_code ec;
     errno = 0;
-    if (!write(tmp) || !syncToDisk(tmp))
+    bool written = false;
+    try
+    {
+        written = write(tmp);
+    }
+    catch (const OutputError& e)
+    {
+        // The writer names the file it was given, ours: the user named `shownPath`.
+        std::filesystem::remove(tmp, ec);
+        std::string message = e.what();
+        const std::string temporary = tmp.string();
+        for (std::size_t at = message.find(temporary); at != std::string::npos; at = message.find(temporary, at))
+            message.replace(at, temporary.size(), shownPath.string());
+        throw OutputError(message);
+    }
+    catch (...)
+    {
+        std::filesystem::remove(tmp, ec);
+        throw;
+    }
+    if (!written || !syncToDisk(tmp))
     {
         // The C library's reason where the writer's stream or the flush set one (a full disk: ENOSPC).
         const int reason = errno;

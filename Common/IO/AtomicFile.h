@@ -5,6 +5,7 @@
 // renaming over a device, a folder, a pipe or a socket would replace it, and is refused.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -28,7 +29,12 @@ std::string outputTargetProblem(const std::filesystem::path& path, std::filesyst
 /// Throws OutputError ("cannot write 'path': ...") where outputTargetProblem names a problem.
 std::filesystem::path outputTarget(const std::filesystem::path& path);
 
-/// Creates an empty file beside `path` named `path` + `suffix` + a number no file there has, exclusively (a file or
+/// The most a file's temporaries lengthen its name (an OutputSet's temporary, written through writeAtomically's):
+/// checkWritable probes a name this much longer than the output's.
+inline constexpr std::size_t kTemporaryNameRoom = 40;
+
+/// Creates an empty file beside `path` named `path` + `suffix` + the process's and a counter's numbers in hex, no
+/// file there having that name, exclusively (a file or
 /// a symbolic link already at a name is never followed, opened or replaced: another name is taken), with the
 /// permissions a new file gets (0666 less the umask), and returns its name: the temporary a writer then fills.
 /// Throws OutputError naming `path` where none can be created.

@@ -38,7 +38,10 @@ void checkWritable(const std::filesystem::path& shown, const char* flag)
         throw OutputError(fmt::format("{} '{}': folder '{}' {}", flag, shown.string(), folder.string(),
                                       std::filesystem::exists(folder, ec) ? "is not a folder" : "does not exist"));
 #ifndef _WIN32
-    std::string probe = (folder / ".rt-write-probe-XXXXXX").string();
+    // As long as the output's name with its temporaries' (a name past the file system's limit fails here, not after
+    // the render).
+    std::string probe =
+        (folder / (path.filename().string() + ".~" + std::string(kTemporaryNameRoom - 8, 'x') + "XXXXXX")).string();
     const int fd = ::mkstemp(probe.data());
     if (fd < 0)
         throw OutputError(fmt::format("{} '{}': cannot create a file in folder '{}': {}", flag, shown.string(),
@@ -51,10 +54,14 @@ void checkWritable(const std::filesystem::path& shown, const char* flag)
 void OutputSet::add(std::filesystem::path path, Writer write)
 {
     std::filesystem::path target = outputTarget(path);
+    // Absolute first: weakly_canonical leaves a relative path relative where its first part does not exist.
+    auto resolve = [](const std::filesystem::path& p, std::error_code& ec) {
+        return std::filesystem::weakly_canonical(std::filesystem::absolute(p, ec), ec);
+    };
     std::error_code ec;
-    const std::filesystem::path resolved = std::filesystem::weakly_canonical(target, ec);
+    const std::filesystem::path resolved = resolve(target, ec);
     for (const Entry& e : m_entries)
-        if (std::error_code other; std::filesystem::weakly_canonical(e.path, other) == resolved && !ec && !other)
+        if (std::error_code other; resolve(e.path, other) == resolved && !ec && !other)
             throw OutputError(fmt::format("cannot write '{}': another output of this render is the same file",
                                           path.string()));
     m_entries.push_back({std::move(target), std::move(write), {}});
@@ -69,14 +76,14 @@ void OutputSet::commit()
         for (; written < m_entries.size(); ++written)
         {
             Entry& entry = m_entries[written];
-            entry.pending = createTemporarySibling(entry.path, ".pending");
+            entry.pending = createTemporarySibling(entry.path, ".~p");
             try
             {
                 entry.write(entry.pending);
             }
             catch (const OutputError& e)
             {
-                // The writer names the file it was given, ours: the user named the one without ".pending-N".
+                // The writer names the file it was given, ours: the user named `entry.path`.
                 std::string message = e.what();
                 const std::string pending = entry.pending.string();
                 const std::filesystem::path& path = entry.path;

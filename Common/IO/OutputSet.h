@@ -27,7 +27,7 @@ public:
     /// second would replace the first, and a failure of either would remove the file both name).
     void add(std::filesystem::path path, Writer write);
 
-    /// Writes every file to a new sibling `<path>.pending-N` (createTemporarySibling), then renames each over its
+    /// Writes every file to a new sibling `<path>.~pP-N` (createTemporarySibling), then renames each over its
     /// path. On a failure removes every temporary and every file this call already put in place, and rethrows: no
     /// output of the set is left behind (a file the set replaced is gone then; its old contents are not restored).
     void commit();

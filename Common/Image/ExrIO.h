@@ -32,7 +32,7 @@ enum class ExrPixelType
 ///  - values below half's smallest normal (|v| < 2^-14 = 6.1e-5) become half subnormals, with an absolute
 ///    error of at most 2^-25 (their relative precision drops); |v| <= 2^-25 rounds to a zero of v's sign.
 ///
-/// The file is written to a temporary sibling (`path` + ".partial-" and a number) and renamed over `path` only once OpenEXR
+/// The file is written to a temporary sibling (createTemporarySibling) and renamed over `path` only once OpenEXR
 /// has finished it and every byte reached the stream. Throws OutputError naming `path` (and OpenEXR's or the
 /// C library's reason) for a missing or unwritable folder, a full disk, an empty image; no file is left
 /// behind, neither `path` nor the temporary.

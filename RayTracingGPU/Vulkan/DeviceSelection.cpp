@@ -83,9 +83,14 @@ std::size_t selectDevice(const std::vector<DeviceCandidate>& candidates, std::op
     if (requested)
     {
         if (*requested < 0 || static_cast<std::size_t>(*requested) >= candidates.size())
-            throw UsageError(fmt::format("--device {} does not exist: this process sees {} device{}, from 0 "
-                                         "(--list-devices describes them)",
-                                         *requested, candidates.size(), candidates.size() == 1 ? "" : "s"));
+        {
+            std::string names;
+            for (const DeviceCandidate& c : candidates)
+                names += fmt::format("{}{}: {}", names.empty() ? "" : "; ", c.index, c.name);
+            throw UsageError(fmt::format("--device {} does not exist: the devices are {} (--list-devices describes "
+                                         "them)",
+                                         *requested, names));
+        }
         const DeviceVerdict verdict = judge(candidates[static_cast<std::size_t>(*requested)], requirements);
         if (!verdict.suitable())
             throw DeviceError(fmt::format("device {} cannot run the ray tracer:\n{}", *requested, describe(verdict)));

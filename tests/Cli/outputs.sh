@@ -59,7 +59,7 @@ ln -s "$work/victim.txt" "$work/b.png.pending"
 [ "$(cat "$work/victim.txt")" = victim ] || { echo "the render wrote through a link at b.png.pending"; exit 1; }
 [ -f "$work/b.png" ] && [ ! -L "$work/b.png" ] && [ -L "$work/b.png.pending" ] ||
     { ls -l "$work"; echo "b.png is not the render's own file, or the link was replaced"; exit 1; }
-! ls "$work" | grep -q -- "-[0-9]*-[0-9]*$" || { ls "$work"; echo "a temporary was left behind"; exit 1; }
+! ls "$work" | grep -q -- '\.~[pw]' || { ls "$work"; echo "a temporary was left behind"; exit 1; }
 
 help=$("$app" --help)
 for flag in --headless --scene --spp --depth --width --aspect --sampling --pdf --unidirectional-light --seed \

@@ -54,6 +54,16 @@ TEST(OutputSet, TwoEntriesOfOneFileAreRefusedBeforeAnyIsWritten)
             << second;
     }
     EXPECT_EQ(test::fileContents(dir / "x.exr"), "keep");
+    // A new file spelled two ways (weakly_canonical leaves a relative path whose first part does not exist as it is).
+    const std::filesystem::path cwd = std::filesystem::current_path();
+    std::filesystem::current_path(dir.path());
+    OutputSet set;
+    set.add("new.exr", [](const std::filesystem::path& tmp) { writeFileAtomically(tmp, "a"); });
+    EXPECT_THROW(set.add("./new.exr", [](const std::filesystem::path& tmp) { writeFileAtomically(tmp, "b"); }),
+                 OutputError);
+    EXPECT_THROW(set.add(dir / "new.exr", [](const std::filesystem::path& tmp) { writeFileAtomically(tmp, "b"); }),
+                 OutputError);
+    std::filesystem::current_path(cwd);
 }
 
 TEST(OutputSet, ATemporarysNameTakenByAFileOrALinkIsLeftAlone)
@@ -75,6 +85,27 @@ TEST(OutputSet, ATemporarysNameTakenByAFileOrALinkIsLeftAlone)
     EXPECT_EQ(test::fileContents(dir / "a.png"), "png");
     EXPECT_FALSE(std::filesystem::is_symlink(dir / "a.png"));
     EXPECT_EQ(filesIn(dir.path()), 5u) << "no temporary left";
+}
+
+TEST(AtomicFile, AWriterThatThrowsLeavesNoTemporaryAndTheMessageNamesTheFile)
+{
+    // The temporary exists before the writer runs: a writer's exception removes it, and a writer's OutputError that
+    // names the temporary names the user's file instead.
+    const test::ScratchDir dir;
+    try
+    {
+        writeAtomically(dir / "a.csv", [](const std::filesystem::path& tmp) -> bool {
+            throw OutputError(fmt::format("cannot write '{}': the disk is full", tmp.string()));
+        });
+        ADD_FAILURE() << "no error";
+    }
+    catch (const OutputError& e)
+    {
+        EXPECT_EQ(std::string(e.what()), fmt::format("cannot write '{}': the disk is full", (dir / "a.csv").string()));
+    }
+    EXPECT_THROW(writeAtomically(dir / "b.csv", [](const std::filesystem::path&) -> bool { throw Error("other"); }),
+                 Error);
+    EXPECT_EQ(filesIn(dir.path()), 0u) << "no temporary left";
 }
 
 TEST(OutputSet, AFailingFileLeavesNoneOfTheSetBehind)

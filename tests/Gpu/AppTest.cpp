@@ -199,7 +199,7 @@ TEST(GpuApp, BadDeviceIndexIsUsageError)
     const AppRun r = runApp("--headless --scene rtnw-quads --device 99 --quiet");
     EXPECT_EQ(r.status, 2) << r.output;
     EXPECT_NE(r.output.find("--device 99 does not exist"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("(--list-devices describes them)\n"), std::string::npos) << "one line: " << r.output;
+    EXPECT_NE(r.output.find("--list-devices describes them)\n"), std::string::npos) << "one line: " << r.output;
 }
 } // namespace
 } // namespace rt::gpu::test

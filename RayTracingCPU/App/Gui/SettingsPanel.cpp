@@ -237,9 +237,8 @@ void SettingsPanel::drawRenderControls(Session& session)
         session.chooseStrategy();
     tooltip("--strategy auto: a short pilot on the selected engine (5 % of the render's estimated time, 2 s at most) "
             "measures the efficiency 1/(relMSE s) of nee-mis and mixture with each light sampler and selection "
-            "(and Sobol samples where the scene's and the panel's are random), sets the panel to the best and renders "
-            "it; change "
-            "any setting afterwards to override it");
+            "(and Sobol samples where the scene's are random, beside the panel's random or accumulated ones), sets the "
+            "panel to the best and renders it; change any setting afterwards to override it");
 
     ImGui::ProgressBar(session.progressFraction(), ImVec2(-1.0f, 0.0f), session.progressText().c_str());
     // Its line is kept when empty, so that the panel below does not jump as references come and go.
