@@ -137,10 +137,7 @@ void checkDistinctOutputs(std::initializer_list<std::pair<const char*, const std
         std::filesystem::path target;
         outputTargetProblem(*path, target); // a problem is checkWritable's to name
         std::error_code ec;
-        // Absolute first: weakly_canonical leaves a relative path relative where its first part does not exist
-        // (a new file: "./y.exr" and "y.exr" would differ).
-        const std::filesystem::path resolved =
-            std::filesystem::weakly_canonical(std::filesystem::absolute(target, ec), ec);
+        const std::filesystem::path resolved = resolvedPath(target, ec);
         for (const auto& [other, otherPath] : seen)
             if (!ec && resolved == otherPath)
                 throw UsageError(fmt::format("{} and {} name the same file '{}': give each its own", other, flag,

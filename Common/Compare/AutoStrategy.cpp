@@ -6,11 +6,11 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <sstream>
 
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/fmt/ranges.h>
 
+#include "Cli/ValueParsing.h"
 #include "Compare/Measurement.h"
 #include "Error.h"
 #include "HostThreads.h"
@@ -130,11 +130,9 @@ std::optional<StrategyLists> pilotCandidates(const StrategyLists& lists, const R
     if (const std::string flag(findSetting("sampling")->compareFlag);
         settings.sampling == PixelSampling::Accumulate && candidates.count(flag))
     {
-        std::string replaced;
-        std::istringstream words(candidates[flag]);
-        for (std::string word; std::getline(words, word, ',');)
-            replaced += (replaced.empty() ? "" : ",") + (word == "random" ? std::string("accumulate") : word);
-        candidates[flag] = replaced;
+        std::vector<std::string> words = splitCommas(candidates[flag]);
+        std::replace(words.begin(), words.end(), std::string("random"), std::string("accumulate"));
+        candidates[flag] = fmt::format("{}", fmt::join(words, ","));
     }
     // An estimator or a pixel sampling the lists do not hold is kept (a window's stratified samples against a books'
     // scene's "random,sobol"): the request's own would otherwise be measured as the list's first and replaced.

@@ -101,6 +101,20 @@ std::filesystem::path outputTarget(const std::filesystem::path& path)
     return target;
 }
 
+std::filesystem::path resolvedPath(const std::filesystem::path& path, std::error_code& ec)
+{
+    return std::filesystem::weakly_canonical(std::filesystem::absolute(path, ec), ec);
+}
+
+std::string namingShownFile(std::string message, const std::filesystem::path& temporary,
+                            const std::filesystem::path& shown)
+{
+    const std::string from = temporary.string(), to = shown.string();
+    for (std::size_t at = message.find(from); at != std::string::npos; at = message.find(from, at + to.size()))
+        message.replace(at, from.size(), to);
+    return message;
+}
+
 std::filesystem::path createTemporarySibling(const std::filesystem::path& path, const char* suffix)
 {
     // The process and a counter, in hex: two writers of one process, or two processes, never share a name; a name
@@ -186,11 +200,7 @@ void writeAtomically(const std::filesystem::path& shownPath,
     {
         // The writer names the file it was given, ours: the user named `shownPath`.
         std::filesystem::remove(tmp, ec);
-        std::string message = e.what();
-        const std::string temporary = tmp.string();
-        for (std::size_t at = message.find(temporary); at != std::string::npos; at = message.find(temporary, at))
-            message.replace(at, temporary.size(), shownPath.string());
-        throw OutputError(message);
+        throw OutputError(namingShownFile(e.what(), tmp, shownPath));
     }
     catch (...)
     {

@@ -29,6 +29,14 @@ std::string outputTargetProblem(const std::filesystem::path& path, std::filesyst
 /// Throws OutputError ("cannot write 'path': ...") where outputTargetProblem names a problem.
 std::filesystem::path outputTarget(const std::filesystem::path& path);
 
+/// `path` as one spelling of its file: absolute, then weakly_canonical (which leaves a relative path relative where
+/// its first part does not exist: a new "./y.exr" and "y.exr" would differ). `ec` set where that fails.
+std::filesystem::path resolvedPath(const std::filesystem::path& path, std::error_code& ec);
+
+/// `message`, a writer's error about `temporary`, naming `shown`, the file the user named, instead.
+std::string namingShownFile(std::string message, const std::filesystem::path& temporary,
+                            const std::filesystem::path& shown);
+
 /// The most a file's temporaries lengthen its name (an OutputSet's temporary, written through writeAtomically's):
 /// checkWritable probes a name this much longer than the output's.
 inline constexpr std::size_t kTemporaryNameRoom = 40;

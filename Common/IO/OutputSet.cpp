@@ -54,14 +54,10 @@ void checkWritable(const std::filesystem::path& shown, const char* flag)
 void OutputSet::add(std::filesystem::path path, Writer write)
 {
     std::filesystem::path target = outputTarget(path);
-    // Absolute first: weakly_canonical leaves a relative path relative where its first part does not exist.
-    auto resolve = [](const std::filesystem::path& p, std::error_code& ec) {
-        return std::filesystem::weakly_canonical(std::filesystem::absolute(p, ec), ec);
-    };
     std::error_code ec;
-    const std::filesystem::path resolved = resolve(target, ec);
+    const std::filesystem::path resolved = resolvedPath(target, ec);
     for (const Entry& e : m_entries)
-        if (std::error_code other; resolve(e.path, other) == resolved && !ec && !other)
+        if (std::error_code other; resolvedPath(e.path, other) == resolved && !ec && !other)
             throw OutputError(fmt::format("cannot write '{}': another output of this render is the same file",
                                           path.string()));
     m_entries.push_back({std::move(target), std::move(write), {}});
@@ -84,12 +80,7 @@ void OutputSet::commit()
             catch (const OutputError& e)
             {
                 // The writer names the file it was given, ours: the user named `entry.path`.
-                std::string message = e.what();
-                const std::string pending = entry.pending.string();
-                const std::filesystem::path& path = entry.path;
-                for (std::size_t at = message.find(pending); at != std::string::npos; at = message.find(pending, at))
-                    message.replace(at, pending.size(), path.string());
-                throw OutputError(message);
+                throw OutputError(namingShownFile(e.what(), entry.pending, entry.path));
             }
         }
         for (; placed < m_entries.size(); ++placed)

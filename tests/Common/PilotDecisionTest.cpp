@@ -686,6 +686,19 @@ TEST(PilotDecision, AGuardBeforeTheFinalRoundDecidedStillTimesTheLeaderOnTimingF
     EXPECT_EQ(taken, 3);
 }
 
+/// Makes `engine`'s first frame of theBetterOne() at twice `steady`'s timing spp (its timing frame's size) take 3x its
+/// time, a stall, and sets `stalled` when it comes.
+void stallTheBetterOnesFrameAtTwiceTheSpp(NoiseEngine& engine, const AutoChoice& steady, bool& stalled)
+{
+    engine.setFrameScale([&stalled, width = steady.timingWidth, spp = steady.timingSpp](std::size_t,
+                                                                                      const RenderSettings& s) {
+        if (stalled || !(Strategy::of(s) == theBetterOne()) || s.width != width || s.spp != 2 * spp)
+            return 1.0;
+        stalled = true;
+        return 3.0;
+    });
+}
+
 TEST(PilotDecision, ATimingFrameThatStalledIsTakenAgainWhereTheGuardCutsTheFinalRound)
 {
     // AGuardBeforeTheFinalRoundDecidedStillTimesTheLeaderOnTimingFrames' engine, the host's clock past the guard in
@@ -709,13 +722,7 @@ TEST(PilotDecision, ATimingFrameThatStalledIsTakenAgainWhereTheGuardCutsTheFinal
         const AutoChoice steady = pilotStoppedAt(engine, scene, begun + kOwnsThirdSecondHalf, seed);
         ASSERT_GT(steady.timingSpp, 0) << "the plan has timing frames";
         bool stalled = false;
-        engine.setFrameScale([&](std::size_t, const RenderSettings& s) {
-            if (stalled || !(Strategy::of(s) == theBetterOne()) || s.width != steady.timingWidth ||
-                s.spp != 2 * steady.timingSpp)
-                return 1.0;
-            stalled = true;
-            return 3.0;
-        });
+        stallTheBetterOnesFrameAtTwiceTheSpp(engine, steady, stalled);
         begun = engine.frames().size();
         const AutoChoice choice = pilotStoppedAt(engine, scene, begun + kOwnsThirdSecondHalf, seed);
         ASSERT_TRUE(stalled) << "seed " << seed;
@@ -879,13 +886,7 @@ TEST(PilotDecision, ATimingFrameThatStalledAtTwiceTheSppIsTakenAgain)
         ASSERT_GT(steady.timingSpp, 0);
         ASSERT_EQ(steady.chosen, theBetterOne());
         bool stalled = false;
-        engine.setFrameScale([&](std::size_t, const RenderSettings& s) {
-            if (stalled || !(Strategy::of(s) == theBetterOne()) || s.width != steady.timingWidth ||
-                s.spp != 2 * steady.timingSpp)
-                return 1.0;
-            stalled = true;
-            return 3.0;
-        });
+        stallTheBetterOnesFrameAtTwiceTheSpp(engine, steady, stalled);
         begun = engine.frames().size();
         const AutoChoice choice = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 40.0});
         ASSERT_TRUE(stalled) << "seed " << seed;
