@@ -8,10 +8,11 @@
 #include "SampleSum.glsl"
 
 /// Estimates the camera samples first .. first + count - 1 of `pixel` and adds them to its accumulation
-/// texel in sample order (SampleSum.glsl). Returns the texel's sample count afterwards.
+/// texel in sample order (SampleSum.glsl; a launch's samples lie in one seed block: PathTracingPipeline).
+/// Returns the texel's sample count afterwards.
 float accumulateCameraSamples(uvec2 pixel, uint first, uint count)
 {
-    ivec2 texel = ivec2(pixel);
+    ivec2 texel = accumulationTexel(pixel, first);
     vec4 sum = imageLoad(accumulation, texel);
     vec3 lost = imageLoad(compensation, texel).rgb;
     for (uint sampleIndex = first; sampleIndex < first + count; ++sampleIndex)

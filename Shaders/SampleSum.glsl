@@ -8,6 +8,15 @@
 #ifndef RT_SAMPLE_SUM_GLSL
 #define RT_SAMPLE_SUM_GLSL
 
+#include "Shared/Shading/Camera.h"
+
+/// The accumulation texel of camera sample `sampleIndex` of `pixel`: its seed block's image (seedBlockOf), the
+/// blocks one below the other.
+ivec2 accumulationTexel(uvec2 pixel, uint sampleIndex)
+{
+    return ivec2(pixel.x, pixel.y + seedBlockOf(sampleIndex) * uniforms.height);
+}
+
 /// Adds the camera sample `radiance` to `sum` and its compensation `lost`; a non-finite sample is counted
 /// (SampleCounters) and dropped.
 void addCameraSample(inout vec4 sum, inout vec3 lost, vec3 radiance)

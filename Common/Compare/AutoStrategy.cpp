@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <tuple>
+#include <utility>
 
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/fmt/ranges.h>
@@ -148,6 +150,34 @@ std::optional<StrategyLists> pilotCandidates(const StrategyLists& lists, const R
 
 namespace
 {
+/// setSeedBlock(samples) on `engine` while it lives, 0 after.
+class SeedBlockScope
+{
+public:
+    SeedBlockScope(RenderEngine& engine, std::uint32_t samples) : m_engine(engine) { m_engine.setSeedBlock(samples); }
+    ~SeedBlockScope() { m_engine.setSeedBlock(0); }
+    SeedBlockScope(const SeedBlockScope&) = delete;
+    SeedBlockScope& operator=(const SeedBlockScope&) = delete;
+
+private:
+    RenderEngine& m_engine;
+};
+
+/// The two halves of a frame of two seed blocks (RenderEngine::setSeedBlock) of `pixels` pixels each: its top and its
+/// bottom. Throws Error where the frame holds another number of pixels (an engine that ignored its seed blocks).
+std::pair<Image, Image> seedBlockHalves(const Image& frame, double pixels)
+{
+    if (double(frame.pixelCount()) != 2.0 * pixels || frame.height() % 2 != 0)
+        throw Error(fmt::format("a pilot's frame of two seed blocks came back {}x{}, not two blocks of {} pixels",
+                                frame.width(), frame.height(), pixels));
+    const int height = frame.height() / 2;
+    Image top(frame.width(), height), bottom(frame.width(), height);
+    const auto half = static_cast<std::ptrdiff_t>(top.pixelCount());
+    std::copy(frame.pixels().begin(), frame.pixels().begin() + half, top.pixels().begin());
+    std::copy(frame.pixels().begin() + half, frame.pixels().end(), bottom.pixels().begin());
+    return {std::move(top), std::move(bottom)};
+}
+
 /// fn(i) for every i < count, spread over the host's cores (runInParallel: an exception reaches the caller).
 template <class F>
 void onHostCores(std::size_t count, F&& fn)
@@ -526,20 +556,30 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         return std::max(1024.0, double(most));
     };
     const int pilotSpp = std::min(kPilotSpp, sppCap);
-    const double floorPixels = busyPixels(pilotSpp);
+    // On a GPU a measurement's two halves are one frame's two seed blocks (RenderEngine::setSeedBlock), where the
+    // candidate's sampling allows them (frameHoldsBothHalves): a wavefront frame ends in a tail of its last segments,
+    // a few paths each, and an H200's pilots, a frame a half, ran 1.17-1.44x past their budget on the engine's clock
+    // (halves of 11.2 ms where 7.1 were planned: notebook §54). One frame pays it once. The plan then shares the
+    // budget out by frames of both halves: each measurement one frame of twice a half's spp. Not on a CPU: a frame
+    // there costs a pool's dispatch, and each half apart keeps the faster one's time against a loaded machine's
+    // stalls.
+    choice.halvesInOneFrame = engine.kind() == EngineKind::Gpu;
+    const int halvesPerFrame = choice.halvesInOneFrame ? 2 : 1;
+    const double floorPixels = busyPixels(halvesPerFrame * pilotSpp);
     const bool bySpp = floorPixels < pilotPixels; // the engine's own answer, not the probe's rounded width
     auto planHalves = [&](double budgetMs, double hostBudgetMs) {
-        double shareMs = std::min(budgetMs / double(measurements) / 2.0,
-                                  hostBudgetMs / double(measurements) / 2.0 - choice.hostExtraMs);
+        const double frames = double(measurements) * 2.0 / halvesPerFrame;
+        double shareMs = std::min(budgetMs / frames, hostBudgetMs / frames - choice.hostExtraMs); // a frame's
         if (!(shareMs > 0.0))
             shareMs = 0.0; // NaN too: nothing fits, and the plan is too short to measure
         RenderSettings half = request.settings;
-        // Never more pixels than the share holds at 1 spp.
+        // Never more pixels than the share holds at 1 spp a half.
         const double pixels =
-            std::min({bySpp ? std::max(planCost.pixelsFor(shareMs, pilotSpp), floorPixels) : pixelsOf(large),
-                      pixelsOf(large), planCost.pixelsFor(shareMs, 1)});
+            std::min({bySpp ? std::max(planCost.pixelsFor(shareMs, halvesPerFrame * pilotSpp), floorPixels)
+                            : pixelsOf(large),
+                      pixelsOf(large), planCost.pixelsFor(shareMs, halvesPerFrame)});
         half.width = widthFor(request.settings, std::max(pixels, 1.0));
-        half.spp = std::clamp(static_cast<int>(planCost.sppFor(shareMs, pixelsOf(half))), 1, sppCap);
+        half.spp = std::clamp(static_cast<int>(planCost.sppFor(shareMs, pixelsOf(half)) / halvesPerFrame), 1, sppCap);
         return half;
     };
     RenderSettings pilot = planHalves(choice.budgetSeconds * 1e3, 2.0 * choice.budgetSeconds * 1e3);
@@ -641,10 +681,16 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // a test suite took every nee-mis candidate of rtrol-cornell-box past 4x its share, and the pilot kept the
     // mixture, half as efficient).
     const double shareMs = cost.ms(pixelsOf(pilot), pilot.spp); // the own's half, by the probe (not planCost)
-    double ownHalfWallMs = 0.0; // the own's slower half in the round
+    double ownHalfWallMs = 0.0; // the own's slower half in the round (half its frame, where one holds both)
     auto timeLimit = [&] {
         return std::chrono::nanoseconds(
             static_cast<std::int64_t>(std::max(4.0 * std::max(shareMs, ownHalfWallMs), 5.0) * 1e6));
+    };
+    // Whether a measurement of these settings takes one frame for both halves: seed blocks need random or Sobol
+    // sampling and no restir-di (a stratified candidate of --samplings takes a frame a half).
+    auto frameHoldsBothHalves = [&](const RenderSettings& half) {
+        return choice.halvesInOneFrame && half.estimator != Estimator::RestirDi &&
+               (half.sampling == PixelSampling::Random || half.sampling == PixelSampling::Sobol);
     };
 
     /// A candidate's measurements: their sums, and each one's halves by its seeds' slot.
@@ -749,22 +795,48 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         const bool isOwn = &c == &runs.front();
         const auto limit = isOwn ? std::chrono::nanoseconds(0) : timeLimit();
         const auto renderStart = std::chrono::steady_clock::now();
-        Measurement a = measure(engine, half, nullptr, limit, true);
-        ++half.settings.seed;
-        Measurement b = a.cancelled || a.timedOut ? Measurement{.cancelled = a.cancelled, .timedOut = a.timedOut}
-                                                  : measure(engine, half, nullptr, limit, true);
+        const bool oneFrame = frameHoldsBothHalves(half.settings);
+        Measurement a, b;
+        double measuredMs = 0.0; // both halves on the engine's clock
+        if (oneFrame)
+        {
+            RenderRequest both = half;
+            both.settings.spp = 2 * half.settings.trueSpp();
+            const SeedBlockScope blocks(engine, static_cast<std::uint32_t>(half.settings.trueSpp()));
+            Measurement frame = measure(engine, both, nullptr, 2 * limit, true);
+            a = Measurement{.spp = frame.spp / 2, .wallMs = frame.wallMs, .cancelled = frame.cancelled,
+                            .timedOut = frame.timedOut};
+            b = a;
+            measuredMs = frame.ms();
+            choice.tracingHostSeconds += frame.wallMs * 1e-3;
+            if (isOwn)
+                ownHalfWallMs = 0.5 * frame.wallMs;
+            if (!frame.cancelled)
+                std::tie(a.image, b.image) = seedBlockHalves(frame.image, pixelsOf(half.settings));
+        }
+        else
+        {
+            a = measure(engine, half, nullptr, limit, true);
+            ++half.settings.seed;
+            b = a.cancelled || a.timedOut ? Measurement{.cancelled = a.cancelled, .timedOut = a.timedOut}
+                                          : measure(engine, half, nullptr, limit, true);
+            // The halves are the same work: the faster one's time twice, so that a one-off stall of either (a
+            // pool's first use, a clock ramping up: 2x on the first candidate after the probe, measured) does not
+            // decide.
+            measuredMs = 2.0 * std::min(a.ms(), b.ms());
+            choice.tracingHostSeconds += (a.wallMs + b.wallMs) * 1e-3;
+            if (isOwn)
+                ownHalfWallMs = std::max(a.wallMs, b.wallMs);
+        }
         choice.renderHostSeconds +=
             std::chrono::duration<double>(std::chrono::steady_clock::now() - renderStart).count();
-        choice.tracingHostSeconds += (a.wallMs + b.wallMs) * 1e-3;
         if (b.cancelled && !b.timedOut)
             return false;
-        if (isOwn)
-            ownHalfWallMs = std::max(a.wallMs, b.wallMs);
-        choice.pilotMs += a.ms() + b.ms();
+        choice.pilotMs += oneFrame ? measuredMs : a.ms() + b.ms();
         if (b.timedOut)
         {
             c.row.tooSlow = true;
-            c.row.ms += a.timedOut ? a.wallMs : a.ms() + b.wallMs; // what it ran, not a measurement
+            c.row.ms += oneFrame || a.timedOut ? a.wallMs : a.ms() + b.wallMs; // what it ran, not a measurement
             return true;
         }
         if (measured == 1 && budget.renderSeconds <= 0.0)
@@ -775,23 +847,21 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             // after the candidates' preparation can meet a GPU whose clocks fell while the host compiled (an
             // H200, 11 s of cold compiles: the render estimated at 66.6 s against the probe's 25 s, the strategy
             // it chose rendered in 8.5 s).
-            const double halfMs = std::min(a.ms(), b.ms());
-            const double paths = pixelsOf(half.settings) * half.settings.trueSpp();
+            const double frameMs = oneFrame ? measuredMs : 0.5 * measuredMs; // a frame's, of one or both halves
+            const double paths = pixelsOf(half.settings) * half.settings.trueSpp() * (oneFrame ? 2.0 : 1.0);
             RenderCost measuredCost = cost;
             measuredCost.msPerPath =
-                std::max(halfMs - cost.ms(pixelsOf(half.settings), 0), 0.25 * halfMs) / paths;
+                std::max(frameMs - cost.ms(pixelsOf(half.settings), 0), 0.25 * frameMs) / paths;
             choice.estimatedRenderSeconds =
                 std::min(choice.estimatedRenderSeconds,
                          measuredCost.ms(pixelsOf(request.settings), request.settings.trueSpp()) * 1e-3);
             choice.budgetSeconds = std::min(budget.maxSeconds, budget.fraction * choice.estimatedRenderSeconds);
         }
         choice.spp = a.spp + b.spp;
-        // The halves are the same work: the faster one's time twice, so that a one-off stall of either (a pool's
-        // first use, a clock ramping up: 2x on the first candidate after the probe, measured) does not decide. Less
-        // the overhead, but never below a tenth of the time (the probe's terms are estimates; a half planned to its
-        // share at 1 spp has paths of a quarter of it where the fixed cost is half).
-        const double fasterMs = std::min(a.ms(), b.ms());
-        const double ms = 2.0 * std::max(fasterMs - choice.overheadMs, 0.1 * fasterMs);
+        // Less the overhead of each frame, but never below a tenth of the time (the probe's terms are estimates; a
+        // half planned to its share at 1 spp has paths of a quarter of it where the fixed cost is half).
+        const double frames = oneFrame ? 1.0 : 2.0;
+        const double ms = std::max(measuredMs - frames * choice.overheadMs, 0.1 * measuredMs);
         c.row.ms += ms;
         ++c.row.measurements;
         c.all.add(a.image, b.image);
@@ -1170,6 +1240,7 @@ nlohmann::json AutoChoice::toJson() const
         j["probes"].push_back({{"pixels", p.pixels}, {"spp", p.spp}, {"ms", p.ms}});
     j["render_cost"] = {{"fixed_ms", cost.fixedMs}, {"ms_per_pixel", cost.msPerPixel}, {"ms_per_path", cost.msPerPath}};
     j["half_overhead_ms"] = overheadMs;
+    j["halves_in_one_frame"] = halvesInOneFrame;
     j["pilot_frame_configuration"] = frameConfiguration;
     j["budget_spent"] = budgetSpent;
     j["too_short"] = tooShort;

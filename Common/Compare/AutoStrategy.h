@@ -36,7 +36,8 @@
 // its error: the error against the others' estimate would add their noise, and on a glossy scene's heavy tails
 // (veach-mis) its correction for that noise failed and read as a bias. Its efficiency is 1 / (relMSE x seconds),
 // twice the faster half's time on the engine's clock (Compare/Measurement.h) less the half's fixed and per-pixel
-// cost (the render's paths' time; in the decision every measurement at the least of its final round's, or of all
+// cost, or on a GPU, whose halves are one frame's two seed blocks (RenderEngine::setSeedBlock: a wavefront frame's
+// tail paid once), that frame's time less its fixed and per-pixel cost (the render's paths' time; in the decision every measurement at the least of its final round's, or of all
 // its measurements where the search stopped before that, since a stall only adds time; or by the timing frames where
 // the plan has them, taken after the guard for the leader and the own where the final round did not).
 // The decision pairs the final round's measurements of the scene's own and the challenger, seed by seed
@@ -174,7 +175,10 @@ struct AutoChoice
     std::vector<ProbeTiming> probes; // the probe's renders, and the time model fitted to them
     std::string frameConfiguration; // what the probe's frames ran (RenderEngine::frameConfiguration)
     RenderCost cost;
-    double overheadMs = 0.0; // a half's fixed and per-pixel cost by the time model, taken off the candidates' times
+    double overheadMs = 0.0; // a frame's fixed and per-pixel cost by the time model, taken off the candidates' times
+    /// A measurement's two halves are one frame's two seed blocks (a GPU's; RenderEngine::setSeedBlock), not a frame
+    /// each: its time is the frame's, less one overhead.
+    bool halvesInOneFrame = false;
     double hostExtraMs = 0.0; // a probe's render on the host's clock less the engine's (the least of the probe's)
     double probeMs = 0.0; // the probe's renders (each twice) and the candidates' cost probes, on the engine's clock
     /// The candidates' time per path over the own's, by a render of each at the probe's second size, weighed by

@@ -4,12 +4,14 @@
 // Virtual at this level only (a few calls per batch); nothing per ray goes through it.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "Error.h"
 #include "Image/Image.h"
 #include "Render/CostMap.h"
 #include "Render/LightSampleCounts.h"
@@ -38,6 +40,16 @@ struct BatchResult
     double deviceSeconds = -1.0; // the device's own time for the batch; < 0 when it has no such clock
 };
 
+/// The samples of every pixel seed block `block` holds once a frame in seed blocks of `seedBlock` samples (0: one
+/// block) has traced `samples` of them (RenderEngine::setSeedBlock).
+inline std::uint32_t samplesInSeedBlock(std::uint32_t samples, std::uint32_t seedBlock, std::uint32_t block)
+{
+    if (seedBlock == 0)
+        return block == 0 ? samples : 0u;
+    const std::uint64_t before = std::uint64_t(block) * seedBlock;
+    return samples <= before ? 0u : static_cast<std::uint32_t>(std::min<std::uint64_t>(samples - before, seedBlock));
+}
+
 class RenderEngine
 {
 public:
@@ -65,6 +77,16 @@ public:
     /// megakernel's projected sampling with the BVH took 2.3x the time of solid-angle sampling with uniform
     /// selection, the wavefront's 1.23x, the render's 1.27x; docs/notebook/PERFORMANCE.md §36.)
     void setRepresentedPaths(std::uint64_t paths) { m_representedPaths = paths; }
+    /// The frames that follow in seed blocks of `samples` camera samples each (0: one seed, the default): sample s of
+    /// a pixel is drawn as sample s mod `samples` of seed + s / `samples` and summed apart, so that a frame of
+    /// k x `samples` spp holds k independent renders, each bit for bit the render of its seed alone, in one
+    /// launch (Shared/Shading/Camera.h). estimate() and radianceSums() then hold the blocks one below the other
+    /// (width x height·k), each block divided by its own samples. --strategy auto's two halves of a measurement
+    /// take one frame so (AutoStrategy.cpp): a GPU's wavefront pays its frame's tail once, not twice. A frame of
+    /// seed blocks needs random or Sobol sampling, no restir-di, no cost recording, and spp a multiple of
+    /// `samples`: beginFrame throws UsageError otherwise (seedBlocksOf).
+    void setSeedBlock(std::uint32_t samples) { m_seedBlock = samples; }
+    std::uint32_t seedBlock() const { return m_seedBlock; }
 
     /// Camera paths one batch of traceSamples should hold: enough that the per-batch cost vanishes, few
     /// enough that a batch ends well within a second (cancel, progress, no GPU watchdog).
@@ -129,6 +151,25 @@ public:
 protected:
     /// What beginFrame renders from: setCamera's camera, else `scene`'s.
     const CameraDesc& frameCamera(const Scene& scene) const { return m_camera ? *m_camera : scene.camera; }
+    /// The seed blocks a frame of `settings` holds (1 without setSeedBlock). Throws UsageError, naming what stands
+    /// in the way, where the frame cannot be cut into them (setSeedBlock's conditions; `costRecording`: the
+    /// engine records each pixel's cost).
+    std::uint32_t seedBlocksOf(const RenderSettings& settings, bool costRecording) const
+    {
+        if (m_seedBlock == 0)
+            return 1;
+        const char* why = settings.sampling != PixelSampling::Random && settings.sampling != PixelSampling::Sobol
+                              ? "random or Sobol pixel sampling"
+                          : settings.estimator == Estimator::RestirDi ? "an estimator other than restir-di"
+                          : costRecording                             ? "no per-pixel cost recording"
+                          : settings.trueSpp() % int(m_seedBlock) != 0 ? "spp a multiple of the block"
+                                                                       : nullptr;
+        if (why)
+            throw UsageError("seed blocks of " + std::to_string(m_seedBlock) + " samples need " + why + " (spp " +
+                             std::to_string(settings.trueSpp()) + ")");
+        return static_cast<std::uint32_t>(settings.trueSpp()) / m_seedBlock;
+    }
+
     /// The paths the frame of `framePaths` stands for (setRepresentedPaths).
     std::uint64_t representedPaths(std::uint64_t framePaths) const
     {
@@ -138,5 +179,6 @@ protected:
 private:
     std::optional<CameraDesc> m_camera;
     std::uint64_t m_representedPaths = 0;
+    std::uint32_t m_seedBlock = 0;
 };
 } // namespace rt

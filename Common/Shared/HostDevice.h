@@ -261,7 +261,9 @@ struct RenderUniforms
     uint restirBiased; // restir-di: 1: the biased combination (1 / sum of M), without the neighbours' shadow rays
     uint restirTemporalCap; // restir-di: the last iteration's M capped at this many times restirCandidates; 0: none
     uint countRays; // 1: count the rays traced by kind in TraceCounters (GPU, --count-rays)
-    uint pad1;
+    /// 0: every camera sample on `seed`. n > 0: seed blocks of n samples (RenderEngine::setSeedBlock): sample s is
+    /// sample s mod n of seed + s / n, summed into an accumulation image of its own (Shading/Camera.h).
+    uint seedBlock;
     uint pad2;
 };
 

@@ -85,14 +85,19 @@ void CpuEngine::beginFrame(const RenderSettings& settings)
         throw UsageError("CpuEngine::beginFrame called before setScene");
     const int width = settings.width;
     const int height = settings.height();
+    const std::uint32_t blocks = seedBlocksOf(settings, m_recordCost);
+    shader::RenderUniforms uniforms = makeUniforms(m_scene->source(), frameCamera(m_scene->source()), settings,
+                                                   std::uint32_t(width), std::uint32_t(height));
+    uniforms.seedBlock = seedBlock();
+    const std::size_t values = std::size_t(width) * height * blocks;
     m_frame.emplace(Frame{.settings = settings,
-                          .uniforms = makeUniforms(m_scene->source(), frameCamera(m_scene->source()), settings,
-                                                   std::uint32_t(width), std::uint32_t(height)),
+                          .uniforms = uniforms,
                           .variant = choosePathVariant(m_features, settings.estimator, m_specialize, m_scene->tracesRayLanes()),
-                          .sum = std::vector<dvec3>(std::size_t(width) * height, dvec3(0.0)),
-                          .before = std::make_unique_for_overwrite<dvec3[]>(std::size_t(width) * height),
+                          .sum = std::vector<dvec3>(values, dvec3(0.0)),
+                          .before = std::make_unique_for_overwrite<dvec3[]>(values),
                           .width = width,
                           .height = height,
+                          .blocks = blocks,
                           .rows = std::vector<RowTally>(height),
                           .rowsBefore = std::vector<RowTally>(height),
                           .rowStates = std::vector<RowState>(height),
@@ -145,6 +150,7 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
     // specialised for: one instance serves every variant.
     CpuShading<PathCode{}> camera(scene, uniforms);
     const bool media = scene.hasMedia();
+    const std::size_t blockValues = std::size_t(width) * std::size_t(f.height); // one seed block's sums
     const auto accumulate = [](dvec3& sum, const vec3& l, RowTally& t) {
         if (isFinite(l))
             sum += dvec3(l);
@@ -161,7 +167,8 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
         }
         f.rowStates[y] = RowState::Traced;
         const std::size_t rowStart = std::size_t(y) * std::size_t(width);
-        std::copy_n(sums.data() + rowStart, width, f.before.get() + rowStart);
+        for (std::uint32_t b = 0; b < f.blocks; ++b)
+            std::copy_n(sums.data() + b * blockValues + rowStart, width, f.before.get() + b * blockValues + rowStart);
         f.rowsBefore[y] = tallies[y];
         double* const cost = f.costSeconds.empty() ? nullptr : f.costSeconds.data() + rowStart;
         if (cost)
@@ -195,8 +202,16 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
             trace(scene, uniforms, std::span<const PathJob>(jobs, n), radiance, t.counts);
             if (cost)
                 cost[first / count] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            for (std::uint32_t i = 0; i < n; ++i)
-                accumulate(sums[rowStart + std::size_t((first + i) / count)], radiance[i], t);
+            if (f.blocks == 1)
+                for (std::uint32_t i = 0; i < n; ++i)
+                    accumulate(sums[rowStart + std::size_t((first + i) / count)], radiance[i], t);
+            else
+                for (std::uint32_t i = 0; i < n; ++i)
+                {
+                    const std::uint64_t j = first + i;
+                    const std::size_t block = camera.seedBlockOf(firstSample + std::uint32_t(j % count));
+                    accumulate(sums[block * blockValues + rowStart + std::size_t(j / count)], radiance[i], t);
+                }
         }
         control.advance(std::uint64_t(width) * count);
     };
@@ -214,7 +229,8 @@ BatchResult CpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
         if (f.rowStates[y] != RowState::Skipped) // traced, or abandoned part way: back to the batch's start
         {
             const std::size_t rowStart = std::size_t(y) * std::size_t(width);
-            std::copy_n(f.before.get() + rowStart, width, sums.data() + rowStart);
+            for (std::uint32_t b = 0; b < f.blocks; ++b)
+                std::copy_n(f.before.get() + b * blockValues + rowStart, width, sums.data() + b * blockValues + rowStart);
             tallies[y] = f.rowsBefore[y];
             if (!f.costSeconds.empty())
                 std::copy_n(f.costBefore.data() + rowStart, width, f.costSeconds.data() + rowStart);
@@ -293,9 +309,15 @@ Image CpuEngine::estimate(std::uint32_t samples)
 {
     if (!m_frame || samples == 0)
         throw UsageError("CpuEngine::estimate needs a frame with samples");
-    Image image(m_frame->width, m_frame->height);
-    for (std::size_t i = 0; i < m_frame->sum.size(); ++i)
-        image.pixels()[i] = vec3(m_frame->sum[i] / double(samples));
+    const Frame& f = *m_frame;
+    Image image(f.width, f.height * int(f.blocks));
+    const std::size_t blockValues = std::size_t(f.width) * std::size_t(f.height);
+    for (std::uint32_t b = 0; b < f.blocks; ++b)
+    {
+        const std::uint32_t inBlock = samplesInSeedBlock(samples, f.uniforms.seedBlock, b);
+        for (std::size_t i = b * blockValues; i < (b + 1) * blockValues; ++i)
+            image.pixels()[i] = inBlock == 0 ? vec3(0.0f) : vec3(f.sum[i] / double(inBlock));
+    }
     return image;
 }
 

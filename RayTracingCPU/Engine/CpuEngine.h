@@ -85,12 +85,14 @@ private:
         PathVariant variant;
         // Radiance sum of every sample traced so far, row-major, in double: a float sum of 2^20 samples of 0.1
         // drifts by 1 % (each addition rounds to the ulp of the sum; tests/Cpu/StressTest.cpp's long run).
+        // Seed blocks (RenderEngine::setSeedBlock) one below the other, width x height each.
         std::vector<dvec3> sum;
         // Each row of `sum` as the current batch found it, copied by the row before it traces: a cancelled batch
         // puts it back. Left uninitialised: zero-filling it took a 600x600 render's start 10-20 ms on one core.
         std::unique_ptr<dvec3[]> before;
         int width = 0;
         int height = 0;
+        std::uint32_t blocks = 1; // seed blocks
         std::vector<RowTally> rows;
         std::vector<RowTally> rowsBefore;
         std::vector<RowState> rowStates;

@@ -46,7 +46,7 @@ RT_FLATTEN inline PathJob cameraJob(CpuShading<PathCode{}>& shading, bool media,
     const shader::CameraSample cs = shading.drawCameraSample(rng, pixel, sampleIndex);
     vec3 origin, direction;
     shading.generateRay(cs, origin, direction);
-    return {Ray{origin, direction, cs.time}, rng, media ? shader::mediumPathSeed(shading.uniforms.seed, pixel) : 0u};
+    return {Ray{origin, direction, cs.time}, rng, media ? shader::mediumPathSeed(shading.cameraSampleSeed(sampleIndex), pixel) : 0u};
 }
 
 /// Counts the path ray of segment `segment`: its camera ray (0) or an extension ray (without a branch).

@@ -93,9 +93,10 @@ struct GpuEngine::Impl
 
     /// A target of the settings' size (kept while the size stays, across scenes), restir-di's buffers when
     /// `restirDi` (dropped when not), and a descriptor set for them and the scene (setScene drops the set).
-    void prepareTarget(std::uint32_t width, std::uint32_t height, bool restirDi)
+    void prepareTarget(std::uint32_t width, std::uint32_t height, std::uint32_t blocks, bool restirDi)
     {
-        const bool resized = !target || target->width() != width || target->height() != height;
+        const bool resized =
+            !target || target->width() != width || target->height() != height || target->blocks() != blocks;
         const bool restirChanged = restirDi != bool(restir) || (restir && resized);
         if (!resized && !restirChanged && descriptors.set != VK_NULL_HANDLE)
             return;
@@ -103,7 +104,7 @@ struct GpuEngine::Impl
         if (resized)
         {
             target.reset();
-            target = std::make_unique<RenderTarget>(device(), width, height);
+            target = std::make_unique<RenderTarget>(device(), width, height, blocks);
         }
         if (restirChanged)
         {
@@ -459,7 +460,8 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
         throw UsageError("GpuEngine::beginFrame called before setScene");
     const auto width = static_cast<std::uint32_t>(settings.width);
     const auto height = static_cast<std::uint32_t>(settings.height());
-    if (const auto problem = checkTargetLimits(width, height, targetLimits(e.device())))
+    const std::uint32_t blocks = seedBlocksOf(settings, e.recordCost);
+    if (const auto problem = checkTargetLimits(width, height * blocks, targetLimits(e.device())))
         throw DeviceError(*problem);
     const bool restirDi = settings.estimator == Estimator::RestirDi;
     if (restirDi)
@@ -468,10 +470,11 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     if (e.recordCost)
         if (const std::string why = costUnavailable(settings); !why.empty())
             throw UsageError(why);
-    e.prepareTarget(width, height, restirDi);
+    e.prepareTarget(width, height, blocks, restirDi);
     e.restirHistory = false;
     e.uniforms = e.tracer.uniforms(frameCamera(*e.tracer.scene()), settings, {width, height});
     e.uniforms.countRays = e.countRays ? 1u : 0u;
+    e.uniforms.seedBlock = seedBlock();
     e.frameStages.clear();
     const auto compileStart = std::chrono::steady_clock::now();
     if (!e.recordCost)
@@ -575,7 +578,7 @@ Image GpuEngine::estimate(std::uint32_t samples)
         throw UsageError("GpuEngine::estimate called before beginFrame");
     m_impl->readback();
     const auto start = std::chrono::steady_clock::now();
-    Image image = m_impl->target->readEstimate(samples);
+    Image image = m_impl->target->readEstimate(samples, m_impl->uniforms.seedBlock);
     m_impl->frameStages["resolve_host"] +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return image;

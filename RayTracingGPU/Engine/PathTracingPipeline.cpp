@@ -138,7 +138,10 @@ void PathTracingPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDe
                             static_cast<std::uint32_t>(sets.size()), sets.data(), 0, nullptr);
     for (std::uint32_t done = 0; done < count;)
     {
-        const std::uint32_t samples = std::min(count - done, std::max(samplesPerLaunch, 1u));
+        std::uint32_t samples = std::min(count - done, std::max(samplesPerLaunch, 1u));
+        // A launch's samples in one seed block: the media's hash takes the block's seed from push.firstSample.
+        if (const std::uint32_t block = uniforms.seedBlock; block > 0)
+            samples = std::min(samples, block - (firstSample + done) % block);
         const TracePushConstants push{firstSample + done, samples, firstRow, rowInterleave};
         vkCmdPushConstants(cmd, m_layout.Handle(), kPathTracerStages, 0, sizeof(push), &push);
         vkCmdTraceRaysKHR(cmd, &sbt.raygen(), &sbt.miss(), &sbt.hit(), &sbt.callable(), extent.width,

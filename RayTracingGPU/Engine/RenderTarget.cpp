@@ -5,21 +5,22 @@
 #include <utility>
 
 #include "Engine/RenderLimits.h"
+#include "Render/RenderEngine.h"
 #include "Vulkan/Barriers.h"
 
 namespace rt::gpu
 {
-RenderTarget::RenderTarget(const vk::Device& device, std::uint32_t width, std::uint32_t height)
-    : m_image(device, {width, height}, VK_FORMAT_R32G32B32A32_SFLOAT,
+RenderTarget::RenderTarget(const vk::Device& device, std::uint32_t width, std::uint32_t height, std::uint32_t blocks)
+    : m_image(device, {width, height * blocks}, VK_FORMAT_R32G32B32A32_SFLOAT,
               VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT),
       m_view(device, m_image),
-      m_compensation(device, {width, height}, VK_FORMAT_R32G32B32A32_SFLOAT,
+      m_compensation(device, {width, height * blocks}, VK_FORMAT_R32G32B32A32_SFLOAT,
                      VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT),
       m_compensationView(device, m_compensation),
-      m_readback(device, kAccumulationBytesPerPixel * width * height,
+      m_readback(device, VkDeviceSize(kAccumulationBytesPerPixel) * width * height * blocks,
                  VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                  vk::MemoryUse::Readback),
-      m_compensationSnapshot(device, kAccumulationBytesPerPixel * width * height,
+      m_compensationSnapshot(device, VkDeviceSize(kAccumulationBytesPerPixel) * width * height * blocks,
                              VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                              vk::MemoryUse::Readback),
       m_uniforms(device, sizeof(shader::RenderUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::Upload),
@@ -32,7 +33,9 @@ RenderTarget::RenderTarget(const vk::Device& device, std::uint32_t width, std::u
                             VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                             vk::MemoryUse::DeviceLocal),
       m_traceCountersReadback(device, sizeof(shader::TraceCounters), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                            vk::MemoryUse::Readback)
+                            vk::MemoryUse::Readback),
+      m_height(height),
+      m_blocks(blocks)
 {
 }
 
@@ -127,7 +130,7 @@ void RenderTarget::recordRestore(VkCommandBuffer cmd) const
                           VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {width(), height(), 1};
+        region.imageExtent = {m_image.extent().width, m_image.extent().height, 1};
         vkCmdCopyBufferToImage(cmd, buffer, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
         vk::imageBarrier(cmd, image,
                          {VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
@@ -141,20 +144,24 @@ void RenderTarget::writeCounters(const shader::SampleCounters& counters)
     std::memcpy(m_counters.mapped(), &counters, sizeof(counters));
 }
 
-Image RenderTarget::readEstimate(std::uint32_t samples) const
+Image RenderTarget::readEstimate(std::uint32_t samples, std::uint32_t seedBlock) const
 {
-    Image image(static_cast<int>(width()), static_cast<int>(height()));
+    Image image(static_cast<int>(width()), static_cast<int>(height() * m_blocks));
     const auto* texels = static_cast<const float*>(m_readback.mapped());
-    const float count = static_cast<float>(std::max<std::uint32_t>(samples, 1));
-    for (std::size_t i = 0; i < image.pixelCount(); ++i)
-        image.data()[i] = vec3(texels[4 * i], texels[4 * i + 1], texels[4 * i + 2]) / count;
+    const std::size_t blockPixels = std::size_t(width()) * height();
+    for (std::uint32_t b = 0; b < m_blocks; ++b)
+    {
+        const float count = static_cast<float>(std::max<std::uint32_t>(samplesInSeedBlock(samples, seedBlock, b), 1));
+        for (std::size_t i = b * blockPixels; i < (b + 1) * blockPixels; ++i)
+            image.data()[i] = vec3(texels[4 * i], texels[4 * i + 1], texels[4 * i + 2]) / count;
+    }
     return image;
 }
 
 std::vector<double> RenderTarget::readSums() const
 {
     const auto* texels = static_cast<const float*>(m_readback.mapped());
-    const std::size_t pixels = std::size_t(width()) * height();
+    const std::size_t pixels = std::size_t(width()) * height() * m_blocks;
     std::vector<double> sums(3 * pixels);
     for (std::size_t i = 0; i < pixels; ++i)
         for (std::size_t c = 0; c < 3; ++c)

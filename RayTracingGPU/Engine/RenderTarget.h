@@ -20,15 +20,16 @@ namespace rt::gpu
 class RenderTarget final
 {
 public:
-    /// Allocates for width x height (checkTargetLimits passed). The image is left in GENERAL layout by the
-    /// first clear() recorded.
-    RenderTarget(const vk::Device& device, std::uint32_t width, std::uint32_t height);
+    /// Allocates for width x height (checkTargetLimits passed) in `blocks` seed blocks (RenderEngine::setSeedBlock),
+    /// their images one below the other. The image is left in GENERAL layout by the first clear() recorded.
+    RenderTarget(const vk::Device& device, std::uint32_t width, std::uint32_t height, std::uint32_t blocks = 1);
     RenderTarget(const RenderTarget&) = delete;
     RenderTarget& operator=(const RenderTarget&) = delete;
     ~RenderTarget() = default;
 
     std::uint32_t width() const { return m_image.extent().width; }
-    std::uint32_t height() const { return m_image.extent().height; }
+    std::uint32_t height() const { return m_height; } // a block's: the frame's
+    std::uint32_t blocks() const { return m_blocks; }
     VkImageView view() const { return m_view.Handle(); }
     const vk::Buffer& uniforms() const { return m_uniforms; }
     const vk::Buffer& counters() const { return m_counters; }
@@ -59,10 +60,11 @@ public:
     std::pair<RayCounts, LightSampleCounts> readTraceCounts() const;
     /// Overwrites the NaN/Inf counters (host-visible; call while the device is idle).
     void writeCounters(const shader::SampleCounters& counters);
-    /// The estimate from the readback buffer: sum / `samples`, RGB (call after recordReadback completed).
-    Image readEstimate(std::uint32_t samples) const;
-    /// The sums of the readback buffer, RGB per pixel, as readEstimate divides them (the Kahan compensation, which
-    /// the estimate leaves out too, is not added).
+    /// The estimate from the readback buffer: sum / the samples each seed block holds of `samples` traced in blocks
+    /// of `seedBlock` (0: one block), RGB, the blocks one below the other (call after recordReadback completed).
+    Image readEstimate(std::uint32_t samples, std::uint32_t seedBlock) const;
+    /// The sums of the readback buffer, RGB per pixel, every block, as readEstimate divides them (the Kahan
+    /// compensation, which the estimate leaves out too, is not added).
     std::vector<double> readSums() const;
 
 private:
@@ -77,5 +79,7 @@ private:
     vk::Buffer m_traceCounters; // TraceCounters, device-local: the shaders' atomics stay on the device
     vk::Buffer m_traceCountersSnapshot; // the trace counters at the last recordReadback, for recordRestore
     vk::Buffer m_traceCountersReadback; // host-visible, for readTraceCounts
+    std::uint32_t m_height; // a block's
+    std::uint32_t m_blocks;
 };
 } // namespace rt::gpu

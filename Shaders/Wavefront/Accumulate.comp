@@ -16,11 +16,24 @@ void main()
     uint q = gl_GlobalInvocationID.x;
     if (q >= push.wavePixelCount)
         return;
-    ivec2 texel = ivec2(bandOrderPixel(push.wavePixelBegin + q));
+    uvec2 pixel = bandOrderPixel(push.wavePixelBegin + q);
+    ivec2 texel = accumulationTexel(pixel, push.firstSample);
     vec4 sum = imageLoad(accumulation, texel);
     vec3 lost = imageLoad(compensation, texel).rgb;
     for (uint s = 0u; s < push.sampleCount; ++s)
+    {
+        // A wave's samples may cross into the next seed block: each block's sum apart.
+        ivec2 blockTexel = accumulationTexel(pixel, push.firstSample + s);
+        if (blockTexel != texel)
+        {
+            imageStore(accumulation, texel, sum);
+            imageStore(compensation, texel, vec4(lost, 0.0));
+            texel = blockTexel;
+            sum = imageLoad(accumulation, texel);
+            lost = imageLoad(compensation, texel).rgb;
+        }
         addCameraSample(sum, lost, uintBitsToFloat(waveFields[kWaveRadiance * push.waveCapacity + q * push.sampleCount + s].xyz));
+    }
     imageStore(accumulation, texel, sum);
     imageStore(compensation, texel, vec4(lost, 0.0));
 }

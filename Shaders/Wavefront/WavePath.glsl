@@ -40,7 +40,7 @@ PathState loadPath(uint p)
     if (settingSampling() == PixelSampling_Sobol)
     {
         uvec4 sobol = waveField(kWaveSobol, p);
-        path.rng = Rng(normalRng.w, sobol.x, direction.w, sobol.y, true);
+        path.rng = Rng(normalRng.w, sobol.x, sobol.z, sobol.y, true);
     }
     return path;
 }
@@ -53,8 +53,9 @@ void storePath(uint p, PathState path, uint pixel, uint sampleIndex)
     setWaveField(kWaveRadiance, p, packWaveField(path.radiance, path.pendingSurvival));
     setWaveField(kWaveBeta, p, packWaveField(path.beta, path.previousBsdfPdf));
     setWaveField(kWaveNormalRng, p, packWaveField(path.previousNormal, path.rng.state));
+    // z: the Sobol point's index, within its seed block (RenderUniforms::seedBlock), not the camera sample's.
     if (settingSampling() == PixelSampling_Sobol)
-        setWaveField(kWaveSobol, p, uvec4(path.rng.sobolSeed, path.rng.dimension, 0u, 0u));
+        setWaveField(kWaveSobol, p, uvec4(path.rng.sobolSeed, path.rng.dimension, path.rng.sampleIndex, 0u));
 }
 
 /// The hit path p's last ray found (Extend.rgen stores it).

@@ -15,12 +15,34 @@ RT_FN bool thinLens()
     return kHasThinLens && uniforms.thinLens != 0u;
 }
 
+/// The seed block of camera sample `sampleIndex` (RenderUniforms::seedBlock): 0 without blocks. Block k is drawn on
+/// seed + k and summed apart, so that one frame holds independent renders of consecutive seeds (--strategy auto's
+/// two halves of a measurement in one launch, each bit for bit the render of its seed alone).
+RT_FN uint seedBlockOf(uint sampleIndex)
+{
+    return uniforms.seedBlock == 0u ? 0u : sampleIndex / uniforms.seedBlock;
+}
+
+/// The seed camera sample `sampleIndex` is drawn on: the render's, plus its seed block.
+RT_FN uint cameraSampleSeed(uint sampleIndex)
+{
+    return uniforms.seed + seedBlockOf(sampleIndex);
+}
+
+/// Camera sample `sampleIndex`'s index within its seed block: the index its seed alone would give it.
+RT_FN uint sampleInSeedBlock(uint sampleIndex)
+{
+    return sampleIndex - seedBlockOf(sampleIndex) * uniforms.seedBlock;
+}
+
 /// The numbers of camera sample `sampleIndex` of `pixel`, by the render's pixel sampling.
 RT_FN Rng rngForCameraSample(uvec2 pixel, uint sampleIndex)
 {
     const uint pixelIndex = pixel.y * uniforms.width + pixel.x;
-    return settingSampling() == RT_ENUM(PixelSampling, Sobol) ? rngForSobolSample(uniforms.seed, pixelIndex, sampleIndex)
-                                                              : rngForSample(uniforms.seed, pixelIndex, sampleIndex);
+    const uint seed = cameraSampleSeed(sampleIndex);
+    const uint index = sampleInSeedBlock(sampleIndex);
+    return settingSampling() == RT_ENUM(PixelSampling, Sobol) ? rngForSobolSample(seed, pixelIndex, index)
+                                                              : rngForSample(seed, pixelIndex, index);
 }
 
 /// Draws the camera sample `sampleIndex` of `pixel` from the start of its stream: pixel jitter (2), lens (2,
@@ -33,7 +55,8 @@ RT_FN CameraSample drawCameraSample(RT_INOUT(Rng) rng, uvec2 pixel, uint sampleI
     if (settingSampling() == RT_ENUM(PixelSampling, Stratified))
     {
         const uint n = uniforms.strata;
-        const vec2 stratum = vec2(float(sampleIndex % n), float(sampleIndex / n));
+        const uint s = sampleInSeedBlock(sampleIndex);
+        const vec2 stratum = vec2(float(s % n), float(s / n));
         cs.raster = vec2(pixel) + (stratum + jitter) / float(n);
     }
     else
