@@ -37,7 +37,8 @@
 // (veach-mis) its correction for that noise failed and read as a bias. Its efficiency is 1 / (relMSE x seconds),
 // twice the faster half's time on the engine's clock (Compare/Measurement.h) less the half's fixed and per-pixel
 // cost, or on a GPU, whose halves are one frame's two seed blocks (RenderEngine::setSeedBlock: a wavefront frame's
-// tail paid once), that frame's time less its fixed and per-pixel cost (the render's paths' time; in the decision every measurement at the least of its final round's, or of all
+// tail paid once; a candidate of another estimator than the own's a frame a half until its cost is known), that
+// frame's time less its fixed and per-pixel cost (the render's paths' time; in the decision every measurement at the least of its final round's, or of all
 // its measurements where the search stopped before that, since a stall only adds time; or by the timing frames where
 // the plan has them, taken after the guard for the leader and the own where the final round did not).
 // The decision pairs the final round's measurements of the scene's own and the challenger, seed by seed

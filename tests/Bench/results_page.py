@@ -1015,6 +1015,22 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "the scene's own (notebook §54)",
                   "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=rtrol-cornell-box \\\n"
                   "    bash tests/Bench/device_run.sh auto", "## 54.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1130i", "NVIDIA H200, driver 580",
+                  "glossy-cornell with 607437f (a measurement's two halves one frame of two seed blocks on a GPU): "
+                  "0.93x the best [0.93, 0.94], its best 4 of 4; pilots 1.13-1.14x their budget (notebook §55)",
+                  "LEAN=1 bash tests/Bench/device_carry.sh  # then on the device:\n"
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=glossy-cornell \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 55.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1130j", "NVIDIA H200, driver 580",
+                  "many-lights with the same build: 0.91x the best, its own (0.95x the best) kept 3 of 4; auto / own "
+                  "0.95x, the pilot's cost (notebook §55)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=many-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 55.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1130k", "NVIDIA H200, driver 580",
+                  "triangle-lights with the same build: 0.94x the best; book 3's mixture, too slow, ran a frame of "
+                  "both halves (124-147 ms of a 0.4 s budget) before the estimator rule that followed (notebook §55)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=triangle-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 55.", "2026-11-30"),
                  ("h200-auto-strategy-5s-1130", "NVIDIA H200, driver 580",
                   "the same build, each strategy for 5 s and a reference of 32,768 spp (what the device's budget "
                   "left): veach-mis 0.96x the best, its own kept 4 of 4 (notebook §48)",

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 #include <random>
 #include <thread>
 
@@ -65,12 +66,19 @@ public:
         m_tailSeconds = seconds;
         m_tailPaths = saturationPaths;
     }
-    /// Every frame begun: the paths it stood for (RenderEngine::setRepresentedPaths) and its batches.
+    /// Every frame begun: the paths it stood for (RenderEngine::setRepresentedPaths), its batches, its settings and
+    /// its seed blocks (RenderEngine::setSeedBlock: 1 without).
     struct Frame
     {
         std::uint64_t represented = 0;
         int batches = 0;
+        RenderSettings settings;
+        std::uint32_t blocks = 1;
     };
+    /// The kind the engine says it is (Single by default): a Gpu's pilot takes a measurement's halves as one frame
+    /// of two seed blocks, which this engine renders as a real engine does, each block the render of its seed alone.
+    void setKind(EngineKind kind) { m_kind = kind; }
+    EngineKind kind() const override { return m_kind; }
     const std::vector<Frame>& frames() const { return m_frames; }
     /// Called as each frame begins, with how many began before it: a host's delay (a GPU's set-up) where it sleeps.
     void setOnFrame(std::function<void(std::size_t)> onFrame) { m_onFrame = std::move(onFrame); }
@@ -82,6 +90,9 @@ public:
     }
     /// The host's time of each strategy's first frame, as a GPU compiles its pipeline there (a sleep).
     void setCompileSeconds(double seconds) { m_compileSeconds = seconds; }
+    /// The host's time of each batch of the settings' (a sleep): a candidate slow enough for the pilot's time limit,
+    /// which is on the host's clock.
+    void setBatchSleep(std::function<double(const RenderSettings&)> seconds) { m_batchSleep = std::move(seconds); }
     NoiseEngine(std::function<double(const RenderSettings&)> sigma, std::uint64_t concurrentPaths,
                 double secondsPerPath, double fixedSeconds = 0.0, double secondsPerPixel = 0.0)
         : SceneHoldingEngine("noise"), m_sigma(std::move(sigma)), m_concurrentPaths(concurrentPaths),
@@ -108,41 +119,36 @@ public:
             std::this_thread::sleep_for(std::chrono::duration<double>(m_compileSeconds));
         }
         m_settings = settings;
+        const std::uint32_t blocks = seedBlocksOf(settings, false);
+        m_seedBlock = seedBlock();
         m_frames.push_back({representedPaths(std::uint64_t(settings.width) * std::uint64_t(settings.height()) *
                                              std::uint64_t(settings.trueSpp())),
-                            0});
-        m_sums.assign(std::size_t(settings.width) * std::size_t(settings.height()) * 3, 0.0);
+                            0, settings, blocks});
+        m_values = std::size_t(settings.width) * std::size_t(settings.height()) * 3;
+        m_sums.assign(m_values * blocks, 0.0);
     }
     BatchResult traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control) override
     {
         ++m_frames.back().batches;
-        // The sum of `count` samples of R + sigma N(0, 1) is count R + sigma sqrt(count) N(0, 1). Of N, the part
-        // kSharedNoise is the seed's whatever the strategy (its camera rays and BSDF directions), the rest the
-        // strategy's own.
-        std::mt19937_64 rng(std::uint64_t(m_settings.seed) * 0x9E3779B97F4A7C15ull + firstSample);
-        std::mt19937_64 own(rng() ^ (std::uint64_t(m_settings.estimator) << 16 |
-                                     std::uint64_t(m_settings.lightSampler) << 8 |
-                                     std::uint64_t(m_settings.lightSelection)) * 0xD1B54A32D192ED03ull);
-        // Two distributions: one draws its normals in pairs and would hand the second engine's call the first's
-        // spare.
-        std::normal_distribution<double> shared, unique;
-        const double sigma = m_sigma(m_settings) * std::sqrt(double(count));
-        const double ownNoise = std::sqrt(1.0 - kSharedNoise * kSharedNoise);
-        for (std::size_t k = 0; k < m_sums.size(); ++k)
-            m_sums[k] += double(count) * radiance(k) + sigma * (kSharedNoise * shared(rng) + ownNoise * unique(own));
-        if (m_fireflies.chance && firstSample == 0 &&
-            std::uniform_real_distribution<double>()(rng) < m_fireflies.chance(m_settings))
+        if (m_batchSleep)
+            std::this_thread::sleep_for(std::chrono::duration<double>(m_batchSleep(m_settings)));
+        // Each seed block's part of the batch as a render of its seed alone.
+        for (std::uint32_t s = firstSample; s < firstSample + count;)
         {
-            const std::size_t k = std::uniform_int_distribution<std::size_t>(0, m_sums.size() - 1)(rng);
-            m_sums[k] += m_fireflies.value * (m_fireflies.relative ? radiance(k) : 1.0);
+            const std::uint32_t block = m_seedBlock > 0 ? s / m_seedBlock : 0u;
+            const std::uint32_t first = s - block * m_seedBlock;
+            const std::uint32_t samples =
+                m_seedBlock > 0 ? std::min(firstSample + count - s, m_seedBlock - first) : count;
+            addSamples(m_settings.seed + block, first, samples, m_sums.data() + block * m_values);
+            s += samples;
         }
-        const std::uint64_t paths = std::uint64_t(m_sums.size() / 3) * count;
+        const std::uint64_t paths = std::uint64_t(m_values / 3) * count;
         control.advance(paths);
         // A render's launch and its image's clearing and read-back, once a frame.
-        const double framePaths = double(m_sums.size() / 3) * m_settings.trueSpp();
+        const double framePaths = double(m_values / 3) * m_settings.trueSpp();
         const double tail = m_tailPaths > 0.0 ? m_tailSeconds * std::min(framePaths / m_tailPaths, 1.0) : 0.0;
         const double frameSeconds =
-            firstSample == 0 ? m_fixedSeconds + double(m_sums.size() / 3) * m_secondsPerPixel + tail : 0.0;
+            firstSample == 0 ? m_fixedSeconds + double(m_values / 3) * m_secondsPerPixel + tail : 0.0;
         const double seen = m_throughputPaths > 0.0 ? std::min(framePaths / m_throughputPaths, 1.0) : 1.0;
         const double pathCost = m_pathCost ? 1.0 + (m_pathCost(m_settings) - 1.0) * seen : 1.0;
         const double frameScale = m_frameScale ? m_frameScale(m_frames.size() - 1, m_settings) : 1.0;
@@ -151,14 +157,41 @@ public:
     }
     Image estimate(std::uint32_t samples) override
     {
-        Image image(m_settings.width, m_settings.height());
+        const auto blocks = static_cast<std::uint32_t>(m_sums.size() / m_values);
+        Image image(m_settings.width, m_settings.height() * int(blocks));
         for (std::size_t k = 0; k < m_sums.size(); ++k)
-            image.data()[k / 3][int(k % 3)] = float(m_sums[k] / samples);
+        {
+            const std::uint32_t inBlock = samplesInSeedBlock(samples, m_seedBlock, std::uint32_t(k / m_values));
+            image.data()[k / 3][int(k % 3)] = float(m_sums[k] / std::max(inBlock, 1u));
+        }
         return image;
     }
     std::vector<double> radianceSums() override { return m_sums; }
 
 private:
+    /// Adds samples firstSample .. firstSample + count - 1 of seed `seed` to `sums` (m_values of them): the sum of
+    /// `count` samples of R + sigma N(0, 1) is count R + sigma sqrt(count) N(0, 1). Of N, the part kSharedNoise is the
+    /// seed's whatever the strategy (its camera rays and BSDF directions), the rest the strategy's own.
+    void addSamples(std::uint32_t seed, std::uint32_t firstSample, std::uint32_t count, double* sums)
+    {
+        std::mt19937_64 rng(std::uint64_t(seed) * 0x9E3779B97F4A7C15ull + firstSample);
+        std::mt19937_64 own(rng() ^ (std::uint64_t(m_settings.estimator) << 16 |
+                                     std::uint64_t(m_settings.lightSampler) << 8 |
+                                     std::uint64_t(m_settings.lightSelection)) * 0xD1B54A32D192ED03ull);
+        // Two distributions: one draws its normals in pairs and would hand the second engine's call the first's
+        // spare.
+        std::normal_distribution<double> shared, unique;
+        const double sigma = m_sigma(m_settings) * std::sqrt(double(count));
+        const double ownNoise = std::sqrt(1.0 - kSharedNoise * kSharedNoise);
+        for (std::size_t k = 0; k < m_values; ++k)
+            sums[k] += double(count) * radiance(k) + sigma * (kSharedNoise * shared(rng) + ownNoise * unique(own));
+        if (m_fireflies.chance && firstSample == 0 &&
+            std::uniform_real_distribution<double>()(rng) < m_fireflies.chance(m_settings))
+        {
+            const std::size_t k = std::uniform_int_distribution<std::size_t>(0, m_values - 1)(rng);
+            sums[k] += m_fireflies.value * (m_fireflies.relative ? radiance(k) : 1.0);
+        }
+    }
     static double radiance(std::size_t k) { return 0.2 + 0.1 * double(k % 7); }
     /// The correlation of two strategies' samples of a seed (the pilot renders a round's candidates with its seeds).
     static constexpr double kSharedNoise = 0.9;
@@ -169,7 +202,10 @@ private:
     double m_fixedSeconds; // and per render
     double m_secondsPerPixel; // and per pixel of a render
     RenderSettings m_settings;
-    std::vector<double> m_sums;
+    std::vector<double> m_sums; // the seed blocks one after the other, m_values each
+    std::size_t m_values = 0;
+    std::uint32_t m_seedBlock = 0; // the frame's
+    EngineKind m_kind = EngineKind::Single;
     Fireflies m_fireflies;
     std::function<double(const RenderSettings&)> m_pathCost;
     double m_throughputPaths = 0.0;
@@ -181,6 +217,7 @@ private:
     bool m_busyByPaths = false;
     double m_compileSeconds = 0.0;
     std::vector<Strategy> m_compiled;
+    std::function<double(const RenderSettings&)> m_batchSleep;
 };
 
 /// A pilot's first frames: the probe's three renders, each twice (kProbeFrames), and, on an engine whose renders cost
@@ -549,6 +586,102 @@ TEST(PilotDecision, EveryFrameOfThePilotRunsWhatTheRenderRunsInOneBatch)
     engine.beginFrame(small);
     EXPECT_EQ(engine.frames().back().represented, std::uint64_t(40 * 40) * 1024u)
         << "after the pilot, a frame stands for itself";
+}
+
+TEST(PilotDecision, OnAGpuAMeasurementsHalvesAreOneFrameOfTwoSeedBlocks)
+{
+    // A GPU's wavefront pays a tail of its last segments once a frame (an H200's pilot halves took 11.2 ms where
+    // 7.1 were planned): both halves in one frame pay it once. Every measurement of the search is one frame of two
+    // blocks in one batch, each block a half of its own seed (the fake renders them as a real engine does), and the
+    // pilot still finds a candidate 1.3x as efficient. An engine of another kind renders a frame a half.
+    const Scene scene = makeScene("cornell-box-lights");
+    for (const EngineKind kind : {EngineKind::Gpu, EngineKind::Multi})
+        for (std::uint32_t seed = 1; seed <= 3; ++seed)
+        {
+            NoiseEngine engine(oneBetterBy(1.3), kGpuLike.concurrentPaths, kGpuLike.secondsPerPath);
+            engine.setKind(kind);
+            engine.setBusyByPaths(true);
+            engine.setFrameTail(2e-3, 4.0 * double(kGpuLike.concurrentPaths));
+            engine.setScene(scene);
+            RenderRequest request = pilotRequest(scene);
+            request.settings.seed = seed;
+            const AutoChoice choice = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 40.0});
+            ASSERT_FALSE(choice.tooShort);
+            EXPECT_EQ(choice.halvesInOneFrame, kind == EngineKind::Gpu);
+            EXPECT_TRUE(choice.chosen == theBetterOne()) << toString(kind) << ", seed " << seed << ": chose "
+                                                         << choice.chosen.name();
+            int measurements = 0;
+            for (const PilotRow& row : choice.rows)
+                measurements += row.measurements;
+            int blockFrames = 0;
+            for (const NoiseEngine::Frame& frame : engine.frames())
+                if (frame.blocks == 2)
+                {
+                    ++blockFrames;
+                    EXPECT_EQ(frame.batches, 1);
+                    EXPECT_EQ(frame.settings.trueSpp(), choice.spp) << "both halves' samples";
+                }
+            EXPECT_EQ(blockFrames, kind == EngineKind::Gpu ? measurements : 0) << toString(kind) << ", seed " << seed;
+        }
+}
+
+TEST(PilotDecision, ACandidateOfAnotherEstimatorTakesAFrameAHalfUntilItsCostIsKnown)
+{
+    // The engine cannot stop a frame part way: a candidate whose cost is unknown in one frame of both halves would run
+    // them both however slow it is (book 3's mixture over triangle-lights' lights: 17x its share, a third of an
+    // H200's pilot budget). Of another estimator than the own's, its first measurement takes a frame a half, so the
+    // limit stops it after its first; once measured within its limit, one frame. The own's estimator's candidates
+    // take one frame from the first.
+    const Scene scene = makeScene("cornell-box-lights");
+    const StrategyLists lists{{"--estimators", "nee-mis,mixture"},
+                              {"--light-samplers", "projected,solid-angle"},
+                              {"--light-selections", "bvh"}};
+    for (const bool slow : {false, true})
+    {
+        NoiseEngine engine([](const RenderSettings&) { return 1.0; }, kGpuLike.concurrentPaths,
+                           kGpuLike.secondsPerPath);
+        engine.setKind(EngineKind::Gpu);
+        engine.setBusyByPaths(true);
+        if (slow) // past the limit on the host's clock: 4x a half's share of the fake's device time, about 0.3 s
+            engine.setBatchSleep([](const RenderSettings& s) { return s.estimator == Estimator::Mixture ? 1.2 : 0.0; });
+        engine.setScene(scene);
+        const AutoChoice choice = chooseStrategy(engine, pilotRequest(scene), lists, {.renderSeconds = 40.0});
+        ASSERT_FALSE(choice.tooShort);
+        ASSERT_TRUE(choice.halvesInOneFrame);
+        // The probe's frames, then each candidate's preparation (book 3's mixture takes no light sampler: three).
+        const std::size_t searchStart = kProbeFrames + choice.rows.size();
+        ASSERT_GT(engine.frames().size(), searchStart);
+        std::map<std::string, std::vector<std::uint32_t>> blocks; // each candidate's frames' blocks in the search
+        for (std::size_t f = searchStart; f < engine.frames().size(); ++f)
+        {
+            const RenderSettings& s = engine.frames()[f].settings;
+            if (s.width == choice.width) // not a timing frame
+                blocks[Strategy::of(s).name()].push_back(engine.frames()[f].blocks);
+        }
+        for (const PilotRow& row : choice.rows)
+        {
+            const std::vector<std::uint32_t>& frames = blocks[row.strategy.name()];
+            ASSERT_FALSE(frames.empty()) << row.strategy.name();
+            if (row.strategy.name().starts_with("nee-mis"))
+            {
+                EXPECT_EQ(std::count(frames.begin(), frames.end(), 2u), std::ptrdiff_t(frames.size()))
+                    << row.strategy.name() << ": a frame a measurement";
+                continue;
+            }
+            EXPECT_EQ(row.tooSlow, slow) << row.strategy.name();
+            if (slow)
+                EXPECT_EQ(frames, std::vector<std::uint32_t>{1u}) << row.strategy.name() << ": stopped after a half";
+            else
+            {
+                ASSERT_GE(frames.size(), 2u) << row.strategy.name();
+                EXPECT_EQ(frames[0], 1u) << row.strategy.name();
+                EXPECT_EQ(frames[1], 1u) << row.strategy.name();
+                EXPECT_EQ(std::count(frames.begin() + 2, frames.end(), 2u), std::ptrdiff_t(frames.size() - 2))
+                    << row.strategy.name() << ": one frame a measurement once its cost is known";
+                EXPECT_EQ(std::ptrdiff_t(frames.size()), 2 + (row.measurements - 1)) << row.strategy.name();
+            }
+        }
+    }
 }
 
 TEST(PilotDecision, ACandidateFasterPerPathWinsWhereEachRendersFixedCostHidesIt)
