@@ -72,7 +72,7 @@ uvec2 launchPixel()
 /// which cannot read the payload: in the wavefront, the path of the launch's queue entry; in restir-di's passes,
 /// the camera sample its launch pixel's slot of restirTraced names (Restir/RestirHost.glsl); in the megakernel,
 /// the launch's pixel and first sample (a scene whose intersection shaders need the sample, a moving one, is
-/// traced there one sample per launch).
+/// traced there one sample per launch; the media's need only its seed block, and a launch stays within one).
 uint tracedWavePath() { return waveQueues[push.waveQueue * push.waveCapacity + gl_LaunchIDEXT.x]; }
 uint restirTracedSlot()
 {

@@ -150,18 +150,29 @@ std::optional<StrategyLists> pilotCandidates(const StrategyLists& lists, const R
 
 namespace
 {
-/// setSeedBlock(samples) on `engine` while it lives, 0 after.
+/// setSeedBlock(samples) on `engine` while it lives, its block before after.
 class SeedBlockScope
 {
 public:
-    SeedBlockScope(RenderEngine& engine, std::uint32_t samples) : m_engine(engine) { m_engine.setSeedBlock(samples); }
-    ~SeedBlockScope() { m_engine.setSeedBlock(0); }
+    SeedBlockScope(RenderEngine& engine, std::uint32_t samples) : m_engine(engine), m_before(engine.seedBlock())
+    {
+        m_engine.setSeedBlock(samples);
+    }
+    ~SeedBlockScope() { m_engine.setSeedBlock(m_before); }
     SeedBlockScope(const SeedBlockScope&) = delete;
     SeedBlockScope& operator=(const SeedBlockScope&) = delete;
 
 private:
     RenderEngine& m_engine;
+    std::uint32_t m_before;
 };
+
+/// Whether a frame of `settings` can hold seed blocks (RenderEngine::setSeedBlock): not with stratified sampling
+/// (its strata are the spp's square) nor restir-di (its reservoirs carry from sample to sample).
+bool seedBlocksAllowed(const RenderSettings& settings)
+{
+    return settings.sampling != PixelSampling::Stratified && settings.estimator != Estimator::RestirDi;
+}
 
 /// The two halves of a frame of two seed blocks (RenderEngine::setSeedBlock) of `pixels` pixels each: its top and its
 /// bottom. Throws Error where the frame holds another number of pixels (an engine that ignored its seed blocks).
@@ -563,7 +574,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // budget out by frames of both halves: each measurement one frame of twice a half's spp. Not on a CPU: a frame
     // there costs a pool's dispatch, and each half apart keeps the faster one's time against a loaded machine's
     // stalls.
-    choice.halvesInOneFrame = engine.kind() == EngineKind::Gpu;
+    choice.halvesInOneFrame = engine.kind() == EngineKind::Gpu && seedBlocksAllowed(best);
     const int halvesPerFrame = choice.halvesInOneFrame ? 2 : 1;
     const double floorPixels = busyPixels(halvesPerFrame * pilotSpp);
     const bool bySpp = floorPixels < pilotPixels; // the engine's own answer, not the probe's rounded width
@@ -686,11 +697,10 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         return std::chrono::nanoseconds(
             static_cast<std::int64_t>(std::max(4.0 * std::max(shareMs, ownHalfWallMs), 5.0) * 1e6));
     };
-    // Whether a measurement of these settings takes one frame for both halves: seed blocks need random or Sobol
-    // sampling and no restir-di (a stratified candidate of --samplings takes a frame a half).
+    // Whether a measurement of these settings takes one frame for both halves (a stratified candidate of --samplings
+    // takes a frame a half).
     auto frameHoldsBothHalves = [&](const RenderSettings& half) {
-        return choice.halvesInOneFrame && half.estimator != Estimator::RestirDi &&
-               (half.sampling == PixelSampling::Random || half.sampling == PixelSampling::Sobol);
+        return choice.halvesInOneFrame && seedBlocksAllowed(half);
     };
 
     /// A candidate's measurements: their sums, and each one's halves by its seeds' slot.

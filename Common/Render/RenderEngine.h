@@ -78,13 +78,15 @@ public:
     /// selection, the wavefront's 1.23x, the render's 1.27x; docs/notebook/PERFORMANCE.md §36.)
     void setRepresentedPaths(std::uint64_t paths) { m_representedPaths = paths; }
     /// The frames that follow in seed blocks of `samples` camera samples each (0: one seed, the default): sample s of
-    /// a pixel is drawn as sample s mod `samples` of seed + s / `samples` and summed apart, so that a frame of
-    /// k x `samples` spp holds k independent renders, each bit for bit the render of its seed alone, in one
-    /// launch (Shared/Shading/Camera.h). estimate() and radianceSums() then hold the blocks one below the other
-    /// (width x height·k), each block divided by its own samples. --strategy auto's two halves of a measurement
-    /// take one frame so (AutoStrategy.cpp): a GPU's wavefront pays its frame's tail once, not twice. A frame of
-    /// seed blocks needs random or Sobol sampling, no restir-di, no cost recording, and spp a multiple of
-    /// `samples`: beginFrame throws UsageError otherwise (seedBlocksOf).
+    /// a pixel is drawn as sample s mod `samples` of seed + s / `samples` and summed apart, so that one frame of
+    /// k x `samples` spp holds k independent renders, each bit for bit the render of its seed alone (on the same
+    /// engine variant: the GPU picks its integrator by a block's paths, or by setRepresentedPaths')
+    /// (Shared/Shading/Camera.h). estimate() then holds the blocks one below the other (width x height·k), each
+    /// block divided by its own samples, and radianceSums() their sums, block after block. --strategy auto's two
+    /// halves of a measurement take one frame so on a GPU (AutoStrategy.cpp): its wavefront pays a frame's tail
+    /// once, not twice. A frame of seed blocks needs random, accumulate or Sobol sampling, no restir-di, no cost
+    /// recording, spp a multiple of `samples` and at most 65536 rows in all: beginFrame throws UsageError otherwise
+    /// (seedBlocksOf).
     void setSeedBlock(std::uint32_t samples) { m_seedBlock = samples; }
     std::uint32_t seedBlock() const { return m_seedBlock; }
 
@@ -118,7 +120,7 @@ public:
     /// The accumulator divided by `samples` (> 0): linear radiance, the frame's width x height.
     virtual Image estimate(std::uint32_t samples) = 0;
     /// The accumulator itself: each pixel's sum of the samples traced since beginFrame, RGB, row by row from the
-    /// top (width x height x 3 values), the sum estimate() divides. An MPI job adds its ranks' shares from these
+    /// top (width x height x 3 values, times the frame's seed blocks), the sum estimate() divides. An MPI job adds its ranks' shares from these
     /// (Cluster/SplitRender.h).
     virtual std::vector<double> radianceSums() = 0;
     virtual SampleTally tally() const = 0;
@@ -158,8 +160,7 @@ protected:
     {
         if (m_seedBlock == 0)
             return 1;
-        const char* why = settings.sampling != PixelSampling::Random && settings.sampling != PixelSampling::Sobol
-                              ? "random or Sobol pixel sampling"
+        const char* why = settings.sampling == PixelSampling::Stratified ? "random, accumulate or Sobol pixel sampling"
                           : settings.estimator == Estimator::RestirDi ? "an estimator other than restir-di"
                           : costRecording                             ? "no per-pixel cost recording"
                           : settings.trueSpp() % int(m_seedBlock) != 0 ? "spp a multiple of the block"
@@ -167,7 +168,12 @@ protected:
         if (why)
             throw UsageError("seed blocks of " + std::to_string(m_seedBlock) + " samples need " + why + " (spp " +
                              std::to_string(settings.trueSpp()) + ")");
-        return static_cast<std::uint32_t>(settings.trueSpp()) / m_seedBlock;
+        const std::uint32_t blocks = static_cast<std::uint32_t>(settings.trueSpp()) / m_seedBlock;
+        if (std::uint64_t(blocks) * std::uint64_t(settings.height()) > std::uint64_t(kMaxImageSide))
+            throw UsageError("seed blocks of " + std::to_string(m_seedBlock) + " samples: " + std::to_string(blocks) +
+                             " blocks of " + std::to_string(settings.height()) + " rows pass " +
+                             std::to_string(kMaxImageSide) + " rows");
+        return blocks;
     }
 
     /// The paths the frame of `framePaths` stands for (setRepresentedPaths).

@@ -88,7 +88,7 @@ void CpuEngine::beginFrame(const RenderSettings& settings)
     const std::uint32_t blocks = seedBlocksOf(settings, m_recordCost);
     shader::RenderUniforms uniforms = makeUniforms(m_scene->source(), frameCamera(m_scene->source()), settings,
                                                    std::uint32_t(width), std::uint32_t(height));
-    uniforms.seedBlock = seedBlock();
+    uniforms.seedBlock = blocks > 1 ? seedBlock() : 0u; // one block: the plain frame, whatever is traced
     const std::size_t values = std::size_t(width) * height * blocks;
     m_frame.emplace(Frame{.settings = settings,
                           .uniforms = uniforms,

@@ -61,6 +61,7 @@ struct GpuEngine::Impl
     bool restirHistory = false;
     TracingDescriptors descriptors; // the scene and the target; empty after setScene
     shader::RenderUniforms uniforms{}; // the frame's, as in the target's uniform buffer
+    std::uint32_t frameBlocks = 1; // the frame's seed blocks (RenderEngine::setSeedBlock; the target may hold more)
     GpuIntegrator integrator = GpuIntegrator::Megakernel; // the frame's (SceneTracer::integratorFor)
     std::map<std::string, double> frameStages; // stageSeconds() of the frame
     std::unique_ptr<WaveStageTimer> waveTimer; // made at the first wavefront launch on a device with timestamps
@@ -95,8 +96,10 @@ struct GpuEngine::Impl
     /// `restirDi` (dropped when not), and a descriptor set for them and the scene (setScene drops the set).
     void prepareTarget(std::uint32_t width, std::uint32_t height, std::uint32_t blocks, bool restirDi)
     {
+        // Blocks kept when fewer are asked for: a pilot's candidates are prepared on one, measured on two and timed
+        // on one again, and each new target costs the host an allocation and the descriptors.
         const bool resized =
-            !target || target->width() != width || target->height() != height || target->blocks() != blocks;
+            !target || target->width() != width || target->height() != height || target->blocks() < blocks;
         const bool restirChanged = restirDi != bool(restir) || (restir && resized);
         if (!resized && !restirChanged && descriptors.set != VK_NULL_HANDLE)
             return;
@@ -474,7 +477,8 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     e.restirHistory = false;
     e.uniforms = e.tracer.uniforms(frameCamera(*e.tracer.scene()), settings, {width, height});
     e.uniforms.countRays = e.countRays ? 1u : 0u;
-    e.uniforms.seedBlock = seedBlock();
+    e.uniforms.seedBlock = blocks > 1 ? seedBlock() : 0u; // one block: the plain frame, whatever is traced
+    e.frameBlocks = blocks;
     e.frameStages.clear();
     const auto compileStart = std::chrono::steady_clock::now();
     if (!e.recordCost)
@@ -489,8 +493,8 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     // is a megakernel's.
     e.integrator = restirDi || e.cost
                        ? GpuIntegrator::Megakernel
-                       : e.tracer.integratorFor(e.uniforms,
-                                                representedPaths(std::uint64_t(width) * height * settings.trueSpp()));
+                       : e.tracer.integratorFor(e.uniforms, representedPaths(std::uint64_t(width) * height *
+                                                                             settings.trueSpp() / blocks));
     // Out of the render's time.
     const bool compiled = e.cost ? e.cost->pipeline().prepare(e.uniforms, e.tracer.gpuScene().pipelineScene())
                                  : e.tracer.prepare(e.uniforms, e.integrator);
@@ -578,7 +582,7 @@ Image GpuEngine::estimate(std::uint32_t samples)
         throw UsageError("GpuEngine::estimate called before beginFrame");
     m_impl->readback();
     const auto start = std::chrono::steady_clock::now();
-    Image image = m_impl->target->readEstimate(samples, m_impl->uniforms.seedBlock);
+    Image image = m_impl->target->readEstimate(samples, m_impl->uniforms.seedBlock, m_impl->frameBlocks);
     m_impl->frameStages["resolve_host"] +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return image;
@@ -589,7 +593,7 @@ std::vector<double> GpuEngine::radianceSums()
     if (!m_impl->target || m_impl->descriptors.set == VK_NULL_HANDLE)
         throw UsageError("GpuEngine::radianceSums called before beginFrame");
     m_impl->readback();
-    return m_impl->target->readSums();
+    return m_impl->target->readSums(m_impl->frameBlocks);
 }
 
 std::string GpuEngine::frameConfiguration() const

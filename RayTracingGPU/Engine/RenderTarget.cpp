@@ -144,12 +144,13 @@ void RenderTarget::writeCounters(const shader::SampleCounters& counters)
     std::memcpy(m_counters.mapped(), &counters, sizeof(counters));
 }
 
-Image RenderTarget::readEstimate(std::uint32_t samples, std::uint32_t seedBlock) const
+Image RenderTarget::readEstimate(std::uint32_t samples, std::uint32_t seedBlock, std::uint32_t blocks) const
 {
-    Image image(static_cast<int>(width()), static_cast<int>(height() * m_blocks));
+    blocks = std::clamp(blocks, 1u, m_blocks);
+    Image image(static_cast<int>(width()), static_cast<int>(height() * blocks));
     const auto* texels = static_cast<const float*>(m_readback.mapped());
     const std::size_t blockPixels = std::size_t(width()) * height();
-    for (std::uint32_t b = 0; b < m_blocks; ++b)
+    for (std::uint32_t b = 0; b < blocks; ++b)
     {
         const float count = static_cast<float>(std::max<std::uint32_t>(samplesInSeedBlock(samples, seedBlock, b), 1));
         for (std::size_t i = b * blockPixels; i < (b + 1) * blockPixels; ++i)
@@ -158,10 +159,10 @@ Image RenderTarget::readEstimate(std::uint32_t samples, std::uint32_t seedBlock)
     return image;
 }
 
-std::vector<double> RenderTarget::readSums() const
+std::vector<double> RenderTarget::readSums(std::uint32_t blocks) const
 {
     const auto* texels = static_cast<const float*>(m_readback.mapped());
-    const std::size_t pixels = std::size_t(width()) * height() * m_blocks;
+    const std::size_t pixels = std::size_t(width()) * height() * std::clamp(blocks, 1u, m_blocks);
     std::vector<double> sums(3 * pixels);
     for (std::size_t i = 0; i < pixels; ++i)
         for (std::size_t c = 0; c < 3; ++c)

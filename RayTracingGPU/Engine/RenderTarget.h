@@ -20,8 +20,9 @@ namespace rt::gpu
 class RenderTarget final
 {
 public:
-    /// Allocates for width x height (checkTargetLimits passed) in `blocks` seed blocks (RenderEngine::setSeedBlock),
-    /// their images one below the other. The image is left in GENERAL layout by the first clear() recorded.
+    /// Allocates for width x height (checkTargetLimits passed) in up to `blocks` seed blocks
+    /// (RenderEngine::setSeedBlock), their images one below the other. The image is left in GENERAL layout by the
+    /// first clear() recorded.
     RenderTarget(const vk::Device& device, std::uint32_t width, std::uint32_t height, std::uint32_t blocks = 1);
     RenderTarget(const RenderTarget&) = delete;
     RenderTarget& operator=(const RenderTarget&) = delete;
@@ -29,7 +30,7 @@ public:
 
     std::uint32_t width() const { return m_image.extent().width; }
     std::uint32_t height() const { return m_height; } // a block's: the frame's
-    std::uint32_t blocks() const { return m_blocks; }
+    std::uint32_t blocks() const { return m_blocks; } // the most a frame may use
     VkImageView view() const { return m_view.Handle(); }
     const vk::Buffer& uniforms() const { return m_uniforms; }
     const vk::Buffer& counters() const { return m_counters; }
@@ -60,12 +61,13 @@ public:
     std::pair<RayCounts, LightSampleCounts> readTraceCounts() const;
     /// Overwrites the NaN/Inf counters (host-visible; call while the device is idle).
     void writeCounters(const shader::SampleCounters& counters);
-    /// The estimate from the readback buffer: sum / the samples each seed block holds of `samples` traced in blocks
-    /// of `seedBlock` (0: one block), RGB, the blocks one below the other (call after recordReadback completed).
-    Image readEstimate(std::uint32_t samples, std::uint32_t seedBlock) const;
-    /// The sums of the readback buffer, RGB per pixel, every block, as readEstimate divides them (the Kahan
-    /// compensation, which the estimate leaves out too, is not added).
-    std::vector<double> readSums() const;
+    /// The estimate from the readback buffer of a frame of `blocks` seed blocks (at most blocks()): sum / the samples
+    /// each block holds of `samples` traced in blocks of `seedBlock` (0: one block), RGB, the blocks one below the
+    /// other (call after recordReadback completed).
+    Image readEstimate(std::uint32_t samples, std::uint32_t seedBlock, std::uint32_t blocks) const;
+    /// The sums of the readback buffer, RGB per pixel, of the frame's `blocks` blocks, as readEstimate divides them
+    /// (the Kahan compensation, which the estimate leaves out too, is not added).
+    std::vector<double> readSums(std::uint32_t blocks) const;
 
 private:
     vk::Image m_image;

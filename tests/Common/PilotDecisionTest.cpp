@@ -625,6 +625,31 @@ TEST(PilotDecision, OnAGpuAMeasurementsHalvesAreOneFrameOfTwoSeedBlocks)
         }
 }
 
+TEST(PilotDecision, AGpusPilotPlansByFramesOfBothHalvesWhereTheOwnsSamplingAllowsThem)
+{
+    // Accumulation (the GPU window's pilot on a books' scene) draws random numbers: seed blocks, one frame a
+    // measurement. A stratified own cannot be cut into blocks (its strata are the spp's square): a frame a half for
+    // every candidate, as planned, so that no candidate is timed with one tail and another with two.
+    const Scene scene = makeScene("cornell-box-lights");
+    for (const PixelSampling sampling : {PixelSampling::Accumulate, PixelSampling::Stratified})
+    {
+        NoiseEngine engine([](const RenderSettings&) { return 1.0; }, kGpuLike.concurrentPaths,
+                           kGpuLike.secondsPerPath);
+        engine.setKind(EngineKind::Gpu);
+        engine.setScene(scene);
+        RenderRequest request = pilotRequest(scene);
+        request.settings.sampling = sampling;
+        const std::string samplings = sampling == PixelSampling::Accumulate ? "accumulate" : "stratified";
+        const StrategyLists lists{{"--light-samplers", "projected,solid-angle"}, {"--samplings", samplings}};
+        const AutoChoice choice = chooseStrategy(engine, request, lists, {.renderSeconds = 40.0});
+        ASSERT_FALSE(choice.tooShort) << samplings;
+        EXPECT_EQ(choice.halvesInOneFrame, sampling == PixelSampling::Accumulate) << samplings;
+        const auto blockFrames = std::count_if(engine.frames().begin(), engine.frames().end(),
+                                               [](const NoiseEngine::Frame& f) { return f.blocks == 2; });
+        EXPECT_EQ(blockFrames > 0, sampling == PixelSampling::Accumulate) << samplings;
+    }
+}
+
 TEST(PilotDecision, ACandidateOfAnotherEstimatorTakesAFrameAHalfUntilItsCostIsKnown)
 {
     // The engine cannot stop a frame part way: a candidate whose cost is unknown in one frame of both halves would run

@@ -2,6 +2,8 @@
 // block the render of its seed alone, bit for bit; and the frames that cannot be cut into blocks refused by name.
 #include <gtest/gtest.h>
 
+#include <thread>
+
 #include "Engine/CpuEngine.h"
 #include "Scenes/Catalogue.h"
 #include "Support/SeedBlocks.h"
@@ -36,6 +38,49 @@ TEST(CpuSeedBlocks, EachBlockIsTheRenderOfItsSeedAlone)
     }
 }
 
+// A batch cancelled part way, which crosses from the first block into the second, puts every block back: the
+// estimate after it is that of the batch before, bit for bit, and the batch taken again completes the frame's image.
+TEST(CpuSeedBlocks, ACancelledBatchPutsEveryBlockBack)
+{
+    const Scene scene = makeScene("cornell-box-lights");
+    cpu::CpuEngine engine(EngineKind::Multi);
+    engine.setScene(scene);
+    const RenderSettings s = settingsFor(scene, 32, 512, 8); // two blocks of 256
+    const std::uint64_t pixels = 32ull * 32ull;
+    engine.setSeedBlock(256);
+    auto traced = [&](RenderControl& control, std::uint32_t first, std::uint32_t count) {
+        return engine.traceSamples(first, count, control).complete;
+    };
+    engine.beginFrame(s);
+    RenderControl clean;
+    clean.begin(pixels * 512);
+    ASSERT_TRUE(traced(clean, 0, 200));
+    const Image first = engine.estimate(200);
+    ASSERT_TRUE(traced(clean, 200, 312));
+    const Image whole = engine.estimate(512);
+    ASSERT_EQ(whole.height(), 2 * 32);
+
+    engine.beginFrame(s);
+    RenderControl control;
+    control.begin(pixels * 512);
+    ASSERT_TRUE(traced(control, 0, 200));
+    // A few rows into the second batch (32 rows of 312 samples each).
+    std::thread canceller([&] {
+        while (control.done() < pixels * 200 + 4ull * 32ull * 312ull)
+            std::this_thread::yield();
+        control.requestCancel();
+    });
+    const bool complete = traced(control, 200, 312);
+    canceller.join();
+    ASSERT_FALSE(complete) << "the cancel came after the batch";
+    EXPECT_EQ(engine.estimate(200).pixels(), first.pixels()) << "the cancelled batch left samples behind";
+    RenderControl again;
+    again.begin(pixels * 312);
+    ASSERT_TRUE(traced(again, 200, 312));
+    EXPECT_EQ(engine.estimate(512).pixels(), whole.pixels());
+    engine.setSeedBlock(0);
+}
+
 TEST(SeedBlocks, FramesThatCannotBeCutIntoBlocksAreRefusedByName)
 {
     const Scene scene = makeScene("cornell-box-lights");
@@ -61,10 +106,17 @@ TEST(SeedBlocks, FramesThatCannotBeCutIntoBlocksAreRefusedByName)
     RenderSettings stratified = s;
     stratified.sampling = PixelSampling::Stratified;
     stratified.spp = 16;
-    EXPECT_NE(refusal(stratified).find("random or Sobol"), std::string::npos) << refusal(stratified);
+    EXPECT_NE(refusal(stratified).find("random, accumulate or Sobol"), std::string::npos) << refusal(stratified);
     RenderSettings restir = s;
     restir.estimator = Estimator::RestirDi;
     EXPECT_NE(refusal(restir).find("restir-di"), std::string::npos) << refusal(restir);
+    RenderSettings accumulate = s;
+    accumulate.sampling = PixelSampling::Accumulate; // the random numbers, drawn a sample a pass
+    EXPECT_EQ(refusal(accumulate), "accepted");
+    RenderSettings tall = s; // 8 rows a block
+    tall.spp = 8200;
+    engine.setSeedBlock(1);
+    EXPECT_NE(refusal(tall).find("65536 rows"), std::string::npos) << refusal(tall);
     engine.setSeedBlock(0);
     EXPECT_EQ(refusal(odd), "accepted");
 }

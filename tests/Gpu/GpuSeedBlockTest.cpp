@@ -42,5 +42,27 @@ TEST(GpuSeedBlocks, EachBlockIsTheRenderOfItsSeedAloneOnBothIntegrators)
     }
     engine.setIntegrator(suiteIntegrator());
 }
+// The refusals are the engines' shared rule (RenderEngine::seedBlocksOf); the GPU takes it before it allocates.
+TEST(GpuSeedBlocks, AStratifiedFrameIsRefusedByName)
+{
+    RT_REQUIRE_GPU();
+    GpuEngine& engine = *sharedEngine();
+    const Scene scene = makeScene("cornell-box-lights");
+    engine.setScene(scene);
+    RenderSettings s = ::rt::test::settingsFor(scene, 8, 16, 4);
+    s.sampling = PixelSampling::Stratified;
+    engine.setSeedBlock(8);
+    std::string message;
+    try
+    {
+        engine.beginFrame(s);
+    }
+    catch (const UsageError& e)
+    {
+        message = e.what();
+    }
+    engine.setSeedBlock(0);
+    EXPECT_NE(message.find("random, accumulate or Sobol"), std::string::npos) << message;
+}
 } // namespace
 } // namespace rt::gpu::test
