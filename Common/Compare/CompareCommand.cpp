@@ -31,7 +31,15 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
         app.add_option("--spp-list", flags.sppList, "With --compare: sample counts, comma separated")->capture_default_str();
     app.add_option("--engines", flags.engines,
                    "With --compare: engines, comma separated (single, multi, gpu; default: every engine this app "
-                   "links)");
+                   "links)")
+        ->check(CLI::Validator(
+            // An empty value (a shell variable left unset) would read as "every engine": a comparison the user did
+            // not ask for.
+            [](std::string& text) {
+                return text.empty() ? std::string("is an empty list: name single, multi or gpu, comma separated")
+                                    : std::string();
+            },
+            "ENGINES"));
     app.add_option("--reference-spp", flags.referenceSpp,
                    "With --compare: spp of the reference image (default: 4x the largest count), rendered by the "
                    "last engine in two halves (seeds + 1000 and + 2000) whose difference gives the reference's own "
