@@ -8,29 +8,6 @@
 
 namespace rt
 {
-/// `text` safe for a terminal: control characters (a scene file's or a flag's raw bytes, which a message may
-/// quote) written as \xNN, so that no input can move the cursor or clear the screen. Line breaks and tabs stay
-/// (a message may list devices one per line); bytes of 0x80 and above (UTF-8) are kept.
-inline std::string printableLine(std::string_view text)
-{
-    static constexpr char kHex[] = "0123456789abcdef";
-    std::string out;
-    out.reserve(text.size());
-    for (const char c : text)
-    {
-        const auto byte = static_cast<unsigned char>(c);
-        if ((byte < 0x20 && c != '\n' && c != '\t') || byte == 0x7f)
-        {
-            out += "\\x";
-            out += kHex[byte >> 4];
-            out += kHex[byte & 15];
-        }
-        else
-            out += c;
-    }
-    return out;
-}
-
 class Error : public std::runtime_error
 {
 public:

@@ -26,6 +26,7 @@
 #include "IO/OutputSet.h"
 #include "Image/Heatmap.h"
 #include "Image/ImageIO.h"
+#include "PrintableLine.h"
 #include "Render/RenderDriver.h"
 
 #ifndef _WIN32

@@ -10,6 +10,7 @@
 
 #include "Check.h"
 #include "Error.h"
+#include "PrintableLine.h"
 
 namespace rt::cluster
 {

@@ -204,6 +204,7 @@ expect_error "glTF: nested 30,000 deep" "nested deeper than 512 levels" --scene 
 expect_error "a folder as the scene" "it is a folder, not a scene file" --scene "$work/inner"
 expect_error "a device as the scene" "it is not a regular file" --scene /dev/null
 expect_error "control characters escaped" "unknown scene 'a\\\\x1b\[2Jb'" --scene "$(printf 'a\033[2Jb')"
+expect_error "C1 controls escaped" "unknown scene 'a\\\\xc2\\\\x9b2Jb'" --scene "$(printf 'a\302\2332Jb')"
 expect_error "extra arguments in the order given" "'-w 32'" -w 32
 printf 'glTF\002\000\000\000' >"$work/cut.glb"
 expect_error "glTF: a cut .glb" "cut.glb: not a valid glTF 2.0 binary file" --scene "$work/cut.glb"
