@@ -4,6 +4,9 @@
 // samples split between waves, each summed into its block's image).
 #include <gtest/gtest.h>
 
+#include <thread>
+#include <utility>
+
 #include "GpuTestEnvironment.h"
 #include "Scenes/Catalogue.h"
 #include "Support/SeedBlocks.h"
@@ -42,6 +45,53 @@ TEST(GpuSeedBlocks, EachBlockIsTheRenderOfItsSeedAloneOnBothIntegrators)
     }
     engine.setIntegrator(suiteIntegrator());
 }
+// A batch cancelled between its bands, crossing from the first block into the second, is put back whole: the
+// snapshot and the restore cover every block's image (a block left with the cancelled samples would show them, as
+// would a compensation image not put back once the batch is taken again).
+TEST(GpuSeedBlocks, ACancelledBatchPutsEveryBlockBack)
+{
+    RT_REQUIRE_GPU();
+    GpuEngine& engine = *sharedEngine();
+    engine.setIntegrator(GpuIntegrator::Megakernel);
+    const Scene scene = makeScene("cornell-box-lights");
+    engine.setScene(scene);
+    RenderSettings s = ::rt::test::settingsFor(scene, 16, 1000, 6); // two blocks of 500
+    s.aspect = 1.0f;
+    const std::uint64_t pixels = 16ull * 16ull;
+    engine.setSeedBlock(500);
+    auto clean = [&] {
+        engine.beginFrame(s);
+        RenderControl control;
+        control.begin(pixels * 1000);
+        EXPECT_TRUE(engine.traceSamples(0, 1, control).complete);
+        const Image first = engine.estimate(1);
+        EXPECT_TRUE(engine.traceSamples(1, 999, control).complete);
+        return std::pair{first, engine.estimate(1000)};
+    };
+    const auto [first, whole] = clean();
+    engine.setBandRows(2); // eight bands a batch, the cancel polled between them
+    engine.beginFrame(s);
+    RenderControl control;
+    control.begin(pixels * 1000);
+    ASSERT_TRUE(engine.traceSamples(0, 1, control).complete);
+    std::thread canceller([&] { // two bands into the second batch
+        while (control.done() < pixels + 2ull * 16ull * 2ull * 999ull)
+            std::this_thread::yield();
+        control.requestCancel();
+    });
+    const bool complete = engine.traceSamples(1, 999, control).complete;
+    canceller.join();
+    EXPECT_FALSE(complete) << "the cancel came after the batch";
+    EXPECT_EQ(engine.estimate(1).pixels(), first.pixels()) << "a block kept the cancelled batch's samples";
+    RenderControl again;
+    again.begin(pixels * 999);
+    EXPECT_TRUE(engine.traceSamples(1, 999, again).complete);
+    EXPECT_EQ(engine.estimate(1000).pixels(), whole.pixels());
+    engine.setBandRows(0);
+    engine.setSeedBlock(0);
+    engine.setIntegrator(suiteIntegrator());
+}
+
 // The refusals are the engines' shared rule (RenderEngine::seedBlocksOf); the GPU takes it before it allocates.
 TEST(GpuSeedBlocks, AStratifiedFrameIsRefusedByName)
 {
