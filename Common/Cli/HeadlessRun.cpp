@@ -297,7 +297,7 @@ int runHeadless(RenderEngine& engine, const Scene& scene, const RenderRequest& a
             catch (const std::exception& e)
             {
                 // Past the verdict the ranks are in the reduction: one that fails there ends the job.
-                std::fprintf(stderr, "error: %s: %s\n", job.name(job.rank()).c_str(), e.what());
+                std::fprintf(stderr, "error: %s: %s\n", job.name(job.rank()).c_str(), printableLine(e.what()).c_str());
                 job.abandon(1);
             }
             if (!job.root())

@@ -36,7 +36,7 @@ void addCompareOptions(CLI::App& app, CompareFlags& flags)
             // An empty value (a shell variable left unset) would read as "every engine": a comparison the user did
             // not ask for.
             [](std::string& text) {
-                return text.empty() ? std::string("is an empty list: name single, multi or gpu, comma separated")
+                return text.empty() ? std::string("names no engine (single, multi or gpu, comma separated)")
                                     : std::string();
             },
             "ENGINES"));

@@ -234,7 +234,7 @@ grep -q keep "$work/keep.exr" && grep -q keep "$work/shared.png" ||
 # --compare's flags without --compare.
 expect_error "table without compare" "--table requires --compare" --table "$work/t.json"
 expect_error "zero reference spp" "--reference-spp" --compare --engines single --spp-list 1 --reference-spp 0
-expect_error "empty engine list" "--engines: is an empty list" --compare --engines "" --spp-list 1
+expect_error "empty engine list" "--engines: names no engine" --compare --engines "" --spp-list 1
 # A mesh that is a folder is named as one, not "not found".
 expect_error "mesh is a folder" "is not a regular file" --scene mesh-in-one-weekend --mesh "$work"
 

@@ -27,6 +27,9 @@ TEST(PrintableLine, KeepsWellFormedUtf8OfEveryLength)
     const std::string text = "\xc3\xa9t\xc3\xa9 \xe2\x82\xac \xe6\x97\xa5 \xf0\x9f\x8e\xa8 \xc2\xa0"; // été € 日 🎨 nbsp
     EXPECT_EQ(printableLine(text), text);
     EXPECT_EQ(printableLine("\xf4\x8f\xbf\xbf"), "\xf4\x8f\xbf\xbf"); // U+10FFFF, the last code point
+    // The ends of the ranges the table narrows: U+0800, U+D7FF, U+E000, U+10000.
+    for (const char* kept : {"\xe0\xa0\x80", "\xed\x9f\xbf", "\xee\x80\x80", "\xf0\x90\x80\x80"})
+        EXPECT_EQ(printableLine(kept), kept);
 }
 
 TEST(PrintableLine, EscapesTheC1ControlsRawOrEncoded)
@@ -46,6 +49,11 @@ TEST(PrintableLine, EscapesBytesThatAreNotWellFormedUtf8)
     EXPECT_EQ(printableLine("ab\xe2\x82"), "ab\\xe2\\x82"); // cut short at the end
     EXPECT_EQ(printableLine("\xe2\x82x"), "\\xe2\\x82x"); // cut short by ASCII
     EXPECT_EQ(printableLine("\x80" "a"), "\\x80a"); // a continuation byte alone
+    EXPECT_EQ(printableLine("\xf0\x8f\xbf\xbf"), "\\xf0\\x8f\\xbf\\xbf"); // an overlong U+FFFF
+    EXPECT_EQ(printableLine("\xc1\xbf"), "\\xc1\\xbf"); // an overlong lead
+    EXPECT_EQ(printableLine("\xf5\x80\x80\x80"), "\\xf5\\x80\\x80\\x80"); // a lead past U+10FFFF
+    EXPECT_EQ(printableLine("\xf0\x9f\x8e"), "\\xf0\\x9f\\x8e"); // four bytes cut short at the end
+    EXPECT_EQ(printableLine("\xe2\xc3\xa9"), "\\xe2\xc3\xa9"); // the next character read after a bad lead
 }
 } // namespace
 } // namespace rt

@@ -2,6 +2,7 @@
 // block the render of its seed alone, bit for bit; and the frames that cannot be cut into blocks refused by name.
 #include <gtest/gtest.h>
 
+#include <stop_token>
 #include <thread>
 
 #include "Engine/CpuEngine.h"
@@ -60,19 +61,24 @@ TEST(CpuSeedBlocks, ACancelledBatchPutsEveryBlockBack)
     const Image whole = engine.estimate(512);
     ASSERT_EQ(whole.height(), 2 * 32);
 
-    engine.beginFrame(s);
-    RenderControl control;
-    control.begin(pixels * 512);
-    ASSERT_TRUE(traced(control, 0, 200));
-    // A few rows into the second batch (32 rows of 312 samples each).
-    std::thread canceller([&] {
-        while (control.done() < pixels * 200 + 4ull * 32ull * 312ull)
-            std::this_thread::yield();
-        control.requestCancel();
-    });
-    const bool complete = traced(control, 200, 312);
-    canceller.join();
-    ASSERT_FALSE(complete) << "the cancel came after the batch";
+    // The cancel comes from another thread a few rows in; where that thread ran too late (a loaded host) and the
+    // batch completed, the frame is taken again.
+    bool cancelled = false;
+    for (int attempt = 0; attempt < 5 && !cancelled; ++attempt)
+    {
+        engine.beginFrame(s);
+        RenderControl control;
+        control.begin(pixels * 512);
+        ASSERT_TRUE(traced(control, 0, 200));
+        // A few rows into the second batch (32 rows of 312 samples each).
+        std::jthread canceller([&](std::stop_token stop) {
+            while (!stop.stop_requested() && control.done() < pixels * 200 + 4ull * 32ull * 312ull)
+                std::this_thread::yield();
+            control.requestCancel();
+        });
+        cancelled = !traced(control, 200, 312);
+    }
+    ASSERT_TRUE(cancelled) << "the cancel came after the batch in five attempts";
     EXPECT_EQ(engine.estimate(200).pixels(), first.pixels()) << "the cancelled batch left samples behind";
     RenderControl again;
     again.begin(pixels * 312);
