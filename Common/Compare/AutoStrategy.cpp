@@ -167,13 +167,6 @@ private:
     std::uint32_t m_before;
 };
 
-/// Whether a frame of `settings` can hold seed blocks (RenderEngine::setSeedBlock): not with stratified sampling
-/// (its strata are the spp's square) nor restir-di (its reservoirs carry from sample to sample).
-bool seedBlocksAllowed(const RenderSettings& settings)
-{
-    return settings.sampling != PixelSampling::Stratified && settings.estimator != Estimator::RestirDi;
-}
-
 /// The two halves of a frame of two seed blocks (RenderEngine::setSeedBlock) of `pixels` pixels each: its top and its
 /// bottom. Throws Error where the frame holds another number of pixels (an engine that ignored its seed blocks).
 std::pair<Image, Image> seedBlockHalves(const Image& frame, double pixels)
@@ -574,7 +567,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // budget out by frames of both halves: each measurement one frame of twice a half's spp. Not on a CPU: a frame
     // there costs a pool's dispatch, and each half apart keeps the faster one's time against a loaded machine's
     // stalls.
-    choice.halvesInOneFrame = engine.kind() == EngineKind::Gpu && seedBlocksAllowed(best);
+    choice.halvesInOneFrame = engine.kind() == EngineKind::Gpu && !seedBlocksRefusal(best);
     const int halvesPerFrame = choice.halvesInOneFrame ? 2 : 1;
     const double floorPixels = busyPixels(halvesPerFrame * pilotSpp);
     const bool bySpp = floorPixels < pilotPixels; // the engine's own answer, not the probe's rounded width
@@ -700,7 +693,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // Whether a measurement of these settings takes one frame for both halves (a stratified candidate of --samplings
     // takes a frame a half).
     auto frameHoldsBothHalves = [&](const RenderSettings& half) {
-        return choice.halvesInOneFrame && seedBlocksAllowed(half);
+        return choice.halvesInOneFrame && !seedBlocksRefusal(half);
     };
 
     /// A candidate's measurements: their sums, and each one's halves by its seeds' slot.

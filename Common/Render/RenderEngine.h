@@ -50,6 +50,16 @@ inline std::uint32_t samplesInSeedBlock(std::uint32_t samples, std::uint32_t see
     return samples <= before ? 0u : static_cast<std::uint32_t>(std::min<std::uint64_t>(samples - before, seedBlock));
 }
 
+/// What a frame of `settings` needs to be cut into seed blocks (RenderEngine::setSeedBlock) whatever the block, in
+/// words; nullptr where it can be: not with stratified sampling (its strata are the spp's square) nor restir-di (its
+/// reservoirs carry from sample to sample).
+inline const char* seedBlocksRefusal(const RenderSettings& settings)
+{
+    return settings.sampling == PixelSampling::Stratified ? "random, accumulate or Sobol pixel sampling"
+           : settings.estimator == Estimator::RestirDi   ? "an estimator other than restir-di"
+                                                          : nullptr;
+}
+
 class RenderEngine
 {
 public:
@@ -120,8 +130,8 @@ public:
     /// The accumulator divided by `samples` (> 0): linear radiance, the frame's width x height.
     virtual Image estimate(std::uint32_t samples) = 0;
     /// The accumulator itself: each pixel's sum of the samples traced since beginFrame, RGB, row by row from the
-    /// top (width x height x 3 values, times the frame's seed blocks), the sum estimate() divides. An MPI job adds its ranks' shares from these
-    /// (Cluster/SplitRender.h).
+    /// top (width x height x 3 values, times the frame's seed blocks), the sum estimate() divides. An MPI job adds
+    /// its ranks' shares from these (Cluster/SplitRender.h).
     virtual std::vector<double> radianceSums() = 0;
     virtual SampleTally tally() const = 0;
     /// The engine's own times of the stages of its last setScene and frame, in seconds, by name (each engine's
@@ -160,11 +170,11 @@ protected:
     {
         if (m_seedBlock == 0)
             return 1;
-        const char* why = settings.sampling == PixelSampling::Stratified ? "random, accumulate or Sobol pixel sampling"
-                          : settings.estimator == Estimator::RestirDi ? "an estimator other than restir-di"
-                          : costRecording                             ? "no per-pixel cost recording"
-                          : settings.trueSpp() % int(m_seedBlock) != 0 ? "spp a multiple of the block"
-                                                                       : nullptr;
+        const char* why = seedBlocksRefusal(settings);
+        if (!why && costRecording)
+            why = "no per-pixel cost recording";
+        else if (!why && settings.trueSpp() % int(m_seedBlock) != 0)
+            why = "spp a multiple of the block";
         if (why)
             throw UsageError("seed blocks of " + std::to_string(m_seedBlock) + " samples need " + why + " (spp " +
                              std::to_string(settings.trueSpp()) + ")");
