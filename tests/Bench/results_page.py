@@ -1498,6 +1498,35 @@ def section_render_space():
     ]
 
 
+SEED_BLOCKS = {"dir": "cpu-seed-blocks-ab-1130", "date": "2026-11-30", "notebook": "## 55."}
+
+
+def section_seed_blocks():
+    rel = SEED_BLOCKS["dir"]
+    table = lambda name: results_path(f"{rel}/{name}").read_text().rstrip()
+    return [
+        "## 18. Seed blocks on the render path, against the build before (issue 37)",
+        "",
+        "Every camera sample now takes its seed and index through its seed block (`Shared/Shading/Camera.h`; 0 "
+        "blocks outside --strategy auto's GPU frames), the media's hash its sample's seed, the CPU's accumulation "
+        "a branch per chunk. The same renders with the build before (A, b3a91cb) and after (B, the seed blocks "
+        "and their review), rounds interleaved after a warm-up render of each, the fastest of each; `images`: the "
+        "same linear image bit for bit. No GPU figure: the session's H200 minutes went to the pilot's checks.",
+        "",
+        table("ab.md"),
+        "",
+        "cornell-box-lights' two again, with 10 rounds (the spread of one core of this machine is 2-3 %):",
+        "",
+        table("ab-recheck.md"),
+        "",
+        sources([("Machine", "CI kind (Intel Xeon, 2 vCPU), one core (taskset -c 0)"), ("Date", SEED_BLOCKS["date"]),
+                 ("Results", link(f"{rel}/ab.md")), ("Notebook", notebook_link(SEED_BLOCKS["notebook"])),
+                 ("Command", "")]),
+        "",
+        code(f"tests/Bench/cpu_ab.sh before/ray-tracing-cpu build/bin/ray-tracing-cpu docs/results/{rel}/renders.txt 5"),
+    ]
+
+
 RAYS = {"dir": "h100-rays", "cpu_dir": "cpu-rays", "date": "2026-11-27", "notebook": "## 24."}
 
 
@@ -1817,6 +1846,7 @@ def render():
         section_cycles(),
         section_roulette(),
         section_windows(),
+        section_seed_blocks(),
     ]
     titles = [p[0][3:] for p in parts[1:]]
     parts[0] += ["", "Contents: " + " · ".join(f"[{t}](#{slugify(t)})" for t in titles)]
