@@ -15,10 +15,13 @@ float accumulateCameraSamples(uvec2 pixel, uint first, uint count)
     ivec2 texel = accumulationTexel(pixel, first);
     vec4 sum = imageLoad(accumulation, texel);
     vec3 lost = imageLoad(compensation, texel).rgb;
-    for (uint sampleIndex = first; sampleIndex < first + count; ++sampleIndex)
+    // The launch's seed block worked out once (rngForBlockSample).
+    const uint seed = cameraSampleSeed(first);
+    const uint begin = sampleInSeedBlock(first);
+    for (uint index = begin; index < begin + count; ++index)
     {
-        Rng rng = rngForCameraSample(pixel, sampleIndex);
-        CameraSample cs = drawCameraSample(rng, pixel, sampleIndex);
+        Rng rng = rngForBlockSample(pixel, seed, index);
+        CameraSample cs = drawBlockSample(rng, pixel, index);
         vec3 origin;
         vec3 direction;
         generateRay(cs, origin, direction);

@@ -1031,6 +1031,19 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "both halves (124-147 ms of a 0.4 s budget) before the estimator rule that followed (notebook §55)",
                   "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=triangle-lights \\\n"
                   "    bash tests/Bench/device_run.sh auto", "## 55.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1130l", "NVIDIA H200, driver 580",
+                  "triangle-lights with 862dcf3's estimator rule (a candidate of another estimator than the own's a "
+                  "frame a half until its cost is known): 0.94x the best [0.94, 0.95], 1.06x its own; the too-slow "
+                  "mixture 35-77 ms, the pilots 1.01-1.11x their budget (1.20-1.22 before) (notebook §56)",
+                  "LEAN=1 bash tests/Bench/device_carry.sh  # then on the device:\n"
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=triangle-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 56.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1130m", "NVIDIA H200, driver 580",
+                  "many-lights with the same build: 0.91x the best [0.88, 0.93], its own (0.95x the best) kept 3 of "
+                  "4, auto / own 0.95x: where auto keeps the own its render is the own's, and the ratio is its "
+                  "pilot's time, 1.22-1.37x the 0.4 s budget (notebook §56)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=many-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 56.", "2026-11-30"),
                  ("h200-auto-strategy-5s-1130", "NVIDIA H200, driver 580",
                   "the same build, each strategy for 5 s and a reference of 32,768 spp (what the device's budget "
                   "left): veach-mis 0.96x the best, its own kept 4 of 4 (notebook §48)",
@@ -1498,11 +1511,11 @@ def section_render_space():
     ]
 
 
-SEED_BLOCKS = {"dir": "cpu-seed-blocks-ab-1130", "date": "2026-11-30", "notebook": "## 55."}
+SEED_BLOCKS = {"dir": "cpu-seed-blocks-ab-1130", "gpu_dir": "gpu-seed-blocks-ab-1130", "date": "2026-11-30", "notebook": "## 55."}
 
 
 def section_seed_blocks():
-    rel = SEED_BLOCKS["dir"]
+    rel, gpu = SEED_BLOCKS["dir"], SEED_BLOCKS["gpu_dir"]
     table = lambda name: results_path(f"{rel}/{name}").read_text().rstrip()
     return [
         "## 18. Seed blocks on the render path, against the build before (issue 37)",
@@ -1511,7 +1524,7 @@ def section_seed_blocks():
         "blocks outside --strategy auto's GPU frames), the media's hash its sample's seed, the CPU's accumulation "
         "a branch per chunk. The same renders with the build before (A, b3a91cb) and after (B, the seed blocks "
         "and their review), rounds interleaved after a warm-up render of each, the fastest of each; `images`: the "
-        "same linear image bit for bit. No GPU figure: the session's H200 minutes went to the pilot's checks.",
+        "same linear image bit for bit.",
         "",
         table("ab.md"),
         "",
@@ -1524,6 +1537,20 @@ def section_seed_blocks():
                  ("Command", "")]),
         "",
         code(f"tests/Bench/cpu_ab.sh before/ray-tracing-cpu build/bin/ray-tracing-cpu docs/results/{rel}/renders.txt 5"),
+        "",
+        "The GPU (NVIDIA H200), 3 interleaved rounds, the fastest `gpu_seconds` of each, `--strategy scene`: the "
+        "seed blocks as committed (318c7b7) ran the nee-mis megakernel 0.94-0.98x (each sample worked out its block, "
+        "seed and index again); with the launch's block worked out once and the loop over the index in the block "
+        "(notebook §56) 0.99x, the wavefront (nee-mis' default on these scenes) and book 3's mixture 1.00x, every "
+        "image the same:",
+        "",
+        results_path(f"{gpu}/ab.md").read_text().rstrip(),
+        "",
+        sources([("Machine", "NVIDIA H200, driver 580.159.04"), ("Date", SEED_BLOCKS["date"]),
+                 ("Results", link(f"{gpu}/README.md")), ("Notebook", notebook_link("## 56.")), ("Command", "")]),
+        "",
+        code(f"BASELINE_BIN=before/bin LEAN=1 bash tests/Bench/device_carry.sh\n"
+             f"ROUNDS=3 bash tests/Bench/device_run.sh ab docs/results/{gpu}/renders.txt"),
     ]
 
 

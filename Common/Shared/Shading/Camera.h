@@ -35,28 +35,32 @@ RT_FN uint sampleInSeedBlock(uint sampleIndex)
     return sampleIndex - seedBlockOf(sampleIndex) * uniforms.seedBlock;
 }
 
-/// The numbers of camera sample `sampleIndex` of `pixel`, by the render's pixel sampling.
-RT_FN Rng rngForCameraSample(uvec2 pixel, uint sampleIndex)
+/// The numbers of sample `index` of a seed block drawn on `seed` (cameraSampleSeed, sampleInSeedBlock) at `pixel`, by
+/// the render's pixel sampling. A caller whose samples lie in one block computes its seed and first index once: the
+/// H200's nee-mis megakernel ran 4-6 % slower with both worked out again per sample (notebook §56).
+RT_FN Rng rngForBlockSample(uvec2 pixel, uint seed, uint index)
 {
     const uint pixelIndex = pixel.y * uniforms.width + pixel.x;
-    const uint seed = cameraSampleSeed(sampleIndex);
-    const uint index = sampleInSeedBlock(sampleIndex);
     return settingSampling() == RT_ENUM(PixelSampling, Sobol) ? rngForSobolSample(seed, pixelIndex, index)
                                                               : rngForSample(seed, pixelIndex, index);
 }
 
-/// Draws the camera sample `sampleIndex` of `pixel` from the start of its stream: pixel jitter (2), lens (2,
-/// only with a thin lens), time (1). Stratified sampling puts sample s in stratum (s mod n, s / n) of the
-/// pixel's n x n.
-RT_FN CameraSample drawCameraSample(RT_INOUT(Rng) rng, uvec2 pixel, uint sampleIndex)
+/// The numbers of camera sample `sampleIndex` of `pixel`, by the render's pixel sampling.
+RT_FN Rng rngForCameraSample(uvec2 pixel, uint sampleIndex)
+{
+    return rngForBlockSample(pixel, cameraSampleSeed(sampleIndex), sampleInSeedBlock(sampleIndex));
+}
+
+/// Draws sample `index` of its seed block at `pixel` from the start of its stream: pixel jitter (2), lens (2, only
+/// with a thin lens), time (1). Stratified sampling puts sample s in stratum (s mod n, s / n) of the pixel's n x n.
+RT_FN CameraSample drawBlockSample(RT_INOUT(Rng) rng, uvec2 pixel, uint index)
 {
     const vec2 jitter = nextFloat2(rng);
     CameraSample cs;
     if (settingSampling() == RT_ENUM(PixelSampling, Stratified))
     {
         const uint n = uniforms.strata;
-        const uint s = sampleInSeedBlock(sampleIndex);
-        const vec2 stratum = vec2(float(s % n), float(s / n));
+        const vec2 stratum = vec2(float(index % n), float(index / n));
         cs.raster = vec2(pixel) + (stratum + jitter) / float(n);
     }
     else
@@ -65,6 +69,12 @@ RT_FN CameraSample drawCameraSample(RT_INOUT(Rng) rng, uvec2 pixel, uint sampleI
     const float u = nextFloat(rng);
     cs.time = uniforms.shutterOpen + u * (uniforms.shutterClose - uniforms.shutterOpen);
     return cs;
+}
+
+/// Draws camera sample `sampleIndex` of `pixel` (drawBlockSample of its index within its seed block).
+RT_FN CameraSample drawCameraSample(RT_INOUT(Rng) rng, uvec2 pixel, uint sampleIndex)
+{
+    return drawBlockSample(rng, pixel, sampleInSeedBlock(sampleIndex));
 }
 
 /// The camera ray of `cs`: from the lens point (the centre without a thin lens) to the raster position's point
