@@ -586,7 +586,6 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         half.spp = std::clamp(static_cast<int>(planCost.sppFor(shareMs, pixelsOf(half)) / halvesPerFrame), 1, sppCap);
         return half;
     };
-    RenderSettings pilot = planHalves(choice.budgetSeconds * 1e3, 2.0 * choice.budgetSeconds * 1e3);
     // Timing frames: where a half holds fewer paths than kThroughputFactor x the engine's concurrent paths, its
     // device runs partly idle, waiting on the longest paths, and its time per path hides part of what a costlier
     // candidate costs in the render: on an H200's glossy-cornell the pilot's halves of 512 x 512 at 1-17 spp put
@@ -603,21 +602,93 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     RenderSettings timing = large;
     timing.width = widthFor(request.settings, std::min(timingPaths, pixelsOf(large)));
     timing.spp = std::clamp(static_cast<int>(timingPaths / pixelsOf(timing)), 1, renderSpp);
-    if (pixelsOf(timing) * 2.0 * timing.spp > 2.0 * pixelsOf(pilot) * pilot.spp)
-    {
-        const double timingMs =
-            2.0 * (2.0 * cost.ms(pixelsOf(timing), timing.spp) + cost.ms(pixelsOf(timing), 2 * timing.spp));
-        const RenderSettings timedPilot =
-            planHalves(choice.budgetSeconds * 1e3 - timingMs,
-                       2.0 * choice.budgetSeconds * 1e3 - (timingMs + 6.0 * choice.hostExtraMs));
-        // Not where the budget left to the halves would then measure nothing (kMinimumPilotPaths below).
-        if (pixelsOf(timedPilot) * double(timedPilot.spp) >= kMinimumPilotPaths)
+    // The halves (and the timing frames, where they fit) for `budgetMs` on the engine's clock.
+    auto planPilot = [&](double budgetMs) {
+        RenderSettings halves = planHalves(budgetMs, 2.0 * choice.budgetSeconds * 1e3);
+        choice.timingWidth = choice.timingSpp = 0;
+        if (pixelsOf(timing) * 2.0 * timing.spp > 2.0 * pixelsOf(halves) * halves.spp)
         {
-            pilot = timedPilot;
-            choice.timingWidth = timing.width;
-            choice.timingSpp = timing.spp;
+            const double timingMs =
+                2.0 * (2.0 * cost.ms(pixelsOf(timing), timing.spp) + cost.ms(pixelsOf(timing), 2 * timing.spp));
+            const RenderSettings timedPilot = planHalves(
+                budgetMs - timingMs, 2.0 * choice.budgetSeconds * 1e3 - (timingMs + 6.0 * choice.hostExtraMs));
+            // Not where the budget left to the halves would then measure nothing (kMinimumPilotPaths below).
+            if (pixelsOf(timedPilot) * double(timedPilot.spp) >= kMinimumPilotPaths)
+            {
+                halves = timedPilot;
+                choice.timingWidth = timing.width;
+                choice.timingSpp = timing.spp;
+            }
+        }
+        return halves;
+    };
+    RenderSettings pilot = planPilot(choice.budgetSeconds * 1e3);
+    // On a GPU the plan is made again from two frames of the own at its depth. The probe's frames are wide and
+    // shallow (512 x 512 at 1-4 spp on an H200) and the halves' frames narrow and deep (140-180 px square at 30 spp,
+    // both halves), where a wavefront frame's cost is another line: on many-lights' own 7.9 ms a frame and 4.8 ns a
+    // path (its last segments, a few paths each, take longer; its paths, a pixel's samples together, less), against
+    // the probe's 1.9 ms and 8.5 ns. Planned by the probe, with the probe's six frames outside the plan (35 ms of a
+    // 400 ms budget), its pilots ran 1.22-1.37x their budget; with the plan's time per path scaled by one frame's,
+    // 1.15-1.19x, the halves then smaller and their fixed cost a larger part (notebook §57). The two frames are the
+    // own's measurement as planned (both halves, two seed blocks) and one of half its pixels, that one first (a first
+    // frame's extra time then lowers the slope and raises the fixed cost: smaller halves, not larger); their line is
+    // the plan's model at that depth, and the halves are planned again for the budget less the probe's and these
+    // frames' time. Where the line is not one (noise: a slope or a fixed cost below 0), the larger frame's paths'
+    // time over the probe's model scales its time per path instead (never down). Not on a CPU, whose pilots end
+    // within their budget (0.6-1.05x on 2 cores: notebook §53) and whose frames at the pilot's size are the probe's
+    // kind.
+    if (choice.halvesInOneFrame && pixelsOf(pilot) * double(pilot.spp) >= kMinimumPilotPaths)
+    {
+        RenderSettings atPlan = grid.front().applyTo(pilot);
+        const int halfSpp = atPlan.trueSpp();
+        atPlan.spp = 2 * halfSpp;
+        RenderSettings fewer = atPlan;
+        fewer.width = widthFor(request.settings, pixelsOf(atPlan) / 2.0);
+        // Not where half the pixels leave the device partly idle (RenderEngine::busyPixels): that frame's time would
+        // be nearly the planned one's, a line of no slope. The planned frame alone then.
+        const bool line = pixelsOf(fewer) < pixelsOf(atPlan) && pixelsOf(fewer) >= double(engine.busyPixels(fewer));
+        const SeedBlockScope blocks(engine, static_cast<std::uint32_t>(halfSpp));
+        double frameMs[2] = {0.0, 0.0}; // fewer's, the planned one's
+        for (int k = line ? 0 : 1; k < 2; ++k)
+        {
+            RenderRequest frame = request;
+            frame.settings = k == 0 ? fewer : atPlan;
+            const Measurement calibration = measure(engine, frame, nullptr, {}, true);
+            if (calibration.cancelled)
+                return cancelled();
+            frameMs[k] = calibration.ms();
+            choice.calibrationMs += calibration.ms();
+            choice.pilotMs += calibration.ms();
+        }
+        const double paths = pixelsOf(atPlan) * double(atPlan.trueSpp());
+        const double extraPaths = paths - pixelsOf(fewer) * double(fewer.trueSpp());
+        const double msPerPath = line && extraPaths > 0.0 ? (frameMs[1] - frameMs[0]) / extraPaths : 0.0;
+        const double fixedMs = frameMs[1] - msPerPath * paths;
+        // The line where its slope is at least a quarter of the planned frame's time a path (fitRenderCost's rule: a
+        // flatter one is the frames' noise, or a stall of the first, and would plan halves of every pixel).
+        if (msPerPath >= 0.25 * frameMs[1] / paths && fixedMs >= 0.0)
+            planCost = RenderCost{.fixedMs = fixedMs, .msPerPixel = 0.0, .msPerPath = msPerPath};
+        else if (const double frameOverheadMs = planCost.ms(pixelsOf(atPlan), 0.0),
+                 modelMs = planCost.ms(pixelsOf(atPlan), atPlan.trueSpp()) - frameOverheadMs;
+                 modelMs > 0.0)
+            planCost.msPerPath *= std::clamp((frameMs[1] - frameOverheadMs) / modelMs, 1.0, 4.0);
+        // Never less than half the budget: a probe that costs more (a slow device's, beside a short render) would leave
+        // nothing to measure, where the plan before this one measured.
+        const double budgetMs = choice.budgetSeconds * 1e3;
+        const RenderSettings first = pilot;
+        const int firstTimingWidth = choice.timingWidth, firstTimingSpp = choice.timingSpp;
+        pilot = planPilot(std::max(budgetMs - choice.probeMs - choice.calibrationMs, 0.5 * budgetMs));
+        // Never more paths a half than the first plan (the budget left is smaller), nor too few to measure where the
+        // first plan measured (a fixed cost near the share): the first plan then stays, as before the calibration.
+        const double replanned = pixelsOf(pilot) * double(pilot.spp);
+        if (replanned > pixelsOf(first) * double(first.spp) || replanned < kMinimumPilotPaths)
+        {
+            pilot = first;
+            choice.timingWidth = firstTimingWidth;
+            choice.timingSpp = firstTimingSpp;
         }
     }
+    choice.planCost = planCost;
     choice.width = pilot.width;
     choice.height = pilot.height();
     // What a half costs beyond its paths (the probe's fixed and per-pixel terms), taken off each measurement's
@@ -1240,6 +1311,10 @@ nlohmann::json AutoChoice::toJson() const
     j["probe_host_extra_ms"] = hostExtraMs;
     j["probe_ms"] = probeMs;
     j["candidates_cost_scale"] = candidatesCostScale;
+    j["calibration_ms"] = calibrationMs;
+    j["plan_cost"] = {{"fixed_ms", planCost.fixedMs},
+                      {"ms_per_pixel", planCost.msPerPixel},
+                      {"ms_per_path", planCost.msPerPath}};
     j["timing_width"] = timingWidth;
     j["timing_spp"] = timingSpp;
     j["search_render_host_seconds"] = renderHostSeconds;

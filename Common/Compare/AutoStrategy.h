@@ -50,7 +50,10 @@
 // measurement of a tail: one in the own's six renders of veach-mis once made a pilot leave it for 0.13x its
 // efficiency); otherwise the scene's own stays. The final round's measurements alone decide: the earlier ones
 // chose the challenger, and are lucky. The measurements are
-// planned to fill the budget on the engine's clock; the search stops once its time on the host's clock passes twice
+// planned to fill the budget on the engine's clock (on a GPU the budget less the probe's frames and two calibration
+// frames, at least half of it, by the line through those two frames of the own at the halves' depth, whose frames cost
+// more than the probe's model says: AutoChoice::planCost; never more paths a half than the probe's plan); the search
+// stops once its time on the host's clock passes twice
 // the budget (each render's set-up on the host): the candidates left are not measured, and without a final
 // round (or with one pair of it) the most efficient of the last round's candidates measured most often, paired with
 // the own on every seed they share, by the same rule (the scene's own stays where the final round stopped its
@@ -186,14 +189,21 @@ struct AutoChoice
     /// their shares of the search's measurements: the plan's scale (1 on a GPU, or where those renders would cost
     /// too much beside the budget).
     double candidatesCostScale = 1.0;
+    /// On a GPU (halvesInOneFrame): the own's two calibration frames at the first plan's depth, on the engine's clock
+    /// (0 where there were none).
+    double calibrationMs = 0.0;
+    /// The time model the halves were planned by: the probe's (`cost`) with candidatesCostScale, or on a GPU the line
+    /// through the calibration frames (or the probe's scaled by the larger frame, where they give none).
+    RenderCost planCost;
     int timingWidth = 0; // the timing frames (the final round's, or the guard's fallback's), where planned (0: none);
                          // their height is the image's
     int timingSpp = 0; // the first and third; the second (and a stalled second's fourth) twice it
     double budgetSeconds = 0.0;
-    double pilotMs = 0.0; // the probe's and every candidate's render time, on the engine's clock
+    /// The probe's, the calibration frames' and every candidate's render time, on the engine's clock.
+    double pilotMs = 0.0;
     double pilotWallSeconds = 0.0; // the whole pilot on the host's clock (GPU pipelines compiled included)
     double prepareSeconds = 0.0; // of which: every candidate prepared (a GPU's pipelines compiled), on the host's clock
-    double probeSeconds = 0.0; // of which: the set-up and the probe, on the host's clock
+    double probeSeconds = 0.0; // of which: the set-up, the probe and the calibration frames, on the host's clock
     double searchSeconds = 0.0; // of which: the search (every candidate's measurements and their scoring)
     double scoringSeconds = 0.0; // of the search: the candidates' relMSE between its rounds, on the host's clock
     /// Of the search, on the host's clock: its renders (Compare/Measurement.h's measure calls), of which their

@@ -26,6 +26,7 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <span>
 #include <thread>
 
 #include "Compare/AutoStrategy.h"
@@ -87,6 +88,12 @@ public:
     void setFrameScale(std::function<double(std::size_t, const RenderSettings&)> scale)
     {
         m_frameScale = std::move(scale);
+    }
+    /// Device seconds each frame adds to its paths' (by how many frames began before it and its settings): a cost of
+    /// its own, such as a GPU wavefront frame's tail.
+    void setFrameExtra(std::function<double(std::size_t, const RenderSettings&)> seconds)
+    {
+        m_frameExtra = std::move(seconds);
     }
     /// The host's time of each strategy's first frame, as a GPU compiles its pipeline there (a sleep).
     void setCompileSeconds(double seconds) { m_compileSeconds = seconds; }
@@ -152,8 +159,9 @@ public:
         const double seen = m_throughputPaths > 0.0 ? std::min(framePaths / m_throughputPaths, 1.0) : 1.0;
         const double pathCost = m_pathCost ? 1.0 + (m_pathCost(m_settings) - 1.0) * seen : 1.0;
         const double frameScale = m_frameScale ? m_frameScale(m_frames.size() - 1, m_settings) : 1.0;
+        const double extra = m_frameExtra && firstSample == 0 ? m_frameExtra(m_frames.size() - 1, m_settings) : 0.0;
         return {.complete = true,
-                .deviceSeconds = (frameSeconds + double(paths) * m_secondsPerPath * pathCost) * frameScale};
+                .deviceSeconds = (frameSeconds + double(paths) * m_secondsPerPath * pathCost) * frameScale + extra};
     }
     Image estimate(std::uint32_t samples) override
     {
@@ -213,6 +221,7 @@ private:
     double m_tailPaths = 0.0;
     std::vector<Frame> m_frames;
     std::function<void(std::size_t)> m_onFrame;
+    std::function<double(std::size_t, const RenderSettings&)> m_frameExtra;
     std::function<double(std::size_t, const RenderSettings&)> m_frameScale;
     bool m_busyByPaths = false;
     double m_compileSeconds = 0.0;
@@ -614,7 +623,10 @@ TEST(PilotDecision, OnAGpuAMeasurementsHalvesAreOneFrameOfTwoSeedBlocks)
             for (const PilotRow& row : choice.rows)
                 measurements += row.measurements;
             int blockFrames = 0;
-            for (const NoiseEngine::Frame& frame : engine.frames())
+            // After the probe's frames, a GPU's two calibration frames (the own at the first plan's depth, not kept).
+            const std::size_t search = kProbeFrames + (kind == EngineKind::Gpu ? 2 : 0);
+            ASSERT_EQ(engine.frames().at(kProbeFrames).blocks, kind == EngineKind::Gpu ? 2u : 1u);
+            for (const NoiseEngine::Frame& frame : std::span(engine.frames()).subspan(search))
                 if (frame.blocks == 2)
                 {
                     ++blockFrames;
@@ -673,8 +685,9 @@ TEST(PilotDecision, ACandidateOfAnotherEstimatorTakesAFrameAHalfUntilItsCostIsKn
         const AutoChoice choice = chooseStrategy(engine, pilotRequest(scene), lists, {.renderSeconds = 40.0});
         ASSERT_FALSE(choice.tooShort);
         ASSERT_TRUE(choice.halvesInOneFrame);
-        // The probe's frames, then each candidate's preparation (book 3's mixture takes no light sampler: three).
-        const std::size_t searchStart = kProbeFrames + choice.rows.size();
+        // The probe's frames, the own's two calibration frames, then each candidate's preparation (book 3's mixture
+        // takes no light sampler: three).
+        const std::size_t searchStart = kProbeFrames + 2 + choice.rows.size();
         ASSERT_GT(engine.frames().size(), searchStart);
         std::map<std::string, std::vector<std::uint32_t>> blocks; // each candidate's frames' blocks in the search
         for (std::size_t f = searchStart; f < engine.frames().size(); ++f)
@@ -707,6 +720,74 @@ TEST(PilotDecision, ACandidateOfAnotherEstimatorTakesAFrameAHalfUntilItsCostIsKn
             }
         }
     }
+}
+
+TEST(PilotDecision, AGpusPilotPlansAgainByTwoFramesOfTheOwnAtItsDepth)
+{
+    // A GPU whose deep frames (the halves': few pixels at many spp) cost more than the probe's wide, shallow ones show:
+    // a cost of their own (a wavefront's last segments; many-lights' own on an H200 7.9 ms a frame where the probe
+    // fitted 1.9), here `tail` on every frame of seed blocks. The pilot renders the own at its first plan's depth at
+    // half that plan's pixels and then at all of them, fits their line (here the fake's exactly: the tail, and its time
+    // per path), and plans again for the budget less the probe's and these frames' time: the whole pilot ends within
+    // its budget on the engine's clock (a few percent over at most: the candidates' first frames and the timing frames
+    // are planned by the probe's model). Planned by the probe alone, the fake's pilot with a 6 ms tail took 1.22x.
+    // Where the first frame stalls (3x), the line is too flat to be one: the planned frame's time scales the probe's
+    // time per path instead, and the halves are no larger than the first plan's, and still measured. Not on a CPU: no
+    // calibration frames, the plan the probe's. At an H200's pace (10 ns a path on 2^18 concurrent paths) the probe
+    // is some 7 % of an 8 s render's 0.4 s budget.
+    const Scene scene = makeScene("cornell-box-lights");
+    const StrategyLists lists{{"--light-samplers", "projected,solid-angle,area"}, {"--light-selections", "bvh,power"}};
+    constexpr double kSecondsPerPath = 1e-8;
+    struct Case
+    {
+        double tail;
+        bool stall;
+    };
+    for (const Case c : {Case{0.0, false}, Case{6e-3, false}, Case{6e-3, true}})
+    {
+        const std::string name = std::to_string(c.tail * 1e3) + " ms tail" + (c.stall ? ", a stall" : "");
+        NoiseEngine engine([](const RenderSettings&) { return 1.0; }, kGpuLike.concurrentPaths, kSecondsPerPath);
+        engine.setKind(EngineKind::Gpu);
+        engine.setBusyByPaths(true);
+        engine.setFrameExtra([&](std::size_t, const RenderSettings&) { return engine.seedBlock() > 0 ? c.tail : 0.0; });
+        engine.setFrameScale(
+            [&](std::size_t f, const RenderSettings&) { return c.stall && f == kProbeFrames ? 3.0 : 1.0; });
+        engine.setScene(scene);
+        const AutoChoice choice = chooseStrategy(engine, pilotRequest(scene), lists, {.renderSeconds = 8.0});
+        ASSERT_FALSE(choice.tooShort) << name;
+        ASSERT_TRUE(choice.halvesInOneFrame) << name;
+        const std::vector<NoiseEngine::Frame> calibration(engine.frames().begin() + kProbeFrames,
+                                                          engine.frames().begin() + kProbeFrames + 2);
+        for (const NoiseEngine::Frame& frame : calibration)
+        {
+            EXPECT_EQ(frame.blocks, 2u) << name << ": the own's measurement as planned, both halves";
+            EXPECT_EQ(Strategy::of(frame.settings), Strategy::of(pilotRequest(scene).settings)) << name;
+        }
+        EXPECT_LT(calibration[0].settings.width, calibration[1].settings.width) << "the smaller first";
+        EXPECT_GT(choice.calibrationMs, 0.0) << name;
+        const double budgetMs = choice.budgetSeconds * 1e3;
+        const RenderSettings& first = calibration[1].settings;
+        EXPECT_LE(double(choice.width) * choice.height * choice.spp, double(first.width) * first.height() * first.spp)
+            << name << ": no more paths a measurement than the first plan's";
+        if (c.stall)
+        {
+            EXPECT_EQ(choice.planCost.fixedMs, choice.cost.fixedMs) << name << ": the probe's model, scaled";
+            EXPECT_GT(choice.planCost.msPerPath, choice.cost.msPerPath) << name;
+            EXPECT_LE(choice.pilotMs, 1.2 * budgetMs) << name;
+            continue;
+        }
+        EXPECT_NEAR(choice.planCost.fixedMs, c.tail * 1e3, 0.05) << name;
+        EXPECT_NEAR(choice.planCost.msPerPath, kSecondsPerPath * 1e3, 0.02 * kSecondsPerPath * 1e3) << name;
+        EXPECT_LE(choice.pilotMs, 1.05 * budgetMs) << name;
+        EXPECT_GE(choice.pilotMs, 0.8 * budgetMs) << name << ": the budget spent";
+    }
+    NoiseEngine cpu([](const RenderSettings&) { return 1.0; }, kGpuLike.concurrentPaths, kSecondsPerPath);
+    cpu.setScene(scene);
+    const AutoChoice choice = chooseStrategy(cpu, pilotRequest(scene), lists, {.renderSeconds = 8.0});
+    EXPECT_FALSE(choice.halvesInOneFrame);
+    EXPECT_EQ(choice.calibrationMs, 0.0);
+    EXPECT_EQ(choice.planCost.fixedMs, choice.cost.fixedMs);
+    EXPECT_EQ(choice.planCost.msPerPath, choice.cost.msPerPath * choice.candidatesCostScale);
 }
 
 TEST(PilotDecision, ACandidateFasterPerPathWinsWhereEachRendersFixedCostHidesIt)
