@@ -1147,7 +1147,10 @@ def section_auto_strategy():
         "time, paid on top of its render, which has the spp of the chosen strategy's row). The best strategy, the "
         "scene's own and auto are then measured again with fresh seeds against the same reference file (the best of "
         "many noisy rows is biased up). Efficiency 1/(relMSE s), mean over seeds of relMSE × s, each relMSE less the "
-        "reference's own; ratios with their 95 % intervals (delta method over the seeds).",
+        "reference's own; ratios with their 95 % intervals (delta method over the seeds). Where auto keeps the "
+        "scene's own, its render is the own's (the same spp, the same image) and auto / own is its pilot's time "
+        "alone: on a scene whose own is within the pilot's 5 % of the best, auto / own is below 1 whatever the pilot "
+        "chooses (notebook §56).",
     ]
     for run in AUTO["runs"]:
         folder, machine, size, command = run[:4]
