@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <limits>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -106,8 +107,16 @@ TEST_P(GpuFeatureSpecialization, SpecialisedAndGeneralPipelinesRenderTheSameImag
     EXPECT_EQ(onDevice.features & ~(kFeatureThinLens | kFeatureGradientBackground),
               renderFeatureBits(scene) & ~(kFeatureThinLens | kFeatureGradientBackground));
     EXPECT_NE(onDevice.features, kSpecDynamic);
-    engine.setSpecialize(Specialize::Strategy);
-    const RenderResult strategy = renderOnGpu(scene, s);
+    // The pipeline specialised on the settings alone (--specialize strategy) keeps every feature's code, the general
+    // pipeline's: one scene of many features checks it. On lavapipe with its shader cache cold (CI's every run) its
+    // compile cost each case 33 s of 84 (triangle-lights), the seven some 115 s of the default suite's 1005 s on two
+    // cores; Full above folds the same settings in every scene.
+    std::optional<RenderResult> strategy;
+    if (GetParam() == "rtnw-final")
+    {
+        engine.setSpecialize(Specialize::Strategy);
+        strategy = renderOnGpu(scene, s);
+    }
     engine.setSpecialize(Specialize::Off);
     const RenderResult general = renderOnGpu(scene, s);
 
@@ -115,8 +124,11 @@ TEST_P(GpuFeatureSpecialization, SpecialisedAndGeneralPipelinesRenderTheSameImag
     EXPECT_GT(specialised.image.mean().x + specialised.image.mean().y + specialised.image.mean().z, 0.0f);
     EXPECT_LT(std::abs(pairedZ(specialised.image, general.image)), 4.0)
         << differingPixels(specialised.image, general.image) << " pixels differ beyond round-off";
-    EXPECT_LT(std::abs(pairedZ(strategy.image, general.image)), 4.0)
-        << differingPixels(strategy.image, general.image) << " pixels differ beyond round-off";
+    if (strategy)
+    {
+        EXPECT_LT(std::abs(pairedZ(strategy->image, general.image)), 4.0)
+            << differingPixels(strategy->image, general.image) << " pixels differ beyond round-off";
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, GpuFeatureSpecialization, ::testing::ValuesIn(kFeatureScenes),
