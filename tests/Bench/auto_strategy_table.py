@@ -147,6 +147,10 @@ def pilots(out):
             continue
         scale = choice.get("candidates_cost_scale", 1.0)  # not in the results of 2026-11-29 and before
         planned = "" if scale == 1.0 else f", planned at {scale:.2f}x the own's time per path"
+        if choice.get("calibration_ms", 0.0) > 0.0:  # a GPU's calibration frames (results from 2026-11-30 on)
+            line = choice["plan_cost"]
+            planned += (f", planned by its calibration frames ({choice['calibration_ms']:.1f} ms): "
+                        f"{line['fixed_ms']:.2f} ms a frame and {line['ms_per_path'] * 1e6:.2f} ns a path")
         print(f"\n{scene}, {table.stem}: chose {choice['chosen']}; pilot {choice['pilot_width']}x"
               f"{choice['pilot_height']}, {choice['pilot_spp']} spp a measurement, "
               f"{choice['pilot_ms']:.0f} ms on the engine's clock of a {choice['budget_seconds']:g} s "
