@@ -602,27 +602,29 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     RenderSettings timing = large;
     timing.width = widthFor(request.settings, std::min(timingPaths, pixelsOf(large)));
     timing.spp = std::clamp(static_cast<int>(timingPaths / pixelsOf(timing)), 1, renderSpp);
-    // The halves (and the timing frames, where they fit) for `budgetMs` on the engine's clock.
+    // The halves for `budgetMs` on the engine's clock, and whether the timing frames fit beside them.
+    struct PilotPlan
+    {
+        RenderSettings halves;
+        bool timed = false;
+        double paths() const { return pixelsOf(halves) * double(halves.spp); } // a half's
+    };
     auto planPilot = [&](double budgetMs) {
-        RenderSettings halves = planHalves(budgetMs, 2.0 * choice.budgetSeconds * 1e3);
-        choice.timingWidth = choice.timingSpp = 0;
-        if (pixelsOf(timing) * 2.0 * timing.spp > 2.0 * pixelsOf(halves) * halves.spp)
+        PilotPlan plan{planHalves(budgetMs, 2.0 * choice.budgetSeconds * 1e3)};
+        if (pixelsOf(timing) * 2.0 * timing.spp > 2.0 * plan.paths())
         {
             const double timingMs =
                 2.0 * (2.0 * cost.ms(pixelsOf(timing), timing.spp) + cost.ms(pixelsOf(timing), 2 * timing.spp));
-            const RenderSettings timedPilot = planHalves(
-                budgetMs - timingMs, 2.0 * choice.budgetSeconds * 1e3 - (timingMs + 6.0 * choice.hostExtraMs));
+            const PilotPlan timed{planHalves(budgetMs - timingMs, 2.0 * choice.budgetSeconds * 1e3 -
+                                                                      (timingMs + 6.0 * choice.hostExtraMs)),
+                                  true};
             // Not where the budget left to the halves would then measure nothing (kMinimumPilotPaths below).
-            if (pixelsOf(timedPilot) * double(timedPilot.spp) >= kMinimumPilotPaths)
-            {
-                halves = timedPilot;
-                choice.timingWidth = timing.width;
-                choice.timingSpp = timing.spp;
-            }
+            if (timed.paths() >= kMinimumPilotPaths)
+                plan = timed;
         }
-        return halves;
+        return plan;
     };
-    RenderSettings pilot = planPilot(choice.budgetSeconds * 1e3);
+    PilotPlan plan = planPilot(choice.budgetSeconds * 1e3);
     // On a GPU the plan is made again from two frames of the own at its depth. The probe's frames are wide and
     // shallow (512 x 512 at 1-4 spp on an H200) and the halves' frames narrow and deep (140-180 px square at 30 spp,
     // both halves), where a wavefront frame's cost is another line: on many-lights' own 7.9 ms a frame and 4.8 ns a
@@ -637,9 +639,9 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // time over the probe's model scales its time per path instead (never down). Not on a CPU, whose pilots end
     // within their budget (0.6-1.05x on 2 cores: notebook §53) and whose frames at the pilot's size are the probe's
     // kind.
-    if (choice.halvesInOneFrame && pixelsOf(pilot) * double(pilot.spp) >= kMinimumPilotPaths)
+    if (choice.halvesInOneFrame && plan.paths() >= kMinimumPilotPaths)
     {
-        RenderSettings atPlan = grid.front().applyTo(pilot);
+        RenderSettings atPlan = grid.front().applyTo(plan.halves);
         const int halfSpp = atPlan.trueSpp();
         atPlan.spp = 2 * halfSpp;
         RenderSettings fewer = atPlan;
@@ -675,20 +677,17 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         // Never less than half the budget: a probe that costs more (a slow device's, beside a short render) would leave
         // nothing to measure, where the plan before this one measured.
         const double budgetMs = choice.budgetSeconds * 1e3;
-        const RenderSettings first = pilot;
-        const int firstTimingWidth = choice.timingWidth, firstTimingSpp = choice.timingSpp;
-        pilot = planPilot(std::max(budgetMs - choice.probeMs - choice.calibrationMs, 0.5 * budgetMs));
+        const PilotPlan replanned =
+            planPilot(std::max(budgetMs - choice.probeMs - choice.calibrationMs, 0.5 * budgetMs));
         // Never more paths a half than the first plan (the budget left is smaller), nor too few to measure where the
         // first plan measured (a fixed cost near the share): the first plan then stays, as before the calibration.
-        const double replanned = pixelsOf(pilot) * double(pilot.spp);
-        if (replanned > pixelsOf(first) * double(first.spp) || replanned < kMinimumPilotPaths)
-        {
-            pilot = first;
-            choice.timingWidth = firstTimingWidth;
-            choice.timingSpp = firstTimingSpp;
-        }
+        if (replanned.paths() <= plan.paths() && replanned.paths() >= kMinimumPilotPaths)
+            plan = replanned;
     }
     choice.planCost = planCost;
+    const RenderSettings& pilot = plan.halves;
+    choice.timingWidth = plan.timed ? timing.width : 0;
+    choice.timingSpp = plan.timed ? timing.spp : 0;
     choice.width = pilot.width;
     choice.height = pilot.height();
     // What a half costs beyond its paths (the probe's fixed and per-pixel terms), taken off each measurement's
