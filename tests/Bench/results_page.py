@@ -1044,6 +1044,22 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "pilot's time, 1.22-1.37x the 0.4 s budget (notebook §56)",
                   "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=many-lights \\\n"
                   "    bash tests/Bench/device_run.sh auto", "## 56.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1130n", "NVIDIA H200, driver 580",
+                  "many-lights with 395801e (the GPU pilot planned again by two calibration frames of the own at its "
+                  "depth): 0.93x the best [0.90, 0.95], its own kept 3 of 4, auto / own 0.97x; the pilots 0.75-1.01x "
+                  "their 0.4 s budget on the engine's clock, where 1.22-1.37x before (notebook §60)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=many-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 60.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1130o", "NVIDIA H200, driver 580",
+                  "glossy-cornell with the same build: 0.95x the best [0.94, 0.95], its best 4 of 4, 1.43x its own; "
+                  "the pilots 0.94-0.96x their budget, where 1.13-1.14x before (notebook §60)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=glossy-cornell \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 60.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1130p", "NVIDIA H200, driver 580",
+                  "cornell-box-lights with the same build: 0.93x the best [0.92, 0.93], its best 4 of 4, 1.05x its "
+                  "own; the pilots 0.85-0.87x their budget (notebook §60)",
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=cornell-box-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto", "## 60.", "2026-11-30"),
                  ("h200-auto-strategy-5s-1130", "NVIDIA H200, driver 580",
                   "the same build, each strategy for 5 s and a reference of 32,768 spp (what the device's budget "
                   "left): veach-mis 0.96x the best, its own kept 4 of 4 (notebook §48)",
