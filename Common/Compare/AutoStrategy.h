@@ -16,7 +16,8 @@
 // their images combine: about 1024 pixels, or the engine's concurrent paths, the rest of the budget, less each
 // render's fixed cost, as spp), by
 // successive halving: all once, the better half again, and so on down to two, the scene's own in every round; the
-// final two are measured three times, each time with a timing frame where the halves are too small to keep the
+// final two are measured three times (more, while the engine's clock leaves the budget room for another repeat: a
+// plan made by a slow probe), the first three with a timing frame each where the halves are too small to keep the
 // engine's device busy (a GPU's: their time per path then hides part of a costlier candidate's cost; the decision
 // takes the timing frames' time per path: the slope between frames of one and two times their spp, since each
 // frame of a GPU's wavefront also has a cost of its own; a fourth frame where the one at twice the spp stalled).

@@ -922,6 +922,34 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "scene's own (notebook §54)",
                   "RECHECK_SEEDS=4 bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-4s-1130b \\\n"
                   "    multi 128 4000 2 16384 rtrol-cornell-box", "## 54.", "2026-11-30"),
+                 ("cpu-auto-strategy-4s-1130c", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                  "the eight light scenes in full with one build, 6762553 (the pilot at this session's end: the "
+                  "switch at 5 %; a CPU's plan unchanged by the GPU's calibration), 8 recheck seeds: seven scenes "
+                  "0.93-0.97x the best; glossy-cornell 0.88x [0.83, 0.93], its best 3 of 8 where the own is 0.88x: "
+                  "a 0.2 s pilot does not resolve its 13 % lead (notebook §61)",
+                  "RECHECK_SEEDS=8 bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-4s-1130c \\\n"
+                  "    multi 128 4000 2 16384 cornell-box-lights glossy-cornell many-lights rect-light-closeup \\\n"
+                  "    rtrol-cornell-box sphere-light-closeup triangle-lights veach-mis", "## 61.", "2026-11-30"),
+                 ("cpu-auto-strategy-16s-1130", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                  "glossy-cornell with the same build, each strategy for 16 s (a pilot of 0.8 s), references of "
+                  "32,768 spp: 1.01x the best, solid-angle sampling with power selection 8 of 8: the 13 % lead a 0.2 s "
+                  "pilot cannot resolve is resolved at four times its time (notebook §61)",
+                  "RECHECK_SEEDS=8 bash tests/Bench/auto_strategy.sh build/bin docs/results/cpu-auto-strategy-16s-1130 \\\n"
+                  "    multi 128 16000 2 32768 glossy-cornell", "## 61.", "2026-11-30"),
+                 ("cpu-auto-strategy-4s-1130d", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                  "five scenes again, 8 fresh seeds against the full comparisons of 1130c: the final round repeated "
+                  "while the engine's clock left room in the budget (tried, not kept in this form: no gain the "
+                  "intervals show, and the repeats cost the scenes whose own is the best their time) (notebook §61)",
+                  "RECHECK_ONLY=1 RECHECK_SEEDS=8 bash tests/Bench/auto_strategy.sh build/bin OUT multi 128 4000 2 \\\n"
+                  "    16384 glossy-cornell cornell-box-lights many-lights veach-mis rect-light-closeup  # OUT: 1130c's "
+                  "full comparisons", "## 61.", "2026-11-30"),
+                 ("cpu-auto-strategy-4s-1130e", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                  "the same with the repeats only while the challenger leads the own by the switch's 5 % (kept): "
+                  "cornell-box-lights 0.91x, glossy-cornell 0.89x, the others 0.95-0.97x; the pilots of the open "
+                  "decisions near their budget, the others as before (notebook §61)",
+                  "RECHECK_ONLY=1 RECHECK_SEEDS=8 bash tests/Bench/auto_strategy.sh build/bin OUT multi 128 4000 2 \\\n"
+                  "    16384 glossy-cornell cornell-box-lights many-lights veach-mis rect-light-closeup  # OUT: 1130c's "
+                  "full comparisons", "## 61.", "2026-11-30"),
                  ("h200-auto-strategy-8s-1129", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 8 s, 1 seed for the full comparison, 4 recheck seeds: the pilot "
                   "of c2dc4a3 (its switch at two standard errors of the error per pixel; 320beb0's build) on the "

@@ -1008,6 +1008,65 @@ TEST(PilotDecision, AStallInTheFinalRoundDoesNotDecide)
     EXPECT_LE(switched, 1) << "of 10 pilots over equal candidates, the own's final measurement stalled";
 }
 
+TEST(PilotDecision, ThePlansUnspentBudgetGoesToTheFinalRound)
+{
+    // A 40 s render (a 2 s budget) whose probe and cost probes ran at twice their paths' time, as a 2-core machine's
+    // thread pool waking late put a CPU's at 1.5x: the halves planned at half the paths the budget holds. The final
+    // round then repeats past its three measurements while the engine's clock leaves room for one more repeat and
+    // the challenger (1.15x the own) leads, and the pilot ends within its budget, not at half of it. Where the probe
+    // was right the plan fills the budget and the final round has at most one repeat of room. Where every other
+    // candidate is 0.8x the own, the challenger trails after three and the pilot ends there.
+    const Scene scene = makeScene("cornell-box-lights");
+    double gain = 1.15;
+    NoiseEngine engine(
+        [&](const RenderSettings& s) {
+            return s.lightSampler == LightSampler::SolidAngle && s.lightSelection == LightSelection::Power
+                       ? 1.0 / std::sqrt(gain)
+                       : s.lightSampler == LightSampler::Projected && s.lightSelection == LightSelection::Bvh
+                             ? 1.0
+                             : 1.0 / std::sqrt(0.8);
+        },
+        kCpuLike.concurrentPaths, kCpuLike.secondsPerPath);
+    engine.setScene(scene);
+    const RenderRequest request = pilotRequest(scene);
+    auto finalOf = [](const AutoChoice& choice) {
+        int most = 0;
+        for (const PilotRow& r : choice.rows)
+            most = std::max(most, r.finalMeasurements);
+        return most;
+    };
+    const AutoChoice steady = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 40.0});
+    const double budgetMs = steady.budgetSeconds * 1e3;
+    ASSERT_FALSE(steady.tooShort);
+    EXPECT_GE(finalOf(steady), 3);
+    EXPECT_LE(finalOf(steady), 4);
+    EXPECT_GT(steady.pilotMs, 0.9 * budgetMs);
+    EXPECT_LE(steady.pilotMs, 1.02 * budgetMs);
+
+    std::size_t begun = engine.frames().size();
+    engine.setFrameScale([&](std::size_t frame, const RenderSettings&) {
+        return frame >= begun && frame < begun + kProbeFrames + kCostProbes ? 2.0 : 1.0;
+    });
+    const AutoChoice slow = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 40.0});
+    ASSERT_TRUE(costProbed(slow)) << "the frames scaled are the probes and the cost probes";
+    ASSERT_FALSE(slow.tooShort);
+    EXPECT_FALSE(slow.budgetSpent);
+    EXPECT_LT(double(slow.width) * slow.height * slow.spp, 0.6 * double(steady.width) * steady.height * steady.spp)
+        << "the plan's halves by the slow probe";
+    EXPECT_GE(finalOf(slow), 10) << "the final round's repeats in the budget the plan left";
+    EXPECT_GT(slow.pilotMs, 0.9 * budgetMs);
+    EXPECT_LE(slow.pilotMs, 1.02 * budgetMs);
+    EXPECT_EQ(slow.chosen, theBetterOne());
+
+    gain = 0.8;
+    begun = engine.frames().size();
+    const AutoChoice behind = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 40.0});
+    ASSERT_FALSE(behind.tooShort);
+    EXPECT_EQ(finalOf(behind), 3) << "no repeat for a challenger that trails";
+    EXPECT_LT(behind.pilotMs, 0.7 * budgetMs);
+    EXPECT_EQ(behind.chosen, Strategy::of(request.settings));
+}
+
 TEST(PilotDecision, AFirstMeasurementSlowToWakeDoesNotLengthenTheEstimate)
 {
     // A render of 400 x 400 at 1024 spp (no time given: the pilot estimates it), 16.4 s of the fake's device. The
