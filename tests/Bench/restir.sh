@@ -6,6 +6,8 @@
 # cached on disk).
 #   tests/Bench/restir.sh BIN_DIR OUT_DIR ENGINE WIDTH EQUAL_MS SEEDS REFERENCE_SPP SCENE[:COUNT]...
 # e.g. tests/Bench/restir.sh build/bin docs/results/cpu-restir multi 128 3000 4 2048 lamp-room many-lights:10000
+# FLAGS: more flags for every render and its reference, e.g. FLAGS="--depth 2": direct light at the first vertex alone,
+# the part of the image restir-di's resampling serves (notebook §58).
 set -eu
 bin=$1 out=$2 engine=$3 width=$4 equalMs=$5 seeds=$6 referenceSpp=$7
 shift 7
@@ -21,6 +23,8 @@ for entry in "$@"; do
     fi
     common=(--compare --scene "$scene" "${count[@]}" --engines "$engine" --width "$width" --equal-time "$equalMs"
         --rounds 1 --seeds "$seeds" --reference-spp "$referenceSpp" --light-sampler projected --light-selection bvh)
+    read -r -a extra <<<"${FLAGS:-}"
+    common+=("${extra[@]}")
     $app "${common[@]}" --estimators nee-mis,restir-di --csv "$out/$name.csv" --output "$out/$name.png" \
         >"$out/$name.txt" 2>"$out/$name.log"
     for variant in "c1 --restir-temporal-cap 1" "c1-m8 --restir-temporal-cap 1 --restir-candidates 8"; do
