@@ -1237,6 +1237,17 @@ RESTIR_RUNS = [
      "setup": "Each strategy for 3 s at 128 px, 4 seeds, against 2,048 spp of nee-mis.",
      "command": "bash tests/Bench/restir.sh build/bin docs/results/cpu-restir multi 128 3000 4 2048 \\\n"
                 "    lamp-room many-lights:10000 cornell-box-lights"},
+    {"date": "2026-11-30", "notebook": "## 62.", "folder": "cpu-restir-full-1130", "scenes": ["lamp-room"],
+     "machine": "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+     "setup": "lamp-room again with b1c16a7, each strategy for 3 s at 128 px, 4 seeds, against 8,192 spp of nee-mis; "
+              "the table below is the same at depth 2.",
+     "command": "bash tests/Bench/restir.sh build/bin docs/results/cpu-restir-full-1130 multi 128 3000 4 8192 lamp-room"},
+    {"date": "2026-11-30", "notebook": "## 62.", "folder": "cpu-restir-depth2-1130", "scenes": ["lamp-room"],
+     "machine": "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+     "setup": "The same at `--depth 2`, direct light at the first vertex alone (the part of the image restir-di's "
+              "resampling serves), against a reference of that depth.",
+     "command": "FLAGS=\"--depth 2\" bash tests/Bench/restir.sh build/bin docs/results/cpu-restir-depth2-1130 multi \\\n"
+                "    128 3000 4 8192 lamp-room"},
 ]
 
 
@@ -1248,6 +1259,8 @@ def restir_table(run):
            "| scene | strategy | spp | ms | relMSE (± s.e.) | 1/(relMSE s) | / nee-mis |",
            "|---|---|---:|---:|---:|---:|---:|"]
     for name, title in RESTIR_SCENES:
+        if name not in run.get("scenes", [n for n, _ in RESTIR_SCENES]):
+            continue
         rows = []
         for suffix, label, shown in [("", "nee-mis", "nee-mis (projected, bvh)")] + RESTIR_VARIANTS:
             path = folder / f"{name}{suffix}.csv"
@@ -1284,7 +1297,8 @@ def section_restir():
         "the unbiased combination (pairwise MIS); full paths (depth 50), nee-mis beyond the resampled vertex. "
         "Efficiency 1/(relMSE s), the mean over seeds, with the GPU's time from its timestamps (as `--compare` "
         "budgets and scores it). The issue's targets on a GPU (4x on lamp-room, 2x on "
-        "many-lights, 0.9x on cornell-box-lights) are not met: why is in the notebook.",
+        "many-lights, 0.9x on cornell-box-lights) are not met: why is in the notebook (§58, §62: an iteration costs "
+        "4-9x a nee-mis sample, and direct light at the first vertex is a sixth or less of a full path's error).",
     ]
     for run in RESTIR_RUNS:
         out += [""] + restir_table(run)
