@@ -854,8 +854,15 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     auto timingFrameDue = [&](const Candidate& c) {
         return c.row.timingFrames < 3 || (c.row.timingFrames == 3 && timingStalled(c));
     };
+    // Each repeat of the final round past its kFinalMeasurements takes one more timing frame of each finalist, at
+    // the level after its last (timingFrame alternates them): a frame at twice the spp delayed by less than
+    // timingStalled sees is its level's least while it is the only one, and its slope then carries the delay (an
+    // H200's pilots of cornell-box-lights put solid-angle sampling with the BVH at 0.94-0.95x the own's time per path
+    // in 2 of 4, 0.80-0.84x in the others, the comparison 0.83x, and those two kept the own: notebook §63). The
+    // repeats' test of the budget counts these frames with the rest of a repeat.
     auto measureOnce = [&](Candidate& c, bool finalRound, std::uint32_t slot) {
-        if (finalRound && choice.timingSpp > 0 && c.row.timingFrames < 3)
+        if (finalRound && choice.timingSpp > 0 &&
+            (c.row.timingFrames < 3 || c.finals.size() >= std::size_t(kFinalMeasurements)))
         {
             if (!timingFrame(c, slot))
                 return false;
@@ -1063,19 +1070,19 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     for (std::size_t i = 0; i < active.size(); ++i)
         active[i] = i;
     std::uint32_t slot = 0; // the round's (its repeat's) seeds
-    // The final round repeats past kFinalMeasurements while the engine's clock leaves room for one more repeat
-    // (by the last one's time, whose timing frames make it the costlier), up to kMostFinalMeasurements, and while the
-    // challenger leads the own by the switch's 5 % on all their measurements (scored again after each repeat): a plan
-    // made by a slow probe (a 2-core machine's thread pool waking late: the time per path at 1.5x the render's)
-    // leaves part of the budget unspent, and the decision is what it serves best. On the CI kind's 4 s renders such
-    // pilots ended at 0.39-0.56x their 0.2 s budget at 6-8 spp a measurement where 12-14 fitted, and one took area
-    // sampling with uniform selection on glossy-cornell, 0.94x the own, on a lead of 1.49 (notebook §61). A
+    // The final round repeats past kFinalMeasurements while the engine's clock leaves room for one more repeat (by the
+    // costlier of the last two: a repeat's timing frames alternate their sizes), up to kMostFinalMeasurements, and
+    // while the challenger leads the own by the switch's 5 % on all their measurements (scored again after each
+    // repeat): a plan made by a slow probe (a 2-core machine's thread pool waking late: the time per path at 1.5x the
+    // render's) leaves part of the budget unspent, and the decision is what it serves best. On the CI kind's 4 s
+    // renders such pilots ended at 0.39-0.56x their 0.2 s budget at 6-8 spp a measurement where 12-14 fitted, and one
+    // took area sampling with uniform selection on glossy-cornell, 0.94x the own, on a lead of 1.49 (notebook §61). A
     // challenger behind the own by then would not be taken on more measurements: the repeats would only cost time (a
     // rect-light-closeup's pilots, the own the best, took 0.92-1.12x their budget where 0.48-0.74x without the lead's
-    // test). A plan that fills the budget has no room left and repeats kFinalMeasurements times, as before. The
-    // budget is read at each repeat (the search's first measurement may lower it: chooseStrategy's estimate), and the
-    // host's clock must leave the repeat room within the guard too, which the host's own time per render (a GPU's
-    // 7-14 ms) would otherwise pass.
+    // test). A plan that fills the budget has no room left and repeats kFinalMeasurements times, as before. The budget
+    // is read at each repeat (the search's first measurement may lower it: chooseStrategy's estimate), and the host's
+    // clock must leave the repeat room within the guard too, which the host's own time per render (a GPU's 7-14 ms)
+    // would otherwise pass.
     constexpr int kMostFinalMeasurements = 8 * kFinalMeasurements;
     auto finalRepeatFits = [&](int repeat, double lastRepeatMs, double lastRepeatHostSeconds) {
         if (repeat < kFinalMeasurements)
@@ -1092,7 +1099,10 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     while (finished && !choice.budgetSpent)
     {
         const bool finalRound = active.size() <= 2;
+        // The costlier of the last two repeats: past the first three, a repeat's timing frames alternate the timing
+        // spp and twice it, and the one after a repeat at the timing spp is the costlier.
         double lastRepeatMs = 0.0, lastRepeatHostSeconds = 0.0;
+        double repeatMs[2] = {0.0, 0.0}, repeatHostSeconds[2] = {0.0, 0.0};
         for (int repeat = 0; finished && !choice.budgetSpent &&
                              (finalRound ? finalRepeatFits(repeat, lastRepeatMs, lastRepeatHostSeconds) : repeat < 1);
              ++repeat, ++slot)
@@ -1135,8 +1145,11 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
                 if (!(finished = measureOnce(runs[i], final, seeds)))
                     break;
             }
-            lastRepeatMs = choice.pilotMs - repeatStartMs;
-            lastRepeatHostSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - repeatStart).count();
+            repeatMs[repeat % 2] = choice.pilotMs - repeatStartMs;
+            repeatHostSeconds[repeat % 2] =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - repeatStart).count();
+            lastRepeatMs = std::max(repeatMs[0], repeatMs[1]);
+            lastRepeatHostSeconds = std::max(repeatHostSeconds[0], repeatHostSeconds[1]);
         }
         if (!finished || finalRound)
             break;
@@ -1242,11 +1255,21 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // `first` first: where the host's clock cut the final round, its frames were cut with it (after the own's third
     // measurement, before the challenger's, a stalled frame at twice the spp was the challenger's slope: 0.25x the
     // own's where 1.39x). False where cancelled.
+    // A repeat the guard cut between the finalists left the first of them a timing frame more: the other takes it, so
+    // that both least times stand on as many frames at each level.
     auto completeTimingFrames = [&](Candidate& first) {
         for (int frame = 0; frame < 4 && choice.timingSpp > 0; ++frame)
             for (Candidate* c : {&first, &ownRun})
                 if (timingFrameDue(*c) && !timingFrame(*c, slot))
                     return false;
+        for (Candidate* c : {&first, &ownRun})
+        {
+            const Candidate& other = c == &ownRun ? first : ownRun;
+            while (choice.timingSpp > 0 && c->finals.size() < other.finals.size() &&
+                   c->finals.size() >= std::size_t(kFinalMeasurements) && c->row.timingFrames < other.row.timingFrames)
+                if (!timingFrame(*c, slot))
+                    return false;
+        }
         return true;
     };
     if (challenger != measuredRuns.end() && measuredRuns.front() == &ownRun && ownRun.finals.size() >= 2 &&

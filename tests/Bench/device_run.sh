@@ -14,6 +14,7 @@
 #                                      its table and its host clock
 #   tests/Bench/device_run.sh pilot-sizes  the GPU's time by image size, spp and integrator (pilot_sizes.sh)
 #   tests/Bench/device_run.sh auto     --strategy auto against a full --compare at equal time (auto_strategy.sh)
+#                                      (SCENES split by '|': lanes side by side, one GPU each)
 #   tests/Bench/device_run.sh heavy    the heavy part: CPU/GPU agreement of every scene at 128 px, 64 spp (FILTER:
 #                                      a gtest filter within it)
 #   tests/Bench/device_run.sh table    thesis Table 5.4 redone: cornell-box-lights 600x600, depth 50, mixture
@@ -235,18 +236,42 @@ auto)
     # shader cache cold, then warm: the pilot's wall time includes its pipelines' compilation; HEADLESS_RUNS= skips
     # them), then
     # auto_strategy.sh at equal time (MS, default 500) on SCENES at WIDTH (600), SEEDS (2) seeds, REF_SPP (8192).
+    # SCENES split by '|' run as lanes side by side, lane k on the host's GPU k (--device k), each its scenes in turn:
+    # one build's table of many scenes in fewer device-minutes (each render has its GPU to itself; the host's cores
+    # are shared, its pilots' clock too).
     # The archive is written again after each scene: what a run past the device's time limit leaves under $OUT
     # still comes back (the tool brings back few files, so one archive).
-    rm -rf /tmp/auto && mkdir -p /tmp/auto
+    rm -rf /tmp/auto /tmp/auto-lanes /tmp/auto-lanes.tar.gz && mkdir -p /tmp/auto
     for run in ${HEADLESS_RUNS-cold warm}; do
         "$bin/ray-tracing-gpu" --headless --quiet --strategy auto --scene cornell-box-lights --width 600 --spp 1024 \
             --stats "/tmp/auto/headless-$run.json" | tee "/tmp/auto/headless-$run.txt"
     done
-    for scene in ${SCENES:-rect-light-closeup sphere-light-closeup triangle-lights cornell-box-lights}; do
-        IMAGES=/tmp/auto-images bash tests/Bench/auto_strategy.sh "$bin" /tmp/auto gpu "${WIDTH:-600}" "${MS:-500}" \
-            "${SEEDS:-2}" "${REF_SPP:-8192}" "$scene"
-        (cd /tmp/auto && tar -czf "$out/auto.tar.gz" ./*)
+    IFS='|' read -r -a lanes <<<"${SCENES:-rect-light-closeup sphere-light-closeup triangle-lights cornell-box-lights}"
+    for k in "${!lanes[@]}"; do
+        laneBin=$bin
+        if [ "${#lanes[@]}" -gt 1 ]; then
+            laneBin=/tmp/auto-lanes/$k && mkdir -p "$laneBin"
+            printf '#!/bin/sh\nexec %q --device %d "$@"\n' "$(realpath "$bin/ray-tracing-gpu")" "$k" \
+                >"$laneBin/ray-tracing-gpu"
+            chmod +x "$laneBin/ray-tracing-gpu"
+        fi
+        (
+            # The device the lane's renders use, as the app reports it (the stats name only its model).
+            "$laneBin/ray-tracing-gpu" --list-devices >"/tmp/auto/lane-$k-devices.txt" 2>&1
+            for scene in ${lanes[$k]}; do
+                IMAGES=/tmp/auto-images-$k bash tests/Bench/auto_strategy.sh "$laneBin" /tmp/auto gpu "${WIDTH:-600}" \
+                    "${MS:-500}" "${SEEDS:-2}" "${REF_SPP:-8192}" "$scene"
+                # tar exits 1 on a file the other lane is writing (the archive is still whole), 2 on a fatal error.
+                (
+                    flock 9
+                    cd /tmp/auto && tar -czf /tmp/auto-lanes.tar.gz ./*
+                    [ $? -le 1 ] && cp /tmp/auto-lanes.tar.gz "$out/auto.tar.gz.part" &&
+                        mv "$out/auto.tar.gz.part" "$out/auto.tar.gz"
+                ) 9>/tmp/auto-lanes.lock
+            done
+        ) &
     done
+    wait
     python3 tests/Bench/auto_strategy_table.py /tmp/auto | tee "$out/auto.md"
     ;;
 restir)

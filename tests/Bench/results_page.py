@@ -1088,6 +1088,17 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "own; the pilots 0.85-0.87x their budget (notebook §60)",
                   "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=cornell-box-lights \\\n"
                   "    bash tests/Bench/device_run.sh auto", "## 60.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1130q", "2 NVIDIA H200 of one host, driver 580 (two lanes, one GPU each)",
+                  "seven light scenes with one build (138053a: the final round's repeats), two at a time: "
+                  "0.92-0.97x the best on five, cornell-box-lights 0.86x [0.81, 0.92] and many-lights 0.92x, "
+                  "whose pilots, run side by side, took 1.0-1.4x their budget and timed the own at up to 2.4x "
+                  "one GPU's time per path: those two to be run again one lane at a time; the single lights' own "
+                  "kept 4 of 4 (notebook §63)",
+                  "LEAN=1 bash tests/Bench/device_carry.sh  # then on the device (nvidia-h200-x2), three runs:\n"
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 \\\n"
+                  "    SCENES='triangle-lights|rect-light-closeup sphere-light-closeup' bash tests/Bench/device_run.sh auto\n"
+                  "# and SCENES='rtrol-cornell-box|veach-mis', SCENES='cornell-box-lights|many-lights'",
+                  "## 63.", "2026-11-30"),
                  ("h200-auto-strategy-5s-1130", "NVIDIA H200, driver 580",
                   "the same build, each strategy for 5 s and a reference of 32,768 spp (what the device's budget "
                   "left): veach-mis 0.96x the best, its own kept 4 of 4 (notebook §48)",
