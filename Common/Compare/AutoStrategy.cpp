@@ -781,6 +781,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         double finalLeastMs = 0.0; // the least of its final round's measurements' time
         double timingLeastMs[2] = {0.0, 0.0}; // the least of its timing frames' times, at the timing spp and twice it
         double leastMs = 0.0; // of all its measurements
+        int repeatFrames = 0; // its timing frames of the final round's repeats (measureOnce)
     };
     const double halfPaths = pixelsOf(pilot) * double(pilot.spp);
     std::vector<Candidate> runs;
@@ -861,11 +862,12 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // in 2 of 4, 0.80-0.84x in the others, the comparison 0.83x, and those two kept the own: notebook §63). The
     // repeats' test of the budget counts these frames with the rest of a repeat.
     auto measureOnce = [&](Candidate& c, bool finalRound, std::uint32_t slot) {
-        if (finalRound && choice.timingSpp > 0 &&
-            (c.row.timingFrames < 3 || c.finals.size() >= std::size_t(kFinalMeasurements)))
+        const bool repeat = c.finals.size() >= std::size_t(kFinalMeasurements);
+        if (finalRound && choice.timingSpp > 0 && (c.row.timingFrames < 3 || repeat))
         {
             if (!timingFrame(c, slot))
                 return false;
+            c.repeatFrames += repeat ? 1 : 0;
             if (c.row.timingFrames == 3 && timingStalled(c) && !timingFrame(c, slot))
                 return false;
         }
@@ -1255,8 +1257,8 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // `first` first: where the host's clock cut the final round, its frames were cut with it (after the own's third
     // measurement, before the challenger's, a stalled frame at twice the spp was the challenger's slope: 0.25x the
     // own's where 1.39x). False where cancelled.
-    // A repeat the guard cut between the finalists left the first of them a timing frame more: the other takes it, so
-    // that both least times stand on as many frames at each level.
+    // A repeat the guard cut between the finalists (or within the own's measurement, after its timing frame) left the
+    // own a timing frame more: the other takes it, so that both least times stand on as many frames at each level.
     auto completeTimingFrames = [&](Candidate& first) {
         for (int frame = 0; frame < 4 && choice.timingSpp > 0; ++frame)
             for (Candidate* c : {&first, &ownRun})
@@ -1265,8 +1267,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         for (Candidate* c : {&first, &ownRun})
         {
             const Candidate& other = c == &ownRun ? first : ownRun;
-            while (choice.timingSpp > 0 && c->finals.size() < other.finals.size() &&
-                   c->finals.size() >= std::size_t(kFinalMeasurements) && c->row.timingFrames < other.row.timingFrames)
+            for (; c->repeatFrames < other.repeatFrames; ++c->repeatFrames)
                 if (!timingFrame(*c, slot))
                     return false;
         }

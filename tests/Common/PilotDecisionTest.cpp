@@ -1257,6 +1257,62 @@ TEST(PilotDecision, TheFinalRoundsRepeatsTakeTimingFramesToo)
     EXPECT_EQ(taken, 4);
 }
 
+TEST(PilotDecision, ARepeatTheGuardCutBetweenTheFinalistsLeavesThemAsManyTimingFrames)
+{
+    // TheFinalRoundsRepeatsTakeTimingFramesToo's engine without the delay, its probe slow (the final round repeats),
+    // a 10 s render (a 0.5 s budget, the guard 1 s of the host's clock), and the host's clock past the guard as the
+    // own's fourth final measurement's second half begins: the search stops there, the own's timing frame of that
+    // repeat taken, its measurement not counted, the challenger's not begun. Before the decision the challenger takes
+    // the frame the own took: both least times stand on four frames, the slope the one of the pilot the guard did not
+    // cut. (Without it the own's fourth frame, at twice the spp, is its level's second, the challenger's level one.)
+    const Scene scene = makeScene("cornell-box-lights");
+    NoiseEngine engine([](const RenderSettings&) { return 1.0; }, std::uint64_t(1) << 14, 4e-7);
+    engine.setPathCost(forTheBetterOne(1.0 / 1.12));
+    engine.setScene(scene);
+    RenderRequest request = pilotRequest(scene);
+    const Strategy own = Strategy::of(request.settings);
+    for (std::uint32_t seed = 560; seed < 562; ++seed)
+    {
+        request.settings.seed = seed;
+        std::size_t begun = engine.frames().size();
+        engine.setOnFrame({});
+        engine.setFrameScale([&](std::size_t frame, const RenderSettings&) {
+            return frame < begun + kProbeFrames ? 2.0 : 1.0;
+        });
+        const AutoChoice plain = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 10.0});
+        ASSERT_FALSE(plain.budgetSpent);
+        ASSERT_GT(plain.timingSpp, 0);
+        ASSERT_GE(rowOf(plain, own)->finalMeasurements, 5) << "the final round repeated";
+        // The own's fourth timing frame (a frame's seed is its slot's + 3, a half's its slot's), then its halves.
+        std::size_t fourth = 0;
+        for (std::size_t f = begun, found = 0; f < engine.frames().size() && found < 4; ++f)
+        {
+            const RenderSettings& s = engine.frames()[f].settings;
+            if (Strategy::of(s) == own && s.width == plain.timingWidth && (s.seed - seed) % 7919u == 3u && ++found == 4)
+                fourth = f - begun;
+        }
+        ASSERT_GT(fourth, 0u);
+        begun = engine.frames().size();
+        const std::size_t guardFrame = begun + fourth + 2;
+        engine.setOnFrame([&](std::size_t frame) {
+            if (frame == guardFrame)
+                std::this_thread::sleep_for(std::chrono::milliseconds(1050));
+        });
+        const AutoChoice cut = chooseStrategy(engine, request, twelveCandidates(), {.renderSeconds = 10.0});
+        engine.setOnFrame({});
+        ASSERT_TRUE(cut.budgetSpent) << "the guard stopped the search";
+        const auto ownRow = rowOf(cut, own);
+        const auto better = rowOf(cut, theBetterOne());
+        ASSERT_NE(better, cut.rows.end());
+        EXPECT_EQ(ownRow->finalMeasurements, 3) << "the own's fourth cut after its timing frame";
+        EXPECT_EQ(better->finalMeasurements, 3);
+        EXPECT_EQ(ownRow->timingFrames, 4);
+        EXPECT_EQ(better->timingFrames, 4) << "the frame the own took, taken before the decision";
+        EXPECT_NEAR(ownRow->timingMsPerPath / better->timingMsPerPath, 1.12, 0.02);
+        EXPECT_EQ(cut.chosen, theBetterOne());
+    }
+}
+
 TEST(PilotDecision, AnEngineBusyOnFewerPixelsIsPilotedAtMoreSpp)
 {
     // A GPU-like engine (2^18 paths at once, 25 ns a path: a 40 s render's pilot of about 28 ms a half beside its
