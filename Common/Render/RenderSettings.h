@@ -44,6 +44,7 @@ struct RenderSettings
     LightSelection lightSelection = LightSelection::Bvh; // how NEE picks the light it samples
     int restirCandidates = 32; // restir-di: candidates per pixel and iteration (Bitterli et al. 2020's M)
     int restirSpatial = 5; // restir-di: neighbours of spatial reuse per pixel and iteration
+    int restirRadius = 30; // restir-di: the disk spatial reuse draws them in, in pixels (Bitterli et al. 2020, §6)
     bool restirBiased = false; // restir-di: the biased combination (Alg. 4) instead of the unbiased one
     int restirTemporalCap = 20; // restir-di: temporal reuse's M cap, in multiples of restirCandidates (0: no reuse)
     // How paths end by Russian roulette from their third segment (Shared/RussianRoulette.h): Cycles' rule, 1.13x

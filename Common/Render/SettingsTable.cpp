@@ -252,11 +252,23 @@ std::vector<Setting> makeTable()
             .name = "restir-spatial",
             .jsonKey = "restir_spatial",
             .label = "ReSTIR neighbours",
-            .help = "restir-di: neighbours' reservoirs combined per pixel and iteration (spatial reuse within 30 px), "
-                    "0 to 64",
+            .help = "restir-di: neighbours' reservoirs combined per pixel and iteration (spatial reuse within "
+                    "--restir-radius), 0 to 64",
             .tooltip = "restir-di: neighbours' reservoirs reused per pixel and iteration",
             .minimum = 0,
             .maximum = 64,
+            .usedBy = &usesRestir,
+        }),
+        field<&RenderSettings::restirRadius, &shader::RenderUniforms::restirRadius>({
+            .name = "restir-radius",
+            .jsonKey = "restir_radius",
+            .label = "ReSTIR radius",
+            .help = "restir-di: spatial reuse draws its neighbours uniformly in a disk of this many pixels about the "
+                    "pixel (Bitterli et al. 2020: 30 at 1920 x 1080, 1.6 % of the width; at 128 px lamp-room's image "
+                    "had 0.78x the relMSE at 4 px: docs/notebook/PERFORMANCE.md §64), 1 to 1024",
+            .tooltip = "restir-di: the radius in pixels spatial reuse draws its neighbours in",
+            .minimum = 1,
+            .maximum = 1024,
             .usedBy = &usesRestir,
         }),
         field<&RenderSettings::restirBiased, &shader::RenderUniforms::restirBiased>({

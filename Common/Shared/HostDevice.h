@@ -264,7 +264,7 @@ struct RenderUniforms
     /// 0: every camera sample on `seed`. n > 0: seed blocks of n samples (RenderEngine::setSeedBlock): sample s is
     /// sample s mod n of seed + s / n, summed into an accumulation image of its own (Shading/Camera.h).
     uint seedBlock;
-    uint pad2;
+    uint restirRadius; // restir-di: spatial reuse's neighbours drawn within this many pixels
 };
 
 /// What a traced path ray brings back to the path vertex (Shared/Shading/PathVertex.h): the GPU's payload at

@@ -17,8 +17,6 @@
 
 RT_SHADER_NAMESPACE_BEGIN
 
-/// Spatial neighbours are drawn in a disk of this radius in pixels (Bitterli et al. 2020, §6).
-RT_CONST(float, kRestirSpatialRadius, 30.0f)
 /// Neighbours whose shading normals differ by more than 25 degrees are not reused: cos 25 degrees.
 RT_CONST(float, kRestirMinNormalCos, 0.906307787f)
 

@@ -4,7 +4,7 @@
 //     (stored as the pixel's RestirSurface), M candidates resampled into a reservoir, its point's visibility
 //     (visibility reuse, §4.1: W = 0 if occluded), then the combination with the pixel's final reservoir of the
 //     last iteration (its M capped at --restir-temporal-cap times M, by default 20, §4.2).
-//  2. Spatial reuse and shading: the combination with k neighbours' reservoirs of pass 1 (within 30 px, with
+//  2. Spatial reuse and shading: the combination with k neighbours' reservoirs of pass 1 (within --restir-radius, with
 //     normals within 25 degrees and camera-path lengths within 10 %, §4.2), then the camera path again (the
 //     same random numbers find the same vertex) with f(y) W as its direct light there, nee-mis beyond.
 // Combinations are unbiased: GRIS with pairwise MIS over targets that include visibility (Shared/Restir.h,

@@ -158,8 +158,9 @@ TEST(Format, RenderSettings)
     s.restirBiased = true;
     EXPECT_EQ(fmt::format("{}", s),
               "spp 10, depth 8, width 400, aspect 1.7777778, estimator restir-di, light-sampler projected, "
-              "light-selection bvh, restir-candidates 32, restir-spatial 5, restir-biased on, restir-temporal-cap 20, "
-              "sampling stratified, russian-roulette sqrt, unidirectional-light off, seed 7 (400x225)");
+              "light-selection bvh, restir-candidates 32, restir-spatial 5, restir-radius 30, restir-biased on, "
+              "restir-temporal-cap 20, sampling stratified, russian-roulette sqrt, unidirectional-light off, seed 7 "
+              "(400x225)");
 }
 } // namespace
 } // namespace rt

@@ -8,6 +8,9 @@
 #include <gtest/gtest.h>
 
 #include "Engine/CpuEngine.h"
+#include "Engine/CpuScene.h"
+#include "Integrator/CpuShading.h"
+#include "Render/RenderUniforms.h"
 #include "Scenes/Catalogue.h"
 #include "Support/RenderWithSettings.h"
 #include "Support/RestirChecks.h"
@@ -94,6 +97,70 @@ TEST(CpuRestirHistory, TheTemporalCapChangesTheImageNotItsExpectation)
         longHistory.restirTemporalCap = 20;
         EXPECT_FALSE(bitIdentical(renderCpu(scene, one).image, renderCpu(scene, longHistory).image)) << "cap " << cap;
     }
+}
+
+// --restir-radius: the neighbours are drawn uniformly in the disk of that many pixels (restirNeighbour): every
+// offset within the radius (after rounding to a pixel), their mean squared distance r^2 / 2 (a uniform disk's),
+// within 4 standard errors and 0.5 px^2 (rounding to a pixel adds about 1/6 and leaving out the pixel itself about
+// 1 / (2 pi), 0.33 in all; uniform in the radius instead of the area would give r^2 / 3); a draw off the image is
+// refused.
+TEST(CpuRestirRadius, NeighboursAreDrawnUniformlyInTheDiskOfTheRadius)
+{
+    const Scene scene = makeScene("cornell-box-lights");
+    const cpu::CpuScene cs(scene);
+    for (const int radius : {4, 30})
+    {
+        RenderSettings settings = restirSettings(scene);
+        settings.restirRadius = radius;
+        const shader::RenderUniforms uniforms = makeUniforms(scene, scene.camera, settings, 256, 256);
+        ASSERT_EQ(uniforms.restirRadius, std::uint32_t(radius));
+        shader::CpuShading<cpu::PathCode{}> shading(cs, uniforms);
+        shader::Rng rng = shader::rngForSample(7u, 0u, 0u);
+        const uvec2 centre(128u, 128u);
+        double sum = 0.0, sum2 = 0.0;
+        int kept = 0;
+        constexpr int kDraws = 100000;
+        for (int k = 0; k < kDraws; ++k)
+        {
+            uvec2 n;
+            if (!shading.restirNeighbour(centre, shader::nextFloat2(rng), 256u, 256u, n))
+                continue;
+            const double dx = double(n.x) - 128.0, dy = double(n.y) - 128.0;
+            const double d2 = dx * dx + dy * dy;
+            ASSERT_LE(std::sqrt(d2), radius + std::sqrt(0.5)) << "radius " << radius;
+            sum += d2;
+            sum2 += d2 * d2;
+            ++kept;
+        }
+        ASSERT_GT(kept, kDraws * 9 / 10);
+        const double mean = sum / kept;
+        const double standardError = std::sqrt((sum2 / kept - mean * mean) / kept);
+        EXPECT_NEAR(mean, radius * radius / 2.0, 4.0 * standardError + 0.5)
+            << "radius " << radius;
+        uvec2 n;
+        EXPECT_FALSE(shading.restirNeighbour(uvec2(0u, 0u), vec2(0.99f, 0.5f), 256u, 256u, n))
+            << "a draw at -x, off the image";
+    }
+}
+
+// The radius changes which neighbours a pixel reuses, not what it estimates: 4 px passes the unbiasedness test and
+// renders another image than the default 30.
+TEST(CpuRestirRadius, TheRadiusChangesTheImageNotItsExpectation)
+{
+    const Scene scene = makeScene("cornell-box-lights");
+    cpu::CpuEngine engine(EngineKind::Multi);
+    engine.setScene(scene);
+    const OverSeeds ref = neeMisReference(engine, scene);
+    RenderSettings s = restirSettings(scene);
+    s.restirRadius = 4;
+    const OverSeeds restir = renderSeeds(engine, s, 32, 100);
+    const double z = zScore(restir.imageMean, restir.imageVariance, ref.imageMean, ref.imageVariance);
+    EXPECT_LT(std::abs(z), 4.0) << "restir-di at 4 px " << restir.imageMean << ", nee-mis " << ref.imageMean;
+    RenderSettings one = s;
+    one.spp = 4;
+    RenderSettings wide = one;
+    wide.restirRadius = 30;
+    EXPECT_FALSE(bitIdentical(renderCpu(scene, one).image, renderCpu(scene, wide).image));
 }
 
 TEST(CpuRestirDeterminism, SingleAndMultiCoreRenderTheSameImageAndTheSeedDecides)

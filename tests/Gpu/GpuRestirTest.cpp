@@ -49,20 +49,25 @@ RenderSettings agreementSettings(const Scene& scene)
 
 // The engines draw every number of a (seed, pixel, sample) from the same streams: the camera path, the 32
 // candidates, the neighbours, the reservoirs' choices. So the GPU's image is the CPU's up to float rounding (a
-// GPU's sin, cos and fused multiply-adds), in the unbiased and the biased combination and without history: were
-// a pass, a combination or the history wrong on one engine, whole regions would differ.
+// GPU's sin, cos and fused multiply-adds), in the unbiased and the biased combination, without history and with
+// another --restir-radius: were a pass, a combination or the history wrong on one engine, whole regions would
+// differ.
 TEST(GpuRestir, TheImageIsTheCpuEnginesPixelForPixel)
 {
     RT_REQUIRE_GPU();
     const Scene scene = makeScene("cornell-box-lights");
     const auto cpuEngine = engines::make(EngineKind::Multi);
     cpuEngine->setScene(scene);
-    for (int variant = 0; variant < 3; ++variant)
+    for (int variant = 0; variant < 4; ++variant)
     {
         RenderSettings s = agreementSettings(scene);
         s.restirBiased = variant == 1;
         s.restirTemporalCap = variant == 2 ? 0 : s.restirTemporalCap;
-        SCOPED_TRACE(variant == 0 ? "unbiased" : variant == 1 ? "biased" : "no temporal reuse");
+        s.restirRadius = variant == 3 ? 4 : s.restirRadius;
+        SCOPED_TRACE(variant == 0   ? "unbiased"
+                     : variant == 1 ? "biased"
+                     : variant == 2 ? "no temporal reuse"
+                                    : "a radius of 4 px");
         RenderControl control;
         const RenderResult cpu = renderWithSettings(*cpuEngine, s, control);
         const RenderResult gpu = renderOnGpu(scene, s);

@@ -237,11 +237,11 @@ RT_FN bool restirSimilar(RT_IN(RestirSurface) a, RT_IN(RestirVertex) va, RT_IN(R
     return va.valid && vb.valid && abs(b.depth - a.depth) <= 0.1f * a.depth && dot(va.ns, vb.ns) >= kRestirMinNormalCos;
 }
 
-/// The pixel a spatial neighbour is drawn at, uniformly in the disk of radius kRestirSpatialRadius about `pixel`,
+/// The pixel a spatial neighbour is drawn at, uniformly in the disk of radius uniforms.restirRadius about `pixel`,
 /// from u in [0, 1)^2; false when it falls outside the width x height image or on the pixel itself.
 RT_FN bool restirNeighbour(uvec2 pixel, vec2 u, uint width, uint height, RT_OUT(uvec2) neighbour)
 {
-    const float radius = kRestirSpatialRadius * sqrt(u.x);
+    const float radius = float(uniforms.restirRadius) * sqrt(u.x);
     const float angle = 2.0f * kPi * u.y;
     const int x = int(pixel.x) + int(floor(radius * preciseCos(angle) + 0.5f));
     const int y = int(pixel.y) + int(floor(radius * preciseSin(angle) + 0.5f));
