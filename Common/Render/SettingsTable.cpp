@@ -200,7 +200,8 @@ std::vector<Setting> makeTable()
                     "diffuse vertex, BSDF rays ignore the lights; nee-mis: NEE and BSDF rays both count, weighted "
                     "by the power heuristic; restir-di: at each camera path's first diffuse or glossy vertex, "
                     "direct light by spatiotemporal reservoir resampling (Bitterli et al. 2020: --restir-candidates, "
-                    "--restir-spatial, --restir-biased), nee-mis beyond; iterations of one sample per pixel",
+                    "--restir-spatial, --restir-radius, --restir-temporal-cap, --restir-biased), nee-mis beyond; "
+                    "iterations of one sample per pixel",
             .tooltip = "bsdf: BSDF sampling only (books 1 and 2); mixture: book 3's mix of BSDF and light "
                        "directions, no shadow rays; nee: a shadow ray to one light per diffuse vertex; nee-mis: NEE "
                        "and BSDF rays weighted by the power heuristic; restir-di: reservoir resampling of direct light at "

@@ -1259,6 +1259,17 @@ RESTIR_RUNS = [
               "resampling serves), against a reference of that depth.",
      "command": "FLAGS=\"--depth 2\" bash tests/Bench/restir.sh build/bin docs/results/cpu-restir-depth2-1130 multi \\\n"
                 "    128 3000 4 8192 lamp-room"},
+    {"date": "2026-11-30", "notebook": "## 65.", "folder": "cpu-restir-depth2-r4-1130", "scenes": ["lamp-room"],
+     "machine": "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+     "setup": "The same at `--depth 2` with `--restir-radius 4` (7c6f6b5): spatial reuse within 4 px, 3 % of the "
+              "128 px image's width, where the default 30 px is a quarter of it.",
+     "command": "FLAGS=\"--depth 2 --restir-radius 4\" bash tests/Bench/restir.sh build/bin \\\n"
+                "    docs/results/cpu-restir-depth2-r4-1130 multi 128 3000 4 8192 lamp-room"},
+    {"date": "2026-11-30", "notebook": "## 65.", "folder": "cpu-restir-full-r4-1130", "scenes": ["lamp-room"],
+     "machine": "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+     "setup": "Full paths with `--restir-radius 4`: direct light at the first vertex is a sixth of their error.",
+     "command": "FLAGS=\"--restir-radius 4\" bash tests/Bench/restir.sh build/bin docs/results/cpu-restir-full-r4-1130 \\\n"
+                "    multi 128 3000 4 8192 lamp-room"},
 ]
 
 
