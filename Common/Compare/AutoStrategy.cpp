@@ -1086,9 +1086,13 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // clock must leave the repeat room within the guard too, which the host's own time per render (a GPU's 7-14 ms)
     // would otherwise pass.
     constexpr int kMostFinalMeasurements = 8 * kFinalMeasurements;
-    auto finalRepeatFits = [&](int repeat, double lastRepeatMs, double lastRepeatHostSeconds) {
+    // The engine's and the host's time of the last two repeats, by the repeat's parity.
+    double repeatMs[2] = {0.0, 0.0}, repeatHostSeconds[2] = {0.0, 0.0};
+    auto finalRepeatFits = [&](int repeat) {
         if (repeat < kFinalMeasurements)
             return true;
+        const double lastRepeatMs = std::max(repeatMs[0], repeatMs[1]);
+        const double lastRepeatHostSeconds = std::max(repeatHostSeconds[0], repeatHostSeconds[1]);
         const double searchSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - searchStart).count();
         if (active.size() != 2 || runs[active[1]].row.tooSlow || repeat >= kMostFinalMeasurements ||
@@ -1101,12 +1105,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     while (finished && !choice.budgetSpent)
     {
         const bool finalRound = active.size() <= 2;
-        // The costlier of the last two repeats: past the first three, a repeat's timing frames alternate the timing
-        // spp and twice it, and the one after a repeat at the timing spp is the costlier.
-        double lastRepeatMs = 0.0, lastRepeatHostSeconds = 0.0;
-        double repeatMs[2] = {0.0, 0.0}, repeatHostSeconds[2] = {0.0, 0.0};
-        for (int repeat = 0; finished && !choice.budgetSpent &&
-                             (finalRound ? finalRepeatFits(repeat, lastRepeatMs, lastRepeatHostSeconds) : repeat < 1);
+        for (int repeat = 0; finished && !choice.budgetSpent && (finalRound ? finalRepeatFits(repeat) : repeat < 1);
              ++repeat, ++slot)
         {
             const double repeatStartMs = choice.pilotMs;
@@ -1150,8 +1149,6 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             repeatMs[repeat % 2] = choice.pilotMs - repeatStartMs;
             repeatHostSeconds[repeat % 2] =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - repeatStart).count();
-            lastRepeatMs = std::max(repeatMs[0], repeatMs[1]);
-            lastRepeatHostSeconds = std::max(repeatHostSeconds[0], repeatHostSeconds[1]);
         }
         if (!finished || finalRound)
             break;
