@@ -721,19 +721,28 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
     // prepareSeconds.
     const auto prepareStart = std::chrono::steady_clock::now();
     choice.probeSeconds = std::chrono::duration<double>(prepareStart - start).count();
-    // Under PilotBudget::prepareFraction the preparation stops at its bound, checked before each candidate (one may
-    // pass it), and the candidates not prepared are left out; the own, prepared by the probe, always stays.
+    // Under PilotBudget::prepareFraction the preparation stops at its bound, checked before each group of the
+    // candidates the engine compiles at once (RenderEngine::concurrentCompiles: one group may pass it), and the
+    // candidates not prepared are left out; the own, prepared by the probe, always stays.
     const double prepareBound = budget.prepareFraction > 0.0
                                     ? std::min(budget.maxSeconds, budget.prepareFraction * choice.estimatedRenderSeconds)
                                     : std::numeric_limits<double>::infinity();
     choice.prepareBoundSeconds = prepareBound;
+    const std::size_t group = std::max<std::size_t>(engine.concurrentCompiles(), 1);
     std::size_t prepared = 0;
-    for (; prepared < grid.size(); ++prepared)
+    while (prepared < grid.size())
     {
         if (prepared > 0 &&
             std::chrono::duration<double>(std::chrono::steady_clock::now() - prepareStart).count() > prepareBound)
             break;
-        engine.beginFrame(grid[prepared].applyTo(pilot));
+        const std::size_t end = std::min(grid.size(), prepared + group);
+        std::vector<RenderSettings> frames;
+        for (std::size_t i = prepared; i < end; ++i)
+            frames.push_back(grid[i].applyTo(pilot));
+        engine.compileAhead(frames);
+        for (const RenderSettings& frame : frames)
+            engine.beginFrame(frame);
+        prepared = end;
     }
     choice.unprepared = static_cast<int>(grid.size() - prepared);
     // The plan above stays: a pilot of fewer candidates measures each at the planned size and leaves the rest of

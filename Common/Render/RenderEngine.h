@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -118,6 +119,14 @@ public:
         return concurrentPaths();
     }
 
+    /// How many frames' preparation compileAhead does at once (1: the engine compiles nothing ahead).
+    virtual std::size_t concurrentCompiles() const { return 1; }
+    /// Compiles ahead what beginFrame of each of `frames` (validated by the caller) would compile on the current
+    /// scene, at once where the engine can, so that their beginFrame finds it done; changes no frame. The GPU
+    /// compiles a pipeline per strategy, each on a thread of its own: one after the other, --strategy auto's 13
+    /// candidates took 1.1-1.8 s of an H200 host's time (notebook §67). Nothing by default. Throws UsageError
+    /// before setScene, DeviceError as beginFrame.
+    virtual void compileAhead(std::span<const RenderSettings> frames) { (void)frames; }
     /// Starts a frame of `settings` (validated by the caller) on the current scene: an accumulator of the
     /// settings' size, cleared, and zero tallies. Throws UsageError before setScene, DeviceError naming the
     /// limit when the image does not fit the device.

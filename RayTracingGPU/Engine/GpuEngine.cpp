@@ -4,6 +4,8 @@
 #include <chrono>
 #include <functional>
 #include <map>
+#include <thread>
+#include <utility>
 #include <tuple>
 
 #include <spdlog/fmt/fmt.h>
@@ -456,6 +458,52 @@ double GpuEngine::setScene(const Scene& scene)
     return m_impl->tracer.setScene(scene);
 }
 
+struct GpuEngine::FrameSetup
+{
+    shader::RenderUniforms uniforms;
+    GpuIntegrator integrator;
+};
+
+GpuEngine::FrameSetup GpuEngine::frameOf(const RenderSettings& settings, std::uint32_t blocks) const
+{
+    const Impl& e = *m_impl;
+    const auto width = static_cast<std::uint32_t>(settings.width);
+    const auto height = static_cast<std::uint32_t>(settings.height());
+    shader::RenderUniforms u = e.tracer.uniforms(frameCamera(*e.tracer.scene()), settings, {width, height});
+    u.countRays = e.countRays ? 1u : 0u;
+    u.seedBlock = blocks > 1 ? seedBlock() : 0u; // one block: the plain frame, whatever is traced
+    // restir-di runs its own passes (RestirPipeline), whatever the integrator setting; the timed ray generation
+    // is a megakernel's.
+    const GpuIntegrator integrator =
+        settings.estimator == Estimator::RestirDi || e.recordCost
+            ? GpuIntegrator::Megakernel
+            : e.tracer.integratorFor(u, representedPaths(std::uint64_t(width) * height * settings.trueSpp() / blocks));
+    return {u, integrator};
+}
+
+std::size_t GpuEngine::concurrentCompiles() const
+{
+    if (m_impl->device().properties().type == vk::DeviceType::Cpu)
+        return 1; // the pilot's bound on the preparation then checks before each candidate's costly first launch
+    return std::max(std::thread::hardware_concurrency(), 1u);
+}
+
+void GpuEngine::compileAhead(std::span<const RenderSettings> frames)
+{
+    const Impl& e = *m_impl;
+    if (!e.tracer.scene())
+        throw UsageError("GpuEngine::compileAhead called before setScene");
+    if (e.recordCost) // the cost pipeline is compiled by its frame
+        return;
+    std::vector<std::pair<shader::RenderUniforms, GpuIntegrator>> renders;
+    for (const RenderSettings& settings : frames)
+    {
+        const FrameSetup frame = frameOf(settings, seedBlocksOf(settings, false));
+        renders.emplace_back(frame.uniforms, frame.integrator);
+    }
+    e.tracer.compileTogether(renders);
+}
+
 void GpuEngine::beginFrame(const RenderSettings& settings)
 {
     Impl& e = *m_impl;
@@ -475,9 +523,8 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
             throw UsageError(why);
     e.prepareTarget(width, height, blocks, restirDi);
     e.restirHistory = false;
-    e.uniforms = e.tracer.uniforms(frameCamera(*e.tracer.scene()), settings, {width, height});
-    e.uniforms.countRays = e.countRays ? 1u : 0u;
-    e.uniforms.seedBlock = blocks > 1 ? seedBlock() : 0u; // one block: the plain frame, whatever is traced
+    const FrameSetup frame = frameOf(settings, blocks);
+    e.uniforms = frame.uniforms;
     e.frameBlocks = blocks;
     e.frameStages.clear();
     const auto compileStart = std::chrono::steady_clock::now();
@@ -489,12 +536,7 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
         e.cost = std::make_unique<CostTarget>(e.device(), e.tracer.shaderDir(), e.tracer.pipeline().specializes(),
                                               width, height);
     }
-    // restir-di runs its own passes (RestirPipeline), whatever the integrator setting; the timed ray generation
-    // is a megakernel's.
-    e.integrator = restirDi || e.cost
-                       ? GpuIntegrator::Megakernel
-                       : e.tracer.integratorFor(e.uniforms, representedPaths(std::uint64_t(width) * height *
-                                                                             settings.trueSpp() / blocks));
+    e.integrator = frame.integrator;
     // Out of the render's time.
     const bool compiled = e.cost ? e.cost->pipeline().prepare(e.uniforms, e.tracer.gpuScene().pipelineScene())
                                  : e.tracer.prepare(e.uniforms, e.integrator);

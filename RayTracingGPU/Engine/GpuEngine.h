@@ -77,6 +77,13 @@ public:
     std::uint64_t concurrentPaths() const override;
     /// concurrentPaths() / spp where `settings` run on the wavefront, else concurrentPaths().
     std::uint64_t busyPixels(const RenderSettings& settings) const override;
+    /// The host's hardware threads, each pipeline compiling on a thread of its own; 1 on a CPU device (lavapipe),
+    /// which finishes a pipeline's compilation at its first launch, one after the other in beginFrame.
+    std::size_t concurrentCompiles() const override;
+    /// The pipelines of `frames` (SceneTracer::compileTogether); nothing while recording costs (their frames run
+    /// the cost pipeline). Throws rt::UsageError when no scene is set, rt::DeviceError when the driver rejects
+    /// one.
+    void compileAhead(std::span<const RenderSettings> frames) override;
     /// Throws rt::UsageError when no scene is set, rt::DeviceError naming the limit when the image does not fit
     /// the device (dimension, memory, invocations per dispatch).
     void beginFrame(const RenderSettings& settings) override;
@@ -89,7 +96,8 @@ public:
     /// Where the time went, in seconds: of setScene, upload_host (buffers and images, host clock) and, where
     /// they were built, blas_build_gpu and tlas_build_gpu (device clock); of the frame, pipeline_host (the
     /// compilation of a pipeline not cached yet, with a one-row launch of it where a driver finishes compiling
-    /// at the first launch (lavapipe), host clock; absent when the frame's pipeline was compiled before), clear_gpu, trace_gpu (= RenderStats::gpuSeconds), readback_gpu (every copy of the
+    /// at the first launch (lavapipe), host clock; absent when the pipeline was prepared before, by a frame or the
+    /// window; after compileAhead, that launch alone), clear_gpu, trace_gpu (= RenderStats::gpuSeconds), readback_gpu (every copy of the
     /// sum to the host: previews and the result) and resolve_host (sum / samples into the image). Device
     /// times are left out on a queue without timestamps.
     std::map<std::string, double> stageSeconds() const override;
@@ -139,6 +147,11 @@ public:
 
 private:
     struct Impl;
+    /// The uniforms and the integrator of a frame of `settings` in `blocks` seed blocks: what beginFrame runs
+    /// and compileAhead compiles.
+    struct FrameSetup;
+    FrameSetup frameOf(const RenderSettings& settings, std::uint32_t blocks) const;
+
     std::unique_ptr<Impl> m_impl;
 };
 } // namespace rt::gpu

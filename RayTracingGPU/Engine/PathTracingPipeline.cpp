@@ -1,9 +1,11 @@
 #include "Engine/PathTracingPipeline.h"
 
 #include <algorithm>
+#include <utility>
 
 #include <spdlog/spdlog.h>
 
+#include "Engine/CompileTogether.h"
 #include "Engine/GpuScene.h"
 #include "Engine/RestirBuffers.h"
 #include "Engine/WaveBuffers.h"
@@ -90,18 +92,26 @@ PipelineSpecialization PathTracingPipeline::specializationFor(const RenderUnifor
     return PipelineSpecialization::of(m_specialize, uniforms, scene.features, scene.hugeSpheres);
 }
 
+std::unique_ptr<PathTracingPipeline::Compiled> PathTracingPipeline::make(const PipelineSpecialization& key) const
+{
+    auto c = std::make_unique<Compiled>();
+    c->hitGroups = key.hitGroups();
+    c->pipeline = createPathTracingPipeline(*m_device, m_layout, m_shaders, key.constants, c->hitGroups);
+    spdlog::debug("compiled the path-tracing pipeline {}", key.describe());
+    return c;
+}
+
 const PathTracingPipeline::Compiled& PathTracingPipeline::compiled(const PipelineSpecialization& key) const
 {
     auto it = m_compiled.find(key);
     if (it == m_compiled.end())
-    {
-        auto c = std::make_unique<Compiled>();
-        c->hitGroups = key.hitGroups();
-        c->pipeline = createPathTracingPipeline(*m_device, m_layout, m_shaders, key.constants, c->hitGroups);
-        spdlog::debug("compiled the path-tracing pipeline {}", key.describe());
-        it = m_compiled.emplace(key, std::move(c)).first;
-    }
+        it = m_compiled.emplace(key, make(key)).first;
     return *it->second;
+}
+
+void PathTracingPipeline::compileTogether(std::span<const PipelineSpecialization> keys) const
+{
+    gpu::compileTogether(m_compiled, keys, [this](const PipelineSpecialization& key) { return make(key); });
 }
 
 const ShaderBindingTable& PathTracingPipeline::sbtFor(const Compiled& c, const HitGroupLayout& scene) const
@@ -120,9 +130,9 @@ const ShaderBindingTable& PathTracingPipeline::sbtFor(const Compiled& c, const H
 
 bool PathTracingPipeline::prepare(const RenderUniforms& uniforms, const PipelineScene& scene) const
 {
-    const std::size_t before = m_compiled.size();
-    sbtFor(compiled(specializationFor(uniforms, scene)), scene.hitGroups);
-    return m_compiled.size() > before;
+    const Compiled& c = compiled(specializationFor(uniforms, scene));
+    sbtFor(c, scene.hitGroups);
+    return !std::exchange(c.prepared, true);
 }
 
 void PathTracingPipeline::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,

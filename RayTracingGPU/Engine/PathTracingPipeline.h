@@ -84,9 +84,14 @@ public:
     /// The specialisation a render with `uniforms` of `scene` runs (PipelineSpecialization::of).
     PipelineSpecialization specializationFor(const shader::RenderUniforms& uniforms, const PipelineScene& scene) const;
     /// Compiles the pipeline a render with `uniforms` of `scene` needs, unless it already exists; recordLaunch
-    /// calls it too, so call it first only to keep the compilation out of a timed span. Returns whether it
-    /// compiled one. Not thread-safe. Throws rt::DeviceError when the driver rejects the pipeline.
+    /// calls it too, so call it first only to keep the compilation out of a timed span. Returns true at its first
+    /// call for that pipeline (compiled now or by compileTogether): a driver may finish compiling at the first
+    /// launch, which the caller then makes. Not thread-safe. Throws rt::DeviceError when the driver rejects the
+    /// pipeline.
     bool prepare(const shader::RenderUniforms& uniforms, const PipelineScene& scene) const;
+    /// Compiles the pipelines of `keys` not compiled yet, each on a thread of its own (CompileTogether.h).
+    /// Throws rt::DeviceError when the driver rejects one (the others are kept).
+    void compileTogether(std::span<const PipelineSpecialization> keys) const;
     /// Pipelines compiled so far.
     std::size_t compiledCount() const { return m_compiled.size(); }
     /// Size of the variable-count sampler array (the most images a scene may have).
@@ -114,7 +119,9 @@ private:
         vk::Pipeline pipeline;
         HitGroupLayout hitGroups; // the pipeline's own
         mutable std::map<HitGroupLayout, ShaderBindingTable> sbts; // per scene layout: a cache, like m_compiled
+        mutable bool prepared = false; // prepare() has returned true for it
     };
+    std::unique_ptr<Compiled> make(const PipelineSpecialization& key) const;
     const Compiled& compiled(const PipelineSpecialization& key) const;
     const ShaderBindingTable& sbtFor(const Compiled& compiled, const HitGroupLayout& scene) const;
 

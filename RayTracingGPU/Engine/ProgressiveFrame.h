@@ -89,7 +89,8 @@ public:
 
     /// Compiles the pipeline the samples of `request` run on when it was not compiled before (SceneTracer::prepare),
     /// so that a caller can time the compilation apart from the samples; recordSamples compiles it at its first
-    /// use otherwise. True when it compiled one; false for a request with the cost (the heatmap's own pipeline).
+    /// use otherwise. True at the first call for that pipeline (SceneTracer::prepare); false for a request with the
+    /// cost (the heatmap's own pipeline).
     bool preparePipeline(const FrameRequest& request) const;
 
     /// Traces one sample of `request` at one pixel and waits, the device idle before: a driver that finishes a

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 
 #include <spdlog/spdlog.h>
 
@@ -31,6 +32,7 @@ struct RestirPipeline::Compiled
     HitGroupLayout hitGroups; // the pipeline's own
     using Tables = std::array<ShaderBindingTable, std::size(kRestirPasses)>; // per pass
     mutable std::map<HitGroupLayout, Tables> tables; // per scene layout
+    mutable bool prepared = false; // prepare() has returned true for it
 
     const Tables& tablesFor(const vk::Device& device, const HitGroupLayout& scene) const
     {
@@ -79,9 +81,9 @@ const RestirPipeline::Compiled& RestirPipeline::compiled(const PipelineSpecializ
 
 bool RestirPipeline::prepare(const RenderUniforms& uniforms, const PipelineScene& scene) const
 {
-    const std::size_t before = m_compiled.size();
-    compiled(m_layout->specializationFor(uniforms, scene)).tablesFor(*m_device, scene.hitGroups);
-    return m_compiled.size() > before;
+    const Compiled& c = compiled(m_layout->specializationFor(uniforms, scene));
+    c.tablesFor(*m_device, scene.hitGroups);
+    return !std::exchange(c.prepared, true);
 }
 
 void RestirPipeline::recordPass(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,

@@ -41,8 +41,8 @@ public:
     RestirPipeline& operator=(const RestirPipeline&) = delete;
     ~RestirPipeline();
 
-    /// Compiles the pipeline a render with `uniforms` of `scene` needs, unless it exists; true when it compiled
-    /// one. Throws rt::DeviceError when the driver rejects it.
+    /// Compiles the pipeline a render with `uniforms` of `scene` needs, unless it exists; true at its first call
+    /// for that pipeline (as PathTracingPipeline::prepare). Throws rt::DeviceError when the driver rejects it.
     bool prepare(const shader::RenderUniforms& uniforms, const PipelineScene& scene) const;
     /// Pipelines compiled so far.
     std::size_t compiledCount() const { return m_compiled.size(); }

@@ -6,6 +6,9 @@
 #include "Engine/WavefrontPipeline.h"
 #include "Error.h"
 
+#include <future>
+#include <vector>
+
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/spdlog.h>
 
@@ -136,6 +139,23 @@ bool SceneTracer::prepare(const shader::RenderUniforms& uniforms, GpuIntegrator 
     if (integrator == GpuIntegrator::Wavefront)
         return m_wavefront->prepare(uniforms, gpuScene().pipelineScene());
     return m_pipeline.prepare(uniforms, gpuScene().pipelineScene());
+}
+
+void SceneTracer::compileTogether(std::span<const std::pair<shader::RenderUniforms, GpuIntegrator>> renders) const
+{
+    const PipelineScene& scene = gpuScene().pipelineScene();
+    std::vector<PipelineSpecialization> megakernel, wavefront;
+    for (const auto& [uniforms, integrator] : renders)
+        if (uniforms.estimator != Estimator::RestirDi)
+            (integrator == GpuIntegrator::Wavefront ? wavefront : megakernel)
+                .push_back(m_pipeline.specializationFor(uniforms, scene));
+    // The wavefront's pipelines beside the megakernel's.
+    auto waves = std::async(std::launch::async, [&] {
+        if (!wavefront.empty())
+            m_wavefront->compileTogether(wavefront);
+    });
+    m_pipeline.compileTogether(megakernel);
+    waves.get();
 }
 
 void SceneTracer::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <memory>
 #include <span>
+#include <utility>
 
 #include "Engine/GpuIntegrator.h"
 #include "Engine/PathTracingPipeline.h"
@@ -93,9 +94,13 @@ public:
     const WavefrontPipeline* wavefront() const { return m_wavefront.get(); }
     const WaveBuffers& waves() const { return m_waves; }
     /// Compiles the pipeline a render with `uniforms` of the current scene needs on `integrator`
-    /// (integratorFor; PathTracingPipeline::prepare), or restir-di's (RestirPipeline) for that estimator; true
-    /// when it compiled one.
+    /// (integratorFor; PathTracingPipeline::prepare), or restir-di's (RestirPipeline) for that estimator; true at
+    /// the first call for that pipeline (compiled now or by compileTogether), when its first launch is still to come.
     bool prepare(const shader::RenderUniforms& uniforms, GpuIntegrator integrator) const;
+    /// The compilations of prepare for several renders (their uniforms and integrators), each pipeline on a thread
+    /// of its own (PathTracingPipeline::compileTogether); restir-di's are left to prepare. Each render's prepare
+    /// still returns true once. Throws rt::DeviceError as prepare, after the other pipelines are compiled.
+    void compileTogether(std::span<const std::pair<shader::RenderUniforms, GpuIntegrator>> renders) const;
     /// restir-di's passes (made at the first use). Throws rt::AssetError, rt::DeviceError as the constructor.
     const RestirPipeline& restir() const;
 

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <utility>
 
 #include <spdlog/spdlog.h>
 
+#include "Engine/CompileTogether.h"
 #include "Engine/WaveBuffers.h"
 #include "Engine/WaveStageTimer.h"
 #include "Shared/Estimator.h"
@@ -60,6 +62,7 @@ struct WavefrontPipeline::Compiled
     vk::Pipeline prepare;
     vk::Pipeline accumulate;
     mutable std::map<HitGroupLayout, Tables> tables; // per scene layout
+    mutable bool prepared = false; // prepare() has returned true for it
 };
 
 WavefrontPipeline::WavefrontPipeline(const vk::Device& device, const std::filesystem::path& shaderDir,
@@ -75,25 +78,33 @@ WavefrontPipeline::WavefrontPipeline(const vk::Device& device, const std::filesy
 
 WavefrontPipeline::~WavefrontPipeline() = default;
 
+std::unique_ptr<WavefrontPipeline::Compiled> WavefrontPipeline::make(const PipelineSpecialization& key) const
+{
+    const auto constants = wavefrontConstants(key);
+    const vk::Specialization specialization(constants);
+    const vk::PipelineLayout& layout = m_layout->layout();
+    auto c = std::make_unique<Compiled>();
+    c->hitGroups = key.hitGroups();
+    c->rayTracing = createPathTracingPipeline(*m_device, layout, m_rayTracingShaders, constants, c->hitGroups);
+    c->generate = vk::createComputePipeline(*m_device, layout, m_generate, specialization);
+    c->shade = vk::createComputePipeline(*m_device, layout, m_shade, specialization);
+    c->prepare = vk::createComputePipeline(*m_device, layout, m_prepare, specialization);
+    c->accumulate = vk::createComputePipeline(*m_device, layout, m_accumulate, specialization);
+    spdlog::debug("compiled the wavefront pipelines {}", key.describe());
+    return c;
+}
+
 const WavefrontPipeline::Compiled& WavefrontPipeline::compiled(const PipelineSpecialization& key) const
 {
     auto it = m_compiled.find(key);
     if (it == m_compiled.end())
-    {
-        const auto constants = wavefrontConstants(key);
-        const vk::Specialization specialization(constants);
-        const vk::PipelineLayout& layout = m_layout->layout();
-        auto c = std::make_unique<Compiled>();
-        c->hitGroups = key.hitGroups();
-        c->rayTracing = createPathTracingPipeline(*m_device, layout, m_rayTracingShaders, constants, c->hitGroups);
-        c->generate = vk::createComputePipeline(*m_device, layout, m_generate, specialization);
-        c->shade = vk::createComputePipeline(*m_device, layout, m_shade, specialization);
-        c->prepare = vk::createComputePipeline(*m_device, layout, m_prepare, specialization);
-        c->accumulate = vk::createComputePipeline(*m_device, layout, m_accumulate, specialization);
-        spdlog::debug("compiled the wavefront pipelines {}", key.describe());
-        it = m_compiled.emplace(key, std::move(c)).first;
-    }
+        it = m_compiled.emplace(key, make(key)).first;
     return *it->second;
+}
+
+void WavefrontPipeline::compileTogether(std::span<const PipelineSpecialization> keys) const
+{
+    gpu::compileTogether(m_compiled, keys, [this](const PipelineSpecialization& key) { return make(key); });
 }
 
 const WavefrontPipeline::Tables& WavefrontPipeline::tablesFor(const Compiled& c, const HitGroupLayout& scene) const
@@ -116,9 +127,9 @@ const WavefrontPipeline::Tables& WavefrontPipeline::tablesFor(const Compiled& c,
 
 bool WavefrontPipeline::prepare(const RenderUniforms& uniforms, const PipelineScene& scene) const
 {
-    const std::size_t before = m_compiled.size();
-    tablesFor(compiled(m_layout->specializationFor(uniforms, scene)), scene.hitGroups);
-    return m_compiled.size() > before;
+    const Compiled& c = compiled(m_layout->specializationFor(uniforms, scene));
+    tablesFor(c, scene.hitGroups);
+    return !std::exchange(c.prepared, true);
 }
 
 std::vector<Wave> planWaves(std::uint32_t firstSample, std::uint32_t count, VkExtent2D extent,

@@ -60,9 +60,15 @@ public:
     WavefrontPipeline& operator=(const WavefrontPipeline&) = delete;
     ~WavefrontPipeline();
 
-    /// Compiles the pipelines a render with `uniforms` of `scene` needs, unless they exist; true when it
-    /// compiled them. Throws rt::DeviceError when the driver rejects one.
+    /// Compiles the pipelines a render with `uniforms` of `scene` needs, unless they exist; true at its first
+    /// call for them (compiled now or by compileTogether; as PathTracingPipeline::prepare). Throws
+    /// rt::DeviceError when the driver rejects one.
     bool prepare(const shader::RenderUniforms& uniforms, const PipelineScene& scene) const;
+    /// Compiles the pipelines of `keys` not compiled yet, a key's on a thread of its own (CompileTogether.h).
+    /// Throws rt::DeviceError when the driver rejects one (the others are kept).
+    void compileTogether(std::span<const PipelineSpecialization> keys) const;
+    /// Keys compiled so far.
+    std::size_t compiledCount() const { return m_compiled.size(); }
 
     /// Records a launch's waves into one command buffer, a wave at a time: start, its segments (all of them,
     /// or in chunks over several submissions, stopping once the caller sees the queues empty: the engine's
@@ -113,6 +119,7 @@ public:
                       const WaveBuffers& waves) const;
 
 private:
+    std::unique_ptr<Compiled> make(const PipelineSpecialization& key) const;
     const Compiled& compiled(const PipelineSpecialization& key) const;
     const Tables& tablesFor(const Compiled& compiled, const HitGroupLayout& scene) const;
 

@@ -32,12 +32,14 @@ def reference_relmse(path):
     return max(values[0], 0.0) if values else 0.0
 
 
-def costs(path, reference=0.0):
-    """{strategy or 'auto': [(relMSE - the reference's own) x s per seed]}, and the strategies auto chose."""
+def costs(path, reference=0.0, wall=False):
+    """{strategy or 'auto': [(relMSE - the reference's own) x s per seed]}, and the strategies auto chose. The time
+    is the engine's clock where the row has one (a GPU's), else the wall clock; with `wall`, the wall clock always (a
+    GPU's auto row then holds its pilot's host time too: compiling the candidates, the search's host side)."""
     rows = list(csv.DictReader(path.open()))
     cost, chosen = {}, []
     for r in rows:
-        ms = float(r["gpu_ms"]) if float(r["gpu_ms"]) >= 0 else float(r["wall_ms"])
+        ms = float(r["gpu_ms"]) if float(r["gpu_ms"]) >= 0 and not wall else float(r["wall_ms"])
         key = "auto" if r["label"].startswith("auto") else r["strategy"]
         if key == "auto":
             chosen.append(r["strategy"])
@@ -49,9 +51,9 @@ def costs(path, reference=0.0):
     return cost, chosen
 
 
-def efficiencies(path, reference=0.0):
-    """{strategy or 'auto': efficiency}, and the strategies auto chose."""
-    cost, chosen = costs(path, reference)
+def efficiencies(path, reference=0.0, wall=False):
+    """{strategy or 'auto': efficiency}, and the strategies auto chose (`wall`: as costs)."""
+    cost, chosen = costs(path, reference, wall)
     return {k: 1.0 / statistics.mean(v) for k, v in cost.items()}, chosen
 
 
@@ -76,25 +78,26 @@ def best_of(eff):
     return max(grid, key=grid.get)
 
 
-def scene_rows(out):
-    """One dict per scene of OUT_DIR: scene, strategies, best, best_full, best_again, own, own_eff, chosen, auto_eff."""
+def scene_rows(out, wall=False):
+    """One dict per scene of OUT_DIR: scene, strategies, best, best_full, best_again, own, own_eff, chosen, auto_eff
+    (`wall`: every time on the wall clock, as costs)."""
     rows = []
     for path in sorted(Path(out).glob("*.csv")):
         if "recheck" in path.stem:
             continue
         scene = path.stem
         reference = reference_relmse(path)
-        full, _ = efficiencies(path, reference)
+        full, _ = efficiencies(path, reference, wall)
         best = best_of(full)
         own_name = strategy_of(json.load((Path(out) / f"{scene}-defaults.json").open())["settings"])
         recheck = Path(out) / f"{scene}-recheck.csv"
         again = Path(out) / f"{scene}-recheck-best.csv"
         if recheck.exists() and again.exists():
-            r, chosen = costs(recheck, reference)
-            b, _ = costs(again, reference)
+            r, chosen = costs(recheck, reference, wall)
+            b, _ = costs(again, reference, wall)
             best_cost, own_cost, auto_cost = list(b.values())[0], r[own_name], r["auto"]
         else:
-            f, chosen = costs(path, reference)
+            f, chosen = costs(path, reference, wall)
             chosen = []
             best_cost, own_cost, auto_cost = f[best], f.get(own_name, [float("nan")]), f["auto"]
         rows.append({"scene": scene, "strategies": len(full) - 1, "best": best, "best_full": full[best],

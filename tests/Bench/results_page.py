@@ -1099,6 +1099,15 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "    SCENES='triangle-lights|rect-light-closeup sphere-light-closeup' bash tests/Bench/device_run.sh auto\n"
                   "# and SCENES='rtrol-cornell-box|veach-mis', SCENES='cornell-box-lights|many-lights'",
                   "## 63.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1130r", "NVIDIA H200, driver 580",
+                  "the three scenes the lanes left stretched or unmeasured, one at a time on one GPU, with c8be350 (the "
+                  "final round's repeats past three take timing frames): cornell-box-lights 0.90x [0.86, 0.94] the best (its "
+                  "best 3 of 4), many-lights 0.91x (the own 3 of 4, 0.95x the best), glossy-cornell 0.95x (its best 4 "
+                  "of 4, 1.43x its own) (notebook §67)",
+                  "LEAN=1 bash tests/Bench/device_carry.sh  # then on the device (nvidia-h200), one scene a run:\n"
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=cornell-box-lights \\\n"
+                  "    bash tests/Bench/device_run.sh auto  # and SCENES=many-lights, SCENES=glossy-cornell",
+                  "## 67.", "2026-11-30"),
                  ("h200-auto-strategy-5s-1130", "NVIDIA H200, driver 580",
                   "the same build, each strategy for 5 s and a reference of 32,768 spp (what the device's budget "
                   "left): veach-mis 0.96x the best, its own kept 4 of 4 (notebook §48)",
@@ -1178,6 +1187,52 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "    SCENES=\"sphere-light-closeup rect-light-closeup rtrol-cornell-box veach-mis\" \\\n"
                   "    bash tests/Bench/device_run.sh auto", "## 34.")]}
 
+# Issue 37's check, one reading per scene and machine: the latest run of the build that still decides as today's
+# (each folder's row in AUTO says which build); a scene with two readings on a machine gives both (glossy-cornell's
+# 13 % lead is resolved at four times the CPU's 4 s).
+AUTO_STANDING = [
+    ("CPU, CI kind, 128 px, 4 s", "cpu-auto-strategy-4s-1130e",
+     ["cornell-box-lights", "glossy-cornell", "many-lights", "rect-light-closeup", "veach-mis"]),
+    ("CPU, CI kind, 128 px, 4 s", "cpu-auto-strategy-4s-1130c",
+     ["rtrol-cornell-box", "sphere-light-closeup", "triangle-lights"]),
+    ("CPU, CI kind, 128 px, 16 s", "cpu-auto-strategy-16s-1130", ["glossy-cornell"]),
+    ("GPU, NVIDIA H200, 600 px, 8 s", "h200-auto-strategy-8s-1130r",
+     ["cornell-box-lights", "glossy-cornell", "many-lights"]),
+    ("GPU, NVIDIA H200, 600 px, 8 s", "h200-auto-strategy-8s-1130q",
+     ["rect-light-closeup", "rtrol-cornell-box", "sphere-light-closeup", "triangle-lights", "veach-mis"]),
+]
+
+
+def auto_standing(scene_rows, ratio):
+    """Issue 37's check as one table: per light scene, auto / best and auto / own on each machine (AUTO_STANDING)."""
+    readings = {}
+    for machine, folder, scenes in AUTO_STANDING:
+        rows = {r["scene"]: r for r in scene_rows(RESULTS / folder)}
+        walls = {r["scene"]: r for r in scene_rows(RESULTS / folder, wall=True)}
+        for scene in scenes:
+            if scene not in rows:
+                raise ParseError(f"docs/results/{folder} has no {scene}")
+            readings.setdefault(scene, []).append((machine, folder, rows[scene], walls[scene]))
+    out = ["", "**Where each light scene stands** (issue 37's check: auto at least 0.9x the best of the full "
+           "comparison, its pilot's time included, and not below the scene's own beyond that time): the latest "
+           "reading of each scene on each machine, from the tables below. A GPU's rows are timed on the engine's "
+           "clock, auto's with its pilot's time on that clock; on the wall clock (the last column; the CPU's are "
+           "the same) a GPU's auto also pays its pilot's host time, 1.9-2.9 s of 8 s renders in these runs, 1.1-1.8 "
+           "s of it compiling the candidates, since compiled side by side (notebook §67).", "",
+           "| scene | machine | auto / best | auto / own | auto chose | results | auto / best, wall clock |",
+           "|---|---|---:|---:|---|---|---:|"]
+    for scene in sorted(readings):
+        for machine, folder, r, w in readings[scene]:
+            tally = {}
+            for c in r["chosen"]:
+                tally[c] = tally.get(c, 0) + 1
+            chose = "; ".join(("the own" if c == r["own"] else "the best" if c == r["best"] else
+                               " ".join(c.split()[:3])) + f" {n} of {len(r['chosen'])}"
+                              for c, n in sorted(tally.items(), key=lambda t: -t[1]))
+            out.append(f"| {scene} | {machine} | {ratio(r['auto_best'])} | {ratio(r['auto_own'])} | {chose} | "
+                       f"{link(folder + '/')} | {ratio(w['auto_best'])} |")
+    return out
+
 
 def section_auto_strategy():
     sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -1207,6 +1262,7 @@ def section_auto_strategy():
         "alone: on a scene whose own is within the pilot's 5 % of the best, auto / own is below 1 whatever the pilot "
         "chooses (notebook §56).",
     ]
+    out += auto_standing(scene_rows, ratio)
     for run in AUTO["runs"]:
         folder, machine, size, command = run[:4]
         notebook = run[4] if len(run) > 4 else AUTO["notebook"]  # an older run's own section

@@ -97,6 +97,29 @@ public:
     }
     /// The host's time of each strategy's first frame, as a GPU compiles its pipeline there (a sleep).
     void setCompileSeconds(double seconds) { m_compileSeconds = seconds; }
+    /// compileAhead compiles up to `concurrent` strategies at once, in setCompileSeconds' time for them all, as a
+    /// GPU's threads do; 1 (the default): nothing ahead, each compiled by its first frame.
+    void setConcurrentCompiles(std::size_t concurrent) { m_concurrentCompiles = concurrent; }
+    std::size_t concurrentCompiles() const override { return m_concurrentCompiles; }
+    void compileAhead(std::span<const RenderSettings> frames) override
+    {
+        if (m_concurrentCompiles <= 1)
+            return;
+        EXPECT_LE(frames.size(), m_concurrentCompiles);
+        std::vector<Strategy> group;
+        for (const RenderSettings& settings : frames)
+            if (const Strategy strategy = Strategy::of(settings);
+                std::find(m_compiled.begin(), m_compiled.end(), strategy) == m_compiled.end())
+            {
+                m_compiled.push_back(strategy);
+                group.push_back(strategy);
+            }
+        if (!group.empty())
+            std::this_thread::sleep_for(std::chrono::duration<double>(m_compileSeconds));
+        m_compileGroups.push_back(group);
+    }
+    /// Each compileAhead's strategies new to the engine.
+    const std::vector<std::vector<Strategy>>& compileGroups() const { return m_compileGroups; }
     /// The host's time of each batch of the settings' (a sleep): a candidate slow enough for the pilot's time limit,
     /// which is on the host's clock.
     void setBatchSleep(std::function<double(const RenderSettings&)> seconds) { m_batchSleep = std::move(seconds); }
@@ -226,6 +249,8 @@ private:
     bool m_busyByPaths = false;
     double m_compileSeconds = 0.0;
     std::vector<Strategy> m_compiled;
+    std::size_t m_concurrentCompiles = 1;
+    std::vector<std::vector<Strategy>> m_compileGroups;
     std::function<double(const RenderSettings&)> m_batchSleep;
 };
 
@@ -569,6 +594,42 @@ TEST(PilotDecision, TheDefaultsBoundOnPreparationLeavesOutTheCandidatesPastIt)
     EXPECT_EQ(whole.unprepared, 0);
     EXPECT_EQ(whole.rows.size(), 12u);
     EXPECT_GE(whole.prepareSeconds, 11 * 0.06);
+}
+
+TEST(PilotDecision, AnEngineThatCompilesAheadPreparesTheCandidatesInGroupsOfItsConcurrency)
+{
+    // The same engine compiling up to four strategies at once in 60 ms (a GPU's threads): the eleven candidates besides
+    // the own (the probe's) take three groups, 0.18 s, not 0.66 s; under a bound of 0.1 s the preparation stops after
+    // the group that passed it, at a group's end.
+    const Scene scene = makeScene("cornell-box-lights");
+    const RenderRequest request = pilotRequest(scene);
+    auto pilot = [&](double prepareFraction, NoiseEngine& engine) {
+        engine.setCompileSeconds(0.06);
+        engine.setConcurrentCompiles(4);
+        engine.setScene(scene);
+        return chooseStrategy(engine, request, twelveCandidates(),
+                              {.renderSeconds = 20.0, .prepareFraction = prepareFraction});
+    };
+    NoiseEngine whole([](const RenderSettings&) { return 1.0; }, kGpuLike.concurrentPaths, 1e-7);
+    const AutoChoice all = pilot(0.0, whole);
+    ASSERT_FALSE(all.tooShort);
+    EXPECT_EQ(all.unprepared, 0);
+    EXPECT_EQ(all.rows.size(), 12u);
+    std::size_t compiledAhead = 0;
+    for (const auto& group : whole.compileGroups())
+    {
+        EXPECT_LE(group.size(), 4u);
+        compiledAhead += group.size();
+    }
+    EXPECT_EQ(compiledAhead, 11u) << "each candidate but the probe's own, once";
+    EXPECT_GE(all.prepareSeconds, 3 * 0.06);
+    EXPECT_LT(all.prepareSeconds, 11 * 0.06) << "the groups compiled one candidate at a time";
+    NoiseEngine bounded([](const RenderSettings&) { return 1.0; }, kGpuLike.concurrentPaths, 1e-7);
+    const AutoChoice some = pilot(0.005, bounded); // 0.1 s of a 20 s render
+    ASSERT_FALSE(some.tooShort);
+    EXPECT_GT(some.unprepared, 0);
+    EXPECT_EQ(some.rows.size() + std::size_t(some.unprepared), 12u);
+    EXPECT_EQ(some.rows.size() % 4, 0u) << "stopped inside a group: " << some.rows.size() << " candidates prepared";
 }
 
 TEST(PilotDecision, EveryFrameOfThePilotRunsWhatTheRenderRunsInOneBatch)
