@@ -14,6 +14,7 @@
 #include "Shared/Bsdf/MicrofacetBsdf.h"
 #include "Shared/HostDevice.h"
 #include "Shared/ShaderLang.h"
+#include "Shared/Warps.h"
 
 RT_SHADER_NAMESPACE_BEGIN
 
@@ -50,6 +51,16 @@ RT_FN Reservoir emptyReservoir()
     r.target = 0.0f;
     r.pad = 0.0f;
     return r;
+}
+
+/// The light-selection number of candidate k of `count` in a pixel's initial resampling: stratified, (k + xi) / count
+/// with one uniform xi for all of them, so that the candidates spread over the selection's distribution. Unbiased:
+/// candidate k's light has the pmf p_k of its stratum [k / M, (k + 1) / M), the strata's pmfs average to the
+/// selection's, (1 / M) sum_k p_k = p, so the weights p-hat / (M p) are GRIS's balance heuristic over the M proposals
+/// (Lin et al. 2022, §4-5) and W stays an unbiased contribution weight; M stays the candidates' count.
+RT_FN float stratifiedCandidateNumber(uint k, uint count, float xi)
+{
+    return min((float(k) + xi) / float(count), kOneMinusEpsilon);
 }
 
 /// Weighted reservoir sampling (Chao 1982; Bitterli et al. 2020, Alg. 2's update): offers the candidate `light`,

@@ -108,9 +108,10 @@ void restirCandidatesRow(const CpuScene& scene, const shader::RenderUniforms& un
         shader::Rng rng = shader::rngForSample(uniforms.seed ^ kCandidateStream, std::uint32_t(i), sampleIndex);
         shader::Reservoir& r = inputs[0].reservoir;
         float weightSum = 0.0f;
+        const float xi = shader::nextFloat(rng);
         for (std::uint32_t k = 0; k < uniforms.restirCandidates; ++k)
         {
-            const float uSelect = shader::nextFloat(rng);
+            const float uSelect = shader::stratifiedCandidateNumber(k, uniforms.restirCandidates, xi);
             const vec2 uLight = shader::nextFloat2(rng);
             const float uTake = shader::nextFloat(rng);
             std::uint32_t light;

@@ -1326,6 +1326,13 @@ RESTIR_RUNS = [
      "setup": "Full paths with `--restir-radius 4`: direct light at the first vertex is a sixth of their error.",
      "command": "FLAGS=\"--restir-radius 4\" bash tests/Bench/restir.sh build/bin docs/results/cpu-restir-full-r4-1130 \\\n"
                 "    multi 128 3000 4 8192 lamp-room"},
+    {"date": "2026-12-01", "notebook": "## 68.", "folder": "cpu-restir-depth2-r4-stratified-1201", "scenes": ["lamp-room"],
+     "machine": "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+     "setup": "`--depth 2 --restir-radius 4` again with the candidates' selection numbers stratified, (k + xi) / M: "
+              "1.10x, 1.12x and 1.23x the efficiency of the three restir-di rows of the `--restir-radius 4` table at "
+              "depth 2 above, the time per iteration the same.",
+     "command": "FLAGS=\"--depth 2 --restir-radius 4\" bash tests/Bench/restir.sh build/bin \\\n"
+                "    docs/results/cpu-restir-depth2-r4-stratified-1201 multi 128 3000 4 8192 lamp-room"},
 ]
 
 

@@ -2,8 +2,10 @@
 // claims (boxes, power, parents, leaves), the pmf of every light sums to 1 and equals what selection
 // reports, selection follows the pmf (chi-square), no light that can light a point is denied (the bound is
 // conservative, checked against points sampled on each light), and lights of zero power are never picked.
+// restir-di's candidates, whose selection numbers are stratified (Shared/Restir.h), follow the pmf together.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -11,6 +13,7 @@
 #include "Sampling/LightBvh.h"
 #include "Scenes/Catalogue.h"
 #include "Shared/LightSelection.h"
+#include "Shared/Restir.h"
 #include "Support/ChiSquare.h"
 #include "Support/LightCases.h"
 #include "Support/StatisticsHelpers.h"
@@ -233,6 +236,49 @@ TEST(LightBvh, SelectionFollowsThePmf)
             }
         }
         const auto r = test::chiSquareTest(h.counts, expected, alpha);
+        EXPECT_TRUE(r.passed) << "configuration " << c << ": " << r.message;
+    }
+}
+
+// Candidate k's number is uniform on its stratum [k / M, (k + 1) / M) only; the strata's pmfs average to the
+// selection's. The candidates of many pixels, pooled, follow the pmf (the strata make the pooled counts less spread
+// than independent draws': the test is conservative, not blind to strata that do not average to the pmf).
+TEST(LightBvh, StratifiedCandidatesOfManyPixelsFollowThePmf)
+{
+    const Scene scene = randomLights(3, 40);
+    const LightBvh bvh = buildLightBvh(scene);
+    const int n = int(scene.lights.size());
+    const vec3 points[] = {vec3(0.0f), vec3(9.0f, -3.0f, 1.0f), vec3(-30.0f, 2.0f, 5.0f)};
+    const vec3 normals[] = {vec3(0.0f), glm::normalize(vec3(-1.0f, 0.2f, 0.1f)), vec3(1.0f, 0.0f, 0.0f)};
+    constexpr std::uint32_t kCandidates = 8;
+    constexpr long kPixels = 50'000;
+    const double alpha = 1.0 - std::pow(1.0 - test::kChiSquareAlpha, 1.0 / 3.0); // Šidák over the configurations
+    for (int c = 0; c < 3; ++c)
+    {
+        Rng rng(pcgHash(200 + std::uint32_t(c)));
+        std::vector<double> counts(std::size_t(n) + 1, 0.0); // cell n: nothing selected
+        for (long pixel = 0; pixel < kPixels; ++pixel)
+        {
+            const float xi = rng.nextFloat();
+            for (std::uint32_t k = 0; k < kCandidates; ++k)
+            {
+                float pmf = 0.0f;
+                const std::uint32_t light = shader::selectLightBvh(
+                    bvh.nodes.data(), points[c], normals[c], false, shader::stratifiedCandidateNumber(k, kCandidates, xi),
+                    pmf);
+                counts[light == kNoIndex ? std::size_t(n) : std::size_t(light)] += 1.0;
+            }
+        }
+        std::vector<double> expected;
+        double none = 1.0;
+        for (int i = 0; i < n; ++i)
+        {
+            const double pmf = pmfOf(bvh, std::uint32_t(i), points[c], normals[c], false);
+            expected.push_back(pmf * double(kPixels * kCandidates));
+            none -= pmf;
+        }
+        expected.push_back(std::max(none, 0.0) * double(kPixels * kCandidates));
+        const auto r = test::chiSquareTest(counts, expected, alpha);
         EXPECT_TRUE(r.passed) << "configuration " << c << ": " << r.message;
     }
 }
