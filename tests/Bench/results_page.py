@@ -1217,8 +1217,9 @@ def auto_standing(scene_rows, ratio):
            "comparison, its pilot's time included, and not below the scene's own beyond that time): the latest "
            "reading of each scene on each machine, from the tables below. A GPU's rows are timed on the engine's "
            "clock, auto's with its pilot's time on that clock; on the wall clock (the last column; the CPU's are "
-           "the same) a GPU's auto also pays its pilot's host time, 1.9-2.9 s of 8 s renders in these runs, 1.1-1.8 "
-           "s of it compiling the candidates, since compiled side by side (notebook §67).", "",
+           "the same) a GPU's auto also pays its pilot's host time: 1.9-2.9 s of 8 s renders in 1130r's runs, 1.1-1.8 "
+           "s of it compiling the candidates (since compiled side by side), 0.7-3.0 s in 1130q's and once 13 s, whose "
+           "12 s of compiling alone make many-lights' 0.59x there (0.74x without that seed) (notebook §67).", "",
            "| scene | machine | auto / best | auto / own | auto chose | results | auto / best, wall clock |",
            "|---|---|---:|---:|---|---|---:|"]
     for scene in sorted(readings):

@@ -19,8 +19,11 @@ pilot=(--headless --quiet --scene cornell-box-lights --width 24 --spp 4096 --dep
 for attempt in 1 2 3; do
     rm -rf "$work/cache"
     "$app" "${pilot[@]}" --strategy-cache "$work/cache" --stats "$work/a.json" >/dev/null
-    /usr/bin/python3 -c 'import json, sys; sys.exit(json.load(open(sys.argv[1]))["strategy_choice"]["budget_spent"])' \
-        "$work/a.json" && break
+    spent=0
+    /usr/bin/python3 -c 'import json, sys; sys.exit(3 if json.load(open(sys.argv[1]))["strategy_choice"]["budget_spent"] else 0)' \
+        "$work/a.json" || spent=$?
+    [ "$spent" = 0 ] && break
+    [ "$spent" != 3 ] && { echo "no strategy_choice.budget_spent in the pilot's stats"; exit 1; }
     [ "$attempt" = 3 ] && { echo "the pilot spent its budget in three runs: too loaded a machine to test the kept choice"; exit 1; }
 done
 /usr/bin/python3 - "$work/a.json" <<'PY'
