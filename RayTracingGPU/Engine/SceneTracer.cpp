@@ -6,7 +6,6 @@
 #include "Engine/WavefrontPipeline.h"
 #include "Error.h"
 
-#include <future>
 #include <vector>
 
 #include <spdlog/fmt/fmt.h>
@@ -149,13 +148,9 @@ void SceneTracer::compileTogether(std::span<const std::pair<shader::RenderUnifor
         if (uniforms.estimator != Estimator::RestirDi)
             (integrator == GpuIntegrator::Wavefront ? wavefront : megakernel)
                 .push_back(m_pipeline.specializationFor(uniforms, scene));
-    // The wavefront's pipelines beside the megakernel's.
-    auto waves = std::async(std::launch::async, [&] {
-        if (!wavefront.empty())
-            m_wavefront->compileTogether(wavefront);
-    });
     m_pipeline.compileTogether(megakernel);
-    waves.get();
+    if (!wavefront.empty())
+        m_wavefront->compileTogether(wavefront);
 }
 
 void SceneTracer::recordLaunch(VkCommandBuffer cmd, std::span<const VkDescriptorSet> sets,

@@ -200,16 +200,36 @@ TEST(LightBvh, PmfSumsToAtMostOneAndIsWhatSelectionReports)
     }
 }
 
+/// The selection chi-square tests' three shading points of randomLights(3, 40) (a medium point, two surfaces), and
+/// their significance level (Šidák over the three).
+const vec3 kSelectionPoints[] = {vec3(0.0f), vec3(9.0f, -3.0f, 1.0f), vec3(-30.0f, 2.0f, 5.0f)};
+const vec3 kSelectionNormals[] = {vec3(0.0f), glm::normalize(vec3(-1.0f, 0.2f, 0.1f)), vec3(1.0f, 0.0f, 0.0f)};
+const double kSelectionAlpha = 1.0 - std::pow(1.0 - test::kChiSquareAlpha, 1.0 / 3.0);
+
+/// Expected counts of `selections` descents at (p, n) per light of `bvh`'s `lights`, by their pmfs, and last the
+/// count of descents that select nothing (what the pmfs leave of 1).
+std::vector<double> expectedSelections(const LightBvh& bvh, int lights, const vec3& p, const vec3& n, double selections)
+{
+    std::vector<double> expected;
+    double none = 1.0;
+    for (int i = 0; i < lights; ++i)
+    {
+        const double pmf = pmfOf(bvh, std::uint32_t(i), p, n, false);
+        expected.push_back(pmf * selections);
+        none -= pmf;
+    }
+    expected.push_back(std::max(none, 0.0) * selections);
+    return expected;
+}
+
 TEST(LightBvh, SelectionFollowsThePmf)
 {
     const Scene scene = randomLights(3, 40);
     const LightBvh bvh = buildLightBvh(scene);
     const int n = int(scene.lights.size());
-    const vec3 points[] = {vec3(0.0f), vec3(9.0f, -3.0f, 1.0f), vec3(-30.0f, 2.0f, 5.0f)};
-    const vec3 normals[] = {vec3(0.0f), glm::normalize(vec3(-1.0f, 0.2f, 0.1f)), vec3(1.0f, 0.0f, 0.0f)};
+    const auto& points = kSelectionPoints;
+    const auto& normals = kSelectionNormals;
     constexpr long kSamples = 400'000;
-    // Šidák over the three configurations.
-    const double alpha = 1.0 - std::pow(1.0 - test::kChiSquareAlpha, 1.0 / 3.0);
     for (int c = 0; c < 3; ++c)
     {
         // Cell n: nothing selected.
@@ -219,15 +239,7 @@ TEST(LightBvh, SelectionFollowsThePmf)
                                                       rng.nextFloat(), pmf);
             return light == kNoIndex ? n : int(light);
         });
-        std::vector<double> expected;
-        double none = 1.0;
-        for (int i = 0; i < n; ++i)
-        {
-            const double pmf = pmfOf(bvh, std::uint32_t(i), points[c], normals[c], false);
-            expected.push_back(pmf * kSamples);
-            none -= pmf;
-        }
-        expected.push_back(std::max(none, 0.0) * kSamples);
+        const std::vector<double> expected = expectedSelections(bvh, n, points[c], normals[c], double(kSamples));
         for (int i = 0; i < n; ++i)
         {
             if (expected[i] == 0.0)
@@ -235,7 +247,7 @@ TEST(LightBvh, SelectionFollowsThePmf)
                 EXPECT_EQ(h.counts[i], 0.0) << "light " << i << " has pmf 0 and was picked";
             }
         }
-        const auto r = test::chiSquareTest(h.counts, expected, alpha);
+        const auto r = test::chiSquareTest(h.counts, expected, kSelectionAlpha);
         EXPECT_TRUE(r.passed) << "configuration " << c << ": " << r.message;
     }
 }
@@ -248,11 +260,10 @@ TEST(LightBvh, StratifiedCandidatesOfManyPixelsFollowThePmf)
     const Scene scene = randomLights(3, 40);
     const LightBvh bvh = buildLightBvh(scene);
     const int n = int(scene.lights.size());
-    const vec3 points[] = {vec3(0.0f), vec3(9.0f, -3.0f, 1.0f), vec3(-30.0f, 2.0f, 5.0f)};
-    const vec3 normals[] = {vec3(0.0f), glm::normalize(vec3(-1.0f, 0.2f, 0.1f)), vec3(1.0f, 0.0f, 0.0f)};
+    const auto& points = kSelectionPoints;
+    const auto& normals = kSelectionNormals;
     constexpr std::uint32_t kCandidates = 8;
     constexpr long kPixels = 50'000;
-    const double alpha = 1.0 - std::pow(1.0 - test::kChiSquareAlpha, 1.0 / 3.0); // Šidák over the configurations
     for (int c = 0; c < 3; ++c)
     {
         Rng rng(pcgHash(200 + std::uint32_t(c)));
@@ -269,16 +280,8 @@ TEST(LightBvh, StratifiedCandidatesOfManyPixelsFollowThePmf)
                 counts[light == kNoIndex ? std::size_t(n) : std::size_t(light)] += 1.0;
             }
         }
-        std::vector<double> expected;
-        double none = 1.0;
-        for (int i = 0; i < n; ++i)
-        {
-            const double pmf = pmfOf(bvh, std::uint32_t(i), points[c], normals[c], false);
-            expected.push_back(pmf * double(kPixels * kCandidates));
-            none -= pmf;
-        }
-        expected.push_back(std::max(none, 0.0) * double(kPixels * kCandidates));
-        const auto r = test::chiSquareTest(counts, expected, alpha);
+        const auto r = test::chiSquareTest(
+            counts, expectedSelections(bvh, n, points[c], normals[c], double(kPixels * kCandidates)), kSelectionAlpha);
         EXPECT_TRUE(r.passed) << "configuration " << c << ": " << r.message;
     }
 }
