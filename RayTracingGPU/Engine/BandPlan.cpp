@@ -8,9 +8,9 @@
 
 namespace rt::gpu
 {
-BandPlan::BandPlan(std::uint32_t height, std::uint32_t firstRows)
+BandPlan::BandPlan(std::uint32_t height, std::uint64_t firstWork)
     : m_pass((std::max(height, 1u) + shader::kBandInterleave - 1) / shader::kBandInterleave),
-      m_work(std::clamp(firstRows, 1u, std::max(height, 1u)))
+      m_work(firstWork > 0 ? firstWork : std::max(height, 1u))
 {
 }
 

@@ -1,9 +1,9 @@
 // How GpuEngine cuts a batch (Render/BatchPlan.h: a few samples of every pixel) into submissions of rows. The
 // engine cancels between submissions, so each must stay near kBatchTargetSeconds on any device: one sample of
-// a 200x200 heavy scene is seconds on lavapipe. A frame's first band is its first sample, the whole frame,
-// or as many rows of the interleaved order (every sixteenth row first) as the engine's cap allows (a sixteenth
-// of its paths per batch: a pass or less on a CPU device's large image); each band after is sized by the time
-// the last one took.
+// a 200x200 heavy scene is seconds on lavapipe. A frame's first band is as many rows x samples as the engine's
+// cap allows (a sixteenth of its paths per batch: a pass or less on a CPU device's large image, a frame of a few
+// samples on a GPU), in the interleaved order (every sixteenth row first) where it is not the whole batch; each
+// band after is sized by the time the last one took.
 //
 // A batch of several bands takes its rows in the interleaved order (Shared/BandOrder.h), so that every band
 // of a pass or more, the first included, samples the whole frame and its rate holds for the next. Bands of
@@ -21,11 +21,15 @@ namespace rt::gpu
 class BandPlan
 {
 public:
-    /// A frame of `height` (>= 1) rows: the first band is the frame at one sample, but at most `firstRows`
-    /// (>= 1): a slow device's large image (800x800 of many-lights is 24 ms a row on lavapipe, so a pass of 50
-    /// rows ran past the 1 s a Ctrl-C may take). A first band of one pass, the rule before, cost the H100 a
-    /// submission: 0-3 % of a 256-spp light book render (docs/notebook/PERFORMANCE.md §8.8).
-    explicit BandPlan(std::uint32_t height, std::uint32_t firstRows = ~0u);
+    /// A frame of `height` (>= 1) rows whose first band is `firstWork` rows x samples (0: `height`, the frame at
+    /// one sample). The engine's is its cap on a first band's paths over the image's width: below the frame at
+    /// one sample on a slow device's large image (800x800 of many-lights is 24 ms a row on lavapipe, so a pass of
+    /// 50 rows ran past the 1 s a Ctrl-C may take), and above it on a GPU, whose frames of a few samples in one
+    /// batch (a pilot's) then take one band: with a first band of the frame at one sample they took three, and
+    /// an H200's pilot of cornell-box-lights spent 0.2 s of its 1.2 s search in their submissions (notebook §69).
+    /// A first band of one pass, the rule before these, cost the H100 a submission: 0-3 % of a 256-spp light book
+    /// render (docs/notebook/PERFORMANCE.md §8.8).
+    explicit BandPlan(std::uint32_t height, std::uint64_t firstWork = 0);
 
     /// Rows of the next band of a batch of `samples` per pixel, of which `rowsLeft` (>= 1) rows are not
     /// traced yet: the rows the measured rate gives kBatchTargetSeconds, spread evenly over the bands the

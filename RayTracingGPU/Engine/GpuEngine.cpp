@@ -37,6 +37,10 @@ namespace
 /// remain: the launches of a segment whose queue is empty cost the H100 about 25 us each.
 constexpr std::uint32_t kFirstWaveSegments = 8;
 constexpr std::uint32_t kWaveSegmentChunk = 8;
+/// The most pixels (times seed blocks) of a target GpuEngine keeps aside after a resize: 2^20, 64 MiB at most
+/// (RenderTarget: 32 B a pixel on the device, 32 B in the read-back buffer) beside a render of another size; a
+/// pilot's targets hold a third of it or less (416 x 416 px, two seed blocks).
+constexpr std::uint64_t kSparePixels = std::uint64_t(1) << 20;
 /// Timestamp queries: 0-1 around a dispatch, 2-3 around a clear or readback, from 4 on around restir-di's passes.
 constexpr std::uint32_t kRestirQueries = 4;
 
@@ -57,6 +61,12 @@ struct GpuEngine::Impl
     BandPlan bands{1}; // the frame's (beginFrame)
     std::uint32_t fixedBandRows = 0; // setBandRows: rows per submit; 0: by time
     std::unique_ptr<RenderTarget> target;
+    /// The target before the last resize and its descriptor set (none after setScene or setIntegrator, nor where
+    /// it named restir-di's buffers), kept while it holds at most kSparePixels: a pilot's frames switch between
+    /// its measurements' size (two seed blocks) and its timing frames' (the image's width), and each new target
+    /// cost an H200's host 7 ms, 12 of them 0.08 s of cornell-box-lights' 1.2 s search (notebook §69).
+    std::unique_ptr<RenderTarget> spareTarget;
+    TracingDescriptors spareDescriptors;
     std::unique_ptr<RestirBuffers> restir; // restir-di's, of the target's size, while a frame runs it
     // Whether restir's final reservoirs and surfaces hold a whole iteration of the frame, which the next one's
     // temporal reuse reads (false at the frame's start and after a cancelled iteration).
@@ -70,7 +80,10 @@ struct GpuEngine::Impl
     /// The wavefront's first submission per wave, its segments: what the last wave of the scene's same kind of path
     /// (WaveKind) needed, kFirstWaveSegments before any. Begun anew at each frame, the first wave of every frame (a
     /// pilot has 54, of 2-13 ms each on an H200) waited on up to six more submissions of eight segments, the host
-    /// reading the queue's count before each.
+    /// reading the queue's count before each. Lowering it by one only where a wave needed fewer cut an H200's waves
+    /// that took a second submission from 63-72 % to 20 %, but the empty segments recorded instead cost its
+    /// cornell-box-lights renders 0.2-1.2 % on the GPU's clock and saved nothing on the host's: not kept (notebook
+    /// §69).
     using WaveKind = std::tuple<int, Estimator, RussianRoulette>; // depth, estimator, roulette: the paths' length
     std::map<WaveKind, std::uint32_t> learnedWaveSegments;
     WaveKind waveKind{};
@@ -94,8 +107,9 @@ struct GpuEngine::Impl
 
     const vk::Device& device() const { return context.device(); }
 
-    /// A target of the settings' size (kept while the size stays, across scenes), restir-di's buffers when
-    /// `restirDi` (dropped when not), and a descriptor set for them and the scene (setScene drops the set).
+    /// A target of the settings' size (kept while the size stays, across scenes; the spare where it fits),
+    /// restir-di's buffers when `restirDi` (dropped when not), and a descriptor set for them and the scene
+    /// (setScene drops the set).
     void prepareTarget(std::uint32_t width, std::uint32_t height, std::uint32_t blocks, bool restirDi)
     {
         // Blocks kept when fewer are asked for: a pilot's candidates are prepared on one, measured on two and timed
@@ -105,18 +119,37 @@ struct GpuEngine::Impl
         const bool restirChanged = restirDi != bool(restir) || (restir && resized);
         if (!resized && !restirChanged && descriptors.set != VK_NULL_HANDLE)
             return;
-        descriptors = {}; // its set names the old target, the old restir buffers or the old scene
         if (resized)
         {
-            target.reset();
-            target = std::make_unique<RenderTarget>(device(), width, height, blocks);
+            const bool spareFits = spareTarget && spareTarget->width() == width && spareTarget->height() == height &&
+                                   spareTarget->blocks() >= blocks;
+            if (restir)
+                descriptors = {}; // it names the restir buffers, remade below
+            std::swap(target, spareTarget);
+            std::swap(descriptors, spareDescriptors);
+            // A large old target goes before the new one is made: both may not fit at once.
+            if (spareTarget && std::uint64_t(spareTarget->width()) * spareTarget->height() * spareTarget->blocks() >
+                                   kSparePixels)
+            {
+                spareDescriptors = {};
+                spareTarget.reset();
+            }
+            if (!spareFits)
+            {
+                descriptors = {};
+                target.reset();
+                target = std::make_unique<RenderTarget>(device(), width, height, blocks);
+            }
         }
         if (restirChanged)
         {
+            descriptors = {}; // it names the old restir buffers, or lacks the new ones
             restir.reset();
             if (restirDi)
                 restir = std::make_unique<RestirBuffers>(device(), std::uint64_t(width) * height);
         }
+        if (descriptors.set != VK_NULL_HANDLE)
+            return; // the spare's
         TargetBindings bindings = target->bindings();
         bindings.restir = restir.get();
         descriptors = tracer.makeDescriptors(bindings);
@@ -415,6 +448,7 @@ void GpuEngine::setCountRays(bool countRays) { m_impl->countRays = countRays; }
 void GpuEngine::setIntegrator(GpuIntegrator integrator, std::uint32_t waveCapacity)
 {
     m_impl->descriptors = {}; // they name the old wave buffers
+    m_impl->spareDescriptors = {};
     m_impl->learnedWaveSegments.clear(); // what a wave of another size needed
     m_impl->tracer.setIntegrator(integrator, waveCapacity);
 }
@@ -454,6 +488,7 @@ std::uint64_t GpuEngine::busyPixels(const RenderSettings& settings) const
 double GpuEngine::setScene(const Scene& scene)
 {
     m_impl->descriptors = {};
+    m_impl->spareDescriptors = {};
     m_impl->learnedWaveSegments.clear();
     return m_impl->tracer.setScene(scene);
 }
@@ -564,10 +599,11 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     if (compiled) // a frame whose pipelines were all compiled before has no compilation to tell
         e.frameStages["pipeline_host"] =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - compileStart).count();
-    // The first band: the frame's first sample, but at most a sixteenth of the engine's paths per batch (a CPU
-    // device's 64 K are a fraction of a second; a GPU's 268 M bind only above 16 M pixels).
-    const std::uint64_t firstBandRows = e.pathsPerBatch / (std::uint64_t(shader::kBandInterleave) * width);
-    e.bands = BandPlan(height, static_cast<std::uint32_t>(std::clamp<std::uint64_t>(firstBandRows, 1, height)));
+    // The first band: a sixteenth of the engine's paths per batch (a CPU device's 64 K are a fraction of a second;
+    // a GPU's 268 M, 16 M paths, are 75 ms of an H200's cornell-box-lights). Before a frame of a few samples could
+    // reach it, a frame at one sample of 16 M pixels did: the unmeasured first submission's bound is the same.
+    const std::uint64_t firstBandWork = e.pathsPerBatch / (std::uint64_t(shader::kBandInterleave) * width);
+    e.bands = BandPlan(height, std::max<std::uint64_t>(firstBandWork, 1));
 }
 
 BatchResult GpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control)

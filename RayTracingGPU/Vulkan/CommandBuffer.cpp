@@ -53,7 +53,8 @@ void submitAndWait(const Device& device, const CommandPool& pool, const std::fun
     record(commands.Handle());
     check(vkEndCommandBuffer(commands.Handle()), "vkEndCommandBuffer");
 
-    const Fence fence(device);
+    const Fence& fence = pool.submitFence();
+    fence.reset();
     const VkCommandBuffer handle = commands.Handle();
     VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
     submit.commandBufferCount = 1;

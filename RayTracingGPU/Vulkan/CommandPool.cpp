@@ -12,5 +12,6 @@ CommandPool::CommandPool(const Device& device)
     VkCommandPool pool = VK_NULL_HANDLE;
     check(vkCreateCommandPool(device.Handle(), &info, nullptr, &pool), "vkCreateCommandPool");
     m_pool = DeviceHandle<VkCommandPool, &vkDestroyCommandPool>(device.Handle(), pool);
+    m_fence = Fence(device);
 }
 } // namespace rt::vk

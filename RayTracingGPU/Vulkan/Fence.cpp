@@ -21,4 +21,10 @@ void Fence::wait() const
     check(vkWaitForFences(m_fence.device(), 1, &fence, VK_TRUE, std::numeric_limits<std::uint64_t>::max()),
           "vkWaitForFences");
 }
+
+void Fence::reset() const
+{
+    const VkFence fence = m_fence.get();
+    check(vkResetFences(m_fence.device(), 1, &fence), "vkResetFences");
+}
 } // namespace rt::vk

@@ -18,6 +18,8 @@ public:
     VkFence Handle() const { return m_fence.get(); }
     /// Blocks until the fence is signalled. Throws rt::DeviceError (device lost, ...).
     void wait() const;
+    /// Unsignals the fence for another submission. Throws rt::DeviceError.
+    void reset() const;
 
 private:
     DeviceHandle<VkFence, &vkDestroyFence> m_fence;

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Two builds of ray-tracing-gpu side by side in one run: each render of the list with build A, then build B,
 # for ROUNDS rounds (alternating, so that a drift of the machine hits both), then per render the fastest GPU
-# time (`gpu_seconds` of --stats) of each, their ratio A/B, and the relMSE between the two images (round-off
-# when B changes only the speed).
+# time (`gpu_seconds` of --stats) of each, their ratio A/B, the same of the host's clock (`render_seconds`: the
+# batches' submissions and waits), and the relMSE between the two images (round-off when B changes only the speed).
 #   tests/Bench/gpu_ab.sh A_BIN_DIR B_BIN_DIR OUT_DIR [RENDERS_FILE]
 # RENDERS_FILE: one render per line, "NAME ARGS..." (ray-tracing-gpu flags after --headless), or
 # "NAME A_ARGS || B_ARGS" where the builds name a setting differently (an old build without --estimator, say);
@@ -37,9 +37,11 @@ grep -v '^\s*\(#\|$\)' "$renders" | while read -r name args; do
     python3 - "$out" "$name" "$rounds" <<'PY'
 import json, sys
 out, name, rounds = sys.argv[1], sys.argv[2], int(sys.argv[3])
-best = {s: min(json.load(open(f"{out}/{name}-{s}-{r}.json"))["gpu_seconds"] * 1e3 for r in range(1, rounds + 1))
-        for s in "ab"}
-print(f"{name:>22}: A {best['a']:9.1f} ms  B {best['b']:9.1f} ms  A/B {best['a'] / best['b']:.2f}x", end="")
+stats = {s: [json.load(open(f"{out}/{name}-{s}-{r}.json")) for r in range(1, rounds + 1)] for s in "ab"}
+best = {s: min(j["gpu_seconds"] for j in stats[s]) * 1e3 for s in "ab"}
+wall = {s: min(j["render_seconds"] for j in stats[s]) * 1e3 for s in "ab"}
+print(f"{name:>22}: A {best['a']:9.1f} ms  B {best['b']:9.1f} ms  A/B {best['a'] / best['b']:.2f}x"
+      f"  wall: A {wall['a']:9.1f} ms  B {wall['b']:9.1f} ms  A/B {wall['a'] / wall['b']:.2f}x", end="")
 PY
     echo "  relMSE $(python3 "$(dirname "$0")/pfm_relmse.py" "$out/$name-b.pfm" "$out/$name-a.pfm")"
 done

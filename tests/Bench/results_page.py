@@ -1108,6 +1108,18 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 SCENES=cornell-box-lights \\\n"
                   "    bash tests/Bench/device_run.sh auto  # and SCENES=many-lights, SCENES=glossy-cornell",
                   "## 67.", "2026-11-30"),
+                 ("h200-auto-strategy-8s-1201", "2 NVIDIA H200 of one host, driver 580 (two lanes, one GPU each)",
+                  "four light scenes with a build whose GPU pilot costs its host half as much (a frame within a "
+                  "sixteenth of the paths per batch one band, one fence per command pool, a spare target; and a rule "
+                  "for the waves' segments measured and not kept): "
+                  "cornell-box-lights 0.94x the best [0.93, 0.95] (its best 4 of 4), glossy-cornell 0.95x (its best 4 "
+                  "of 4), many-lights 0.92x (the own 3 of 4), triangle-lights 0.94x; on the wall clock 0.88-0.91x, "
+                  "pilots of 0.75-1.0 s on the host's clock for 0.36-0.44 s on the engine's (notebook §69)",
+                  "LEAN=1 bash tests/Bench/device_carry.sh  # then on the device (nvidia-h200-x2), two runs:\n"
+                  "RECHECK_SEEDS=4 HEADLESS_RUNS= MS=8000 SEEDS=1 REF_SPP=65536 \\\n"
+                  "    SCENES='cornell-box-lights|many-lights' bash tests/Bench/device_run.sh auto\n"
+                  "# and SCENES='triangle-lights|glossy-cornell'",
+                  "## 69.", "2026-12-01"),
                  ("h200-auto-strategy-5s-1130", "NVIDIA H200, driver 580",
                   "the same build, each strategy for 5 s and a reference of 32,768 spp (what the device's budget "
                   "left): veach-mis 0.96x the best, its own kept 4 of 4 (notebook §48)",
@@ -1196,10 +1208,10 @@ AUTO_STANDING = [
     ("CPU, CI kind, 128 px, 4 s", "cpu-auto-strategy-4s-1130c",
      ["rtrol-cornell-box", "sphere-light-closeup", "triangle-lights"]),
     ("CPU, CI kind, 128 px, 16 s", "cpu-auto-strategy-16s-1130", ["glossy-cornell"]),
-    ("GPU, NVIDIA H200, 600 px, 8 s", "h200-auto-strategy-8s-1130r",
-     ["cornell-box-lights", "glossy-cornell", "many-lights"]),
+    ("GPU, NVIDIA H200, 600 px, 8 s", "h200-auto-strategy-8s-1201",
+     ["cornell-box-lights", "glossy-cornell", "many-lights", "triangle-lights"]),
     ("GPU, NVIDIA H200, 600 px, 8 s", "h200-auto-strategy-8s-1130q",
-     ["rect-light-closeup", "rtrol-cornell-box", "sphere-light-closeup", "triangle-lights", "veach-mis"]),
+     ["rect-light-closeup", "rtrol-cornell-box", "sphere-light-closeup", "veach-mis"]),
 ]
 
 
@@ -1217,9 +1229,11 @@ def auto_standing(scene_rows, ratio):
            "comparison, its pilot's time included, and not below the scene's own beyond that time): the latest "
            "reading of each scene on each machine, from the tables below. A GPU's rows are timed on the engine's "
            "clock, auto's with its pilot's time on that clock; on the wall clock (the last column; the CPU's are "
-           "the same) a GPU's auto also pays its pilot's host time: 1.9-2.9 s of 8 s renders in 1130r's runs, 1.1-1.8 "
-           "s of it compiling the candidates (since compiled side by side), 0.7-3.0 s in 1130q's and once 13 s, whose "
-           "12 s of compiling alone make many-lights' 0.59x there (0.74x without that seed) (notebook §67).", "",
+           "the same) every row also pays its submissions' host time, and a GPU's auto its pilot's: 0.75-1.0 s of 8 s "
+           "renders in 1201's runs (a build whose pilot frames take one band and one fence per command pool, whose "
+           "candidates compile side by side: notebook §69; two scenes at a time, one a GPU), 1.9-2.9 s in 1130r's, "
+           "0.7-3.0 s in 1130q's and once 13 s, whose 12 s of compiling alone make many-lights' 0.59x there "
+           "(notebook §67). The four scenes of 1130q read on the wall clock with that build's pilot.", "",
            "| scene | machine | auto / best | auto / own | auto chose | results | auto / best, wall clock |",
            "|---|---|---:|---:|---|---|---:|"]
     for scene in sorted(readings):

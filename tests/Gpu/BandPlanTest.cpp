@@ -68,7 +68,7 @@ TEST(BandOrder, EveryBandOfAPassSpansTheFrame)
     }
 }
 
-TEST(BandPlan, FirstBandIsTheFrameAtOneSampleUnlessCapped)
+TEST(BandPlan, WithoutACapTheFirstBandIsTheFrameAtOneSample)
 {
     for (const std::uint32_t height : {1u, 5u, 17u, 200u, 337u, 600u})
     {
@@ -107,6 +107,16 @@ TEST(BandPlan, FirstBandKeepsToItsCap)
     plan.record(5, 1, 1e-6);
     EXPECT_EQ(plan.nextRows(1, 795), 20u) << "a band shorter than a pass: 4x";
     EXPECT_EQ(BandPlan(800, 500).nextRows(1, 800), 400u) << "a cap above a pass: two even bands";
+}
+
+TEST(BandPlan, AFrameOfAFewSamplesWithinTheCapIsOneBand)
+{
+    // A GPU's cap: 268 M paths per batch over 16 x 416 px, 40,329 rows x samples. A pilot's measurement is a frame
+    // of 416 x 416 px at 30 samples (two seed blocks of 15): 12,480, one band, its rows in order.
+    BandPlan plan(416, 40329);
+    EXPECT_EQ(plan.nextRows(30, 416), 416u);
+    EXPECT_EQ(plan.nextRows(128, 416), 208u) << "past the cap (315 rows at 128 samples): two even bands";
+    EXPECT_EQ(BandPlan(416).nextRows(30, 416), 13u) << "without one, the frame at one sample: 32 bands of 13";
 }
 
 TEST(BandPlan, ABandShorterThanAPassGrowsAtMostFourTimes)

@@ -98,6 +98,37 @@ TEST_F(GpuDeterminism, SameSeedTwiceGivesTheSameImage)
     EXPECT_NE(a.image.pixels(), c.image.pixels());
 }
 
+// GpuEngine keeps the target of the size before a resize, and its descriptor set, while it is small: frames of two
+// sizes taken in turn, restir-di frames between them (whose set names their reservoirs, and whose own target is
+// not kept with it), each give the image of a frame whose sets were all made for it (after setScene, which drops
+// them), bit for bit, and no validation message (a set naming a freed target or freed reservoirs would).
+TEST_F(GpuDeterminism, FramesOfTwoSizesInTurnEachGiveTheirOwnImage)
+{
+    const Scene scene = makeScene("cornell-box-lights");
+    GpuEngine& engine = *sharedEngine();
+    const RenderSettings a = small(scene, 16, 4, 5);
+    const RenderSettings b = small(scene, 24, 4, 5);
+    RenderSettings restir = a;
+    restir.estimator = Estimator::RestirDi;
+    auto render = [&](const RenderSettings& settings) {
+        RenderControl control;
+        return renderWithSettings(engine, settings, control).image.pixels();
+    };
+    auto fresh = [&](const RenderSettings& settings) {
+        engine.setScene(scene);
+        return render(settings);
+    };
+    const auto a1 = fresh(a), b1 = fresh(b), r1 = fresh(restir);
+    engine.setScene(scene); // once: the frames below keep their sets
+    EXPECT_EQ(render(a), a1);
+    EXPECT_EQ(render(b), b1);
+    EXPECT_EQ(render(a), a1) << "the spare, its set kept";
+    EXPECT_EQ(render(restir), r1) << "the spare, its set made again with the reservoirs";
+    EXPECT_EQ(render(b), b1) << "after a restir-di frame of the other size";
+    EXPECT_EQ(render(restir), r1);
+    EXPECT_EQ(render(a), a1) << "restir-di's set dropped with its reservoirs";
+}
+
 TEST_F(GpuDeterminism, DispatchSplitDoesNotChangeTheImage)
 {
     // One sample per dispatch (accumulate) and all samples in one dispatch draw the same numbers.
