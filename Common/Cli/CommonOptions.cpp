@@ -158,7 +158,8 @@ void addCommonOptions(CLI::App& app, CommonOptions& o)
         ->each([&o](const std::string&) { o.strategyGiven = true; });
     app.add_option("--pilot-budget", o.pilotBudget,
                    "With --strategy auto: the pilot's time as a fraction of the render's estimated time (from a "
-                   "probe render), 0.001 to 1")
+                   "probe render), 0.001 to 1; on the engine's clock (a GPU's own), its search held to twice it on the "
+                   "host's, the probe and the candidates' preparation beside it")
         ->capture_default_str()
         ->check(finiteNumber())
         ->check(CLI::Range(0.001, 1.0));
