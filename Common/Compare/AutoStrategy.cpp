@@ -739,7 +739,10 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         std::vector<RenderSettings> frames;
         for (std::size_t i = prepared; i < end; ++i)
             frames.push_back(grid[i].applyTo(pilot));
+        const auto compileStart = std::chrono::steady_clock::now();
         engine.compileAhead(frames);
+        choice.prepareCompileSeconds +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - compileStart).count();
         for (const RenderSettings& frame : frames)
             engine.beginFrame(frame);
         prepared = end;
@@ -824,6 +827,11 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             return std::max((two - one) / (twicePaths - oncePaths), 0.1 * two / twicePaths);
         return one > 0.0 ? std::max(one - cost.ms(pixelsOf(timing), 0.0), 0.1 * one) / oncePaths : 0.0;
     };
+    // The engine's stages of a search's render, into searchStageSeconds.
+    auto addStages = [&](const Measurement& m) {
+        for (const auto& [stage, seconds] : m.stageSeconds)
+            choice.searchStageSeconds[stage] += seconds;
+    };
     // A candidate's next timing frame, of three: the timing spp, twice it, then the timing spp again, so that a one-off
     // stall (the first render after a round's scoring meets one) is not the least; and a fourth at twice the spp where
     // the second stalled (timingStalled). False where cancelled.
@@ -837,6 +845,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         choice.renderHostSeconds +=
             std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count();
         choice.tracingHostSeconds += t.wallMs * 1e-3;
+        addStages(t);
         if (t.cancelled)
             return false;
         choice.pilotMs += t.ms();
@@ -904,6 +913,7 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
             both.settings.spp = 2 * half.settings.trueSpp();
             const SeedBlockScope blocks(engine, static_cast<std::uint32_t>(half.settings.trueSpp()));
             Measurement frame = measure(engine, both, nullptr, 2 * limit, true);
+            addStages(frame);
             a = Measurement{.spp = frame.spp / 2, .wallMs = frame.wallMs, .cancelled = frame.cancelled,
                             .timedOut = frame.timedOut};
             b = a;
@@ -917,9 +927,11 @@ AutoChoice chooseStrategy(RenderEngine& engine, const RenderRequest& request, co
         else
         {
             a = measure(engine, half, nullptr, limit, true);
+            addStages(a);
             ++half.settings.seed;
             b = a.cancelled || a.timedOut ? Measurement{.cancelled = a.cancelled, .timedOut = a.timedOut}
                                           : measure(engine, half, nullptr, limit, true);
+            addStages(b);
             // The halves are the same work: the faster one's time twice, so that a one-off stall of either (a
             // pool's first use, a clock ramping up: 2x on the first candidate after the probe, measured) does not
             // decide.
@@ -1382,6 +1394,8 @@ nlohmann::json AutoChoice::toJson() const
     j["timing_spp"] = timingSpp;
     j["search_render_host_seconds"] = renderHostSeconds;
     j["search_tracing_host_seconds"] = tracingHostSeconds;
+    j["search_stage_seconds"] = searchStageSeconds;
+    j["prepare_compile_seconds"] = prepareCompileSeconds;
     j["probes"] = nlohmann::json::array();
     for (const ProbeTiming& p : probes)
         j["probes"].push_back({{"pixels", p.pixels}, {"spp", p.spp}, {"ms", p.ms}});

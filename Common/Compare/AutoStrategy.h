@@ -70,6 +70,7 @@
 // next render of the same settings: Compare/StrategyCache.h).
 #pragma once
 
+#include <map>
 #include <array>
 #include <limits>
 #include <optional>
@@ -211,6 +212,11 @@ struct AutoChoice
     /// tracing (the rest: each frame's set-up and read-back; the rest of the search is the pilot's own arithmetic).
     double renderHostSeconds = 0.0;
     double tracingHostSeconds = 0.0;
+    /// The engine's stages of the search's renders (RenderEngine::frameStageSeconds), summed: where a GPU's host
+    /// time beside its clock went (setup_host, trace_host beside trace_gpu, readback_host, resolve_host).
+    std::map<std::string, double> searchStageSeconds;
+    /// Of prepareSeconds: the engine's compileAhead calls (the rest: each candidate's frame begun, a warm-up launch).
+    double prepareCompileSeconds = 0.0;
     std::vector<PilotRow> rows; // in the order measured
     bool cancelled = false; // Ctrl-C stopped the pilot
     /// The search stopped when the pilot's wall time passed the budget, before every candidate was measured.

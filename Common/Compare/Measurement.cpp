@@ -45,6 +45,7 @@ Measurement measure(RenderEngine& engine, const RenderRequest& request, const Im
     RenderResult r = render(engine, request, control, {}, frame);
     InterruptScope::route(nullptr);
     Measurement m;
+    m.stageSeconds = engine.frameStageSeconds();
     m.cancelled = r.stats.cancelled || InterruptScope::interrupted() || stopped;
     m.timedOut = m.cancelled && !InterruptScope::interrupted() && !stopped && control.timeLimitPassed();
     m.wallMs = r.stats.renderSeconds * 1e3;

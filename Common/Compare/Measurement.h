@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <functional>
+#include <map>
 #include <string>
 
 #include "Image/Image.h"
@@ -35,6 +36,7 @@ struct Measurement
     bool timedOut = false;
     ErrorMetrics error; // against the reference, when one was given
     Image image;
+    std::map<std::string, double> stageSeconds; // the frame's own (RenderEngine::frameStageSeconds)
 
     /// The time a comparison reports: the GPU's own clock where there is one (no host overhead), else the host's.
     double ms() const { return gpuMs >= 0.0 ? gpuMs : wallMs; }

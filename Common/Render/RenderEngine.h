@@ -146,6 +146,8 @@ public:
     /// The engine's own times of the stages of its last setScene and frame, in seconds, by name (each engine's
     /// documentation names its stages); empty where the engine has none to tell.
     virtual std::map<std::string, double> stageSeconds() const { return {}; }
+    /// Of stageSeconds, the last frame's stages alone: what a sum over frames may add up (the pilot's).
+    virtual std::map<std::string, double> frameStageSeconds() const { return {}; }
     /// What the last frame ran on, in words, where an engine has variants (the GPU engine: the specialisation
     /// of its pipeline; the CPU engine: its path loop); empty otherwise.
     virtual std::string frameConfiguration() const { return {}; }

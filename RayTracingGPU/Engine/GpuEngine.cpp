@@ -44,6 +44,23 @@ constexpr std::uint64_t kSparePixels = std::uint64_t(1) << 20;
 /// Timestamp queries: 0-1 around a dispatch, 2-3 around a clear or readback, from 4 on around restir-di's passes.
 constexpr std::uint32_t kRestirQueries = 4;
 
+/// Adds the host seconds of its life to `stage`: a stage of stageSeconds on the host's clock.
+class HostStageTimer
+{
+public:
+    explicit HostStageTimer(double& stage) : m_stage(stage) {}
+    ~HostStageTimer()
+    {
+        m_stage += std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+    }
+    HostStageTimer(const HostStageTimer&) = delete;
+    HostStageTimer& operator=(const HostStageTimer&) = delete;
+
+private:
+    double& m_stage;
+    std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now();
+};
+
 TargetLimits targetLimits(const vk::Device& device)
 {
     const vk::DeviceProperties& p = device.properties();
@@ -541,6 +558,7 @@ void GpuEngine::compileAhead(std::span<const RenderSettings> frames)
 
 void GpuEngine::beginFrame(const RenderSettings& settings)
 {
+    const auto frameStart = std::chrono::steady_clock::now();
     Impl& e = *m_impl;
     if (!e.tracer.scene())
         throw UsageError("GpuEngine::beginFrame called before setScene");
@@ -604,6 +622,8 @@ void GpuEngine::beginFrame(const RenderSettings& settings)
     // reach it, a frame at one sample of 16 M pixels did: the unmeasured first submission's bound is the same.
     const std::uint64_t firstBandWork = e.pathsPerBatch / (std::uint64_t(shader::kBandInterleave) * width);
     e.bands = BandPlan(height, std::max<std::uint64_t>(firstBandWork, 1));
+    e.frameStages["setup_host"] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count();
 }
 
 BatchResult GpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t count, RenderControl& control)
@@ -611,6 +631,7 @@ BatchResult GpuEngine::traceSamples(std::uint32_t firstSample, std::uint32_t cou
     Impl& e = *m_impl;
     if (!e.target || e.descriptors.set == VK_NULL_HANDLE)
         throw UsageError("GpuEngine::traceSamples called before beginFrame");
+    const HostStageTimer hostTime(e.frameStages["trace_host"]);
     if (e.restir)
         return e.traceRestir(firstSample, count, control);
     // One submit per band of rows, each about kBatchTargetSeconds: the render driver sizes batches by time
@@ -658,7 +679,10 @@ Image GpuEngine::estimate(std::uint32_t samples)
 {
     if (!m_impl->target || m_impl->descriptors.set == VK_NULL_HANDLE)
         throw UsageError("GpuEngine::estimate called before beginFrame");
-    m_impl->readback();
+    {
+        const HostStageTimer hostTime(m_impl->frameStages["readback_host"]);
+        m_impl->readback();
+    }
     const auto start = std::chrono::steady_clock::now();
     Image image = m_impl->target->readEstimate(samples, m_impl->uniforms.seedBlock, m_impl->frameBlocks);
     m_impl->frameStages["resolve_host"] +=
@@ -670,7 +694,10 @@ std::vector<double> GpuEngine::radianceSums()
 {
     if (!m_impl->target || m_impl->descriptors.set == VK_NULL_HANDLE)
         throw UsageError("GpuEngine::radianceSums called before beginFrame");
-    m_impl->readback();
+    {
+        const HostStageTimer hostTime(m_impl->frameStages["readback_host"]);
+        m_impl->readback();
+    }
     return m_impl->target->readSums(m_impl->frameBlocks);
 }
 
@@ -683,6 +710,8 @@ std::string GpuEngine::frameConfiguration() const
            ", integrator " + (m_impl->restir ? std::string("restir-di passes") : toString(m_impl->integrator)) +
            (m_impl->cost ? ", each sample timed (--heatmap)" : "");
 }
+
+std::map<std::string, double> GpuEngine::frameStageSeconds() const { return m_impl->frameStages; }
 
 std::map<std::string, double> GpuEngine::stageSeconds() const
 {

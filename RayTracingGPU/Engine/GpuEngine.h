@@ -94,13 +94,16 @@ public:
     std::vector<double> radianceSums() override;
     SampleTally tally() const override;
     /// Where the time went, in seconds: of setScene, upload_host (buffers and images, host clock) and, where
-    /// they were built, blas_build_gpu and tlas_build_gpu (device clock); of the frame, pipeline_host (the
-    /// compilation of a pipeline not cached yet, with a one-row launch of it where a driver finishes compiling
-    /// at the first launch (lavapipe), host clock; absent when the pipeline was prepared before, by a frame or the
-    /// window; after compileAhead, that launch alone), clear_gpu, trace_gpu (= RenderStats::gpuSeconds), readback_gpu (every copy of the
-    /// sum to the host: previews and the result) and resolve_host (sum / samples into the image). Device
-    /// times are left out on a queue without timestamps.
+    /// they were built, blas_build_gpu and tlas_build_gpu (device clock); of the frame, setup_host (beginFrame on
+    /// the host's clock: pipeline_host and clear_gpu within it), pipeline_host (the compilation of a pipeline not
+    /// cached yet, with a one-row launch of it where a driver finishes compiling at the first launch (lavapipe);
+    /// absent when the pipeline was prepared before, by a frame or the window; after compileAhead, that launch
+    /// alone), clear_gpu, trace_gpu (= RenderStats::gpuSeconds) within trace_host (every traceSamples: recording,
+    /// submitting and waiting), the wavefront's wave_*_gpu and restir-di's restir_*_gpu within trace_gpu,
+    /// readback_gpu (every copy of the sum to the host: previews and the result) within readback_host, and
+    /// resolve_host (sum / samples into the image). Device times are left out on a queue without timestamps.
     std::map<std::string, double> stageSeconds() const override;
+    std::map<std::string, double> frameStageSeconds() const override;
     /// restir-di's buffers per pixel while the frame runs it (RestirBuffers::bytesPerPixel), else none.
     std::map<std::string, std::uint64_t> frameBytesPerPixel() const override;
     /// Empty but for restir-di (not timed per pixel) and a device without VK_KHR_shader_clock.

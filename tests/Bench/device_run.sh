@@ -213,8 +213,9 @@ roulette)
 pilot)
     # Issue 37: --strategy auto's headless pilot (its table, time model and frames) on SCENES at 600 px, at each
     # of SPPS, for each of SEEDS (default 0; the first render of the lease compiles the candidates' pipelines), with
-    # PILOT_BUDGET (default 0.05): the table, then the pilot's host clock (the probe's extra per render, the search,
-    # its renders, their tracing and its scoring) beside the GPU's.
+    # PILOT_BUDGET (default 0.05): the table, then the pilot's host clock (the probe's extra per render, the
+    # preparation and its compiling, the search, its renders, their tracing, its frames' stages and its scoring)
+    # beside the GPU's.
     for scene in ${SCENES:-cornell-box-lights}; do
         for spp in ${SPPS:-1460}; do
             for seed in ${SEEDS:-0}; do
@@ -222,7 +223,7 @@ pilot)
                 "$bin/ray-tracing-gpu" --headless --strategy auto --strategy-cache off --scene "$scene" --width 600 \
                     --spp "$spp" --seed "$seed" --pilot-budget "${PILOT_BUDGET:-0.05}" --stats "$stats" 2>&1 |
                     grep -v "^\[" | tail -20
-                python3 -c "import json,sys; c=json.load(open(sys.argv[1]))['strategy_choice']; print({k: c[k] for k in ('render_cost', 'half_overhead_ms', 'pilot_frame_configuration', 'pilot_width', 'pilot_spp', 'budget_seconds', 'pilot_ms', 'too_short', 'budget_spent', 'probe_host_extra_ms', 'probe_ms', 'candidates_cost_scale', 'prepare_seconds', 'search_seconds', 'search_render_host_seconds', 'search_tracing_host_seconds', 'search_scoring_seconds')})" "$stats"
+                python3 -c "import json,sys; c=json.load(open(sys.argv[1]))['strategy_choice']; print({k: c[k] for k in ('render_cost', 'half_overhead_ms', 'pilot_frame_configuration', 'pilot_width', 'pilot_spp', 'budget_seconds', 'pilot_ms', 'too_short', 'budget_spent', 'probe_host_extra_ms', 'probe_ms', 'candidates_cost_scale', 'prepare_seconds', 'search_seconds', 'search_render_host_seconds', 'search_tracing_host_seconds', 'search_scoring_seconds', 'prepare_compile_seconds', 'search_stage_seconds', 'pilot_wall_seconds', 'probe_seconds')})" "$stats"
             done
         done
     done

@@ -198,6 +198,12 @@ public:
         return image;
     }
     std::vector<double> radianceSums() override { return m_sums; }
+    /// One "batches" stage a frame: its batches, as seconds (what the pilot sums over its search's frames).
+    std::map<std::string, double> frameStageSeconds() const override
+    {
+        return m_frames.empty() ? std::map<std::string, double>{}
+                                : std::map<std::string, double>{{"batches", double(m_frames.back().batches)}};
+    }
 
 private:
     /// Adds samples firstSample .. firstSample + count - 1 of seed `seed` to `sums` (m_values of them): the sum of
@@ -596,6 +602,21 @@ TEST(PilotDecision, TheDefaultsBoundOnPreparationLeavesOutTheCandidatesPastIt)
     EXPECT_GE(whole.prepareSeconds, 11 * 0.06);
 }
 
+/// The batches of the pilot's search, each frame's reported as a stage (NoiseEngine::frameStageSeconds): those of
+/// the frames begun after the preparation's, which begin each candidate's frame without a batch.
+double searchBatches(const NoiseEngine& engine)
+{
+    const auto& frames = engine.frames();
+    const auto lastUntraced =
+        std::find_if(frames.rbegin(), frames.rend(), [](const NoiseEngine::Frame& f) { return f.batches == 0; });
+    EXPECT_NE(lastUntraced, frames.rend()) << "no frame of the preparation";
+    double batches = 0.0;
+    for (auto f = lastUntraced.base(); f != frames.end(); ++f)
+        batches += f->batches;
+    EXPECT_GT(batches, 0.0);
+    return batches;
+}
+
 TEST(PilotDecision, AnEngineThatCompilesAheadPreparesTheCandidatesInGroupsOfItsConcurrency)
 {
     // The same engine compiling up to four strategies at once in 60 ms (a GPU's threads): the eleven candidates besides
@@ -624,6 +645,10 @@ TEST(PilotDecision, AnEngineThatCompilesAheadPreparesTheCandidatesInGroupsOfItsC
     EXPECT_EQ(compiledAhead, 11u) << "each candidate but the probe's own, once";
     EXPECT_GE(all.prepareSeconds, 3 * 0.06);
     EXPECT_LT(all.prepareSeconds, 11 * 0.06) << "the groups compiled one candidate at a time";
+    EXPECT_GE(all.prepareCompileSeconds, 3 * 0.06) << "the compiling, of the preparation";
+    EXPECT_LE(all.prepareCompileSeconds, all.prepareSeconds);
+    ASSERT_TRUE(all.searchStageSeconds.contains("batches"));
+    EXPECT_EQ(all.searchStageSeconds.at("batches"), searchBatches(whole)) << "the search's frames' stages, summed";
     NoiseEngine bounded([](const RenderSettings&) { return 1.0; }, kGpuLike.concurrentPaths, 1e-7);
     const AutoChoice some = pilot(0.005, bounded); // 0.1 s of a 20 s render
     ASSERT_FALSE(some.tooShort);
@@ -720,6 +745,9 @@ TEST(PilotDecision, AGpusPilotPlansByFramesOfBothHalvesWhereTheOwnsSamplingAllow
         const auto blockFrames = std::count_if(engine.frames().begin(), engine.frames().end(),
                                                [](const NoiseEngine::Frame& f) { return f.blocks == 2; });
         EXPECT_EQ(blockFrames > 0, sampling == PixelSampling::Accumulate) << samplings;
+        ASSERT_TRUE(choice.searchStageSeconds.contains("batches")) << samplings;
+        EXPECT_EQ(choice.searchStageSeconds.at("batches"), searchBatches(engine))
+            << samplings << ": the search's frames' stages, summed, a measurement's halves one frame or two";
     }
 }
 
@@ -970,6 +998,8 @@ TEST(PilotDecision, AGuardBeforeTheFinalRoundDecidedStillTimesTheLeaderOnTimingF
         const std::size_t begun = engine.frames().size();
         const AutoChoice choice = pilotStoppedAt(engine, scene, begun + kFinalRoundsFirstFrame, seed);
         ASSERT_GT(choice.timingSpp, 0) << "the plan has timing frames";
+        ASSERT_TRUE(choice.searchStageSeconds.contains("batches"));
+        EXPECT_EQ(choice.searchStageSeconds.at("batches"), searchBatches(engine)) << "its timing frames' stages too";
         const auto better = rowOf(choice, theBetterOne());
         const auto own = rowOf(choice, Strategy::of(pilotRequest(scene).settings));
         ASSERT_NE(better, choice.rows.end());
