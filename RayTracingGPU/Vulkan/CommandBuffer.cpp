@@ -60,6 +60,17 @@ void submitAndWait(const Device& device, const CommandPool& pool, const std::fun
     submit.commandBufferCount = 1;
     submit.pCommandBuffers = &handle;
     check(vkQueueSubmit(device.queue(), 1, &submit, fence.Handle()), "vkQueueSubmit");
-    fence.wait();
+    try
+    {
+        fence.wait();
+    }
+    catch (...)
+    {
+        // A wait that failed short of a lost device (out of host or device memory) leaves the submission pending:
+        // its command buffer is freed on the way out and the pool's fence reset before the next submission, both
+        // invalid while it is. The device idle first (an error there changes nothing of what is thrown).
+        vkDeviceWaitIdle(device.Handle());
+        throw;
+    }
 }
 } // namespace rt::vk
