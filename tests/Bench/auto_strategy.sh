@@ -5,8 +5,8 @@
 #     has a microfacet material; the scene's pixel sampling, and Sobol beside it where that is random) with the auto row beside them, its time including its
 #     pilot's;
 #  2. the best strategy of 1 measured again, and the scene's own strategy and auto with RECHECK_SEEDS fresh seeds
-#     (default 12, from seed 100: a render sharing a seed with its reference's halves, seed + 1000 and + 2000, would
-#     be correlated with it), against 1's reference: the best of many noisy rows is biased up (the winner's curse), a
+#     (default 12, from seed RECHECK_FIRST_SEED, default 100, below 1000: a render sharing a seed with its
+#     reference's halves, seed + 1000 and + 2000, would be correlated with it), against 1's reference: the best of many noisy rows is biased up (the winner's curse), a
 #     new measurement is not. Every row against the one reference file: --compare renders its reference with the
 #     request's strategy, and a reference's own noise is part of every relMSE (rtrol-cornell-box on an H200 at 8192
 #     spp: the scene's mixture's reference had 5x the noise of nee-mis's, half the rows' relMSE at 1 s), so rows
@@ -55,7 +55,7 @@ for scene in "$@"; do
     # kind's 2 cores), and that drift read as the rows' difference.
     rm -f "$out/$scene-recheck-best".{csv,txt} "$out/$scene-recheck".{csv,txt}
     for ((k = 0; k < recheckSeeds; ++k)); do
-        seed=$((100 + k))
+        seed=$((${RECHECK_FIRST_SEED:-100} + k))
         $app --compare "${common[@]}" --seeds 1 --seed "$seed" --reference "$reference" --estimator "$estimator" \
             --light-sampler "$sampler" --light-selection "$selection" --sampling "$sampling" \
             --russian-roulette "${roulette#rr-}" --csv "$images/$scene-best-$seed.csv" \

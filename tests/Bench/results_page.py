@@ -950,6 +950,15 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
                   "RECHECK_ONLY=1 RECHECK_SEEDS=8 bash tests/Bench/auto_strategy.sh build/bin OUT multi 128 4000 2 \\\n"
                   "    16384 glossy-cornell cornell-box-lights many-lights veach-mis rect-light-closeup  # OUT: 1130c's "
                   "full comparisons", "## 61.", "2026-11-30"),
+                 ("cpu-auto-strategy-4s-1201", "CI kind: 2-vCPU Intel Xeon, both cores (the multi engine)",
+                  "the two scenes whose 1130e readings were lowest, with build ee7c927 (the final round's repeats changed "
+                  "since) and 16 fresh seeds (108-123) "
+                  "against 1130c's full comparisons and references: cornell-box-lights 0.94x the best [0.92, 0.96] "
+                  "(its best 14 of 16), glossy-cornell 0.92x [0.89, 0.95] (its best 12 of 16; 1130e: 0.89x, 3 of 8); "
+                  "pilots of 0.20-0.23 s, none past the guard (notebook §70)",
+                  "RECHECK_ONLY=1 RECHECK_SEEDS=16 RECHECK_FIRST_SEED=108 IMAGES=IMAGES bash tests/Bench/auto_strategy.sh \\\n"
+                  "    build/bin OUT multi 128 4000 2 16384 glossy-cornell cornell-box-lights  # OUT: 1130c's full "
+                  "comparisons, IMAGES: their references", "## 70.", "2026-12-01"),
                  ("h200-auto-strategy-8s-1129", "NVIDIA H200, driver 580",
                   "600 px wide, each strategy for 8 s, 1 seed for the full comparison, 4 recheck seeds: the pilot "
                   "of c2dc4a3 (its switch at two standard errors of the error per pixel; 320beb0's build) on the "
@@ -1203,8 +1212,8 @@ AUTO = {"date": "2026-11-28", "notebook": "## 36.",
 # (each folder's row in AUTO says which build); a scene with two readings on a machine gives both (glossy-cornell's
 # 13 % lead is resolved at four times the CPU's 4 s).
 AUTO_STANDING = [
-    ("CPU, CI kind, 128 px, 4 s", "cpu-auto-strategy-4s-1130e",
-     ["cornell-box-lights", "glossy-cornell", "many-lights", "rect-light-closeup", "veach-mis"]),
+    ("CPU, CI kind, 128 px, 4 s", "cpu-auto-strategy-4s-1201", ["cornell-box-lights", "glossy-cornell"]),
+    ("CPU, CI kind, 128 px, 4 s", "cpu-auto-strategy-4s-1130e", ["many-lights", "rect-light-closeup", "veach-mis"]),
     ("CPU, CI kind, 128 px, 4 s", "cpu-auto-strategy-4s-1130c",
      ["rtrol-cornell-box", "sphere-light-closeup", "triangle-lights"]),
     ("CPU, CI kind, 128 px, 16 s", "cpu-auto-strategy-16s-1130", ["glossy-cornell"]),
