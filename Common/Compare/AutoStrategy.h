@@ -70,9 +70,9 @@
 // next render of the same settings: Compare/StrategyCache.h).
 #pragma once
 
-#include <map>
 #include <array>
 #include <limits>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>

@@ -426,6 +426,7 @@ struct GpuEngine::Impl
 
     void readback()
     {
+        const HostStageTimer hostTime(frameStages["readback_host"]);
         timedSubmit("readback_gpu", [&](VkCommandBuffer cmd) { target->recordReadback(cmd); });
     }
 
@@ -679,25 +680,16 @@ Image GpuEngine::estimate(std::uint32_t samples)
 {
     if (!m_impl->target || m_impl->descriptors.set == VK_NULL_HANDLE)
         throw UsageError("GpuEngine::estimate called before beginFrame");
-    {
-        const HostStageTimer hostTime(m_impl->frameStages["readback_host"]);
-        m_impl->readback();
-    }
-    const auto start = std::chrono::steady_clock::now();
-    Image image = m_impl->target->readEstimate(samples, m_impl->uniforms.seedBlock, m_impl->frameBlocks);
-    m_impl->frameStages["resolve_host"] +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return image;
+    m_impl->readback();
+    const HostStageTimer hostTime(m_impl->frameStages["resolve_host"]);
+    return m_impl->target->readEstimate(samples, m_impl->uniforms.seedBlock, m_impl->frameBlocks);
 }
 
 std::vector<double> GpuEngine::radianceSums()
 {
     if (!m_impl->target || m_impl->descriptors.set == VK_NULL_HANDLE)
         throw UsageError("GpuEngine::radianceSums called before beginFrame");
-    {
-        const HostStageTimer hostTime(m_impl->frameStages["readback_host"]);
-        m_impl->readback();
-    }
+    m_impl->readback();
     return m_impl->target->readSums(m_impl->frameBlocks);
 }
 

@@ -206,15 +206,15 @@ const vec3 kSelectionPoints[] = {vec3(0.0f), vec3(9.0f, -3.0f, 1.0f), vec3(-30.0
 const vec3 kSelectionNormals[] = {vec3(0.0f), glm::normalize(vec3(-1.0f, 0.2f, 0.1f)), vec3(1.0f, 0.0f, 0.0f)};
 const double kSelectionAlpha = 1.0 - std::pow(1.0 - test::kChiSquareAlpha, 1.0 / 3.0);
 
-/// Expected counts of `selections` descents at (p, n) per light of `bvh`'s `lights`, by their pmfs, and last the
-/// count of descents that select nothing (what the pmfs leave of 1).
-std::vector<double> expectedSelections(const LightBvh& bvh, int lights, const vec3& p, const vec3& n, double selections)
+/// Expected counts of `selections` descents at selection point `c` per light of `bvh`'s `lights`, by their pmfs,
+/// and last the count of descents that select nothing (what the pmfs leave of 1).
+std::vector<double> expectedSelections(const LightBvh& bvh, int lights, int c, double selections)
 {
     std::vector<double> expected;
     double none = 1.0;
     for (int i = 0; i < lights; ++i)
     {
-        const double pmf = pmfOf(bvh, std::uint32_t(i), p, n, false);
+        const double pmf = pmfOf(bvh, std::uint32_t(i), kSelectionPoints[c], kSelectionNormals[c], false);
         expected.push_back(pmf * selections);
         none -= pmf;
     }
@@ -227,19 +227,17 @@ TEST(LightBvh, SelectionFollowsThePmf)
     const Scene scene = randomLights(3, 40);
     const LightBvh bvh = buildLightBvh(scene);
     const int n = int(scene.lights.size());
-    const auto& points = kSelectionPoints;
-    const auto& normals = kSelectionNormals;
     constexpr long kSamples = 400'000;
     for (int c = 0; c < 3; ++c)
     {
         // Cell n: nothing selected.
         const auto h = test::histogram(n + 1, kSamples, 100 + c, [&](Rng& rng) {
             float pmf = 0.0f;
-            const auto light = shader::selectLightBvh(bvh.nodes.data(), points[c], normals[c], false,
-                                                      rng.nextFloat(), pmf);
+            const auto light = shader::selectLightBvh(bvh.nodes.data(), kSelectionPoints[c], kSelectionNormals[c],
+                                                      false, rng.nextFloat(), pmf);
             return light == kNoIndex ? n : int(light);
         });
-        const std::vector<double> expected = expectedSelections(bvh, n, points[c], normals[c], double(kSamples));
+        const std::vector<double> expected = expectedSelections(bvh, n, c, double(kSamples));
         for (int i = 0; i < n; ++i)
         {
             if (expected[i] == 0.0)
@@ -260,8 +258,6 @@ TEST(LightBvh, StratifiedCandidatesOfManyPixelsFollowThePmf)
     const Scene scene = randomLights(3, 40);
     const LightBvh bvh = buildLightBvh(scene);
     const int n = int(scene.lights.size());
-    const auto& points = kSelectionPoints;
-    const auto& normals = kSelectionNormals;
     constexpr std::uint32_t kCandidates = 8;
     constexpr long kPixels = 50'000;
     for (int c = 0; c < 3; ++c)
@@ -274,14 +270,14 @@ TEST(LightBvh, StratifiedCandidatesOfManyPixelsFollowThePmf)
             for (std::uint32_t k = 0; k < kCandidates; ++k)
             {
                 float pmf = 0.0f;
-                const std::uint32_t light = shader::selectLightBvh(
-                    bvh.nodes.data(), points[c], normals[c], false, shader::stratifiedCandidateNumber(k, kCandidates, xi),
-                    pmf);
+                const std::uint32_t light =
+                    shader::selectLightBvh(bvh.nodes.data(), kSelectionPoints[c], kSelectionNormals[c], false,
+                                           shader::stratifiedCandidateNumber(k, kCandidates, xi), pmf);
                 counts[light == kNoIndex ? std::size_t(n) : std::size_t(light)] += 1.0;
             }
         }
-        const auto r = test::chiSquareTest(
-            counts, expectedSelections(bvh, n, points[c], normals[c], double(kPixels * kCandidates)), kSelectionAlpha);
+        const auto r =
+            test::chiSquareTest(counts, expectedSelections(bvh, n, c, double(kPixels * kCandidates)), kSelectionAlpha);
         EXPECT_TRUE(r.passed) << "configuration " << c << ": " << r.message;
     }
 }
